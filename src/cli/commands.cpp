@@ -1,0 +1,173 @@
+#include "cli/commands.h"
+
+#include <charconv>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "analysis/analysis.h"
+#include "common/angles.h"
+#include "contour/contour.h"
+#include "io/project_json.h"
+#include "kinematics/kinematics.h"
+
+namespace cam::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct Loaded {
+    Project project;
+    Contour contour;
+    double omega;
+};
+
+/// Loads and compiles PROJECT or throws its first problem (exit 2); the rest go to stderr via
+/// `validate`, which is the command for seeing them all.
+Loaded load(const std::string& path) {
+    auto project = loadProjectFile(path);
+    if (!project.ok()) {
+        const Diagnostic& d = project.errors().front();
+        std::string message = d.message;
+        if (project.errors().size() > 1) {
+            message += " (and " + std::to_string(project.errors().size() - 1) +
+                       " more problems; run 'camwright-cli validate' for all)";
+        }
+        throw CliError{kInvalidInput, d.location == path ? path : path + ": " + d.location, message};
+    }
+    auto contour = Contour::build(project.value());
+    if (!contour.ok()) {  // cannot happen after a successful load, which validates
+        const Diagnostic& d = contour.errors().front();
+        throw CliError{kInvalidInput, path + ": " + d.location, d.message};
+    }
+    const double omega = project.value().motion.omegaRadS();
+    return {std::move(project).value(), std::move(contour).value(), omega};
+}
+
+/// %.17g, locale-independent.
+void appendNumber(std::string& out, double value) {
+    char buffer[32];
+    const auto [end, ec] =
+        std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 17);
+    out.append(buffer, end);
+}
+
+Json stateJson(const KinematicState& s) {
+    const PolarMotion& m = s.motion;
+    return Json{{"t", s.t},        {"phi_deg", radToDeg(s.phi)}, {"segment", s.segment},
+                {"r", s.polar.r},  {"v_r", m.vR},                {"v_phi", m.vPhi},
+                {"v", m.v},        {"a_r", m.aR},                {"a_phi", m.aPhi},
+                {"a", m.a},        {"j_r", m.jR},                {"j_phi", m.jPhi},
+                {"j", m.j}};
+}
+
+}  // namespace
+
+int runValidate(const Arguments& args, std::ostream& out, std::ostream& err) {
+    const std::string& path = args.positional.at(0);
+    const auto project = loadProjectFile(path);
+    if (!project.ok()) {
+        for (const Diagnostic& d : project.errors()) {
+            err << "camwright-cli: " << (d.location == path ? path : path + ": " + d.location)
+                << ": " << d.message << "\n";
+        }
+        return kInvalidInput;
+    }
+    out << "valid: " << project.value().contour.size() << " segments\n";
+    return kOk;
+}
+
+int runState(const Arguments& args, std::ostream& out) {
+    const auto tText = args.option("--t");
+    if (!tText) throw CliError{kUsage, "--t", "is required (the time in seconds)"};
+    const double t = parseFiniteNumber("--t", *tText, "seconds");
+    const Loaded loaded = load(args.positional.at(0));
+    out << stateJson(stateAt(loaded.contour, loaded.omega, t)).dump(2) << "\n";
+    return kOk;
+}
+
+int runSample(const Arguments& args, std::ostream& out) {
+    long long n = 0;
+    if (const auto text = args.option("--samples")) {
+        n = parseCount("--samples", *text, 1, kMaxSamplesPerTurn);
+    }
+    const std::optional<std::string> outPath = args.option("--out");
+    const Loaded loaded = load(args.positional.at(0));
+    if (n == 0) n = loaded.project.samplesPerTurnOrDefault();
+
+    std::optional<AtomicFileWriter> file;
+    if (outPath) {
+        file.emplace(*outPath);
+        if (!file->ok()) {
+            throw CliError{kInvalidInput, *outPath, file->errors().front().message};
+        }
+    }
+    SampledTurn turn;
+    sampleTurn(loaded.contour, loaded.omega, static_cast<std::size_t>(n), turn);
+
+    std::string chunk = "t,phi_deg,segment,r,x,y,v_r,v_phi,v,a_r,a_phi,a,j_r,j_phi,j\n";
+    auto flush = [&] {
+        if (file) {
+            file->write(chunk);
+        } else {
+            out << chunk;
+        }
+        chunk.clear();
+    };
+    for (std::size_t k = 0; k < turn.size(); ++k) {
+        const double row[] = {turn.t[k],   radToDeg(turn.phi[k]), 0.0,         turn.r[k],
+                              turn.x[k],   turn.y[k],             turn.vR[k],  turn.vPhi[k],
+                              turn.v[k],   turn.aR[k],            turn.aPhi[k], turn.a[k],
+                              turn.jR[k],  turn.jPhi[k],          turn.j[k]};
+        for (std::size_t c = 0; c < std::size(row); ++c) {
+            if (c > 0) chunk += ',';
+            if (c == 2) {
+                chunk += std::to_string(turn.segment[k]);
+            } else {
+                appendNumber(chunk, row[c]);
+            }
+        }
+        chunk += '\n';
+        if (chunk.size() > (1u << 20)) flush();
+    }
+    flush();
+    if (file) {
+        const Diagnostics problems = file->commit();
+        if (!problems.empty()) throw CliError{kInvalidInput, *outPath, problems.front().message};
+    }
+    return kOk;
+}
+
+int runAnalyze(const Arguments& args, std::ostream& out) {
+    const Loaded loaded = load(args.positional.at(0));
+    const ContourAnalysis analysis = analyzeContour(loaded.contour, loaded.omega);
+    Json joints = Json::array();
+    for (const JointAnalysis& j : analysis.joints) {
+        joints.push_back(Json{{"joint", j.right},
+                              {"left", j.left},
+                              {"right", j.right},
+                              {"phi_deg", radToDeg(j.phi)},
+                              {"continuity", continuityName(j.continuity)},
+                              {"c0_gap_mm", j.gapMm},
+                              {"tangent_break_deg", j.tangentBreakDeg},
+                              {"jump_dr", j.jumpDr},
+                              {"jump_d2r", j.jumpD2r},
+                              {"jump_d3r", j.jumpD3r},
+                              {"jump_a_r", j.jumpAR},
+                              {"jump_j_r", j.jumpJR}});
+    }
+    Json extremes = Json::object();
+    for (const QuantityExtremes& e : analysis.extremes) {
+        auto one = [](const Extremum& x) {
+            return Json{{"value", x.value}, {"phi_deg", radToDeg(x.phi)}, {"segment", x.segment}};
+        };
+        extremes[quantityName(e.quantity)] = Json{{"min", one(e.min)}, {"max", one(e.max)}};
+    }
+    const Json result{{"omega_rad_s", loaded.omega},
+                      {"units", {{"length", "mm"}, {"angle", "deg"}, {"time", "s"}}},
+                      {"joints", std::move(joints)},
+                      {"extremes", std::move(extremes)}};
+    out << result.dump(2) << "\n";
+    return kOk;
+}
+
+}  // namespace cam::cli

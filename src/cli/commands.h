@@ -1,0 +1,16 @@
+#pragma once
+/// @file
+/// @brief The camwright-cli commands (cli.md). Each returns an exit code or throws CliError.
+
+#include <iosfwd>
+
+#include "cli/arguments.h"
+
+namespace cam::cli {
+
+int runValidate(const Arguments& args, std::ostream& out, std::ostream& err);
+int runState(const Arguments& args, std::ostream& out);
+int runSample(const Arguments& args, std::ostream& out);
+int runAnalyze(const Arguments& args, std::ostream& out);
+
+}  // namespace cam::cli

@@ -1,0 +1,61 @@
+// camwright-cli: everything the desktop application computes, without a display (cli.md).
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/arguments.h"
+#include "cli/commands.h"
+
+namespace {
+
+constexpr const char* kUsageText = R"(usage: camwright-cli COMMAND PROJECT [options]
+
+commands:
+  validate PROJECT                      list every problem of a project (exit 2 if any)
+  state PROJECT --t SECONDS             the follower's state at one instant, as JSON
+  sample PROJECT [--samples N] [--out FILE.csv]
+                                        one turn sampled at N instants, as CSV
+  analyze PROJECT                       joints (continuity, jumps) and extremes, as JSON
+
+units: mm, s, degrees; v in mm/s, a in mm/s², j in mm/s³.
+exit codes: 0 ok, 1 usage error, 2 invalid input, 3 not computable.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace cam::cli;
+    std::ios::sync_with_stdio(false);
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
+        std::cout << kUsageText;
+        return kOk;
+    }
+    if (!args.empty() && args[0] == "--version") {
+        std::cout << "camwright-cli " << CAMWRIGHT_VERSION << "\n";
+        return kOk;
+    }
+    const std::vector<CommandSyntax> commands{
+        {"validate", 1, {}, {}},
+        {"state", 1, {"--t"}, {}},
+        {"sample", 1, {"--samples", "--out"}, {}},
+        {"analyze", 1, {}, {}},
+    };
+    try {
+        const Arguments parsed = parseArguments(args, commands);
+        if (parsed.command == "validate") return runValidate(parsed, std::cout, std::cerr);
+        if (parsed.command == "state") return runState(parsed, std::cout);
+        if (parsed.command == "sample") return runSample(parsed, std::cout);
+        if (parsed.command == "analyze") return runAnalyze(parsed, std::cout);
+        return kUsage;
+    } catch (const CliError& e) {
+        std::cout.flush();
+        std::cerr << "camwright-cli: " << e.location << ": " << e.message << "\n";
+        if (e.code == kUsage) std::cerr << "(run 'camwright-cli --help' for usage)\n";
+        return e.code;
+    } catch (const std::exception& e) {
+        std::cerr << "camwright-cli: internal error: " << e.what() << "\n";
+        return kNotComputable;
+    }
+}

@@ -1,0 +1,181 @@
+#include "analysis/analysis.h"
+
+#include <cmath>
+#include <functional>
+
+#include "common/angles.h"
+#include "project/validate.h"
+
+namespace cam {
+
+const char* continuityName(Continuity c) {
+    switch (c) {
+        case Continuity::None:
+            return "none";
+        case Continuity::C0:
+            return "C0";
+        case Continuity::C1:
+            return "C1";
+        case Continuity::C2:
+            return "C2";
+    }
+    return "?";
+}
+
+const char* quantityName(Quantity q) {
+    switch (q) {
+        case Quantity::R:
+            return "r";
+        case Quantity::VR:
+            return "v_r";
+        case Quantity::V:
+            return "v";
+        case Quantity::AR:
+            return "a_r";
+        case Quantity::A:
+            return "a";
+        case Quantity::JR:
+            return "j_r";
+        case Quantity::J:
+            return "j";
+    }
+    return "?";
+}
+
+double quantityValue(Quantity q, const PolarDerivatives& d, const PolarMotion& m) {
+    switch (q) {
+        case Quantity::R:
+            return d.r;
+        case Quantity::VR:
+            return m.vR;
+        case Quantity::V:
+            return m.v;
+        case Quantity::AR:
+            return m.aR;
+        case Quantity::A:
+            return m.a;
+        case Quantity::JR:
+            return m.jR;
+        case Quantity::J:
+            return m.j;
+    }
+    return 0.0;
+}
+
+JointAnalysis analyzeJoint(const Contour& contour, std::size_t k, double omega) {
+    JointAnalysis j;
+    j.left = k;
+    j.right = (k + 1) % contour.size();
+    const ContourSegment& left = contour.segment(j.left);
+    const ContourSegment& right = contour.segment(j.right);
+    j.phi = left.phiEnd;
+    const double c = std::cos(j.phi);
+    const double s = std::sin(j.phi);
+    const PolarDerivatives dl = left.evaluate(c, s);
+    const PolarDerivatives dr = right.evaluate(c, s);
+
+    const Eigen::Vector2d u(c, s);
+    const Eigen::Vector2d u1(-s, c);
+    j.gapMm = std::abs(dr.r - dl.r);  // both points lie on the same ray
+    const Eigen::Vector2d tl = dl.dr * u + dl.r * u1;
+    const Eigen::Vector2d tr = dr.dr * u + dr.r * u1;
+    const double cross = tl.x() * tr.y() - tl.y() * tr.x();
+    j.tangentBreakDeg = radToDeg(std::abs(std::atan2(cross, tl.dot(tr))));
+    j.jumpDr = dr.dr - dl.dr;
+    j.jumpD2r = dr.d2r - dl.d2r;
+    j.jumpD3r = dr.d3r - dl.d3r;
+    const PolarMotion ml = polarMotion(dl, omega);
+    const PolarMotion mr = polarMotion(dr, omega);
+    j.jumpAR = mr.aR - ml.aR;
+    j.jumpJR = mr.jR - ml.jR;
+
+    const double d2rScale = std::max({std::abs(dl.d2r), std::abs(dr.d2r), std::abs(dl.r)});
+    if (j.gapMm > kJointToleranceMm) {
+        j.continuity = Continuity::None;
+    } else if (j.tangentBreakDeg > kTangentToleranceDeg) {
+        j.continuity = Continuity::C0;
+    } else if (std::abs(j.jumpD2r) > kCurvatureToleranceRel * d2rScale) {
+        j.continuity = Continuity::C1;
+    } else {
+        j.continuity = Continuity::C2;
+    }
+    return j;
+}
+
+namespace {
+
+/// Golden-section search for the maximum of f on [lo, hi].
+std::pair<double, double> goldenMax(const std::function<double(double)>& f, double lo, double hi) {
+    const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+    double a = lo, b = hi;
+    double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    double f1 = f(x1), f2 = f(x2);
+    for (int it = 0; it < 80 && (b - a) > 1e-13 * (1.0 + std::abs(a)); ++it) {
+        if (f1 < f2) {
+            a = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = a + g * (b - a);
+            f2 = f(x2);
+        } else {
+            b = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = b - g * (b - a);
+            f1 = f(x1);
+        }
+    }
+    return f1 >= f2 ? std::pair{x1, f1} : std::pair{x2, f2};
+}
+
+/// Largest value of sign·q over segment k's closed window, as (phi, value).
+Extremum segmentExtremum(const ContourSegment& seg, std::size_t k, Quantity q, double omega,
+                         double sign) {
+    auto f = [&](double phi) {
+        const PolarDerivatives d = seg.evaluate(phi);
+        return sign * quantityValue(q, d, polarMotion(d, omega));
+    };
+    constexpr int kGrid = 256;
+    const double width = seg.phiEnd - seg.phiStart;
+    int best = 0;
+    double bestValue = f(seg.phiStart);
+    for (int i = 1; i <= kGrid; ++i) {
+        const double value = f(seg.phiStart + width * i / kGrid);
+        if (value > bestValue) {
+            bestValue = value;
+            best = i;
+        }
+    }
+    double bestPhi = seg.phiStart + width * best / kGrid;
+    const double lo = seg.phiStart + width * std::max(0, best - 1) / kGrid;
+    const double hi = seg.phiStart + width * std::min(kGrid, best + 1) / kGrid;
+    const auto [phi, value] = goldenMax(f, lo, hi);
+    if (value > bestValue) {
+        bestValue = value;
+        bestPhi = phi;
+    }
+    return {sign * bestValue, bestPhi, k};
+}
+
+}  // namespace
+
+ContourAnalysis analyzeContour(const Contour& contour, double omega) {
+    ContourAnalysis result;
+    for (std::size_t k = 0; k < contour.size(); ++k) {
+        if (contour.size() > 1) result.joints.push_back(analyzeJoint(contour, k, omega));
+    }
+    for (Quantity q : kAllQuantities) {
+        QuantityExtremes e;
+        e.quantity = q;
+        for (std::size_t k = 0; k < contour.size(); ++k) {
+            const Extremum hi = segmentExtremum(contour.segment(k), k, q, omega, 1.0);
+            const Extremum lo = segmentExtremum(contour.segment(k), k, q, omega, -1.0);
+            if (k == 0 || hi.value > e.max.value) e.max = hi;
+            if (k == 0 || lo.value < e.min.value) e.min = lo;
+        }
+        result.extremes.push_back(e);
+    }
+    return result;
+}
+
+}  // namespace cam

@@ -1,0 +1,77 @@
+#pragma once
+/// @file
+/// @brief What a designer asks of a contour: how each joint continues, and where the extremes are.
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "contour/contour.h"
+#include "kinematics/kinematics.h"
+
+namespace cam {
+
+/// @brief Highest order to which r(phi) is continuous at a joint.
+enum class Continuity { None, C0, C1, C2 };
+
+/// @brief A joint is C1 (tangent) when the contour's tangent turns by at most this much there.
+/// Files carry about ten significant digits (the six-lobe example breaks by 8e-7°).
+inline constexpr double kTangentToleranceDeg = 1e-5;
+/// @brief A C1 joint is C2 when r'' jumps by at most this fraction of its local size.
+inline constexpr double kCurvatureToleranceRel = 1e-6;
+
+[[nodiscard]] const char* continuityName(Continuity c);
+
+/// @brief The joint between segment `left` and segment `right` (= left + 1, wrapping).
+struct JointAnalysis {
+    std::size_t left = 0;
+    std::size_t right = 0;
+    double phi = 0.0;               ///< rad, the end of the left window
+    double gapMm = 0.0;             ///< C0: distance between the two end points
+    double tangentBreakDeg = 0.0;   ///< angle between the two contour tangents
+    double jumpDr = 0.0;            ///< r'(right) - r'(left), mm/rad
+    double jumpD2r = 0.0;           ///< r''(right) - r''(left), mm/rad²
+    double jumpD3r = 0.0;           ///< r'''(right) - r'''(left), mm/rad³
+    double jumpAR = 0.0;            ///< a_r(right) - a_r(left), mm/s²
+    double jumpJR = 0.0;            ///< j_r(right) - j_r(left), mm/s³
+    Continuity continuity = Continuity::None;
+};
+
+/// @brief A quantity over one turn that analysis reports the extremes of.
+enum class Quantity { R, VR, V, AR, A, JR, J };
+inline constexpr std::array<Quantity, 7> kAllQuantities{Quantity::R,  Quantity::VR, Quantity::V,
+                                                        Quantity::AR, Quantity::A,  Quantity::JR,
+                                                        Quantity::J};
+[[nodiscard]] const char* quantityName(Quantity q);
+
+struct Extremum {
+    double value = 0.0;
+    double phi = 0.0;  ///< rad, within [phiBegin, phiBegin + 2π)
+    std::size_t segment = 0;
+};
+
+struct QuantityExtremes {
+    Quantity quantity = Quantity::R;
+    Extremum min;
+    Extremum max;
+};
+
+struct ContourAnalysis {
+    std::vector<JointAnalysis> joints;
+    std::vector<QuantityExtremes> extremes;
+};
+
+/// @brief Joints and extremes of a contour turning at omega (rad/s).
+///
+/// Extremes are found per segment on a fine grid that includes both window ends (one-sided
+/// values at joints) and then refined by golden-section search, so they are exact to ~1e-10
+/// of the window rather than to the grid spacing.
+[[nodiscard]] ContourAnalysis analyzeContour(const Contour& contour, double omega);
+
+/// @brief The joint at the end of segment k.
+[[nodiscard]] JointAnalysis analyzeJoint(const Contour& contour, std::size_t k, double omega);
+
+[[nodiscard]] double quantityValue(Quantity q, const PolarDerivatives& d, const PolarMotion& m);
+
+}  // namespace cam

@@ -1,0 +1,66 @@
+#pragma once
+/// @file
+/// @brief Polar kinematics of the follower at constant angular speed (math.md §2).
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "contour/contour.h"
+#include "geometry/polar_derivatives.h"
+
+namespace cam {
+
+/// @brief Radial/tangential velocity, acceleration and jerk (mm/s, mm/s², mm/s³).
+struct PolarMotion {
+    double vR = 0.0, vPhi = 0.0, v = 0.0;
+    double aR = 0.0, aPhi = 0.0, a = 0.0;
+    double jR = 0.0, jPhi = 0.0, j = 0.0;
+};
+
+/// @brief Kinematics from r(phi) and its derivatives at angular speed omega (rad/s).
+[[nodiscard]] inline PolarMotion polarMotion(const PolarDerivatives& d, double omega) {
+    const double w2 = omega * omega;
+    const double rDot = omega * d.dr;
+    const double rDdot = w2 * d.d2r;
+    const double rDddot = w2 * omega * d.d3r;
+    PolarMotion m;
+    m.vR = rDot;
+    m.vPhi = d.r * omega;
+    m.v = std::sqrt(m.vR * m.vR + m.vPhi * m.vPhi);
+    m.aR = rDdot - d.r * w2;
+    m.aPhi = 2.0 * rDot * omega;
+    m.a = std::sqrt(m.aR * m.aR + m.aPhi * m.aPhi);
+    m.jR = rDddot - 3.0 * rDot * w2;
+    m.jPhi = 3.0 * rDdot * omega - d.r * w2 * omega;
+    m.j = std::sqrt(m.jR * m.jR + m.jPhi * m.jPhi);
+    return m;
+}
+
+/// @brief The follower's state at one instant.
+struct KinematicState {
+    double t = 0.0;    ///< s
+    double phi = 0.0;  ///< rad, omega·t (not reduced)
+    std::size_t segment = 0;
+    PolarDerivatives polar;
+    PolarMotion motion;
+};
+
+/// @brief State at time t for angular speed omega (rad/s).
+[[nodiscard]] KinematicState stateAt(const Contour& contour, double omega, double t);
+
+/// @brief One turn sampled at N instants t_k = k·T/N, as flat arrays (structure of arrays).
+struct SampledTurn {
+    std::vector<double> t, phi, r, x, y;
+    std::vector<double> vR, vPhi, v, aR, aPhi, a, jR, jPhi, j;
+    std::vector<std::int32_t> segment;
+
+    [[nodiscard]] std::size_t size() const { return t.size(); }
+    void resize(std::size_t n);
+};
+
+/// @brief Samples one turn into `out`, reusing its storage. Requires n >= 1 and omega != 0.
+void sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn& out);
+
+}  // namespace cam

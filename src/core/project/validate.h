@@ -1,0 +1,27 @@
+#pragma once
+/// @file
+/// @brief Every rule of project-format.md, checked on the document, each problem located.
+
+#include "common/diagnostic.h"
+#include "project/project.h"
+
+namespace cam {
+
+/// @brief Largest disagreement of two window boundaries that still counts as "the same angle".
+inline constexpr double kWindowToleranceDeg = 1e-9;
+/// @brief Largest positional gap at a joint (C0) that is not an error.
+inline constexpr double kJointToleranceMm = 1e-6;
+/// @brief How far a line's given window may differ from the polar angles of its end points.
+inline constexpr double kLineWindowToleranceDeg = 1e-6;
+
+/// @brief All problems of the document; empty when it is valid.
+[[nodiscard]] Diagnostics validateProject(const Project& project);
+
+/// @brief Polar window of a line from its end points, in degrees; the start is unwrapped to lie
+/// within 180° of `nearDeg` (the previous segment's end, or 0).
+[[nodiscard]] std::pair<double, double> lineWindowDeg(const SegmentSpec& line, double nearDeg);
+
+/// @brief "contour[3]" — the location prefix of a segment.
+[[nodiscard]] std::string segmentLocation(std::size_t index);
+
+}  // namespace cam

@@ -1,0 +1,159 @@
+// camwright-cli as a user runs it: commands, output formats, exit codes, located messages.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "test_support.h"
+
+namespace cam {
+namespace {
+
+const std::string kExample = test::examplePath("six-lobe-arc-cam.cam.json");
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) out.push_back(line);
+    return out;
+}
+
+std::vector<double> csvRow(const std::string& line) {
+    std::vector<double> out;
+    std::istringstream in(line);
+    for (std::string cell; std::getline(in, cell, ',');) out.push_back(std::stod(cell));
+    return out;
+}
+
+TEST(CliValidate, AcceptsTheExample) {
+    const auto r = test::runCli({"validate", kExample});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out, "valid: 13 segments\n");
+    EXPECT_EQ(r.err, "");
+}
+
+TEST(CliValidate, ListsEveryProblemOnItsOwnLine) {
+    const std::string bad = test::dataPath("invalid/window-gap.cam.json");
+    const auto r = test::runCli({"validate", bad});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.out, "");
+    const auto errLines = lines(r.err);
+    ASSERT_FALSE(errLines.empty());
+    for (const auto& l : errLines) EXPECT_EQ(l.rfind("camwright-cli: " + bad + ": ", 0), 0u) << l;
+    EXPECT_NE(r.err.find("contour[0]/contour[1]: gap of 1°"), std::string::npos) << r.err;
+}
+
+TEST(CliState, PrintsOneJsonObjectWithEveryField) {
+    const auto r = test::runCli({"state", kExample, "--t", "0.05"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto s = nlohmann::json::parse(r.out);
+    std::vector<std::string> keys;
+    for (const auto& [k, v] : s.items()) keys.push_back(k);
+    std::sort(keys.begin(), keys.end());
+    std::vector<std::string> expected{"t", "phi_deg", "segment", "r", "v_r", "v_phi", "v",
+                                      "a_r", "a_phi", "a", "j_r", "j_phi", "j"};
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(keys, expected);
+    EXPECT_DOUBLE_EQ(s.at("phi_deg").get<double>(), 45.0);
+    // Every number reads back as the double the engine computed: shortest round-trip form.
+    const std::string text = r.out;
+    EXPECT_NE(text.find("\"t\": 0.05"), std::string::npos) << text;
+}
+
+TEST(CliSample, WritesTheDocumentedHeaderAndNRowsOverOneTurn) {
+    const auto r = test::runCli({"sample", kExample, "--samples", "8"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto l = lines(r.out);
+    ASSERT_EQ(l.size(), 9u);
+    EXPECT_EQ(l[0], "t,phi_deg,segment,r,x,y,v_r,v_phi,v,a_r,a_phi,a,j_r,j_phi,j");
+    for (std::size_t k = 1; k < l.size(); ++k) {
+        const auto row = csvRow(l[k]);
+        ASSERT_EQ(row.size(), 15u);
+        EXPECT_DOUBLE_EQ(row[0], 0.4 * (k - 1) / 8.0);  // t = k·T/N
+        EXPECT_NEAR(row[1], 45.0 * (k - 1), 1e-12);
+        EXPECT_NEAR(std::hypot(row[4], row[5]), row[3], 1e-12 * row[3]);  // x, y on the ray
+    }
+    // Row for t = 0.05 s equals `state --t 0.05` to the last digit (17 significant digits).
+    const auto st = nlohmann::json::parse(test::runCli({"state", kExample, "--t", "0.05"}).out);
+    const auto row = csvRow(l[2]);
+    EXPECT_NEAR(row[3], st.at("r").get<double>(), 1e-13 * row[3]);
+    EXPECT_NEAR(row[9], st.at("a_r").get<double>(), 1e-11 * std::abs(row[9]));
+}
+
+TEST(CliSample, DefaultsToTheProjectSamplingAndWritesFilesAtomically) {
+    namespace fs = std::filesystem;
+    const fs::path out = fs::temp_directory_path() / "camwright_cli_sample.csv";
+    fs::remove(out);
+    const auto r = test::runCli({"sample", kExample, "--out", out.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out, "");  // results went to the file
+    EXPECT_EQ(lines(test::readFile(out.string())).size(), 3601u);  // default 3600 per turn
+    fs::remove(out);
+}
+
+TEST(CliAnalyze, ReportsJointsAndExtremes) {
+    const auto r = test::runCli({"analyze", kExample});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto a = nlohmann::json::parse(r.out);
+    ASSERT_EQ(a.at("joints").size(), 13u);
+    const auto& j = a.at("joints").at(0);
+    EXPECT_EQ(j.at("left"), 0);
+    EXPECT_EQ(j.at("right"), 1);
+    EXPECT_EQ(j.at("continuity"), "C1");
+    EXPECT_NEAR(j.at("phi_deg").get<double>(), 9.691410798731425, 1e-9);
+    EXPECT_LT(j.at("c0_gap_mm").get<double>(), 1e-6);
+    EXPECT_LT(std::abs(j.at("tangent_break_deg").get<double>()), 1e-5);
+    for (const char* key : {"jump_dr", "jump_d2r", "jump_a_r"}) EXPECT_TRUE(j.contains(key));
+    const auto& rMax = a.at("extremes").at("r").at("max");
+    EXPECT_NEAR(rMax.at("value").get<double>(), 29.0, 1e-9);
+    for (const char* q : {"r", "v_r", "v", "a_r", "a", "j_r", "j"}) {
+        EXPECT_TRUE(a.at("extremes").contains(q)) << q;
+    }
+}
+
+TEST(CliErrors, EveryBadFileGivesExitTwoAndItsLocation) {
+    const auto manifest =
+        nlohmann::json::parse(test::readFile(test::dataPath("invalid/cases.json")));
+    for (const auto& c : manifest) {
+        const std::string file = test::dataPath("invalid/" + c.at("file").get<std::string>());
+        for (const char* command : {"validate", "analyze"}) {
+            const auto r = test::runCli({command, file});
+            SCOPED_TRACE(std::string(command) + " " + file);
+            EXPECT_EQ(r.signal, 0);
+            EXPECT_EQ(r.exitCode, 2) << r.err;
+            EXPECT_EQ(r.out, "");
+            EXPECT_NE(r.err.find(c.at("location").get<std::string>()), std::string::npos) << r.err;
+            EXPECT_EQ(r.err.rfind("camwright-cli: ", 0), 0u) << r.err;
+        }
+    }
+}
+
+TEST(CliErrors, BadArgumentsGiveTheDocumentedExitCode) {
+    const auto manifest =
+        nlohmann::json::parse(test::readFile(test::dataPath("invalid/cli_cases.json")));
+    ASSERT_GE(manifest.size(), 20u);
+    const std::string data = test::dataPath("invalid");
+    for (const auto& c : manifest) {
+        std::vector<std::string> args;
+        for (std::string a : c.at("args")) {
+            for (const auto& [from, to] : {std::pair<std::string, std::string>{"@VALID@", kExample},
+                                           {"@DATA@", data}}) {
+                if (const auto at = a.find(from); at != std::string::npos) a.replace(at, from.size(), to);
+            }
+            args.push_back(a);
+        }
+        const auto r = test::runCli(args);
+        SCOPED_TRACE(c.at("args").dump());
+        EXPECT_EQ(r.signal, 0);
+        EXPECT_EQ(r.exitCode, c.at("exit").get<int>()) << r.err;
+        EXPECT_NE(r.err.find(c.at("stderr_contains").get<std::string>()), std::string::npos)
+            << r.err;
+        EXPECT_EQ(r.out, "");
+    }
+    EXPECT_FALSE(std::filesystem::exists(data + "/no-such-dir"));
+}
+
+}  // namespace
+}  // namespace cam

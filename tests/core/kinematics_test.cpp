@@ -1,0 +1,118 @@
+// Polar kinematics: the formulas of math.md §2 against finite differences of the follower's
+// Cartesian motion, and the sampled turn against the state at each instant.
+
+#include <gtest/gtest.h>
+
+#include "common/angles.h"
+#include "contour/contour.h"
+#include "core/test_projects.h"
+#include "io/project_json.h"
+#include "kinematics/kinematics.h"
+#include "test_support.h"
+
+namespace cam {
+namespace {
+
+using test::relClose;
+
+Contour sixLobe() {
+    auto p = loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json"));
+    EXPECT_TRUE(p.ok());
+    return Contour::build(p.value()).value();
+}
+
+TEST(Kinematics, PolarComponentsMatchFiniteDifferencesOfTheCartesianMotion) {
+    // The follower point is P(t) = r(ωt)·(cos ωt, sin ωt). Differentiate P numerically in the
+    // fixed frame and project onto the radial and tangential unit vectors: an independent route
+    // to v, a and jerk that does not use the polar formulas.
+    const Contour contour = sixLobe();
+    const double omega = 5.0 * kPi;
+    auto position = [&](double t) {
+        const double phi = omega * t;
+        const double r = contour.evaluate(phi).r;
+        return Eigen::Vector2d(r * std::cos(phi), r * std::sin(phi));
+    };
+    const double h = 2e-6;
+    for (double t : {0.013, 0.05, 0.101, 0.15, 0.222, 0.31, 0.37}) {
+        const KinematicState s = stateAt(contour, omega, t);
+        const Eigen::Vector2d p0 = position(t), pp = position(t + h), pm = position(t - h);
+        const Eigen::Vector2d pp2 = position(t + 2 * h), pm2 = position(t - 2 * h);
+        const Eigen::Vector2d vel = (pp - pm) / (2 * h);
+        const Eigen::Vector2d acc = (pp - 2 * p0 + pm) / (h * h);
+        const Eigen::Vector2d jerk = (pp2 - 2 * pp + 2 * pm - pm2) / (2 * h * h * h);
+        const Eigen::Vector2d er(std::cos(s.phi), std::sin(s.phi)), ephi(-er.y(), er.x());
+        EXPECT_TRUE(relClose(s.motion.vR, vel.dot(er), 1e-6, s.motion.v)) << "t=" << t;
+        EXPECT_TRUE(relClose(s.motion.vPhi, vel.dot(ephi), 1e-6, s.motion.v)) << "t=" << t;
+        EXPECT_TRUE(relClose(s.motion.aR, acc.dot(er), 1e-4, s.motion.a)) << "t=" << t;
+        EXPECT_TRUE(relClose(s.motion.aPhi, acc.dot(ephi), 1e-4, s.motion.a)) << "t=" << t;
+        EXPECT_TRUE(relClose(s.motion.jR, jerk.dot(er), 1e-2, s.motion.j)) << "t=" << t;
+        EXPECT_TRUE(relClose(s.motion.jPhi, jerk.dot(ephi), 1e-2, s.motion.j)) << "t=" << t;
+        EXPECT_NEAR(s.motion.v, std::hypot(s.motion.vR, s.motion.vPhi), 1e-12 * s.motion.v);
+    }
+}
+
+TEST(Kinematics, CentredCircleIsUniformCircularMotion) {
+    const Contour c = Contour::build(test::splitCircle(0.0, 10.0, {0.0, 360.0})).value();
+    const double omega = 3.0;
+    const KinematicState s = stateAt(c, omega, 0.7);
+    EXPECT_NEAR(s.motion.vR, 0.0, 1e-12);
+    EXPECT_DOUBLE_EQ(s.motion.vPhi, 30.0);
+    EXPECT_DOUBLE_EQ(s.motion.aR, -90.0);  // centripetal r·ω²
+    EXPECT_NEAR(s.motion.aPhi, 0.0, 1e-12);
+    EXPECT_DOUBLE_EQ(s.motion.jPhi, -270.0);  // -r·ω³
+}
+
+void expectSampledMatchesState(const Contour& contour, double omega, std::size_t n) {
+    SampledTurn turn;
+    sampleTurn(contour, omega, n, turn);
+    ASSERT_EQ(turn.size(), n);
+    const double period = kTwoPi / std::abs(omega);
+    for (std::size_t k = 0; k < n; ++k) {
+        const double t = period * static_cast<double>(k) / static_cast<double>(n);
+        const KinematicState s = stateAt(contour, omega, t);
+        ASSERT_TRUE(relClose(turn.t[k], t, 1e-14, period)) << k;
+        ASSERT_EQ(static_cast<std::size_t>(turn.segment[k]), s.segment) << "k=" << k;
+        const double tol = 1e-11;
+        ASSERT_TRUE(relClose(turn.r[k], s.polar.r, tol)) << k;
+        ASSERT_TRUE(relClose(turn.x[k], s.polar.r * std::cos(s.phi), tol, s.polar.r)) << k;
+        ASSERT_TRUE(relClose(turn.y[k], s.polar.r * std::sin(s.phi), tol, s.polar.r)) << k;
+        ASSERT_TRUE(relClose(turn.vR[k], s.motion.vR, tol, s.motion.v)) << k;
+        ASSERT_TRUE(relClose(turn.vPhi[k], s.motion.vPhi, tol)) << k;
+        ASSERT_TRUE(relClose(turn.aR[k], s.motion.aR, tol, s.motion.a)) << k;
+        ASSERT_TRUE(relClose(turn.aPhi[k], s.motion.aPhi, tol, s.motion.a)) << k;
+        ASSERT_TRUE(relClose(turn.a[k], s.motion.a, tol)) << k;
+        ASSERT_TRUE(relClose(turn.jR[k], s.motion.jR, 1e-9, s.motion.j)) << k;
+        ASSERT_TRUE(relClose(turn.jPhi[k], s.motion.jPhi, 1e-9, s.motion.j)) << k;
+        ASSERT_TRUE(relClose(turn.j[k], s.motion.j, 1e-9)) << k;
+    }
+}
+
+TEST(SampledTurn, EverySampleEqualsTheStateAtItsInstant) {
+    expectSampledMatchesState(sixLobe(), 5.0 * kPi, 3600);
+    expectSampledMatchesState(sixLobe(), 5.0 * kPi, 5003);  // not a multiple of the block size
+}
+
+TEST(SampledTurn, ClockwiseAndNegativeWindowStart) {
+    const Contour c =
+        Contour::build(test::splitCircle(4.0, 25.0, {-30.0, 10.0, 10.5, 200.0, 330.0})).value();
+    expectSampledMatchesState(c, -7.0, 2000);
+    expectSampledMatchesState(c, 7.0, 2000);
+}
+
+TEST(SampledTurn, TinyAndOddCounts) {
+    const Contour c = sixLobe();
+    for (std::size_t n : {1u, 2u, 3u, 17u, 1025u}) expectSampledMatchesState(c, 5.0 * kPi, n);
+}
+
+TEST(SampledTurn, ReusesStorageAcrossSizes) {
+    const Contour c = sixLobe();
+    SampledTurn turn;
+    sampleTurn(c, 1.0, 5000, turn);
+    sampleTurn(c, 1.0, 100, turn);
+    EXPECT_EQ(turn.size(), 100u);
+    EXPECT_EQ(turn.segment.size(), 100u);
+    EXPECT_DOUBLE_EQ(turn.r[0], stateAt(c, 1.0, 0.0).polar.r);
+}
+
+}  // namespace
+}  // namespace cam

@@ -1,0 +1,430 @@
+#!/usr/bin/python3
+"""Independent reference check of the invalid-project corpus (no C++ needed).
+
+Runs a from-scratch Python reading of project-format.md / math.md §1 over every
+file listed in cases.json and over the valid controls, and checks that
+  * the valid controls produce no problem at all,
+  * every case reports its manifest location (exactly, as a location),
+  * files meant to be syntactically broken fail strict JSON parsing and all
+    others parse with Python's json module.
+Problems other than the intended one are listed as consequences (a validator
+may report or suppress them). Usage: /usr/bin/python3 check_corpus.py [-v]
+"""
+import json
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+MAX_LEN = 1e6
+JOINT_TOL = 1e-6
+WINDOW_TOL = 1e-9
+DEPTH_LIMIT = 512
+DUP = "\x00duplicates"
+
+
+class Problems(list):
+    def add(self, location, message):
+        self.append((location, message))
+
+
+# ------------------------------------------------------------------ parsing
+def pairs_hook(pairs):
+    d, dups = {}, []
+    for k, v in pairs:
+        if k in d:
+            dups.append(k)
+        d[k] = v
+    if dups:
+        d[DUP] = dups
+    return d
+
+
+def bad_constant(name):
+    raise ValueError(f"{name} is not JSON")
+
+
+def max_depth(text):
+    depth = best = 0
+    in_str = esc = False
+    for ch in text:
+        if in_str:
+            if esc:
+                esc = False
+            elif ch == "\\":
+                esc = True
+            elif ch == '"':
+                in_str = False
+        elif ch == '"':
+            in_str = True
+        elif ch in "[{":
+            depth += 1
+            best = max(best, depth)
+        elif ch in "]}":
+            depth -= 1
+    return best
+
+
+def parse(raw, probs):
+    """Strict parse. Returns the document or None (problems added)."""
+    text = raw.decode("utf-8")
+    if text.startswith("\ufeff"):
+        text = text[1:]  # a UTF-8 BOM is valid
+    underflow = []
+
+    def parse_float(s):
+        v = float(s)
+        if not math.isfinite(v):
+            raise ValueError(f"number {s} overflows a double")
+        if v == 0.0 and any(c in "123456789" for c in s.split("e")[0].split("E")[0]):
+            underflow.append(s)
+        return v
+
+    old = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(old, 100000))
+    try:
+        doc = json.loads(text, object_pairs_hook=pairs_hook, parse_constant=bad_constant,
+                         parse_float=parse_float)
+    except json.JSONDecodeError as e:
+        probs.add(f"line {e.lineno}, column {e.colno}", e.msg)
+        return None
+    except ValueError as e:
+        probs.add("line ?, column ?", str(e))
+        return None
+    finally:
+        sys.setrecursionlimit(old)
+    if max_depth(text) > DEPTH_LIMIT:
+        # report the top-level key that holds the deep value
+        for k, v in doc.items() if isinstance(doc, dict) else []:
+            if max_depth(json.dumps(v)) > DEPTH_LIMIT - 1:
+                probs.add(k, f"nested deeper than {DEPTH_LIMIT} levels")
+        return None
+    if underflow:
+        probs.add("(underflow)", f"{underflow} underflow to 0")  # informative only
+    return doc
+
+
+def find_dups(v, path, probs):
+    if isinstance(v, dict):
+        for k in v.get(DUP, []):
+            probs.add(f"{path}.{k}" if path else k, "duplicated key")
+        for k, x in v.items():
+            if k != DUP:
+                find_dups(x, f"{path}.{k}" if path else k, probs)
+    elif isinstance(v, list):
+        for i, x in enumerate(v):
+            find_dups(x, f"{path}[{i}]", probs)
+
+
+# ------------------------------------------------------------------ typed access
+def is_num(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def number(o, key, loc, probs, required=True):
+    if key not in o:
+        if required:
+            probs.add(loc, "missing")
+        return None
+    v = o[key]
+    if not is_num(v):
+        probs.add(loc, f"must be a number (got {json.dumps(v)})")
+        return None
+    if not math.isfinite(v):
+        probs.add(loc, "must be finite")
+        return None
+    return float(v)
+
+
+def length(o, key, loc, probs, required=True):
+    v = number(o, key, loc, probs, required)
+    if v is not None and abs(v) > MAX_LEN:
+        probs.add(loc, f"magnitude must be at most 1e6 mm (got {v})")
+        return None
+    return v
+
+
+def point(o, key, loc, probs):
+    if key not in o:
+        probs.add(loc, "missing")
+        return None
+    v = o[key]
+    if not isinstance(v, list) or len(v) != 2:
+        probs.add(loc, f"must be [x, y] (got {json.dumps(v)})")
+        return None
+    x = length({"x": v[0]}, "x", f"{loc}", probs)
+    y = length({"y": v[1]}, "y", f"{loc}", probs)
+    return None if x is None or y is None else (x, y)
+
+
+def string(o, key, loc, probs, allowed, required=True):
+    if key not in o:
+        if required:
+            probs.add(loc, "missing")
+        return None
+    v = o[key]
+    if not isinstance(v, str):
+        probs.add(loc, f"must be a string (got {json.dumps(v)})")
+        return None
+    if v not in allowed:
+        probs.add(loc, f"must be one of {allowed} (got {v!r})")
+        return None
+    return v
+
+
+# ------------------------------------------------------------------ geometry (math.md §1)
+def arc_r(seg, phi):
+    (cx, cy), R, s = seg["c"], seg["R"], 1.0 if seg["branch"] == "outer" else -1.0
+    ux, uy = math.cos(phi), math.sin(phi)
+    mu = cx * ux + cy * uy
+    D = mu * mu - (cx * cx + cy * cy) + R * R
+    if D < 0:
+        return None, D
+    return mu + s * math.sqrt(D), D
+
+
+def line_r(seg, phi):
+    (ax, ay), (bx, by) = seg["from"], seg["to"]
+    L = math.hypot(bx - ax, by - ay)
+    nx, ny = -(by - ay) / L, (bx - ax) / L
+    d = nx * ax + ny * ay
+    c = nx * math.cos(phi) + ny * math.sin(phi)
+    return (d / c if c != 0 else None), d
+
+
+def r_at(seg, phi_deg):
+    phi = math.radians(phi_deg)
+    return (arc_r if seg["type"] == "arc" else line_r)(seg, phi)[0]
+
+
+def check_segment_geometry(k, seg, probs, n=20000):
+    at = f"contour[{k}]"
+    a, b = seg["a"], seg["b"]
+    if seg["type"] == "line":
+        _, d = line_r(seg, 0.0)
+        if abs(d) <= JOINT_TOL:
+            probs.add(at, "the line passes through the rotation centre")
+            return
+        pa = math.degrees(math.atan2(seg["from"][1], seg["from"][0]))
+        pb = math.degrees(math.atan2(seg["to"][1], seg["to"][0]))
+        wrap = lambda x: (x + 180.0) % 360.0 - 180.0
+        if abs(wrap(a - pa)) > 1e-9 or abs(wrap(b - pb)) > 1e-9:
+            probs.add(at, f"window {a}..{b} disagrees with polar angles of from/to {pa}..{pb}")
+    miss = neg = 0
+    for i in range(n + 1):
+        phi = a + (b - a) * i / n
+        if seg["type"] == "arc":
+            r, D = arc_r(seg, math.radians(phi))
+            if D < 0:
+                miss += 1
+                continue
+        else:
+            r, _ = line_r(seg, math.radians(phi))
+        if r is None or r <= 0:
+            neg += 1
+    if seg["type"] == "arc" and seg["branch"] == "inner" and \
+            math.hypot(*seg["c"]) < seg["R"] and neg:
+        probs.add(f"{at}.branch", f"inner branch but the origin is inside the circle "
+                                  f"(r <= 0 at {neg}/{n + 1} sample angles)")
+    elif neg:
+        probs.add(at, f"r <= 0 at {neg}/{n + 1} sample angles")
+    if miss:
+        probs.add(at, f"the ray misses the circle (D < 0) at {miss}/{n + 1} sample angles")
+
+
+# ------------------------------------------------------------------ the whole project
+def validate(doc, probs):
+    if not isinstance(doc, dict):
+        probs.add("top level", f"must be an object (got {type(doc).__name__})")
+        return
+    find_dups(doc, "", probs)
+    string(doc, "format", "format", probs, ["camwright"])
+    v = doc.get("version")
+    if "version" not in doc:
+        probs.add("version", "missing")
+    elif not (isinstance(v, int) and not isinstance(v, bool)):
+        probs.add("version", f"must be an integer (got {json.dumps(v)})")
+    elif v != 1:
+        probs.add("version", f"version {v} is not known (this reader knows 1)")
+    units = doc.get("units", {})
+    if not isinstance(units, dict):
+        probs.add("units", "must be an object")
+        units = {}
+    string(units, "length", "units.length", probs, ["mm", "m"], required=False)
+    string(units, "angle", "units.angle", probs, ["deg", "rad"], required=False)
+
+    m = doc.get("motion")
+    if not isinstance(m, dict):
+        probs.add("motion", "missing or not an object")
+    else:
+        keys = [k for k in ("omega_rad_s", "rpm", "period_s") if k in m]
+        if len(keys) != 1:
+            probs.add("motion", f"exactly one of omega_rad_s, rpm, period_s (got {keys})")
+        for k in keys:
+            x = number(m, k, f"motion.{k}", probs)
+            if x is None:
+                continue
+            if k == "period_s" and not x > 0:
+                probs.add("motion.period_s", f"must be > 0 (got {x})")
+            if k != "period_s" and x == 0:
+                probs.add(f"motion.{k}", "must not be 0")
+
+    c = doc.get("contour")
+    segs = []
+    if not isinstance(c, list) or not c:
+        probs.add("contour", "missing, not an array or empty")
+        c = []
+    for k, s in enumerate(c):
+        at = f"contour[{k}]"
+        if not isinstance(s, dict):
+            probs.add(at, "must be an object")
+            segs.append(None)
+            continue
+        t = string(s, "type", f"{at}.type", probs, ["arc", "line", "bezier", "hermite"])
+        seg = {"type": t}
+        seg["a"] = number(s, "phi_start", f"{at}.phi_start", probs)
+        seg["b"] = number(s, "phi_end", f"{at}.phi_end", probs)
+        ok = seg["a"] is not None and seg["b"] is not None
+        if ok and not seg["b"] > seg["a"]:
+            probs.add(f"{at}.phi_end", f"must be > phi_start (got {seg['a']}..{seg['b']})")
+            ok = False
+        seg["window_ok"] = ok
+        if t == "arc":
+            seg["c"] = point(s, "center", f"{at}.center", probs)
+            seg["R"] = length(s, "radius", f"{at}.radius", probs)
+            if seg["R"] is not None and not seg["R"] > 0:
+                probs.add(f"{at}.radius", f"must be > 0 (got {seg['R']})")
+            seg["branch"] = string(s, "branch", f"{at}.branch", probs, ["outer", "inner"])
+            shape_ok = None not in (seg["c"], seg["R"], seg["branch"])
+        elif t == "line":
+            seg["from"] = point(s, "from", f"{at}.from", probs)
+            seg["to"] = point(s, "to", f"{at}.to", probs)
+            shape_ok = None not in (seg["from"], seg["to"])
+        else:
+            shape_ok = False
+        if shape_ok and ok:
+            check_segment_geometry(k, seg, probs)
+        seg["ok"] = shape_ok and ok
+        segs.append(seg)
+
+    if segs and all(s is not None and s["window_ok"] for s in segs):
+        for k in range(len(segs) - 1):
+            diff = segs[k + 1]["a"] - segs[k]["b"]
+            if abs(diff) > WINDOW_TOL:
+                probs.add(f"contour[{k}]/contour[{k + 1}]",
+                          f"{'gap' if diff > 0 else 'overlap'} of {abs(diff)}°")
+        span = segs[-1]["b"] - segs[0]["a"]
+        if abs(span - 360.0) > WINDOW_TOL:
+            probs.add("contour", f"windows cover {span}°, not 360°")
+    if segs and all(s is not None and s["ok"] for s in segs):
+        n = len(segs)
+        for k in range(n):
+            j = (k + 1) % n
+            pk, pj = segs[k]["b"], segs[j]["a"]
+            rk, rj = r_at(segs[k], pk), r_at(segs[j], pj)
+            if rk is None or rj is None:
+                probs.add(f"contour[{k}]/contour[{j}]", "joint point undefined")
+                continue
+            xk = (rk * math.cos(math.radians(pk)), rk * math.sin(math.radians(pk)))
+            xj = (rj * math.cos(math.radians(pj)), rj * math.sin(math.radians(pj)))
+            gap = math.dist(xk, xj)
+            if gap > JOINT_TOL:
+                probs.add(f"contour[{k}]/contour[{j}]", f"C0 gap {gap:.12g} mm at {pk}°")
+
+    f = doc.get("follower")
+    if f is not None:
+        t = string(f, "type", "follower.type", probs, ["knife", "roller", "flat"], required=False)
+        length(f, "offset", "follower.offset", probs, required=False)
+        if t == "roller":
+            r = length(f, "radius", "follower.radius", probs)
+            if r is not None and not r > 0:
+                probs.add("follower.radius", f"must be > 0 (got {r})")
+    s = doc.get("sampling")
+    if s is not None:
+        n = s.get("samples_per_turn")
+        if not (isinstance(n, int) and not isinstance(n, bool)):
+            probs.add("sampling.samples_per_turn", f"must be an integer (got {json.dumps(n)})")
+        elif not 16 <= n <= 10_000_000:
+            probs.add("sampling.samples_per_turn", f"must be in 16..10000000 (got {n})")
+    mc = doc.get("machining")
+    if mc is not None:
+        for key in ("axis_accel", "axis_vmax"):
+            if key in mc:
+                for i, x in enumerate(mc[key]):
+                    v = number({"v": x}, "v", f"machining.{key}[{i}]", probs)
+                    if v is not None and not v > 0:
+                        probs.add(f"machining.{key}[{i}]", f"must be > 0 (got {v})")
+        for key in ("feed_max", "step"):
+            v = number(mc, key, f"machining.{key}", probs, required=False)
+            if v is not None and not v > 0:
+                probs.add(f"machining.{key}", f"must be > 0 (got {v})")
+        v = length(mc, "tool_radius", "machining.tool_radius", probs, required=False)
+        if v is not None and v < 0:
+            probs.add("machining.tool_radius", f"must be >= 0 (got {v})")
+
+
+def check_file(path):
+    probs = Problems()
+    with open(path, "rb") as fh:
+        raw = fh.read()
+    doc = parse(raw, probs)
+    if doc is not None:
+        validate(doc, probs)
+    return [p for p in probs if p[0] != "(underflow)"], doc is not None or not probs or \
+        not probs[0][0].startswith("line ")
+
+
+def main():
+    verbose = "-v" in sys.argv
+    failures = 0
+    for name in ("valid-base.cam.json", "valid-bom.cam.json"):
+        probs, _ = check_file(os.path.join(HERE, name))
+        print(f"{'ok ' if not probs else 'BAD'} {name}: valid control" +
+              ("" if not probs else f" -> {probs}"))
+        failures += bool(probs)
+    with open(os.path.join(HERE, "cases.json"), encoding="utf-8") as fh:
+        cases = json.load(fh)
+    for case in cases:
+        path = os.path.join(HERE, case["file"])
+        probs, parsed = check_file(path)
+        want = case["location"]
+        syntax = want == "line "
+        # Python's json: syntax cases must fail strictly; all others must parse (default module).
+        with open(path, "rb") as fh:
+            raw = fh.read().decode("utf-8")
+        try:
+            sys.setrecursionlimit(100000)
+            json.loads(raw, parse_constant=bad_constant)
+            strict_ok = True
+        except ValueError:
+            strict_ok = False
+        if syntax:
+            hit = any(loc.startswith("line ") for loc, _ in probs)
+            py_ok = "1e400" in raw or not strict_ok  # 1e400 is grammatical, only overflows
+        else:
+            hit = any(loc == want for loc, _ in probs)
+            py_ok = strict_ok
+        others = [p for p in probs if p[0] != want and not (syntax and p[0].startswith("line "))]
+        good = hit and py_ok
+        failures += not good
+        tag = "ok " if good else "BAD"
+        print(f"{tag} {case['file']}: expect {want!r}" + ("" if py_ok else " [python json!]"))
+        if verbose or not good:
+            for loc, msg in probs:
+                print(f"      {'*' if loc == want or (syntax and loc.startswith('line ')) else '+'}"
+                      f" {loc}: {msg[:150]}")
+        elif others:
+            print(f"      + consequences: {sorted({p[0] for p in others})}")
+    with open(os.path.join(HERE, "cli_cases.json"), encoding="utf-8") as fh:
+        cli = json.load(fh)
+    for c in cli:
+        assert c["exit"] in (1, 2) and isinstance(c["args"], list) and c["stderr_contains"]
+        for a in c["args"]:
+            if a.startswith("@DATA@/") and a.endswith(".cam.json") and "does-not" not in a:
+                assert os.path.exists(os.path.join(HERE, a[len("@DATA@/"):])), a
+    print(f"{len(cases)} file cases, {len(cli)} cli cases, {failures} failure(s)")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,50 @@
+// Every malformed file in tests/data/invalid/cases.json is refused with a message that names
+// where the problem is; none crashes. Every valid reference cam is accepted.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "io/project_json.h"
+#include "test_support.h"
+
+namespace cam {
+namespace {
+
+TEST(InvalidFiles, EachIsRefusedWithItsLocation) {
+    const auto manifest = nlohmann::json::parse(test::readFile(test::dataPath("invalid/cases.json")));
+    ASSERT_GE(manifest.size(), 40u);
+    for (const auto& c : manifest) {
+        const std::string file = c.at("file");
+        const std::string location = c.at("location");
+        SCOPED_TRACE(file + " (" + c.at("rule").get<std::string>() + ")");
+        const auto p = loadProjectFile(test::dataPath("invalid/" + file));
+        ASSERT_FALSE(p.ok());
+        bool found = false;
+        std::string all;
+        for (const Diagnostic& d : p.errors()) {
+            found = found || d.text().find(location) != std::string::npos;
+            all += "\n  " + d.text();
+        }
+        EXPECT_TRUE(found) << "expected a message at '" << location << "', got:" << all;
+    }
+}
+
+TEST(ValidFiles, ReferenceCamsAndExamplesLoad) {
+    namespace fs = std::filesystem;
+    int count = 0;
+    for (const auto& dir : {test::dataPath("reference"), std::string(CAMWRIGHT_EXAMPLES)}) {
+        for (const auto& entry : fs::directory_iterator(dir)) {
+            const std::string path = entry.path().string();
+            if (!path.ends_with(".cam.json")) continue;
+            const auto p = loadProjectFile(path);
+            EXPECT_TRUE(p.ok()) << path << ": " << (p.ok() ? "" : p.errors().front().text());
+            ++count;
+        }
+    }
+    EXPECT_GE(count, 7);
+}
+
+}  // namespace
+}  // namespace cam

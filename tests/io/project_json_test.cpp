@@ -1,0 +1,192 @@
+// Project files: load, save, round trip, unit conversion, forward compatibility, atomic writes.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "io/project_json.h"
+#include "test_support.h"
+
+namespace cam {
+namespace {
+
+const std::string kMinimal = R"({
+  "format": "camwright", "version": 1, "name": "disc",
+  "motion": { "rpm": 120 },
+  "contour": [ { "type": "arc", "center": [5, 0], "radius": 20, "branch": "outer",
+                 "phi_start": 0, "phi_end": 360 } ]
+})";
+
+std::string withReplaced(std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return text.replace(at, from.size(), to);
+}
+
+TEST(ProjectJson, LoadsTheBundledExample) {
+    const auto p = loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json"));
+    ASSERT_TRUE(p.ok()) << p.errors().front().text();
+    EXPECT_EQ(p.value().contour.size(), 13u);
+    EXPECT_EQ(p.value().motion.unit, SpeedUnit::PeriodS);
+    EXPECT_DOUBLE_EQ(p.value().motion.value, 0.4);
+    EXPECT_EQ(p.value().contour[0].branch, Branch::Inner);
+    EXPECT_DOUBLE_EQ(p.value().contour[1].radius, 8.103180550000001);
+}
+
+TEST(ProjectJson, SaveLoadSaveIsByteStable) {
+    const auto p = loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json"));
+    ASSERT_TRUE(p.ok());
+    const std::string first = serializeProject(p.value());
+    const auto again = parseProject(first);
+    ASSERT_TRUE(again.ok());
+    EXPECT_EQ(again.value(), p.value());
+    EXPECT_EQ(serializeProject(again.value()), first);
+}
+
+TEST(ProjectJson, WritesFieldsInTheDocumentedOrder) {
+    std::string text = withReplaced(kMinimal, R"("name": "disc",)",
+                                    R"("name": "disc", "sampling": {"samples_per_turn": 720},)");
+    const auto p = parseProject(text);
+    ASSERT_TRUE(p.ok());
+    const std::string out = serializeProject(p.value());
+    std::size_t last = 0;
+    for (const char* key : {"\"format\"", "\"version\"", "\"name\"", "\"units\"", "\"motion\"",
+                            "\"contour\"", "\"sampling\""}) {
+        const std::size_t at = out.find(key);
+        ASSERT_NE(at, std::string::npos) << key;
+        EXPECT_GT(at, last) << key;
+        last = at;
+    }
+}
+
+TEST(ProjectJson, PreservesUnknownTopLevelKeys) {
+    const std::string text = withReplaced(
+        kMinimal, R"("name": "disc",)",
+        R"("name": "disc", "x-vendor": {"b": [1, 2.5, "three"], "a": null}, "zeta": true,)");
+    const auto p = parseProject(text);
+    ASSERT_TRUE(p.ok()) << p.errors().front().text();
+    ASSERT_EQ(p.value().extraKeys.size(), 2u);
+    const std::string out = serializeProject(p.value());
+    EXPECT_NE(out.find(R"("x-vendor": {
+    "b": [
+      1,
+      2.5,
+      "three"
+    ],
+    "a": null
+  })"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find(R"("zeta": true)"), std::string::npos);
+    EXPECT_EQ(serializeProject(parseProject(out).value()), out);
+}
+
+TEST(ProjectJson, ConvertsMetresAndRadiansOnLoad) {
+    const std::string text = R"({
+      "format": "camwright", "version": 1, "units": {"length": "m", "angle": "rad"},
+      "motion": {"period_s": 2},
+      "contour": [ {"type": "arc", "center": [0.005, 0], "radius": 0.02, "branch": "outer",
+                    "phi_start": 0, "phi_end": 3.141592653589793},
+                   {"type": "arc", "center": [0.005, 0], "radius": 0.02, "branch": "outer",
+                    "phi_start": 3.141592653589793, "phi_end": 6.283185307179586} ],
+      "machining": {"axis_accel": [0.5, 0.5, 0.2], "feed_max": 0.1, "tool_radius": 0.003}
+    })";
+    const auto p = parseProject(text);
+    ASSERT_TRUE(p.ok()) << p.errors().front().text();
+    EXPECT_DOUBLE_EQ(p.value().contour[0].center.x(), 5.0);
+    EXPECT_DOUBLE_EQ(p.value().contour[0].radius, 20.0);
+    EXPECT_DOUBLE_EQ(p.value().contour[0].phiEndDeg, 180.0);
+    EXPECT_DOUBLE_EQ(p.value().contour[1].phiEndDeg, 360.0);
+    EXPECT_DOUBLE_EQ(p.value().machining->axisAccel[2], 200.0);
+    EXPECT_DOUBLE_EQ(p.value().machining->feedMax, 100.0);
+    EXPECT_DOUBLE_EQ(p.value().machining->toolRadius, 3.0);
+    // Saved in mm and degrees.
+    const std::string out = serializeProject(p.value());
+    EXPECT_NE(out.find(R"("length": "mm")"), std::string::npos);
+    EXPECT_NE(out.find(R"("angle": "deg")"), std::string::npos);
+}
+
+TEST(ProjectJson, LineWindowDefaultsToThePolarAnglesOfItsEnds) {
+    // A square of four lines without windows; the first starts at -45°.
+    const std::string text = R"({
+      "format": "camwright", "version": 1, "motion": {"omega_rad_s": -3},
+      "contour": [ {"type": "line", "from": [10, -10], "to": [10, 10]},
+                   {"type": "line", "from": [10, 10], "to": [-10, 10]},
+                   {"type": "line", "from": [-10, 10], "to": [-10, -10]},
+                   {"type": "line", "from": [-10, -10], "to": [10, -10]} ]
+    })";
+    const auto p = parseProject(text);
+    ASSERT_TRUE(p.ok()) << p.errors().front().text();
+    const double expected[][2] = {{-45, 45}, {45, 135}, {135, 225}, {225, 315}};
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_NEAR(p.value().contour[k].phiStartDeg, expected[k][0], 1e-12) << k;
+        EXPECT_NEAR(p.value().contour[k].phiEndDeg, expected[k][1], 1e-12) << k;
+    }
+    EXPECT_DOUBLE_EQ(p.value().motion.omegaRadS(), -3.0);
+}
+
+TEST(ProjectJson, AcceptsAByteOrderMark) {
+    EXPECT_TRUE(parseProject("\xEF\xBB\xBF" + kMinimal).ok());
+}
+
+TEST(ProjectJson, RefusesANewerVersionWithoutGuessing) {
+    const auto p = parseProject(withReplaced(kMinimal, R"("version": 1)", R"("version": 2)"));
+    ASSERT_FALSE(p.ok());
+    EXPECT_EQ(p.errors().front().location, "version");
+    EXPECT_NE(p.errors().front().message.find("newer Camwright"), std::string::npos);
+}
+
+TEST(ProjectJson, NamesTheDuplicatedKey) {
+    const auto p = parseProject(withReplaced(kMinimal, R"("radius": 20,)",
+                                             R"("radius": 20, "radius": 21,)"));
+    ASSERT_FALSE(p.ok());
+    EXPECT_EQ(p.errors().front().text(), "contour[0].radius: duplicated key");
+}
+
+TEST(ProjectJson, ReportsEveryStructuralProblemAtOnce) {
+    std::string text = withReplaced(kMinimal, R"("radius": 20)", R"("radius": "20")");
+    text = withReplaced(text, R"("branch": "outer")", R"("branch": "up", "colour": 3)");
+    const auto p = parseProject(text);
+    ASSERT_FALSE(p.ok());
+    std::vector<std::string> texts;
+    for (const auto& d : p.errors()) texts.push_back(d.text());
+    EXPECT_EQ(texts, (std::vector<std::string>{
+                         "contour[0].colour: unknown key",
+                         "contour[0].radius: must be a number (got a string)",
+                         "contour[0].branch: must be \"outer\" or \"inner\" (got \"up\")"}));
+}
+
+TEST(ProjectJson, SyntaxErrorsCarryLineAndColumn) {
+    const auto p = parseProject("{\n  \"format\": \"camwright\",\n  \"version\": NaN\n}");
+    ASSERT_FALSE(p.ok());
+    EXPECT_EQ(p.errors().front().location, "line 3, column 14");  // the N of NaN
+    const auto huge = parseProject(withReplaced(kMinimal, "\"radius\": 20", "\"radius\": 1e400"));
+    ASSERT_FALSE(huge.ok());
+    EXPECT_EQ(huge.errors().front().location, "line 4, column 61");
+    EXPECT_NE(huge.errors().front().message.find("too large"), std::string::npos);
+}
+
+TEST(AtomicWrite, ReplacesTheTargetOrLeavesItUntouched) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "camwright_atomic_test";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string target = (dir / "p.cam.json").string();
+    ASSERT_TRUE(writeFileAtomically(target, "first").empty());
+    ASSERT_TRUE(writeFileAtomically(target, "second").empty());
+    EXPECT_EQ(test::readFile(target), "second");
+    {
+        AtomicFileWriter writer(target);
+        writer.write("half a fi");
+        // destroyed without commit: as if the program died mid-way
+    }
+    EXPECT_EQ(test::readFile(target), "second");
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 1);
+    const Diagnostics failed = writeFileAtomically((dir / "missing" / "x.json").string(), "x");
+    ASSERT_EQ(failed.size(), 1u);
+    EXPECT_NE(failed.front().message.find("No such file"), std::string::npos);
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace cam

@@ -1,0 +1,86 @@
+#pragma once
+// Helpers shared by the core, io and cli tests: relative comparison, data paths, running a binary.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace cam::test {
+
+/// |actual - expected| <= rel·max(|expected|, floor): relative, with an absolute floor for zeros.
+inline ::testing::AssertionResult relClose(double actual, double expected, double rel,
+                                           double floor = 0.0) {
+    const double tol = rel * std::max(std::abs(expected), floor);
+    if (std::abs(actual - expected) <= tol) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure()
+           << "actual " << actual << " vs expected " << expected << ": difference "
+           << std::abs(actual - expected) << " > tolerance " << tol;
+}
+
+inline std::string dataPath(const std::string& relative) {
+    return std::string(CAMWRIGHT_TEST_DATA) + "/" + relative;
+}
+inline std::string examplePath(const std::string& name) {
+    return std::string(CAMWRIGHT_EXAMPLES) + "/" + name;
+}
+
+inline std::string readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+struct RunResult {
+    int exitCode = -1;  ///< -1 if killed by a signal
+    int signal = 0;
+    std::string out;
+    std::string err;
+};
+
+/// Runs a program with arguments (no shell), capturing stdout and stderr; kills it after
+/// `timeoutS` seconds so a hang fails the test instead of blocking the suite.
+inline RunResult run(const std::string& program, const std::vector<std::string>& args,
+                     int timeoutS = 60) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path();
+    const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(std::rand());
+    const std::string outPath = (dir / ("cw_out_" + tag)).string();
+    const std::string errPath = (dir / ("cw_err_" + tag)).string();
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        const int o = ::open(outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        const int e = ::open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        ::dup2(o, 1);
+        ::dup2(e, 2);
+        ::alarm(static_cast<unsigned>(timeoutS));
+        std::vector<char*> argv{const_cast<char*>(program.c_str())};
+        for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        ::execv(program.c_str(), argv.data());
+        ::_exit(127);
+    }
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    RunResult r;
+    if (WIFEXITED(status)) r.exitCode = WEXITSTATUS(status);
+    if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+    r.out = readFile(outPath);
+    r.err = readFile(errPath);
+    fs::remove(outPath);
+    fs::remove(errPath);
+    return r;
+}
+
+inline RunResult runCli(const std::vector<std::string>& args) { return run(CAMWRIGHT_CLI, args); }
+
+}  // namespace cam::test
