@@ -70,8 +70,9 @@ double parseFiniteNumber(const std::string& option, const std::string& text, con
     if (!text.empty() && *first == '+') ++first;
     const auto [ptr, ec] = std::from_chars(first, last, value);
     if (text.empty() || ec != std::errc{} || ptr != last || !std::isfinite(value)) {
-        throw CliError{kInvalidInput, option,
-                       std::string("must be a finite number of ") + what + " (got \"" + text + "\")"};
+        throw CliError{
+            kInvalidInput, option,
+            std::string("must be a finite number of ") + what + " (got \"" + text + "\")"};
     }
     return value;
 }

@@ -32,7 +32,8 @@ Loaded load(const std::string& path) {
             message += " (and " + std::to_string(project.errors().size() - 1) +
                        " more problems; run 'camwright-cli validate' for all)";
         }
-        throw CliError{kInvalidInput, d.location == path ? path : path + ": " + d.location, message};
+        throw CliError{kInvalidInput, d.location == path ? path : path + ": " + d.location,
+                       message};
     }
     auto contour = Contour::build(project.value());
     if (!contour.ok()) {  // cannot happen after a successful load, which validates
@@ -53,10 +54,18 @@ void appendNumber(std::string& out, double value) {
 
 Json stateJson(const KinematicState& s) {
     const PolarMotion& m = s.motion;
-    return Json{{"t", s.t},        {"phi_deg", radToDeg(s.phi)}, {"segment", s.segment},
-                {"r", s.polar.r},  {"v_r", m.vR},                {"v_phi", m.vPhi},
-                {"v", m.v},        {"a_r", m.aR},                {"a_phi", m.aPhi},
-                {"a", m.a},        {"j_r", m.jR},                {"j_phi", m.jPhi},
+    return Json{{"t", s.t},
+                {"phi_deg", radToDeg(s.phi)},
+                {"segment", s.segment},
+                {"r", s.polar.r},
+                {"v_r", m.vR},
+                {"v_phi", m.vPhi},
+                {"v", m.v},
+                {"a_r", m.aR},
+                {"a_phi", m.aPhi},
+                {"a", m.a},
+                {"j_r", m.jR},
+                {"j_phi", m.jPhi},
                 {"j", m.j}};
 }
 
@@ -114,10 +123,10 @@ int runSample(const Arguments& args, std::ostream& out) {
         chunk.clear();
     };
     for (std::size_t k = 0; k < turn.size(); ++k) {
-        const double row[] = {turn.t[k],   radToDeg(turn.phi[k]), 0.0,         turn.r[k],
-                              turn.x[k],   turn.y[k],             turn.vR[k],  turn.vPhi[k],
-                              turn.v[k],   turn.aR[k],            turn.aPhi[k], turn.a[k],
-                              turn.jR[k],  turn.jPhi[k],          turn.j[k]};
+        const double row[] = {
+            turn.t[k],  radToDeg(turn.phi[k]), 0.0,       turn.r[k],  turn.x[k],    turn.y[k],
+            turn.vR[k], turn.vPhi[k],          turn.v[k], turn.aR[k], turn.aPhi[k], turn.a[k],
+            turn.jR[k], turn.jPhi[k],          turn.j[k]};
         for (std::size_t c = 0; c < std::size(row); ++c) {
             if (c > 0) chunk += ',';
             if (c == 2) {

@@ -52,8 +52,8 @@ TEST(CliState, PrintsOneJsonObjectWithEveryField) {
     std::vector<std::string> keys;
     for (const auto& [k, v] : s.items()) keys.push_back(k);
     std::sort(keys.begin(), keys.end());
-    std::vector<std::string> expected{"t", "phi_deg", "segment", "r", "v_r", "v_phi", "v",
-                                      "a_r", "a_phi", "a", "j_r", "j_phi", "j"};
+    std::vector<std::string> expected{"t",   "phi_deg", "segment", "r",   "v_r",   "v_phi", "v",
+                                      "a_r", "a_phi",   "a",       "j_r", "j_phi", "j"};
     std::sort(expected.begin(), expected.end());
     EXPECT_EQ(keys, expected);
     EXPECT_DOUBLE_EQ(s.at("phi_deg").get<double>(), 45.0);
@@ -88,7 +88,7 @@ TEST(CliSample, DefaultsToTheProjectSamplingAndWritesFilesAtomically) {
     fs::remove(out);
     const auto r = test::runCli({"sample", kExample, "--out", out.string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_EQ(r.out, "");  // results went to the file
+    EXPECT_EQ(r.out, "");                                          // results went to the file
     EXPECT_EQ(lines(test::readFile(out.string())).size(), 3601u);  // default 3600 per turn
     fs::remove(out);
 }
@@ -138,9 +138,10 @@ TEST(CliErrors, BadArgumentsGiveTheDocumentedExitCode) {
     for (const auto& c : manifest) {
         std::vector<std::string> args;
         for (std::string a : c.at("args")) {
-            for (const auto& [from, to] : {std::pair<std::string, std::string>{"@VALID@", kExample},
-                                           {"@DATA@", data}}) {
-                if (const auto at = a.find(from); at != std::string::npos) a.replace(at, from.size(), to);
+            for (const auto& [from, to] :
+                 {std::pair<std::string, std::string>{"@VALID@", kExample}, {"@DATA@", data}}) {
+                if (const auto at = a.find(from); at != std::string::npos)
+                    a.replace(at, from.size(), to);
             }
             args.push_back(a);
         }

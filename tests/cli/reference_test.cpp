@@ -37,7 +37,7 @@ TEST(CliReference, StateAgreesWithTheHighPrecisionReferenceToOneBillionth) {
             // Components that are exactly zero in the reference get a floor of 1e-9 of the
             // magnitude they belong to.
             const std::pair<const char*, const char*> fields[] = {
-                {"r", "r"},   {"v_r", "v"},   {"v_phi", "v"}, {"v", "v"},   {"a_r", "a"},
+                {"r", "r"},     {"v_r", "v"}, {"v_phi", "v"}, {"v", "v"},     {"a_r", "a"},
                 {"a_phi", "a"}, {"a", "a"},   {"j_r", "j"},   {"j_phi", "j"}, {"j", "j"}};
             for (const auto& [key, magnitude] : fields) {
                 EXPECT_TRUE(relClose(got.at(key), e.at(key), 1e-9, e.at(magnitude))) << key;
@@ -51,7 +51,8 @@ TEST(CliReference, StateAgreesWithTheHighPrecisionReferenceToOneBillionth) {
 
 TEST(CliReference, SixLobeExampleAgreesWithMathMdTable) {
     // math.md §3: t = 0.37 s on the bundled example.
-    const auto run = test::runCli({"state", test::examplePath("six-lobe-arc-cam.cam.json"), "--t", "0.37"});
+    const auto run =
+        test::runCli({"state", test::examplePath("six-lobe-arc-cam.cam.json"), "--t", "0.37"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto s = nlohmann::json::parse(run.out);
     EXPECT_TRUE(relClose(s.at("r"), 28.897219241, 1e-9));

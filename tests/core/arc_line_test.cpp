@@ -96,7 +96,8 @@ TEST(Arc, InnerBranchIsTheNearIntersection) {
     for (double deg = -9.0; deg <= 9.0; deg += 1.5) {
         const double phi = degToRad(deg);
         for (const Arc& a : {outer, inner}) {
-            const Eigen::Vector2d p = a.evaluate(phi).r * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+            const Eigen::Vector2d p =
+                a.evaluate(phi).r * Eigen::Vector2d(std::cos(phi), std::sin(phi));
             EXPECT_NEAR((p - a.center).norm(), 5.0, 1e-12);
         }
     }

@@ -13,7 +13,8 @@ namespace cam {
 namespace {
 
 TEST(InvalidFiles, EachIsRefusedWithItsLocation) {
-    const auto manifest = nlohmann::json::parse(test::readFile(test::dataPath("invalid/cases.json")));
+    const auto manifest =
+        nlohmann::json::parse(test::readFile(test::dataPath("invalid/cases.json")));
     ASSERT_GE(manifest.size(), 40u);
     for (const auto& c : manifest) {
         const std::string file = c.at("file");

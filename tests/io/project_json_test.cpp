@@ -137,8 +137,8 @@ TEST(ProjectJson, RefusesANewerVersionWithoutGuessing) {
 }
 
 TEST(ProjectJson, NamesTheDuplicatedKey) {
-    const auto p = parseProject(withReplaced(kMinimal, R"("radius": 20,)",
-                                             R"("radius": 20, "radius": 21,)"));
+    const auto p =
+        parseProject(withReplaced(kMinimal, R"("radius": 20,)", R"("radius": 20, "radius": 21,)"));
     ASSERT_FALSE(p.ok());
     EXPECT_EQ(p.errors().front().text(), "contour[0].radius: duplicated key");
 }

@@ -27,22 +27,21 @@ inline constexpr double kCurvatureToleranceRel = 1e-6;
 struct JointAnalysis {
     std::size_t left = 0;
     std::size_t right = 0;
-    double phi = 0.0;               ///< rad, the end of the left window
-    double gapMm = 0.0;             ///< C0: distance between the two end points
-    double tangentBreakDeg = 0.0;   ///< angle between the two contour tangents
-    double jumpDr = 0.0;            ///< r'(right) - r'(left), mm/rad
-    double jumpD2r = 0.0;           ///< r''(right) - r''(left), mm/rad²
-    double jumpD3r = 0.0;           ///< r'''(right) - r'''(left), mm/rad³
-    double jumpAR = 0.0;            ///< a_r(right) - a_r(left), mm/s²
-    double jumpJR = 0.0;            ///< j_r(right) - j_r(left), mm/s³
+    double phi = 0.0;              ///< rad, the end of the left window
+    double gapMm = 0.0;            ///< C0: distance between the two end points
+    double tangentBreakDeg = 0.0;  ///< angle between the two contour tangents
+    double jumpDr = 0.0;           ///< r'(right) - r'(left), mm/rad
+    double jumpD2r = 0.0;          ///< r''(right) - r''(left), mm/rad²
+    double jumpD3r = 0.0;          ///< r'''(right) - r'''(left), mm/rad³
+    double jumpAR = 0.0;           ///< a_r(right) - a_r(left), mm/s²
+    double jumpJR = 0.0;           ///< j_r(right) - j_r(left), mm/s³
     Continuity continuity = Continuity::None;
 };
 
 /// @brief A quantity over one turn that analysis reports the extremes of.
 enum class Quantity { R, VR, V, AR, A, JR, J };
-inline constexpr std::array<Quantity, 7> kAllQuantities{Quantity::R,  Quantity::VR, Quantity::V,
-                                                        Quantity::AR, Quantity::A,  Quantity::JR,
-                                                        Quantity::J};
+inline constexpr std::array<Quantity, 7> kAllQuantities{
+    Quantity::R, Quantity::VR, Quantity::V, Quantity::AR, Quantity::A, Quantity::JR, Quantity::J};
 [[nodiscard]] const char* quantityName(Quantity q);
 
 struct Extremum {

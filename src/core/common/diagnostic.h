@@ -11,7 +11,8 @@ namespace cam {
 
 enum class Severity { Error, Info };
 
-/// @brief One problem (or note) and where it is, e.g. {"contour[3].radius", "must be > 0 (got -2)"}.
+/// @brief One problem (or note) and where it is, e.g. {"contour[3].radius", "must be > 0 (got
+/// -2)"}.
 struct Diagnostic {
     std::string location;
     std::string message;
@@ -37,7 +38,8 @@ template <class T>
 class Result {
 public:
     Result(T value) : m_value(std::move(value)) {}  // NOLINT(google-explicit-constructor)
-    Result(Diagnostics errors) : m_errors(std::move(errors)) {}  // NOLINT(google-explicit-constructor)
+    Result(Diagnostics errors)
+        : m_errors(std::move(errors)) {}  // NOLINT(google-explicit-constructor)
 
     [[nodiscard]] bool ok() const { return m_value.has_value(); }
     [[nodiscard]] const T& value() const& { return *m_value; }

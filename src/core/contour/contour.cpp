@@ -22,10 +22,10 @@ Result<Contour> Contour::build(const Project& project) {
         ContourSegment seg;
         seg.type = spec.type;
         seg.arc = Arc{spec.center, spec.radius, spec.branch};
+        seg.arcKernel = seg.arc.kernel();
         if (spec.type == SegmentType::Line) {
             seg.line = Line{spec.from, spec.to};
-            seg.lineNormal = seg.line.normal();
-            seg.lineDistance = seg.line.distance();
+            seg.lineKernel = seg.line.kernel();
         }
         seg.phiStart = degToRad(spec.phiStartDeg);
         seg.phiEnd = degToRad(spec.phiEndDeg);

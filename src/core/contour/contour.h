@@ -18,15 +18,13 @@ struct ContourSegment {
     SegmentType type = SegmentType::Arc;
     Arc arc;
     Line line;
-    Eigen::Vector2d lineNormal{1.0, 0.0};  ///< n of the line, d = n·from >= 0
-    double lineDistance = 0.0;             ///< d
+    Arc::Kernel arcKernel;
+    Line::Kernel lineKernel;
     double phiStart = 0.0;
     double phiEnd = 0.0;
 
     [[nodiscard]] PolarDerivatives evaluate(double cosPhi, double sinPhi) const {
-        return type == SegmentType::Arc
-                   ? arc.evaluate(cosPhi, sinPhi)
-                   : Line::evaluate(lineNormal, lineDistance, cosPhi, sinPhi);
+        return type == SegmentType::Arc ? arcKernel(cosPhi, sinPhi) : lineKernel(cosPhi, sinPhi);
     }
     /// @brief The segment's own formula at phi, also just outside its window (one-sided limits).
     [[nodiscard]] PolarDerivatives evaluate(double phi) const;

@@ -3,7 +3,6 @@
 /// @brief A circular arc seen from the rotation centre: the arc's r(phi) and its derivatives.
 
 #include <Eigen/Core>
-#include <algorithm>
 #include <cmath>
 
 #include "geometry/polar_derivatives.h"
@@ -22,24 +21,38 @@ struct Arc {
     double radius = 1.0;
     Branch branch = Branch::Outer;
 
+    /// @brief The arc reduced to the scalars its r(phi) needs, for tight (vectorised) loops.
+    struct Kernel {
+        double cx = 0.0, cy = 0.0;  ///< centre
+        double k = 1.0;             ///< R² - |c|²
+        double s = 1.0;             ///< +1 outer, -1 inner
+
+        /// With mu = c·u, D = mu² + k, q = sqrt(D), P = mu·mu', w = mu'² - mu²:
+        /// r = mu + s·q, r' = mu' + s·P/q, r'' = -mu + s·(w/q - P²/q³),
+        /// r''' = -mu' + s·(-4P/q - 3P·w/q³ + 3P³/q⁵).
+        [[nodiscard]] PolarDerivatives operator()(double cosPhi, double sinPhi) const {
+            const double mu = cx * cosPhi + cy * sinPhi;
+            const double mu1 = cy * cosPhi - cx * sinPhi;
+            const double d = mu * mu + k;
+            const double q = std::sqrt(d > 0.0 ? d : 0.0);  // D is 0, not -1e-17, at a tangent
+            const double p = mu * mu1;
+            const double w = mu1 * mu1 - mu * mu;
+            const double invQ = 1.0 / q;
+            const double invQ2 = invQ * invQ;
+            const double pq = p * invQ2;  // P/q²
+            return {mu + s * q, mu1 + s * p * invQ, -mu + s * invQ * (w - p * pq),
+                    -mu1 + s * p * invQ * (-4.0 - 3.0 * w * invQ2 + 3.0 * pq * pq)};
+        }
+    };
+
+    [[nodiscard]] Kernel kernel() const {
+        return {center.x(), center.y(), radius * radius - center.squaredNorm(),
+                branch == Branch::Outer ? 1.0 : -1.0};
+    }
+
     /// @brief r, r', r'', r''' at the ray direction (cos phi, sin phi).
-    ///
-    /// With mu = c·u, D = mu² - |c|² + R², q = sqrt(D), P = mu·mu':
-    /// r = mu + s·q, r' = mu' + s·P/q, r'' = -mu + s·((mu'² - mu²)/q - P²/q³),
-    /// r''' = -mu' + s·(-4P/q - 3P(mu'² - mu²)/q³ + 3P³/q⁵).
     [[nodiscard]] PolarDerivatives evaluate(double cosPhi, double sinPhi) const {
-        const double s = branch == Branch::Outer ? 1.0 : -1.0;
-        const double mu = center.x() * cosPhi + center.y() * sinPhi;
-        const double mu1 = center.y() * cosPhi - center.x() * sinPhi;
-        const double d = mu * mu - center.squaredNorm() + radius * radius;
-        const double q = std::sqrt(std::max(d, 0.0));  // D is 0, not -1e-17, at a tangent
-        const double p = mu * mu1;
-        const double w = mu1 * mu1 - mu * mu;
-        const double invQ = 1.0 / q;
-        const double invQ2 = invQ * invQ;
-        const double pq = p * invQ2;  // P/q²
-        return {mu + s * q, mu1 + s * p * invQ, -mu + s * invQ * (w - p * pq),
-                -mu1 + s * p * invQ * (-4.0 - 3.0 * w * invQ2 + 3.0 * pq * pq)};
+        return kernel()(cosPhi, sinPhi);
     }
 
     [[nodiscard]] PolarDerivatives evaluate(double phi) const {

@@ -25,22 +25,34 @@ struct Line {
     /// @brief Distance from the rotation centre to the line.
     [[nodiscard]] double distance() const { return normal().dot(from); }
 
-    /// @brief r, r', r'', r''' at the ray direction (cos phi, sin phi), given n and d.
-    ///
-    /// With c = n·u, c' = n·u': r = d/c, r' = -d·c'/c², r'' = d·(2c'² + c²)/c³,
-    /// r''' = -d·c'·(5c² + 6c'²)/c⁴.
-    [[nodiscard]] static PolarDerivatives evaluate(const Eigen::Vector2d& n, double d,
-                                                   double cosPhi, double sinPhi) {
-        const double c = n.x() * cosPhi + n.y() * sinPhi;
-        const double c1 = n.y() * cosPhi - n.x() * sinPhi;
-        const double inv = 1.0 / c;
-        const double r = d * inv;
-        const double t = c1 * inv;  // c'/c
-        return {r, -r * t, r * (2.0 * t * t + 1.0), -r * t * (5.0 + 6.0 * t * t)};
+    /// @brief The line reduced to the scalars its r(phi) needs, for tight (vectorised) loops.
+    struct Kernel {
+        double nx = 1.0, ny = 0.0;  ///< unit normal n
+        double d = 1.0;             ///< n·from >= 0
+
+        /// With c = n·u, c' = n·u', t = c'/c: r = d/c, r' = -r·t, r'' = r·(2t² + 1),
+        /// r''' = -r·t·(5 + 6t²).
+        [[nodiscard]] PolarDerivatives operator()(double cosPhi, double sinPhi) const {
+            const double c = nx * cosPhi + ny * sinPhi;
+            const double c1 = ny * cosPhi - nx * sinPhi;
+            const double r = d / c;
+            const double t = c1 / c;
+            return {r, -r * t, r * (2.0 * t * t + 1.0), -r * t * (5.0 + 6.0 * t * t)};
+        }
+    };
+
+    [[nodiscard]] Kernel kernel() const {
+        const Eigen::Vector2d n = normal();
+        return {n.x(), n.y(), n.dot(from)};
+    }
+
+    /// @brief r, r', r'', r''' at the ray direction (cos phi, sin phi).
+    [[nodiscard]] PolarDerivatives evaluate(double cosPhi, double sinPhi) const {
+        return kernel()(cosPhi, sinPhi);
     }
 
     [[nodiscard]] PolarDerivatives evaluate(double phi) const {
-        return evaluate(normal(), distance(), std::cos(phi), std::sin(phi));
+        return evaluate(std::cos(phi), std::sin(phi));
     }
 };
 

@@ -39,8 +39,8 @@ public:
             case E::object_start:
             case E::array_start:
                 if (depth >= kMaxDepth) {
-                    throw StructureError{path(), "nesting deeper than " +
-                                                     std::to_string(kMaxDepth) + " levels"};
+                    throw StructureError{
+                        path(), "nesting deeper than " + std::to_string(kMaxDepth) + " levels"};
                 }
                 m_frames.push_back({event == E::array_start, 0, {}, {}});
                 break;
@@ -109,7 +109,8 @@ std::string lineColumnOf(std::string_view text, std::size_t offset) {
 /// into {"line 3, column 7", "msg"}.
 Diagnostic syntaxDiagnostic(const Json::exception& e, std::string_view text) {
     const std::string what = e.what();
-    static const std::regex located(R"(^\[json\.exception\.[a-z_]+\.\d+\] (?:parse error )?at (line \d+, column \d+): (.*)$)");
+    static const std::regex located(
+        R"(^\[json\.exception\.[a-z_]+\.\d+\] (?:parse error )?at (line \d+, column \d+): (.*)$)");
     std::smatch m;
     if (std::regex_match(what, m, located)) return {m[1], m[2].str()};
     const std::string message = what.substr(what.find(']') + 2);
@@ -186,9 +187,10 @@ public:
         if (!j) return std::nullopt;
         const std::string loc = join(at, key);
         if (!j->is_array() || j->size() != 2) {
-            error(loc, std::string("must be an array [x, y] of two numbers (got ") +
-                           (j->is_array() ? std::to_string(j->size()) + " elements" : typeName(*j)) +
-                           ")");
+            error(loc,
+                  std::string("must be an array [x, y] of two numbers (got ") +
+                      (j->is_array() ? std::to_string(j->size()) + " elements" : typeName(*j)) +
+                      ")");
             return std::nullopt;
         }
         const auto x = number((*j)[0], loc + "[0]");
@@ -293,9 +295,9 @@ void readMotion(Reader& rd, const Json& root, Project& p) {
     if (!m || !rd.object(*m, "motion")) return;
     rd.onlyKeys(*m, "motion", {"omega_rad_s", "rpm", "period_s"});
     int given = 0;
-    for (auto [key, unit] : {std::pair{"omega_rad_s", SpeedUnit::OmegaRadS},
-                             std::pair{"rpm", SpeedUnit::Rpm},
-                             std::pair{"period_s", SpeedUnit::PeriodS}}) {
+    for (auto [key, unit] :
+         {std::pair{"omega_rad_s", SpeedUnit::OmegaRadS}, std::pair{"rpm", SpeedUnit::Rpm},
+          std::pair{"period_s", SpeedUnit::PeriodS}}) {
         if (!m->contains(key)) continue;
         ++given;
         if (const auto v = rd.number(*m, "motion", key, true)) p.motion = {unit, *v};
@@ -413,7 +415,8 @@ Result<Project> readProject(const Json& root) {
 
     if (const Json* c = rd.field(root, "", "contour", true)) {
         if (!c->is_array()) {
-            rd.error("contour", std::string("must be an array of segments (got ") + typeName(*c) + ")");
+            rd.error("contour",
+                     std::string("must be an array of segments (got ") + typeName(*c) + ")");
         } else {
             std::optional<double> previousEnd;
             for (std::size_t k = 0; k < c->size(); ++k) {
@@ -428,9 +431,9 @@ Result<Project> readProject(const Json& root) {
     readSampling(rd, root, p);
     readMachining(rd, root, units, p);
 
-    static const std::set<std::string> known{"format",  "version",  "name",     "units",
-                                             "motion",  "contour",  "follower", "sampling",
-                                             "machining"};
+    static const std::set<std::string> known{"format",   "version",  "name",
+                                             "units",    "motion",   "contour",
+                                             "follower", "sampling", "machining"};
     for (const auto& [key, value] : root.items()) {
         if (!known.contains(key)) p.extraKeys.emplace_back(key, value.dump());
     }
@@ -459,7 +462,8 @@ Result<Project> parseProject(std::string_view text) {
 
 Result<std::string> readTextFile(const std::string& path) {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) return Diagnostics{{path, "is a folder, not a file"}};
+    if (std::filesystem::is_directory(path, ec))
+        return Diagnostics{{path, "is a folder, not a file"}};
     std::ifstream in(path, std::ios::binary);
     if (!in) return Diagnostics{{path, std::string("cannot open: ") + std::strerror(errno)}};
     std::ostringstream buffer;
@@ -505,7 +509,7 @@ std::string serializeProject(const Project& p) {
     if (p.follower) {
         const FollowerSpec& f = *p.follower;
         Json j;
-        j["type"] = f.type == FollowerType::Knife ? "knife"
+        j["type"] = f.type == FollowerType::Knife    ? "knife"
                     : f.type == FollowerType::Roller ? "roller"
                                                      : "flat";
         j["offset"] = f.offset;
@@ -545,7 +549,8 @@ AtomicFileWriter::~AtomicFileWriter() {
 }
 
 void AtomicFileWriter::fail(const char* what) {
-    if (m_errors.empty()) m_errors.push_back({m_path, std::string(what) + ": " + std::strerror(errno)});
+    if (m_errors.empty())
+        m_errors.push_back({m_path, std::string(what) + ": " + std::strerror(errno)});
 }
 
 void AtomicFileWriter::write(std::string_view chunk) {

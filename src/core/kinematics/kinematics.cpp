@@ -52,17 +52,19 @@ struct Outputs {
 
 /// Samples [k0, k0 + count) that share one block and one segment.
 template <class Evaluate>
-void runPiece(const Evaluate& evaluate, const Outputs& o, const double* __restrict ct,
-              const double* __restrict st, double cb, double sb, std::size_t k0,
-              std::size_t count, double omega, double dt, std::int32_t seg) {
+void runPiece(const Evaluate evaluate, const Outputs o, const double* __restrict ct,
+              const double* __restrict st, double cb, double sb, std::size_t k0, std::size_t count,
+              double omega, double dt, std::int32_t seg) {
     const std::size_t j0 = k0 & (kBlock - 1);
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::size_t k = k0 + i;
+    const double k0d = static_cast<double>(k0);
+    const auto n = static_cast<std::int32_t>(count);  // count <= kBlock
+    for (std::int32_t i = 0; i < n; ++i) {
+        const std::size_t k = k0 + static_cast<std::size_t>(i);
         const double c = cb * ct[j0 + i] - sb * st[j0 + i];
         const double s = sb * ct[j0 + i] + cb * st[j0 + i];
         const PolarDerivatives d = evaluate(c, s);
         const PolarMotion m = polarMotion(d, omega);
-        const double t = static_cast<double>(k) * dt;
+        const double t = (k0d + static_cast<double>(i)) * dt;  // exact: both are integers
         o.t[k] = t;
         o.phi[k] = omega * t;
         o.r[k] = d.r;
@@ -96,6 +98,32 @@ void runSegment(const Evaluate& evaluate, const Outputs& o, const std::vector<do
     }
 }
 
+// The loops above are compiled once per instruction set and the best one for the running CPU
+// is chosen at load time (GCC function multiversioning), so a package built for any x86-64
+// still uses AVX2/AVX-512 where the machine has them. See the README for the figures.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define CAMWRIGHT_MULTIVERSION \
+    __attribute__((flatten, target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define CAMWRIGHT_MULTIVERSION
+#endif
+
+CAMWRIGHT_MULTIVERSION
+void runArcSegment(const Arc::Kernel& kernel, const Outputs& o, const std::vector<double>& ct,
+                   const std::vector<double>& st, const std::vector<double>& cb,
+                   const std::vector<double>& sb, std::size_t k0, std::size_t k1, double omega,
+                   double dt, std::int32_t seg) {
+    runSegment(kernel, o, ct, st, cb, sb, k0, k1, omega, dt, seg);
+}
+
+CAMWRIGHT_MULTIVERSION
+void runLineSegment(const Line::Kernel& kernel, const Outputs& o, const std::vector<double>& ct,
+                    const std::vector<double>& st, const std::vector<double>& cb,
+                    const std::vector<double>& sb, std::size_t k0, std::size_t k1, double omega,
+                    double dt, std::int32_t seg) {
+    runSegment(kernel, o, ct, st, cb, sb, k0, k1, omega, dt, seg);
+}
+
 }  // namespace
 
 void sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn& out) {
@@ -116,10 +144,10 @@ void sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn
         sb[b] = std::sin(angle);
     }
 
-    const Outputs o{out.t.data(),  out.phi.data(),  out.r.data(),  out.x.data(),
-                    out.y.data(),  out.vR.data(),   out.vPhi.data(), out.v.data(),
-                    out.aR.data(), out.aPhi.data(), out.a.data(),  out.jR.data(),
-                    out.jPhi.data(), out.j.data(),  out.segment.data()};
+    const Outputs o{out.t.data(),    out.phi.data(),  out.r.data(),      out.x.data(),
+                    out.y.data(),    out.vR.data(),   out.vPhi.data(),   out.v.data(),
+                    out.aR.data(),   out.aPhi.data(), out.a.data(),      out.jR.data(),
+                    out.jPhi.data(), out.j.data(),    out.segment.data()};
     auto phiOf = [&](std::size_t k) { return omega * (static_cast<double>(k) * dt); };
 
     for (std::size_t k = 0; k < n;) {
@@ -137,15 +165,9 @@ void sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn
 
         const auto segIndex = static_cast<std::int32_t>(seg);
         if (s.type == SegmentType::Arc) {
-            const Arc arc = s.arc;
-            runSegment([&arc](double c, double sn) { return arc.evaluate(c, sn); }, o, ct, st,
-                       cb, sb, k, end, omega, dt, segIndex);
+            runArcSegment(s.arcKernel, o, ct, st, cb, sb, k, end, omega, dt, segIndex);
         } else {
-            const Eigen::Vector2d nrm = s.lineNormal;
-            const double dist = s.lineDistance;
-            runSegment(
-                [nrm, dist](double c, double sn) { return Line::evaluate(nrm, dist, c, sn); }, o,
-                ct, st, cb, sb, k, end, omega, dt, segIndex);
+            runLineSegment(s.lineKernel, o, ct, st, cb, sb, k, end, omega, dt, segIndex);
         }
         k = end;
     }

@@ -102,8 +102,8 @@ private:
         const SegmentSpec& s = m_project.contour[k];
         const std::string at = segmentLocation(k);
         bool ok = true;
-        for (auto [name, value] : {std::pair{".phi_start", s.phiStartDeg},
-                                   std::pair{".phi_end", s.phiEndDeg}}) {
+        for (auto [name, value] :
+             {std::pair{".phi_start", s.phiStartDeg}, std::pair{".phi_end", s.phiEndDeg}}) {
             if (!std::isfinite(value) || std::abs(value) > 1e6) {
                 error(at + name, "must be a finite angle of magnitude at most 1e6° (got " +
                                      formatNumber(value) + ")");
@@ -137,8 +137,9 @@ private:
         const double cross = s.from.x() * s.to.y() - s.from.y() * s.to.x();
         const Line line{s.from, s.to};
         if (line.distance() <= kJointToleranceMm) {
-            error(at, "the line passes through the rotation centre, so the follower ray meets "
-                      "it at no angle or at every point");
+            error(at,
+                  "the line passes through the rotation centre, so the follower ray meets "
+                  "it at no angle or at every point");
             return false;
         }
         if (cross <= 0.0) {
@@ -168,8 +169,9 @@ private:
         const double dist = s.center.norm();
         const double rel = (dist - s.radius) / s.radius;
         if (s.branch == Branch::Inner && rel <= 1e-12) {
-            error(at + ".branch", "the rotation centre lies inside this circle, so the inner "
-                                  "intersection is behind the follower (r <= 0); use \"outer\"");
+            error(at + ".branch",
+                  "the rotation centre lies inside this circle, so the inner "
+                  "intersection is behind the follower (r <= 0); use \"outer\"");
             return false;
         }
         if (rel < -1e-12) return true;  // centre inside the circle: the outer branch is total
@@ -180,10 +182,9 @@ private:
         const double hi = lo + (s.phiEndDeg - s.phiStartDeg);
         constexpr double kTangentTolDeg = 1e-7;
         if (lo < -alphaDeg - kTangentTolDeg || hi > alphaDeg + kTangentTolDeg) {
-            error(at, "the follower ray misses the circle inside the window " +
-                          deg(s.phiStartDeg) + " .. " + deg(s.phiEndDeg) +
-                          "; it meets it only for phi in " + deg(centerDeg - alphaDeg) + " .. " +
-                          deg(centerDeg + alphaDeg));
+            error(at, "the follower ray misses the circle inside the window " + deg(s.phiStartDeg) +
+                          " .. " + deg(s.phiEndDeg) + "; it meets it only for phi in " +
+                          deg(centerDeg - alphaDeg) + " .. " + deg(centerDeg + alphaDeg));
             return false;
         }
         return true;
@@ -198,9 +199,9 @@ private:
             const double diff = next - end;
             if (std::abs(diff) > kWindowToleranceDeg) {
                 error(segmentLocation(k) + "/" + segmentLocation(k + 1),
-                      std::string(diff > 0 ? "gap" : "overlap") + " of " +
-                          deg(std::abs(diff)) + " between phi_end " + formatNumber(end) +
-                          " and phi_start " + formatNumber(next));
+                      std::string(diff > 0 ? "gap" : "overlap") + " of " + deg(std::abs(diff)) +
+                          " between phi_end " + formatNumber(end) + " and phi_start " +
+                          formatNumber(next));
                 ok = false;
             }
         }
@@ -216,8 +217,9 @@ private:
 
     static Eigen::Vector2d pointAt(const SegmentSpec& s, double phiDeg) {
         const double phi = degToRad(phiDeg);
-        const double r = s.type == SegmentType::Arc ? Arc{s.center, s.radius, s.branch}.evaluate(phi).r
-                                                    : Line{s.from, s.to}.evaluate(phi).r;
+        const double r = s.type == SegmentType::Arc
+                             ? Arc{s.center, s.radius, s.branch}.evaluate(phi).r
+                             : Line{s.from, s.to}.evaluate(phi).r;
         return {r * std::cos(phi), r * std::sin(phi)};
     }
 
