@@ -77,12 +77,20 @@ private:
     }
 
     std::string path() const {
+        // Deep paths are named by their first levels only: "key[0][0][0]…".
+        constexpr std::size_t kShownLevels = 4;
         std::string p;
-        for (const Frame& f : m_frames) {
+        for (std::size_t i = 0; i < m_frames.size(); ++i) {
+            const Frame& f = m_frames[i];
+            if (i == kShownLevels) {
+                p += "…";
+                break;
+            }
             if (f.isArray) {
                 p += "[" + std::to_string(f.index) + "]";
             } else if (!f.key.empty()) {
-                p += (p.empty() ? "" : ".") + f.key;
+                if (!p.empty()) p += '.';
+                p += f.key;
             }
         }
         return p;
@@ -535,7 +543,10 @@ AtomicFileWriter::AtomicFileWriter(std::string path) : m_path(std::move(path)) {
     namespace fs = std::filesystem;
     const fs::path target(m_path);
     const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    m_tempPath = (dir / ("." + target.filename().string() + ".XXXXXX")).string();
+    std::string name = ".";  // built by appends: GCC 12 warns falsely on "." + string (PR105651)
+    name += target.filename().string();
+    name += ".XXXXXX";
+    m_tempPath = (dir / name).string();
     m_fd = ::mkstemp(m_tempPath.data());
     if (m_fd < 0) {
         m_errors.push_back({m_path, std::string("cannot write: ") + std::strerror(errno)});
