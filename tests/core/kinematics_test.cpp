@@ -116,3 +116,20 @@ TEST(SampledTurn, ReusesStorageAcrossSizes) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(SampledTurn, StopsWhenCancelledAndCompletesOtherwise) {
+    const Contour c = Contour::build(test::splitCircle(0.0, 10.0, {0.0, 360.0})).value();
+    SampledTurn turn;
+    std::atomic<bool> cancel{true};
+    EXPECT_FALSE(sampleTurn(c, 1.0, 1'000'000, turn, &cancel));
+    cancel = false;
+    EXPECT_TRUE(sampleTurn(c, 1.0, 1'000'000, turn, &cancel));
+    EXPECT_DOUBLE_EQ(turn.r.back(), 10.0);
+    EXPECT_TRUE(sampleTurn(c, 1.0, 10, turn));
+}
+
+}  // namespace
+}  // namespace cam

@@ -126,7 +126,8 @@ void runLineSegment(const Line::Kernel& kernel, const Outputs& o, const std::vec
 
 }  // namespace
 
-void sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn& out) {
+bool sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn& out,
+                const std::atomic<bool>* cancel) {
     out.resize(n);
     const double period = kTwoPi / std::abs(omega);
     const double dt = period / static_cast<double>(n);
@@ -150,7 +151,9 @@ void sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn
                     out.jPhi.data(), out.j.data(),    out.segment.data()};
     auto phiOf = [&](std::size_t k) { return omega * (static_cast<double>(k) * dt); };
 
+    constexpr std::size_t kSamplesBetweenPolls = 16 * kBlock;
     for (std::size_t k = 0; k < n;) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) return false;
         const double x = contour.normalize(phiOf(k));
         const std::size_t seg = contour.segmentAtNormalized(x);
         const ContourSegment& s = contour.segment(seg);
@@ -162,6 +165,7 @@ void sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn
         end = std::min(end, n);
         while (end > k + 1 && contour.segmentAt(phiOf(end - 1)) != seg) --end;
         while (end < n && contour.segmentAt(phiOf(end)) == seg) ++end;
+        end = std::min(end, k + kSamplesBetweenPolls);
 
         const auto segIndex = static_cast<std::int32_t>(seg);
         if (s.type == SegmentType::Arc) {
@@ -171,6 +175,7 @@ void sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn
         }
         k = end;
     }
+    return true;
 }
 
 }  // namespace cam

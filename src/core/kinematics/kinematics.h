@@ -2,6 +2,7 @@
 /// @file
 /// @brief Polar kinematics of the follower at constant angular speed (math.md §2).
 
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -61,6 +62,10 @@ struct SampledTurn {
 };
 
 /// @brief Samples one turn into `out`, reusing its storage. Requires n >= 1 and omega != 0.
-void sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn& out);
+///
+/// If `cancel` is given it is polled every few thousand samples; when it reads true the
+/// function returns false at once and `out` holds a partial turn. Returns true when complete.
+bool sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn& out,
+                const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace cam
