@@ -1,39 +1,140 @@
-// camwright: the desktop application. In this first version a minimal window that shows the
-// contour and r(phi) of a project; the full editor (arc table, live plots, undo) comes next.
+// camwright: the desktop application.
+//   camwright [PROJECT]
+//   camwright --screenshot FILE.png [--size WxH] [PROJECT]   (works without any display)
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QEventLoop>
+#include <QLibraryInfo>
+#include <QLocale>
 #include <QMessageBox>
-#include <cstdlib>
+#include <QTimer>
+#include <QTranslator>
+#include <cstdio>
+#include <cstring>
 
+#include "engine/compute_engine.h"
 #include "mainwindow.h"
+#include "views/kinematics_plots.h"
+
+namespace {
+
+/// With no display QApplication aborts before any argument parsing; a screenshot or --help
+/// needs none, and an interactive start without one falls back to offscreen.
+void chooseOffscreenWhenThereIsNoDisplay(int argc, char** argv) {
+    if (!qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) return;
+    bool headless = false;
+    for (int i = 1; i < argc; ++i) {
+        headless = headless || std::strcmp(argv[i], "--screenshot") == 0 ||
+                   std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "--version") == 0;
+    }
+    const bool noDisplay =
+        qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
+    if (headless || noDisplay) qputenv("QT_QPA_PLATFORM", "offscreen");
+}
+
+/// Waits (running the event loop) until the window shows a computed result.
+bool waitForResult(cam::MainWindow& window, int timeoutMs) {
+    if (window.engine()->latestResult() &&
+        window.engine()->latestResult()->generation == window.engine()->latestGeneration()) {
+        return true;
+    }
+    QEventLoop loop;
+    QTimer::singleShot(timeoutMs, &loop, [&loop] { loop.exit(1); });
+    QObject::connect(&window, &cam::MainWindow::resultShown, &loop, [&loop] { loop.exit(0); });
+    return loop.exec() == 0;
+}
+
+int screenshot(cam::MainWindow& window, const QString& file, const QString& size) {
+    int w = 1400, h = 860;
+    if (!size.isEmpty()) {
+        const QStringList parts = size.split('x');
+        bool okW = false, okH = false;
+        if (parts.size() == 2) {
+            w = parts[0].toInt(&okW);
+            h = parts[1].toInt(&okH);
+        }
+        if (!okW || !okH || w < 320 || h < 240 || w > 8000 || h > 8000) {
+            std::fprintf(stderr,
+                         "camwright: --size: expected WxH between 320x240 and 8000x8000 "
+                         "(got \"%s\")\n",
+                         qPrintable(size));
+            return 1;
+        }
+    }
+    window.resize(w, h);
+    window.show();
+    if (!waitForResult(window, 20000)) {
+        std::fprintf(stderr, "camwright: the computation did not finish within 20 s\n");
+        return 3;
+    }
+    // Put the cursor where the seed's Table 2 starts (t = T/8) so the readout is filled.
+    const auto& result = window.engine()->latestResult();
+    window.setCursorTime(result->period / 8.0);
+    for (int p = 0; p < 3; ++p) window.plots()->plot(p)->replot(QCustomPlot::rpImmediateRefresh);
+    QCoreApplication::processEvents();
+    const QPixmap pixmap = window.grab();
+    if (!pixmap.save(file, "PNG")) {
+        std::fprintf(stderr, "camwright: %s: cannot write the PNG\n", qPrintable(file));
+        return 2;
+    }
+    return 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-    // With no display QApplication aborts before any argument parsing; fall back to offscreen.
-    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
-        qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {
-        qputenv("QT_QPA_PLATFORM", "offscreen");
-    }
+    chooseOffscreenWhenThereIsNoDisplay(argc, argv);
     QApplication app(argc, argv);
     QApplication::setApplicationName("Camwright");
     QApplication::setOrganizationName("Camwright");
     QApplication::setApplicationVersion(CAMWRIGHT_VERSION);
 
+    QTranslator qtTranslator, appTranslator;
+    if (qtTranslator.load(QLocale(), "qtbase", "_",
+                          QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
+        QApplication::installTranslator(&qtTranslator);
+    }
+    if (appTranslator.load(QLocale(), "camwright", "_", ":/i18n")) {
+        QApplication::installTranslator(&appTranslator);
+    }
+
     QCommandLineParser parser;
-    parser.setApplicationDescription("Design and inspect cam contours.");
+    parser.setApplicationDescription(
+        QApplication::translate("main", "Design and inspect cam contours."));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument("project", "A .cam.json project to open.", "[PROJECT]");
+    parser.addPositionalArgument(
+        "project", QApplication::translate("main", "A .cam.json project to open."), "[PROJECT]");
+    const QCommandLineOption screenshotOption(
+        "screenshot",
+        QApplication::translate("main", "Render the main window into FILE.png and exit."),
+        "FILE.png");
+    const QCommandLineOption sizeOption(
+        "size", QApplication::translate("main", "Window size for --screenshot."), "WxH");
+    parser.addOption(screenshotOption);
+    parser.addOption(sizeOption);
     parser.process(app);
 
     cam::MainWindow window;
     const QStringList files = parser.positionalArguments();
+    if (files.size() > 1) {
+        std::fprintf(stderr, "camwright: give at most one PROJECT\n");
+        return 1;
+    }
+    const bool headless = parser.isSet(screenshotOption);
     if (!files.isEmpty()) {
-        const QString problem = window.openProject(files.front());
+        const QString problem = window.loadFile(files.front());
         if (!problem.isEmpty()) {
-            QMessageBox::critical(&window, "Camwright", problem);
+            if (headless) {
+                std::fprintf(stderr, "camwright: %s\n", qPrintable(problem));
+                return 2;
+            }
+            QMessageBox::warning(&window, "Camwright", problem);
         }
     }
+    if (headless)
+        return screenshot(window, parser.value(screenshotOption), parser.value(sizeOption));
     window.show();
     return QApplication::exec();
 }

@@ -1,60 +1,465 @@
 #include "mainwindow.h"
 
-#include <qcustomplot.h>
-
+#include <QCloseEvent>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSaveFile>
+#include <QSettings>
 #include <QSplitter>
-#include <QStatusBar>
+#include <QStandardPaths>
+#include <QTableView>
+#include <cmath>
 
 #include "common/angles.h"
-#include "contour/contour.h"
+#include "contour/fit_windows.h"
+#include "document/commands.h"
+#include "engine/compute_engine.h"
 #include "io/project_json.h"
-#include "kinematics/kinematics.h"
+#include "models/arc_table_model.h"
+#include "models/delegates.h"
+#include "ui_mainwindow.h"
+#include "views/contour_view.h"
+#include "views/kinematics_plots.h"
+#include "views/motion_panel.h"
+#include "views/state_readout.h"
 
 namespace cam {
+namespace {
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
-    setWindowTitle("Camwright");
-    auto* splitter = new QSplitter(this);
-    m_contourPlot = new QCustomPlot(splitter);
-    m_radiusPlot = new QCustomPlot(splitter);
-    m_contourPlot->xAxis->setLabel("x [mm]");
-    m_contourPlot->yAxis->setLabel("y [mm]");
-    m_radiusPlot->xAxis->setLabel("φ [°]");
-    m_radiusPlot->yAxis->setLabel("r [mm]");
-    setCentralWidget(splitter);
-    resize(1200, 600);
-    statusBar()->showMessage(tr("Open a project to see its contour."));
+constexpr int kMaxRecentFiles = 8;
+const char* kFileFilter = QT_TRANSLATE_NOOP("cam::MainWindow", "Camwright projects (*.cam.json)");
+
+QString diagnosticsText(const Diagnostics& diagnostics, int limit = 12) {
+    QStringList lines;
+    for (const Diagnostic& d : diagnostics) {
+        if (lines.size() == limit) {
+            lines << MainWindow::tr("… and %1 more").arg(diagnostics.size() - limit);
+            break;
+        }
+        lines << QString::fromStdString(d.text());
+    }
+    return lines.join('\n');
 }
 
-QString MainWindow::openProject(const QString& path) {
-    const auto loaded = loadProjectFile(path.toStdString());
-    if (!loaded.ok()) {
-        QStringList lines;
-        for (const Diagnostic& d : loaded.errors()) lines << QString::fromStdString(d.text());
-        return tr("%1 cannot be opened:\n%2").arg(path, lines.join('\n'));
+/// The example projects: next to the binary when installed, in the source tree when built.
+QStringList exampleDirectories() {
+    return {QDir(QCoreApplication::applicationDirPath()).filePath("../share/camwright/examples"),
+            QStringLiteral(CAMWRIGHT_SOURCE_EXAMPLES)};
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent),
+      m_ui(std::make_unique<Ui::MainWindow>()),
+      m_document(new ProjectDocument(this)),
+      m_model(new ArcTableModel(m_document, this)),
+      m_engine(new ComputeEngine(this)) {
+    m_ui->setupUi(this);
+    setAcceptDrops(true);
+
+    m_contour = new ContourView(m_document, this);
+    m_plots = new KinematicsPlots(this);
+    auto* splitter = new QSplitter(Qt::Horizontal, this);
+    splitter->setObjectName("mainSplitter");
+    splitter->addWidget(m_contour);
+    splitter->addWidget(m_plots);
+    splitter->setStretchFactor(0, 2);
+    splitter->setStretchFactor(1, 3);
+    setCentralWidget(splitter);
+
+    setUpDocks();
+    setUpActions();
+
+    m_validationLabel = new QLabel(this);
+    m_validationLabel->setObjectName("validationLabel");
+    m_computeLabel = new QLabel(this);
+    m_computeLabel->setObjectName("computeLabel");
+    // Permanent widgets: transient messages ("Saved …") appear beside them, never over them.
+    statusBar()->addPermanentWidget(m_validationLabel);
+    statusBar()->addPermanentWidget(m_computeLabel);
+
+    connect(m_document, &ProjectDocument::changed, this, [this] {
+        requestCompute();
+        updateStatus();
+    });
+    connect(m_document, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
+    connect(m_engine, &ComputeEngine::resultReady, this, &MainWindow::showResult);
+    connect(m_contour, &ContourView::cursorAngleChanged, this, [this](double phi) {
+        const auto& r = m_engine->latestResult();
+        if (!r || !r->ok()) return;
+        double t = std::fmod(phi / r->omega, r->period);
+        if (t < 0) t += r->period;
+        setCursorTime(t);
+    });
+    connect(m_plots, &KinematicsPlots::cursorMoved, this, [this](double x) {
+        const auto& r = m_engine->latestResult();
+        if (!r || !r->ok()) return;
+        setCursorTime(r->axis == PlotAxis::Angle ? degToRad(x) / r->omega : x);
+    });
+
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    restoreState(settings.value("window/state").toByteArray());
+    m_ui->actionAxisTime->setChecked(settings.value("view/timeAxis", false).toBool());
+    rebuildRecentMenu();
+    rebuildExamplesMenu();
+
+    newProject();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::setUpDocks() {
+    QTableView* table = m_ui->segmentTable;
+    table->setModel(m_model);
+    auto* numbers = new NumberDelegate(table);
+    auto* choices = new ChoiceDelegate(table);
+    for (int c = 0; c < ArcTableModel::ColumnCount; ++c) {
+        const bool choice = c == ArcTableModel::Type || c == ArcTableModel::Branch;
+        table->setItemDelegateForColumn(
+            c, choice ? static_cast<QAbstractItemDelegate*>(choices) : numbers);
     }
-    const auto contour = Contour::build(loaded.value());
-    SampledTurn turn;
-    const double omega = loaded.value().motion.omegaRadS();
-    sampleTurn(contour.value(), omega, 3600, turn);
+    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table->verticalHeader()->setDefaultSectionSize(table->fontMetrics().height() + 6);
+    table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                           QAbstractItemView::AnyKeyPressed);
+    connect(table->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
+            [this](const QModelIndex& current) { m_contour->setSelectedSegment(current.row()); });
 
-    auto* curve = new QCPCurve(m_contourPlot->xAxis, m_contourPlot->yAxis);
-    QVector<double> x(turn.x.begin(), turn.x.end()), y(turn.y.begin(), turn.y.end());
-    x.push_back(x.front());
-    y.push_back(y.front());
-    curve->setData(x, y);
-    m_contourPlot->rescaleAxes();
-    m_contourPlot->yAxis->setScaleRatio(m_contourPlot->xAxis, 1.0);
-    m_contourPlot->replot();
+    m_motion = new MotionPanel(m_document, m_ui->motionDock);
+    m_ui->motionDock->setWidget(m_motion);
+    m_readout = new StateReadout(m_ui->readoutDock);
+    m_ui->readoutDock->setWidget(m_readout);
+    splitDockWidget(m_ui->motionDock, m_ui->readoutDock, Qt::Vertical);
+    m_motion->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
+    resizeDocks({m_ui->motionDock, m_ui->readoutDock}, {140, 400}, Qt::Vertical);
+    for (QDockWidget* dock : {m_ui->segmentsDock, m_ui->motionDock, m_ui->readoutDock}) {
+        m_ui->menuView->addAction(dock->toggleViewAction());
+    }
+}
 
-    QVector<double> phi, r(turn.r.begin(), turn.r.end());
-    for (double p : turn.phi) phi.push_back(radToDeg(p));
-    m_radiusPlot->addGraph()->setData(phi, r, true);
-    m_radiusPlot->rescaleAxes();
-    m_radiusPlot->replot();
-    setWindowTitle(QString("%1 — Camwright").arg(QString::fromStdString(loaded.value().name)));
-    statusBar()->showMessage(tr("%1 segments").arg(loaded.value().contour.size()));
+void MainWindow::setUpActions() {
+    QUndoStack* stack = m_document->undoStack();
+    QAction* undo = stack->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = stack->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    QAction* first = m_ui->menuEdit->actions().value(0);
+    m_ui->menuEdit->insertAction(first, undo);
+    m_ui->menuEdit->insertAction(first, redo);
+    m_ui->menuEdit->insertSeparator(first);
+
+    connect(m_ui->actionNew, &QAction::triggered, this, [this] {
+        if (maybeSave()) newProject();
+    });
+    connect(m_ui->actionOpen, &QAction::triggered, this, [this] { openInteractive(); });
+    connect(m_ui->actionSave, &QAction::triggered, this, &MainWindow::save);
+    connect(m_ui->actionSaveAs, &QAction::triggered, this, &MainWindow::saveAs);
+    connect(m_ui->actionQuit, &QAction::triggered, this, &QWidget::close);
+    connect(m_ui->actionInsertSegment, &QAction::triggered, this, &MainWindow::insertSegment);
+    connect(m_ui->actionDeleteSegment, &QAction::triggered, this, &MainWindow::deleteSegment);
+    connect(m_ui->actionMoveUp, &QAction::triggered, this, [this] { moveSegment(-1); });
+    connect(m_ui->actionMoveDown, &QAction::triggered, this, [this] { moveSegment(1); });
+    connect(m_ui->actionFitWindows, &QAction::triggered, this, &MainWindow::fitWindows);
+    connect(m_ui->actionAxisTime, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue("view/timeAxis", on);
+        requestCompute();
+    });
+    connect(m_ui->actionResetZoom, &QAction::triggered, this, [this] {
+        m_contour->resetZoom();
+        m_plots->resetZoom();
+    });
+    connect(m_ui->actionAbout, &QAction::triggered, this, [this] {
+        QMessageBox::about(this, tr("About Camwright"),
+                           tr("<b>Camwright %1</b><p>Design and inspect cam contours: exact polar "
+                              "kinematics of the follower.</p><p>GPL-3.0-or-later.</p>")
+                               .arg(QCoreApplication::applicationVersion()));
+    });
+    // Segment actions work on the table, so they do not steal Delete/Insert from other widgets.
+    for (QAction* a : {m_ui->actionInsertSegment, m_ui->actionDeleteSegment, m_ui->actionMoveUp,
+                       m_ui->actionMoveDown}) {
+        a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        m_ui->segmentTable->addAction(a);
+    }
+}
+
+void MainWindow::newProject() {
+    Project p;
+    p.name = tr("Untitled").toStdString();
+    p.motion = {SpeedUnit::PeriodS, 1.0};
+    // An eccentric circle in two windows: a valid contour to start editing from.
+    for (double start : {0.0, 180.0}) {
+        SegmentSpec s;
+        s.center = {5.0, 0.0};
+        s.radius = 30.0;
+        s.phiStartDeg = start;
+        s.phiEndDeg = start + 180.0;
+        p.contour.push_back(s);
+    }
+    m_document->reset(std::move(p), {});
+}
+
+QString MainWindow::loadFile(const QString& path) {
+    auto loaded = loadProjectFile(path.toStdString());
+    if (!loaded.ok()) {
+        return tr("%1 cannot be opened:\n%2")
+            .arg(QDir::toNativeSeparators(path), diagnosticsText(loaded.errors()));
+    }
+    m_document->reset(std::move(loaded).value(), QFileInfo(path).absoluteFilePath());
+    addRecentFile(QFileInfo(path).absoluteFilePath());
+    statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)), 4000);
     return {};
+}
+
+void MainWindow::openInteractive(const QString& givenPath) {
+    if (!maybeSave()) return;
+    QString path = givenPath;
+    if (path.isEmpty()) {
+        path = QFileDialog::getOpenFileName(this, tr("Open Project"),
+                                            QSettings().value("files/lastDir").toString(),
+                                            tr(kFileFilter));
+        if (path.isEmpty()) return;
+    }
+    QSettings().setValue("files/lastDir", QFileInfo(path).absolutePath());
+    const QString problem = loadFile(path);
+    if (!problem.isEmpty()) QMessageBox::warning(this, tr("Open Project"), problem);
+}
+
+QString MainWindow::saveFile(const QString& path) {
+    if (!m_document->isValid()) {
+        return tr("The project has problems; fix them before saving (a file with these problems "
+                  "could not be opened again):\n%1")
+            .arg(diagnosticsText(m_document->diagnostics()));
+    }
+    QSaveFile file(path);
+    const std::string text = serializeProject(m_document->project());
+    if (!file.open(QIODevice::WriteOnly) ||
+        file.write(text.data(), static_cast<qint64>(text.size())) !=
+            static_cast<qint64>(text.size()) ||
+        !file.commit()) {
+        return tr("%1 could not be written: %2")
+            .arg(QDir::toNativeSeparators(path), file.errorString());
+    }
+    m_document->markSaved(QFileInfo(path).absoluteFilePath());
+    addRecentFile(QFileInfo(path).absoluteFilePath());
+    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 4000);
+    return {};
+}
+
+bool MainWindow::save() {
+    if (m_document->filePath().isEmpty()) return saveAs();
+    const QString problem = saveFile(m_document->filePath());
+    if (!problem.isEmpty()) QMessageBox::warning(this, tr("Save Project"), problem);
+    return problem.isEmpty();
+}
+
+bool MainWindow::saveAs() {
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Project As"),
+                                                m_document->filePath().isEmpty()
+                                                    ? QSettings().value("files/lastDir").toString()
+                                                    : m_document->filePath(),
+                                                tr(kFileFilter));
+    if (path.isEmpty()) return false;
+    if (!path.endsWith(".cam.json")) path += ".cam.json";
+    QSettings().setValue("files/lastDir", QFileInfo(path).absolutePath());
+    const QString problem = saveFile(path);
+    if (!problem.isEmpty()) QMessageBox::warning(this, tr("Save Project"), problem);
+    return problem.isEmpty();
+}
+
+bool MainWindow::maybeSave() {
+    if (!m_document->isModified()) return true;
+    const auto answer = QMessageBox::warning(
+        this, tr("Unsaved Changes"),
+        tr("%1 has unsaved changes. Save them?").arg(m_document->displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    const auto urls = event->mimeData()->urls();
+    if (urls.size() == 1 && urls.front().toLocalFile().endsWith(".json")) {
+        event->acceptProposedAction();
+    }
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    openInteractive(event->mimeData()->urls().front().toLocalFile());
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+    QSettings settings;
+    QStringList files = settings.value("files/recent").toStringList();
+    files.removeAll(path);
+    files.prepend(path);
+    while (files.size() > kMaxRecentFiles) files.removeLast();
+    settings.setValue("files/recent", files);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    QMenu* menu = m_ui->menuRecent;
+    menu->clear();
+    const QStringList files = QSettings().value("files/recent").toStringList();
+    for (const QString& f : files) {
+        menu->addAction(QDir::toNativeSeparators(f), this, [this, f] { openInteractive(f); });
+    }
+    menu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::rebuildExamplesMenu() {
+    QMenu* menu = m_ui->menuExamples;
+    menu->clear();
+    for (const QString& dir : exampleDirectories()) {
+        const auto entries = QDir(dir).entryInfoList({"*.cam.json"}, QDir::Files, QDir::Name);
+        for (const QFileInfo& f : entries) {
+            const QString path = f.absoluteFilePath();
+            menu->addAction(f.fileName().chopped(9), this, [this, path] {
+                if (!maybeSave()) return;
+                auto loaded = loadProjectFile(path.toStdString());
+                if (!loaded.ok()) {
+                    QMessageBox::warning(this, tr("Open Example"),
+                                         diagnosticsText(loaded.errors()));
+                    return;
+                }
+                // An example opens as an untitled copy: Save asks where, never over the example.
+                m_document->reset(std::move(loaded).value(), {});
+            });
+        }
+        if (!entries.isEmpty()) break;
+    }
+    menu->setEnabled(!menu->isEmpty());
+}
+
+void MainWindow::requestCompute() {
+    m_engine->request(m_document->project(),
+                      m_ui->actionAxisTime->isChecked() ? PlotAxis::Time : PlotAxis::Angle);
+}
+
+void MainWindow::showResult(const ComputeResultPtr& result) {
+    if (!result->ok()) {
+        m_computeLabel->setText(tr("not computed: the project has problems"));
+        return;
+    }
+    m_contour->setResult(result);
+    m_plots->setResult(result);
+    m_cursorT = std::fmod(m_cursorT, result->period);
+    setCursorTime(m_cursorT);
+    m_computeLabel->setText(
+        tr("%1 samples computed in %2 ms")
+            .arg(QLocale().toString(static_cast<qlonglong>(result->turn.size())),
+                 QLocale().toString(result->computeMs, 'f', 1)));
+    emit resultShown(result);
+}
+
+void MainWindow::setCursorTime(double t) {
+    m_cursorT = t;
+    const auto& r = m_engine->latestResult();
+    if (!r || !r->ok()) return;
+    // One state from the shared, immutable contour of the result: a few hundred nanoseconds.
+    const KinematicState s = stateAt(*r->contour, r->omega, t);
+    m_readout->setState(s);
+    m_contour->setCursorAngle(s.phi);
+    m_plots->setCursorX(r->axis == PlotAxis::Angle ? radToDeg(s.phi) : t);
+}
+
+void MainWindow::updateStatus() {
+    const Diagnostics& d = m_document->diagnostics();
+    const int n = static_cast<int>(m_document->project().contour.size());
+    if (d.empty()) {
+        m_validationLabel->setText(tr("Valid · %n segment(s)", "", n));
+        m_validationLabel->setToolTip({});
+        m_validationLabel->setStyleSheet({});
+    } else {
+        const QString first = QString::fromStdString(d.front().text());
+        m_validationLabel->setText(tr("%n problem(s): ", "", static_cast<int>(d.size())) +
+                                   fontMetrics().elidedText(first, Qt::ElideRight, 600));
+        m_validationLabel->setToolTip(diagnosticsText(d, 40));
+        m_validationLabel->setStyleSheet("color: #b00020;");
+    }
+}
+
+void MainWindow::updateTitle() {
+    setWindowTitle(tr("%1[*] — Camwright").arg(m_document->displayName()));
+    setWindowModified(m_document->isModified());
+}
+
+int MainWindow::selectedRow() const {
+    const QModelIndex current = m_ui->segmentTable->currentIndex();
+    return current.isValid() ? current.row() : -1;
+}
+
+void MainWindow::insertSegment() {
+    const auto& contour = m_document->project().contour;
+    const int row = selectedRow() < 0 ? static_cast<int>(contour.size()) : selectedRow() + 1;
+    SegmentSpec s;
+    if (row > 0) {
+        // Split the window of the segment above: the new one takes its second half.
+        s = contour.at(static_cast<std::size_t>(row - 1));
+        const double mid = (s.phiStartDeg + s.phiEndDeg) / 2.0;
+        SegmentSpec above = s;
+        above.phiEndDeg = mid;
+        s.phiStartDeg = mid;
+        m_document->undoStack()->beginMacro(tr("Insert segment"));
+        m_document->undoStack()->push(
+            new EditSegment(m_document, row - 1, above, SegmentField::Whole, tr("Split window")));
+        m_document->undoStack()->push(new InsertSegment(m_document, row, s));
+        m_document->undoStack()->endMacro();
+    } else {
+        s.center = {0.0, 0.0};
+        s.radius = 20.0;
+        s.phiStartDeg = 0.0;
+        s.phiEndDeg = 360.0;
+        m_document->undoStack()->push(new InsertSegment(m_document, row, s));
+    }
+    m_ui->segmentTable->selectRow(row);
+}
+
+void MainWindow::deleteSegment() {
+    const int row = selectedRow();
+    if (row < 0) return;
+    m_document->undoStack()->push(new RemoveSegment(m_document, row));
+}
+
+void MainWindow::moveSegment(int delta) {
+    const int row = selectedRow();
+    const int to = row + delta;
+    if (row < 0 || to < 0 || to >= static_cast<int>(m_document->project().contour.size())) return;
+    m_document->undoStack()->push(new MoveSegment(m_document, row, to));
+    m_ui->segmentTable->selectRow(to);
+}
+
+void MainWindow::fitWindows() {
+    const auto fitted = cam::fitWindows(m_document->project().contour);
+    if (!fitted.ok()) {
+        QMessageBox::warning(this, tr("Fit Windows"), diagnosticsText(fitted.errors()));
+        return;
+    }
+    if (fitted.value() == m_document->project().contour) {
+        statusBar()->showMessage(tr("The windows already fit."), 3000);
+        return;
+    }
+    m_document->undoStack()->push(
+        new ReplaceContour(m_document, fitted.value(), tr("Fit windows")));
 }
 
 }  // namespace cam

@@ -1,23 +1,91 @@
 #pragma once
+/// @file
+/// @brief The main window: actions, docks and wiring. Views draw; the engine computes.
 
 #include <QMainWindow>
+#include <memory>
 
-class QCustomPlot;
+#include "engine/compute_result.h"
+
+class QLabel;
+
+namespace Ui {
+class MainWindow;
+}
 
 namespace cam {
 
-/// @brief Placeholder main window: the contour and r(phi) of one project.
+class ArcTableModel;
+class ComputeEngine;
+class ContourView;
+class KinematicsPlots;
+class MotionPanel;
+class ProjectDocument;
+class StateReadout;
+
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
     explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
 
-    /// @brief Loads a project; returns the located problems as text, empty on success.
-    QString openProject(const QString& path);
+    /// @brief Opens a project without asking anything; on failure returns the located problems
+    /// and leaves the open document untouched.
+    QString loadFile(const QString& path);
+    /// @brief Saves to `path` atomically; returns the problem, empty on success.
+    QString saveFile(const QString& path);
+
+    [[nodiscard]] ProjectDocument* document() const { return m_document; }
+    [[nodiscard]] ComputeEngine* engine() const { return m_engine; }
+    [[nodiscard]] ArcTableModel* tableModel() const { return m_model; }
+    [[nodiscard]] KinematicsPlots* plots() const { return m_plots; }
+    [[nodiscard]] ContourView* contourView() const { return m_contour; }
+    [[nodiscard]] StateReadout* readout() const { return m_readout; }
+
+    /// @brief Puts the cursor at time t (s): readout, follower ray and plot cursors.
+    void setCursorTime(double t);
+
+signals:
+    /// The plots show this result (emitted after they were updated).
+    void resultShown(const cam::ComputeResultPtr& result);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
-    QCustomPlot* m_contourPlot = nullptr;
-    QCustomPlot* m_radiusPlot = nullptr;
+    void setUpActions();
+    void setUpDocks();
+    void newProject();
+    void openInteractive(const QString& path = {});
+    bool save();
+    bool saveAs();
+    bool maybeSave();
+    void addRecentFile(const QString& path);
+    void rebuildRecentMenu();
+    void rebuildExamplesMenu();
+    void requestCompute();
+    void showResult(const ComputeResultPtr& result);
+    void updateStatus();
+    void updateTitle();
+    int selectedRow() const;
+    void insertSegment();
+    void deleteSegment();
+    void moveSegment(int delta);
+    void fitWindows();
+
+    std::unique_ptr<Ui::MainWindow> m_ui;
+    ProjectDocument* m_document;
+    ArcTableModel* m_model;
+    ComputeEngine* m_engine;
+    ContourView* m_contour;
+    KinematicsPlots* m_plots;
+    StateReadout* m_readout;
+    MotionPanel* m_motion;
+    QLabel* m_validationLabel;
+    QLabel* m_computeLabel;
+    double m_cursorT = 0.0;
 };
 
 }  // namespace cam

@@ -1,0 +1,141 @@
+#pragma once
+/// @file
+/// @brief The undo commands: one class per kind of edit to the project document.
+
+#include <QUndoCommand>
+#include <vector>
+
+#include "document/project_document.h"
+
+namespace cam {
+
+/// @brief Every merge id in one place: consecutive commands with the same id may merge.
+enum class MergeId : int {
+    None = -1,
+    EditSegmentField = 1,  ///< repeated edits of one cell (spin-box steps, a drag)
+    EditMotion = 2,
+};
+
+/// @brief Which part of a segment an edit touched; edits of the same part of the same row merge.
+enum class SegmentField {
+    Type,
+    CenterX,
+    CenterY,
+    Radius,
+    Branch,
+    FromX,
+    FromY,
+    ToX,
+    ToY,
+    PhiStart,
+    PhiEnd,
+    CenterDrag,
+    RadiusDrag,
+    Whole
+};
+
+/// @brief Replaces segment `row` by a new value (any field or fields).
+///
+/// Consecutive edits of the same field of the same row merge when they carry the same non-zero
+/// `gesture` (one spin-box editing session, one mouse drag); gesture 0 never merges.
+class EditSegment : public QUndoCommand {
+public:
+    EditSegment(ProjectDocument* document, int row, SegmentSpec after, SegmentField field,
+                const QString& text, int gesture = 0, QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+    [[nodiscard]] int id() const override { return static_cast<int>(MergeId::EditSegmentField); }
+    bool mergeWith(const QUndoCommand* other) override;
+
+private:
+    ProjectDocument* m_document;
+    int m_row;
+    SegmentSpec m_before;
+    SegmentSpec m_after;
+    SegmentField m_field;
+    int m_gesture;
+};
+
+class InsertSegment : public QUndoCommand {
+public:
+    InsertSegment(ProjectDocument* document, int row, SegmentSpec segment,
+                  QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+
+private:
+    ProjectDocument* m_document;
+    int m_row;
+    SegmentSpec m_segment;
+};
+
+class RemoveSegment : public QUndoCommand {
+public:
+    RemoveSegment(ProjectDocument* document, int row, QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+
+private:
+    ProjectDocument* m_document;
+    int m_row;
+    SegmentSpec m_segment;
+};
+
+/// @brief Moves segment `from` so that it ends up at index `to`.
+class MoveSegment : public QUndoCommand {
+public:
+    MoveSegment(ProjectDocument* document, int from, int to, QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+
+private:
+    ProjectDocument* m_document;
+    int m_from;
+    int m_to;
+};
+
+/// @brief Replaces the whole contour at once (Fit windows and other whole-contour operations).
+class ReplaceContour : public QUndoCommand {
+public:
+    ReplaceContour(ProjectDocument* document, std::vector<SegmentSpec> after, const QString& text,
+                   QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+
+private:
+    ProjectDocument* m_document;
+    std::vector<SegmentSpec> m_before;
+    std::vector<SegmentSpec> m_after;
+};
+
+/// @brief Sets the turning speed (and its unit); edits with the same non-zero gesture merge.
+class SetMotion : public QUndoCommand {
+public:
+    SetMotion(ProjectDocument* document, MotionSpec after, int gesture = 0,
+              QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+    [[nodiscard]] int id() const override { return static_cast<int>(MergeId::EditMotion); }
+    bool mergeWith(const QUndoCommand* other) override;
+
+private:
+    ProjectDocument* m_document;
+    MotionSpec m_before;
+    MotionSpec m_after;
+    int m_gesture;
+};
+
+class SetSamplesPerTurn : public QUndoCommand {
+public:
+    SetSamplesPerTurn(ProjectDocument* document, std::optional<std::int64_t> after,
+                      QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+
+private:
+    ProjectDocument* m_document;
+    std::optional<std::int64_t> m_before;
+    std::optional<std::int64_t> m_after;
+};
+
+}  // namespace cam

@@ -1,0 +1,90 @@
+#include "document/project_document.h"
+
+#include <QFileInfo>
+
+#include "project/validate.h"
+
+namespace cam {
+
+ProjectDocument::ProjectDocument(QObject* parent) : QObject(parent) {
+    connect(&m_undoStack, &QUndoStack::cleanChanged, this,
+            [this](bool clean) { emit modifiedChanged(!clean); });
+    m_diagnostics = validateProject(m_project);
+}
+
+QString ProjectDocument::displayName() const {
+    return m_filePath.isEmpty() ? tr("Untitled") : QFileInfo(m_filePath).fileName();
+}
+
+void ProjectDocument::reset(Project project, QString filePath) {
+    m_undoStack.clear();
+    m_project = std::move(project);
+    m_filePath = std::move(filePath);
+    m_undoStack.setClean();
+    emit filePathChanged(m_filePath);
+    emit contourReset();
+    emit motionChanged();
+    afterChange();
+}
+
+void ProjectDocument::markSaved(const QString& filePath) {
+    if (filePath != m_filePath) {
+        m_filePath = filePath;
+        emit filePathChanged(m_filePath);
+    }
+    m_undoStack.setClean();
+}
+
+void ProjectDocument::applySegment(int row, const SegmentSpec& segment) {
+    m_project.contour.at(static_cast<std::size_t>(row)) = segment;
+    emit segmentChanged(row);
+    afterChange();
+}
+
+void ProjectDocument::applyInsert(int row, const SegmentSpec& segment) {
+    m_project.contour.insert(m_project.contour.begin() + row, segment);
+    emit segmentInserted(row);
+    afterChange();
+}
+
+void ProjectDocument::applyRemove(int row) {
+    m_project.contour.erase(m_project.contour.begin() + row);
+    emit segmentRemoved(row);
+    afterChange();
+}
+
+void ProjectDocument::applyMove(int from, int to) {
+    auto& c = m_project.contour;
+    const SegmentSpec moved = c.at(static_cast<std::size_t>(from));
+    c.erase(c.begin() + from);
+    c.insert(c.begin() + to, moved);
+    emit segmentMoved(from, to);
+    afterChange();
+}
+
+void ProjectDocument::applyContour(const std::vector<SegmentSpec>& contour) {
+    m_project.contour = contour;
+    emit contourReset();
+    afterChange();
+}
+
+void ProjectDocument::applyMotion(const MotionSpec& motion) {
+    m_project.motion = motion;
+    emit motionChanged();
+    afterChange();
+}
+
+void ProjectDocument::applySamplesPerTurn(std::optional<std::int64_t> samples) {
+    m_project.samplesPerTurn = samples;
+    emit motionChanged();
+    afterChange();
+}
+
+void ProjectDocument::afterChange() {
+    // Validation is linear in the number of segments (microseconds), so it runs here; the
+    // kinematics run in the compute engine's thread.
+    m_diagnostics = validateProject(m_project);
+    emit changed();
+}
+
+}  // namespace cam

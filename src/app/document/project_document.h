@@ -1,0 +1,67 @@
+#pragma once
+/// @file
+/// @brief The open project: the core document, its undo stack, its file and its validation.
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include "common/diagnostic.h"
+#include "project/project.h"
+
+namespace cam {
+
+/// @brief Owns the project being edited. Only undo commands mutate it (through the `apply…`
+/// functions); everything else reads it and listens to the signals.
+class ProjectDocument : public QObject {
+    Q_OBJECT
+public:
+    explicit ProjectDocument(QObject* parent = nullptr);
+
+    [[nodiscard]] const Project& project() const { return m_project; }
+    [[nodiscard]] QUndoStack* undoStack() { return &m_undoStack; }
+    [[nodiscard]] const Diagnostics& diagnostics() const { return m_diagnostics; }
+    [[nodiscard]] bool isValid() const { return !hasErrors(m_diagnostics); }
+
+    [[nodiscard]] QString filePath() const { return m_filePath; }
+    /// @brief "Untitled" or the file name, for titles.
+    [[nodiscard]] QString displayName() const;
+    [[nodiscard]] bool isModified() const { return !m_undoStack.isClean(); }
+
+    /// @brief Replaces the whole project (New, Open): clears the undo history.
+    void reset(Project project, QString filePath);
+    /// @brief After a successful save: remembers the path and marks the state clean.
+    void markSaved(const QString& filePath);
+
+    // Mutators for undo commands. Each emits exactly the signal that describes it.
+    void applySegment(int row, const SegmentSpec& segment);
+    void applyInsert(int row, const SegmentSpec& segment);
+    void applyRemove(int row);
+    void applyMove(int from, int to);
+    void applyContour(const std::vector<SegmentSpec>& contour);
+    void applyMotion(const MotionSpec& motion);
+    void applySamplesPerTurn(std::optional<std::int64_t> samples);
+
+signals:
+    void segmentChanged(int row);
+    void segmentInserted(int row);
+    void segmentRemoved(int row);
+    void segmentMoved(int from, int to);
+    /// The whole contour changed (reset, fit windows): rebuild every view of it.
+    void contourReset();
+    void motionChanged();
+    /// Any change at all, after the specific signal: recompute, revalidate, redraw.
+    void changed();
+    void filePathChanged(const QString& path);
+    void modifiedChanged(bool modified);
+
+private:
+    void afterChange();
+
+    Project m_project;
+    Diagnostics m_diagnostics;
+    QUndoStack m_undoStack;
+    QString m_filePath;
+};
+
+}  // namespace cam

@@ -1,0 +1,79 @@
+#include "engine/compute_engine.h"
+
+#include <QMutexLocker>
+
+namespace cam {
+
+ComputeWorker::ComputeWorker(QObject* parent) : QThread(parent) {}
+
+ComputeWorker::~ComputeWorker() {
+    {
+        QMutexLocker lock(&m_mutex);
+        m_abort = true;
+        m_cancel = true;
+        m_wake.wakeOne();
+    }
+    wait();
+}
+
+void ComputeWorker::submit(ComputeRequest request) {
+    QMutexLocker lock(&m_mutex);
+    m_pending = std::move(request);
+    m_cancel = true;  // whatever is running answers an older request
+    if (!isRunning()) {
+        start(QThread::LowPriority);
+    } else {
+        m_wake.wakeOne();
+    }
+}
+
+void ComputeWorker::run() {
+    for (;;) {
+        ComputeRequest request;
+        {
+            QMutexLocker lock(&m_mutex);
+            while (!m_pending && !m_abort) m_wake.wait(&m_mutex);
+            if (m_abort) return;
+            request = std::move(*m_pending);
+            m_pending.reset();
+            m_cancel = false;
+        }
+        ComputeResultPtr result = computeProject(request, m_cancel);
+        if (result && !m_cancel.load()) emit finished(result);
+    }
+}
+
+ComputeEngine::ComputeEngine(QObject* parent) : QObject(parent) {
+    qRegisterMetaType<cam::ComputeResultPtr>();
+    m_timer.setSingleShot(true);
+    m_timer.setInterval(30);
+    connect(&m_timer, &QTimer::timeout, this, &ComputeEngine::submitPending);
+    connect(&m_worker, &ComputeWorker::finished, this, &ComputeEngine::onFinished,
+            Qt::QueuedConnection);
+}
+
+ComputeEngine::~ComputeEngine() = default;
+
+void ComputeEngine::request(const Project& project, PlotAxis axis) {
+    m_pending = ComputeRequest{++m_generation, std::make_shared<const Project>(project), axis};
+    if (m_timer.interval() == 0) {
+        submitPending();
+    } else if (!m_timer.isActive()) {
+        m_timer.start();
+    }
+}
+
+void ComputeEngine::submitPending() {
+    if (m_pending) m_worker.submit(std::move(*std::exchange(m_pending, std::nullopt)));
+}
+
+void ComputeEngine::onFinished(const ComputeResultPtr& result) {
+    if (result->generation != m_generation) {
+        ++m_dropped;  // an older request finished after a newer one was made: never show it
+        return;
+    }
+    m_latest = result;
+    emit resultReady(result);
+}
+
+}  // namespace cam

@@ -1,0 +1,75 @@
+#pragma once
+/// @file
+/// @brief The compute engine: snapshots in, results out, in a worker thread; newest wins.
+
+#include <QMutex>
+#include <QObject>
+#include <QThread>
+#include <QTimer>
+#include <QWaitCondition>
+#include <atomic>
+
+#include "engine/compute_result.h"
+
+namespace cam {
+
+/// @brief The worker thread. Holds at most one pending request; a new one cancels the
+/// computation in progress. Never touches anything of the GUI.
+class ComputeWorker : public QThread {
+    Q_OBJECT
+public:
+    explicit ComputeWorker(QObject* parent = nullptr);
+    ~ComputeWorker() override;
+
+    /// @brief Replaces the pending request (thread-safe) and cancels the current computation.
+    void submit(ComputeRequest request);
+
+signals:
+    void finished(cam::ComputeResultPtr result);
+
+protected:
+    void run() override;
+
+private:
+    QMutex m_mutex;
+    QWaitCondition m_wake;
+    std::optional<ComputeRequest> m_pending;
+    std::atomic<bool> m_cancel{false};
+    bool m_abort = false;
+};
+
+/// @brief Lives in the GUI thread. request() never blocks: it stores the snapshot and a
+/// single-shot timer coalesces bursts of edits into one computation. Results that answer an
+/// older request than the newest are dropped, so a stale result is never shown.
+class ComputeEngine : public QObject {
+    Q_OBJECT
+public:
+    explicit ComputeEngine(QObject* parent = nullptr);
+    ~ComputeEngine() override;
+
+    /// @brief Asks for the project as it is now (a copy is taken).
+    void request(const Project& project, PlotAxis axis);
+    /// @brief Milliseconds that a burst of requests is coalesced over (0: submit at once).
+    void setCoalesceMs(int ms) { m_timer.setInterval(ms); }
+
+    [[nodiscard]] std::uint64_t latestGeneration() const { return m_generation; }
+    [[nodiscard]] const ComputeResultPtr& latestResult() const { return m_latest; }
+    [[nodiscard]] int droppedResults() const { return m_dropped; }
+
+signals:
+    /// A result for the newest request.
+    void resultReady(const cam::ComputeResultPtr& result);
+
+private:
+    void submitPending();
+    void onFinished(const ComputeResultPtr& result);
+
+    ComputeWorker m_worker;
+    QTimer m_timer;
+    std::optional<ComputeRequest> m_pending;
+    std::uint64_t m_generation = 0;
+    ComputeResultPtr m_latest;
+    int m_dropped = 0;
+};
+
+}  // namespace cam

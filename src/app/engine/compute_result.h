@@ -1,0 +1,60 @@
+#pragma once
+/// @file
+/// @brief What the compute engine hands back: immutable, shared, ready to draw.
+
+#include <qcustomplot.h>
+
+#include <QSharedPointer>
+#include <array>
+#include <memory>
+#include <optional>
+
+#include "analysis/analysis.h"
+#include "common/diagnostic.h"
+#include "contour/contour.h"
+#include "kinematics/kinematics.h"
+#include "project/project.h"
+
+namespace cam {
+
+/// @brief The x axis of the kinematics plots.
+enum class PlotAxis { Angle, Time };
+
+/// @brief The curves of the kinematics plots, in this order.
+enum class Curve { VR, VPhi, V, AR, APhi, A, JR, JPhi, J, Count };
+
+struct ComputeRequest {
+    std::uint64_t generation = 0;
+    std::shared_ptr<const Project> project;
+    PlotAxis axis = PlotAxis::Angle;
+};
+
+/// @brief One finished computation. Never modified after it leaves the worker.
+struct ComputeResult {
+    std::uint64_t generation = 0;
+    std::shared_ptr<const Project> project;
+    PlotAxis axis = PlotAxis::Angle;
+    Diagnostics errors;  ///< non-empty: the project could not be computed
+    std::optional<Contour> contour;
+    double omega = 0.0;   ///< rad/s
+    double period = 0.0;  ///< s
+    SampledTurn turn;
+    ContourAnalysis analysis;
+    /// Per segment, its outline for the contour view (x, y in mm), ends included.
+    std::vector<QVector<QPointF>> outlines;
+    /// Plot data over angle (deg) or time (s), with NaN gaps where the segment changes so a
+    /// jump shows as a jump.
+    std::array<QSharedPointer<QCPGraphDataContainer>, static_cast<int>(Curve::Count)> curves;
+    double computeMs = 0.0;
+
+    [[nodiscard]] bool ok() const { return errors.empty() && contour.has_value(); }
+};
+
+using ComputeResultPtr = std::shared_ptr<const ComputeResult>;
+
+/// @brief Does the whole computation for one request; polls `cancel`. Returns null if cancelled.
+ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic<bool>& cancel);
+
+}  // namespace cam
+
+Q_DECLARE_METATYPE(cam::ComputeResultPtr)

@@ -1,0 +1,251 @@
+#include "views/contour_view.h"
+
+#include <cmath>
+
+#include "document/commands.h"
+#include "models/delegates.h"
+#include "views/palette.h"
+
+namespace cam {
+namespace {
+constexpr double kHandlePickPixels = 9.0;
+}
+
+ContourView::ContourView(ProjectDocument* document, QWidget* parent)
+    : QCustomPlot(parent), m_document(document) {
+    setObjectName("contourView");
+    setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    xAxis->setLabel(tr("x [mm]"));
+    yAxis->setLabel(tr("y [mm]"));
+    xAxis2->setVisible(true);
+    yAxis2->setVisible(true);
+    xAxis2->setTickLabels(false);
+    yAxis2->setTickLabels(false);
+    connect(xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), xAxis2,
+            qOverload<const QCPRange&>(&QCPAxis::setRange));
+    connect(yAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), yAxis2,
+            qOverload<const QCPRange&>(&QCPAxis::setRange));
+    setToolTip(
+        tr("Wheel: zoom · drag: pan · drag a square/diamond handle: move the centre or "
+           "change the radius of the selected arc"));
+
+    m_ray = new QCPItemLine(this);
+    m_ray->setPen(QPen(QColor(90, 90, 90), 1, Qt::DashLine));
+    m_ray->start->setCoords(0, 0);
+    m_ray->end->setCoords(0, 0);
+    m_rayPoint = new QCPItemTracer(this);
+    m_rayPoint->setStyle(QCPItemTracer::tsCircle);
+    m_rayPoint->setSize(7);
+    m_rayPoint->setPen(QPen(Qt::black));
+    m_rayPoint->setBrush(Qt::white);
+
+    m_centers = addGraph();
+    m_centers->setName(tr("centres"));
+    m_centers->setLineStyle(QCPGraph::lsNone);
+    m_centers->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QColor(80, 80, 80), 6));
+    m_joints = addGraph();
+    m_joints->setName(tr("joints"));
+    m_joints->setLineStyle(QCPGraph::lsNone);
+    m_joints->setScatterStyle(
+        QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black), QBrush(Qt::white), 5));
+    m_handles = addGraph();
+    m_handles->setLineStyle(QCPGraph::lsNone);
+    m_handles->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare,
+                                               QPen(QColor(0, 90, 200), 1.5),
+                                               QBrush(QColor(120, 180, 255)), 9));
+    // Origin: the rotation centre.
+    auto* origin = new QCPItemTracer(this);
+    origin->position->setCoords(0, 0);
+    origin->setStyle(QCPItemTracer::tsPlus);
+    origin->setSize(12);
+    origin->setPen(QPen(Qt::black));
+
+    connect(this, &QCustomPlot::mouseWheel, this, [this] { m_autoFit = false; });
+    connect(document, &ProjectDocument::changed, this, [this] {
+        updateHandles();
+        replot(rpQueuedReplot);
+    });
+}
+
+void ContourView::setResult(const ComputeResultPtr& result) {
+    m_result = result;
+    if (!result || !result->ok()) {
+        replot(rpQueuedReplot);
+        return;
+    }
+    const std::size_t n = result->outlines.size();
+    while (m_segmentCurves.size() > n) {
+        removePlottable(m_segmentCurves.back());
+        m_segmentCurves.pop_back();
+    }
+    while (m_segmentCurves.size() < n) {
+        auto* curve = new QCPCurve(xAxis, yAxis);
+        curve->setPen(QPen(segmentColor(static_cast<int>(m_segmentCurves.size())), 2));
+        m_segmentCurves.push_back(curve);
+    }
+    QVector<double> cx, cy, jx, jy;
+    for (std::size_t k = 0; k < n; ++k) {
+        QVector<double> x, y;
+        for (const QPointF& p : result->outlines[k]) {
+            x << p.x();
+            y << p.y();
+        }
+        m_segmentCurves[k]->setData(x, y);
+        m_segmentCurves[k]->setName(tr("segment %1").arg(k));
+        jx << x.front();
+        jy << y.front();
+        const ContourSegment& s = result->contour->segment(k);
+        if (s.type == SegmentType::Arc) {
+            cx << s.arc.center.x();
+            cy << s.arc.center.y();
+        }
+    }
+    m_centers->setData(cx, cy);
+    m_joints->setData(jx, jy, true);
+    if (m_autoFit) resetZoom();
+    setCursorAngle(m_cursorPhi);
+}
+
+void ContourView::resetZoom() {
+    bool found = false;
+    QCPRange xr, yr;
+    for (auto* c : m_segmentCurves) {
+        bool ok = false;
+        const QCPRange a = c->getKeyRange(ok);
+        const QCPRange b = c->getValueRange(ok);
+        if (!ok) continue;
+        xr = found ? QCPRange(std::min(xr.lower, a.lower), std::max(xr.upper, a.upper)) : a;
+        yr = found ? QCPRange(std::min(yr.lower, b.lower), std::max(yr.upper, b.upper)) : b;
+        found = true;
+    }
+    if (!found) return;
+    m_autoFit = true;
+    const double pad = 0.08 * std::max(xr.size(), yr.size());
+    xAxis->setRange(xr.lower - pad, xr.upper + pad);
+    yAxis->setRange(yr.lower - pad, yr.upper + pad);
+    keepEqualAspect();
+    replot(rpQueuedReplot);
+}
+
+void ContourView::keepEqualAspect() {
+    // Grow whichever axis is relatively shorter so one mm is as long on both.
+    // The axis rect gets its size from the layout: bring it up to date first.
+    plotLayout()->update(QCPLayoutElement::upPreparation);
+    plotLayout()->update(QCPLayoutElement::upMargins);
+    plotLayout()->update(QCPLayoutElement::upLayout);
+    const double w = axisRect()->width(), h = axisRect()->height();
+    if (w <= 0 || h <= 0) return;
+    const double xs = xAxis->range().size() / w, ys = yAxis->range().size() / h;
+    if (xs > ys) {
+        yAxis->setRange(yAxis->range().center(), xs * h, Qt::AlignCenter);
+    } else {
+        xAxis->setRange(xAxis->range().center(), ys * w, Qt::AlignCenter);
+    }
+}
+
+void ContourView::resizeEvent(QResizeEvent* event) {
+    QCustomPlot::resizeEvent(event);
+    if (m_autoFit) {
+        resetZoom();
+    } else {
+        keepEqualAspect();
+    }
+}
+
+void ContourView::setCursorAngle(double phi) {
+    m_cursorPhi = phi;
+    if (!m_result || !m_result->ok()) return;
+    const double r = m_result->contour->evaluate(phi).r;
+    const double reach = std::max(r * 1.25, r + 5.0);
+    m_ray->end->setCoords(reach * std::cos(phi), reach * std::sin(phi));
+    m_rayPoint->position->setCoords(r * std::cos(phi), r * std::sin(phi));
+    replot(rpQueuedReplot);
+}
+
+void ContourView::setSelectedSegment(int row) {
+    m_selected = row;
+    updateHandles();
+    replot(rpQueuedReplot);
+}
+
+QPointF ContourView::radiusHandlePosition(int row) const {
+    const SegmentSpec& s = m_document->project().contour.at(static_cast<std::size_t>(row));
+    // On the circle, in the direction of the middle of the window as seen from the centre.
+    const double mid = (s.phiStartDeg + s.phiEndDeg) / 2.0 * M_PI / 180.0;
+    const Arc arc{s.center, s.radius, s.branch};
+    const double r = arc.evaluate(mid).r;
+    Eigen::Vector2d dir = Eigen::Vector2d(r * std::cos(mid), r * std::sin(mid)) - s.center;
+    if (!std::isfinite(dir.x()) || dir.norm() < 1e-12) dir = {1.0, 0.0};
+    const Eigen::Vector2d p = s.center + s.radius * dir.normalized();
+    return {p.x(), p.y()};
+}
+
+void ContourView::updateHandles() {
+    const auto& c = m_document->project().contour;
+    if (m_selected < 0 || m_selected >= static_cast<int>(c.size()) ||
+        c[static_cast<std::size_t>(m_selected)].type != SegmentType::Arc) {
+        m_handles->data()->clear();
+        return;
+    }
+    const SegmentSpec& s = c[static_cast<std::size_t>(m_selected)];
+    const QPointF rh = radiusHandlePosition(m_selected);
+    m_handles->setData({s.center.x(), rh.x()}, {s.center.y(), rh.y()}, false);
+}
+
+ContourView::Handle ContourView::handleAt(const QPointF& pixel) const {
+    if (m_handles->data()->size() != 2) return Handle::None;
+    auto distance = [&](int i) {
+        const auto it = m_handles->data()->at(i);
+        return QLineF(pixel, QPointF(xAxis->coordToPixel(it->key), yAxis->coordToPixel(it->value)))
+            .length();
+    };
+    if (distance(0) <= kHandlePickPixels) return Handle::Center;
+    if (distance(1) <= kHandlePickPixels) return Handle::Radius;
+    return Handle::None;
+}
+
+void ContourView::mousePressEvent(QMouseEvent* event) {
+    if (event->button() == Qt::LeftButton) {
+        m_dragging = handleAt(event->position());
+        if (m_dragging != Handle::None) {
+            m_gesture = nextGestureId();
+            setInteraction(QCP::iRangeDrag, false);
+        }
+    }
+    QCustomPlot::mousePressEvent(event);
+}
+
+void ContourView::mouseMoveEvent(QMouseEvent* event) {
+    const double x = xAxis->pixelToCoord(event->position().x());
+    const double y = yAxis->pixelToCoord(event->position().y());
+    if (event->buttons() & Qt::LeftButton && m_dragging == Handle::None) m_autoFit = false;
+    if (m_dragging != Handle::None && m_selected >= 0) {
+        SegmentSpec s = m_document->project().contour.at(static_cast<std::size_t>(m_selected));
+        SegmentField field = SegmentField::CenterDrag;
+        QString text;
+        if (m_dragging == Handle::Center) {
+            s.center = {x, y};
+            text = tr("Move centre of segment %1").arg(m_selected);
+        } else {
+            s.radius = std::max(1e-3, std::hypot(x - s.center.x(), y - s.center.y()));
+            field = SegmentField::RadiusDrag;
+            text = tr("Change radius of segment %1").arg(m_selected);
+        }
+        m_document->undoStack()->push(
+            new EditSegment(m_document, m_selected, s, field, text, m_gesture));
+        event->accept();
+        return;
+    }
+    if (x != 0.0 || y != 0.0) emit cursorAngleChanged(std::atan2(y, x));
+    QCustomPlot::mouseMoveEvent(event);
+}
+
+void ContourView::mouseReleaseEvent(QMouseEvent* event) {
+    if (m_dragging != Handle::None) {
+        m_dragging = Handle::None;
+        setInteraction(QCP::iRangeDrag, true);
+    }
+    QCustomPlot::mouseReleaseEvent(event);
+}
+
+}  // namespace cam

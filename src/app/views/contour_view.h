@@ -1,0 +1,60 @@
+#pragma once
+/// @file
+/// @brief The contour in the cam's plane: segments coloured, centres and joints marked, the
+/// follower ray at the cursor angle; drag an arc's centre or radius handle to edit it.
+
+#include <qcustomplot.h>
+
+#include "engine/compute_result.h"
+
+namespace cam {
+
+class ProjectDocument;
+
+class ContourView : public QCustomPlot {
+    Q_OBJECT
+public:
+    explicit ContourView(ProjectDocument* document, QWidget* parent = nullptr);
+
+    void setResult(const ComputeResultPtr& result);
+    /// @brief Shows the follower ray at this angle (rad) and the contour point on it.
+    void setCursorAngle(double phi);
+    /// @brief Shows the drag handles of this segment (-1: none).
+    void setSelectedSegment(int row);
+    /// @brief Fits the contour into the view with equal scales.
+    void resetZoom();
+
+signals:
+    /// The mouse points at this polar angle (rad).
+    void cursorAngleChanged(double phi);
+    void segmentPicked(int row);
+
+protected:
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+
+private:
+    enum class Handle { None, Center, Radius };
+    void updateHandles();
+    [[nodiscard]] Handle handleAt(const QPointF& pixel) const;
+    [[nodiscard]] QPointF radiusHandlePosition(int row) const;
+    void keepEqualAspect();
+
+    ProjectDocument* m_document;
+    ComputeResultPtr m_result;
+    std::vector<QCPCurve*> m_segmentCurves;
+    QCPGraph* m_centers = nullptr;
+    QCPGraph* m_joints = nullptr;
+    QCPGraph* m_handles = nullptr;
+    QCPItemLine* m_ray = nullptr;
+    QCPItemTracer* m_rayPoint = nullptr;
+    int m_selected = -1;
+    Handle m_dragging = Handle::None;
+    int m_gesture = 0;
+    double m_cursorPhi = 0.0;
+    bool m_autoFit = true;  ///< refit on resize until the user zooms or pans
+};
+
+}  // namespace cam

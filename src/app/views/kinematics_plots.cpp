@@ -1,0 +1,136 @@
+#include "views/kinematics_plots.h"
+
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "common/angles.h"
+#include "views/palette.h"
+
+namespace cam {
+
+KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    const QString titles[] = {tr("Velocity [mm/s]"), tr("Acceleration [mm/s²]"),
+                              tr("Jerk [mm/s³]")};
+    const QString names[3][3] = {{tr("v_r"), tr("v_φ"), tr("|v|")},
+                                 {tr("a_r"), tr("a_φ"), tr("|a|")},
+                                 {tr("j_r"), tr("j_φ"), tr("|j|")}};
+    const char* objectNames[] = {"velocityPlot", "accelerationPlot", "jerkPlot"};
+    for (int p = 0; p < 3; ++p) {
+        auto* plot = new QCustomPlot(this);
+        plot->setObjectName(objectNames[p]);
+        plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+        plot->axisRect()->setRangeDrag(Qt::Horizontal);
+        plot->axisRect()->setRangeZoom(Qt::Horizontal);
+        plot->yAxis->setLabel(titles[p]);
+        plot->yAxis->setNumberFormat("gb");
+        for (int c = 0; c < 3; ++c) {
+            QCPGraph* g = plot->addGraph();
+            g->setName(names[p][c]);
+            g->setPen(QPen(componentColor(c), c == 2 ? 1.5 : 1.0));
+        }
+        plot->legend->setVisible(true);
+        plot->legend->setFont(QFont(font().family(), 8));
+        plot->legend->setRowSpacing(-3);
+        plot->legend->setBrush(QColor(255, 255, 255, 220));
+        plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+        auto* cursor = new QCPItemStraightLine(plot);
+        cursor->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
+        cursor->point1->setCoords(0, 0);
+        cursor->point2->setCoords(0, 1);
+        m_cursors[static_cast<std::size_t>(p)] = cursor;
+        // Only the bottom plot labels the shared x axis.
+        plot->xAxis->setTickLabels(p == 2);
+        connect(plot, &QCustomPlot::mouseMove, this, [this, plot](QMouseEvent* e) {
+            emit cursorMoved(plot->xAxis->pixelToCoord(e->position().x()));
+        });
+        m_plots[static_cast<std::size_t>(p)] = plot;
+        layout->addWidget(plot, 1);
+    }
+    // One shared x axis: panning or zooming any plot moves all three.
+    for (QCustomPlot* a : m_plots) {
+        for (QCustomPlot* b : m_plots) {
+            if (a == b) continue;
+            connect(a->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), b,
+                    [b](const QCPRange& r) {
+                        if (b->xAxis->range() != r) {
+                            b->xAxis->setRange(r);
+                            b->replot(QCustomPlot::rpQueuedReplot);
+                        }
+                    });
+        }
+    }
+    // The left axes line up however wide their tick labels are.
+    auto* group = new QCPMarginGroup(m_plots[0]);
+    for (QCustomPlot* p : m_plots) p->axisRect()->setMarginGroup(QCP::msLeft | QCP::msRight, group);
+}
+
+void KinematicsPlots::setResult(const ComputeResultPtr& result) {
+    m_result = result;
+    if (!result || !result->ok()) return;
+    const bool axisChanged = result->axis != m_axis;
+    m_axis = result->axis;
+    for (int p = 0; p < 3; ++p) {
+        QCustomPlot* plot = m_plots[static_cast<std::size_t>(p)];
+        for (int c = 0; c < 3; ++c) {
+            plot->graph(c)->setData(result->curves[static_cast<std::size_t>(3 * p + c)]);
+        }
+        plot->xAxis->setLabel(p == 2 ? (m_axis == PlotAxis::Angle ? tr("φ [°]") : tr("t [s]"))
+                                     : QString());
+    }
+    rebuildJointMarkers();
+    if (!m_fitted || axisChanged) {
+        resetZoom();
+        m_fitted = true;
+    } else {
+        for (QCustomPlot* p : m_plots) {
+            p->yAxis->rescale();
+            p->yAxis->scaleRange(1.08);
+            p->replot(QCustomPlot::rpQueuedReplot);
+        }
+    }
+}
+
+void KinematicsPlots::resetZoom() {
+    for (QCustomPlot* p : m_plots) {
+        p->rescaleAxes();
+        p->yAxis->scaleRange(1.08);
+        p->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+void KinematicsPlots::setCursorX(double x) {
+    for (std::size_t p = 0; p < 3; ++p) {
+        m_cursors[p]->point1->setCoords(x, 0);
+        m_cursors[p]->point2->setCoords(x, 1);
+        m_plots[p]->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+void KinematicsPlots::rebuildJointMarkers() {
+    for (QCPItemStraightLine* m : m_jointMarkers) m->parentPlot()->removeItem(m);
+    m_jointMarkers.clear();
+    if (!m_result || m_result->turn.size() == 0) return;
+    const double omega = m_result->omega;
+    for (const JointAnalysis& j : m_result->analysis.joints) {
+        if (j.continuity == Continuity::C2) continue;  // a_r is continuous here
+        // Where in the plotted turn (phi = omega·t, t in [0, T)) the joint angle comes up.
+        double phi = j.phi;
+        const double sign = omega > 0 ? 1.0 : -1.0;
+        phi = std::fmod(sign * phi, kTwoPi);
+        if (phi < 0) phi += kTwoPi;
+        const double x = m_axis == PlotAxis::Angle ? radToDeg(sign * phi) : phi / std::abs(omega);
+        for (QCustomPlot* p : m_plots) {
+            auto* line = new QCPItemStraightLine(p);
+            line->setPen(QPen(QColor(200, 120, 0, 150), 1, Qt::DotLine));
+            line->point1->setCoords(x, 0);
+            line->point2->setCoords(x, 1);
+            line->setSelectable(false);
+            m_jointMarkers.push_back(line);
+        }
+    }
+}
+
+}  // namespace cam

@@ -1,0 +1,23 @@
+#pragma once
+/// @file
+/// @brief Colours shared by the views: one per segment (cycled), and the curve colours.
+
+#include <QColor>
+
+namespace cam {
+
+/// @brief A colour for segment k, distinct for neighbours (Tableau 10, cycled).
+inline QColor segmentColor(int k) {
+    static const QColor colors[] = {
+        {31, 119, 180}, {255, 127, 14},  {44, 160, 44},   {214, 39, 40},  {148, 103, 189},
+        {140, 86, 75},  {227, 119, 194}, {127, 127, 127}, {188, 189, 34}, {23, 190, 207}};
+    return colors[k % 10];
+}
+
+/// @brief Radial, tangential, magnitude.
+inline QColor componentColor(int component) {
+    static const QColor colors[] = {{31, 119, 180}, {214, 39, 40}, {40, 40, 40}};
+    return colors[component % 3];
+}
+
+}  // namespace cam

@@ -1,0 +1,147 @@
+#include "contour/fit_windows.h"
+
+#include <cmath>
+#include <optional>
+
+#include "common/angles.h"
+#include "geometry/line.h"
+#include "project/validate.h"
+
+namespace cam {
+namespace {
+
+using Vec = Eigen::Vector2d;
+
+/// Circles (or a circle and a line) closer than this count as touching: their tangent point
+/// is used. Far below anything a designer types, above the rounding of ten-digit data.
+double touchTolerance(double scale) { return 1e-6 * (1.0 + scale); }
+
+Vec perp(const Vec& v) { return {-v.y(), v.x()}; }
+
+std::vector<Vec> circleCircle(const Vec& c1, double r1, const Vec& c2, double r2) {
+    const Vec d = c2 - c1;
+    const double dist = d.norm();
+    if (dist < 1e-12) return {};  // concentric: no isolated meeting point
+    const Vec e = d / dist;
+    const double a = (dist * dist + r1 * r1 - r2 * r2) / (2.0 * dist);
+    const double h2 = r1 * r1 - a * a;
+    const Vec base = c1 + a * e;
+    // Nearly touching circles mean "tangent": an overlap of 1e-8 mm would otherwise split the
+    // tangent point into two intersections sqrt(2Rδ) ≈ 4e-4 mm apart.
+    const double gap = std::min(std::abs(dist - (r1 + r2)), std::abs(dist - std::abs(r1 - r2)));
+    if (gap <= touchTolerance(std::max(r1, r2))) return {base};
+    if (h2 < 0.0) return {};
+    const double h = std::sqrt(h2);
+    return {base + h * perp(e), base - h * perp(e)};
+}
+
+std::vector<Vec> lineCircle(const Vec& a, const Vec& b, const Vec& c, double r) {
+    const Vec u = (b - a).normalized();
+    const Vec w = a - c;
+    const double p = u.dot(w);
+    const double disc = p * p - (w.squaredNorm() - r * r);
+    const Vec foot = a - p * u;
+    if (std::abs((foot - c).norm() - r) <= touchTolerance(r)) return {foot};  // tangent
+    if (disc < 0.0) return {};
+    const double s = std::sqrt(disc);
+    return {a + (-p + s) * u, a + (-p - s) * u};
+}
+
+std::vector<Vec> lineLine(const Vec& a1, const Vec& b1, const Vec& a2, const Vec& b2) {
+    const Vec u1 = b1 - a1, u2 = b2 - a2;
+    const double cross = u1.x() * u2.y() - u1.y() * u2.x();
+    if (std::abs(cross) <= 1e-12 * u1.norm() * u2.norm()) return {};
+    const Vec w = a2 - a1;
+    const double t = (w.x() * u2.y() - w.y() * u2.x()) / cross;
+    return {a1 + t * u1};
+}
+
+/// Two pieces of one circle or one line: any angle is a valid boundary.
+bool sameCurve(const SegmentSpec& s, const SegmentSpec& t) {
+    if (s.type != t.type) return false;
+    if (s.type == SegmentType::Arc) {
+        return (s.center - t.center).norm() <= touchTolerance(s.radius) &&
+               std::abs(s.radius - t.radius) <= touchTolerance(s.radius) && s.branch == t.branch;
+    }
+    const Vec u = (s.to - s.from).normalized();
+    auto offLine = [&](const Vec& p) {
+        const Vec w = p - s.from;
+        return std::abs(u.x() * w.y() - u.y() * w.x());
+    };
+    const double scale = std::max(s.from.norm(), s.to.norm());
+    return offLine(t.from) <= touchTolerance(scale) && offLine(t.to) <= touchTolerance(scale);
+}
+
+std::vector<Vec> meetingPoints(const SegmentSpec& s, const SegmentSpec& t) {
+    const bool sArc = s.type == SegmentType::Arc, tArc = t.type == SegmentType::Arc;
+    if (sArc && tArc) return circleCircle(s.center, s.radius, t.center, t.radius);
+    if (sArc) return lineCircle(t.from, t.to, s.center, s.radius);
+    if (tArc) return lineCircle(s.from, s.to, t.center, t.radius);
+    return lineLine(s.from, s.to, t.from, t.to);
+}
+
+double wrapDeg(double deg) {
+    double w = std::remainder(deg, 360.0);
+    return w <= -180.0 ? w + 360.0 : w;
+}
+
+}  // namespace
+
+Result<std::vector<SegmentSpec>> fitWindows(const std::vector<SegmentSpec>& contour) {
+    const std::size_t n = contour.size();
+    if (n < 2) return contour;
+    std::vector<SegmentSpec> out = contour;
+    Diagnostics errors;
+    struct Joint {
+        double angleDeg;
+        Vec point;
+    };
+    std::vector<std::optional<Joint>> joints(n);  // joint k: end of k, start of k+1
+    for (std::size_t k = 0; k < n; ++k) {
+        const SegmentSpec& left = contour[k];
+        const SegmentSpec& right = contour[(k + 1) % n];
+        const double current = left.phiEndDeg;
+        std::optional<Joint> best;
+        if (sameCurve(left, right)) {
+            const double phi = degToRad(current);
+            const double r = left.type == SegmentType::Arc
+                                 ? Arc{left.center, left.radius, left.branch}.evaluate(phi).r
+                                 : Line{left.from, left.to}.evaluate(phi).r;
+            joints[k] = Joint{current, Vec(r * std::cos(phi), r * std::sin(phi))};
+            continue;
+        }
+        for (const Vec& p : meetingPoints(left, right)) {
+            if (p.norm() < 1e-9) continue;  // at the rotation centre: no ray angle
+            const double angle = current + wrapDeg(radToDeg(std::atan2(p.y(), p.x())) - current);
+            if (!best || std::abs(angle - current) < std::abs(best->angleDeg - current)) {
+                best = Joint{angle, p};
+            }
+        }
+        if (!best) {
+            errors.push_back({segmentLocation(k) + "/" + segmentLocation((k + 1) % n),
+                              "the neighbouring segments do not meet, so there is no boundary "
+                              "to fit"});
+        }
+        joints[k] = best;
+    }
+    if (!errors.empty()) return errors;
+
+    for (std::size_t k = 0; k < n; ++k) {
+        const Joint& j = *joints[k];
+        SegmentSpec& left = out[k];
+        SegmentSpec& right = out[(k + 1) % n];
+        if (k + 1 < n) {
+            left.phiEndDeg = j.angleDeg;
+            right.phiStartDeg = j.angleDeg;
+        } else {  // the wrap-around joint: the first window starts there, the last ends a turn on
+            right.phiStartDeg =
+                j.angleDeg - 360.0 * std::round((j.angleDeg - contour[0].phiStartDeg) / 360.0);
+            left.phiEndDeg = right.phiStartDeg + 360.0;
+        }
+        if (left.type == SegmentType::Line) left.to = j.point;
+        if (right.type == SegmentType::Line) right.from = j.point;
+    }
+    return out;
+}
+
+}  // namespace cam
