@@ -4,7 +4,6 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QEventLoop>
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QMessageBox>
@@ -13,9 +12,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "engine/compute_engine.h"
 #include "mainwindow.h"
-#include "views/kinematics_plots.h"
 
 namespace {
 
@@ -31,18 +28,6 @@ void chooseOffscreenWhenThereIsNoDisplay(int argc, char** argv) {
     const bool noDisplay =
         qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
     if (headless || noDisplay) qputenv("QT_QPA_PLATFORM", "offscreen");
-}
-
-/// Waits (running the event loop) until the window shows a computed result.
-bool waitForResult(cam::MainWindow& window, int timeoutMs) {
-    if (window.engine()->latestResult() &&
-        window.engine()->latestResult()->generation == window.engine()->latestGeneration()) {
-        return true;
-    }
-    QEventLoop loop;
-    QTimer::singleShot(timeoutMs, &loop, [&loop] { loop.exit(1); });
-    QObject::connect(&window, &cam::MainWindow::resultShown, &loop, [&loop] { loop.exit(0); });
-    return loop.exec() == 0;
 }
 
 int screenshot(cam::MainWindow& window, const QString& file, const QString& size) {
@@ -62,19 +47,12 @@ int screenshot(cam::MainWindow& window, const QString& file, const QString& size
             return 1;
         }
     }
-    window.resize(w, h);
-    window.show();
-    if (!waitForResult(window, 20000)) {
+    const QImage image = window.renderScreenshot(QSize(w, h));
+    if (image.isNull()) {
         std::fprintf(stderr, "camwright: the computation did not finish within 20 s\n");
         return 3;
     }
-    // Put the cursor where the seed's Table 2 starts (t = T/8) so the readout is filled.
-    const auto& result = window.engine()->latestResult();
-    window.setCursorTime(result->period / 8.0);
-    for (int p = 0; p < 3; ++p) window.plots()->plot(p)->replot(QCustomPlot::rpImmediateRefresh);
-    QCoreApplication::processEvents();
-    const QPixmap pixmap = window.grab();
-    if (!pixmap.save(file, "PNG")) {
+    if (!image.save(file, "PNG")) {
         std::fprintf(stderr, "camwright: %s: cannot write the PNG\n", qPrintable(file));
         return 2;
     }

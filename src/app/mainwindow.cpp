@@ -2,6 +2,7 @@
 
 #include <QCloseEvent>
 #include <QDir>
+#include <QEventLoop>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
@@ -13,6 +14,7 @@
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QTableView>
+#include <QTimer>
 #include <cmath>
 
 #include "common/angles.h"
@@ -382,17 +384,45 @@ void MainWindow::setCursorTime(double t) {
     m_plots->setCursorX(r->axis == PlotAxis::Angle ? radToDeg(s.phi) : t);
 }
 
+bool MainWindow::waitForCurrentResult(int timeoutMs) {
+    const auto current = [this] {
+        const auto& r = m_engine->latestResult();
+        return r && r->generation == m_engine->latestGeneration();
+    };
+    if (current()) return true;
+    QEventLoop loop;
+    QTimer::singleShot(timeoutMs, &loop, [&loop] { loop.exit(1); });
+    connect(m_engine, &ComputeEngine::resultReady, &loop, [&loop, current] {
+        if (current()) loop.exit(0);
+    });
+    return loop.exec() == 0;
+}
+
+QImage MainWindow::renderScreenshot(const QSize& size) {
+    resize(size);
+    show();
+    QCoreApplication::processEvents();
+    if (!waitForCurrentResult(20000)) return {};
+    setCursorTime(m_engine->latestResult()->period / 8.0);
+    statusBar()->clearMessage();  // transient messages name paths: not part of the picture
+    for (int p = 0; p < 3; ++p) m_plots->plot(p)->replot(QCustomPlot::rpImmediateRefresh);
+    m_contour->replot(QCustomPlot::rpImmediateRefresh);
+    QCoreApplication::processEvents();
+    return grab().toImage();
+}
+
 void MainWindow::updateStatus() {
     const Diagnostics& d = m_document->diagnostics();
     const int n = static_cast<int>(m_document->project().contour.size());
     if (d.empty()) {
-        m_validationLabel->setText(tr("Valid · %n segment(s)", "", n));
+        m_validationLabel->setText(n == 1 ? tr("Valid · 1 segment")
+                                          : tr("Valid · %1 segments").arg(n));
         m_validationLabel->setToolTip({});
         m_validationLabel->setStyleSheet({});
     } else {
         const QString first = QString::fromStdString(d.front().text());
-        m_validationLabel->setText(tr("%n problem(s): ", "", static_cast<int>(d.size())) +
-                                   fontMetrics().elidedText(first, Qt::ElideRight, 600));
+        const QString count = d.size() == 1 ? tr("1 problem: ") : tr("%1 problems: ").arg(d.size());
+        m_validationLabel->setText(count + fontMetrics().elidedText(first, Qt::ElideRight, 600));
         m_validationLabel->setToolTip(diagnosticsText(d, 40));
         m_validationLabel->setStyleSheet("color: #b00020;");
     }

@@ -45,6 +45,12 @@ public:
     /// @brief Puts the cursor at time t (s): readout, follower ray and plot cursors.
     void setCursorTime(double t);
 
+    /// @brief Runs the event loop until the plots show the result of the newest request.
+    bool waitForCurrentResult(int timeoutMs);
+    /// @brief The window at `size` with the cursor at T/8, as `--screenshot` writes it.
+    /// Empty if no result arrived within 20 s.
+    QImage renderScreenshot(const QSize& size);
+
 signals:
     /// The plots show this result (emitted after they were updated).
     void resultShown(const cam::ComputeResultPtr& result);

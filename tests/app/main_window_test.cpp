@@ -1,0 +1,162 @@
+// The main window as a user drives it: open, edit, save, reopen, bad files, and how it looks.
+
+#include <gtest/gtest.h>
+
+#include <QAction>
+#include <QDir>
+#include <QImage>
+#include <QTemporaryDir>
+
+#include "app_test_support.h"
+#include "document/commands.h"
+#include "engine/compute_engine.h"
+#include "mainwindow.h"
+#include "models/arc_table_model.h"
+#include "views/state_readout.h"
+
+namespace cam {
+namespace {
+
+const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json"));
+
+TEST(MainWindow, OpeningABadFileLeavesTheOpenDocumentUntouched) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.tableModel()->setData(window.tableModel()->index(1, ArcTableModel::CenterX), 18.2,
+                                 Qt::EditRole);
+    const Project before = window.document()->project();
+    const QString pathBefore = window.document()->filePath();
+    const int undoBefore = window.document()->undoStack()->count();
+    for (const char* bad : {"invalid/window-gap.cam.json", "invalid/syntax-truncated.cam.json",
+                            "invalid/identity-version-newer.cam.json", "invalid/nope.cam.json"}) {
+        const QString message = window.loadFile(QString::fromStdString(test::dataPath(bad)));
+        EXPECT_FALSE(message.isEmpty()) << bad;
+        EXPECT_EQ(window.document()->project(), before) << bad;
+        EXPECT_EQ(window.document()->filePath(), pathBefore);
+        EXPECT_EQ(window.document()->undoStack()->count(), undoBefore);
+        EXPECT_TRUE(window.document()->isModified());
+    }
+    EXPECT_TRUE(
+        window.loadFile(QString::fromStdString(test::dataPath("invalid/window-gap.cam.json")))
+            .contains("contour[0]/contour[1]: gap of 1°"));
+}
+
+TEST(MainWindow, EditSaveReopen) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("edited.cam.json");
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    // Two edits that keep the contour valid: the notch piece becomes a line, the speed halves.
+    ASSERT_TRUE(window.tableModel()->setData(window.tableModel()->index(0, ArcTableModel::Type), 1,
+                                             Qt::EditRole));
+    window.document()->undoStack()->push(new SetMotion(window.document(), {SpeedUnit::Rpm, 75.0}));
+    window.document()->undoStack()->undo();
+    window.document()->undoStack()->redo();
+    const Project edited = window.document()->project();
+    const QString problem = window.saveFile(path);
+    ASSERT_TRUE(problem.isEmpty()) << problem.toStdString();
+    EXPECT_FALSE(window.document()->isModified());
+    EXPECT_EQ(window.document()->filePath(), QFileInfo(path).absoluteFilePath());
+
+    MainWindow other;
+    ASSERT_TRUE(other.loadFile(path).isEmpty());
+    EXPECT_EQ(serializeProject(other.document()->project()), serializeProject(edited));
+    EXPECT_EQ(other.document()->project().contour[0].type, SegmentType::Line);
+    EXPECT_EQ(other.document()->project().motion.unit, SpeedUnit::Rpm);
+}
+
+TEST(MainWindow, RefusesToSaveAnInvalidProjectAndWritesNothing) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("bad.cam.json");
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.tableModel()->setData(window.tableModel()->index(2, ArcTableModel::Radius), 0.0,
+                                 Qt::EditRole);
+    const QString message = window.saveFile(path);
+    EXPECT_TRUE(message.contains("contour[2].radius")) << message.toStdString();
+    EXPECT_FALSE(QFile::exists(path));
+    EXPECT_TRUE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
+}
+
+TEST(MainWindow, FitWindowsActionRepairsDisturbedBoundariesInOneUndoStep) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ArcTableModel* model = window.tableModel();
+    model->setData(model->index(1, ArcTableModel::PhiEnd), 51.0, Qt::EditRole);
+    model->setData(model->index(2, ArcTableModel::PhiStart), 51.0, Qt::EditRole);
+    EXPECT_FALSE(window.document()->isValid());  // the joint no longer meets
+    auto* fit = window.findChild<QAction*>("actionFitWindows");
+    ASSERT_NE(fit, nullptr);
+    fit->trigger();
+    EXPECT_TRUE(window.document()->isValid());
+    EXPECT_NEAR(window.document()->project().contour[1].phiEndDeg, 50.30859, 1e-5);
+    window.document()->undoStack()->undo();
+    EXPECT_DOUBLE_EQ(window.document()->project().contour[1].phiEndDeg, 51.0);
+}
+
+TEST(MainWindow, EditsReachThePlotsAndTheReadout) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    window.setCursorTime(0.05);
+    EXPECT_TRUE(window.readout()->text().contains("r 26.218824"))
+        << window.readout()->text().toStdString();
+    // Slower turning: every velocity halves; the readout follows the new result.
+    auto* stack = window.document()->undoStack();
+    stack->push(new SetMotion(window.document(), {SpeedUnit::PeriodS, 0.8}));
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    window.setCursorTime(0.1);  // the same angle, 45°
+    EXPECT_TRUE(window.readout()->text().contains("v_φ 205.92216"))
+        << window.readout()->text().toStdString();
+}
+
+/// Compares two images pixel by pixel: a pixel differs when any channel differs by more than
+/// `tolerance`; returns the fraction of differing pixels and writes a diff image.
+double mismatch(const QImage& a, const QImage& b, int tolerance, QImage* diff) {
+    if (a.size() != b.size()) return 1.0;
+    *diff = QImage(a.size(), QImage::Format_RGB32);
+    diff->fill(Qt::white);
+    qint64 bad = 0;
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) {
+            const QColor p = a.pixelColor(x, y), q = b.pixelColor(x, y);
+            const int d = std::max({std::abs(p.red() - q.red()), std::abs(p.green() - q.green()),
+                                    std::abs(p.blue() - q.blue())});
+            if (d > tolerance) {
+                ++bad;
+                diff->setPixelColor(x, y, Qt::red);
+            }
+        }
+    }
+    return static_cast<double>(bad) / (a.width() * a.height());
+}
+
+TEST(MainWindow, ScreenshotOfTheSixLobeCamMatchesTheGoldenImage) {
+    // Regenerate with CAMWRIGHT_UPDATE_GOLDEN=1 after a deliberate change of the window, and
+    // look at the new image before committing it.
+    const QString golden = QString::fromStdString(test::dataPath("app/six-lobe-window.png"));
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    const QImage actual =
+        window.renderScreenshot(QSize(1400, 860)).convertToFormat(QImage::Format_RGB32);
+    ASSERT_FALSE(actual.isNull());
+    if (qEnvironmentVariableIsSet("CAMWRIGHT_UPDATE_GOLDEN")) {
+        QDir().mkpath(QFileInfo(golden).absolutePath());
+        ASSERT_TRUE(actual.save(golden));
+        GTEST_SKIP() << "golden image written: " << golden.toStdString();
+    }
+    const QImage expected = QImage(golden).convertToFormat(QImage::Format_RGB32);
+    ASSERT_FALSE(expected.isNull()) << "missing " << golden.toStdString();
+    QImage diff;
+    // The compute-time label changes from run to run: a few hundred pixels at most.
+    const double fraction = mismatch(actual, expected, 48, &diff);
+    if (fraction > 0.005) {
+        actual.save("six-lobe-window.actual.png");
+        diff.save("six-lobe-window.diff.png");
+    }
+    EXPECT_LE(fraction, 0.005) << "see six-lobe-window.actual.png and .diff.png in "
+                               << QDir::currentPath().toStdString();
+}
+
+}  // namespace
+}  // namespace cam
