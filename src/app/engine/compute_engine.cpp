@@ -56,10 +56,11 @@ ComputeEngine::~ComputeEngine() = default;
 
 void ComputeEngine::request(const Project& project, PlotAxis axis) {
     m_pending = ComputeRequest{++m_generation, std::make_shared<const Project>(project), axis};
-    if (m_timer.interval() == 0) {
+    // Leading edge: a lone edit is computed at once. Edits that follow within the interval
+    // are held and only the newest is submitted when it ends (trailing edge).
+    if (!m_timer.isActive()) {
         submitPending();
-    } else if (!m_timer.isActive()) {
-        m_timer.start();
+        if (m_timer.interval() > 0) m_timer.start();
     }
 }
 

@@ -38,9 +38,10 @@ private:
     bool m_abort = false;
 };
 
-/// @brief Lives in the GUI thread. request() never blocks: it stores the snapshot and a
-/// single-shot timer coalesces bursts of edits into one computation. Results that answer an
-/// older request than the newest are dropped, so a stale result is never shown.
+/// @brief Lives in the GUI thread. request() never blocks. A lone request is submitted at once;
+/// requests that follow within the coalescing interval are held, and only the newest of them is
+/// submitted when it ends. Results that answer an older request than the newest are dropped, so
+/// a stale result is never shown.
 class ComputeEngine : public QObject {
     Q_OBJECT
 public:

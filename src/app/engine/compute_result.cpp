@@ -32,20 +32,53 @@ void buildCurves(ComputeResult& r) {
                                             &t.a,  &t.jR,   &t.jPhi, &t.j};
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const bool angle = r.axis == PlotAxis::Angle;
+    const std::size_t n = t.size();
+    std::vector<double> x(n);
+    for (std::size_t k = 0; k < n; ++k) x[k] = angle ? radToDeg(t.phi[k]) : t.t[k];
+    const bool ascending = !angle || r.omega > 0.0;
+    r.xRange = QCPRange(std::min(x.front(), x.back()), std::max(x.front(), x.back()));
+    const std::size_t bucket = std::max<std::size_t>(1, n / ComputeResult::kEnvelopeBuckets);
+
     for (int c = 0; c < static_cast<int>(Curve::Count); ++c) {
-        QVector<QCPGraphData> data;
-        data.reserve(static_cast<int>(t.size() + r.contour->size() + 1));
         const std::vector<double>& y = *sources[c];
-        for (std::size_t k = 0; k < t.size(); ++k) {
-            const double x = angle ? radToDeg(t.phi[k]) : t.t[k];
-            if (k > 0 && t.segment[k] != t.segment[k - 1]) {
-                data.append({x, nan});  // break the line at a joint
+        QVector<QCPGraphData> full, envelope;
+        full.reserve(static_cast<int>(n + r.contour->size() + 1));
+        envelope.reserve(static_cast<int>(2 * (n / bucket) + 2 * r.contour->size() + 4));
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        std::size_t runStart = 0;
+        for (std::size_t k = 0; k <= n; ++k) {
+            const bool runEnds = k == n || (k > 0 && t.segment[k] != t.segment[k - 1]);
+            if (runEnds && k > runStart) {
+                if (runStart > 0) envelope.append({x[runStart], nan});
+                // Min and max of each bucket of this run, in x order.
+                for (std::size_t b = runStart; b < k; b += bucket) {
+                    const std::size_t e = std::min(k, b + bucket);
+                    std::size_t iMin = b, iMax = b;
+                    for (std::size_t i = b; i < e; ++i) {
+                        if (y[i] < y[iMin]) iMin = i;
+                        if (y[i] > y[iMax]) iMax = i;
+                    }
+                    const std::size_t first = std::min(iMin, iMax), second = std::max(iMin, iMax);
+                    envelope.append({x[first], y[first]});
+                    if (second != first) envelope.append({x[second], y[second]});
+                }
+                runStart = k;
             }
-            data.append({x, y[k]});
+            if (k == n) break;
+            if (k > 0 && t.segment[k] != t.segment[k - 1]) full.append({x[k], nan});
+            full.append({x[k], y[k]});
+            lo = std::min(lo, y[k]);
+            hi = std::max(hi, y[k]);
         }
-        auto container = QSharedPointer<QCPGraphDataContainer>::create();
-        container->set(data, !angle || r.omega > 0.0);
-        r.curves[static_cast<std::size_t>(c)] = container;
+        auto fullContainer = QSharedPointer<QCPGraphDataContainer>::create();
+        fullContainer->set(full, ascending);
+        auto envelopeContainer = QSharedPointer<QCPGraphDataContainer>::create();
+        envelopeContainer->set(envelope, ascending);
+        r.curves[static_cast<std::size_t>(c)] = fullContainer;
+        r.envelopes[static_cast<std::size_t>(c)] = envelopeContainer;
+        QCPRange& range = r.plotRanges[static_cast<std::size_t>(c / 3)];
+        range = c % 3 == 0 ? QCPRange(lo, hi)
+                           : QCPRange(std::min(range.lower, lo), std::max(range.upper, hi));
     }
 }
 

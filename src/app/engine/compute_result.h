@@ -45,6 +45,14 @@ struct ComputeResult {
     /// Plot data over angle (deg) or time (s), with NaN gaps where the segment changes so a
     /// jump shows as a jump.
     std::array<QSharedPointer<QCPGraphDataContainer>, static_cast<int>(Curve::Count)> curves;
+    /// The same curves reduced to the minimum and maximum of each of kEnvelopeBuckets buckets
+    /// (per segment run, so joints still break the line): what a plot of the whole turn draws.
+    std::array<QSharedPointer<QCPGraphDataContainer>, static_cast<int>(Curve::Count)> envelopes;
+    static constexpr int kEnvelopeBuckets = 4096;
+    /// y range of each plot (velocity, acceleration, jerk) over all of its curves.
+    std::array<QCPRange, 3> plotRanges;
+    /// x range of the plotted turn.
+    QCPRange xRange;
     double computeMs = 0.0;
 
     [[nodiscard]] bool ok() const { return errors.empty() && contour.has_value(); }

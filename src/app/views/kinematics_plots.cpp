@@ -62,6 +62,8 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
                     });
         }
     }
+    connect(m_plots[0]->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
+            [this] { chooseResolution(); });
     // The left axes line up however wide their tick labels are.
     auto* group = new QCPMarginGroup(m_plots[0]);
     for (QCustomPlot* p : m_plots) p->axisRect()->setMarginGroup(QCP::msLeft | QCP::msRight, group);
@@ -74,31 +76,53 @@ void KinematicsPlots::setResult(const ComputeResultPtr& result) {
     m_axis = result->axis;
     for (int p = 0; p < 3; ++p) {
         QCustomPlot* plot = m_plots[static_cast<std::size_t>(p)];
-        for (int c = 0; c < 3; ++c) {
-            plot->graph(c)->setData(result->curves[static_cast<std::size_t>(3 * p + c)]);
-        }
         plot->xAxis->setLabel(p == 2 ? (m_axis == PlotAxis::Angle ? tr("φ [°]") : tr("t [s]"))
                                      : QString());
     }
     rebuildJointMarkers();
     if (!m_fitted || axisChanged) {
-        resetZoom();
         m_fitted = true;
+        resetZoom();  // sets the x range, which chooses the resolution
     } else {
-        for (QCustomPlot* p : m_plots) {
-            p->yAxis->rescale();
-            p->yAxis->scaleRange(1.08);
-            p->replot(QCustomPlot::rpQueuedReplot);
+        m_showingEnvelope = !m_showingEnvelope;  // force chooseResolution to set the new data
+        chooseResolution();
+    }
+    fitY();
+}
+
+void KinematicsPlots::chooseResolution() {
+    if (!m_result || !m_result->ok()) return;
+    const double visible = m_plots[0]->xAxis->range().size() / m_result->xRange.size();
+    const bool envelope = visible > 0.25;
+    if (envelope == m_showingEnvelope && m_plots[0]->graph(0)->data() != nullptr) return;
+    m_showingEnvelope = envelope;
+    const auto& source = envelope ? m_result->envelopes : m_result->curves;
+    for (int p = 0; p < 3; ++p) {
+        for (int c = 0; c < 3; ++c) {
+            m_plots[static_cast<std::size_t>(p)]->graph(c)->setData(
+                source[static_cast<std::size_t>(3 * p + c)]);
         }
+        m_plots[static_cast<std::size_t>(p)]->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+void KinematicsPlots::fitY() {
+    if (!m_result || !m_result->ok()) return;
+    // The worker measured the ranges; rescaling here would scan every point again.
+    for (std::size_t p = 0; p < 3; ++p) {
+        QCPRange range = m_result->plotRanges[p];
+        if (!(range.size() > 0.0)) range = QCPRange(range.lower - 1.0, range.upper + 1.0);
+        m_plots[p]->yAxis->setRange(range);
+        m_plots[p]->yAxis->scaleRange(1.08);
+        m_plots[p]->replot(QCustomPlot::rpQueuedReplot);
     }
 }
 
 void KinematicsPlots::resetZoom() {
-    for (QCustomPlot* p : m_plots) {
-        p->rescaleAxes();
-        p->yAxis->scaleRange(1.08);
-        p->replot(QCustomPlot::rpQueuedReplot);
-    }
+    if (!m_result || !m_result->ok()) return;
+    for (QCustomPlot* p : m_plots) p->xAxis->setRange(m_result->xRange);
+    chooseResolution();
+    fitY();
 }
 
 void KinematicsPlots::setCursorX(double x) {

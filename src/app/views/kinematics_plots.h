@@ -30,6 +30,9 @@ signals:
 
 private:
     void rebuildJointMarkers();
+    /// Whole turn in view: draw the envelopes; zoomed in: the full-resolution curves.
+    void chooseResolution();
+    void fitY();
 
     std::array<QCustomPlot*, 3> m_plots{};
     std::array<QCPItemStraightLine*, 3> m_cursors{};
@@ -37,6 +40,7 @@ private:
     ComputeResultPtr m_result;
     PlotAxis m_axis = PlotAxis::Angle;
     bool m_fitted = false;
+    bool m_showingEnvelope = false;
 };
 
 }  // namespace cam
