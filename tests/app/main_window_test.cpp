@@ -5,7 +5,9 @@
 #include <QAction>
 #include <QDir>
 #include <QImage>
+#include <QMenuBar>
 #include <QTemporaryDir>
+#include <QTranslator>
 
 #include "app_test_support.h"
 #include "document/commands.h"
@@ -156,6 +158,35 @@ TEST(MainWindow, ScreenshotOfTheSixLobeCamMatchesTheGoldenImage) {
     }
     EXPECT_LE(fraction, 0.005) << "see six-lobe-window.actual.png and .diff.png in "
                                << QDir::currentPath().toStdString();
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(Translations, GermanIsEmbeddedAndComplete) {
+    QTranslator german;
+    ASSERT_TRUE(
+        german.load(QLocale(QLocale::German, QLocale::Germany), "camwright", "_", ":/i18n"));
+    QCoreApplication::installTranslator(&german);
+    {
+        MainWindow window;
+        const auto menus = window.menuBar()->actions();
+        ASSERT_FALSE(menus.isEmpty());
+        EXPECT_EQ(menus.front()->text(), "&Datei");
+        EXPECT_EQ(
+            window.tableModel()->headerData(ArcTableModel::Radius, Qt::Horizontal, Qt::DisplayRole),
+            "Radius [mm]");
+        EXPECT_EQ(window.tableModel()->index(0, ArcTableModel::Type).data().toString(), "Bogen");
+    }
+    QCoreApplication::removeTranslator(&german);
+    // Every string has a translation: the .ts file says so for each message.
+    const QString ts = QString::fromStdString(test::readFile(
+        std::string(CAMWRIGHT_SOURCE_DIR) + "/resources/translations/camwright_de.ts"));
+    EXPECT_FALSE(ts.contains("type=\"unfinished\""));
+    EXPECT_GT(ts.count("<message>"), 100);
 }
 
 }  // namespace

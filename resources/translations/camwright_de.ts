@@ -1,0 +1,774 @@
+<?xml version='1.0' encoding='utf-8'?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE">
+<context>
+    <name>MainWindow</name>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="6" />
+        <source>Camwright</source>
+        <translation>Camwright</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="10" />
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="11" />
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="12" />
+        <source>&amp;Examples</source>
+        <translation>&amp;Beispiele</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="16" />
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="19" />
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="22" />
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="26" />
+        <source>Main Toolbar</source>
+        <translation>Hauptwerkzeugleiste</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="35" />
+        <source>Segments</source>
+        <translation>Segmente</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="42" />
+        <source>Motion</source>
+        <translation>Bewegung</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="47" />
+        <source>State at Cursor</source>
+        <translation>Zustand am Cursor</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="51" />
+        <source>&amp;New</source>
+        <translation>&amp;Neu</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="51" />
+        <source>Start a new project</source>
+        <translation>Ein neues Projekt beginnen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="52" />
+        <source>&amp;Open…</source>
+        <translation>Ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="52" />
+        <source>Open a .cam.json project</source>
+        <translation>Ein .cam.json-Projekt öffnen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="53" />
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="53" />
+        <source>Save the project</source>
+        <translation>Das Projekt speichern</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="54" />
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="54" />
+        <source>Save the project under a new name</source>
+        <translation>Das Projekt unter neuem Namen speichern</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="55" />
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="55" />
+        <source>Quit Camwright</source>
+        <translation>Camwright beenden</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="56" />
+        <source>&amp;Insert Segment</source>
+        <translation>Segment &amp;einfügen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="56" />
+        <source>Insert a segment after the selected one</source>
+        <translation>Ein Segment nach dem ausgewählten einfügen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="57" />
+        <source>&amp;Delete Segment</source>
+        <translation>Segment &amp;löschen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="57" />
+        <source>Delete the selected segment</source>
+        <translation>Das ausgewählte Segment löschen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="58" />
+        <source>Move &amp;Up</source>
+        <translation>Nach &amp;oben</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="58" />
+        <source>Move the selected segment up</source>
+        <translation>Das ausgewählte Segment nach oben verschieben</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="59" />
+        <source>Move Do&amp;wn</source>
+        <translation>Nach &amp;unten</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="59" />
+        <source>Move the selected segment down</source>
+        <translation>Das ausgewählte Segment nach unten verschieben</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="60" />
+        <source>&amp;Fit Windows</source>
+        <translation>Fenster &amp;anpassen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="60" />
+        <source>Set every window boundary to where its neighbours meet</source>
+        <translation>Jede Fenstergrenze auf den Treffpunkt der Nachbarn setzen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="61" />
+        <source>&amp;Time Axis</source>
+        <translation>&amp;Zeitachse</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="61" />
+        <source>Plot over time instead of angle</source>
+        <translation>Über der Zeit statt über dem Winkel auftragen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="62" />
+        <source>&amp;Reset Zoom</source>
+        <translation>Zoom &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="62" />
+        <source>Fit the contour and the plots into view</source>
+        <translation>Kontur und Diagramme einpassen</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="63" />
+        <source>&amp;About Camwright</source>
+        <translation>Ü&amp;ber Camwright</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="63" />
+        <source>About Camwright</source>
+        <translation>Über Camwright</translation>
+    </message>
+</context>
+<context>
+    <name>cam::ArcTableModel</name>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="87" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="121" />
+        <source>Arc</source>
+        <translation>Bogen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="87" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="121" />
+        <source>Line</source>
+        <translation>Gerade</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="88" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="130" />
+        <source>outer</source>
+        <translation>außen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="88" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="130" />
+        <source>inner</source>
+        <translation>innen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="95" />
+        <source>outer: far intersection of the ray with the circle; inner: near intersection</source>
+        <translation>außen: ferner Schnittpunkt des Strahls mit dem Kreis (r_oben); innen: naher Schnittpunkt (r_unten)</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="99" />
+        <source>A line's window follows its end points</source>
+        <translation>Das Fenster einer Geraden folgt ihren Endpunkten</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="100" />
+        <source>Polar window of this segment, degrees</source>
+        <translation>Polares Fenster dieses Segments, Grad</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="156" />
+        <source>Centre of the arc's circle, mm</source>
+        <translation>Mittelpunkt des Kreises, mm</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="158" />
+        <source>Radius of the arc, mm</source>
+        <translation>Radius des Bogens, mm</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="163" />
+        <source>End points of the line, mm (counter-clockwise around the centre)</source>
+        <translation>Endpunkte der Geraden, mm (gegen den Uhrzeigersinn um das Drehzentrum)</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="166" />
+        <source>Polar window [φ start, φ end), degrees</source>
+        <translation>Polares Fenster [φ Anfang, φ Ende), Grad</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="174" />
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="176" />
+        <source>Centre x [mm]</source>
+        <translation>Mittelpunkt x [mm]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="178" />
+        <source>Centre y [mm]</source>
+        <translation>Mittelpunkt y [mm]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="180" />
+        <source>Radius [mm]</source>
+        <translation>Radius [mm]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="182" />
+        <source>Branch</source>
+        <translation>Zweig</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="184" />
+        <source>From x [mm]</source>
+        <translation>Von x [mm]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="186" />
+        <source>From y [mm]</source>
+        <translation>Von y [mm]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="188" />
+        <source>To x [mm]</source>
+        <translation>Bis x [mm]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="190" />
+        <source>To y [mm]</source>
+        <translation>Bis y [mm]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="192" />
+        <source>φ start [°]</source>
+        <translation>φ Anfang [°]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="194" />
+        <source>φ end [°]</source>
+        <translation>φ Ende [°]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="297" />
+        <source>Edit %1 of segment %2</source>
+        <translation>%1 von Segment %2 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>cam::Commands</name>
+    <message>
+        <location filename="../../src/app/document/commands.cpp" line="32" />
+        <source>Insert segment</source>
+        <translation>Segment einfügen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/document/commands.cpp" line="41" />
+        <source>Delete segment</source>
+        <translation>Segment löschen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/document/commands.cpp" line="50" />
+        <source>Move segment</source>
+        <translation>Segment verschieben</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/document/commands.cpp" line="69" />
+        <source>Change speed</source>
+        <translation>Drehzahl ändern</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/document/commands.cpp" line="88" />
+        <source>Change samples per turn</source>
+        <translation>Abtastpunkte je Umdrehung ändern</translation>
+    </message>
+</context>
+<context>
+    <name>cam::ContourView</name>
+    <message>
+        <location filename="../../src/app/views/contour_view.cpp" line="18" />
+        <source>x [mm]</source>
+        <translation>x [mm]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/contour_view.cpp" line="19" />
+        <source>y [mm]</source>
+        <translation>y [mm]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/contour_view.cpp" line="29" />
+        <source>Wheel: zoom · drag: pan · drag a square/diamond handle: move the centre or change the radius of the selected arc</source>
+        <translation>Mausrad: zoomen · Ziehen: verschieben · Griff ziehen: Mittelpunkt verschieben oder Radius des ausgewählten Bogens ändern</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/contour_view.cpp" line="43" />
+        <source>centres</source>
+        <translation>Mittelpunkte</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/contour_view.cpp" line="47" />
+        <source>joints</source>
+        <translation>Übergänge</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/contour_view.cpp" line="94" />
+        <source>segment %1</source>
+        <translation>Segment %1</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/contour_view.cpp" line="228" />
+        <source>Move centre of segment %1</source>
+        <translation>Mittelpunkt von Segment %1 verschieben</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/contour_view.cpp" line="232" />
+        <source>Change radius of segment %1</source>
+        <translation>Radius von Segment %1 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>cam::KinematicsPlots</name>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="15" />
+        <source>Velocity [mm/s]</source>
+        <translation>Geschwindigkeit [mm/s]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="15" />
+        <source>Acceleration [mm/s²]</source>
+        <translation>Beschleunigung [mm/s²]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="16" />
+        <source>Jerk [mm/s³]</source>
+        <translation>Ruck [mm/s³]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="17" />
+        <source>v_r</source>
+        <translation>v_r</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="17" />
+        <source>v_φ</source>
+        <translation>v_φ</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="17" />
+        <source>|v|</source>
+        <translation>|v|</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="18" />
+        <source>a_r</source>
+        <translation>a_r</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="18" />
+        <source>a_φ</source>
+        <translation>a_φ</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="18" />
+        <source>|a|</source>
+        <translation>|a|</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="19" />
+        <source>j_r</source>
+        <translation>j_r</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="19" />
+        <source>j_φ</source>
+        <translation>j_φ</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="19" />
+        <source>|j|</source>
+        <translation>|j|</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="79" />
+        <source>φ [°]</source>
+        <translation>φ [°]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="79" />
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+</context>
+<context>
+    <name>cam::MainWindow</name>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="37" />
+        <source>Camwright projects (*.cam.json)</source>
+        <translation>Camwright-Projekte (*.cam.json)</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="43" />
+        <source>… and %1 more</source>
+        <translation>… und %1 weitere</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="152" />
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="154" />
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="182" />
+        <source>About Camwright</source>
+        <translation>Über Camwright</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="183" />
+        <source>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Design and inspect cam contours: exact polar kinematics of the follower.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="197" />
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="214" />
+        <source>%1 cannot be opened:
+%2</source>
+        <translation>%1 kann nicht geöffnet werden:
+%2</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="219" />
+        <source>Opened %1</source>
+        <translation>%1 geöffnet</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="227" />
+        <location filename="../../src/app/mainwindow.cpp" line="234" />
+        <source>Open Project</source>
+        <translation>Projekt öffnen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="239" />
+        <source>The project has problems; fix them before saving (a file with these problems could not be opened again):
+%1</source>
+        <translation>Das Projekt hat Fehler; bitte vor dem Speichern beheben (eine Datei mit diesen Fehlern ließe sich nicht wieder öffnen):
+%1</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="249" />
+        <source>%1 could not be written: %2</source>
+        <translation>%1 konnte nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="254" />
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="261" />
+        <location filename="../../src/app/mainwindow.cpp" line="275" />
+        <source>Save Project</source>
+        <translation>Projekt speichern</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="266" />
+        <source>Save Project As</source>
+        <translation>Projekt speichern unter</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="282" />
+        <source>Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="283" />
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="342" />
+        <source>Open Example</source>
+        <translation>Beispiel öffnen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="362" />
+        <source>not computed: the project has problems</source>
+        <translation>nicht berechnet: das Projekt hat Fehler</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="370" />
+        <source>%1 samples computed in %2 ms</source>
+        <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="418" />
+        <source>Valid · 1 segment</source>
+        <translation>Gültig · 1 Segment</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="419" />
+        <source>Valid · %1 segments</source>
+        <translation>Gültig · %1 Segmente</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="424" />
+        <source>1 problem: </source>
+        <translation>1 Fehler: </translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="424" />
+        <source>%1 problems: </source>
+        <translation>%1 Fehler: </translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="432" />
+        <source>%1[*] — Camwright</source>
+        <translation>%1[*] — Camwright</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="452" />
+        <source>Insert segment</source>
+        <translation>Segment einfügen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="454" />
+        <source>Split window</source>
+        <translation>Fenster teilen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="484" />
+        <source>Fit Windows</source>
+        <translation>Fenster anpassen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="488" />
+        <source>The windows already fit.</source>
+        <translation>Die Fenster passen bereits.</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="492" />
+        <source>Fit windows</source>
+        <translation>Fenster anpassen</translation>
+    </message>
+</context>
+<context>
+    <name>cam::MotionPanel</name>
+    <message>
+        <location filename="../../src/app/views/motion_panel.cpp" line="24" />
+        <source>Turning speed; a negative speed turns clockwise</source>
+        <translation>Drehzahl; negativ dreht im Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/motion_panel.cpp" line="27" />
+        <source>rad/s</source>
+        <translation>rad/s</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/motion_panel.cpp" line="27" />
+        <source>rpm</source>
+        <translation>U/min</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/motion_panel.cpp" line="27" />
+        <source>period [s]</source>
+        <translation>Periode [s]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/motion_panel.cpp" line="32" />
+        <source>Samples per turn for the plots and exports</source>
+        <translation>Abtastpunkte je Umdrehung für Diagramme und Exporte</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/motion_panel.cpp" line="36" />
+        <source>Speed</source>
+        <translation>Drehzahl</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/motion_panel.cpp" line="37" />
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/motion_panel.cpp" line="38" />
+        <source>Samples / turn</source>
+        <translation>Punkte / Umdrehung</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/motion_panel.cpp" line="83" />
+        <source>ω = %1 rad/s · %2 rpm · T = %3 s</source>
+        <translation>ω = %1 rad/s · %2 U/min · T = %3 s</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/motion_panel.cpp" line="88" />
+        <source>The speed must not be 0 (and a period must be positive).</source>
+        <translation>Die Drehzahl darf nicht 0 sein (und eine Periode muss positiv sein).</translation>
+    </message>
+</context>
+<context>
+    <name>cam::ProjectDocument</name>
+    <message>
+        <location filename="../../src/app/document/project_document.cpp" line="16" />
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+</context>
+<context>
+    <name>cam::StateReadout</name>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="14" />
+        <source>t</source>
+        <translation>t</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="14" />
+        <source>φ</source>
+        <translation>φ</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="14" />
+        <source>segment</source>
+        <translation>Segment</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="14" />
+        <source>r</source>
+        <translation>r</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="14" />
+        <source>v_r</source>
+        <translation>v_r</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="15" />
+        <source>v_φ</source>
+        <translation>v_φ</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="15" />
+        <source>|v|</source>
+        <translation>|v|</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="15" />
+        <source>a_r</source>
+        <translation>a_r</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="15" />
+        <source>a_φ</source>
+        <translation>a_φ</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="15" />
+        <source>|a|</source>
+        <translation>|a|</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="16" />
+        <source>j_r</source>
+        <translation>j_r</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="16" />
+        <source>j_φ</source>
+        <translation>j_φ</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="16" />
+        <source>|j|</source>
+        <translation>|j|</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/state_readout.cpp" line="27" />
+        <source>State of the follower at the cursor: move the mouse over a plot</source>
+        <translation>Zustand des Stößels am Cursor: Maus über ein Diagramm bewegen</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <location filename="../../src/app/main.cpp" line="82" />
+        <source>Design and inspect cam contours.</source>
+        <translation>Kurvenkonturen entwerfen und prüfen.</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/main.cpp" line="86" />
+        <source>A .cam.json project to open.</source>
+        <translation>Ein zu öffnendes .cam.json-Projekt.</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/main.cpp" line="89" />
+        <source>Render the main window into FILE.png and exit.</source>
+        <translation>Das Hauptfenster in DATEI.png zeichnen und beenden.</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/main.cpp" line="92" />
+        <source>Window size for --screenshot.</source>
+        <translation>Fenstergröße für --screenshot.</translation>
+    </message>
+</context>
+</TS>
