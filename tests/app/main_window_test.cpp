@@ -14,7 +14,11 @@
 #include "engine/compute_engine.h"
 #include "mainwindow.h"
 #include "models/arc_table_model.h"
+#include "views/contour_view.h"
 #include "views/state_readout.h"
+
+#include <qcustomplot.h>
+#include <QTest>
 
 namespace cam {
 namespace {
@@ -187,6 +191,44 @@ TEST(Translations, GermanIsEmbeddedAndComplete) {
         std::string(CAMWRIGHT_SOURCE_DIR) + "/resources/translations/camwright_de.ts"));
     EXPECT_FALSE(ts.contains("type=\"unfinished\""));
     EXPECT_GT(ts.count("<message>"), 100);
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(ContourView, DraggingTheCentreHandleIsOneUndoStep) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.resize(1400, 860);
+    window.show();
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    ContourView* view = window.contourView();
+    view->setSelectedSegment(3);  // the lobe at the top, centre (0, 20.9)
+    view->replot(QCustomPlot::rpImmediateRefresh);
+    const SegmentSpec before = window.document()->project().contour[3];
+    auto pixel = [&](double x, double y) {
+        return QPointF(view->xAxis->coordToPixel(x), view->yAxis->coordToPixel(y));
+    };
+    const QPointF start = pixel(before.center.x(), before.center.y());
+    QTest::mousePress(view, Qt::LeftButton, {}, start.toPoint());
+    for (int i = 1; i <= 5; ++i) {
+        const QPointF p = pixel(before.center.x() + 0.2 * i, before.center.y());
+        QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
+                         Qt::NoModifier);
+        QCoreApplication::sendEvent(view, &move);
+    }
+    QTest::mouseRelease(view, Qt::LeftButton, {},
+                        pixel(before.center.x() + 1.0, before.center.y()).toPoint());
+    const SegmentSpec after = window.document()->project().contour[3];
+    EXPECT_NEAR(after.center.x(), before.center.x() + 1.0, 0.1);  // within a pixel or so
+    EXPECT_NEAR(after.center.y(), before.center.y(), 0.1);
+    EXPECT_EQ(after.radius, before.radius);
+    EXPECT_EQ(window.document()->undoStack()->count(), 1);  // five moves, one gesture
+    window.document()->undoStack()->undo();
+    EXPECT_EQ(window.document()->project().contour[3], before);
 }
 
 }  // namespace
