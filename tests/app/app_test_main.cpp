@@ -1,18 +1,26 @@
 // Shared main for the app tests: offscreen platform (also when ctest discovers the tests at
-// build time, without the ENVIRONMENT property), Fusion style, C locale, test-mode settings.
+// build time, without the ENVIRONMENT property), Fusion style, C locale, settings in a fresh
+// temporary folder.
 
 #include <gtest/gtest.h>
 
 #include <QApplication>
 #include <QLocale>
+#include <QSettings>
 #include <QStandardPaths>
 #include <QStyleFactory>
+#include <QTemporaryDir>
 
 int main(int argc, char** argv) {
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QLocale::setDefault(QLocale::c());
     QStandardPaths::setTestModeEnabled(true);
     QApplication app(argc, argv);
+    // Settings (layout, recent files, axis choice) start empty in every run and never touch
+    // the user's own configuration.
+    QTemporaryDir settingsDir;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
     QApplication::setStyle(QStyleFactory::create("Fusion"));
     QApplication::setOrganizationName("CamwrightTests");
     QApplication::setApplicationName("camwright-tests");

@@ -4,6 +4,7 @@
 
 #include <QAction>
 #include <QDir>
+#include <QDockWidget>
 #include <QImage>
 #include <QMenuBar>
 #include <QTemporaryDir>
@@ -229,6 +230,76 @@ TEST(ContourView, DraggingTheCentreHandleIsOneUndoStep) {
     EXPECT_EQ(window.document()->undoStack()->count(), 1);  // five moves, one gesture
     window.document()->undoStack()->undo();
     EXPECT_EQ(window.document()->project().contour[3], before);
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(MainWindow, EditingARadiusRedrawsThePlotsEvenThoughTheJointsOpen) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    const auto before = window.engine()->latestResult();
+    ArcTableModel* model = window.tableModel();
+    ASSERT_TRUE(model->setData(model->index(1, ArcTableModel::Radius), 8.5, Qt::EditRole));
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    const auto after = window.engine()->latestResult();
+    ASSERT_NE(after, before);
+    ASSERT_TRUE(after->ok());
+    EXPECT_DOUBLE_EQ(after->project->contour[1].radius, 8.5);
+    // The lobe grew: its tip at 30° is 29 + 0.397 mm out, in the plotted data too.
+    window.setCursorTime(after->period * 30.0 / 360.0);
+    EXPECT_TRUE(window.readout()->text().contains("r 29.396819"))
+        << window.readout()->text().toStdString();
+    // The document still reports the opened joints, and undo brings back the valid cam.
+    EXPECT_FALSE(window.document()->isValid());
+    window.document()->undoStack()->undo();
+    EXPECT_TRUE(window.document()->isValid());
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(ScreenshotCommand, WorksWithNoDisplayAndNoPlatformSet) {
+    // The pitfall: QApplication aborts without a display unless the app picks offscreen itself.
+    QTemporaryDir dir;
+    const QString png = dir.filePath("window.png");
+    const QByteArray platform = qgetenv("QT_QPA_PLATFORM"), display = qgetenv("DISPLAY");
+    qunsetenv("QT_QPA_PLATFORM");
+    qunsetenv("DISPLAY");
+    qunsetenv("WAYLAND_DISPLAY");
+    const auto run = test::run(CAMWRIGHT_APP, {"--screenshot", png.toStdString(), "--size",
+                                               "900x600", kExample.toStdString()});
+    const auto bad = test::run(CAMWRIGHT_APP, {"--screenshot", png.toStdString(),
+                                               test::dataPath("invalid/window-gap.cam.json")});
+    qputenv("QT_QPA_PLATFORM", platform);
+    if (!display.isEmpty()) qputenv("DISPLAY", display);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const QImage image(png);
+    EXPECT_EQ(image.size(), QSize(900, 600));
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("contour[0]/contour[1]"), std::string::npos) << bad.err;
+}
+
+TEST(MainWindow, RemembersTheDockLayout) {
+    {
+        MainWindow window;
+        window.show();
+        window.findChild<QDockWidget*>("readoutDock")->hide();
+        window.close();
+    }
+    MainWindow again;
+    again.show();
+    EXPECT_FALSE(again.findChild<QDockWidget*>("readoutDock")->isVisible());
+    EXPECT_TRUE(again.findChild<QDockWidget*>("segmentsDock")->isVisible());
+    again.findChild<QDockWidget*>("readoutDock")->show();
+    again.close();
 }
 
 }  // namespace

@@ -57,3 +57,25 @@ TEST(Contour, SingleSegmentCoversTheTurn) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(Contour, AnOpenJointCanBeCompiledOnRequestButIsNeverSilentlyValid) {
+    Project p = test::splitCircle(3.0, 20.0, {0.0, 180.0, 360.0});
+    p.contour[1].radius = 21.0;  // both joints open by about 1 mm
+    const auto strict = Contour::build(p);
+    ASSERT_FALSE(strict.ok());
+    EXPECT_EQ(strict.errors().front().location, "contour[0]/contour[1]");
+    const auto lenient = Contour::build(p, ValidationOptions{.checkJoints = false});
+    ASSERT_TRUE(lenient.ok());
+    const Arc wider{{3.0, 0.0}, 21.0, Branch::Outer};
+    EXPECT_DOUBLE_EQ(lenient.value().evaluate(degToRad(270.0)).r,
+                     wider.evaluate(degToRad(270.0)).r);
+    // Everything else is still checked.
+    p.contour[1].radius = -1.0;
+    EXPECT_FALSE(Contour::build(p, ValidationOptions{.checkJoints = false}).ok());
+}
+
+}  // namespace
+}  // namespace cam

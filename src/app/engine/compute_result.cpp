@@ -91,7 +91,9 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     result->generation = request.generation;
     result->project = request.project;
     result->axis = request.axis;
-    auto contour = Contour::build(*request.project);
+    // Joints that do not meet are drawn (r jumps there) rather than blanking the plots while
+    // the designer edits; the document still reports them and refuses to save.
+    auto contour = Contour::build(*request.project, ValidationOptions{.checkJoints = false});
     if (!contour.ok()) {
         result->errors = contour.errors();
         result->computeMs = static_cast<double>(timer.nsecsElapsed()) / 1e6;

@@ -12,8 +12,8 @@ PolarDerivatives ContourSegment::evaluate(double phi) const {
     return evaluate(std::cos(phi), std::sin(phi));
 }
 
-Result<Contour> Contour::build(const Project& project) {
-    Diagnostics errors = validateProject(project);
+Result<Contour> Contour::build(const Project& project, ValidationOptions options) {
+    Diagnostics errors = validateProject(project, options);
     if (hasErrors(errors)) return errors;
 
     Contour contour;

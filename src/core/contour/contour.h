@@ -10,6 +10,7 @@
 #include "geometry/arc.h"
 #include "geometry/line.h"
 #include "project/project.h"
+#include "project/validate.h"
 
 namespace cam {
 
@@ -34,7 +35,8 @@ struct ContourSegment {
 class Contour {
 public:
     /// @brief Validates the document and compiles it; the errors are located.
-    [[nodiscard]] static Result<Contour> build(const Project& project);
+    [[nodiscard]] static Result<Contour> build(const Project& project,
+                                               ValidationOptions options = {});
 
     [[nodiscard]] std::size_t size() const { return m_segments.size(); }
     [[nodiscard]] const ContourSegment& segment(std::size_t k) const { return m_segments[k]; }

@@ -18,7 +18,8 @@ std::string deg(double value) { return formatNumber(value) + "°"; }
 
 class Validator {
 public:
-    explicit Validator(const Project& project) : m_project(project) {}
+    Validator(const Project& project, ValidationOptions options)
+        : m_project(project), m_options(options) {}
 
     Diagnostics run() {
         checkMotion();
@@ -95,7 +96,7 @@ private:
         }
         if (!windowsValid) return;
         const bool chainValid = checkContiguity();
-        if (allShapesValid && chainValid) checkJoints();
+        if (allShapesValid && chainValid && m_options.checkJoints) checkJoints();
     }
 
     bool checkWindow(std::size_t k) {
@@ -276,6 +277,7 @@ private:
     }
 
     const Project& m_project;
+    ValidationOptions m_options;
     Diagnostics m_out;
 };
 
@@ -292,6 +294,8 @@ std::pair<double, double> lineWindowDeg(const SegmentSpec& line, double nearDeg)
     return {start, start + sweep};
 }
 
-Diagnostics validateProject(const Project& project) { return Validator(project).run(); }
+Diagnostics validateProject(const Project& project, ValidationOptions options) {
+    return Validator(project, options).run();
+}
 
 }  // namespace cam

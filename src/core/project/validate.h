@@ -14,8 +14,14 @@ inline constexpr double kJointToleranceMm = 1e-6;
 /// @brief How far a line's given window may differ from the polar angles of its end points.
 inline constexpr double kLineWindowToleranceDeg = 1e-6;
 
+struct ValidationOptions {
+    /// Check that neighbouring segments meet (C0). The editor's engine turns this off so that a
+    /// contour with an opened joint is still drawn (its r jumps there) while it is being edited.
+    bool checkJoints = true;
+};
+
 /// @brief All problems of the document; empty when it is valid.
-[[nodiscard]] Diagnostics validateProject(const Project& project);
+[[nodiscard]] Diagnostics validateProject(const Project& project, ValidationOptions options = {});
 
 /// @brief Polar window of a line from its end points, in degrees; the start is unwrapped to lie
 /// within 180° of `nearDeg` (the previous segment's end, or 0).
