@@ -367,17 +367,17 @@
         <translation>Übergänge</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="94" />
+        <location filename="../../src/app/views/contour_view.cpp" line="96" />
         <source>segment %1</source>
         <translation>Segment %1</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="228" />
+        <location filename="../../src/app/views/contour_view.cpp" line="232" />
         <source>Move centre of segment %1</source>
         <translation>Mittelpunkt von Segment %1 verschieben</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="232" />
+        <location filename="../../src/app/views/contour_view.cpp" line="236" />
         <source>Change radius of segment %1</source>
         <translation>Radius von Segment %1 ändern</translation>
     </message>
@@ -445,12 +445,12 @@
         <translation>|j|</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="79" />
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="87" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="79" />
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="87" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
@@ -468,148 +468,148 @@
         <translation>… und %1 weitere</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="152" />
+        <location filename="../../src/app/mainwindow.cpp" line="151" />
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="154" />
+        <location filename="../../src/app/mainwindow.cpp" line="153" />
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="182" />
+        <location filename="../../src/app/mainwindow.cpp" line="181" />
         <source>About Camwright</source>
         <translation>Über Camwright</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="183" />
+        <location filename="../../src/app/mainwindow.cpp" line="182" />
         <source>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Design and inspect cam contours: exact polar kinematics of the follower.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</source>
         <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="197" />
+        <location filename="../../src/app/mainwindow.cpp" line="196" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="214" />
+        <location filename="../../src/app/mainwindow.cpp" line="213" />
         <source>%1 cannot be opened:
 %2</source>
         <translation>%1 kann nicht geöffnet werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="219" />
+        <location filename="../../src/app/mainwindow.cpp" line="218" />
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="227" />
-        <location filename="../../src/app/mainwindow.cpp" line="234" />
+        <location filename="../../src/app/mainwindow.cpp" line="226" />
+        <location filename="../../src/app/mainwindow.cpp" line="233" />
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="239" />
+        <location filename="../../src/app/mainwindow.cpp" line="238" />
         <source>The project has problems; fix them before saving (a file with these problems could not be opened again):
 %1</source>
         <translation>Das Projekt hat Fehler; bitte vor dem Speichern beheben (eine Datei mit diesen Fehlern ließe sich nicht wieder öffnen):
 %1</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="249" />
+        <location filename="../../src/app/mainwindow.cpp" line="248" />
         <source>%1 could not be written: %2</source>
         <translation>%1 konnte nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="254" />
+        <location filename="../../src/app/mainwindow.cpp" line="253" />
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="261" />
-        <location filename="../../src/app/mainwindow.cpp" line="275" />
+        <location filename="../../src/app/mainwindow.cpp" line="260" />
+        <location filename="../../src/app/mainwindow.cpp" line="274" />
         <source>Save Project</source>
         <translation>Projekt speichern</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="266" />
+        <location filename="../../src/app/mainwindow.cpp" line="265" />
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="282" />
+        <location filename="../../src/app/mainwindow.cpp" line="281" />
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="283" />
+        <location filename="../../src/app/mainwindow.cpp" line="282" />
         <source>%1 has unsaved changes. Save them?</source>
         <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="342" />
+        <location filename="../../src/app/mainwindow.cpp" line="341" />
         <source>Open Example</source>
         <translation>Beispiel öffnen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="362" />
+        <location filename="../../src/app/mainwindow.cpp" line="361" />
         <source>not computed: the project has problems</source>
         <translation>nicht berechnet: das Projekt hat Fehler</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="370" />
+        <location filename="../../src/app/mainwindow.cpp" line="369" />
         <source>%1 samples computed in %2 ms</source>
         <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="418" />
+        <location filename="../../src/app/mainwindow.cpp" line="417" />
         <source>Valid · 1 segment</source>
         <translation>Gültig · 1 Segment</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="419" />
+        <location filename="../../src/app/mainwindow.cpp" line="418" />
         <source>Valid · %1 segments</source>
         <translation>Gültig · %1 Segmente</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="424" />
+        <location filename="../../src/app/mainwindow.cpp" line="423" />
         <source>1 problem: </source>
         <translation>1 Fehler: </translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="424" />
+        <location filename="../../src/app/mainwindow.cpp" line="423" />
         <source>%1 problems: </source>
         <translation>%1 Fehler: </translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="432" />
+        <location filename="../../src/app/mainwindow.cpp" line="431" />
         <source>%1[*] — Camwright</source>
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="452" />
+        <location filename="../../src/app/mainwindow.cpp" line="451" />
         <source>Insert segment</source>
         <translation>Segment einfügen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="454" />
+        <location filename="../../src/app/mainwindow.cpp" line="453" />
         <source>Split window</source>
         <translation>Fenster teilen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="484" />
+        <location filename="../../src/app/mainwindow.cpp" line="483" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="488" />
+        <location filename="../../src/app/mainwindow.cpp" line="487" />
         <source>The windows already fit.</source>
         <translation>Die Fenster passen bereits.</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="492" />
+        <location filename="../../src/app/mainwindow.cpp" line="491" />
         <source>Fit windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -658,8 +658,10 @@
     </message>
     <message>
         <location filename="../../src/app/views/motion_panel.cpp" line="83" />
-        <source>ω = %1 rad/s · %2 rpm · T = %3 s</source>
-        <translation>ω = %1 rad/s · %2 U/min · T = %3 s</translation>
+        <source>ω = %1 rad/s · %2 rpm
+T = %3 s</source>
+        <translation>ω = %1 rad/s · %2 U/min
+T = %3 s</translation>
     </message>
     <message>
         <location filename="../../src/app/views/motion_panel.cpp" line="88" />

@@ -73,6 +73,7 @@ MainWindow::MainWindow(QWidget* parent)
     splitter->addWidget(m_plots);
     splitter->setStretchFactor(0, 2);
     splitter->setStretchFactor(1, 3);
+    splitter->setSizes({400, 600});  // 2 : 3 from the start, not from the size hints
     setCentralWidget(splitter);
 
     setUpDocks();
@@ -140,7 +141,6 @@ void MainWindow::setUpDocks() {
     m_readout = new StateReadout(m_ui->readoutDock);
     m_ui->readoutDock->setWidget(m_readout);
     splitDockWidget(m_ui->motionDock, m_ui->readoutDock, Qt::Vertical);
-    m_motion->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
     resizeDocks({m_ui->motionDock, m_ui->readoutDock}, {140, 400}, Qt::Vertical);
     for (QDockWidget* dock : {m_ui->segmentsDock, m_ui->motionDock, m_ui->readoutDock}) {
         m_ui->menuView->addAction(dock->toggleViewAction());

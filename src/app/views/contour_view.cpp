@@ -48,11 +48,13 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     m_joints->setLineStyle(QCPGraph::lsNone);
     m_joints->setScatterStyle(
         QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black), QBrush(Qt::white), 5));
-    m_handles = addGraph();
-    m_handles->setLineStyle(QCPGraph::lsNone);
-    m_handles->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare,
-                                               QPen(QColor(0, 90, 200), 1.5),
-                                               QBrush(QColor(120, 180, 255)), 9));
+    for (auto [graph, shape] : {std::pair{&m_centerHandle, QCPScatterStyle::ssSquare},
+                                std::pair{&m_radiusHandle, QCPScatterStyle::ssDiamond}}) {
+        *graph = addGraph();
+        (*graph)->setLineStyle(QCPGraph::lsNone);
+        (*graph)->setScatterStyle(QCPScatterStyle(shape, QPen(QColor(0, 90, 200), 1.5),
+                                                  QBrush(QColor(120, 180, 255)), 10));
+    }
     // Origin: the rotation centre.
     auto* origin = new QCPItemTracer(this);
     origin->position->setCoords(0, 0);
@@ -184,23 +186,25 @@ void ContourView::updateHandles() {
     const auto& c = m_document->project().contour;
     if (m_selected < 0 || m_selected >= static_cast<int>(c.size()) ||
         c[static_cast<std::size_t>(m_selected)].type != SegmentType::Arc) {
-        m_handles->data()->clear();
+        m_centerHandle->data()->clear();
+        m_radiusHandle->data()->clear();
         return;
     }
     const SegmentSpec& s = c[static_cast<std::size_t>(m_selected)];
     const QPointF rh = radiusHandlePosition(m_selected);
-    m_handles->setData({s.center.x(), rh.x()}, {s.center.y(), rh.y()}, false);
+    m_centerHandle->setData({s.center.x()}, {s.center.y()}, true);
+    m_radiusHandle->setData({rh.x()}, {rh.y()}, true);
 }
 
 ContourView::Handle ContourView::handleAt(const QPointF& pixel) const {
-    if (m_handles->data()->size() != 2) return Handle::None;
-    auto distance = [&](int i) {
-        const auto it = m_handles->data()->at(i);
+    auto distance = [&](const QCPGraph* g) {
+        if (g->data()->isEmpty()) return kHandlePickPixels + 1.0;
+        const auto it = g->data()->constBegin();
         return QLineF(pixel, QPointF(xAxis->coordToPixel(it->key), yAxis->coordToPixel(it->value)))
             .length();
     };
-    if (distance(0) <= kHandlePickPixels) return Handle::Center;
-    if (distance(1) <= kHandlePickPixels) return Handle::Radius;
+    if (distance(m_centerHandle) <= kHandlePickPixels) return Handle::Center;
+    if (distance(m_radiusHandle) <= kHandlePickPixels) return Handle::Radius;
     return Handle::None;
 }
 

@@ -47,7 +47,8 @@ private:
     std::vector<QCPCurve*> m_segmentCurves;
     QCPGraph* m_centers = nullptr;
     QCPGraph* m_joints = nullptr;
-    QCPGraph* m_handles = nullptr;
+    QCPGraph* m_centerHandle = nullptr;  ///< square: drag to move the arc's centre
+    QCPGraph* m_radiusHandle = nullptr;  ///< diamond: drag to change the radius
     QCPItemLine* m_ray = nullptr;
     QCPItemTracer* m_rayPoint = nullptr;
     int m_selected = -1;

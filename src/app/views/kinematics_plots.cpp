@@ -31,11 +31,19 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
             g->setName(names[p][c]);
             g->setPen(QPen(componentColor(c), c == 2 ? 1.5 : 1.0));
         }
+        // The legend gets a narrow column of its own beside the plot: it never hides a curve.
         plot->legend->setVisible(true);
         plot->legend->setFont(QFont(font().family(), 8));
         plot->legend->setRowSpacing(-3);
-        plot->legend->setBrush(QColor(255, 255, 255, 220));
-        plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+        plot->legend->setBorderPen(Qt::NoPen);
+        plot->legend->setBrush(Qt::NoBrush);
+        auto* side = new QCPLayoutGrid;
+        plot->plotLayout()->addElement(0, 1, side);
+        plot->plotLayout()->setColumnStretchFactor(1, 0.001);
+        side->addElement(0, 0, plot->legend);
+        side->addElement(1, 0, new QCPLayoutElement(plot));  // spacer: legend stays at the top
+        side->setRowStretchFactor(0, 0.001);
+        side->setMargins(QMargins(0, 8, 4, 0));
         auto* cursor = new QCPItemStraightLine(plot);
         cursor->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
         cursor->point1->setCoords(0, 0);
@@ -67,6 +75,15 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
     // The left axes line up however wide their tick labels are.
     auto* group = new QCPMarginGroup(m_plots[0]);
     for (QCustomPlot* p : m_plots) p->axisRect()->setMarginGroup(QCP::msLeft | QCP::msRight, group);
+    // Legend columns of equal width keep the three x axes exactly above each other.
+    int legendWidth = 0;
+    for (QCustomPlot* p : m_plots) {
+        legendWidth = std::max(legendWidth, p->legend->minimumOuterSizeHint().width());
+    }
+    for (QCustomPlot* p : m_plots) {
+        p->legend->setMinimumSize(legendWidth, 0);
+        p->legend->setMaximumSize(legendWidth, QWIDGETSIZE_MAX);
+    }
 }
 
 void KinematicsPlots::setResult(const ComputeResultPtr& result) {

@@ -32,7 +32,7 @@ MotionPanel::MotionPanel(ProjectDocument* document, QWidget* parent)
     m_samples->setToolTip(tr("Samples per turn for the plots and exports"));
     m_summary = new QLabel(this);
     m_summary->setObjectName("motionSummary");
-    m_summary->setWordWrap(true);
+    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);  // never squeezed by its dock
     form->addRow(tr("Speed"), m_speed);
     form->addRow(tr("Unit"), m_unit);
     form->addRow(tr("Samples / turn"), m_samples);
@@ -80,7 +80,7 @@ void MotionPanel::refresh() {
                        !(m.unit == SpeedUnit::PeriodS && m.value < 0.0);
     if (valid) {
         const double omega = m.omegaRadS();
-        m_summary->setText(tr("ω = %1 rad/s · %2 rpm · T = %3 s")
+        m_summary->setText(tr("ω = %1 rad/s · %2 rpm\nT = %3 s")
                                .arg(QLocale().toString(omega, 'g', 6),
                                     QLocale().toString(omega * 60.0 / kTwoPi, 'g', 6),
                                     QLocale().toString(kTwoPi / std::abs(omega), 'g', 6)));
