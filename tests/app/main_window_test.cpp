@@ -6,9 +6,15 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QImage>
+#include <QMenu>
 #include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QPushButton>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QTranslator>
+#include <QUrl>
 
 #include "app_test_support.h"
 #include "document/commands.h"
@@ -300,6 +306,73 @@ TEST(MainWindow, RemembersTheDockLayout) {
     EXPECT_TRUE(again.findChild<QDockWidget*>("segmentsDock")->isVisible());
     again.findChild<QDockWidget*>("readoutDock")->show();
     again.close();
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+/// Answers the next modal message box with `button` as soon as it appears.
+void answerNextMessageBox(QMessageBox::StandardButton button, QString* text = nullptr) {
+    QTimer::singleShot(0, [=] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box) {
+            answerNextMessageBox(button, text);  // not open yet: try again on the next turn
+            return;
+        }
+        if (text) *text = box->text();
+        box->button(button)->click();
+    });
+}
+
+TEST(MainWindow, UnsavedChangesPromptCancelKeepsAndDiscardDrops) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.document()->undoStack()->push(new SetMotion(window.document(), {SpeedUnit::Rpm, 100.0}));
+    auto* newAction = window.findChild<QAction*>("actionNew");
+    QString asked;
+    answerNextMessageBox(QMessageBox::Cancel, &asked);
+    newAction->trigger();
+    EXPECT_TRUE(asked.contains("unsaved changes")) << asked.toStdString();
+    EXPECT_EQ(window.document()->project().motion.unit, SpeedUnit::Rpm);  // nothing lost
+    EXPECT_TRUE(window.document()->isModified());
+    answerNextMessageBox(QMessageBox::Discard);
+    newAction->trigger();
+    EXPECT_FALSE(window.document()->isModified());
+    EXPECT_EQ(window.document()->project().contour.size(), 2u);  // the new-project circle
+    EXPECT_TRUE(window.document()->filePath().isEmpty());
+}
+
+TEST(MainWindow, DroppingAProjectOpensItAndRecentFilesRememberIt) {
+    MainWindow window;
+    auto* mime = new QMimeData;
+    mime->setUrls({QUrl::fromLocalFile(kExample)});
+    QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(&window, &enter);
+    EXPECT_TRUE(enter.isAccepted());
+    QDropEvent drop(QPointF(10, 10), Qt::CopyAction, mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(&window, &drop);
+    EXPECT_EQ(window.document()->project().contour.size(), 13u);
+    EXPECT_EQ(window.document()->filePath(), QFileInfo(kExample).absoluteFilePath());
+    auto* recent = window.findChild<QMenu*>("menuRecent");
+    ASSERT_NE(recent, nullptr);
+    ASSERT_FALSE(recent->actions().isEmpty());
+    EXPECT_EQ(recent->actions().front()->text(),
+              QDir::toNativeSeparators(QFileInfo(kExample).absoluteFilePath()));
+    delete mime;
+}
+
+TEST(MainWindow, ExamplesOpenAsUntitledCopies) {
+    MainWindow window;
+    auto* examples = window.findChild<QMenu*>("menuExamples");
+    ASSERT_NE(examples, nullptr);
+    ASSERT_FALSE(examples->actions().isEmpty());
+    EXPECT_EQ(examples->actions().front()->text(), "six-lobe-arc-cam");
+    examples->actions().front()->trigger();
+    EXPECT_EQ(window.document()->project().contour.size(), 13u);
+    EXPECT_TRUE(window.document()->filePath().isEmpty());  // Save asks where: never over it
 }
 
 }  // namespace
