@@ -17,6 +17,7 @@ enum class MergeId : int {
 };
 
 /// @brief Which part of a segment an edit touched; edits of the same part of the same row merge.
+/// The first eleven are in the order of ArcTableModel's columns.
 enum class SegmentField {
     Type,
     CenterX,

@@ -206,13 +206,13 @@ Qt::ItemFlags ArcTableModel::flags(const QModelIndex& index) const {
     return f;
 }
 
-SegmentField ArcTableModel::fieldOf(int column) {
-    static constexpr SegmentField fields[] = {
-        SegmentField::Type,   SegmentField::CenterX,  SegmentField::CenterY, SegmentField::Radius,
-        SegmentField::Branch, SegmentField::FromX,    SegmentField::FromY,   SegmentField::ToX,
-        SegmentField::ToY,    SegmentField::PhiStart, SegmentField::PhiEnd};
-    return fields[column];
-}
+// Columns are listed in the order of the fields they edit, so a column is its field.
+static_assert(static_cast<int>(SegmentField::Type) == ArcTableModel::Type &&
+              static_cast<int>(SegmentField::Radius) == ArcTableModel::Radius &&
+              static_cast<int>(SegmentField::ToY) == ArcTableModel::ToY &&
+              static_cast<int>(SegmentField::PhiEnd) == ArcTableModel::PhiEnd);
+
+SegmentField ArcTableModel::fieldOf(int column) { return static_cast<SegmentField>(column); }
 
 bool ArcTableModel::applyValue(SegmentSpec& s, int column, const QVariant& value) {
     bool ok = false;
