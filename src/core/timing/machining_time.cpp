@@ -1,0 +1,367 @@
+#include "timing/machining_time.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace cam {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+/// A joint is a corner (the tool must stop there) when the tangent turns by more than this.
+constexpr double kCornerAngle = 1e-6;
+/// Below this a tangent component counts as zero: the axis then bounds speed by curvature only.
+constexpr double kTiny = 1e-12;
+
+bool isCorner(const PathSegment& a, const PathSegment& b) {
+    const Vec3 ta = a.tangent(a.length()), tb = b.tangent(0.0);
+    return std::acos(std::clamp(ta.dot(tb), -1.0, 1.0)) > kCornerAngle;
+}
+
+/// The acceleration limits at one point of the path as bounds on u = s-ddot that are linear in
+/// x = s-dot²: lower_i(x) = c_i + d_i·x <= u <= e_i + d_i·x, plus a cap on x (velocity limits
+/// and axes that only feel the curvature).
+struct PointConstraints {
+    std::array<double, 6> c{}, d{}, e{};
+    int count = 0;
+    double xCap = kUnlimited;
+
+    void add(const Vec3& tangent, const Vec3& curvature, const MachineLimits& lim) {
+        for (int i = 0; i < 3; ++i) {
+            const double a = lim.accel[i];
+            const double A = tangent[i], B = curvature[i];
+            if (std::abs(A) > kTiny) {
+                const double v = lim.vmax[i] / std::abs(A);
+                xCap = std::min(xCap, v * v);
+                if (std::isinf(a)) continue;
+                c[count] = -a / std::abs(A);
+                e[count] = a / std::abs(A);
+                d[count] = -B / A;
+                ++count;
+            } else if (std::abs(B) > kTiny && std::isfinite(a)) {
+                xCap = std::min(xCap, a / std::abs(B));
+            }
+        }
+    }
+
+    /// Largest x for which some u satisfies every bound (the maximum-velocity curve).
+    [[nodiscard]] double maxX() const {
+        double x = xCap;
+        for (int i = 0; i < count; ++i) {
+            for (int j = 0; j < count; ++j) {
+                if (d[i] > d[j]) x = std::min(x, (e[j] - c[i]) / (d[i] - d[j]));
+            }
+        }
+        return x;
+    }
+    [[nodiscard]] double uMax(double x) const {
+        double u = kUnlimited;
+        for (int i = 0; i < count; ++i) u = std::min(u, e[i] + d[i] * x);
+        return u;
+    }
+    /// Largest x from which the hardest braking allowed here keeps x + 2Δu <= next.
+    [[nodiscard]] double brakeTo(double next, double delta) const {
+        double x = kUnlimited;
+        for (int i = 0; i < count; ++i) {
+            const double k = 1.0 + 2.0 * delta * d[i];
+            if (k > 0) x = std::min(x, (next - 2.0 * delta * c[i]) / k);
+        }
+        return x;
+    }
+};
+
+/// The grid, kept implicit: each segment is cut into equal intervals and its first point is the
+/// boundary with the previous segment (where both segments' constraints apply).
+struct SegmentGrid {
+    std::size_t first = 0;      ///< index of the segment's first grid point
+    std::size_t intervals = 0;  ///< equal intervals on this segment
+    double delta = 0.0;         ///< their length, mm
+    bool stopAtStart = false;   ///< the path starts here, or the tangent breaks (a corner)
+    bool isArc = false;
+    PointConstraints inner;     ///< lines: the same at every inner point
+    PointConstraints boundary;  ///< at the first point: this segment's and the previous one's
+    // Arcs: angle of the first point and its step, about the centre.
+    double theta0 = 0.0, dtheta = 0.0, sign = 1.0, radius = 1.0;
+};
+
+PointConstraints constraintsOf(const Vec3& tangent, const Vec3& curvature,
+                               const MachineLimits& lim) {
+    PointConstraints pc;
+    pc.add(tangent, curvature, lim);
+    if (std::isfinite(lim.feedMax)) pc.xCap = std::min(pc.xCap, lim.feedMax * lim.feedMax);
+    return pc;
+}
+
+std::vector<SegmentGrid> makeGrid(const ToolPath& path, const MachineLimits& lim,
+                                 std::size_t points, std::size_t* total) {
+    const double spacing =
+        path.length() / static_cast<double>(std::max<std::size_t>(points, 2) - 1);
+    std::vector<SegmentGrid> grid(path.segments.size());
+    std::size_t index = 0;
+    for (std::size_t k = 0; k < path.segments.size(); ++k) {
+        const PathSegment& seg = path.segments[k];
+        SegmentGrid& g = grid[k];
+        const double len = seg.length();
+        g.first = index;
+        g.intervals = static_cast<std::size_t>(std::max(2.0, std::ceil(len / spacing - 1e-9)));
+        g.delta = len / static_cast<double>(g.intervals);
+        g.stopAtStart = k == 0 || isCorner(path.segments[k - 1], seg);
+        g.isArc = seg.kind == PathSegment::Kind::Arc;
+        g.inner = constraintsOf(seg.tangent(0.0), seg.curvature(0.0), lim);
+        g.boundary = g.inner;
+        if (k > 0) {
+            const PathSegment& prev = path.segments[k - 1];
+            g.boundary.add(prev.tangent(prev.length()), prev.curvature(prev.length()), lim);
+        }
+        if (g.isArc) {
+            g.sign = seg.sweep >= 0 ? 1.0 : -1.0;
+            g.radius = seg.radius;
+            g.theta0 = seg.startAngle;
+            g.dtheta = g.sign * g.delta / seg.radius;
+        }
+        index += g.intervals;
+    }
+    *total = index + 1;  // and the end point
+    return grid;
+}
+
+/// Walks the points of one arc segment with a rotation recurrence (cos/sin of θ0 + j·δθ),
+/// recomputed exactly every 256 steps so rounding never accumulates.
+class ArcWalker {
+public:
+    ArcWalker(const SegmentGrid& g, std::size_t j, int direction)
+        : m_g(g), m_j(j), m_direction(direction) {
+        m_cd = std::cos(g.dtheta);
+        m_sd = direction * std::sin(g.dtheta);
+        sync();
+    }
+    /// Constraints at the current point, then moves one point in the walking direction.
+    PointConstraints next(const MachineLimits& lim) {
+        const Vec3 t(-m_g.sign * m_s, m_g.sign * m_c, 0.0);
+        const Vec3 k(-m_c / m_g.radius, -m_s / m_g.radius, 0.0);
+        PointConstraints pc = constraintsOf(t, k, lim);
+        m_j += static_cast<std::size_t>(m_direction);
+        if (++m_steps % 256 == 0) {
+            sync();
+        } else {
+            const double c = m_c * m_cd - m_s * m_sd;
+            m_s = m_s * m_cd + m_c * m_sd;
+            m_c = c;
+        }
+        return pc;
+    }
+
+private:
+    void sync() {
+        const double theta = m_g.theta0 + static_cast<double>(m_j) * m_g.dtheta;
+        m_c = std::cos(theta);
+        m_s = std::sin(theta);
+    }
+    const SegmentGrid& m_g;
+    std::size_t m_j;
+    int m_direction;
+    double m_c = 1.0, m_s = 0.0, m_cd = 1.0, m_sd = 0.0;
+    std::size_t m_steps = 0;
+};
+
+double intervalTime(double delta, double x0, double x1) {
+    const double den = std::sqrt(std::max(x0, 0.0)) + std::sqrt(std::max(x1, 0.0));
+    return den > 0 ? 2.0 * delta / den : kUnlimited;
+}
+
+struct OptimalRun {
+    OptimalProfile profile;
+    std::vector<SegmentTiming> segments;
+    std::size_t points = 0;
+};
+
+OptimalRun runOptimal(const ToolPath& path, const MachineLimits& lim, std::size_t points,
+                      bool keepProfile) {
+    std::size_t n = 0;
+    const std::vector<SegmentGrid> grid = makeGrid(path, lim, points, &n);
+    std::vector<double> hi(n), x(n);
+    // Backward pass: the largest squared speed at each point from which the end (and every
+    // corner) can still be reached at rest (the controllable sets of TOPP-RA).
+    hi[n - 1] = 0.0;
+    for (std::size_t k = grid.size(); k-- > 0;) {
+        const SegmentGrid& g = grid[k];
+        auto step = [&](std::size_t j, const PointConstraints& pc) {
+            const std::size_t i = g.first + j;
+            hi[i] = std::max(0.0, std::min(pc.maxX(), pc.brakeTo(hi[i + 1], g.delta)));
+        };
+        if (g.isArc) {
+            ArcWalker walk(g, g.intervals - 1, -1);
+            for (std::size_t j = g.intervals - 1; j >= 1; --j) step(j, walk.next(lim));
+        } else {
+            const double mvc = g.inner.maxX();
+            for (std::size_t j = g.intervals - 1; j >= 1; --j) {
+                const std::size_t i = g.first + j;
+                hi[i] = std::max(0.0, std::min(mvc, g.inner.brakeTo(hi[i + 1], g.delta)));
+            }
+        }
+        if (g.stopAtStart) {
+            hi[g.first] = 0.0;
+        } else {
+            step(0, g.boundary);
+        }
+    }
+    // Forward pass: accelerate as hard as allowed while staying controllable.
+    OptimalRun run;
+    run.segments.resize(path.segments.size());
+    x[0] = 0.0;
+    double time = 0.0;
+    for (std::size_t k = 0; k < grid.size(); ++k) {
+        const SegmentGrid& g = grid[k];
+        SegmentTiming& st = run.segments[k];
+        st.lengthMm = path.segments[k].length();
+        st.entrySpeed = std::sqrt(x[g.first]);
+        double segmentTime = 0.0;
+        auto step = [&](std::size_t j, const PointConstraints& pc) {
+            const std::size_t i = g.first + j;
+            const double u = std::min(pc.uMax(x[i]), (hi[i + 1] - x[i]) / (2.0 * g.delta));
+            x[i + 1] = std::clamp(x[i] + 2.0 * g.delta * u, 0.0, hi[i + 1]);
+            segmentTime += intervalTime(g.delta, x[i], x[i + 1]);
+        };
+        step(0, g.boundary);
+        if (g.isArc) {
+            ArcWalker walk(g, 1, +1);
+            for (std::size_t j = 1; j < g.intervals; ++j) step(j, walk.next(lim));
+        } else {
+            for (std::size_t j = 1; j < g.intervals; ++j) step(j, g.inner);
+        }
+        st.timeS = segmentTime;
+        st.exitSpeed = std::sqrt(x[g.first + g.intervals]);
+        time += segmentTime;
+    }
+    run.profile.timeS = time;
+    run.points = n;
+    if (keepProfile) {
+        run.profile.s.resize(n);
+        for (const SegmentGrid& g : grid) {
+            const double base = g.first == 0 ? 0.0 : run.profile.s[g.first - 1] + g.delta;
+            for (std::size_t j = 0; j < g.intervals; ++j) {
+                run.profile.s[g.first + j] = base + g.delta * static_cast<double>(j);
+            }
+        }
+        run.profile.s[n - 1] = path.length();
+        run.profile.x = std::move(x);
+    }
+    return run;
+}
+
+/// Doubles the grid until two resolutions agree to 1e-6 relative.
+OptimalRun refinedOptimal(const ToolPath& path, const MachineLimits& lim, std::size_t* points,
+                          double* convergence) {
+    std::size_t n = 4096;
+    OptimalRun previous = runOptimal(path, lim, n, false);
+    constexpr std::size_t kMaxPoints = std::size_t{1} << 24;
+    for (;;) {
+        n *= 2;
+        OptimalRun current = runOptimal(path, lim, n, false);
+        const double change = std::abs(current.profile.timeS - previous.profile.timeS) /
+                              current.profile.timeS;
+        if (change <= 1e-6 || n >= kMaxPoints) {
+            *points = current.points;
+            *convergence = change;
+            return current;
+        }
+        previous = std::move(current);
+    }
+}
+
+}  // namespace
+
+double seedSegmentTime(const PathSegment& segment, const MachineLimits& lim) {
+    const double half = segment.length() / 2.0;
+    Vec3 vPrev = Vec3::Zero();
+    double time = 0.0;
+    for (double s = 0.0; s < half - 1e-12;) {
+        const double step = std::min(lim.seedStep, half - s);
+        const Vec3 n = (segment.point(s + step) - segment.point(s)).normalized();
+        double x = lim.feedMax;
+        for (int i = 0; i < 3; ++i) {
+            const double a = lim.accel[i];
+            if (std::isinf(a)) continue;
+            if (std::abs(n[i]) < kTiny) {
+                // No motion of this axis in this step: only stopping its previous speed counts.
+                if (std::abs(vPrev[i]) > 0) x = std::min(x, a * step / std::abs(vPrev[i]));
+                continue;
+            }
+            // Largest x with |n_i·x − v_i|·x/step <= a_i: the rising root of
+            // |n_i|·x² − sgn(n_i)·v_i·x − a_i·step = 0.
+            const double an = std::abs(n[i]);
+            const double v = std::copysign(1.0, n[i]) * vPrev[i];
+            x = std::min(x, (v + std::sqrt(v * v + 4.0 * an * a * step)) / (2.0 * an));
+        }
+        time += step / x;
+        vPrev = n * x;
+        s += step;
+    }
+    return 2.0 * time;
+}
+
+double exactStopLineTime(const PathSegment& line, const MachineLimits& lim) {
+    const Vec3 n = (line.end - line.start).normalized();
+    double aEff = kUnlimited, vEff = lim.feedMax;
+    for (int i = 0; i < 3; ++i) {
+        if (std::abs(n[i]) < kTiny) continue;
+        aEff = std::min(aEff, lim.accel[i] / std::abs(n[i]));
+        vEff = std::min(vEff, lim.vmax[i] / std::abs(n[i]));
+    }
+    const double len = line.length();
+    if (std::isinf(vEff) || len < vEff * vEff / aEff) return 2.0 * std::sqrt(len / aEff);
+    return len / vEff + vEff / aEff;
+}
+
+OptimalProfile optimalProfile(const ToolPath& path, const MachineLimits& limits,
+                              std::size_t gridPoints) {
+    return runOptimal(path, limits, gridPoints, true).profile;
+}
+
+Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& lim,
+                                   TimingMethod method) {
+    Diagnostics errors;
+    if (path.segments.empty()) errors.push_back({"path", "is empty"});
+    for (int i = 0; i < 3; ++i) {
+        if (!(lim.accel[i] > 0)) {
+            errors.push_back({"accel[" + std::to_string(i) + "]", "must be > 0"});
+        }
+        if (!(lim.vmax[i] > 0)) errors.push_back({"vmax[" + std::to_string(i) + "]", "must be > 0"});
+    }
+    if (!(lim.feedMax > 0)) errors.push_back({"feed", "must be > 0"});
+    if (method == TimingMethod::Seed && !(lim.seedStep > 0 && std::isfinite(lim.seedStep))) {
+        errors.push_back({"step", "must be a finite length > 0"});
+    }
+    if (!errors.empty()) return errors;
+
+    TimingResult r;
+    r.method = method;
+    r.lengthMm = path.length();
+    if (method == TimingMethod::Optimal) {
+        OptimalRun run = refinedOptimal(path, lim, &r.gridPoints, &r.convergence);
+        r.timeS = run.profile.timeS;
+        r.segments = std::move(run.segments);
+        return r;
+    }
+    for (const PathSegment& seg : path.segments) {
+        SegmentTiming t;
+        t.lengthMm = seg.length();
+        if (method == TimingMethod::Seed) {
+            t.timeS = seedSegmentTime(seg, lim);
+        } else if (seg.kind == PathSegment::Kind::Line) {
+            t.timeS = exactStopLineTime(seg, lim);
+        } else {
+            std::size_t points = 0;
+            double change = 0.0;
+            t.timeS = refinedOptimal(ToolPath{{seg}}, lim, &points, &change).profile.timeS;
+            r.gridPoints = std::max(r.gridPoints, points);
+            r.convergence = std::max(r.convergence, change);
+        }
+        r.timeS += t.timeS;
+        r.segments.push_back(t);
+    }
+    return r;
+}
+
+}  // namespace cam

@@ -1,0 +1,66 @@
+#pragma once
+/// @file
+/// @brief How long a tool path takes on a machine whose axes have their own limits (math.md §6).
+
+#include <Eigen/Core>
+#include <limits>
+#include <vector>
+
+#include "common/diagnostic.h"
+#include "timing/tool_path.h"
+
+namespace cam {
+
+inline constexpr double kUnlimited = std::numeric_limits<double>::infinity();
+
+/// @brief Machine limits. Axes without a limit are +infinity.
+struct MachineLimits {
+    Eigen::Vector3d accel{500, 500, 200};                       ///< per axis, mm/s², > 0
+    Eigen::Vector3d vmax{kUnlimited, kUnlimited, kUnlimited};  ///< per axis, mm/s, > 0
+    double feedMax = kUnlimited;                                ///< along the path, mm/s
+    double seedStep = 1.0;                                      ///< step of the seed method, mm
+};
+
+enum class TimingMethod { Seed, ExactStop, Optimal };
+
+struct SegmentTiming {
+    double timeS = 0.0;
+    double lengthMm = 0.0;
+    double entrySpeed = 0.0;  ///< mm/s
+    double exitSpeed = 0.0;   ///< mm/s
+};
+
+struct TimingResult {
+    TimingMethod method = TimingMethod::Optimal;
+    double timeS = 0.0;
+    double lengthMm = 0.0;
+    std::vector<SegmentTiming> segments;
+    /// Optimal (and exact stop on arcs): grid points of the finest resolution used, and the
+    /// relative change from the previous resolution.
+    std::size_t gridPoints = 0;
+    double convergence = 0.0;
+};
+
+/// @brief Total time by the chosen method; every segment starts and ends at rest for seed and
+/// exact stop; optimal stops only at corners (tangent breaks) and at both ends of the path.
+[[nodiscard]] Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& limits,
+                                                 TimingMethod method);
+
+/// @brief The seed method on one segment (math.md §6): steps of `seedStep` from rest up to the
+/// midpoint, each at the largest speed that keeps every axis within its limit, doubled.
+[[nodiscard]] double seedSegmentTime(const PathSegment& segment, const MachineLimits& limits);
+
+/// @brief Exact rest-to-rest time of a straight segment: the trapezoid (or triangle).
+[[nodiscard]] double exactStopLineTime(const PathSegment& line, const MachineLimits& limits);
+
+/// @brief The time-optimal profile on a fixed grid of about `gridPoints` points (TOPP-RA's
+/// backward/forward passes), stopping at corners. Exposed for the benchmark and the refinement.
+struct OptimalProfile {
+    std::vector<double> s;  ///< path parameter of each grid point, mm
+    std::vector<double> x;  ///< squared speed at each grid point, (mm/s)²
+    double timeS = 0.0;
+};
+[[nodiscard]] OptimalProfile optimalProfile(const ToolPath& path, const MachineLimits& limits,
+                                            std::size_t gridPoints);
+
+}  // namespace cam

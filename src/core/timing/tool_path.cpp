@@ -1,0 +1,292 @@
+#include "timing/tool_path.h"
+
+#include <cmath>
+#include <optional>
+
+#include "common/angles.h"
+
+namespace cam {
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+
+Vec2 xy(const Vec3& v) { return v.head<2>(); }
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+}  // namespace
+
+PathSegment PathSegment::line(const Vec3& a, const Vec3& b) {
+    PathSegment s;
+    s.kind = Kind::Line;
+    s.start = a;
+    s.end = b;
+    return s;
+}
+
+PathSegment PathSegment::arc(const Vec2& center, double radius, double startAngle, double sweep,
+                             double z) {
+    PathSegment s;
+    s.kind = Kind::Arc;
+    s.center = center;
+    s.radius = radius;
+    s.startAngle = startAngle;
+    s.sweep = sweep;
+    s.start = Vec3(center.x() + radius * std::cos(startAngle),
+                   center.y() + radius * std::sin(startAngle), z);
+    const double endAngle = startAngle + sweep;
+    s.end = Vec3(center.x() + radius * std::cos(endAngle), center.y() + radius * std::sin(endAngle),
+                 z);
+    return s;
+}
+
+double PathSegment::length() const {
+    return kind == Kind::Line ? (end - start).norm() : std::abs(sweep) * radius;
+}
+
+Vec3 PathSegment::point(double s) const {
+    if (kind == Kind::Line) return start + (end - start).normalized() * s;
+    const double theta = startAngle + std::copysign(s / radius, sweep);
+    return {center.x() + radius * std::cos(theta), center.y() + radius * std::sin(theta),
+            start.z()};
+}
+
+Vec3 PathSegment::tangent(double s) const {
+    if (kind == Kind::Line) return (end - start).normalized();
+    const double sign = sweep >= 0 ? 1.0 : -1.0;
+    const double theta = startAngle + sign * s / radius;
+    return {-sign * std::sin(theta), sign * std::cos(theta), 0.0};
+}
+
+Vec3 PathSegment::curvature(double s) const {
+    if (kind == Kind::Line) return Vec3::Zero();
+    const double theta = startAngle + std::copysign(s / radius, sweep);
+    return {-std::cos(theta) / radius, -std::sin(theta) / radius, 0.0};
+}
+
+double ToolPath::length() const {
+    double total = 0.0;
+    for (const PathSegment& s : segments) total += s.length();
+    return total;
+}
+
+Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
+    Diagnostics errors;
+    auto at = [](std::size_t k) { return "point[" + std::to_string(k) + "]"; };
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const PathPoint& p = points[k];
+        if (!p.position.allFinite() || !std::isfinite(p.bulge) ||
+            p.position.cwiseAbs().maxCoeff() > 1e6) {
+            errors.push_back({at(k), "coordinates must be finite, at most 1e6 mm, and the bulge "
+                                     "finite"});
+        }
+    }
+    if (points.size() < 2) errors.push_back({"points", "a path needs at least two points"});
+    if (!errors.empty()) return errors;
+
+    ToolPath path;
+    for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+        const Vec3& a = points[k].position;
+        const Vec3& b = points[k + 1].position;
+        if ((b - a).norm() < 1e-9) {
+            errors.push_back({at(k + 1), "repeats the previous point"});
+            continue;
+        }
+        const double bulge = points[k].bulge;
+        if (bulge == 0.0) {
+            path.segments.push_back(PathSegment::line(a, b));
+            continue;
+        }
+        if (std::abs(b.z() - a.z()) > 1e-9) {
+            errors.push_back({at(k), "an arc (bulge " + formatNumber(bulge) +
+                                         ") must keep its height, but z goes from " +
+                                         formatNumber(a.z()) + " to " + formatNumber(b.z())});
+            continue;
+        }
+        const Vec2 chord = xy(b) - xy(a);
+        const double c = chord.norm();
+        if (c < 1e-9) {
+            errors.push_back({at(k + 1), "an arc needs two distinct points in the XY plane"});
+            continue;
+        }
+        // DXF bulge b = tan(θ/4): the centre sits (c/2)·(1 − b²)/(2b) to the left of the chord.
+        const double theta = 4.0 * std::atan(bulge);
+        const Vec2 left(-chord.y() / c, chord.x() / c);
+        const Vec2 center = (xy(a) + xy(b)) / 2.0 + left * (c / 2.0) * (1.0 - bulge * bulge) / (2.0 * bulge);
+        const double radius = (xy(a) - center).norm();
+        const Vec2 ra = xy(a) - center;
+        path.segments.push_back(
+            PathSegment::arc(center, radius, std::atan2(ra.y(), ra.x()), theta, a.z()));
+        path.segments.back().end = b;  // exactly the given point, not its recomputation
+    }
+    if (!errors.empty()) return errors;
+    return path;
+}
+
+namespace {
+
+/// Contour point, tangent dP/dφ and the outward normal (right of the counter-clockwise
+/// direction of travel) at φ on segment k.
+struct ContourFrame {
+    Vec2 point;
+    Vec2 tangent;  // unit
+    Vec2 normal;   // unit, outwards
+};
+
+ContourFrame frameAt(const ContourSegment& seg, double phi) {
+    const PolarDerivatives d = seg.evaluate(phi);
+    const Vec2 u(std::cos(phi), std::sin(phi)), u1(-std::sin(phi), std::cos(phi));
+    const Vec2 t = (d.dr * u + d.r * u1).normalized();
+    return {d.r * u, t, Vec2(t.y(), -t.x())};
+}
+
+double sweepFrom(const Vec2& from, const Vec2& to, double direction) {
+    double sweep = std::atan2(cross(from, to), from.dot(to));  // (-π, π]
+    if (direction > 0 && sweep <= 1e-15) sweep += kTwoPi;
+    if (direction < 0 && sweep >= -1e-15) sweep -= kTwoPi;
+    return sweep;
+}
+
+/// Intersections of two path segments' full curves (lines, circles) in the XY plane.
+std::vector<Vec2> intersections(const PathSegment& p, const PathSegment& q) {
+    auto lineLine = [](const PathSegment& a, const PathSegment& b) -> std::vector<Vec2> {
+        const Vec2 u = xy(a.end - a.start), v = xy(b.end - b.start);
+        const double den = cross(u, v);
+        if (std::abs(den) < 1e-15 * u.norm() * v.norm()) return {};
+        const double t = cross(xy(b.start - a.start), v) / den;
+        return {xy(a.start) + t * u};
+    };
+    auto lineCircle = [](const PathSegment& l, const Vec2& c, double r) -> std::vector<Vec2> {
+        const Vec2 u = xy(l.end - l.start).normalized();
+        const Vec2 w = xy(l.start) - c;
+        const double b = u.dot(w), disc = b * b - (w.squaredNorm() - r * r);
+        if (disc < 0) return {};
+        return {xy(l.start) + (-b + std::sqrt(disc)) * u, xy(l.start) + (-b - std::sqrt(disc)) * u};
+    };
+    auto circleCircle = [](const Vec2& c1, double r1, const Vec2& c2,
+                           double r2) -> std::vector<Vec2> {
+        const double d = (c2 - c1).norm();
+        if (d < 1e-12) return {};
+        const double a = (d * d + r1 * r1 - r2 * r2) / (2 * d), h2 = r1 * r1 - a * a;
+        if (h2 < 0) return {};
+        const Vec2 e = (c2 - c1) / d, base = c1 + a * e, n(-e.y(), e.x());
+        return {base + std::sqrt(h2) * n, base - std::sqrt(h2) * n};
+    };
+    using K = PathSegment::Kind;
+    if (p.kind == K::Line && q.kind == K::Line) return lineLine(p, q);
+    if (p.kind == K::Line) return lineCircle(p, q.center, q.radius);
+    if (q.kind == K::Line) return lineCircle(q, p.center, p.radius);
+    return circleCircle(p.center, p.radius, q.center, q.radius);
+}
+
+void moveEnd(PathSegment& s, const Vec2& p) {
+    if (s.kind == PathSegment::Kind::Line) {
+        s.end = Vec3(p.x(), p.y(), s.end.z());
+        return;
+    }
+    const Vec2 from(std::cos(s.startAngle), std::sin(s.startAngle));
+    s = PathSegment::arc(s.center, s.radius, s.startAngle,
+                         sweepFrom(from, (p - s.center).normalized(), s.sweep), s.start.z());
+}
+
+void moveStart(PathSegment& s, const Vec2& p) {
+    if (s.kind == PathSegment::Kind::Line) {
+        s.start = Vec3(p.x(), p.y(), s.start.z());
+        return;
+    }
+    const double endAngle = s.startAngle + s.sweep;
+    const Vec2 to(std::cos(endAngle), std::sin(endAngle));
+    const Vec2 from = (p - s.center).normalized();
+    s = PathSegment::arc(s.center, s.radius, std::atan2(from.y(), from.x()),
+                         sweepFrom(from, to, s.sweep), s.start.z());
+}
+
+}  // namespace
+
+Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) {
+    Diagnostics errors;
+    const std::size_t n = contour.size();
+    std::vector<PathSegment> offset;
+    std::vector<ContourFrame> starts, ends;
+    for (std::size_t k = 0; k < n; ++k) {
+        const ContourSegment& seg = contour.segment(k);
+        const ContourFrame a = frameAt(seg, seg.phiStart), b = frameAt(seg, seg.phiEnd);
+        starts.push_back(a);
+        ends.push_back(b);
+        const std::string at = "contour[" + std::to_string(k) + "]";
+        if (seg.type == SegmentType::Line) {
+            offset.push_back(PathSegment::line(Vec3(a.point.x() + toolRadius * a.normal.x(),
+                                                    a.point.y() + toolRadius * a.normal.y(), 0),
+                                               Vec3(b.point.x() + toolRadius * b.normal.x(),
+                                                    b.point.y() + toolRadius * b.normal.y(), 0)));
+            continue;
+        }
+        const Vec2 c = seg.arc.center;
+        const double r = seg.arc.radius;
+        const Vec2 wa = (a.point - c) / r, wb = (b.point - c) / r;
+        // Convex where the circle bulges outwards (normal away from its centre): the offset
+        // circle grows; on a concave arc it shrinks and vanishes at the tool radius.
+        const double convex = wa.dot(a.normal) >= 0 ? 1.0 : -1.0;
+        const double radius = r + convex * toolRadius;
+        if (radius <= 1e-9) {
+            errors.push_back({at, "the tool radius " + formatNumber(toolRadius) +
+                                      " mm is not smaller than the radius " + formatNumber(r) +
+                                      " mm of this concave arc: the offset path degenerates"});
+            continue;
+        }
+        const double direction = cross(wa, a.tangent) >= 0 ? 1.0 : -1.0;
+        const bool fullTurn = n == 1;
+        const double sweep = fullTurn ? direction * kTwoPi : sweepFrom(wa, wb, direction);
+        offset.push_back(PathSegment::arc(c, radius, std::atan2(wa.y(), wa.x()), sweep, 0.0));
+    }
+    if (!errors.empty()) return errors;
+    if (toolRadius == 0.0 || n == 1) return ToolPath{offset};
+
+    ToolPath path;
+    std::vector<PathSegment> joined = offset;
+    std::vector<std::optional<PathSegment>> cornerArcs(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t next = (k + 1) % n;
+        const ContourFrame& left = ends[k];
+        const ContourFrame& right = starts[next];
+        const double turn = std::atan2(cross(left.tangent, right.tangent), left.tangent.dot(right.tangent));
+        if (std::abs(turn) < 1e-9) continue;  // tangent joint: the offsets meet
+        const std::string at = "contour[" + std::to_string(k) + "]/contour[" + std::to_string(next) + "]";
+        if (turn > 0) {
+            // Convex corner: the tool rolls around the corner point.
+            const Vec2 na = left.normal;
+            cornerArcs[k] = PathSegment::arc(left.point, toolRadius, std::atan2(na.y(), na.x()),
+                                             turn, 0.0);
+            continue;
+        }
+        // Concave corner: both offsets overshoot; cut them where they cross, nearest the corner.
+        const Vec2 guess = left.point + toolRadius * (left.normal + right.normal).normalized();
+        std::optional<Vec2> best;
+        for (const Vec2& p : intersections(joined[k], joined[next])) {
+            if (!best || (p - guess).norm() < (*best - guess).norm()) best = p;
+        }
+        if (!best) {
+            errors.push_back({at, "the offset segments do not meet at this corner"});
+            continue;
+        }
+        moveEnd(joined[k], *best);
+        moveStart(joined[next], *best);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        if (joined[k].length() < 1e-9 ||
+            (joined[k].kind == PathSegment::Kind::Line &&
+             (xy(joined[k].end - joined[k].start)).dot(xy(offset[k].end - offset[k].start)) <= 0)) {
+            errors.push_back({"contour[" + std::to_string(k) + "]",
+                              "the tool radius " + formatNumber(toolRadius) +
+                                  " mm is too large for this segment: its offset vanishes"});
+        }
+    }
+    if (!errors.empty()) return errors;
+    for (std::size_t k = 0; k < n; ++k) {
+        path.segments.push_back(joined[k]);
+        if (cornerArcs[k]) path.segments.push_back(*cornerArcs[k]);
+    }
+    return path;
+}
+
+}  // namespace cam

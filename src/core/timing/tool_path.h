@@ -1,0 +1,63 @@
+#pragma once
+/// @file
+/// @brief A 3D tool path of straight lines and circular arcs (arcs lie in a plane z = const).
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "common/diagnostic.h"
+#include "contour/contour.h"
+
+namespace cam {
+
+/// @brief One piece of a tool path, parameterised by arc length s in [0, length()].
+struct PathSegment {
+    enum class Kind { Line, Arc };
+    Kind kind = Kind::Line;
+    Eigen::Vector3d start{0, 0, 0};
+    Eigen::Vector3d end{0, 0, 0};
+    // Arc only: centre in the XY plane, radius, polar angle of `start` about the centre, and
+    // the signed sweep (rad, + counter-clockwise).
+    Eigen::Vector2d center{0, 0};
+    double radius = 0.0;
+    double startAngle = 0.0;
+    double sweep = 0.0;
+
+    static PathSegment line(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+    /// @brief Arc at height z around `center`, from polar angle `startAngle` (rad, about the
+    /// centre) through the signed `sweep`.
+    static PathSegment arc(const Eigen::Vector2d& center, double radius, double startAngle,
+                           double sweep, double z);
+
+    [[nodiscard]] double length() const;
+    [[nodiscard]] Eigen::Vector3d point(double s) const;
+    /// @brief Unit tangent q'(s).
+    [[nodiscard]] Eigen::Vector3d tangent(double s) const;
+    /// @brief q''(s): zero on lines, the curvature vector (towards the centre, 1/R) on arcs.
+    [[nodiscard]] Eigen::Vector3d curvature(double s) const;
+};
+
+struct ToolPath {
+    std::vector<PathSegment> segments;
+    [[nodiscard]] double length() const;
+};
+
+/// @brief One point of a point list: position (mm) and the DXF bulge of the move to the next
+/// point (tan of a quarter of the included angle, + counter-clockwise; 0 = straight).
+struct PathPoint {
+    Eigen::Vector3d position{0, 0, 0};
+    double bulge = 0.0;
+};
+
+/// @brief Lines and arcs through the points. Errors are located as `point[k]` (a point
+/// repeated, an arc whose end points are at different heights, a non-finite value).
+[[nodiscard]] Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points);
+
+/// @brief The path of the tool centre that mills the contour from outside: every segment of the
+/// contour offset outwards by `toolRadius` (arcs stay arcs, lines stay lines), joined at corners
+/// by an arc around the corner (convex) or trimmed to the offsets' intersection (concave).
+/// A radius that makes an offset degenerate is an error naming the segment.
+[[nodiscard]] Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius);
+
+}  // namespace cam
