@@ -54,11 +54,11 @@ Arguments parseArguments(const std::vector<std::string>& args,
             out.positional.push_back(a);
         }
     }
-    if (out.positional.size() != syntax->positionals) {
-        throw CliError{kUsage, out.command,
-                       out.positional.size() < syntax->positionals
-                           ? "missing PROJECT argument"
-                           : "unexpected argument '" + out.positional.back() + "'"};
+    if (out.positional.size() < syntax->minPositionals) {
+        throw CliError{kUsage, out.command, "missing PROJECT argument"};
+    }
+    if (out.positional.size() > syntax->positionals) {
+        throw CliError{kUsage, out.command, "unexpected argument '" + out.positional.back() + "'"};
     }
     return out;
 }

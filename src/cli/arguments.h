@@ -32,9 +32,10 @@ struct Arguments {
 /// @brief What a command accepts; anything else is a usage error.
 struct CommandSyntax {
     std::string name;
-    std::size_t positionals;           ///< exactly this many positional arguments
+    std::size_t positionals;           ///< at most this many positional arguments
     std::vector<std::string> options;  ///< names that take a value, e.g. "--t"
     std::vector<std::string> flags;    ///< names without a value
+    std::size_t minPositionals = 1;    ///< at least this many
 };
 
 /// @brief Splits argv by the syntax of its command. Throws CliError (exit 1) on bad usage.

@@ -7,8 +7,11 @@
 #include "analysis/analysis.h"
 #include "common/angles.h"
 #include "contour/contour.h"
+#include "io/path_csv.h"
 #include "io/project_json.h"
 #include "kinematics/kinematics.h"
+#include "timing/machining_time.h"
+#include "timing/tool_path.h"
 
 namespace cam::cli {
 namespace {
@@ -176,6 +179,136 @@ int runAnalyze(const Arguments& args, std::ostream& out) {
                       {"joints", std::move(joints)},
                       {"extremes", std::move(extremes)}};
     out << result.dump(2) << "\n";
+    return kOk;
+}
+
+namespace {
+
+/// "AX,AY[,AZ]": 2 or 3 finite numbers > 0; a missing third axis is unlimited.
+Eigen::Vector3d parseAxes(const std::string& option, const std::string& text, const char* unit) {
+    std::vector<double> values;
+    std::size_t begin = 0;
+    while (begin <= text.size()) {
+        const std::size_t comma = text.find(',', begin);
+        const std::string cell =
+            text.substr(begin, comma == std::string::npos ? std::string::npos : comma - begin);
+        values.push_back(parseFiniteNumber(option, cell, unit));
+        if (comma == std::string::npos) break;
+        begin = comma + 1;
+    }
+    if (values.size() < 2 || values.size() > 3) {
+        throw CliError{kInvalidInput, option,
+                       "expects 2 or 3 comma-separated values (got \"" + text + "\")"};
+    }
+    Eigen::Vector3d v(values[0], values[1], values.size() == 3 ? values[2] : kUnlimited);
+    for (int i = 0; i < static_cast<int>(values.size()); ++i) {
+        if (!(v[i] > 0)) {
+            throw CliError{kInvalidInput, option, "values must be > 0 (got \"" + text + "\")"};
+        }
+    }
+    return v;
+}
+
+double parsePositive(const std::string& option, const std::string& text, const char* unit) {
+    const double v = parseFiniteNumber(option, text, unit);
+    if (!(v > 0)) throw CliError{kInvalidInput, option, "must be > 0 (got \"" + text + "\")"};
+    return v;
+}
+
+}  // namespace
+
+int runTiming(const Arguments& args, std::ostream& out) {
+    const auto methodText = args.option("--method");
+    if (!methodText) throw CliError{kUsage, "--method", "is required: seed, exact-stop or optimal"};
+    TimingMethod method;
+    if (*methodText == "seed") {
+        method = TimingMethod::Seed;
+    } else if (*methodText == "exact-stop") {
+        method = TimingMethod::ExactStop;
+    } else if (*methodText == "optimal") {
+        method = TimingMethod::Optimal;
+    } else {
+        throw CliError{kUsage, "--method",
+                       "must be seed, exact-stop or optimal (got \"" + *methodText + "\")"};
+    }
+    const auto pathFile = args.option("--path");
+    if (pathFile.has_value() == !args.positional.empty()) {
+        throw CliError{kUsage, "timing", "give either PROJECT or --path POINTS.csv"};
+    }
+
+    ToolPath path;
+    MachineLimits limits;
+    bool haveAccel = false;
+    if (pathFile) {
+        const auto text = readTextFile(*pathFile);
+        if (!text.ok()) throw CliError{kInvalidInput, *pathFile, text.errors().front().message};
+        const auto points = parsePathCsv(text.value());
+        if (!points.ok()) {
+            const Diagnostic& d = points.errors().front();
+            throw CliError{kInvalidInput, *pathFile + ": " + d.location, d.message};
+        }
+        auto built = toolPathFromPoints(points.value());
+        if (!built.ok()) {
+            const Diagnostic& d = built.errors().front();
+            throw CliError{kInvalidInput, *pathFile + ": " + d.location, d.message};
+        }
+        path = std::move(built).value();
+    } else {
+        const Loaded loaded = load(args.positional.front());
+        double toolRadius = 0.0;
+        if (loaded.project.machining) {
+            limits = limitsFromProject(*loaded.project.machining);
+            toolRadius = loaded.project.machining->toolRadius;
+            haveAccel = true;
+        }
+        auto built = toolPathFromContour(loaded.contour, toolRadius);
+        if (!built.ok()) {
+            const Diagnostic& d = built.errors().front();
+            throw CliError{kNotComputable, args.positional.front() + ": " + d.location, d.message};
+        }
+        path = std::move(built).value();
+    }
+    if (const auto v = args.option("--accel")) {
+        limits.accel = parseAxes("--accel", *v, "mm/s²");
+        haveAccel = true;
+    }
+    if (const auto v = args.option("--vmax")) limits.vmax = parseAxes("--vmax", *v, "mm/s");
+    if (const auto v = args.option("--feed")) limits.feedMax = parsePositive("--feed", *v, "mm/s");
+    if (const auto v = args.option("--step")) limits.seedStep = parsePositive("--step", *v, "mm");
+    if (!haveAccel) {
+        throw CliError{kUsage, "--accel",
+                       "is required: the project has no machining section or a point list is used"};
+    }
+
+    const auto result = machiningTime(path, limits, method);
+    if (!result.ok()) {
+        const Diagnostic& d = result.errors().front();
+        throw CliError{kNotComputable, d.location, d.message};
+    }
+    const TimingResult& r = result.value();
+    Json json{{"method", timingMethodName(r.method)},
+              {"time_s", r.timeS},
+              {"length_mm", r.lengthMm},
+              {"segments", r.segments.size()}};
+    if (r.gridPoints > 0) {
+        json["grid_points"] = r.gridPoints;
+        json["convergence"] = r.convergence;
+    }
+    if (args.hasFlag("--detail")) {
+        Json detail = Json::array();
+        for (std::size_t k = 0; k < r.segments.size(); ++k) {
+            const SegmentTiming& s = r.segments[k];
+            detail.push_back(
+                Json{{"segment", k},
+                     {"kind", path.segments[k].kind == PathSegment::Kind::Line ? "line" : "arc"},
+                     {"length_mm", s.lengthMm},
+                     {"time_s", s.timeS},
+                     {"entry_speed", s.entrySpeed},
+                     {"exit_speed", s.exitSpeed}});
+        }
+        json["detail"] = std::move(detail);
+    }
+    out << json.dump(2) << "\n";
     return kOk;
 }
 

@@ -12,5 +12,6 @@ int runValidate(const Arguments& args, std::ostream& out, std::ostream& err);
 int runState(const Arguments& args, std::ostream& out);
 int runSample(const Arguments& args, std::ostream& out);
 int runAnalyze(const Arguments& args, std::ostream& out);
+int runTiming(const Arguments& args, std::ostream& out);
 
 }  // namespace cam::cli

@@ -17,6 +17,10 @@ commands:
   sample PROJECT [--samples N] [--out FILE.csv]
                                         one turn sampled at N instants, as CSV
   analyze PROJECT                       joints (continuity, jumps) and extremes, as JSON
+  timing (PROJECT | --path POINTS.csv) --method seed|exact-stop|optimal
+         [--accel AX,AY[,AZ]] [--vmax VX,VY[,VZ]] [--feed F] [--step L] [--detail]
+                                        machining time of the contour (offset by the tool
+                                        radius) or of a point list (x,y,z[,bulge] per line)
 
 units: mm, s, degrees; v in mm/s, a in mm/s², j in mm/s³.
 exit codes: 0 ok, 1 usage error, 2 invalid input, 3 not computable.
@@ -41,6 +45,11 @@ int main(int argc, char** argv) {
         {"state", 1, {"--t"}, {}},
         {"sample", 1, {"--samples", "--out"}, {}},
         {"analyze", 1, {}, {}},
+        {"timing",
+         1,
+         {"--method", "--path", "--accel", "--vmax", "--feed", "--step"},
+         {"--detail"},
+         0},
     };
     try {
         const Arguments parsed = parseArguments(args, commands);
@@ -48,6 +57,7 @@ int main(int argc, char** argv) {
         if (parsed.command == "state") return runState(parsed, std::cout);
         if (parsed.command == "sample") return runSample(parsed, std::cout);
         if (parsed.command == "analyze") return runAnalyze(parsed, std::cout);
+        if (parsed.command == "timing") return runTiming(parsed, std::cout);
         return kUsage;
     } catch (const CliError& e) {
         std::cout.flush();

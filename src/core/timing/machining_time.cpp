@@ -94,7 +94,7 @@ PointConstraints constraintsOf(const Vec3& tangent, const Vec3& curvature,
 }
 
 std::vector<SegmentGrid> makeGrid(const ToolPath& path, const MachineLimits& lim,
-                                 std::size_t points, std::size_t* total) {
+                                  std::size_t points, std::size_t* total) {
     const double spacing =
         path.length() / static_cast<double>(std::max<std::size_t>(points, 2) - 1);
     std::vector<SegmentGrid> grid(path.segments.size());
@@ -259,8 +259,8 @@ OptimalRun refinedOptimal(const ToolPath& path, const MachineLimits& lim, std::s
     for (;;) {
         n *= 2;
         OptimalRun current = runOptimal(path, lim, n, false);
-        const double change = std::abs(current.profile.timeS - previous.profile.timeS) /
-                              current.profile.timeS;
+        const double change =
+            std::abs(current.profile.timeS - previous.profile.timeS) / current.profile.timeS;
         if (change <= 1e-6 || n >= kMaxPoints) {
             *points = current.points;
             *convergence = change;
@@ -271,6 +271,30 @@ OptimalRun refinedOptimal(const ToolPath& path, const MachineLimits& lim, std::s
 }
 
 }  // namespace
+
+MachineLimits limitsFromProject(const MachiningSpec& m) {
+    MachineLimits lim;
+    for (int i = 0; i < 3; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        lim.accel[i] = k < m.axisAccel.size() ? m.axisAccel[k] : kUnlimited;
+        lim.vmax[i] = k < m.axisVmax.size() ? m.axisVmax[k] : kUnlimited;
+    }
+    lim.feedMax = m.feedMax;
+    lim.seedStep = m.step;
+    return lim;
+}
+
+const char* timingMethodName(TimingMethod method) {
+    switch (method) {
+        case TimingMethod::Seed:
+            return "seed";
+        case TimingMethod::ExactStop:
+            return "exact-stop";
+        case TimingMethod::Optimal:
+            return "optimal";
+    }
+    return "?";
+}
 
 double seedSegmentTime(const PathSegment& segment, const MachineLimits& lim) {
     const double half = segment.length() / 2.0;
@@ -327,7 +351,8 @@ Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& li
         if (!(lim.accel[i] > 0)) {
             errors.push_back({"accel[" + std::to_string(i) + "]", "must be > 0"});
         }
-        if (!(lim.vmax[i] > 0)) errors.push_back({"vmax[" + std::to_string(i) + "]", "must be > 0"});
+        if (!(lim.vmax[i] > 0))
+            errors.push_back({"vmax[" + std::to_string(i) + "]", "must be > 0"});
     }
     if (!(lim.feedMax > 0)) errors.push_back({"feed", "must be > 0"});
     if (method == TimingMethod::Seed && !(lim.seedStep > 0 && std::isfinite(lim.seedStep))) {

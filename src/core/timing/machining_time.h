@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/diagnostic.h"
+#include "project/project.h"
 #include "timing/tool_path.h"
 
 namespace cam {
@@ -15,13 +16,18 @@ inline constexpr double kUnlimited = std::numeric_limits<double>::infinity();
 
 /// @brief Machine limits. Axes without a limit are +infinity.
 struct MachineLimits {
-    Eigen::Vector3d accel{500, 500, 200};                       ///< per axis, mm/s², > 0
+    Eigen::Vector3d accel{500, 500, 200};                      ///< per axis, mm/s², > 0
     Eigen::Vector3d vmax{kUnlimited, kUnlimited, kUnlimited};  ///< per axis, mm/s, > 0
-    double feedMax = kUnlimited;                                ///< along the path, mm/s
-    double seedStep = 1.0;                                      ///< step of the seed method, mm
+    double feedMax = kUnlimited;                               ///< along the path, mm/s
+    double seedStep = 1.0;                                     ///< step of the seed method, mm
 };
 
+/// @brief The limits a project's `machining` section gives (2 axes: z unlimited).
+[[nodiscard]] MachineLimits limitsFromProject(const MachiningSpec& machining);
+
 enum class TimingMethod { Seed, ExactStop, Optimal };
+
+[[nodiscard]] const char* timingMethodName(TimingMethod method);
 
 struct SegmentTiming {
     double timeS = 0.0;

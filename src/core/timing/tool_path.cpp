@@ -35,8 +35,8 @@ PathSegment PathSegment::arc(const Vec2& center, double radius, double startAngl
     s.start = Vec3(center.x() + radius * std::cos(startAngle),
                    center.y() + radius * std::sin(startAngle), z);
     const double endAngle = startAngle + sweep;
-    s.end = Vec3(center.x() + radius * std::cos(endAngle), center.y() + radius * std::sin(endAngle),
-                 z);
+    s.end =
+        Vec3(center.x() + radius * std::cos(endAngle), center.y() + radius * std::sin(endAngle), z);
     return s;
 }
 
@@ -77,8 +77,9 @@ Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
         const PathPoint& p = points[k];
         if (!p.position.allFinite() || !std::isfinite(p.bulge) ||
             p.position.cwiseAbs().maxCoeff() > 1e6) {
-            errors.push_back({at(k), "coordinates must be finite, at most 1e6 mm, and the bulge "
-                                     "finite"});
+            errors.push_back({at(k),
+                              "coordinates must be finite, at most 1e6 mm, and the bulge "
+                              "finite"});
         }
     }
     if (points.size() < 2) errors.push_back({"points", "a path needs at least two points"});
@@ -112,7 +113,8 @@ Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
         // DXF bulge b = tan(θ/4): the centre sits (c/2)·(1 − b²)/(2b) to the left of the chord.
         const double theta = 4.0 * std::atan(bulge);
         const Vec2 left(-chord.y() / c, chord.x() / c);
-        const Vec2 center = (xy(a) + xy(b)) / 2.0 + left * (c / 2.0) * (1.0 - bulge * bulge) / (2.0 * bulge);
+        const Vec2 center =
+            (xy(a) + xy(b)) / 2.0 + left * (c / 2.0) * (1.0 - bulge * bulge) / (2.0 * bulge);
         const double radius = (xy(a) - center).norm();
         const Vec2 ra = xy(a) - center;
         path.segments.push_back(
@@ -249,14 +251,16 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         const std::size_t next = (k + 1) % n;
         const ContourFrame& left = ends[k];
         const ContourFrame& right = starts[next];
-        const double turn = std::atan2(cross(left.tangent, right.tangent), left.tangent.dot(right.tangent));
+        const double turn =
+            std::atan2(cross(left.tangent, right.tangent), left.tangent.dot(right.tangent));
         if (std::abs(turn) < 1e-9) continue;  // tangent joint: the offsets meet
-        const std::string at = "contour[" + std::to_string(k) + "]/contour[" + std::to_string(next) + "]";
+        const std::string at =
+            "contour[" + std::to_string(k) + "]/contour[" + std::to_string(next) + "]";
         if (turn > 0) {
             // Convex corner: the tool rolls around the corner point.
             const Vec2 na = left.normal;
-            cornerArcs[k] = PathSegment::arc(left.point, toolRadius, std::atan2(na.y(), na.x()),
-                                             turn, 0.0);
+            cornerArcs[k] =
+                PathSegment::arc(left.point, toolRadius, std::atan2(na.y(), na.x()), turn, 0.0);
             continue;
         }
         // Concave corner: both offsets overshoot; cut them where they cross, nearest the corner.

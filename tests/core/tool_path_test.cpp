@@ -1,0 +1,143 @@
+// Tool paths from contours, checked against geometric facts that do not depend on the code:
+// an outward offset of a closed curve by ρ grows its length by ρ times its total turning (2π),
+// convex corners get arcs of radius ρ, concave corners lose ρ·tan(β/2) on each side.
+
+#include <gtest/gtest.h>
+
+#include "common/angles.h"
+#include "io/project_json.h"
+#include "project/validate.h"
+#include "test_support.h"
+#include "timing/tool_path.h"
+
+namespace cam {
+namespace {
+
+Contour sixLobe() {
+    return Contour::build(loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json")).value())
+        .value();
+}
+
+/// Consecutive segments meet within `tolerance` (the contour's own joints may be 1e-6 apart).
+void expectClosedAndContinuous(const ToolPath& path, double tolerance = 1e-9) {
+    for (std::size_t k = 0; k < path.segments.size(); ++k) {
+        const PathSegment& a = path.segments[k];
+        const PathSegment& b = path.segments[(k + 1) % path.segments.size()];
+        EXPECT_LT((a.end - b.start).norm(), tolerance)
+            << "between segments " << k << " and " << k + 1;
+        EXPECT_LT((a.point(a.length()) - a.end).norm(), 1e-9) << k;
+    }
+}
+
+Contour polygon(const std::vector<Eigen::Vector2d>& corners) {
+    Project p;
+    p.motion = {SpeedUnit::PeriodS, 1.0};
+    double previousEnd = 0.0;
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+        SegmentSpec s;
+        s.type = SegmentType::Line;
+        s.from = corners[k];
+        s.to = corners[(k + 1) % corners.size()];
+        std::tie(s.phiStartDeg, s.phiEndDeg) = lineWindowDeg(s, k == 0 ? 0.0 : previousEnd);
+        previousEnd = s.phiEndDeg;
+        p.contour.push_back(s);
+    }
+    auto c = Contour::build(p);
+    EXPECT_TRUE(c.ok()) << (c.ok() ? "" : c.errors().front().text());
+    return c.value();
+}
+
+TEST(ToolPathFromContour, SixLobeOffsetGrowsByTwoPiTimesTheToolRadius) {
+    const Contour contour = sixLobe();
+    const auto zero = toolPathFromContour(contour, 0.0);
+    ASSERT_TRUE(zero.ok());
+    EXPECT_EQ(zero.value().segments.size(), 13u);  // tangent joints: no corner arcs
+    expectClosedAndContinuous(zero.value(), kJointToleranceMm);
+    for (double rho : {0.5, 2.0, 4.5}) {
+        const auto path = toolPathFromContour(contour, rho);
+        ASSERT_TRUE(path.ok()) << path.errors().front().text();
+        expectClosedAndContinuous(path.value(), kJointToleranceMm);
+        EXPECT_NEAR(path.value().length() - zero.value().length(), kTwoPi * rho, 1e-6) << rho;
+        // Lobes (outer) grow, notches (inner) shrink; arcs stay arcs.
+        for (std::size_t k = 0; k < 13; ++k) {
+            const PathSegment& s = path.value().segments[k];
+            ASSERT_EQ(s.kind, PathSegment::Kind::Arc);
+            const double r = contour.segment(k).arc.radius;
+            const bool lobe = contour.segment(k).arc.branch == Branch::Outer;
+            EXPECT_NEAR(s.radius, lobe ? r + rho : r - rho, 1e-12) << k;
+        }
+    }
+}
+
+TEST(ToolPathFromContour, AToolWiderThanANotchIsAnErrorNamingTheSegment) {
+    const auto path = toolPathFromContour(sixLobe(), 5.0);  // notch radius is 4.84 mm
+    ASSERT_FALSE(path.ok());
+    EXPECT_EQ(path.errors().front().location, "contour[0]");
+    EXPECT_NE(path.errors().front().message.find("4.84070597"), std::string::npos);
+}
+
+TEST(ToolPathFromContour, ConvexCornersGetArcsOfTheToolRadius) {
+    const Contour square = polygon({{10, -10}, {10, 10}, {-10, 10}, {-10, -10}});
+    const auto path = toolPathFromContour(square, 1.5);
+    ASSERT_TRUE(path.ok()) << path.errors().front().text();
+    ASSERT_EQ(path.value().segments.size(), 8u);
+    expectClosedAndContinuous(path.value());
+    EXPECT_NEAR(path.value().length(), 80.0 + kTwoPi * 1.5, 1e-9);
+    const PathSegment& corner = path.value().segments[1];
+    EXPECT_EQ(corner.kind, PathSegment::Kind::Arc);
+    EXPECT_NEAR(corner.radius, 1.5, 1e-12);
+    EXPECT_NEAR(corner.sweep, kPi / 2, 1e-12);
+    EXPECT_NEAR((corner.center - Eigen::Vector2d(10, 10)).norm(), 0.0, 1e-12);
+}
+
+TEST(ToolPathFromContour, ConcaveCornersAreTrimmed) {
+    // A square with a dent at (0, 2): the turn there is concave by β = 2·atan(10/8).
+    const std::vector<Eigen::Vector2d> corners{{10, -10}, {10, 10}, {0, 2}, {-10, 10}, {-10, -10}};
+    const Contour dented = polygon(corners);
+    const double rho = 1.0;
+    const auto path = toolPathFromContour(dented, rho);
+    ASSERT_TRUE(path.ok()) << path.errors().front().text();
+    expectClosedAndContinuous(path.value());
+    double perimeter = 0.0;
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+        perimeter += (corners[(k + 1) % corners.size()] - corners[k]).norm();
+    }
+    // Turning: three convex corners of 90°, two of 90° + atan(8/10)… computed from the polygon:
+    double convexTurn = 0.0, concaveCut = 0.0;
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+        const Eigen::Vector2d a = corners[k] - corners[(k + corners.size() - 1) % corners.size()];
+        const Eigen::Vector2d b = corners[(k + 1) % corners.size()] - corners[k];
+        const double turn = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+        if (turn > 0) {
+            convexTurn += turn;
+        } else {
+            concaveCut += 2.0 * rho * std::tan(-turn / 2.0);
+        }
+    }
+    EXPECT_NEAR(path.value().length(), perimeter + rho * convexTurn - concaveCut, 1e-9);
+}
+
+TEST(ToolPathFromPoints, BulgesMakeArcsWithTheRightCentreAndRadius) {
+    // Bulge 1: a half circle counter-clockwise from (0,0) to (10,0): centre (5,0), radius 5.
+    auto half = toolPathFromPoints({{{0, 0, 0}, 1.0}, {{10, 0, 0}, 0.0}});
+    ASSERT_TRUE(half.ok());
+    EXPECT_NEAR((half.value().segments[0].center - Eigen::Vector2d(5, 0)).norm(), 0, 1e-12);
+    EXPECT_NEAR(half.value().segments[0].radius, 5.0, 1e-12);
+    EXPECT_NEAR(half.value().segments[0].sweep, kPi, 1e-12);
+    EXPECT_NEAR(half.value().segments[0].point(2.5 * kPi).y(), -5.0, 1e-12);  // passes below
+    // A negative bulge turns clockwise: it passes above.
+    auto cw = toolPathFromPoints({{{0, 0, 0}, -1.0}, {{10, 0, 0}, 0.0}});
+    EXPECT_NEAR(cw.value().segments[0].point(2.5 * kPi).y(), 5.0, 1e-12);
+}
+
+TEST(ToolPathFromPoints, LocatesBadPoints) {
+    auto repeated = toolPathFromPoints({{{0, 0, 0}, 0}, {{0, 0, 0}, 0}, {{1, 0, 0}, 0}});
+    ASSERT_FALSE(repeated.ok());
+    EXPECT_EQ(repeated.errors().front().location, "point[1]");
+    auto climbing = toolPathFromPoints({{{0, 0, 0}, 0.5}, {{10, 0, 3}, 0}});
+    ASSERT_FALSE(climbing.ok());
+    EXPECT_EQ(climbing.errors().front().location, "point[0]");
+}
+
+}  // namespace
+}  // namespace cam
