@@ -1,0 +1,152 @@
+// camwright-cli timing: output contract, consistency of --detail, and every bad input class.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "test_support.h"
+
+namespace cam {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+    const fs::path p = fs::temp_directory_path() / ("camwright_timing_" + name);
+    std::ofstream(p) << text;
+    return p.string();
+}
+
+// The issue's reference path as a point list: the bulge tan(π/8) makes the 90° arc.
+const std::string kReferenceCsv =
+    "x,y,z,bulge\n0,0,0,0\n100,0,0,0.41421356237309503\n120,20,0,0\n120,120,0\n";
+const std::vector<std::string> kLimits{"--accel", "500,250,100", "--vmax", "200,150,50"};
+
+nlohmann::json timing(std::vector<std::string> args) {
+    const auto r = test::runCli(args);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+}
+
+TEST(CliTiming, ThreeMethodsOnTheReferencePath) {
+    const std::string csv = writeTemp("reference.csv", kReferenceCsv);
+    auto args = [&](const char* method) {
+        std::vector<std::string> a{"timing", "--path", csv, "--method", method};
+        a.insert(a.end(), kLimits.begin(), kLimits.end());
+        return a;
+    };
+    const auto optimal = timing(args("optimal"));
+    const auto exact = timing(args("exact-stop"));
+    const auto seed = timing(args("seed"));
+    EXPECT_EQ(optimal.at("method"), "optimal");
+    EXPECT_EQ(optimal.at("segments"), 3);
+    EXPECT_NEAR(optimal.at("length_mm").get<double>(), 200.0 + 10.0 * M_PI, 1e-9);
+    // Published: TOPP-RA and Kunz–Stilman 2.18356 s; stopping at both joints 2.8075 s.
+    EXPECT_NEAR(optimal.at("time_s").get<double>(), 2.18356, 3e-5);
+    EXPECT_NEAR(exact.at("time_s").get<double>(), 2.8075, 1e-4);
+    EXPECT_GT(optimal.at("grid_points").get<int>(), 1000);
+    EXPECT_LE(optimal.at("convergence").get<double>(), 1e-6);
+    EXPECT_LT(seed.at("time_s").get<double>(), exact.at("time_s").get<double>());
+}
+
+TEST(CliTiming, DetailAddsUpAndSpeedsMatchAtTheJoints) {
+    const std::string csv = writeTemp("reference.csv", kReferenceCsv);
+    std::vector<std::string> a{"timing", "--path", csv, "--method", "optimal", "--detail"};
+    a.insert(a.end(), kLimits.begin(), kLimits.end());
+    const auto r = timing(a);
+    const auto& detail = r.at("detail");
+    ASSERT_EQ(detail.size(), 3u);
+    double sum = 0.0;
+    for (std::size_t k = 0; k < detail.size(); ++k) {
+        sum += detail[k].at("time_s").get<double>();
+        if (k > 0) {
+            EXPECT_DOUBLE_EQ(detail[k].at("entry_speed").get<double>(),
+                             detail[k - 1].at("exit_speed").get<double>());
+        }
+    }
+    EXPECT_NEAR(sum, r.at("time_s").get<double>(), 1e-12);
+    EXPECT_EQ(detail[0].at("entry_speed"), 0.0);
+    EXPECT_EQ(detail[2].at("exit_speed"), 0.0);
+    // Entering the arc the y axis carries the centripetal v²/R <= 250: v = sqrt(250·20).
+    EXPECT_NEAR(detail[0].at("exit_speed").get<double>(), std::sqrt(5000.0), 1e-6);
+    // First line by hand: 0 → 200 mm/s (0.4 s), cruise 25 mm (0.125 s), 200 → 70.71 (0.2586 s).
+    EXPECT_NEAR(detail[0].at("time_s").get<double>(), 0.4 + 0.125 + (200 - std::sqrt(5000.0)) / 500,
+                1e-6);
+}
+
+TEST(CliTiming, ProjectMachiningSectionAndOverrides) {
+    std::string text = test::readFile(test::examplePath("six-lobe-arc-cam.cam.json"));
+    text.insert(text.rfind('}'), R"(, "machining": {"axis_accel": [500, 500, 200], "feed_max": 100,
+        "tool_radius": 2.0, "step": 1.0})");
+    const std::string project = writeTemp("six-lobe.cam.json", text);
+    const auto optimal = timing({"timing", project, "--method", "optimal"});
+    const auto exact = timing({"timing", project, "--method", "exact-stop"});
+    EXPECT_EQ(optimal.at("segments"), 13);  // 13 tangent arcs offset by 2 mm: no corner arcs
+    EXPECT_LE(optimal.at("time_s").get<double>(), exact.at("time_s").get<double>());
+    EXPECT_GT(optimal.at("time_s").get<double>(), optimal.at("length_mm").get<double>() / 100.0);
+    // Curvature limits this path below 100 mm/s (√(500·2.84) ≈ 38 mm/s in the notches), so a
+    // feed of 20 mm/s binds everywhere: the time is then at least length/20, and longer.
+    const auto slow = timing({"timing", project, "--method", "optimal", "--feed", "20"});
+    EXPECT_GT(slow.at("time_s").get<double>(), optimal.at("time_s").get<double>());
+    EXPECT_GE(slow.at("time_s").get<double>(), slow.at("length_mm").get<double>() / 20.0);
+}
+
+TEST(CliTiming, BadInputGetsTheDocumentedExitCodeAndLocation) {
+    const std::string csv = writeTemp("reference.csv", kReferenceCsv);
+    const std::string badCsv = writeTemp("bad.csv", "0,0,0\n10,abc,0\n");
+    const std::string climbing = writeTemp("climb.csv", "0,0,0,0.5\n10,0,3\n");
+    const std::string repeated = writeTemp("repeat.csv", "0,0,0\n0,0,0\n5,0,0\n");
+    const std::string example = test::examplePath("six-lobe-arc-cam.cam.json");
+    struct Case {
+        std::vector<std::string> args;
+        int exit;
+        std::string where;
+    };
+    const std::vector<Case> cases{
+        {{"timing", "--path", csv, "--accel", "1,1,1"}, 1, "--method"},
+        {{"timing", "--path", csv, "--method", "fastest", "--accel", "1,1,1"}, 1, "--method"},
+        {{"timing", "--method", "seed", "--accel", "1,1,1"}, 1, "PROJECT or --path"},
+        {{"timing", example, "--path", csv, "--method", "seed"}, 1, "PROJECT or --path"},
+        {{"timing", "--path", csv, "--method", "seed"}, 1, "--accel"},
+        {{"timing", example, "--method", "seed"}, 1, "--accel"},
+        {{"timing", "--path", csv, "--method", "seed", "--accel", "1,x,1"}, 2, "--accel"},
+        {{"timing", "--path", csv, "--method", "seed", "--accel", "1,-1,1"}, 2, "--accel"},
+        {{"timing", "--path", csv, "--method", "seed", "--accel", "1"}, 2, "--accel"},
+        {{"timing", "--path", csv, "--method", "seed", "--accel", "1,1,1", "--feed", "0"},
+         2,
+         "--feed"},
+        {{"timing", "--path", csv, "--method", "seed", "--accel", "1,1,1", "--step", "nan"},
+         2,
+         "--step"},
+        {{"timing", "--path", badCsv, "--method", "seed", "--accel", "1,1,1"}, 2, "line 2"},
+        {{"timing", "--path", climbing, "--method", "seed", "--accel", "1,1,1"}, 2, "point[0]"},
+        {{"timing", "--path", repeated, "--method", "seed", "--accel", "1,1,1"}, 2, "point[1]"},
+        {{"timing", "--path", "/nonexistent.csv", "--method", "seed", "--accel", "1,1,1"},
+         2,
+         "/nonexistent.csv"},
+    };
+    for (const Case& c : cases) {
+        const auto r = test::runCli(c.args);
+        SCOPED_TRACE(nlohmann::json(c.args).dump());
+        EXPECT_EQ(r.signal, 0);
+        EXPECT_EQ(r.exitCode, c.exit) << r.err;
+        EXPECT_NE(r.err.find(c.where), std::string::npos) << r.err;
+        EXPECT_EQ(r.out, "");
+    }
+}
+
+TEST(CliTiming, AToolWiderThanANotchCannotBeComputed) {
+    std::string text = test::readFile(test::examplePath("six-lobe-arc-cam.cam.json"));
+    text.insert(text.rfind('}'), R"(, "machining": {"axis_accel": [500, 500], "feed_max": 100,
+        "tool_radius": 6.0})");
+    const auto r =
+        test::runCli({"timing", writeTemp("wide-tool.cam.json", text), "--method", "optimal"});
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.err.find("contour[0]"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("degenerates"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace cam
