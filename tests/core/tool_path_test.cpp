@@ -141,3 +141,22 @@ TEST(ToolPathFromPoints, LocatesBadPoints) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(ToolPathFromContour, TangentJointsStayTangentAfterOffsetting) {
+    // The six-lobe data breaks its tangents by ~1e-8 rad (ten-digit numbers). Treated as corners,
+    // the offsets would be intersected — ill-conditioned for nearly tangent circles — and the
+    // planner would then stop at every joint.
+    const auto path = toolPathFromContour(sixLobe(), 2.0);
+    ASSERT_TRUE(path.ok());
+    for (std::size_t k = 0; k < path.value().segments.size(); ++k) {
+        const PathSegment& a = path.value().segments[k];
+        const PathSegment& b = path.value().segments[(k + 1) % path.value().segments.size()];
+        EXPECT_GT(a.tangent(a.length()).dot(b.tangent(0.0)), std::cos(1e-6)) << k;
+    }
+}
+
+}  // namespace
+}  // namespace cam

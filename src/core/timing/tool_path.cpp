@@ -3,6 +3,7 @@
 #include <cmath>
 #include <optional>
 
+#include "analysis/analysis.h"
 #include "common/angles.h"
 
 namespace cam {
@@ -253,7 +254,10 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         const ContourFrame& right = starts[next];
         const double turn =
             std::atan2(cross(left.tangent, right.tangent), left.tangent.dot(right.tangent));
-        if (std::abs(turn) < 1e-9) continue;  // tangent joint: the offsets meet
+        // Tangent joint: the offsets meet (within the contour's own precision). Treating a break
+        // of 1e-8 rad as a corner would intersect two nearly tangent offsets, which moves the
+        // joint by sqrt(2Rδ) and tilts both tangents.
+        if (std::abs(turn) <= degToRad(kTangentToleranceDeg)) continue;
         const std::string at =
             "contour[" + std::to_string(k) + "]/contour[" + std::to_string(next) + "]";
         if (turn > 0) {
