@@ -296,6 +296,30 @@ const char* timingMethodName(TimingMethod method) {
     return "?";
 }
 
+namespace {
+
+/// The seed's speed for one step of length `step` in direction n after axis speeds vPrev: the
+/// largest x with |n_i·x − v_i|·x/step <= a_i on every axis, capped by the feed (math.md §6).
+double seedStepSpeed(const Vec3& n, const Vec3& vPrev, double step, const MachineLimits& lim) {
+    double x = lim.feedMax;
+    for (int i = 0; i < 3; ++i) {
+        const double a = lim.accel[i];
+        if (std::isinf(a)) continue;
+        if (std::abs(n[i]) < kTiny) {
+            // No motion of this axis in this step: only stopping its previous speed counts.
+            if (std::abs(vPrev[i]) > 0) x = std::min(x, a * step / std::abs(vPrev[i]));
+            continue;
+        }
+        // The rising root of |n_i|·x² − sgn(n_i)·v_i·x − a_i·step = 0.
+        const double an = std::abs(n[i]);
+        const double v = std::copysign(1.0, n[i]) * vPrev[i];
+        x = std::min(x, (v + std::sqrt(v * v + 4.0 * an * a * step)) / (2.0 * an));
+    }
+    return x;
+}
+
+}  // namespace
+
 double seedSegmentTime(const PathSegment& segment, const MachineLimits& lim) {
     const double half = segment.length() / 2.0;
     Vec3 vPrev = Vec3::Zero();
@@ -303,21 +327,7 @@ double seedSegmentTime(const PathSegment& segment, const MachineLimits& lim) {
     for (double s = 0.0; s < half - 1e-12;) {
         const double step = std::min(lim.seedStep, half - s);
         const Vec3 n = (segment.point(s + step) - segment.point(s)).normalized();
-        double x = lim.feedMax;
-        for (int i = 0; i < 3; ++i) {
-            const double a = lim.accel[i];
-            if (std::isinf(a)) continue;
-            if (std::abs(n[i]) < kTiny) {
-                // No motion of this axis in this step: only stopping its previous speed counts.
-                if (std::abs(vPrev[i]) > 0) x = std::min(x, a * step / std::abs(vPrev[i]));
-                continue;
-            }
-            // Largest x with |n_i·x − v_i|·x/step <= a_i: the rising root of
-            // |n_i|·x² − sgn(n_i)·v_i·x − a_i·step = 0.
-            const double an = std::abs(n[i]);
-            const double v = std::copysign(1.0, n[i]) * vPrev[i];
-            x = std::min(x, (v + std::sqrt(v * v + 4.0 * an * a * step)) / (2.0 * an));
-        }
+        const double x = seedStepSpeed(n, vPrev, step, lim);
         time += step / x;
         vPrev = n * x;
         s += step;
@@ -387,6 +397,87 @@ Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& li
         r.segments.push_back(t);
     }
     return r;
+}
+
+namespace {
+
+/// Segment index and local arc length of a global arc length.
+std::pair<std::size_t, double> locate(const ToolPath& path, double s) {
+    for (std::size_t k = 0; k < path.segments.size(); ++k) {
+        const double len = path.segments[k].length();
+        if (s <= len || k + 1 == path.segments.size()) return {k, std::min(s, len)};
+        s -= len;
+    }
+    return {0, 0.0};
+}
+
+void appendPlanned(const ToolPath& path, const OptimalProfile& p, double offset,
+                   TimingProfile& out) {
+    for (std::size_t k = 0; k < p.s.size(); ++k) {
+        Vec3 a = Vec3::Zero();
+        if (k + 1 < p.s.size()) {
+            const double delta = p.s[k + 1] - p.s[k];
+            const double u = delta > 0 ? (p.x[k + 1] - p.x[k]) / (2.0 * delta) : 0.0;
+            const auto [seg, local] = locate(path, p.s[k] + 1e-12);
+            const PathSegment& sg = path.segments[seg];
+            a = sg.tangent(local) * u + sg.curvature(local) * p.x[k];
+        }
+        out.s.push_back(offset + p.s[k]);
+        out.speed.push_back(std::sqrt(std::max(p.x[k], 0.0)));
+        out.accel.push_back(a);
+    }
+}
+
+}  // namespace
+
+TimingProfile timingProfile(const ToolPath& path, const MachineLimits& lim, TimingMethod method,
+                            std::size_t points) {
+    TimingProfile out;
+    if (method == TimingMethod::Optimal) {
+        appendPlanned(path, optimalProfile(path, lim, points), 0.0, out);
+        return out;
+    }
+    const double total = path.length();
+    double offset = 0.0;
+    for (const PathSegment& seg : path.segments) {
+        const double len = seg.length();
+        if (method == TimingMethod::ExactStop) {
+            const auto share =
+                static_cast<std::size_t>(std::max(16.0, static_cast<double>(points) * len / total));
+            appendPlanned(ToolPath{{seg}}, optimalProfile(ToolPath{{seg}}, lim, share), offset,
+                          out);
+        } else {
+            // The seed's steps up to the middle, each at its constant speed, then mirrored.
+            std::vector<std::pair<double, double>> steps;  // (step start, speed)
+            std::vector<Vec3> accels;
+            Vec3 vPrev = Vec3::Zero();
+            for (double s = 0.0; s < len / 2.0 - 1e-12;) {
+                const double step = std::min(lim.seedStep, len / 2.0 - s);
+                const Vec3 n = (seg.point(s + step) - seg.point(s)).normalized();
+                const double x = seedStepSpeed(n, vPrev, step, lim);
+                accels.push_back((n * x - vPrev) * x / step);
+                steps.emplace_back(s, x);
+                vPrev = n * x;
+                s += step;
+            }
+            for (std::size_t k = 0; k < steps.size(); ++k) {
+                out.s.push_back(offset + steps[k].first);
+                out.speed.push_back(steps[k].second);
+                out.accel.push_back(accels[k]);
+            }
+            for (std::size_t k = steps.size(); k-- > 0;) {
+                const double end = k + 1 < steps.size() ? steps[k + 1].first : len / 2.0;
+                out.s.push_back(offset + len - end);
+                out.speed.push_back(steps[k].second);
+                out.accel.push_back(-accels[k]);
+            }
+        }
+        offset += len;
+    }
+    out.s.push_back(total);
+    out.speed.push_back(0.0);
+    out.accel.push_back(Vec3::Zero());
+    return out;
 }
 
 }  // namespace cam

@@ -69,4 +69,15 @@ struct OptimalProfile {
 [[nodiscard]] OptimalProfile optimalProfile(const ToolPath& path, const MachineLimits& limits,
                                             std::size_t gridPoints);
 
+/// @brief Feed and per-axis acceleration along the path, for plots: at each sample, the path
+/// parameter s (mm), the speed (mm/s) and each axis' acceleration (mm/s²) over the interval that
+/// starts there. Optimal and exact stop come from the planner on a grid of about `points` points
+/// (exact stop plans every segment alone, rest to rest); seed gives its steps, braking mirrored.
+struct TimingProfile {
+    std::vector<double> s, speed;
+    std::vector<Eigen::Vector3d> accel;
+};
+[[nodiscard]] TimingProfile timingProfile(const ToolPath& path, const MachineLimits& limits,
+                                          TimingMethod method, std::size_t points);
+
 }  // namespace cam
