@@ -55,136 +55,141 @@
     </message>
     <message>
         <location filename="../../ui/mainwindow.ui" line="47" />
+        <source>Machining</source>
+        <translation>Bearbeitung</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="52" />
         <source>State at Cursor</source>
         <translation>Zustand am Cursor</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="51" />
+        <location filename="../../ui/mainwindow.ui" line="56" />
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="51" />
+        <location filename="../../ui/mainwindow.ui" line="56" />
         <source>Start a new project</source>
         <translation>Ein neues Projekt beginnen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="52" />
+        <location filename="../../ui/mainwindow.ui" line="57" />
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="52" />
+        <location filename="../../ui/mainwindow.ui" line="57" />
         <source>Open a .cam.json project</source>
         <translation>Ein .cam.json-Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="53" />
+        <location filename="../../ui/mainwindow.ui" line="58" />
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="53" />
+        <location filename="../../ui/mainwindow.ui" line="58" />
         <source>Save the project</source>
         <translation>Das Projekt speichern</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="54" />
+        <location filename="../../ui/mainwindow.ui" line="59" />
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="54" />
+        <location filename="../../ui/mainwindow.ui" line="59" />
         <source>Save the project under a new name</source>
         <translation>Das Projekt unter neuem Namen speichern</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="55" />
+        <location filename="../../ui/mainwindow.ui" line="60" />
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="55" />
+        <location filename="../../ui/mainwindow.ui" line="60" />
         <source>Quit Camwright</source>
         <translation>Camwright beenden</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="56" />
+        <location filename="../../ui/mainwindow.ui" line="61" />
         <source>&amp;Insert Segment</source>
         <translation>Segment &amp;einfügen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="56" />
+        <location filename="../../ui/mainwindow.ui" line="61" />
         <source>Insert a segment after the selected one</source>
         <translation>Ein Segment nach dem ausgewählten einfügen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="57" />
+        <location filename="../../ui/mainwindow.ui" line="62" />
         <source>&amp;Delete Segment</source>
         <translation>Segment &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="57" />
+        <location filename="../../ui/mainwindow.ui" line="62" />
         <source>Delete the selected segment</source>
         <translation>Das ausgewählte Segment löschen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="58" />
+        <location filename="../../ui/mainwindow.ui" line="63" />
         <source>Move &amp;Up</source>
         <translation>Nach &amp;oben</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="58" />
+        <location filename="../../ui/mainwindow.ui" line="63" />
         <source>Move the selected segment up</source>
         <translation>Das ausgewählte Segment nach oben verschieben</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="59" />
+        <location filename="../../ui/mainwindow.ui" line="64" />
         <source>Move Do&amp;wn</source>
         <translation>Nach &amp;unten</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="59" />
+        <location filename="../../ui/mainwindow.ui" line="64" />
         <source>Move the selected segment down</source>
         <translation>Das ausgewählte Segment nach unten verschieben</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="60" />
+        <location filename="../../ui/mainwindow.ui" line="65" />
         <source>&amp;Fit Windows</source>
         <translation>Fenster &amp;anpassen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="60" />
+        <location filename="../../ui/mainwindow.ui" line="65" />
         <source>Set every window boundary to where its neighbours meet</source>
         <translation>Jede Fenstergrenze auf den Treffpunkt der Nachbarn setzen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="61" />
+        <location filename="../../ui/mainwindow.ui" line="66" />
         <source>&amp;Time Axis</source>
         <translation>&amp;Zeitachse</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="61" />
+        <location filename="../../ui/mainwindow.ui" line="66" />
         <source>Plot over time instead of angle</source>
         <translation>Über der Zeit statt über dem Winkel auftragen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="62" />
+        <location filename="../../ui/mainwindow.ui" line="67" />
         <source>&amp;Reset Zoom</source>
         <translation>Zoom &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="62" />
+        <location filename="../../ui/mainwindow.ui" line="67" />
         <source>Fit the contour and the plots into view</source>
         <translation>Kontur und Diagramme einpassen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="63" />
+        <location filename="../../ui/mainwindow.ui" line="68" />
         <source>&amp;About Camwright</source>
         <translation>Ü&amp;ber Camwright</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="63" />
+        <location filename="../../ui/mainwindow.ui" line="68" />
         <source>About Camwright</source>
         <translation>Über Camwright</translation>
     </message>
@@ -338,6 +343,11 @@
         <source>Change samples per turn</source>
         <translation>Abtastpunkte je Umdrehung ändern</translation>
     </message>
+    <message>
+        <location filename="../../src/app/document/commands.cpp" line="98" />
+        <source>Change machining limits</source>
+        <translation>Bearbeitungsgrenzen ändern</translation>
+    </message>
 </context>
 <context>
     <name>cam::ContourView</name>
@@ -445,171 +455,329 @@
         <translation>|j|</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="87" />
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="96" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="87" />
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="96" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
 </context>
 <context>
+    <name>cam::MachiningPanel</name>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="48" />
+        <source>Add Machining Limits</source>
+        <translation>Bearbeitungsgrenzen hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="50" />
+        <source>This project has no machining limits yet: add sensible defaults</source>
+        <translation>Dieses Projekt hat noch keine Bearbeitungsgrenzen: sinnvolle Vorgaben hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="57" />
+        <source>Acceleration</source>
+        <translation>Beschleunigung</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="60" />
+        <source>Acceleration limit of the %1 axis</source>
+        <translation>Beschleunigungsgrenze der %1-Achse</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="61" />
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="64" />
+        <source>Velocity</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="65" />
+        <source>Limit the velocity of each axis</source>
+        <translation>Die Geschwindigkeit jeder Achse begrenzen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="69" />
+        <source>Velocity limit of the %1 axis</source>
+        <translation>Geschwindigkeitsgrenze der %1-Achse</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="72" />
+        <source>Feed ceiling along the path</source>
+        <translation>Höchster Vorschub entlang der Bahn</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="73" />
+        <source>Radius of the tool: the path is the contour offset by it</source>
+        <translation>Werkzeugradius: die Bahn ist die um ihn versetzte Kontur</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="75" />
+        <source>Step of the seed method</source>
+        <translation>Schrittweite des Ausgangsverfahrens</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="76" />
+        <source>Feed</source>
+        <translation>Vorschub</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="78" />
+        <source>Tool radius</source>
+        <translation>Werkzeugradius</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="80" />
+        <source>Seed step</source>
+        <translation>Schrittweite</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="84" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="92" />
+        <source>Seed</source>
+        <translation>Ausgangsverfahren</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="84" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="92" />
+        <source>Exact stop</source>
+        <translation>Genauhalt</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="84" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="92" />
+        <source>Optimal</source>
+        <translation>Zeitoptimal</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="86" />
+        <source>The method whose feed and accelerations are plotted</source>
+        <translation>Das Verfahren, dessen Vorschub und Beschleunigungen gezeigt werden</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="87" />
+        <source>Plot</source>
+        <translation>Diagramm</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="94" />
+        <source>The seed document's 1 mm steps from rest to mid-segment, doubled: a legacy estimate that ignores the speed rising within a step</source>
+        <translation>Die 1-mm-Schritte des Ausgangsdokuments aus dem Stillstand bis zur Segmentmitte, verdoppelt: eine alte Abschätzung, die den Geschwindigkeitsanstieg innerhalb eines Schritts übergeht</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="96" />
+        <source>Rest to rest on every segment</source>
+        <translation>Auf jedem Segment aus dem Stillstand in den Stillstand</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="97" />
+        <source>Minimum time along the whole path, stopping only at corners</source>
+        <translation>Kürzeste Zeit entlang der ganzen Bahn, Halt nur an Ecken</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="111" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="113" />
+        <source>path [mm]</source>
+        <translation>Bahn [mm]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="111" />
+        <source>feed [mm/s]</source>
+        <translation>Vorschub [mm/s]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="113" />
+        <source>axis accel. [mm/s²]</source>
+        <translation>Achsbeschl. [mm/s²]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="182" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="190" />
+        <source>Computing…</source>
+        <translation>Wird berechnet …</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="184" />
+        <source>Machining times need the machine's axis limits.</source>
+        <translation>Bearbeitungszeiten brauchen die Achsgrenzen der Maschine.</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="197" />
+        <source>No machining time: %1</source>
+        <translation>Keine Bearbeitungszeit: %1</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="211" />
+        <source>Path %1 mm (contour offset by the tool radius); optimal plan on %2 grid points; computed in %3 ms</source>
+        <translation>Bahn %1 mm (Kontur um den Werkzeugradius versetzt); zeitoptimaler Plan auf %2 Gitterpunkten; berechnet in %3 ms</translation>
+    </message>
+</context>
+<context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="37" />
+        <location filename="../../src/app/mainwindow.cpp" line="38" />
         <source>Camwright projects (*.cam.json)</source>
         <translation>Camwright-Projekte (*.cam.json)</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="43" />
+        <location filename="../../src/app/mainwindow.cpp" line="44" />
         <source>… and %1 more</source>
         <translation>… und %1 weitere</translation>
     </message>
     <message>
         <location filename="../../src/app/mainwindow.cpp" line="151" />
+        <source>Machining limits and times (Ctrl+M)</source>
+        <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="167" />
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="153" />
+        <location filename="../../src/app/mainwindow.cpp" line="169" />
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="181" />
+        <location filename="../../src/app/mainwindow.cpp" line="197" />
         <source>About Camwright</source>
         <translation>Über Camwright</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="182" />
+        <location filename="../../src/app/mainwindow.cpp" line="198" />
         <source>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Design and inspect cam contours: exact polar kinematics of the follower.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</source>
         <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="196" />
+        <location filename="../../src/app/mainwindow.cpp" line="212" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="213" />
+        <location filename="../../src/app/mainwindow.cpp" line="229" />
         <source>%1 cannot be opened:
 %2</source>
         <translation>%1 kann nicht geöffnet werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="218" />
+        <location filename="../../src/app/mainwindow.cpp" line="234" />
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="226" />
-        <location filename="../../src/app/mainwindow.cpp" line="233" />
+        <location filename="../../src/app/mainwindow.cpp" line="242" />
+        <location filename="../../src/app/mainwindow.cpp" line="249" />
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="238" />
+        <location filename="../../src/app/mainwindow.cpp" line="254" />
         <source>The project has problems; fix them before saving (a file with these problems could not be opened again):
 %1</source>
         <translation>Das Projekt hat Fehler; bitte vor dem Speichern beheben (eine Datei mit diesen Fehlern ließe sich nicht wieder öffnen):
 %1</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="248" />
+        <location filename="../../src/app/mainwindow.cpp" line="264" />
         <source>%1 could not be written: %2</source>
         <translation>%1 konnte nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="253" />
+        <location filename="../../src/app/mainwindow.cpp" line="269" />
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="260" />
-        <location filename="../../src/app/mainwindow.cpp" line="274" />
+        <location filename="../../src/app/mainwindow.cpp" line="276" />
+        <location filename="../../src/app/mainwindow.cpp" line="290" />
         <source>Save Project</source>
         <translation>Projekt speichern</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="265" />
+        <location filename="../../src/app/mainwindow.cpp" line="281" />
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="281" />
+        <location filename="../../src/app/mainwindow.cpp" line="297" />
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="282" />
+        <location filename="../../src/app/mainwindow.cpp" line="298" />
         <source>%1 has unsaved changes. Save them?</source>
         <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="341" />
+        <location filename="../../src/app/mainwindow.cpp" line="357" />
         <source>Open Example</source>
         <translation>Beispiel öffnen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="361" />
+        <location filename="../../src/app/mainwindow.cpp" line="381" />
         <source>not computed: the project has problems</source>
         <translation>nicht berechnet: das Projekt hat Fehler</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="369" />
+        <location filename="../../src/app/mainwindow.cpp" line="389" />
         <source>%1 samples computed in %2 ms</source>
         <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="417" />
+        <location filename="../../src/app/mainwindow.cpp" line="449" />
         <source>Valid · 1 segment</source>
         <translation>Gültig · 1 Segment</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="418" />
+        <location filename="../../src/app/mainwindow.cpp" line="450" />
         <source>Valid · %1 segments</source>
         <translation>Gültig · %1 Segmente</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="423" />
+        <location filename="../../src/app/mainwindow.cpp" line="455" />
         <source>1 problem: </source>
         <translation>1 Fehler: </translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="423" />
+        <location filename="../../src/app/mainwindow.cpp" line="455" />
         <source>%1 problems: </source>
         <translation>%1 Fehler: </translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="431" />
+        <location filename="../../src/app/mainwindow.cpp" line="463" />
         <source>%1[*] — Camwright</source>
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="451" />
+        <location filename="../../src/app/mainwindow.cpp" line="483" />
         <source>Insert segment</source>
         <translation>Segment einfügen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="453" />
+        <location filename="../../src/app/mainwindow.cpp" line="485" />
         <source>Split window</source>
         <translation>Fenster teilen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="483" />
+        <location filename="../../src/app/mainwindow.cpp" line="515" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="487" />
+        <location filename="../../src/app/mainwindow.cpp" line="519" />
         <source>The windows already fit.</source>
         <translation>Die Fenster passen bereits.</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="491" />
+        <location filename="../../src/app/mainwindow.cpp" line="523" />
         <source>Fit windows</source>
         <translation>Fenster anpassen</translation>
     </message>

@@ -27,6 +27,7 @@
 #include "ui_mainwindow.h"
 #include "views/contour_view.h"
 #include "views/kinematics_plots.h"
+#include "views/machining_panel.h"
 #include "views/motion_panel.h"
 #include "views/state_readout.h"
 
@@ -94,6 +95,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_document, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_engine, &ComputeEngine::resultReady, this, &MainWindow::showResult);
+    connect(m_engine, &ComputeEngine::timingReady, m_machining, &MachiningPanel::setOutcome);
     connect(m_contour, &ContourView::cursorAngleChanged, this, [this](double phi) {
         const auto& r = m_engine->latestResult();
         if (!r || !r->ok()) return;
@@ -109,6 +111,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
+    m_ui->machiningDock->hide();  // until the user opens it (the saved layout may show it)
     restoreState(settings.value("window/state").toByteArray());
     m_ui->actionAxisTime->setChecked(settings.value("view/timeAxis", false).toBool());
     rebuildRecentMenu();
@@ -141,8 +144,20 @@ void MainWindow::setUpDocks() {
     m_readout = new StateReadout(m_ui->readoutDock);
     m_ui->readoutDock->setWidget(m_readout);
     splitDockWidget(m_ui->motionDock, m_ui->readoutDock, Qt::Vertical);
+    m_machining = new MachiningPanel(m_document, m_ui->machiningDock);
+    m_ui->machiningDock->setWidget(m_machining);
+    QAction* machining = m_ui->machiningDock->toggleViewAction();
+    machining->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
+    machining->setToolTip(tr("Machining limits and times (Ctrl+M)"));
+    m_ui->mainToolBar->addSeparator();
+    m_ui->mainToolBar->addAction(machining);
+    connect(m_machining, &MachiningPanel::plotMethodChanged, this, &MainWindow::requestCompute);
+    connect(m_ui->machiningDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible && !m_engine->latestTiming()) requestCompute();
+    });
     resizeDocks({m_ui->motionDock, m_ui->readoutDock}, {140, 400}, Qt::Vertical);
-    for (QDockWidget* dock : {m_ui->segmentsDock, m_ui->motionDock, m_ui->readoutDock}) {
+    for (QDockWidget* dock :
+         {m_ui->segmentsDock, m_ui->motionDock, m_ui->readoutDock, m_ui->machiningDock}) {
         m_ui->menuView->addAction(dock->toggleViewAction());
     }
 }
@@ -353,8 +368,12 @@ void MainWindow::rebuildExamplesMenu() {
 }
 
 void MainWindow::requestCompute() {
+    // The machining times are computed only while their panel is open.
+    const bool timing = !m_ui->machiningDock->isHidden();
+    if (timing) m_machining->setPending();
     m_engine->request(m_document->project(),
-                      m_ui->actionAxisTime->isChecked() ? PlotAxis::Time : PlotAxis::Angle);
+                      m_ui->actionAxisTime->isChecked() ? PlotAxis::Time : PlotAxis::Angle, timing,
+                      m_machining->plotMethod());
 }
 
 void MainWindow::showResult(const ComputeResultPtr& result) {
@@ -403,6 +422,18 @@ QImage MainWindow::renderScreenshot(const QSize& size) {
     show();
     QCoreApplication::processEvents();
     if (!waitForCurrentResult(20000)) return {};
+    if (!m_ui->machiningDock->isHidden() && m_document->project().machining) {
+        const auto current = [this] {
+            const auto& t = m_engine->latestTiming();
+            return t && t->generation == m_engine->latestGeneration();
+        };
+        QEventLoop loop;
+        QTimer::singleShot(20000, &loop, &QEventLoop::quit);
+        connect(m_engine, &ComputeEngine::timingReady, &loop, [&] {
+            if (current()) loop.quit();
+        });
+        if (!current()) loop.exec();
+    }
     setCursorTime(m_engine->latestResult()->period / 8.0);
     statusBar()->clearMessage();  // transient messages name paths: not part of the picture
     for (int p = 0; p < 3; ++p) m_plots->plot(p)->replot(QCustomPlot::rpImmediateRefresh);

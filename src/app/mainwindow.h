@@ -19,6 +19,7 @@ class ArcTableModel;
 class ComputeEngine;
 class ContourView;
 class KinematicsPlots;
+class MachiningPanel;
 class MotionPanel;
 class ProjectDocument;
 class StateReadout;
@@ -41,6 +42,7 @@ public:
     [[nodiscard]] KinematicsPlots* plots() const { return m_plots; }
     [[nodiscard]] ContourView* contourView() const { return m_contour; }
     [[nodiscard]] StateReadout* readout() const { return m_readout; }
+    [[nodiscard]] MachiningPanel* machiningPanel() const { return m_machining; }
 
     /// @brief Puts the cursor at time t (s): readout, follower ray and plot cursors.
     void setCursorTime(double t);
@@ -89,6 +91,7 @@ private:
     KinematicsPlots* m_plots;
     StateReadout* m_readout;
     MotionPanel* m_motion;
+    MachiningPanel* m_machining;
     QLabel* m_validationLabel;
     QLabel* m_computeLabel;
     double m_cursorT = 0.0;

@@ -93,4 +93,23 @@ SetSamplesPerTurn::SetSamplesPerTurn(ProjectDocument* document, std::optional<st
 void SetSamplesPerTurn::undo() { m_document->applySamplesPerTurn(m_before); }
 void SetSamplesPerTurn::redo() { m_document->applySamplesPerTurn(m_after); }
 
+SetMachining::SetMachining(ProjectDocument* document, std::optional<MachiningSpec> after,
+                           int gesture, QUndoCommand* parent)
+    : QUndoCommand(QCoreApplication::translate("cam::Commands", "Change machining limits"), parent),
+      m_document(document),
+      m_before(document->project().machining),
+      m_after(std::move(after)),
+      m_gesture(gesture) {}
+
+void SetMachining::undo() { m_document->applyMachining(m_before); }
+void SetMachining::redo() { m_document->applyMachining(m_after); }
+
+bool SetMachining::mergeWith(const QUndoCommand* other) {
+    const auto* o = static_cast<const SetMachining*>(other);
+    if (m_gesture == 0 || o->m_gesture != m_gesture) return false;
+    m_after = o->m_after;
+    setObsolete(m_after == m_before);
+    return true;
+}
+
 }  // namespace cam

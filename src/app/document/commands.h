@@ -14,6 +14,7 @@ enum class MergeId : int {
     None = -1,
     EditSegmentField = 1,  ///< repeated edits of one cell (spin-box steps, a drag)
     EditMotion = 2,
+    EditMachining = 3,
 };
 
 /// @brief Which part of a segment an edit touched; edits of the same part of the same row merge.
@@ -137,6 +138,24 @@ private:
     ProjectDocument* m_document;
     std::optional<std::int64_t> m_before;
     std::optional<std::int64_t> m_after;
+};
+
+/// @brief Sets, changes or removes the machining limits; edits with the same non-zero gesture
+/// (one spin-box session) merge.
+class SetMachining : public QUndoCommand {
+public:
+    SetMachining(ProjectDocument* document, std::optional<MachiningSpec> after, int gesture = 0,
+                 QUndoCommand* parent = nullptr);
+    void undo() override;
+    void redo() override;
+    [[nodiscard]] int id() const override { return static_cast<int>(MergeId::EditMachining); }
+    bool mergeWith(const QUndoCommand* other) override;
+
+private:
+    ProjectDocument* m_document;
+    std::optional<MachiningSpec> m_before;
+    std::optional<MachiningSpec> m_after;
+    int m_gesture;
 };
 
 }  // namespace cam

@@ -24,6 +24,7 @@ void ProjectDocument::reset(Project project, QString filePath) {
     emit filePathChanged(m_filePath);
     emit contourReset();
     emit motionChanged();
+    emit machiningChanged();
     afterChange();
 }
 
@@ -77,6 +78,12 @@ void ProjectDocument::applyMotion(const MotionSpec& motion) {
 void ProjectDocument::applySamplesPerTurn(std::optional<std::int64_t> samples) {
     m_project.samplesPerTurn = samples;
     emit motionChanged();
+    afterChange();
+}
+
+void ProjectDocument::applyMachining(const std::optional<MachiningSpec>& machining) {
+    m_project.machining = machining;
+    emit machiningChanged();
     afterChange();
 }
 

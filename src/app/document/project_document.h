@@ -41,6 +41,7 @@ public:
     void applyContour(const std::vector<SegmentSpec>& contour);
     void applyMotion(const MotionSpec& motion);
     void applySamplesPerTurn(std::optional<std::int64_t> samples);
+    void applyMachining(const std::optional<MachiningSpec>& machining);
 
 signals:
     void segmentChanged(int row);
@@ -50,6 +51,7 @@ signals:
     /// The whole contour changed (reset, fit windows): rebuild every view of it.
     void contourReset();
     void motionChanged();
+    void machiningChanged();
     /// Any change at all, after the specific signal: recompute, revalidate, redraw.
     void changed();
     void filePathChanged(const QString& path);

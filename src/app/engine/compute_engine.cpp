@@ -39,23 +39,39 @@ void ComputeWorker::run() {
             m_cancel = false;
         }
         ComputeResultPtr result = computeProject(request, m_cancel);
-        if (result && !m_cancel.load()) emit finished(result);
+        if (!result || m_cancel.load()) continue;
+        emit finished(result);
+        if (request.timing && result->ok() && request.project->machining) {
+            TimingOutcomePtr outcome = computeTiming(request, *result->contour, m_cancel);
+            if (outcome && !m_cancel.load()) emit timingFinished(outcome);
+        }
     }
 }
 
 ComputeEngine::ComputeEngine(QObject* parent) : QObject(parent) {
     qRegisterMetaType<cam::ComputeResultPtr>();
+    qRegisterMetaType<cam::TimingOutcomePtr>();
     m_timer.setSingleShot(true);
     m_timer.setInterval(30);
     connect(&m_timer, &QTimer::timeout, this, &ComputeEngine::submitPending);
     connect(&m_worker, &ComputeWorker::finished, this, &ComputeEngine::onFinished,
             Qt::QueuedConnection);
+    connect(
+        &m_worker, &ComputeWorker::timingFinished, this,
+        [this](const TimingOutcomePtr& outcome) {
+            if (outcome->generation != m_generation) return;  // answers an older request
+            m_latestTiming = outcome;
+            emit timingReady(outcome);
+        },
+        Qt::QueuedConnection);
 }
 
 ComputeEngine::~ComputeEngine() = default;
 
-void ComputeEngine::request(const Project& project, PlotAxis axis) {
-    m_pending = ComputeRequest{++m_generation, std::make_shared<const Project>(project), axis};
+void ComputeEngine::request(const Project& project, PlotAxis axis, bool timing,
+                            TimingMethod plotMethod) {
+    m_pending = ComputeRequest{++m_generation, std::make_shared<const Project>(project), axis,
+                               timing, plotMethod};
     // Leading edge: a lone edit is computed at once. Edits that follow within the interval
     // are held and only the newest is submitted when it ends (trailing edge).
     if (!m_timer.isActive()) {

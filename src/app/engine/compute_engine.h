@@ -26,6 +26,7 @@ public:
 
 signals:
     void finished(cam::ComputeResultPtr result);
+    void timingFinished(cam::TimingOutcomePtr outcome);
 
 protected:
     void run() override;
@@ -48,18 +49,23 @@ public:
     explicit ComputeEngine(QObject* parent = nullptr);
     ~ComputeEngine() override;
 
-    /// @brief Asks for the project as it is now (a copy is taken).
-    void request(const Project& project, PlotAxis axis);
+    /// @brief Asks for the project as it is now (a copy is taken). With `timing`, the machining
+    /// times follow the kinematics (if the project has machining limits).
+    void request(const Project& project, PlotAxis axis, bool timing = false,
+                 TimingMethod plotMethod = TimingMethod::Optimal);
     /// @brief Milliseconds that a burst of requests is coalesced over (0: submit at once).
     void setCoalesceMs(int ms) { m_timer.setInterval(ms); }
 
     [[nodiscard]] std::uint64_t latestGeneration() const { return m_generation; }
     [[nodiscard]] const ComputeResultPtr& latestResult() const { return m_latest; }
     [[nodiscard]] int droppedResults() const { return m_dropped; }
+    [[nodiscard]] const TimingOutcomePtr& latestTiming() const { return m_latestTiming; }
 
 signals:
     /// A result for the newest request.
     void resultReady(const cam::ComputeResultPtr& result);
+    /// Machining times for the newest request.
+    void timingReady(const cam::TimingOutcomePtr& outcome);
 
 private:
     void submitPending();
@@ -70,6 +76,7 @@ private:
     std::optional<ComputeRequest> m_pending;
     std::uint64_t m_generation = 0;
     ComputeResultPtr m_latest;
+    TimingOutcomePtr m_latestTiming;
     int m_dropped = 0;
 };
 

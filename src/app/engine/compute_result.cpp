@@ -113,4 +113,51 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     return result;
 }
 
+TimingOutcomePtr computeTiming(const ComputeRequest& request, const Contour& contour,
+                               const std::atomic<bool>& cancel) {
+    QElapsedTimer timer;
+    timer.start();
+    auto outcome = std::make_shared<TimingOutcome>();
+    outcome->generation = request.generation;
+    outcome->plotted = request.plotMethod;
+    const MachiningSpec& spec = *request.project->machining;
+    outcome->limits = limitsFromProject(spec);
+    auto path = toolPathFromContour(contour, spec.toolRadius);
+    if (!path.ok()) {
+        outcome->errors = path.errors();
+        return outcome;
+    }
+    outcome->lengthMm = path.value().length();
+    const TimingMethod methods[] = {TimingMethod::Seed, TimingMethod::ExactStop,
+                                    TimingMethod::Optimal};
+    for (int m = 0; m < 3; ++m) {
+        const auto r = machiningTime(path.value(), outcome->limits, methods[m], &cancel);
+        if (cancel.load()) return nullptr;
+        if (!r.ok()) {
+            outcome->errors = r.errors();
+            return outcome;
+        }
+        outcome->timesS[static_cast<std::size_t>(m)] = r.value().timeS;
+        if (methods[m] == TimingMethod::Optimal) outcome->gridPoints = r.value().gridPoints;
+    }
+    const TimingProfile profile =
+        timingProfile(path.value(), outcome->limits, request.plotMethod, 4000);
+    QVector<QCPGraphData> feed;
+    std::array<QVector<QCPGraphData>, 3> accel;
+    for (std::size_t k = 0; k < profile.s.size(); ++k) {
+        feed.append({profile.s[k], profile.speed[k]});
+        for (int i = 0; i < 3; ++i) {
+            accel[static_cast<std::size_t>(i)].append({profile.s[k], profile.accel[k][i]});
+        }
+    }
+    outcome->feed = QSharedPointer<QCPGraphDataContainer>::create();
+    outcome->feed->set(feed, true);
+    for (std::size_t i = 0; i < 3; ++i) {
+        outcome->accel[i] = QSharedPointer<QCPGraphDataContainer>::create();
+        outcome->accel[i]->set(accel[i], true);
+    }
+    outcome->computeMs = static_cast<double>(timer.nsecsElapsed()) / 1e6;
+    return outcome;
+}
+
 }  // namespace cam

@@ -14,6 +14,7 @@
 #include "contour/contour.h"
 #include "kinematics/kinematics.h"
 #include "project/project.h"
+#include "timing/machining_time.h"
 
 namespace cam {
 
@@ -27,6 +28,8 @@ struct ComputeRequest {
     std::uint64_t generation = 0;
     std::shared_ptr<const Project> project;
     PlotAxis axis = PlotAxis::Angle;
+    bool timing = false;  ///< also compute the machining times (when the panel is shown)
+    TimingMethod plotMethod = TimingMethod::Optimal;
 };
 
 /// @brief One finished computation. Never modified after it leaves the worker.
@@ -60,9 +63,31 @@ struct ComputeResult {
 
 using ComputeResultPtr = std::shared_ptr<const ComputeResult>;
 
+/// @brief The machining times of one request: computed after its kinematics, reported apart so
+/// the plots never wait for them.
+struct TimingOutcome {
+    std::uint64_t generation = 0;
+    Diagnostics errors;  ///< non-empty: no tool path (e.g. the tool is wider than a notch)
+    std::array<double, 3> timesS{};  ///< seed, exact stop, optimal
+    std::size_t gridPoints = 0;      ///< of the optimal plan
+    double lengthMm = 0.0;
+    TimingMethod plotted = TimingMethod::Optimal;
+    MachineLimits limits;
+    /// Feed (mm/s) and per-axis acceleration (mm/s²) over the path length (mm).
+    QSharedPointer<QCPGraphDataContainer> feed;
+    std::array<QSharedPointer<QCPGraphDataContainer>, 3> accel;
+    double computeMs = 0.0;
+};
+using TimingOutcomePtr = std::shared_ptr<const TimingOutcome>;
+
+/// @brief Tool path, the three times and the profile of the plotted method. Null if cancelled.
+TimingOutcomePtr computeTiming(const ComputeRequest& request, const Contour& contour,
+                               const std::atomic<bool>& cancel);
+
 /// @brief Does the whole computation for one request; polls `cancel`. Returns null if cancelled.
 ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic<bool>& cancel);
 
 }  // namespace cam
 
 Q_DECLARE_METATYPE(cam::ComputeResultPtr)
+Q_DECLARE_METATYPE(cam::TimingOutcomePtr)

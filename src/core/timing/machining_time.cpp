@@ -252,11 +252,12 @@ OptimalRun runOptimal(const ToolPath& path, const MachineLimits& lim, std::size_
 
 /// Doubles the grid until two resolutions agree to 1e-6 relative.
 OptimalRun refinedOptimal(const ToolPath& path, const MachineLimits& lim, std::size_t* points,
-                          double* convergence) {
+                          double* convergence, const std::atomic<bool>* cancel) {
     std::size_t n = 4096;
     OptimalRun previous = runOptimal(path, lim, n, false);
     constexpr std::size_t kMaxPoints = std::size_t{1} << 24;
     for (;;) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) return previous;
         n *= 2;
         OptimalRun current = runOptimal(path, lim, n, false);
         const double change =
@@ -354,7 +355,8 @@ OptimalProfile optimalProfile(const ToolPath& path, const MachineLimits& limits,
 }
 
 Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& lim,
-                                   TimingMethod method) {
+                                   TimingMethod method, const std::atomic<bool>* cancel) {
+    auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
     Diagnostics errors;
     if (path.segments.empty()) errors.push_back({"path", "is empty"});
     for (int i = 0; i < 3; ++i) {
@@ -374,12 +376,14 @@ Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& li
     r.method = method;
     r.lengthMm = path.length();
     if (method == TimingMethod::Optimal) {
-        OptimalRun run = refinedOptimal(path, lim, &r.gridPoints, &r.convergence);
+        OptimalRun run = refinedOptimal(path, lim, &r.gridPoints, &r.convergence, cancel);
+        if (cancelled()) return Diagnostics{{"", "cancelled"}};
         r.timeS = run.profile.timeS;
         r.segments = std::move(run.segments);
         return r;
     }
     for (const PathSegment& seg : path.segments) {
+        if (cancelled()) return Diagnostics{{"", "cancelled"}};
         SegmentTiming t;
         t.lengthMm = seg.length();
         if (method == TimingMethod::Seed) {
@@ -389,7 +393,7 @@ Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& li
         } else {
             std::size_t points = 0;
             double change = 0.0;
-            t.timeS = refinedOptimal(ToolPath{{seg}}, lim, &points, &change).profile.timeS;
+            t.timeS = refinedOptimal(ToolPath{{seg}}, lim, &points, &change, cancel).profile.timeS;
             r.gridPoints = std::max(r.gridPoints, points);
             r.convergence = std::max(r.convergence, change);
         }

@@ -3,6 +3,7 @@
 /// @brief How long a tool path takes on a machine whose axes have their own limits (math.md §6).
 
 #include <Eigen/Core>
+#include <atomic>
 #include <limits>
 #include <vector>
 
@@ -49,8 +50,11 @@ struct TimingResult {
 
 /// @brief Total time by the chosen method; every segment starts and ends at rest for seed and
 /// exact stop; optimal stops only at corners (tangent breaks) and at both ends of the path.
+/// If `cancel` is given it is polled between passes and segments; a cancelled computation
+/// returns the error {"", "cancelled"}.
 [[nodiscard]] Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& limits,
-                                                 TimingMethod method);
+                                                 TimingMethod method,
+                                                 const std::atomic<bool>* cancel = nullptr);
 
 /// @brief The seed method on one segment (math.md §6): steps of `seedStep` from rest up to the
 /// midpoint, each at the largest speed that keeps every axis within its limit, doubled.

@@ -1,0 +1,241 @@
+#include "views/machining_panel.h"
+
+#include <qcustomplot.h>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include "document/commands.h"
+#include "models/delegates.h"
+#include "views/palette.h"
+
+namespace cam {
+namespace {
+
+QDoubleSpinBox* spinBox(QWidget* parent, double lo, double hi, const QString& suffix,
+                        const QString& tip) {
+    auto* s = new QDoubleSpinBox(parent);
+    s->setRange(lo, hi);
+    s->setDecimals(suffix == " mm" ? 3 : 1);
+    s->setSuffix(suffix);
+    s->setToolTip(tip);
+    s->setAccelerated(true);
+    s->setKeyboardTracking(false);
+    return s;
+}
+
+QCustomPlot* smallPlot(QWidget* parent, const QString& xLabel, const QString& yLabel) {
+    auto* p = new QCustomPlot(parent);
+    p->setMinimumHeight(150);
+    p->xAxis->setLabel(xLabel);
+    p->yAxis->setLabel(yLabel);
+    p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    p->axisRect()->setRangeZoom(Qt::Horizontal);
+    p->axisRect()->setRangeDrag(Qt::Horizontal);
+    return p;
+}
+
+}  // namespace
+
+MachiningPanel::MachiningPanel(ProjectDocument* document, QWidget* parent)
+    : QWidget(parent), m_document(document) {
+    auto* layout = new QVBoxLayout(this);
+    m_addButton = new QPushButton(tr("Add Machining Limits"), this);
+    m_addButton->setObjectName("addMachiningButton");
+    m_addButton->setToolTip(tr("This project has no machining limits yet: add sensible defaults"));
+    layout->addWidget(m_addButton);
+
+    m_form = new QWidget(this);
+    auto* grid = new QGridLayout(m_form);
+    grid->setContentsMargins(0, 0, 0, 0);
+    const char* axes[] = {"X", "Y", "Z"};
+    grid->addWidget(new QLabel(tr("Acceleration"), m_form), 0, 0);
+    for (int i = 0; i < 3; ++i) {
+        m_accel[i] = spinBox(m_form, 0.0, 1e9, " mm/s²",
+                             tr("Acceleration limit of the %1 axis").arg(axes[i]));
+        if (i == 2) m_accel[i]->setSpecialValueText(tr("none"));
+        grid->addWidget(m_accel[i], 0, i + 1);
+    }
+    m_vmaxEnabled = new QCheckBox(tr("Velocity"), m_form);
+    m_vmaxEnabled->setToolTip(tr("Limit the velocity of each axis"));
+    grid->addWidget(m_vmaxEnabled, 1, 0);
+    for (int i = 0; i < 3; ++i) {
+        m_vmax[i] =
+            spinBox(m_form, 0.001, 1e9, " mm/s", tr("Velocity limit of the %1 axis").arg(axes[i]));
+        grid->addWidget(m_vmax[i], 1, i + 1);
+    }
+    m_feed = spinBox(m_form, 0.001, 1e9, " mm/s", tr("Feed ceiling along the path"));
+    m_toolRadius = spinBox(m_form, 0.0, 1e3, " mm",
+                           tr("Radius of the tool: the path is the "
+                              "contour offset by it"));
+    m_step = spinBox(m_form, 0.001, 1e3, " mm", tr("Step of the seed method"));
+    grid->addWidget(new QLabel(tr("Feed"), m_form), 2, 0);
+    grid->addWidget(m_feed, 2, 1);
+    grid->addWidget(new QLabel(tr("Tool radius"), m_form), 2, 2);
+    grid->addWidget(m_toolRadius, 2, 3);
+    grid->addWidget(new QLabel(tr("Seed step"), m_form), 3, 0);
+    grid->addWidget(m_step, 3, 1);
+    m_method = new QComboBox(m_form);
+    m_method->setObjectName("plotMethodComboBox");
+    m_method->addItems({tr("Seed"), tr("Exact stop"), tr("Optimal")});
+    m_method->setCurrentIndex(2);
+    m_method->setToolTip(tr("The method whose feed and accelerations are plotted"));
+    grid->addWidget(new QLabel(tr("Plot"), m_form), 3, 2);
+    grid->addWidget(m_method, 3, 3);
+    layout->addWidget(m_form);
+
+    auto* times = new QHBoxLayout;
+    const QString names[] = {tr("Seed"), tr("Exact stop"), tr("Optimal")};
+    const QString tips[] = {
+        tr("The seed document's 1 mm steps from rest to mid-segment, doubled: a legacy estimate "
+           "that ignores the speed rising within a step"),
+        tr("Rest to rest on every segment"),
+        tr("Minimum time along the whole path, stopping only at corners")};
+    for (int m = 0; m < 3; ++m) {
+        m_times[m] = new QLabel(this);
+        m_times[m]->setObjectName(QString("time%1").arg(m));
+        m_times[m]->setToolTip(tips[m]);
+        m_times[m]->setAlignment(Qt::AlignCenter);
+        m_times[m]->setProperty("name", names[m]);
+        times->addWidget(m_times[m]);
+    }
+    layout->addLayout(times);
+    m_status = new QLabel(this);
+    m_status->setWordWrap(true);
+    layout->addWidget(m_status);
+
+    m_feedPlot = smallPlot(this, tr("path [mm]"), tr("feed [mm/s]"));
+    m_feedPlot->addGraph()->setPen(QPen(QColor(40, 40, 40), 1.2));
+    m_accelPlot = smallPlot(this, tr("path [mm]"), tr("axis accel. [mm/s²]"));
+    for (int i = 0; i < 3; ++i) {
+        QCPGraph* g = m_accelPlot->addGraph();
+        g->setPen(QPen(segmentColor(i), 1.0));
+        g->setName(QString("a_%1").arg(QChar('x' + i)));
+    }
+    m_accelPlot->legend->setVisible(true);
+    m_accelPlot->legend->setFont(QFont(font().family(), 8));
+    m_accelPlot->legend->setBrush(QColor(255, 255, 255, 200));
+    layout->addWidget(m_feedPlot, 1);
+    layout->addWidget(m_accelPlot, 1);
+
+    connect(m_addButton, &QPushButton::clicked, this, [this] {
+        m_document->undoStack()->push(new SetMachining(m_document, MachiningSpec{}));
+    });
+    for (QDoubleSpinBox* s : {m_accel[0], m_accel[1], m_accel[2], m_vmax[0], m_vmax[1], m_vmax[2],
+                              m_feed, m_toolRadius, m_step}) {
+        connect(s, &QDoubleSpinBox::valueChanged, this, [this] {
+            if (m_refreshing) return;
+            if (m_gesture == 0) m_gesture = nextGestureId();
+            push();
+        });
+        connect(s, &QDoubleSpinBox::editingFinished, this, [this] { m_gesture = 0; });
+    }
+    connect(m_vmaxEnabled, &QCheckBox::toggled, this, [this] {
+        if (!m_refreshing) push();
+    });
+    connect(m_method, &QComboBox::currentIndexChanged, this, &MachiningPanel::plotMethodChanged);
+    connect(document, &ProjectDocument::machiningChanged, this, &MachiningPanel::refresh);
+    refresh();
+}
+
+TimingMethod MachiningPanel::plotMethod() const {
+    return static_cast<TimingMethod>(m_method->currentIndex());
+}
+
+void MachiningPanel::push() {
+    MachiningSpec m;
+    m.axisAccel = {m_accel[0]->value(), m_accel[1]->value()};
+    if (m_accel[2]->value() > 0) m.axisAccel.push_back(m_accel[2]->value());
+    if (m_vmaxEnabled->isChecked()) {
+        for (std::size_t i = 0; i < m.axisAccel.size(); ++i) {
+            m.axisVmax.push_back(m_vmax[i]->value());
+        }
+    }
+    m.feedMax = m_feed->value();
+    m.toolRadius = m_toolRadius->value();
+    m.step = m_step->value();
+    m_document->undoStack()->push(new SetMachining(m_document, m, m_gesture));
+}
+
+void MachiningPanel::refresh() {
+    m_refreshing = true;
+    const auto& spec = m_document->project().machining;
+    m_addButton->setVisible(!spec);
+    m_form->setVisible(spec.has_value());
+    m_feedPlot->setVisible(spec.has_value());
+    m_accelPlot->setVisible(spec.has_value());
+    for (QLabel* l : m_times) l->setVisible(spec.has_value());
+    if (spec) {
+        for (std::size_t i = 0; i < 3; ++i) {
+            m_accel[i]->setValue(i < spec->axisAccel.size() ? spec->axisAccel[i] : 0.0);
+            m_vmax[i]->setValue(i < spec->axisVmax.size() ? spec->axisVmax[i] : 100.0);
+            m_vmax[i]->setEnabled(!spec->axisVmax.empty());
+        }
+        m_vmaxEnabled->setChecked(!spec->axisVmax.empty());
+        m_feed->setValue(spec->feedMax);
+        m_toolRadius->setValue(spec->toolRadius);
+        m_step->setValue(spec->step);
+        m_status->setText(tr("Computing…"));
+    } else {
+        m_status->setText(tr("Machining times need the machine's axis limits."));
+    }
+    m_refreshing = false;
+}
+
+void MachiningPanel::setPending() {
+    if (m_document->project().machining) m_status->setText(tr("Computing…"));
+}
+
+void MachiningPanel::setOutcome(const TimingOutcomePtr& outcome) {
+    if (!outcome->errors.empty()) {
+        QStringList lines;
+        for (const Diagnostic& d : outcome->errors) lines << QString::fromStdString(d.text());
+        m_status->setText(tr("No machining time: %1").arg(lines.join("; ")));
+        for (QLabel* l : m_times) l->setText("—");
+        return;
+    }
+    const int plotted = static_cast<int>(outcome->plotted);
+    for (int m = 0; m < 3; ++m) {
+        const QString text =
+            QStringLiteral("%1\n%2 s")
+                .arg(m_times[m]->property("name").toString(),
+                     QLocale().toString(outcome->timesS[static_cast<std::size_t>(m)], 'f', 4));
+        m_times[m]->setText(text);
+        QFont f = m_times[m]->font();
+        f.setBold(m == plotted);
+        m_times[m]->setFont(f);
+    }
+    m_status->setText(tr("Path %1 mm (contour offset by the tool radius); optimal plan on %2 "
+                         "grid points; computed in %3 ms")
+                          .arg(QLocale().toString(outcome->lengthMm, 'f', 2),
+                               QLocale().toString(static_cast<qlonglong>(outcome->gridPoints)),
+                               QLocale().toString(outcome->computeMs, 'f', 0)));
+    m_feedPlot->graph(0)->setData(outcome->feed);
+    m_feedPlot->rescaleAxes();
+    m_feedPlot->yAxis->setRangeLower(0.0);
+    m_feedPlot->yAxis->scaleRange(1.08, m_feedPlot->yAxis->range().lower);
+    m_feedPlot->replot(QCustomPlot::rpQueuedReplot);
+    double limit = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        m_accelPlot->graph(i)->setData(outcome->accel[static_cast<std::size_t>(i)]);
+        if (std::isfinite(outcome->limits.accel[i])) {
+            limit = std::max(limit, outcome->limits.accel[i]);
+        }
+    }
+    m_accelPlot->rescaleAxes();
+    m_accelPlot->yAxis->setRange(-1.1 * limit, 1.1 * limit);
+    m_accelPlot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+QString MachiningPanel::timesText() const {
+    QStringList parts;
+    for (QLabel* l : m_times) parts << l->text().replace('\n', ' ');
+    return parts.join(" · ");
+}
+
+}  // namespace cam
