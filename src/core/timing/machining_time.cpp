@@ -80,7 +80,7 @@ struct SegmentGrid {
     bool stopAtStart = false;   ///< the path starts here, or the tangent breaks (a corner)
     bool isArc = false;
     PointConstraints inner;     ///< lines: the same at every inner point
-    PointConstraints boundary;  ///< at the first point: this segment's and the previous one's
+    PointConstraints boundary;  ///< at the first point: capped by the previous segment's speed
     // Arcs: angle of the first point and its step, about the centre.
     double theta0 = 0.0, dtheta = 0.0, sign = 1.0, radius = 1.0;
 };
@@ -111,8 +111,13 @@ std::vector<SegmentGrid> makeGrid(const ToolPath& path, const MachineLimits& lim
         g.inner = constraintsOf(seg.tangent(0.0), seg.curvature(0.0), lim);
         g.boundary = g.inner;
         if (k > 0) {
+            // Without a jerk limit the path acceleration may jump at a joint; only the speed is
+            // shared. So the previous segment bounds the joint's speed (its maximum-velocity
+            // curve there), not the acceleration that leaves the joint.
             const PathSegment& prev = path.segments[k - 1];
-            g.boundary.add(prev.tangent(prev.length()), prev.curvature(prev.length()), lim);
+            const PointConstraints left =
+                constraintsOf(prev.tangent(prev.length()), prev.curvature(prev.length()), lim);
+            g.boundary.xCap = std::min(g.boundary.xCap, left.maxX());
         }
         if (g.isArc) {
             g.sign = seg.sweep >= 0 ? 1.0 : -1.0;
