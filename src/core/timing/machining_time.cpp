@@ -170,11 +170,6 @@ private:
     std::size_t m_steps = 0;
 };
 
-double intervalTime(double delta, double x0, double x1) {
-    const double den = std::sqrt(std::max(x0, 0.0)) + std::sqrt(std::max(x1, 0.0));
-    return den > 0 ? 2.0 * delta / den : kUnlimited;
-}
-
 struct OptimalRun {
     OptimalProfile profile;
     std::vector<SegmentTiming> segments;
@@ -222,11 +217,15 @@ OptimalRun runOptimal(const ToolPath& path, const MachineLimits& lim, std::size_
         st.lengthMm = path.segments[k].length();
         st.entrySpeed = std::sqrt(x[g.first]);
         double segmentTime = 0.0;
+        double rootPrev = std::sqrt(x[g.first]);  // sqrt(x) of the interval's start, carried
         auto step = [&](std::size_t j, const PointConstraints& pc) {
             const std::size_t i = g.first + j;
             const double u = std::min(pc.uMax(x[i]), (hi[i + 1] - x[i]) / (2.0 * g.delta));
             x[i + 1] = std::clamp(x[i] + 2.0 * g.delta * u, 0.0, hi[i + 1]);
-            segmentTime += intervalTime(g.delta, x[i], x[i + 1]);
+            const double root = std::sqrt(x[i + 1]);
+            // The exact time of an interval with x linear in s: 2Δ/(sqrt(x0) + sqrt(x1)).
+            segmentTime += rootPrev + root > 0 ? 2.0 * g.delta / (rootPrev + root) : kUnlimited;
+            rootPrev = root;
         };
         step(0, g.boundary);
         if (g.isArc) {
