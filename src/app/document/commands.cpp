@@ -65,51 +65,18 @@ ReplaceContour::ReplaceContour(ProjectDocument* document, std::vector<SegmentSpe
 void ReplaceContour::undo() { m_document->applyContour(m_before); }
 void ReplaceContour::redo() { m_document->applyContour(m_after); }
 
-SetMotion::SetMotion(ProjectDocument* document, MotionSpec after, int gesture, QUndoCommand* parent)
-    : QUndoCommand(QCoreApplication::translate("cam::Commands", "Change speed"), parent),
-      m_document(document),
-      m_before(document->project().motion),
-      m_after(after),
-      m_gesture(gesture) {}
+SetMotion::SetMotion(ProjectDocument* document, MotionSpec after, int gesture)
+    : SetProjectValue(document, after, QCoreApplication::translate("cam::Commands", "Change speed"),
+                      gesture) {}
 
-void SetMotion::undo() { m_document->applyMotion(m_before); }
-void SetMotion::redo() { m_document->applyMotion(m_after); }
-
-bool SetMotion::mergeWith(const QUndoCommand* other) {
-    const auto* o = static_cast<const SetMotion*>(other);
-    if (m_gesture == 0 || o->m_gesture != m_gesture) return false;
-    m_after = o->m_after;
-    setObsolete(m_after == m_before);
-    return true;
-}
-
-SetSamplesPerTurn::SetSamplesPerTurn(ProjectDocument* document, std::optional<std::int64_t> after,
-                                     QUndoCommand* parent)
-    : QUndoCommand(QCoreApplication::translate("cam::Commands", "Change samples per turn"), parent),
-      m_document(document),
-      m_before(document->project().samplesPerTurn),
-      m_after(after) {}
-
-void SetSamplesPerTurn::undo() { m_document->applySamplesPerTurn(m_before); }
-void SetSamplesPerTurn::redo() { m_document->applySamplesPerTurn(m_after); }
+SetSamplesPerTurn::SetSamplesPerTurn(ProjectDocument* document, std::optional<std::int64_t> after)
+    : SetProjectValue(document, after,
+                      QCoreApplication::translate("cam::Commands", "Change samples per turn"), 0) {}
 
 SetMachining::SetMachining(ProjectDocument* document, std::optional<MachiningSpec> after,
-                           int gesture, QUndoCommand* parent)
-    : QUndoCommand(QCoreApplication::translate("cam::Commands", "Change machining limits"), parent),
-      m_document(document),
-      m_before(document->project().machining),
-      m_after(std::move(after)),
-      m_gesture(gesture) {}
-
-void SetMachining::undo() { m_document->applyMachining(m_before); }
-void SetMachining::redo() { m_document->applyMachining(m_after); }
-
-bool SetMachining::mergeWith(const QUndoCommand* other) {
-    const auto* o = static_cast<const SetMachining*>(other);
-    if (m_gesture == 0 || o->m_gesture != m_gesture) return false;
-    m_after = o->m_after;
-    setObsolete(m_after == m_before);
-    return true;
-}
+                           int gesture)
+    : SetProjectValue(document, std::move(after),
+                      QCoreApplication::translate("cam::Commands", "Change machining limits"),
+                      gesture) {}
 
 }  // namespace cam

@@ -110,52 +110,57 @@ private:
     std::vector<SegmentSpec> m_after;
 };
 
-/// @brief Sets the turning speed (and its unit); edits with the same non-zero gesture merge.
-class SetMotion : public QUndoCommand {
+/// @brief One command for every project-wide value: keeps the value before and after and swaps
+/// them through the document's `apply` function. Edits with the same non-zero gesture (one
+/// spin-box session) merge when the value has a merge id.
+template <class T, T Project::*Field, void (ProjectDocument::*Apply)(const T&), MergeId Id>
+class SetProjectValue : public QUndoCommand {
 public:
-    SetMotion(ProjectDocument* document, MotionSpec after, int gesture = 0,
-              QUndoCommand* parent = nullptr);
-    void undo() override;
-    void redo() override;
-    [[nodiscard]] int id() const override { return static_cast<int>(MergeId::EditMotion); }
-    bool mergeWith(const QUndoCommand* other) override;
+    SetProjectValue(ProjectDocument* document, T after, const QString& text, int gesture)
+        : QUndoCommand(text),
+          m_document(document),
+          m_before(document->project().*Field),
+          m_after(std::move(after)),
+          m_gesture(gesture) {}
+    void undo() override { (m_document->*Apply)(m_before); }
+    void redo() override { (m_document->*Apply)(m_after); }
+    [[nodiscard]] int id() const override { return static_cast<int>(Id); }
+    bool mergeWith(const QUndoCommand* other) override {
+        const auto* o = static_cast<const SetProjectValue*>(other);
+        if (m_gesture == 0 || o->m_gesture != m_gesture) return false;
+        m_after = o->m_after;
+        setObsolete(m_after == m_before);  // stepped back to where it started
+        return true;
+    }
 
 private:
     ProjectDocument* m_document;
-    MotionSpec m_before;
-    MotionSpec m_after;
+    T m_before;
+    T m_after;
     int m_gesture;
 };
 
-class SetSamplesPerTurn : public QUndoCommand {
+/// @brief Sets the turning speed and its unit.
+class SetMotion : public SetProjectValue<MotionSpec, &Project::motion,
+                                         &ProjectDocument::applyMotion, MergeId::EditMotion> {
 public:
-    SetSamplesPerTurn(ProjectDocument* document, std::optional<std::int64_t> after,
-                      QUndoCommand* parent = nullptr);
-    void undo() override;
-    void redo() override;
-
-private:
-    ProjectDocument* m_document;
-    std::optional<std::int64_t> m_before;
-    std::optional<std::int64_t> m_after;
+    SetMotion(ProjectDocument* document, MotionSpec after, int gesture = 0);
 };
 
-/// @brief Sets, changes or removes the machining limits; edits with the same non-zero gesture
-/// (one spin-box session) merge.
-class SetMachining : public QUndoCommand {
+/// @brief Sets the samples per turn (or goes back to the default).
+class SetSamplesPerTurn
+    : public SetProjectValue<std::optional<std::int64_t>, &Project::samplesPerTurn,
+                             &ProjectDocument::applySamplesPerTurn, MergeId::None> {
 public:
-    SetMachining(ProjectDocument* document, std::optional<MachiningSpec> after, int gesture = 0,
-                 QUndoCommand* parent = nullptr);
-    void undo() override;
-    void redo() override;
-    [[nodiscard]] int id() const override { return static_cast<int>(MergeId::EditMachining); }
-    bool mergeWith(const QUndoCommand* other) override;
+    SetSamplesPerTurn(ProjectDocument* document, std::optional<std::int64_t> after);
+};
 
-private:
-    ProjectDocument* m_document;
-    std::optional<MachiningSpec> m_before;
-    std::optional<MachiningSpec> m_after;
-    int m_gesture;
+/// @brief Sets, changes or removes the machining limits.
+class SetMachining
+    : public SetProjectValue<std::optional<MachiningSpec>, &Project::machining,
+                             &ProjectDocument::applyMachining, MergeId::EditMachining> {
+public:
+    SetMachining(ProjectDocument* document, std::optional<MachiningSpec> after, int gesture = 0);
 };
 
 }  // namespace cam

@@ -75,7 +75,7 @@ void ProjectDocument::applyMotion(const MotionSpec& motion) {
     afterChange();
 }
 
-void ProjectDocument::applySamplesPerTurn(std::optional<std::int64_t> samples) {
+void ProjectDocument::applySamplesPerTurn(const std::optional<std::int64_t>& samples) {
     m_project.samplesPerTurn = samples;
     emit motionChanged();
     afterChange();

@@ -40,7 +40,7 @@ public:
     void applyMove(int from, int to);
     void applyContour(const std::vector<SegmentSpec>& contour);
     void applyMotion(const MotionSpec& motion);
-    void applySamplesPerTurn(std::optional<std::int64_t> samples);
+    void applySamplesPerTurn(const std::optional<std::int64_t>& samples);
     void applyMachining(const std::optional<MachiningSpec>& machining);
 
 signals:
