@@ -6,7 +6,11 @@ spec/project-format.md:
   * every joint, including last -> first, closes within 1e-6 mm (C0);
   * arcs: the ray meets the circle (D >= 0) with r > 0 across the window;
   * lines: do not pass through the origin, r > 0 across the window, and the
-    window equals the polar angles of from/to.
+    window equals the polar angles of from/to;
+  * bezier/hermite: end points off the origin, r > 0 across the window, the
+    window equals the polar angles of P0/P3 (less than one turn), and the ray
+    meets the curve (s in [0, 1], in front of the origin) exactly once at
+    SPLINE_RAY_ANGLES angles strictly inside the window.
 
 Also prints, for information, the jump of dr/dphi at each joint (a tangent
 break; 0 for tangent joints).
@@ -28,6 +32,9 @@ import polar_reference as ref  # noqa: E402
 
 C0_TOLERANCE_MM = mpf("1e-6")
 SAMPLES_PER_WINDOW = 400
+SPLINE_RAY_ANGLES = 401
+# Roots of u x B(s) = 0 count as inside [0, 1] up to this (root-finder noise).
+SPLINE_PARAMETER_NOISE = mpf("1e-30")
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
@@ -40,6 +47,44 @@ def angle_difference(a, b):
     """a - b folded into (-pi, pi]."""
     d = (a - b) % (2 * mpmath.pi)
     return d - 2 * mpmath.pi if d > mpmath.pi else d
+
+
+def check_spline(seg, where):
+    """Window on the polar angles of P0/P3; exactly one ray hit inside it."""
+    problems = []
+    points = seg["points"]
+    for end, k in (("start", 0), ("end", 3)):
+        a = points[k]
+        if mpmath.hypot(a[0], a[1]) <= C0_TOLERANCE_MM:
+            problems.append(f"{where}: end point P{k} lies on the rotation centre")
+            return problems
+        off = angle_difference(mpmath.atan2(a[1], a[0]), seg[end])
+        if abs(off) > mpf("1e-12"):
+            problems.append(f"{where}: window {end} is {mpmath.nstr(mpmath.degrees(off), 3)}"
+                            f" deg away from the polar angle of P{k}")
+    if not seg["end"] - seg["start"] < 2 * mpmath.pi:
+        problems.append(f"{where}: spline window spans a full turn or more")
+    counts = {}
+    first_bad = None
+    for k in range(SPLINE_RAY_ANGLES):
+        phi = seg["start"] + (seg["end"] - seg["start"]) * (k + 1) / (SPLINE_RAY_ANGLES + 1)
+        try:
+            hits = [h for h in ref.spline_ray_hits(points, phi)
+                    if -SPLINE_PARAMETER_NOISE <= h[0] <= 1 + SPLINE_PARAMETER_NOISE]
+        except ref.ReferenceError as error:
+            problems.append(f"{where}: {error}")
+            break
+        counts[len(hits)] = counts.get(len(hits), 0) + 1
+        if len(hits) != 1 and first_bad is None:
+            first_bad = (len(hits), phi)
+    if first_bad is not None:
+        bad = SPLINE_RAY_ANGLES - counts.get(1, 0)
+        problems.append(f"{where}: the ray meets the curve {first_bad[0]} times at "
+                        f"{mpmath.nstr(mpmath.degrees(first_bad[1]), 10)} deg, and not exactly "
+                        f"once at {bad} of {SPLINE_RAY_ANGLES} angles (need exactly once)")
+    print(f"  {where} ({seg['type']}): ray hits per angle at {SPLINE_RAY_ANGLES} angles "
+          f"inside the window: {dict(sorted(counts.items()))}")
+    return problems
 
 
 def check_file(path):
@@ -97,6 +142,8 @@ def check_file(path):
                                     f" deg away from the polar angle of '{key}'")
             if not seg["end"] - seg["start"] < mpmath.pi:
                 problems.append(f"{where}: line window spans 180 deg or more")
+        if seg["type"] in ("bezier", "hermite"):
+            problems += check_spline(seg, where)
 
     print(f"  max C0 gap {mpmath.nstr(max_gap, 3)} mm")
     for problem in problems:

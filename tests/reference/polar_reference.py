@@ -7,7 +7,8 @@ requested time t, the state of a knife-edge follower on a fixed radial ray
 
 Independence from the C++ engine is the point of this script:
   * r(phi) is computed directly from the geometry (intersect the ray with the
-    circle or the line), with mpmath at 50 significant digits;
+    circle, the line, or the cubic Bezier / Hermite curve), with mpmath at 50
+    significant digits;
   * r', r'', r''' are NOT taken from the closed forms of math.md; they come
     from mpmath.diff, a high-precision numerical derivative of our own r(phi)
     of the segment that owns phi.
@@ -15,7 +16,8 @@ Independence from the C++ engine is the point of this script:
 Usage:
     /usr/bin/python3 polar_reference.py PROJECT.cam.json --t 0.05 --t 0.15
 
-Only arcs and lines are supported (no Bézier/Hermite segments).
+Segment types: "arc", "line", "bezier" and "hermite" (a Hermite segment is
+the Bezier with P1 = p0 + t0/3, P2 = p3 - t1/3, spec/math.md §4).
 """
 
 import argparse
@@ -96,12 +98,122 @@ def line_radius_function(a, b):
     return r
 
 
+def _cubic_real_roots(coefficients):
+    """Real roots of sum(coefficients[i] * s**i), to the working precision.
+
+    mpmath.polyroots locates the roots; each real one is then polished by
+    Newton's method on the full cubic (which also undoes the effect of
+    dropping a leading coefficient that vanishes at the working precision).
+    """
+    def value_and_slope(s):
+        value = slope = mpf(0)
+        for c in reversed(coefficients):
+            slope = slope * s + value
+            value = value * s + c
+        return value, slope
+
+    size = max(abs(c) for c in coefficients)
+    if size == 0:
+        return None  # identically zero: the ray runs along the curve
+    reduced = list(reversed(coefficients))  # highest degree first
+    while abs(reduced[0]) <= size * mp.eps * 2 ** 20:
+        reduced = reduced[1:]
+    if len(reduced) == 1:
+        return []
+    try:
+        roots = mpmath.polyroots(reduced, maxsteps=500, extraprec=2 * mp.prec)
+    except mpmath.libmp.NoConvergence as error:
+        raise ReferenceError(f"cubic root finder did not converge: {error}") from None
+    imaginary_tolerance = mpf(10) ** (-(mp.dps // 2))
+    real_roots = []
+    for z in roots:
+        if abs(mpmath.im(z)) > imaginary_tolerance * (1 + abs(z)):
+            continue
+        s = mpmath.re(z)
+        for _ in range(60):
+            value, slope = value_and_slope(s)
+            if slope == 0:
+                break
+            step = value / slope
+            s -= step
+            if abs(step) <= mp.eps * 4 * (1 + abs(s)):
+                break
+        real_roots.append(s)
+    return real_roots
+
+
+def bezier_point(points, s):
+    """B(s) = sum of the cubic Bernstein polynomials times P0..P3."""
+    t = 1 - s
+    weights = (t * t * t, 3 * s * t * t, 3 * s * s * t, s * s * s)
+    return (sum(w * p[0] for w, p in zip(weights, points)),
+            sum(w * p[1] for w, p in zip(weights, points)))
+
+
+def spline_ray_hits(points, phi):
+    """Every (s, r) where the full ray at phi meets the cubic B(s), s real.
+
+    u x B(s) is a cubic in s whose Bernstein coefficients are u x P_i; its
+    real roots with u.B(s) > 0 are on the ray (not behind the origin), and r
+    is u.B(s). s is not restricted to [0, 1] here; callers select.
+    """
+    u = (mpmath.cos(phi), mpmath.sin(phi))
+    c0, c1, c2, c3 = (_cross(u, p) for p in points)
+    power = [c0, 3 * (c1 - c0), 3 * (c0 - 2 * c1 + c2), c3 - 3 * c2 + 3 * c1 - c0]
+    roots = _cubic_real_roots(power)
+    if roots is None:
+        raise ReferenceError(
+            f"ray at {mpmath.nstr(mpmath.degrees(phi), 12)} deg runs along the curve")
+    hits = []
+    for s in roots:
+        b = bezier_point(points, s)
+        r = u[0] * b[0] + u[1] * b[1]
+        if r > 0:
+            hits.append((s, r))
+    return sorted(hits)
+
+
+# A root this close outside [0, 1] still belongs to the segment: the end
+# points come out as s = -1e-50 or so, and mpmath.diff steps a hair outside
+# the window at a joint (by ~1e-56 in phi, so in s as well).
+SPLINE_PARAMETER_SLACK = mpf("1e-20")
+
+
+def spline_radius_function(points):
+    """r(phi) of the ray from the origin meeting the cubic Bezier P0..P3.
+
+    The unique s in [0, 1] (within SPLINE_PARAMETER_SLACK) with u x B(s) = 0
+    and u.B(s) > 0; r = u.B(s). No hit or more than one is an error.
+    """
+    def r(phi):
+        inside = [(s, r) for s, r in spline_ray_hits(points, phi)
+                  if -SPLINE_PARAMETER_SLACK <= s <= 1 + SPLINE_PARAMETER_SLACK]
+        if len(inside) != 1:
+            raise ReferenceError(
+                f"ray at {mpmath.nstr(mpmath.degrees(phi), 12)} deg meets the curve "
+                f"{len(inside)} times (need exactly once)")
+        return inside[0][1]
+
+    return r
+
+
+def _default_window(a, b, previous_end):
+    """Window from the polar angles of a and b, counter-clockwise, continuing
+    from the previous segment's window (lines and splines without one)."""
+    angle_from = mpmath.atan2(a[1], a[0])
+    start = previous_end if previous_end is not None else angle_from
+    sweep = (mpmath.atan2(b[1], b[0]) - angle_from) % (2 * mpmath.pi)
+    return start, start + sweep
+
+
 def load_project(path):
     """Return {"omega": rad/s, "turn": rad, "segments": [...]}.
 
     Each segment is a dict with "index", "type", "r" (function of phi in rad),
     "start" and "end" (window in rad), and its geometry in mm ("center",
-    "radius", "branch" for arcs; "from", "to" for lines).
+    "radius", "branch" for arcs; "from", "to" for lines; "points" = the four
+    Bezier control points for bezier and hermite, plus "p0", "t0", "p3",
+    "t1" for hermite).
     """
     doc = _read_json(path)
     units = doc.get("units", {})
@@ -153,10 +265,28 @@ def load_project(path):
             else:
                 # Default window: polar angles of from/to, counter-clockwise,
                 # continuing from the previous segment's window.
-                angle_from = mpmath.atan2(a[1], a[0])
-                start = previous_end if previous_end is not None else angle_from
-                sweep = (mpmath.atan2(b[1], b[0]) - angle_from) % (2 * mpmath.pi)
-                end = start + sweep
+                start, end = _default_window(a, b, previous_end)
+        elif kind in ("bezier", "hermite"):
+            if kind == "bezier":
+                raw = seg["points"]
+                if not isinstance(raw, list) or len(raw) != 4:
+                    raise ReferenceError(f"{where}.points: expected four points [x, y]")
+                points = [_point(p, scale, f"{where}.points[{k}]") for k, p in enumerate(raw)]
+                geometry = {"points": points}
+            else:
+                p0, t0, p3, t1 = (_point(seg[key], scale, f"{where}.{key}")
+                                  for key in ("p0", "t0", "p3", "t1"))
+                # spec/math.md §4: same curve as the Bezier P1 = p0 + t0/3, P2 = p3 - t1/3.
+                points = [p0, (p0[0] + t0[0] / 3, p0[1] + t0[1] / 3),
+                          (p3[0] - t1[0] / 3, p3[1] - t1[1] / 3), p3]
+                geometry = {"points": points, "p0": p0, "t0": t0, "p3": p3, "t1": t1}
+            r = spline_radius_function(points)
+            if "phi_start" in seg and "phi_end" in seg:
+                start = seg["phi_start"] * to_rad
+                end = seg["phi_end"] * to_rad
+            else:
+                # Default window: polar angles of P0/P3, as for lines.
+                start, end = _default_window(points[0], points[3], previous_end)
         else:
             raise ReferenceError(f"{where}.type: {kind!r} is not supported by this reference")
         if not start < end:

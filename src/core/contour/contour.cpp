@@ -27,6 +27,7 @@ Result<Contour> Contour::build(const Project& project, ValidationOptions options
             seg.line = Line{spec.from, spec.to};
             seg.lineKernel = seg.line.kernel();
         }
+        if (isSpline(spec.type)) seg.bezierKernel = bezierOf(spec).kernel();
         seg.phiStart = degToRad(spec.phiStartDeg);
         seg.phiEnd = degToRad(spec.phiEndDeg);
         contour.m_segments.push_back(seg);

@@ -3,11 +3,13 @@
 /// @brief The contour as the engine sees it: segments with polar windows in radians.
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
 #include "common/diagnostic.h"
 #include "geometry/arc.h"
+#include "geometry/bezier.h"
 #include "geometry/line.h"
 #include "project/project.h"
 #include "project/validate.h"
@@ -21,12 +23,31 @@ struct ContourSegment {
     Line line;
     Arc::Kernel arcKernel;
     Line::Kernel lineKernel;
+    CubicBezier::Kernel bezierKernel;  ///< Bézier and Hermite segments
     double phiStart = 0.0;
     double phiEnd = 0.0;
 
     [[nodiscard]] PolarDerivatives evaluate(double cosPhi, double sinPhi) const {
-        return type == SegmentType::Arc ? arcKernel(cosPhi, sinPhi) : lineKernel(cosPhi, sinPhi);
+        switch (type) {
+            case SegmentType::Arc:
+                return arcKernel(cosPhi, sinPhi);
+            case SegmentType::Line:
+                return lineKernel(cosPhi, sinPhi);
+            default:
+                return bezierKernel(cosPhi, sinPhi, splineHint(cosPhi, sinPhi));
+        }
     }
+    /// @brief Where along a spline the ray at this direction should meet it: the angle's place in
+    /// the window. Chooses between hits at the window ends, where a ray may touch the curve again.
+    [[nodiscard]] double splineHint(double cosPhi, double sinPhi) const {
+        const double width = phiEnd - phiStart;
+        const double mid = 0.5 * (phiStart + phiEnd);
+        // Angle relative to the window's middle, in (-π, π].
+        const double rel = std::atan2(sinPhi * std::cos(mid) - cosPhi * std::sin(mid),
+                                      cosPhi * std::cos(mid) + sinPhi * std::sin(mid));
+        return 0.5 + rel / width;
+    }
+
     /// @brief The segment's own formula at phi, also just outside its window (one-sided limits).
     [[nodiscard]] PolarDerivatives evaluate(double phi) const;
 };

@@ -102,6 +102,13 @@ Result<std::vector<SegmentSpec>> fitWindows(const std::vector<SegmentSpec>& cont
         const SegmentSpec& right = contour[(k + 1) % n];
         const double current = left.phiEndDeg;
         std::optional<Joint> best;
+        if (isSpline(left.type) || isSpline(right.type)) {
+            // A spline's end points are fixed by its control points: the joint is there.
+            const Vec p = isSpline(left.type) ? endPointsOf(left).second : endPointsOf(right).first;
+            const double angle = current + wrapDeg(radToDeg(std::atan2(p.y(), p.x())) - current);
+            joints[k] = Joint{angle, p};
+            continue;
+        }
         if (sameCurve(left, right)) {
             const double phi = degToRad(current);
             const double r = left.type == SegmentType::Arc

@@ -290,11 +290,52 @@ void readSegment(Reader& rd, const Json& j, const std::string& at, const Units& 
             std::tie(s.phiStartDeg, s.phiEndDeg) = lineWindowDeg(s, previousEndDeg.value_or(0.0));
         }
     } else if (*type == "bezier" || *type == "hermite") {
-        rd.error(at + ".type", "segment type \"" + *type +
-                                   "\" is not supported by this version of Camwright yet");
+        const bool bezier = *type == "bezier";
+        s.type = bezier ? SegmentType::Bezier : SegmentType::Hermite;
+        bool complete = true;
+        if (bezier) {
+            rd.onlyKeys(j, at, {"type", "points", "phi_start", "phi_end"});
+            if (const Json* pts = rd.field(j, at, "points", true)) {
+                if (!pts->is_array() || pts->size() != 4) {
+                    rd.error(at + ".points", "must be an array of four points [x, y]");
+                    complete = false;
+                } else {
+                    for (std::size_t i = 0; i < 4; ++i) {
+                        Json holder = Json::object();
+                        holder["p"] = (*pts)[i];
+                        const auto p =
+                            rd.point(holder, at + ".points[" + std::to_string(i) + "]", "p", true);
+                        // rd.point names "…points[i].p"; the located message is clear enough.
+                        if (p) {
+                            s.controls[i] = *p * units.length;
+                        } else {
+                            complete = false;
+                        }
+                    }
+                }
+            } else {
+                complete = false;
+            }
+        } else {
+            rd.onlyKeys(j, at, {"type", "p0", "t0", "p3", "t1", "phi_start", "phi_end"});
+            const char* keys[] = {"p0", "t0", "p3", "t1"};
+            for (std::size_t i = 0; i < 4; ++i) {
+                if (const auto p = rd.point(j, at, keys[i], true)) {
+                    s.controls[i] = *p * units.length;
+                } else {
+                    complete = false;
+                }
+            }
+        }
+        const bool hasWindow = j.contains("phi_start") || j.contains("phi_end");
+        if (hasWindow) {
+            window(true);
+        } else if (complete) {
+            std::tie(s.phiStartDeg, s.phiEndDeg) = lineWindowDeg(s, previousEndDeg.value_or(0.0));
+        }
     } else {
-        rd.error(at + ".type",
-                 "unknown segment type \"" + *type + "\" (expected \"arc\" or \"line\")");
+        rd.error(at + ".type", "unknown segment type \"" + *type +
+                                   "\" (expected \"arc\", \"line\", \"bezier\" or \"hermite\")");
     }
 }
 
@@ -504,10 +545,20 @@ std::string serializeProject(const Project& p) {
             j["center"] = point(s.center);
             j["radius"] = s.radius;
             j["branch"] = s.branch == Branch::Outer ? "outer" : "inner";
-        } else {
+        } else if (s.type == SegmentType::Line) {
             j["type"] = "line";
             j["from"] = point(s.from);
             j["to"] = point(s.to);
+        } else if (s.type == SegmentType::Bezier) {
+            j["type"] = "bezier";
+            j["points"] = Json::array({point(s.controls[0]), point(s.controls[1]),
+                                       point(s.controls[2]), point(s.controls[3])});
+        } else {
+            j["type"] = "hermite";
+            j["p0"] = point(s.controls[0]);
+            j["t0"] = point(s.controls[1]);
+            j["p3"] = point(s.controls[2]);
+            j["t1"] = point(s.controls[3]);
         }
         j["phi_start"] = s.phiStartDeg;
         j["phi_end"] = s.phiEndDeg;

@@ -170,8 +170,12 @@ bool sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn
         const auto segIndex = static_cast<std::int32_t>(seg);
         if (s.type == SegmentType::Arc) {
             runArcSegment(s.arcKernel, o, ct, st, cb, sb, k, end, omega, dt, segIndex);
-        } else {
+        } else if (s.type == SegmentType::Line) {
             runLineSegment(s.lineKernel, o, ct, st, cb, sb, k, end, omega, dt, segIndex);
+        } else {
+            // Splines solve a cubic per sample: no vectorised kernel, the plain loop.
+            const auto spline = [&s](double c, double sn) { return s.evaluate(c, sn); };
+            runSegment(spline, o, ct, st, cb, sb, k, end, omega, dt, segIndex);
         }
         k = end;
     }

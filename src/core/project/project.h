@@ -6,6 +6,7 @@
 /// save → load → save is byte-stable. The engine works on a `Contour` compiled from it.
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -13,10 +14,16 @@
 #include <vector>
 
 #include "geometry/arc.h"
+#include "geometry/bezier.h"
 
 namespace cam {
 
-enum class SegmentType { Arc, Line };
+enum class SegmentType { Arc, Line, Bezier, Hermite };
+
+/// @brief True for the two spline kinds (both evaluate as a cubic Bézier).
+[[nodiscard]] constexpr bool isSpline(SegmentType t) {
+    return t == SegmentType::Bezier || t == SegmentType::Hermite;
+}
 
 /// @brief One row of the segment table. Fields of the other kinds are kept when the type changes.
 struct SegmentSpec {
@@ -28,12 +35,23 @@ struct SegmentSpec {
     // line
     Eigen::Vector2d from{0.0, 0.0};
     Eigen::Vector2d to{0.0, 0.0};
+    // Bézier: the control points P0..P3. Hermite: p0, t0, p3, t1 (tangents are offsets, the
+    // curve's derivative at s = 0 and 1). Kept as given so files round-trip exactly.
+    std::array<Eigen::Vector2d, 4> controls{Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
+                                            Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
     // polar window [phiStartDeg, phiEndDeg)
     double phiStartDeg = 0.0;
     double phiEndDeg = 0.0;
 
     friend bool operator==(const SegmentSpec&, const SegmentSpec&) = default;
 };
+
+/// @brief The cubic Bézier of a spline segment (Hermite data converted exactly: P1 = p0 + t0/3,
+/// P2 = p3 − t1/3).
+[[nodiscard]] CubicBezier bezierOf(const SegmentSpec& segment);
+
+/// @brief Start and end point of a segment's curve (lines and splines; arcs need their window).
+[[nodiscard]] std::pair<Eigen::Vector2d, Eigen::Vector2d> endPointsOf(const SegmentSpec& segment);
 
 /// @brief How the turning speed is given; exactly one of them is stored in the file.
 enum class SpeedUnit { OmegaRadS, Rpm, PeriodS };

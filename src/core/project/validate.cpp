@@ -122,6 +122,7 @@ private:
     bool checkShape(std::size_t k, bool windowValid) {
         const SegmentSpec& s = m_project.contour[k];
         const std::string at = segmentLocation(k);
+        if (isSpline(s.type)) return checkSpline(k, windowValid);
         if (s.type == SegmentType::Arc) {
             const bool center = checkPoint(at + ".center", s.center);
             const bool radius = checkPositive(at + ".radius", s.radius, true);
@@ -159,6 +160,55 @@ private:
                           " disagrees with the polar angles of from/to (" + deg(start) + " .. " +
                           deg(end) + ")");
             return false;
+        }
+        return true;
+    }
+
+    /// Bézier and Hermite: finite points, the window on the polar angles of the end points, and
+    /// the ray meeting the curve exactly once at every angle inside the window.
+    bool checkSpline(std::size_t k, bool windowValid) {
+        const SegmentSpec& s = m_project.contour[k];
+        const std::string at = segmentLocation(k);
+        const bool bezier = s.type == SegmentType::Bezier;
+        const char* names[] = {".p0", ".t0", ".p3", ".t1"};
+        bool ok = true;
+        for (std::size_t i = 0; i < 4; ++i) {
+            const std::string where =
+                bezier ? at + ".points[" + std::to_string(i) + "]" : at + names[i];
+            ok = checkPoint(where, s.controls[i]) && ok;
+        }
+        if (!ok || !windowValid) return false;
+        const auto [from, to] = endPointsOf(s);
+        if (from.norm() <= kJointToleranceMm || to.norm() <= kJointToleranceMm) {
+            error(at, "an end point lies on the rotation centre");
+            return false;
+        }
+        const auto [start, end] = lineWindowDeg(s, s.phiStartDeg);
+        if (!(end > start)) {
+            error(at, "the curve runs clockwise around the rotation centre (from " + deg(start) +
+                          " to " + deg(end) + "); reverse its points");
+            return false;
+        }
+        if (std::abs(wrapDeg(s.phiStartDeg - start)) > kLineWindowToleranceDeg ||
+            std::abs(wrapDeg(s.phiEndDeg - end)) > kLineWindowToleranceDeg ||
+            std::abs((s.phiEndDeg - s.phiStartDeg) - (end - start)) > kLineWindowToleranceDeg) {
+            error(at, "window " + deg(s.phiStartDeg) + " .. " + deg(s.phiEndDeg) +
+                          " disagrees with the polar angles of its end points (" + deg(start) +
+                          " .. " + deg(end) + ")");
+            return false;
+        }
+        const CubicBezier curve = bezierOf(s);
+        constexpr int kChecks = 256;
+        for (int i = 1; i < kChecks; ++i) {
+            const double phiDeg = s.phiStartDeg + (s.phiEndDeg - s.phiStartDeg) * i / kChecks;
+            const double phi = degToRad(phiDeg);
+            const std::size_t hits = curve.rayParameters(std::cos(phi), std::sin(phi)).size();
+            if (hits != 1) {
+                error(at, "the follower ray meets the curve " + std::to_string(hits) +
+                              " times at " + deg(phiDeg) +
+                              "; inside its window it must meet it exactly once");
+                return false;
+            }
         }
         return true;
     }
@@ -218,9 +268,18 @@ private:
 
     static Eigen::Vector2d pointAt(const SegmentSpec& s, double phiDeg) {
         const double phi = degToRad(phiDeg);
-        const double r = s.type == SegmentType::Arc
-                             ? Arc{s.center, s.radius, s.branch}.evaluate(phi).r
-                             : Line{s.from, s.to}.evaluate(phi).r;
+        double r = 0.0;
+        if (s.type == SegmentType::Arc) {
+            r = Arc{s.center, s.radius, s.branch}.evaluate(phi).r;
+        } else if (s.type == SegmentType::Line) {
+            r = Line{s.from, s.to}.evaluate(phi).r;
+        } else {
+            // At a window end the curve's own end point is meant, even if the ray touches the
+            // curve elsewhere too.
+            const double hint =
+                std::abs(phiDeg - s.phiStartDeg) < std::abs(phiDeg - s.phiEndDeg) ? 0.0 : 1.0;
+            r = bezierOf(s).evaluate(std::cos(phi), std::sin(phi), hint).r;
+        }
         return {r * std::cos(phi), r * std::sin(phi)};
     }
 
@@ -285,11 +344,12 @@ private:
 
 std::string segmentLocation(std::size_t index) { return "contour[" + std::to_string(index) + "]"; }
 
-std::pair<double, double> lineWindowDeg(const SegmentSpec& line, double nearDeg) {
-    double start = radToDeg(std::atan2(line.from.y(), line.from.x()));
+std::pair<double, double> lineWindowDeg(const SegmentSpec& segment, double nearDeg) {
+    const auto [from, to] = endPointsOf(segment);
+    double start = radToDeg(std::atan2(from.y(), from.x()));
     start = nearDeg + wrapDeg(start - nearDeg);
-    const double cross = line.from.x() * line.to.y() - line.from.y() * line.to.x();
-    const double dot = line.from.dot(line.to);
+    const double cross = from.x() * to.y() - from.y() * to.x();
+    const double dot = from.dot(to);
     const double sweep = radToDeg(std::atan2(cross, dot));
     return {start, start + sweep};
 }

@@ -217,6 +217,12 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         starts.push_back(a);
         ends.push_back(b);
         const std::string at = "contour[" + std::to_string(k) + "]";
+        if (isSpline(seg.type)) {
+            errors.push_back({at,
+                              "Bézier and Hermite segments cannot be offset into a tool path "
+                              "of lines and arcs yet; approximate the segment by arcs"});
+            continue;
+        }
         if (seg.type == SegmentType::Line) {
             offset.push_back(PathSegment::line(Vec3(a.point.x() + toolRadius * a.normal.x(),
                                                     a.point.y() + toolRadius * a.normal.y(), 0),

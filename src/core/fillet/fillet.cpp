@@ -1,0 +1,433 @@
+#include "fillet/fillet.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "analysis/analysis.h"
+#include "common/angles.h"
+#include "geometry/arc.h"
+#include "geometry/line.h"
+#include "project/validate.h"
+
+namespace cam {
+namespace {
+
+using Vec = Eigen::Vector2d;
+
+double cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
+Vec perp(const Vec& v) { return {-v.y(), v.x()}; }
+double polarDeg(const Vec& p) { return radToDeg(std::atan2(p.y(), p.x())); }
+
+double mod360(double deg) {
+    const double m = std::fmod(deg, 360.0);
+    return m < 0.0 ? m + 360.0 : m;
+}
+
+/// Angle from direction a to direction b turning in `sense` (+1 ccw, -1 cw), in [0, 2π).
+double sweepRad(const Vec& a, const Vec& b, double sense) {
+    const double t = std::atan2(sense * cross(a, b), a.dot(b));
+    return t < 0.0 ? t + kTwoPi : t;
+}
+
+Vec rotate(const Vec& v, double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
+
+bool isArc(const SegmentSpec& s) { return s.type == SegmentType::Arc; }
+
+/// The point where the follower ray at phi meets the segment.
+Vec pointAt(const SegmentSpec& s, double phiDeg) {
+    const double phi = degToRad(phiDeg);
+    const double r = isArc(s) ? Arc{s.center, s.radius, s.branch}.evaluate(phi).r
+                              : Line{s.from, s.to}.evaluate(phi).r;
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+/// As phi grows the ray's far intersection ("outer") moves counter-clockwise about the circle's
+/// centre and the near one clockwise, so the branch is the direction of travel.
+double arcSense(const SegmentSpec& s) { return s.branch == Branch::Outer ? 1.0 : -1.0; }
+
+/// Unit tangent in the direction of travel (growing phi) at a point of the segment.
+Vec travelDirection(const SegmentSpec& s, const Vec& p) {
+    if (!isArc(s)) return (s.to - s.from).normalized();
+    return (arcSense(s) * perp(p - s.center)).normalized();
+}
+
+/// Signed turning of the tangent along the segment from p to q (in the direction of travel).
+double turnAlong(const SegmentSpec& s, const Vec& p, const Vec& q) {
+    if (!isArc(s)) return 0.0;
+    const double sense = arcSense(s);
+    return sense * sweepRad(p - s.center, q - s.center, sense);
+}
+
+/// Joint K, seen along the direction of travel: `a` ends there, `b` starts there.
+struct Corner {
+    std::size_t left = 0, right = 0;
+    SegmentSpec a, b;
+    double phiJoint = 0.0;  ///< deg, the end of a's window; b's window is shifted by `shift`
+    double shift = 0.0;     ///< 360 at the wrap-around joint K = 0, else 0
+    double widthA = 0.0, widthB = 0.0;
+    Vec joint{0.0, 0.0};
+    double turn = 0.0;  ///< signed turn of the tangent at the joint, rad, in (-π, π)
+    double side = 1.0;  ///< +1: fillet centre left of travel (left turn), -1: right
+    std::string location;
+};
+
+/// Why a radius does not fit.
+enum class Failure { None, NoCircle, LeavesLeft, LeavesRight, RayTwice, TooLarge };
+
+/// One fillet circle tangent to both neighbours, and what is wrong with it (if anything).
+struct Candidate {
+    Vec center{0.0, 0.0}, t1{0.0, 0.0}, t2{0.0, 0.0};
+    double d1 = 0.0;  ///< deg from tangent point 1 forward to the joint
+    double d2 = 0.0;  ///< deg from the joint forward to tangent point 2
+    Failure failure = Failure::NoCircle;
+};
+
+/// Locus of fillet centres next to one neighbour: the line shifted by rho towards the fillet
+/// side, or the concentric circle whose signed radius R - side·sense·rho is negative when the
+/// fillet circle encloses the neighbour's circle.
+struct Offset {
+    bool isLine = true;
+    Vec point{0.0, 0.0}, dir{1.0, 0.0};  // line
+    Vec center{0.0, 0.0};                // circle
+    double signedRadius = 0.0;
+};
+
+Offset offsetOf(const SegmentSpec& s, double side, double rho) {
+    Offset o;
+    if (isArc(s)) {
+        o.isLine = false;
+        o.center = s.center;
+        o.signedRadius = s.radius - side * arcSense(s) * rho;
+    } else {
+        o.dir = (s.to - s.from).normalized();
+        o.point = s.from + side * rho * perp(o.dir);
+    }
+    return o;
+}
+
+/// Where the fillet circle about o touches the neighbour whose offset curve o lies on.
+Vec tangentPoint(const SegmentSpec& s, const Offset& off, const Vec& o, double side, double rho) {
+    if (off.isLine) return o - side * rho * perp(off.dir);
+    return s.center + (o - s.center) * (s.radius / off.signedRadius);
+}
+
+std::vector<Vec> intersect(const Offset& p, const Offset& q) {
+    if (p.isLine && q.isLine) {
+        const double den = cross(p.dir, q.dir);
+        if (std::abs(den) < 1e-15) return {};
+        return {p.point + p.dir * (cross(q.point - p.point, q.dir) / den)};
+    }
+    if (p.isLine != q.isLine) {
+        const Offset& line = p.isLine ? p : q;
+        const Offset& circle = p.isLine ? q : p;
+        const Vec w = line.point - circle.center;
+        const double b = line.dir.dot(w);
+        const double disc = b * b - (w.squaredNorm() - circle.signedRadius * circle.signedRadius);
+        if (disc < 0.0) return {};
+        const double s = std::sqrt(disc);
+        return {line.point + (-b + s) * line.dir, line.point + (-b - s) * line.dir};
+    }
+    const double r1 = std::abs(p.signedRadius), r2 = std::abs(q.signedRadius);
+    const Vec d = q.center - p.center;
+    const double dist = d.norm();
+    if (dist < 1e-15) return {};
+    const Vec e = d / dist;
+    const double a = (dist * dist + r1 * r1 - r2 * r2) / (2.0 * dist);
+    const double h2 = r1 * r1 - a * a;
+    if (h2 < 0.0) return {};
+    const double h = std::sqrt(h2);
+    const Vec base = p.center + a * e;
+    return {base + h * perp(e), base - h * perp(e)};
+}
+
+/// The ray angle grows along the fillet (so the ray meets it once) where
+/// side·(p·(p − o)) = side·rho·(rho + o·e) > 0 for p = o + rho·e: check both ends and the
+/// extreme of o·e if it lies inside the swept interval.
+bool polarMonotone(const Vec& o, double rho, const Vec& t1, double sweep, double side) {
+    auto g = [&](const Vec& e) { return side * (rho + o.dot(e)); };
+    const Vec e1 = (t1 - o) / rho;
+    const Vec e2 = rotate(e1, side * sweep);
+    double worst = std::min(g(e1), g(e2));
+    if (o.norm() > 0.0) {
+        const Vec extreme = -side * o.normalized();
+        if (sweepRad(e1, extreme, side) < sweep) worst = std::min(worst, g(extreme));
+    }
+    return worst > 0.0;
+}
+
+/// Is p where the ray at phi meets the segment (and not on the circle's other branch)?
+bool onSegment(const SegmentSpec& s, double phiDeg, const Vec& p) {
+    return (pointAt(s, phiDeg) - p).norm() <= 0.1 * kJointToleranceMm;
+}
+
+Candidate check(const Corner& k, const Offset& offA, const Offset& offB, const Vec& o,
+                double rho) {
+    Candidate c;
+    c.center = o;
+    c.t1 = tangentPoint(k.a, offA, o, k.side, rho);
+    c.t2 = tangentPoint(k.b, offB, o, k.side, rho);
+    c.d1 = mod360(k.phiJoint - polarDeg(c.t1));
+    c.d2 = mod360(polarDeg(c.t2) - k.phiJoint);
+    if (!(c.d1 > 0.0 && c.d1 < k.widthA) || !onSegment(k.a, k.phiJoint - c.d1, c.t1)) {
+        c.failure = Failure::LeavesLeft;
+        return c;
+    }
+    if (!(c.d2 > 0.0 && c.d2 < k.widthB) || !onSegment(k.b, k.phiJoint + c.d2 - k.shift, c.t2)) {
+        c.failure = Failure::LeavesRight;
+        return c;
+    }
+    // Both tangent directions match by construction, so the fillet's turning equals that of the
+    // path it replaces modulo 2π. Equal exactly means it rounds this corner; off by 2π means the
+    // circle sits in another corner of the same two curves (e.g. their second intersection).
+    const double replaced =
+        turnAlong(k.a, c.t1, k.joint) + k.turn + turnAlong(k.b, k.joint, c.t2);
+    const double sweep = sweepRad(c.t1 - o, c.t2 - o, k.side);
+    if (!(sweep > 0.0) || std::abs(k.side * sweep - replaced) > kPi) {
+        c.failure = Failure::NoCircle;
+        return c;
+    }
+    c.failure = polarMonotone(o, rho, c.t1, sweep, k.side) ? Failure::None : Failure::RayTwice;
+    return c;
+}
+
+/// The fillet of radius rho: the valid candidate nearest the joint, or else the nearest
+/// candidate with the reason it fails.
+Candidate solve(const Corner& k, double rho) {
+    if (!(rho < kMaxLengthMm)) return Candidate{.failure = Failure::TooLarge};
+    const Offset offA = offsetOf(k.a, k.side, rho);
+    const Offset offB = offsetOf(k.b, k.side, rho);
+    std::optional<Candidate> bestValid, bestAny;
+    double validDist = 0.0, anyDist = 0.0;
+    for (const Vec& o : intersect(offA, offB)) {
+        const Candidate c = check(k, offA, offB, o, rho);
+        const double dist = (c.t1 - k.joint).norm() + (c.t2 - k.joint).norm();
+        if (!bestAny || dist < anyDist) bestAny = c, anyDist = dist;
+        if (c.failure == Failure::None && (!bestValid || dist < validDist)) {
+            bestValid = c, validDist = dist;
+        }
+    }
+    if (bestValid) return *bestValid;
+    if (bestAny) return *bestAny;
+    return Candidate{.failure = Failure::NoCircle};
+}
+
+std::string reason(const Corner& k, Failure f) {
+    switch (f) {
+        case Failure::LeavesLeft:
+            return "the tangent point would leave " + segmentLocation(k.left);
+        case Failure::LeavesRight:
+            return "the tangent point would leave " + segmentLocation(k.right);
+        case Failure::NoCircle:
+            return "no circle of that radius touches both neighbours inside the corner";
+        case Failure::RayTwice:
+            return "the follower ray would meet the fillet arc twice";
+        case Failure::TooLarge:
+            return "radii are limited to 1e6 mm";
+        case Failure::None:
+            break;
+    }
+    return "";
+}
+
+/// Ten significant digits: the bound is computed to ~1e-13, the message need not show noise.
+std::string rounded(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.10g", v);
+    return buffer;
+}
+
+Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t joint) {
+    const std::size_t n = contour.size();
+    if (n < 2) {
+        return Diagnostics{{"contour", "a fillet needs a joint between two segments (the contour "
+                                       "has " + std::to_string(n) + ")"}};
+    }
+    if (joint >= n) {
+        return Diagnostics{{"contour", "there is no joint " + std::to_string(joint) +
+                                           ": joints are numbered 0 .. " + std::to_string(n - 1)}};
+    }
+    Corner k;
+    k.left = (joint + n - 1) % n;
+    k.right = joint;
+    k.location = segmentLocation(k.left) + "/" + segmentLocation(k.right);
+    // Everything below relies on contiguous windows and closed joints.
+    Project project;
+    project.contour = contour;
+    Diagnostics problems;
+    for (Diagnostic& d : validateProject(project)) {
+        if (d.severity == Severity::Error) problems.push_back(std::move(d));
+    }
+    if (!problems.empty()) {
+        problems.insert(problems.begin(),
+                        {k.location, "the contour is not valid, so the joint cannot be rounded"});
+        return problems;
+    }
+    k.a = contour[k.left];
+    k.b = contour[k.right];
+    for (std::size_t i : {k.left, k.right}) {
+        const SegmentType t = contour[i].type;
+        if (t != SegmentType::Arc && t != SegmentType::Line) {
+            return Diagnostics{{k.location, "fillets join arcs and lines; " + segmentLocation(i) +
+                                                " is neither"}};
+        }
+    }
+    k.phiJoint = k.a.phiEndDeg;
+    k.shift = joint == 0 ? 360.0 : 0.0;
+    k.widthA = k.a.phiEndDeg - k.a.phiStartDeg;
+    k.widthB = k.b.phiEndDeg - k.b.phiStartDeg;
+    k.joint = pointAt(k.a, k.phiJoint);
+    const Vec tA = travelDirection(k.a, k.joint);
+    const Vec tB = travelDirection(k.b, pointAt(k.b, k.b.phiStartDeg));
+    k.turn = std::atan2(cross(tA, tB), tA.dot(tB));
+    k.side = k.turn > 0.0 ? 1.0 : -1.0;
+    const double turnDeg = radToDeg(std::abs(k.turn));
+    if (turnDeg <= kTangentToleranceDeg) {
+        return Diagnostics{
+            {k.location, "the segments already meet tangentially (their tangents differ by " +
+                             formatNumber(turnDeg) + "°, at most " +
+                             formatNumber(kTangentToleranceDeg) +
+                             "° counts as tangent); there is no corner to round"}};
+    }
+    return k;
+}
+
+struct Bound {
+    double maxRadius = 0.0;  ///< 0 when no radius fits
+    Failure why = Failure::None;
+};
+
+/// Scan rho upwards from (nearly) 0 in small geometric steps and bisect the first failure.
+Bound largestRadius(const Corner& k) {
+    auto fits = [&](double rho) { return solve(k, rho).failure == Failure::None; };
+    // Start where the tangent points sit ~1e-9 of the joint's size from it (for two lines they
+    // are rho·tan(|turn|/2) away): far above rounding, far below any real bound.
+    const double scale = std::max(k.joint.norm(), 1e-300);
+    const double start = 1e-9 * scale / std::tan(0.5 * std::min(std::abs(k.turn), 3.0));
+    double lo = 0.0;
+    for (double s : {start, start * 1e-3, start * 1e-6}) {
+        if (fits(s)) {
+            lo = s;
+            break;
+        }
+    }
+    if (lo == 0.0) return {0.0, solve(k, start).failure};
+    constexpr double kStep = 1.02;  // fine enough that a narrow infeasible gap is not skipped
+    double hi = lo * kStep;
+    while (fits(hi)) {
+        lo = hi;
+        hi *= kStep;
+    }
+    while (hi - lo > 1e-13 * hi) {
+        const double mid = 0.5 * (lo + hi);
+        (fits(mid) ? lo : hi) = mid;
+    }
+    return {lo, solve(k, hi).failure};
+}
+
+FilletResult build(const Corner& k, const std::vector<SegmentSpec>& contour, std::size_t joint,
+                   const Candidate& c, double rho) {
+    std::vector<SegmentSpec> out = contour;
+    SegmentSpec& a = out[k.left];
+    SegmentSpec& b = out[k.right];
+    // Lines keep their window tied to their end points; the untouched boundaries stay bit-equal
+    // to their neighbours' so the chain stays contiguous.
+    if (isArc(a)) {
+        a.phiEndDeg = k.phiJoint - c.d1;
+    } else {
+        a.to = c.t1;
+        const auto [start, end] = lineWindowDeg(a, a.phiStartDeg);
+        a.phiEndDeg = a.phiStartDeg + (end - start);
+    }
+    if (isArc(b)) {
+        b.phiStartDeg = k.phiJoint + c.d2 - k.shift;
+    } else {
+        b.from = c.t2;
+        b.phiStartDeg = lineWindowDeg(b, b.phiStartDeg).first;
+    }
+    SegmentSpec arc;
+    arc.type = SegmentType::Arc;
+    arc.center = c.center;
+    arc.radius = rho;
+    arc.branch = k.side > 0.0 ? Branch::Outer : Branch::Inner;
+    arc.from = c.t1;
+    arc.to = c.t2;
+    arc.phiStartDeg = a.phiEndDeg;
+    arc.phiEndDeg = b.phiStartDeg + k.shift;
+    // At K = 0 the arc goes last: its window ends a turn after the first one starts.
+    out.insert(joint == 0 ? out.end() : out.begin() + static_cast<std::ptrdiff_t>(joint), arc);
+    return {std::move(out), c.center, rho, c.t1, c.t2};
+}
+
+}  // namespace
+
+double minimumSwitchRadius(double speed, double accel, double admissibleError) {
+    if (!(accel > 0.0) || !(admissibleError > 0.0)) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    return speed * speed / (admissibleError * accel);
+}
+
+Result<FilletRange> filletRange(const std::vector<SegmentSpec>& contour, std::size_t joint) {
+    auto corner = makeCorner(contour, joint);
+    if (!corner.ok()) return corner.errors();
+    const Corner& k = corner.value();
+    const Bound bound = largestRadius(k);
+    if (bound.maxRadius == 0.0) {
+        return Diagnostics{{k.location, "no fillet radius fits at this joint (" +
+                                            reason(k, bound.why) + ")"}};
+    }
+    return FilletRange{0.0, bound.maxRadius};
+}
+
+Result<FilletResult> filletJoint(const std::vector<SegmentSpec>& contour, std::size_t joint,
+                                 double rho) {
+    auto corner = makeCorner(contour, joint);
+    if (!corner.ok()) {
+        Diagnostics errors = corner.errors();
+        // Name the radius too, so the message answers "why not this one?".
+        if (errors.size() == 1 && errors.front().location != "contour") {
+            errors.front().message =
+                "radius " + formatNumber(rho) + " mm does not fit: " + errors.front().message;
+        }
+        return errors;
+    }
+    const Corner& k = corner.value();
+    const Candidate c = std::isfinite(rho) && rho > 0.0 ? solve(k, rho) : Candidate{};
+    if (c.failure == Failure::None) {
+        FilletResult result = build(k, contour, joint, c, rho);
+        Project project;
+        project.contour = result.contour;
+        const Diagnostics problems = validateProject(project);
+        if (hasErrors(problems)) {  // a safety net: every check above should prevent this
+            return Diagnostics{{k.location, "radius " + formatNumber(rho) +
+                                                " mm gives a contour that does not validate (" +
+                                                problems.front().text() + ")"}};
+        }
+        return result;
+    }
+    const std::string asked = "radius " + formatNumber(rho) + " mm";
+    const Bound bound = largestRadius(k);
+    if (bound.maxRadius == 0.0) {
+        return Diagnostics{{k.location, asked + " does not fit: no radius fits at this joint (" +
+                                            reason(k, bound.why) + ")"}};
+    }
+    const std::string below = "radii below " + rounded(bound.maxRadius) + " mm";
+    if (!(rho > 0.0) || !std::isfinite(rho)) {
+        return Diagnostics{{k.location, asked + " must be a number > 0: " + below + " fit"}};
+    }
+    if (rho >= bound.maxRadius) {
+        return Diagnostics{{k.location, asked + " is too large: only " + below + " fit (" +
+                                            reason(k, bound.why) + ")"}};
+    }
+    return Diagnostics{{k.location, asked + " does not fit (" + reason(k, c.failure) + "), though " +
+                                        below + " do apart from such gaps"}};
+}
+
+}  // namespace cam
