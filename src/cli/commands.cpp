@@ -165,7 +165,16 @@ int runAnalyze(const Arguments& args, std::ostream& out) {
                               {"jump_d2r", j.jumpD2r},
                               {"jump_d3r", j.jumpD3r},
                               {"jump_a_r", j.jumpAR},
-                              {"jump_j_r", j.jumpJR}});
+                              {"jump_j_r", j.jumpJR},
+                              {"jump_dP_dphi", {j.jumpD1.x(), j.jumpD1.y()}},
+                              {"relative_jump_dP_dphi", j.relativeD1},
+                              {"jump_d2P_dphi2", {j.jumpD2.x(), j.jumpD2.y()}},
+                              {"relative_jump_d2P_dphi2", j.relativeD2},
+                              {"geometric", continuityName(j.geometric)},
+                              {"curve_jump_d1", {j.curveJumpD1.x(), j.curveJumpD1.y()}},
+                              {"curve_relative_jump_d1", j.curveRelativeD1},
+                              {"curve_jump_d2", {j.curveJumpD2.x(), j.curveJumpD2.y()}},
+                              {"curve_relative_jump_d2", j.curveRelativeD2}});
     }
     Json extremes = Json::object();
     for (const QuantityExtremes& e : analysis.extremes) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "analysis/analysis.h"
 #include "common/angles.h"
 #include "contour/contour.h"
 #include "geometry/bezier.h"
@@ -183,6 +184,50 @@ TEST(SplineContour, RefusesACurveTheRayMeetsTwiceAndAWrongWindow) {
     bool named = false;
     for (const auto& d : w.errors()) named = named || d.location == "contour[0]";
     EXPECT_TRUE(named);
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+/// A circle of radius R about the origin from four κ-Bézier quarters (equal, collinear handles
+/// at every knot); `stretch` scales the second handle of the first quarter (P2 − P3).
+Project bezierCircle(double R, double stretch) {
+    const double k = 4.0 / 3.0 * std::tan(kPi / 8.0) * R;
+    Project p;
+    p.motion = {SpeedUnit::PeriodS, 1.0};
+    for (int q = 0; q < 4; ++q) {
+        const double a = kPi / 2 * q, b = a + kPi / 2;
+        const Vec u(std::cos(a), std::sin(a)), v(std::cos(b), std::sin(b));
+        SegmentSpec s;
+        s.type = SegmentType::Bezier;
+        s.controls = {R * u, R * u + k * v, R * v + k * u, R * v};
+        if (q == 0) s.controls[2] = R * v + stretch * k * u;
+        std::tie(s.phiStartDeg, s.phiEndDeg) = lineWindowDeg(s, 90.0 * q);
+        p.contour.push_back(s);
+    }
+    return p;
+}
+
+TEST(SplineContinuity, EqualHandlesAreC1AndALongerHandleIsOnlyG1) {
+    const auto even = Contour::build(bezierCircle(20.0, 1.0));
+    ASSERT_TRUE(even.ok()) << even.errors().front().text();
+    const JointAnalysis knot = analyzeJoint(even.value(), 0, kTwoPi);
+    // The two quarters mirror each other about the knot's ray: equal curvature, so even the
+    // follower's acceleration is continuous there.
+    EXPECT_EQ(knot.continuity, Continuity::C2);
+    EXPECT_NEAR(knot.curveRelativeD1, 0.0, 1e-12);  // B'(1) = B'(0) of the next
+    EXPECT_NE(knot.geometric, Continuity::G1);
+    // Doubling one handle keeps its direction: the tangent stays, the derivative halves.
+    const auto stretched = Contour::build(bezierCircle(20.0, 2.0));
+    ASSERT_TRUE(stretched.ok()) << stretched.errors().front().text();
+    const JointAnalysis g1 = analyzeJoint(stretched.value(), 0, kTwoPi);
+    EXPECT_EQ(g1.geometric, Continuity::G1);
+    EXPECT_LT(g1.tangentBreakDeg, 1e-9);
+    EXPECT_NEAR(g1.curveRelativeD1, 0.5, 1e-12);  // |3κR − 6κR| / 6κR
+    EXPECT_NEAR(g1.curveJumpD1.norm(), 3.0 * 4.0 / 3.0 * std::tan(kPi / 8.0) * 20.0, 1e-12);
 }
 
 }  // namespace

@@ -14,6 +14,8 @@ const char* continuityName(Continuity c) {
             return "none";
         case Continuity::C0:
             return "C0";
+        case Continuity::G1:
+            return "G1";
         case Continuity::C1:
             return "C1";
         case Continuity::C2:
@@ -62,6 +64,33 @@ double quantityValue(Quantity q, const PolarDerivatives& d, const PolarMotion& m
     return 0.0;
 }
 
+namespace {
+
+/// First and second derivative of a segment's curve in its own parameter, at its start (or end)
+/// and in the direction of travel: Bézier s in [0, 1]; arc angle about its centre; line 0..1.
+std::pair<Eigen::Vector2d, Eigen::Vector2d> curveDerivatives(const ContourSegment& seg,
+                                                             bool atStart) {
+    const double phi = atStart ? seg.phiStart : seg.phiEnd;
+    if (seg.type == SegmentType::Line) {
+        const Eigen::Vector2d a = seg.line.from, b = seg.line.to;
+        return {b - a, Eigen::Vector2d::Zero()};
+    }
+    if (seg.type == SegmentType::Arc) {
+        const PolarDerivatives d = seg.evaluate(phi);
+        const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), u1(-u.y(), u.x());
+        const Eigen::Vector2d radial = (d.r * u - seg.arc.center) / seg.arc.radius;
+        const Eigen::Vector2d travel = d.dr * u + d.r * u1;  // direction of increasing φ
+        const Eigen::Vector2d t(-radial.y(), radial.x());    // counter-clockwise about the centre
+        const double sign = t.dot(travel) >= 0 ? 1.0 : -1.0;
+        return {sign * seg.arc.radius * t, -seg.arc.radius * radial};
+    }
+    const CubicBezier b{seg.bezierKernel.p};
+    const double s = atStart ? 0.0 : 1.0;
+    return {b.derivative(s, 1), b.derivative(s, 2)};
+}
+
+}  // namespace
+
 JointAnalysis analyzeJoint(const Contour& contour, std::size_t k, double omega) {
     JointAnalysis j;
     j.left = k;
@@ -89,15 +118,42 @@ JointAnalysis analyzeJoint(const Contour& contour, std::size_t k, double omega) 
     j.jumpAR = mr.aR - ml.aR;
     j.jumpJR = mr.jR - ml.jR;
 
-    const double d2rScale = std::max({std::abs(dl.d2r), std::abs(dr.d2r), std::abs(dl.r)});
+    // P = r·u; dP/dφ = r'·u + r·u'; d²P/dφ² = (r'' − r)·u + 2r'·u' (u'' = −u).
+    auto d1 = [&](const PolarDerivatives& d) { return Eigen::Vector2d(d.dr * u + d.r * u1); };
+    auto d2 = [&](const PolarDerivatives& d) {
+        return Eigen::Vector2d((d.d2r - d.r) * u + 2.0 * d.dr * u1);
+    };
+    j.jumpP = (dr.r - dl.r) * u;
+    j.jumpD1 = d1(dr) - d1(dl);
+    j.jumpD2 = d2(dr) - d2(dl);
+    const double n1 = std::max({d1(dl).norm(), d1(dr).norm(), 1e-300});
+    const double n2 = std::max({d2(dl).norm(), d2(dr).norm(), 1e-300});
+    j.relativeD1 = j.jumpD1.norm() / n1;
+    j.relativeD2 = j.jumpD2.norm() / n2;
     if (j.gapMm > kJointToleranceMm) {
         j.continuity = Continuity::None;
     } else if (j.tangentBreakDeg > kTangentToleranceDeg) {
         j.continuity = Continuity::C0;
-    } else if (std::abs(j.jumpD2r) > kCurvatureToleranceRel * d2rScale) {
+    } else if (j.relativeD2 > kCurvatureToleranceRel) {
         j.continuity = Continuity::C1;
     } else {
         j.continuity = Continuity::C2;
+    }
+
+    const auto [l1, l2] = curveDerivatives(left, false);
+    const auto [r1, r2] = curveDerivatives(right, true);
+    j.curveJumpD1 = r1 - l1;
+    j.curveJumpD2 = r2 - l2;
+    j.curveRelativeD1 = j.curveJumpD1.norm() / std::max({l1.norm(), r1.norm(), 1e-300});
+    j.curveRelativeD2 = j.curveJumpD2.norm() / std::max({l2.norm(), r2.norm(), 1e-300});
+    if (j.continuity == Continuity::None || j.continuity == Continuity::C0) {
+        j.geometric = j.continuity;
+    } else if (j.curveRelativeD1 > kCurvatureToleranceRel) {
+        j.geometric = Continuity::G1;
+    } else if (j.curveRelativeD2 > kCurvatureToleranceRel) {
+        j.geometric = Continuity::C1;
+    } else {
+        j.geometric = Continuity::C2;
     }
     return j;
 }

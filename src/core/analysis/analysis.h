@@ -12,13 +12,18 @@
 
 namespace cam {
 
-/// @brief Highest order to which r(phi) is continuous at a joint.
-enum class Continuity { None, C0, C1, C2 };
+/// @brief Highest order of continuity at a joint. Kinematic (in φ, what the follower feels):
+/// C0 position, C1 dP/dφ (the velocity), C2 d²P/dφ² (the acceleration) — in φ a continuous
+/// tangent direction already means C1. Geometric (in each curve's own parameter: a Bézier's s,
+/// an arc's angle, a line's 0..1): G1 is a continuous direction with a jump in the derivative's
+/// length, as at a spline knot with collinear handles of different lengths.
+enum class Continuity { None, C0, G1, C1, C2 };
 
 /// @brief A joint is C1 (tangent) when the contour's tangent turns by at most this much there.
 /// Files carry about ten significant digits (the six-lobe example breaks by 8e-7°).
 inline constexpr double kTangentToleranceDeg = 1e-5;
-/// @brief A C1 joint is C2 when r'' jumps by at most this fraction of its local size.
+/// @brief A G1 joint is C1 (C1 is C2) when the first (second) derivative of P(φ) jumps by at
+/// most this fraction of its local size: "nearly continuous" in the sense of math.md §4.
 inline constexpr double kCurvatureToleranceRel = 1e-6;
 
 [[nodiscard]] const char* continuityName(Continuity c);
@@ -35,6 +40,17 @@ struct JointAnalysis {
     double jumpD3r = 0.0;          ///< r'''(right) - r'''(left), mm/rad³
     double jumpAR = 0.0;           ///< a_r(right) - a_r(left), mm/s²
     double jumpJR = 0.0;           ///< j_r(right) - j_r(left), mm/s³
+    Eigen::Vector2d jumpP{0, 0};   ///< P(right) - P(left), mm
+    Eigen::Vector2d jumpD1{0, 0};  ///< dP/dφ(right) - dP/dφ(left), mm/rad
+    Eigen::Vector2d jumpD2{0, 0};  ///< d²P/dφ²(right) - d²P/dφ²(left), mm/rad²
+    double relativeD1 = 0.0;       ///< |jumpD1| / max(|dP/dφ| left, right)
+    double relativeD2 = 0.0;       ///< |jumpD2| / max(|d²P/dφ²| left, right)
+    /// In the curves' own parameters (see Continuity): jumps of dP/dp and d²P/dp², relative.
+    Continuity geometric = Continuity::None;
+    Eigen::Vector2d curveJumpD1{0, 0};
+    Eigen::Vector2d curveJumpD2{0, 0};
+    double curveRelativeD1 = 0.0;
+    double curveRelativeD2 = 0.0;
     Continuity continuity = Continuity::None;
 };
 
