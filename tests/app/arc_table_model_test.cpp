@@ -6,9 +6,11 @@
 #include <QAbstractItemModelTester>
 
 #include "app_test_support.h"
+#include "common/angles.h"
 #include "contour/fit_windows.h"
 #include "document/commands.h"
 #include "document/project_document.h"
+#include "geometry/line.h"
 #include "models/arc_table_model.h"
 
 namespace cam {
@@ -155,6 +157,52 @@ TEST_F(ArcTableModelTest, FitWindowsIsOneUndoStep) {
     EXPECT_NEAR(document.project().contour[1].phiEndDeg, 50.30859, 1e-5);
     stack().undo();
     EXPECT_EQ(document.project().contour, before);
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST_F(ArcTableModelTest, SplineTypesConvertExactlyAndUndo) {
+    const Project original = document.project();
+    // Arc → Bézier: the κ-approximation through the same end points keeps the contour valid,
+    // and r stays within the approximation's 0.03 % of the arc.
+    ASSERT_TRUE(model.setData(cell(1, ArcTableModel::Type), 2, Qt::EditRole));
+    ASSERT_EQ(document.project().contour[1].type, SegmentType::Bezier);
+    EXPECT_TRUE(document.isValid()) << document.diagnostics().front().text();
+    const double mid = degToRad(30.0);  // the lobe tip: 29 mm on the arc
+    EXPECT_NEAR(bezierOf(document.project().contour[1]).evaluate(mid).r, 29.0, 29.0 * 3e-4);
+    const SegmentSpec bezier = document.project().contour[1];
+    // Bézier → Hermite → Bézier: the same curve both ways (t = 3·handle, handle = t/3).
+    ASSERT_TRUE(model.setData(cell(1, ArcTableModel::Type), 3, Qt::EditRole));
+    const SegmentSpec hermite = document.project().contour[1];
+    EXPECT_EQ(hermite.type, SegmentType::Hermite);
+    EXPECT_LT((hermite.controls[1] - 3.0 * (bezier.controls[1] - bezier.controls[0])).norm(),
+              1e-12);
+    ASSERT_TRUE(model.setData(cell(1, ArcTableModel::Type), 2, Qt::EditRole));
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_LT((document.project().contour[1].controls[i] - bezier.controls[i]).norm(), 1e-12);
+    }
+    // The window cells of a spline follow its end points: not editable.
+    EXPECT_FALSE(model.flags(cell(1, ArcTableModel::PhiEnd)) & Qt::ItemIsEditable);
+    EXPECT_TRUE(cell(1, ArcTableModel::Type).data(Qt::ToolTipRole).toString().contains("P1 = ("));
+    // Three conversions, three undo steps, back to the arc exactly.
+    for (int i = 0; i < 3; ++i) stack().undo();
+    EXPECT_EQ(document.project(), original);
+}
+
+TEST_F(ArcTableModelTest, ALineBecomesTheSameStraightBezier) {
+    ASSERT_TRUE(model.setData(cell(0, ArcTableModel::Type), 1, Qt::EditRole));  // arc → line
+    const SegmentSpec line = document.project().contour[0];
+    ASSERT_TRUE(model.setData(cell(0, ArcTableModel::Type), 2, Qt::EditRole));  // line → Bézier
+    EXPECT_TRUE(document.isValid());
+    const CubicBezier b = bezierOf(document.project().contour[0]);
+    const Line l{line.from, line.to};
+    for (double deg : {1.0, 4.0, 8.0}) {
+        EXPECT_NEAR(b.evaluate(degToRad(deg)).r, l.evaluate(degToRad(deg)).r, 1e-12);
+    }
 }
 
 }  // namespace

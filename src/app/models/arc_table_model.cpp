@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "geometry/line.h"
 #include "project/validate.h"
 
 namespace cam {
@@ -62,18 +63,18 @@ int ArcTableModel::columnCount(const QModelIndex& parent) const {
 }
 
 bool ArcTableModel::isApplicable(int row, int column) const {
-    const bool arc = segmentOf(m_document, row).type == SegmentType::Arc;
+    const SegmentType type = segmentOf(m_document, row).type;
     switch (column) {
         case CenterX:
         case CenterY:
         case Radius:
         case Branch:
-            return arc;
+            return type == SegmentType::Arc;
         case FromX:
         case FromY:
         case ToX:
         case ToY:
-            return !arc;
+            return type == SegmentType::Line;
         default:
             return true;
     }
@@ -84,7 +85,7 @@ QVariant ArcTableModel::data(const QModelIndex& index, int role) const {
     const SegmentSpec& s = segmentOf(m_document, index.row());
     const int c = index.column();
     if (role == ChoicesRole) {
-        if (c == Type) return QStringList{tr("Arc"), tr("Line")};
+        if (c == Type) return QStringList{tr("Arc"), tr("Line"), tr("Bézier"), tr("Hermite")};
         if (c == Branch) return QStringList{tr("outer"), tr("inner")};
         return {};
     }
@@ -96,8 +97,20 @@ QVariant ArcTableModel::data(const QModelIndex& index, int role) const {
                 "outer: far intersection of the ray with the circle; "
                 "inner: near intersection");
         if (c == PhiStart || c == PhiEnd) {
-            return s.type == SegmentType::Line ? tr("A line's window follows its end points")
-                                               : tr("Polar window of this segment, degrees");
+            return s.type != SegmentType::Arc ? tr("This segment's window follows its end points")
+                                              : tr("Polar window of this segment, degrees");
+        }
+        if (c == Type && isSpline(s.type)) {
+            const QStringList names = s.type == SegmentType::Bezier
+                                          ? QStringList{"P0", "P1", "P2", "P3"}
+                                          : QStringList{"p0", "t0", "p3", "t1"};
+            QStringList lines{tr("Drag the handles in the contour view to shape the curve.")};
+            for (int i = 0; i < 4; ++i) {
+                lines << QStringLiteral("%1 = (%2, %3)")
+                             .arg(names[i], QLocale().toString(s.controls[i].x(), 'g', 8),
+                                  QLocale().toString(s.controls[i].y(), 'g', 8));
+            }
+            return lines.join('\n');
         }
         return {};
     }
@@ -116,9 +129,11 @@ QVariant ArcTableModel::data(const QModelIndex& index, int role) const {
         return edit ? QVariant(v) : QVariant(QLocale().toString(v, 'g', 10));
     };
     switch (c) {
-        case Type:
-            return edit ? QVariant(s.type == SegmentType::Arc ? 0 : 1)
-                        : QVariant(s.type == SegmentType::Arc ? tr("Arc") : tr("Line"));
+        case Type: {
+            const QStringList names{tr("Arc"), tr("Line"), tr("Bézier"), tr("Hermite")};
+            const int t = static_cast<int>(s.type);
+            return edit ? QVariant(t) : QVariant(names[t]);
+        }
         case CenterX:
             return number(s.center.x());
         case CenterY:
@@ -200,7 +215,7 @@ QVariant ArcTableModel::headerData(int section, Qt::Orientation orientation, int
 Qt::ItemFlags ArcTableModel::flags(const QModelIndex& index) const {
     if (!index.isValid()) return Qt::NoItemFlags;
     Qt::ItemFlags f = Qt::ItemIsSelectable | Qt::ItemIsEnabled;
-    const bool lineWindow = segmentOf(m_document, index.row()).type == SegmentType::Line &&
+    const bool lineWindow = segmentOf(m_document, index.row()).type != SegmentType::Arc &&
                             (index.column() == PhiStart || index.column() == PhiEnd);
     if (isApplicable(index.row(), index.column()) && !lineWindow) f |= Qt::ItemIsEditable;
     return f;
@@ -218,26 +233,13 @@ bool ArcTableModel::applyValue(SegmentSpec& s, int column, const QVariant& value
     bool ok = false;
     if (column == Type || column == Branch) {
         const int choice = value.toInt(&ok);
-        if (!ok || choice < 0 || choice > 1) return false;
         if (column == Branch) {
+            if (!ok || choice < 0 || choice > 1) return false;
             s.branch = choice == 0 ? Branch::Outer : Branch::Inner;
             return true;
         }
-        const SegmentType type = choice == 0 ? SegmentType::Arc : SegmentType::Line;
-        if (type == s.type) return true;
-        if (type == SegmentType::Line) {
-            // Keep the contour closed: the line joins the points where the arc met its window.
-            const Arc arc{s.center, s.radius, s.branch};
-            for (auto [phiDeg, point] :
-                 {std::pair{s.phiStartDeg, &s.from}, std::pair{s.phiEndDeg, &s.to}}) {
-                const double phi = degToRad(phiDeg);
-                const double r = arc.evaluate(phi).r;
-                *point = std::isfinite(r) ? Eigen::Vector2d(r * std::cos(phi), r * std::sin(phi))
-                                          : Eigen::Vector2d(std::cos(phi), std::sin(phi));
-            }
-        }
-        s.type = type;
-        return true;
+        if (!ok || choice < 0 || choice > 3) return false;
+        return changeType(s, static_cast<SegmentType>(choice));
     }
     const double v = value.toDouble(&ok);
     if (!ok || !std::isfinite(v)) return false;
@@ -275,6 +277,53 @@ bool ArcTableModel::applyValue(SegmentSpec& s, int column, const QVariant& value
     if (s.type == SegmentType::Line && column >= FromX && column <= ToY) {
         std::tie(s.phiStartDeg, s.phiEndDeg) = lineWindowDeg(s, s.phiStartDeg);
     }
+    return true;
+}
+
+bool ArcTableModel::changeType(SegmentSpec& s, SegmentType type) {
+    if (type == s.type) return true;
+    // The curve's points at its window ends: the new segment joins the same two points, so the
+    // contour stays closed.
+    Eigen::Vector2d ends[2];
+    for (int e = 0; e < 2; ++e) {
+        const double phi = degToRad(e == 0 ? s.phiStartDeg : s.phiEndDeg);
+        double r = 0.0;
+        if (s.type == SegmentType::Arc) {
+            r = Arc{s.center, s.radius, s.branch}.evaluate(phi).r;
+        } else if (s.type == SegmentType::Line) {
+            r = Line{s.from, s.to}.evaluate(phi).r;
+        } else {
+            r = (e == 0 ? bezierOf(s).p[0] : bezierOf(s).p[3]).norm();
+        }
+        ends[e] = std::isfinite(r) ? Eigen::Vector2d(r * std::cos(phi), r * std::sin(phi))
+                                   : Eigen::Vector2d(std::cos(phi), std::sin(phi));
+    }
+    if (type == SegmentType::Line) {
+        s.from = ends[0];
+        s.to = ends[1];
+    } else if (isSpline(type)) {
+        CubicBezier b;
+        if (isSpline(s.type)) {
+            b = bezierOf(s);  // Bézier ↔ Hermite: the same curve, exactly
+        } else if (s.type == SegmentType::Arc) {
+            // κ-approximation of the arc between the same end points (math.md §4).
+            const Eigen::Vector2d a = ends[0] - s.center, c = ends[1] - s.center;
+            const double sweep = std::atan2(a.x() * c.y() - a.y() * c.x(), a.dot(c));
+            const double kappa = 4.0 / 3.0 * std::tan(sweep / 4.0);
+            b.p = {ends[0], ends[0] + kappa * Eigen::Vector2d(-a.y(), a.x()),
+                   ends[1] - kappa * Eigen::Vector2d(-c.y(), c.x()), ends[1]};
+        } else {
+            const Eigen::Vector2d d = (ends[1] - ends[0]) / 3.0;  // the same straight line
+            b.p = {ends[0], ends[0] + d, ends[1] - d, ends[1]};
+        }
+        if (type == SegmentType::Bezier) {
+            s.controls = b.p;
+        } else {
+            const auto t = b.hermiteTangents();
+            s.controls = {b.p[0], t[0], b.p[3], t[1]};
+        }
+    }
+    s.type = type;
     return true;
 }
 

@@ -50,6 +50,9 @@ public:
     static SegmentField fieldOf(int column);
     /// @brief The segment as it would be after setting `column` to `value`; false if invalid.
     static bool applyValue(SegmentSpec& segment, int column, const QVariant& value);
+    /// @brief Another kind of segment through the same two end points: Bézier ↔ Hermite is the
+    /// same curve exactly; a line becomes its 1/3-chord Bézier; an arc its κ-approximation.
+    static bool changeType(SegmentSpec& segment, SegmentType type);
 
 private:
     void rebuildProblems();
