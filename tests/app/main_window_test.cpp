@@ -377,3 +377,44 @@ TEST(MainWindow, ExamplesOpenAsUntitledCopies) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(ContourView, DraggingABezierHandleShapesTheCurveInOneUndoStep) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.resize(1400, 860);
+    window.show();
+    ArcTableModel* model = window.tableModel();
+    ASSERT_TRUE(model->setData(model->index(3, ArcTableModel::Type), 2, Qt::EditRole));  // Bézier
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    ContourView* view = window.contourView();
+    view->setSelectedSegment(3);
+    view->replot(QCustomPlot::rpImmediateRefresh);
+    const SegmentSpec before = window.document()->project().contour[3];
+    const int steps = window.document()->undoStack()->count();
+    auto pixel = [&](const Eigen::Vector2d& p) {
+        return QPointF(view->xAxis->coordToPixel(p.x()), view->yAxis->coordToPixel(p.y()));
+    };
+    const Eigen::Vector2d p1 = before.controls[1];
+    QTest::mousePress(view, Qt::LeftButton, {}, pixel(p1).toPoint());
+    for (int i = 1; i <= 4; ++i) {
+        const QPointF p = pixel(p1 + Eigen::Vector2d(0.0, 0.25 * i));
+        QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
+                         Qt::NoModifier);
+        QCoreApplication::sendEvent(view, &move);
+    }
+    QTest::mouseRelease(view, Qt::LeftButton, {}, pixel(p1 + Eigen::Vector2d(0, 1)).toPoint());
+    const SegmentSpec after = window.document()->project().contour[3];
+    EXPECT_NEAR((after.controls[1] - (p1 + Eigen::Vector2d(0, 1))).norm(), 0.0, 0.1);
+    EXPECT_EQ(after.controls[0], before.controls[0]);  // the ends stay on the joints
+    EXPECT_EQ(after.controls[3], before.controls[3]);
+    EXPECT_EQ(after.controls[2], before.controls[2]);
+    EXPECT_EQ(window.document()->undoStack()->count(), steps + 1);
+    window.document()->undoStack()->undo();
+    EXPECT_EQ(window.document()->project().contour[3], before);
+}
+
+}  // namespace
+}  // namespace cam

@@ -55,6 +55,9 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
         (*graph)->setScatterStyle(QCPScatterStyle(shape, QPen(QColor(0, 90, 200), 1.5),
                                                   QBrush(QColor(120, 180, 255)), 10));
     }
+    m_controlPolygon = new QCPCurve(xAxis, yAxis);
+    m_controlPolygon->setPen(QPen(QColor(0, 90, 200, 160), 1, Qt::DashLine));
+    m_controlPolygon->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 4));
     // Origin: the rotation centre.
     auto* origin = new QCPItemTracer(this);
     origin->position->setCoords(0, 0);
@@ -184,13 +187,27 @@ QPointF ContourView::radiusHandlePosition(int row) const {
 
 void ContourView::updateHandles() {
     const auto& c = m_document->project().contour;
+    m_controlPolygon->data()->clear();
     if (m_selected < 0 || m_selected >= static_cast<int>(c.size()) ||
-        c[static_cast<std::size_t>(m_selected)].type != SegmentType::Arc) {
+        c[static_cast<std::size_t>(m_selected)].type == SegmentType::Line) {
         m_centerHandle->data()->clear();
         m_radiusHandle->data()->clear();
         return;
     }
     const SegmentSpec& s = c[static_cast<std::size_t>(m_selected)];
+    if (isSpline(s.type)) {
+        // Handles on the inner control points; the ends stay on the neighbours' joints.
+        const CubicBezier b = bezierOf(s);
+        m_centerHandle->setData({b.p[1].x()}, {b.p[1].y()}, true);
+        m_radiusHandle->setData({b.p[2].x()}, {b.p[2].y()}, true);
+        QVector<double> x, y;
+        for (const auto& p : b.p) {
+            x << p.x();
+            y << p.y();
+        }
+        m_controlPolygon->setData(x, y);
+        return;
+    }
     const QPointF rh = radiusHandlePosition(m_selected);
     m_centerHandle->setData({s.center.x()}, {s.center.y()}, true);
     m_radiusHandle->setData({rh.x()}, {rh.y()}, true);
@@ -227,7 +244,21 @@ void ContourView::mouseMoveEvent(QMouseEvent* event) {
         SegmentSpec s = m_document->project().contour.at(static_cast<std::size_t>(m_selected));
         SegmentField field = SegmentField::CenterDrag;
         QString text;
-        if (m_dragging == Handle::Center) {
+        if (isSpline(s.type)) {
+            // Move P1 (square) or P2 (diamond); a Hermite keeps its tangents: t = 3·handle.
+            CubicBezier b = bezierOf(s);
+            const bool first = m_dragging == Handle::Center;
+            b.p[first ? 1 : 2] = {x, y};
+            if (s.type == SegmentType::Bezier) {
+                s.controls = b.p;
+            } else {
+                const auto t = b.hermiteTangents();
+                s.controls[1] = t[0];
+                s.controls[3] = t[1];
+            }
+            field = first ? SegmentField::CenterDrag : SegmentField::RadiusDrag;
+            text = tr("Shape segment %1").arg(m_selected);
+        } else if (m_dragging == Handle::Center) {
             s.center = {x, y};
             text = tr("Move centre of segment %1").arg(m_selected);
         } else {

@@ -47,8 +47,9 @@ private:
     std::vector<QCPCurve*> m_segmentCurves;
     QCPGraph* m_centers = nullptr;
     QCPGraph* m_joints = nullptr;
-    QCPGraph* m_centerHandle = nullptr;  ///< square: drag to move the arc's centre
-    QCPGraph* m_radiusHandle = nullptr;  ///< diamond: drag to change the radius
+    QCPGraph* m_centerHandle = nullptr;    ///< square: the arc's centre, or a spline's P1
+    QCPGraph* m_radiusHandle = nullptr;    ///< diamond: the arc's radius, or a spline's P2
+    QCPCurve* m_controlPolygon = nullptr;  ///< P0–P1–P2–P3 of the selected spline
     QCPItemLine* m_ray = nullptr;
     QCPItemTracer* m_rayPoint = nullptr;
     int m_selected = -1;
