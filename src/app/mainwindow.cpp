@@ -6,6 +6,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
@@ -24,6 +25,7 @@
 #include "io/project_json.h"
 #include "models/arc_table_model.h"
 #include "models/delegates.h"
+#include "spline/circle_approximation.h"
 #include "ui_mainwindow.h"
 #include "views/contour_view.h"
 #include "views/kinematics_plots.h"
@@ -185,6 +187,21 @@ void MainWindow::setUpActions() {
     connect(m_ui->actionMoveUp, &QAction::triggered, this, [this] { moveSegment(-1); });
     connect(m_ui->actionMoveDown, &QAction::triggered, this, [this] { moveSegment(1); });
     connect(m_ui->actionFitWindows, &QAction::triggered, this, &MainWindow::fitWindows);
+    auto* approximate = new QAction(tr("Approximate Arc by &Béziers…"), this);
+    approximate->setObjectName("actionApproximateArc");
+    approximate->setToolTip(
+        tr("Replace the selected arc by cubic Bézier pieces within a radial "
+           "error you give"));
+    m_ui->menuEdit->addAction(approximate);
+    connect(approximate, &QAction::triggered, this, [this] {
+        bool ok = false;
+        const double error =
+            QInputDialog::getDouble(this, tr("Approximate Arc by Béziers"),
+                                    tr("Admissible radial error [mm]:"), 0.001, 1e-9, 10.0, 6, &ok);
+        if (!ok) return;
+        const QString problem = approximateArc(selectedRow(), error);
+        if (!problem.isEmpty()) QMessageBox::warning(this, tr("Approximate Arc"), problem);
+    });
     connect(m_ui->actionAxisTime, &QAction::toggled, this, [this](bool on) {
         QSettings().setValue("view/timeAxis", on);
         requestCompute();
@@ -507,6 +524,22 @@ void MainWindow::moveSegment(int delta) {
     if (row < 0 || to < 0 || to >= static_cast<int>(m_document->project().contour.size())) return;
     m_document->undoStack()->push(new MoveSegment(m_document, row, to));
     m_ui->segmentTable->selectRow(to);
+}
+
+QString MainWindow::approximateArc(int row, double maxErrorMm) {
+    if (row < 0) return tr("Select the arc to approximate first.");
+    ArcApproximation report;
+    const auto replaced = approximateArcSegment(m_document->project().contour,
+                                                static_cast<std::size_t>(row), maxErrorMm, &report);
+    if (!replaced.ok()) return diagnosticsText(replaced.errors());
+    m_document->undoStack()->push(
+        new ReplaceContour(m_document, replaced.value(), tr("Approximate arc by Béziers")));
+    statusBar()->showMessage(tr("%n Bézier piece(s): radial error %1 mm, end/middle speed ratio %2",
+                                "", static_cast<int>(report.pieces.size()))
+                                 .arg(QLocale().toString(report.radialErrorMm, 'g', 3),
+                                      QLocale().toString(report.speedRatio, 'f', 4)),
+                             8000);
+    return {};
 }
 
 void MainWindow::fitWindows() {

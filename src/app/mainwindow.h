@@ -44,6 +44,10 @@ public:
     [[nodiscard]] StateReadout* readout() const { return m_readout; }
     [[nodiscard]] MachiningPanel* machiningPanel() const { return m_machining; }
 
+    /// @brief Replaces arc `row` by Bézier pieces within `maxErrorMm` (one undo step); returns
+    /// the problem, or empty on success (the achieved error goes to the status bar).
+    QString approximateArc(int row, double maxErrorMm);
+
     /// @brief Puts the cursor at time t (s): readout, follower ray and plot cursors.
     void setCursorTime(double t);
 

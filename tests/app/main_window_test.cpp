@@ -418,3 +418,23 @@ TEST(ContourView, DraggingABezierHandleShapesTheCurveInOneUndoStep) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(MainWindow, ApproximatingAnArcIsOneUndoStepAndKeepsTheCamValid) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    const Project before = window.document()->project();
+    EXPECT_TRUE(window.approximateArc(1, 1e-5).isEmpty());
+    const auto& contour = window.document()->project().contour;
+    EXPECT_GT(contour.size(), before.contour.size());
+    EXPECT_EQ(contour[1].type, SegmentType::Bezier);
+    EXPECT_TRUE(window.document()->isValid());
+    window.document()->undoStack()->undo();
+    EXPECT_EQ(window.document()->project(), before);
+    EXPECT_FALSE(window.approximateArc(-1, 1e-5).isEmpty());  // nothing selected
+}
+
+}  // namespace
+}  // namespace cam

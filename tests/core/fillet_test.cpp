@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "common/angles.h"
@@ -24,7 +26,9 @@ using Vec = Eigen::Vector2d;
 double polarDeg(const Vec& p) { return radToDeg(std::atan2(p.y(), p.x())); }
 
 /// phi (deg) shifted by whole turns into [lo, lo + 360).
-double unwrapInto(double phi, double lo) { return lo + std::fmod(std::fmod(phi - lo, 360.0) + 360.0, 360.0); }
+double unwrapInto(double phi, double lo) {
+    return lo + std::fmod(std::fmod(phi - lo, 360.0) + 360.0, 360.0);
+}
 
 SegmentSpec line(const Vec& from, const Vec& to, double nearDeg) {
     SegmentSpec s;
@@ -92,7 +96,7 @@ double centreDeviation(const Vec& o, double rho, const SegmentSpec& s) {
     return std::min(std::abs(d - (s.radius + rho)), std::abs(d - std::abs(s.radius - rho)));
 }
 
-/// The point of `s` (old contour) whose window holds phi, with phi unwrapped into its window.
+/// Whether the ray angle phi (any turn) lies strictly inside the segment's window.
 bool inWindow(const SegmentSpec& s, double phiDeg) {
     const double phi = unwrapInto(phiDeg, s.phiStartDeg);
     return phi > s.phiStartDeg && phi < s.phiEndDeg;
@@ -229,14 +233,14 @@ std::vector<SegmentSpec> dShape() {
     return {chord, arc({0, 0}, 20, Branch::Outer, chord.phiEndDeg, chord.phiStartDeg + 360.0)};
 }
 
-/// The cap below the chord y = 2 of the circle centred (0, 8) with R = 20 (h = 6): the circle's
-/// centre is above the chord, the fillet centres below it — seed 002's "line goes inside the
-/// circle, centres in different half planes", bounded by (R − h)/2.
+/// The cap below the chord y = chordY of the circle centred (0, cy), the chord run right to
+/// left, then the circle. With cy above the chord the circle's centre and the fillet centres
+/// lie on opposite sides of it — seed 002's "line goes inside the circle, centres in different
+/// half planes", bounded by (R − h)/2 with h = cy − chordY; cy = chordY puts the centre on it.
 std::vector<SegmentSpec> cap(double cy, double chordY, double radius) {
     const double x = std::sqrt(radius * radius - (chordY - cy) * (chordY - cy));
     const SegmentSpec chord = line({x, chordY}, {-x, chordY}, 0.0);
-    return {chord,
-            arc({0, cy}, radius, Branch::Outer, chord.phiEndDeg, chord.phiStartDeg + 360.0)};
+    return {chord, arc({0, cy}, radius, Branch::Outer, chord.phiEndDeg, chord.phiStartDeg + 360.0)};
 }
 
 /// Two circles of radius R centred (±e, 0): `lens` is their intersection (convex corners at
@@ -274,8 +278,8 @@ TEST(Fillet, SquareCornerHasItsCentreOnTheBisectorAtRhoRootTwo) {
         const FilletResult& r = f.value();
         // Inward along the bisector, rho·√2 from the corner; tangent points rho from it.
         EXPECT_NEAR((r.center - corner).norm(), rho * std::sqrt(2.0), 1e-12);
-        EXPECT_NEAR((r.center - (corner - rho * corner.normalized() * std::sqrt(2.0))).norm(),
-                    0.0, 1e-12);
+        EXPECT_NEAR((r.center - (corner - rho * corner.normalized() * std::sqrt(2.0))).norm(), 0.0,
+                    1e-12);
         EXPECT_NEAR((r.tangentPoint1 - corner).norm(), rho, 1e-12);
         EXPECT_NEAR((r.tangentPoint2 - corner).norm(), rho, 1e-12);
         EXPECT_EQ(r.contour[joint == 0 ? 4 : 1].branch, Branch::Outer);
@@ -329,18 +333,21 @@ TEST(Fillet, SquareRangeEndsWhereTheTangentPointReachesTheNextCorner) {
 TEST(Fillet, LineIntoCircleWithCentresOnTheSameSide) {
     const auto d = dShape();
     expectValid(d);
-    const double R = 20.0, h = 12.0, rho = 5.0;
+    const double R = 20.0, h = 12.0;
     // joint 1: line → arc at (12, 16); joint 0: arc → line at (12, -16). The fillet touches
-    // the circle from inside: o = (h − rho, ±√((R − rho)² − (h − rho)²)).
-    for (std::size_t joint : {std::size_t{1}, std::size_t{0}}) {
+    // the circle from inside: o = (h − rho, ±√((R − rho)² − (h − rho)²)). From rho = 10 on
+    // the mirror circle (−y) also touches both segments inside their windows, with an arc of
+    // 270° and more; the fillet is the one at the corner asked for.
+    for (auto [joint, rho] : {std::pair{std::size_t{1}, 5.0}, std::pair{std::size_t{0}, 5.0},
+                              std::pair{std::size_t{1}, 12.0}, std::pair{std::size_t{0}, 12.0}}) {
         const auto f = filletJoint(d, joint, rho);
         ASSERT_TRUE(f.ok()) << f.errors().front().text();
         const FilletResult& r = f.value();
         const double y = std::sqrt((R - rho) * (R - rho) - (h - rho) * (h - rho));
         const Vec expected(h - rho, joint == 1 ? y : -y);
         EXPECT_NEAR((r.center - expected).norm(), 0.0, 1e-12);
-        EXPECT_TRUE(relClose(r.center.norm(), R - rho, 1e-12));      // internal tangency
-        EXPECT_TRUE(relClose(h - r.center.x(), rho, 1e-12));         // rho from the line
+        EXPECT_TRUE(relClose(r.center.norm(), R - rho, 1e-12));  // internal tangency
+        EXPECT_TRUE(relClose(h - r.center.x(), rho, 1e-12));     // rho from the line
         expectValidFillet(d, joint, rho, r, Corner::Convex);
     }
     // The offset line x = h − rho meets the offset circle |p| = R − rho while
@@ -370,7 +377,7 @@ TEST(Fillet, LineIntoCircleWithCentresOnOppositeSidesIsBoundedByHalfOfRMinusH) {
         const FilletResult& r = f.value();
         EXPECT_TRUE(relClose(chordY - r.center.y(), rho, 1e-12));  // below the chord, c above
         EXPECT_TRUE(relClose((r.center - Vec(0, cy)).norm(), R - rho, 1e-12));  // internal
-        EXPECT_LT(joint == 1 ? r.center.x() : -r.center.x(), 0.0);  // at its own corner
+        EXPECT_LT(joint == 1 ? r.center.x() : -r.center.x(), 0.0);              // at its own corner
         expectValidFillet(c, joint, rho, r, Corner::Convex);
     }
     const double bound = (R - h) / 2.0;  // 7 mm
@@ -406,10 +413,13 @@ TEST(Fillet, LineThroughTheCircleCentre) {
 // ---- arc–arc ----
 
 TEST(Fillet, ArcArcConvexCornerOfALens) {
-    const double e = 3.0, R = 10.0, rho = 2.0;
+    const double e = 3.0, R = 10.0;
     const auto lens = twoCircles(e, R, true);
     expectValid(lens);
-    for (std::size_t joint : {std::size_t{1}, std::size_t{0}}) {
+    // At rho = 6 the mirror circle (below the axis for the upper joint) touches both arcs
+    // inside their windows too; the fillet is the one at the corner asked for.
+    for (auto [joint, rho] : {std::pair{std::size_t{1}, 2.0}, std::pair{std::size_t{0}, 2.0},
+                              std::pair{std::size_t{1}, 6.0}, std::pair{std::size_t{0}, 6.0}}) {
         const auto f = filletJoint(lens, joint, rho);
         ASSERT_TRUE(f.ok()) << f.errors().front().text();
         const FilletResult& r = f.value();
@@ -451,6 +461,54 @@ TEST(Fillet, ArcArcConcaveCornerOfAPeanutTouchesFromOutside) {
     const auto big = filletJoint(peanut, 1, 1000.0);
     ASSERT_TRUE(big.ok()) << big.errors().front().text();
     expectValidFillet(peanut, 1, 1000.0, big.value(), Corner::Concave);
+}
+
+// ---- the rotation centre bounds a fillet ----
+
+TEST(Fillet, AFilletMustNotCutOffTheRotationCentre) {
+    // The rectangle −1 <= x <= 30, −1 <= y <= 20: the corner (−1, −1), joint 0 between the left
+    // side and the bottom, lies next to the origin. Its fillet centre is (rho − 1)(1, 1); the
+    // arc passes the origin when |o| = rho: rho = √2 / (√2 − 1) = 2 + √2 (the sides allow 21).
+    const Vec corners[] = {{-1, -1}, {30, -1}, {30, 20}, {-1, 20}};
+    std::vector<SegmentSpec> rect;
+    double near = -135.0;
+    for (int k = 0; k < 4; ++k) {
+        rect.push_back(line(corners[k], corners[(k + 1) % 4], near));
+        near = rect.back().phiEndDeg;
+    }
+    expectValid(rect);
+    const double bound = 2.0 + std::sqrt(2.0);
+    const auto range = filletRange(rect, 0);
+    ASSERT_TRUE(range.ok()) << range.errors().front().text();
+    EXPECT_TRUE(relClose(range.value().maxRadius, bound, 1e-9));
+
+    const double rho = 3.4;
+    const auto f = filletJoint(rect, 0, rho);
+    ASSERT_TRUE(f.ok()) << f.errors().front().text();
+    EXPECT_NEAR((f.value().center - Vec(rho - 1, rho - 1)).norm(), 0.0, 1e-12);
+    EXPECT_GT(f.value().center.norm(), 0.0);
+    EXPECT_LT(f.value().center.norm(), rho);  // the origin stays inside the fillet circle
+    expectValidFillet(rect, 0, rho, f.value(), Corner::Convex);
+
+    const auto tooLarge = filletJoint(rect, 0, 4.0);
+    ASSERT_FALSE(tooLarge.ok());
+    const Diagnostic& e = tooLarge.errors().front();
+    EXPECT_EQ(e.location, "contour[3]/contour[0]");
+    EXPECT_TRUE(contains(e.message, "4 mm")) << e.message;
+    EXPECT_TRUE(contains(e.message, "3.414213562 mm")) << e.message;
+    EXPECT_TRUE(contains(e.message, "rotation centre")) << e.message;
+    // The far corners are bounded by the 21 mm right side instead: at (30, −1) the second
+    // tangent point leaves it, at (30, 20) the first.
+    for (std::size_t joint : {std::size_t{1}, std::size_t{2}}) {
+        const auto far = filletRange(rect, joint);
+        ASSERT_TRUE(far.ok());
+        EXPECT_TRUE(relClose(far.value().maxRadius, 21.0, 1e-9));
+        const auto refused = filletJoint(rect, joint, 21.5);
+        ASSERT_FALSE(refused.ok());
+        const std::string& m = refused.errors().front().message;
+        EXPECT_TRUE(contains(m, "21.5 mm") && contains(m, "21 mm")) << m;
+        EXPECT_TRUE(contains(m, "the tangent point would leave contour[1]")) << m;
+    }
 }
 
 // ---- refusals ----

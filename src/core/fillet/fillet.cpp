@@ -58,13 +58,6 @@ Vec travelDirection(const SegmentSpec& s, const Vec& p) {
     return (arcSense(s) * perp(p - s.center)).normalized();
 }
 
-/// Signed turning of the tangent along the segment from p to q (in the direction of travel).
-double turnAlong(const SegmentSpec& s, const Vec& p, const Vec& q) {
-    if (!isArc(s)) return 0.0;
-    const double sense = arcSense(s);
-    return sense * sweepRad(p - s.center, q - s.center, sense);
-}
-
 /// Joint K, seen along the direction of travel: `a` ends there, `b` starts there.
 struct Corner {
     std::size_t left = 0, right = 0;
@@ -167,8 +160,7 @@ bool onSegment(const SegmentSpec& s, double phiDeg, const Vec& p) {
     return (pointAt(s, phiDeg) - p).norm() <= 0.1 * kJointToleranceMm;
 }
 
-Candidate check(const Corner& k, const Offset& offA, const Offset& offB, const Vec& o,
-                double rho) {
+Candidate check(const Corner& k, const Offset& offA, const Offset& offB, const Vec& o, double rho) {
     Candidate c;
     c.center = o;
     c.t1 = tangentPoint(k.a, offA, o, k.side, rho);
@@ -183,16 +175,11 @@ Candidate check(const Corner& k, const Offset& offA, const Offset& offB, const V
         c.failure = Failure::LeavesRight;
         return c;
     }
-    // Both tangent directions match by construction, so the fillet's turning equals that of the
-    // path it replaces modulo 2π. Equal exactly means it rounds this corner; off by 2π means the
-    // circle sits in another corner of the same two curves (e.g. their second intersection).
-    const double replaced =
-        turnAlong(k.a, c.t1, k.joint) + k.turn + turnAlong(k.b, k.joint, c.t2);
+    // With both tangent points on their segments and the ray meeting the arc once, the arc
+    // replaces the piece T1 .. joint .. T2 by a polar graph over the same window: a valid
+    // rounding of this corner. (An outer arc fails here only when it would pass the rotation
+    // centre, cutting it off; an inner one cannot fail on a continuous family of radii.)
     const double sweep = sweepRad(c.t1 - o, c.t2 - o, k.side);
-    if (!(sweep > 0.0) || std::abs(k.side * sweep - replaced) > kPi) {
-        c.failure = Failure::NoCircle;
-        return c;
-    }
     c.failure = polarMonotone(o, rho, c.t1, sweep, k.side) ? Failure::None : Failure::RayTwice;
     return c;
 }
@@ -218,22 +205,29 @@ Candidate solve(const Corner& k, double rho) {
     return Candidate{.failure = Failure::NoCircle};
 }
 
-std::string reason(const Corner& k, Failure f) {
+/// Why rho fails; `atBound` words it for the radius just beyond the largest that fits.
+std::string reason(const Corner& k, Failure f, bool atBound) {
     switch (f) {
         case Failure::LeavesLeft:
             return "the tangent point would leave " + segmentLocation(k.left);
         case Failure::LeavesRight:
             return "the tangent point would leave " + segmentLocation(k.right);
         case Failure::NoCircle:
-            return "no circle of that radius touches both neighbours inside the corner";
+            return atBound ? "no larger circle touches both neighbours inside the corner"
+                           : "no circle of that radius touches both neighbours inside the corner";
         case Failure::RayTwice:
-            return "the follower ray would meet the fillet arc twice";
+            return "the follower ray would not meet the fillet arc exactly once: it would pass "
+                   "the rotation centre or turn back as seen from it";
         case Failure::TooLarge:
             return "radii are limited to 1e6 mm";
         case Failure::None:
             break;
     }
     return "";
+}
+
+std::string nothingFits(const Corner& k, Failure why) {
+    return "no fillet radius fits at this joint (" + reason(k, why, false) + ")";
 }
 
 /// Ten significant digits: the bound is computed to ~1e-13, the message need not show noise.
@@ -246,8 +240,10 @@ std::string rounded(double v) {
 Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t joint) {
     const std::size_t n = contour.size();
     if (n < 2) {
-        return Diagnostics{{"contour", "a fillet needs a joint between two segments (the contour "
-                                       "has " + std::to_string(n) + ")"}};
+        const std::string count = std::to_string(n);
+        return Diagnostics{
+            {"contour",
+             "a fillet needs a joint between two segments (the contour has " + count + ")"}};
     }
     if (joint >= n) {
         return Diagnostics{{"contour", "there is no joint " + std::to_string(joint) +
@@ -274,8 +270,8 @@ Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t j
     for (std::size_t i : {k.left, k.right}) {
         const SegmentType t = contour[i].type;
         if (t != SegmentType::Arc && t != SegmentType::Line) {
-            return Diagnostics{{k.location, "fillets join arcs and lines; " + segmentLocation(i) +
-                                                " is neither"}};
+            return Diagnostics{
+                {k.location, "fillets join arcs and lines; " + segmentLocation(i) + " is neither"}};
         }
     }
     k.phiJoint = k.a.phiEndDeg;
@@ -380,8 +376,7 @@ Result<FilletRange> filletRange(const std::vector<SegmentSpec>& contour, std::si
     const Corner& k = corner.value();
     const Bound bound = largestRadius(k);
     if (bound.maxRadius == 0.0) {
-        return Diagnostics{{k.location, "no fillet radius fits at this joint (" +
-                                            reason(k, bound.why) + ")"}};
+        return Diagnostics{{k.location, nothingFits(k, bound.why)}};
     }
     return FilletRange{0.0, bound.maxRadius};
 }
@@ -415,8 +410,7 @@ Result<FilletResult> filletJoint(const std::vector<SegmentSpec>& contour, std::s
     const std::string asked = "radius " + formatNumber(rho) + " mm";
     const Bound bound = largestRadius(k);
     if (bound.maxRadius == 0.0) {
-        return Diagnostics{{k.location, asked + " does not fit: no radius fits at this joint (" +
-                                            reason(k, bound.why) + ")"}};
+        return Diagnostics{{k.location, asked + " does not fit: " + nothingFits(k, bound.why)}};
     }
     const std::string below = "radii below " + rounded(bound.maxRadius) + " mm";
     if (!(rho > 0.0) || !std::isfinite(rho)) {
@@ -424,10 +418,11 @@ Result<FilletResult> filletJoint(const std::vector<SegmentSpec>& contour, std::s
     }
     if (rho >= bound.maxRadius) {
         return Diagnostics{{k.location, asked + " is too large: only " + below + " fit (" +
-                                            reason(k, bound.why) + ")"}};
+                                            reason(k, bound.why, true) + ")"}};
     }
-    return Diagnostics{{k.location, asked + " does not fit (" + reason(k, c.failure) + "), though " +
-                                        below + " do apart from such gaps"}};
+    // Feasible radii need not form one interval; this one lies in a gap below the bound.
+    return Diagnostics{{k.location, asked + " does not fit (" + reason(k, c.failure, false) +
+                                        "), although most " + below + " do"}};
 }
 
 }  // namespace cam

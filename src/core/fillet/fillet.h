@@ -35,8 +35,8 @@ struct FilletResult {
     /// The new contour, one segment longer: the fillet arc sits between contour[K-1] and
     /// contour[K], i.e. at index K, or at the end when K = 0 (so the first segment stays first).
     std::vector<SegmentSpec> contour;
-    Eigen::Vector2d center{0.0, 0.0};  ///< centre of the fillet arc
-    double radius = 0.0;               ///< its radius, the rho asked for
+    Eigen::Vector2d center{0.0, 0.0};         ///< centre of the fillet arc
+    double radius = 0.0;                      ///< its radius, the rho asked for
     Eigen::Vector2d tangentPoint1{0.0, 0.0};  ///< where it touches contour[K-1]
     Eigen::Vector2d tangentPoint2{0.0, 0.0};  ///< where it touches contour[K]
 };

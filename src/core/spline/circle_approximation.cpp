@@ -1,0 +1,94 @@
+#include "spline/circle_approximation.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/angles.h"
+#include "project/validate.h"
+
+namespace cam {
+
+CubicBezier bezierArc(const Eigen::Vector2d& c, double R, double a0, double sweep) {
+    const double a1 = a0 + sweep;
+    const double k = 4.0 / 3.0 * std::tan(sweep / 4.0) * R;
+    const Eigen::Vector2d u0(std::cos(a0), std::sin(a0)), u1(std::cos(a1), std::sin(a1));
+    const Eigen::Vector2d t0(-u0.y(), u0.x()), t1(-u1.y(), u1.x());
+    return {{c + R * u0, c + R * u0 + k * t0, c + R * u1 - k * t1, c + R * u1}};
+}
+
+double bezierArcRadialError(double sweep) {
+    // Sampled finely: the error is a smooth function of s with two equal peaks.
+    const CubicBezier b = bezierArc(Eigen::Vector2d::Zero(), 1.0, 0.0, sweep);
+    double worst = 0.0;
+    constexpr int kSamples = 2000;
+    for (int i = 0; i <= kSamples; ++i) {
+        worst = std::max(worst, std::abs(b.point(static_cast<double>(i) / kSamples).norm() - 1.0));
+    }
+    return worst;
+}
+
+ArcApproximation approximateArc(const Eigen::Vector2d& center, double radius, double a0,
+                                double sweep, double maxErrorMm) {
+    ArcApproximation out;
+    int n = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / (kPi / 2))));
+    while (n < 4096 && bezierArcRadialError(sweep / n) * radius > maxErrorMm) ++n;
+    for (int i = 0; i < n; ++i) {
+        out.pieces.push_back(bezierArc(center, radius, a0 + sweep * i / n, sweep / n));
+    }
+    out.radialErrorMm = bezierArcRadialError(sweep / n) * radius;
+    const CubicBezier& b = out.pieces.front();
+    out.speedRatio = b.derivative(0.0, 1).norm() / b.derivative(0.5, 1).norm();
+    return out;
+}
+
+Result<std::vector<SegmentSpec>> approximateArcSegment(const std::vector<SegmentSpec>& contour,
+                                                       std::size_t k, double maxErrorMm,
+                                                       ArcApproximation* report) {
+    const std::string at = segmentLocation(k);
+    if (k >= contour.size()) return Diagnostics{{at, "no such segment"}};
+    const SegmentSpec& s = contour[k];
+    if (s.type != SegmentType::Arc) return Diagnostics{{at, "is not an arc"}};
+    if (!(maxErrorMm > 0) || !std::isfinite(maxErrorMm)) {
+        return Diagnostics{{"error", "the admissible radial error must be > 0 mm"}};
+    }
+    // The arc's piece inside the window, about its own centre, in the direction of travel.
+    const Arc arc{s.center, s.radius, s.branch};
+    auto pointAt = [&](double deg) {
+        const double phi = degToRad(deg);
+        return Eigen::Vector2d(arc.evaluate(phi).r * std::cos(phi),
+                               arc.evaluate(phi).r * std::sin(phi));
+    };
+    const Eigen::Vector2d p0 = pointAt(s.phiStartDeg) - s.center;
+    const Eigen::Vector2d p1 = pointAt(s.phiEndDeg) - s.center;
+    // Direction of travel about the arc's centre: that of the contour's tangent dP/dφ.
+    const double phi0 = degToRad(s.phiStartDeg);
+    const PolarDerivatives d0 = arc.evaluate(phi0);
+    const Eigen::Vector2d u(std::cos(phi0), std::sin(phi0)), u1(-u.y(), u.x());
+    const Eigen::Vector2d travel = d0.dr * u + d0.r * u1;
+    const double direction = p0.x() * travel.y() - p0.y() * travel.x() >= 0 ? 1.0 : -1.0;
+    double sweep = std::atan2(p0.x() * p1.y() - p0.y() * p1.x(), p0.dot(p1));
+    if (direction > 0 && sweep <= 0) sweep += kTwoPi;
+    if (direction < 0 && sweep >= 0) sweep -= kTwoPi;
+    const ArcApproximation approx =
+        approximateArc(s.center, s.radius, std::atan2(p0.y(), p0.x()), sweep, maxErrorMm);
+    if (report) *report = approx;
+
+    std::vector<SegmentSpec> out(contour.begin(), contour.begin() + static_cast<long>(k));
+    double previousEnd = s.phiStartDeg;
+    for (std::size_t i = 0; i < approx.pieces.size(); ++i) {
+        SegmentSpec piece;
+        piece.type = SegmentType::Bezier;
+        piece.controls = approx.pieces[i].p;
+        // The first and last piece keep the arc's exact window ends (the joints).
+        std::tie(piece.phiStartDeg, piece.phiEndDeg) = lineWindowDeg(piece, previousEnd);
+        if (i == 0) piece.phiStartDeg = s.phiStartDeg;
+        if (i + 1 == approx.pieces.size()) piece.phiEndDeg = s.phiEndDeg;
+        if (i > 0) piece.phiStartDeg = previousEnd;
+        previousEnd = piece.phiEndDeg;
+        out.push_back(piece);
+    }
+    out.insert(out.end(), contour.begin() + static_cast<long>(k) + 1, contour.end());
+    return out;
+}
+
+}  // namespace cam
