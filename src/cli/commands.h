@@ -13,5 +13,6 @@ int runState(const Arguments& args, std::ostream& out);
 int runSample(const Arguments& args, std::ostream& out);
 int runAnalyze(const Arguments& args, std::ostream& out);
 int runTiming(const Arguments& args, std::ostream& out);
+int runFillet(const Arguments& args, std::ostream& out);
 
 }  // namespace cam::cli

@@ -21,6 +21,9 @@ commands:
          [--accel AX,AY[,AZ]] [--vmax VX,VY[,VZ]] [--feed F] [--step L] [--detail]
                                         machining time of the contour (offset by the tool
                                         radius) or of a point list (x,y,z[,bulge] per line)
+  fillet PROJECT --joint K (--radius R | --speed V --accel A --vae E) --out NEW
+                                        round the corner between contour[K-1] and contour[K]
+                                        by a tangent arc (radius given or V²/(vae·A))
 
 units: mm, s, degrees; v in mm/s, a in mm/s², j in mm/s³.
 exit codes: 0 ok, 1 usage error, 2 invalid input, 3 not computable.
@@ -50,6 +53,7 @@ int main(int argc, char** argv) {
          {"--method", "--path", "--accel", "--vmax", "--feed", "--step"},
          {"--detail"},
          0},
+        {"fillet", 1, {"--joint", "--radius", "--speed", "--accel", "--vae", "--out"}, {}},
     };
     try {
         const Arguments parsed = parseArguments(args, commands);
@@ -58,6 +62,7 @@ int main(int argc, char** argv) {
         if (parsed.command == "sample") return runSample(parsed, std::cout);
         if (parsed.command == "analyze") return runAnalyze(parsed, std::cout);
         if (parsed.command == "timing") return runTiming(parsed, std::cout);
+        if (parsed.command == "fillet") return runFillet(parsed, std::cout);
         return kUsage;
     } catch (const CliError& e) {
         std::cout.flush();
