@@ -22,6 +22,7 @@
 #include "contour/fit_windows.h"
 #include "document/commands.h"
 #include "engine/compute_engine.h"
+#include "fillet/fillet.h"
 #include "io/project_json.h"
 #include "models/arc_table_model.h"
 #include "models/delegates.h"
@@ -193,6 +194,37 @@ void MainWindow::setUpActions() {
         tr("Replace the selected arc by cubic Bézier pieces within a radial "
            "error you give"));
     m_ui->menuEdit->addAction(approximate);
+    auto* round = new QAction(tr("&Round Corner…"), this);
+    round->setObjectName("actionRoundCorner");
+    round->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    round->setToolTip(
+        tr("Replace the corner before the selected segment by a tangent switch "
+           "arc"));
+    m_ui->menuEdit->addAction(round);
+    connect(round, &QAction::triggered, this, [this] {
+        const int joint = selectedRow();
+        if (joint < 0) {
+            QMessageBox::information(this, tr("Round Corner"),
+                                     tr("Select the segment after the corner to round."));
+            return;
+        }
+        const auto range =
+            filletRange(m_document->project().contour, static_cast<std::size_t>(joint));
+        if (!range.ok()) {
+            QMessageBox::warning(this, tr("Round Corner"), diagnosticsText(range.errors()));
+            return;
+        }
+        bool ok = false;
+        const double max = range.value().maxRadius;
+        const double rho =
+            QInputDialog::getDouble(this, tr("Round Corner"),
+                                    tr("Radius of the switch arc [mm] (below %1 mm fits):")
+                                        .arg(QLocale().toString(max, 'g', 6)),
+                                    std::min(max / 2.0, 5.0), 1e-6, max, 6, &ok);
+        if (!ok) return;
+        const QString problem = roundCorner(joint, rho);
+        if (!problem.isEmpty()) QMessageBox::warning(this, tr("Round Corner"), problem);
+    });
     connect(approximate, &QAction::triggered, this, [this] {
         bool ok = false;
         const double error =
@@ -524,6 +556,18 @@ void MainWindow::moveSegment(int delta) {
     if (row < 0 || to < 0 || to >= static_cast<int>(m_document->project().contour.size())) return;
     m_document->undoStack()->push(new MoveSegment(m_document, row, to));
     m_ui->segmentTable->selectRow(to);
+}
+
+QString MainWindow::roundCorner(int joint, double rho) {
+    if (joint < 0) return tr("Select the segment after the corner to round.");
+    const auto result =
+        filletJoint(m_document->project().contour, static_cast<std::size_t>(joint), rho);
+    if (!result.ok()) return diagnosticsText(result.errors());
+    m_document->undoStack()->push(
+        new ReplaceContour(m_document, result.value().contour, tr("Round corner")));
+    statusBar()->showMessage(
+        tr("Corner rounded with a %1 mm switch arc").arg(QLocale().toString(rho, 'g', 6)), 6000);
+    return {};
 }
 
 QString MainWindow::approximateArc(int row, double maxErrorMm) {

@@ -48,6 +48,10 @@ public:
     /// the problem, or empty on success (the achieved error goes to the status bar).
     QString approximateArc(int row, double maxErrorMm);
 
+    /// @brief Rounds the corner at joint K (between rows K-1 and K) by a tangent arc of radius
+    /// rho (one undo step); returns the problem with the feasible range, or empty on success.
+    QString roundCorner(int joint, double rho);
+
     /// @brief Puts the cursor at time t (s): readout, follower ray and plot cursors.
     void setCursorTime(double t);
 

@@ -15,6 +15,8 @@
 #include <QTimer>
 #include <QTranslator>
 #include <QUrl>
+#include <filesystem>
+#include <fstream>
 
 #include "app_test_support.h"
 #include "document/commands.h"
@@ -434,6 +436,36 @@ TEST(MainWindow, ApproximatingAnArcIsOneUndoStepAndKeepsTheCamValid) {
     window.document()->undoStack()->undo();
     EXPECT_EQ(window.document()->project(), before);
     EXPECT_FALSE(window.approximateArc(-1, 1e-5).isEmpty());  // nothing selected
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(MainWindow, RoundingACornerIsOneUndoStepOrSaysWhyNot) {
+    MainWindow window;
+    const QString square = QString::fromStdString(
+        (std::filesystem::temp_directory_path() / "camwright_app_square.cam.json").string());
+    {
+        std::ofstream(square.toStdString()) << R"({"format": "camwright", "version": 1,
+          "motion": {"period_s": 1},
+          "contour": [{"type": "line", "from": [10, -10], "to": [10, 10]},
+                      {"type": "line", "from": [10, 10], "to": [-10, 10]},
+                      {"type": "line", "from": [-10, 10], "to": [-10, -10]},
+                      {"type": "line", "from": [-10, -10], "to": [10, -10]}]})";
+    }
+    ASSERT_TRUE(window.loadFile(square).isEmpty());
+    const Project before = window.document()->project();
+    EXPECT_TRUE(window.roundCorner(1, 4.0).isEmpty());
+    EXPECT_EQ(window.document()->project().contour.size(), 5u);
+    EXPECT_TRUE(window.document()->isValid());
+    const QString refused = window.roundCorner(2, 30.0);
+    EXPECT_TRUE(refused.contains("30 mm")) << refused.toStdString();
+    EXPECT_EQ(window.document()->undoStack()->count(), 1);  // the refusal changed nothing
+    window.document()->undoStack()->undo();
+    EXPECT_EQ(window.document()->project(), before);
 }
 
 }  // namespace
