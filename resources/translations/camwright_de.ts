@@ -197,121 +197,138 @@
 <context>
     <name>cam::ArcTableModel</name>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="87" />
-        <location filename="../../src/app/models/arc_table_model.cpp" line="121" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="88" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="133" />
         <source>Arc</source>
         <translation>Bogen</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="87" />
-        <location filename="../../src/app/models/arc_table_model.cpp" line="121" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="88" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="133" />
         <source>Line</source>
         <translation>Gerade</translation>
     </message>
     <message>
         <location filename="../../src/app/models/arc_table_model.cpp" line="88" />
-        <location filename="../../src/app/models/arc_table_model.cpp" line="130" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="133" />
+        <source>Bézier</source>
+        <translation>Bézier</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="88" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="133" />
+        <source>Hermite</source>
+        <translation>Hermite</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="89" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="145" />
         <source>outer</source>
         <translation>außen</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="88" />
-        <location filename="../../src/app/models/arc_table_model.cpp" line="130" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="89" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="145" />
         <source>inner</source>
         <translation>innen</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="95" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="96" />
         <source>outer: far intersection of the ray with the circle; inner: near intersection</source>
         <translation>außen: ferner Schnittpunkt des Strahls mit dem Kreis (r_oben); innen: naher Schnittpunkt (r_unten)</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="99" />
-        <source>A line's window follows its end points</source>
-        <translation>Das Fenster einer Geraden folgt ihren Endpunkten</translation>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="100" />
+        <source>This segment's window follows its end points</source>
+        <translation>Das Fenster dieses Segments folgt seinen Endpunkten</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="100" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="101" />
         <source>Polar window of this segment, degrees</source>
         <translation>Polares Fenster dieses Segments, Grad</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="156" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="107" />
+        <source>Drag the handles in the contour view to shape the curve.</source>
+        <translation>Die Griffe in der Konturansicht ziehen, um die Kurve zu formen.</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/models/arc_table_model.cpp" line="171" />
         <source>Centre of the arc's circle, mm</source>
         <translation>Mittelpunkt des Kreises, mm</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="158" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="173" />
         <source>Radius of the arc, mm</source>
         <translation>Radius des Bogens, mm</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="163" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="178" />
         <source>End points of the line, mm (counter-clockwise around the centre)</source>
         <translation>Endpunkte der Geraden, mm (gegen den Uhrzeigersinn um das Drehzentrum)</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="166" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="181" />
         <source>Polar window [φ start, φ end), degrees</source>
         <translation>Polares Fenster [φ Anfang, φ Ende), Grad</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="174" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="189" />
         <source>Type</source>
         <translation>Typ</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="176" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="191" />
         <source>Centre x [mm]</source>
         <translation>Mittelpunkt x [mm]</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="178" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="193" />
         <source>Centre y [mm]</source>
         <translation>Mittelpunkt y [mm]</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="180" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="195" />
         <source>Radius [mm]</source>
         <translation>Radius [mm]</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="182" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="197" />
         <source>Branch</source>
         <translation>Zweig</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="184" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="199" />
         <source>From x [mm]</source>
         <translation>Von x [mm]</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="186" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="201" />
         <source>From y [mm]</source>
         <translation>Von y [mm]</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="188" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="203" />
         <source>To x [mm]</source>
         <translation>Bis x [mm]</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="190" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="205" />
         <source>To y [mm]</source>
         <translation>Bis y [mm]</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="192" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="207" />
         <source>φ start [°]</source>
         <translation>φ Anfang [°]</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="194" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="209" />
         <source>φ end [°]</source>
         <translation>φ Ende [°]</translation>
     </message>
     <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="297" />
+        <location filename="../../src/app/models/arc_table_model.cpp" line="346" />
         <source>Edit %1 of segment %2</source>
         <translation>%1 von Segment %2 ändern</translation>
     </message>
@@ -339,12 +356,12 @@
         <translation>Drehzahl ändern</translation>
     </message>
     <message>
-        <location filename="../../src/app/document/commands.cpp" line="88" />
+        <location filename="../../src/app/document/commands.cpp" line="74" />
         <source>Change samples per turn</source>
         <translation>Abtastpunkte je Umdrehung ändern</translation>
     </message>
     <message>
-        <location filename="../../src/app/document/commands.cpp" line="98" />
+        <location filename="../../src/app/document/commands.cpp" line="79" />
         <source>Change machining limits</source>
         <translation>Bearbeitungsgrenzen ändern</translation>
     </message>
@@ -377,17 +394,22 @@
         <translation>Übergänge</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="96" />
+        <location filename="../../src/app/views/contour_view.cpp" line="99" />
         <source>segment %1</source>
         <translation>Segment %1</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="232" />
+        <location filename="../../src/app/views/contour_view.cpp" line="260" />
+        <source>Shape segment %1</source>
+        <translation>Segment %1 formen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/contour_view.cpp" line="263" />
         <source>Move centre of segment %1</source>
         <translation>Mittelpunkt von Segment %1 verschieben</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="236" />
+        <location filename="../../src/app/views/contour_view.cpp" line="267" />
         <source>Change radius of segment %1</source>
         <translation>Radius von Segment %1 ändern</translation>
     </message>
@@ -513,107 +535,107 @@
         <translation>Höchster Vorschub entlang der Bahn</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="73" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="74" />
         <source>Radius of the tool: the path is the contour offset by it</source>
         <translation>Werkzeugradius: die Bahn ist die um ihn versetzte Kontur</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="75" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="76" />
         <source>Step of the seed method</source>
         <translation>Schrittweite des Ausgangsverfahrens</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="76" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="77" />
         <source>Feed</source>
         <translation>Vorschub</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="78" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="79" />
         <source>Tool radius</source>
         <translation>Werkzeugradius</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="80" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="81" />
         <source>Seed step</source>
         <translation>Schrittweite</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="84" />
-        <location filename="../../src/app/views/machining_panel.cpp" line="92" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="85" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="93" />
         <source>Seed</source>
         <translation>Ausgangsverfahren</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="84" />
-        <location filename="../../src/app/views/machining_panel.cpp" line="92" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="85" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="93" />
         <source>Exact stop</source>
         <translation>Genauhalt</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="84" />
-        <location filename="../../src/app/views/machining_panel.cpp" line="92" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="85" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="93" />
         <source>Optimal</source>
         <translation>Zeitoptimal</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="86" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="87" />
         <source>The method whose feed and accelerations are plotted</source>
         <translation>Das Verfahren, dessen Vorschub und Beschleunigungen gezeigt werden</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="87" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="88" />
         <source>Plot</source>
         <translation>Diagramm</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="94" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="95" />
         <source>The seed document's 1 mm steps from rest to mid-segment, doubled: a legacy estimate that ignores the speed rising within a step</source>
         <translation>Die 1-mm-Schritte des Ausgangsdokuments aus dem Stillstand bis zur Segmentmitte, verdoppelt: eine alte Abschätzung, die den Geschwindigkeitsanstieg innerhalb eines Schritts übergeht</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="96" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="97" />
         <source>Rest to rest on every segment</source>
         <translation>Auf jedem Segment aus dem Stillstand in den Stillstand</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="97" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="98" />
         <source>Minimum time along the whole path, stopping only at corners</source>
         <translation>Kürzeste Zeit entlang der ganzen Bahn, Halt nur an Ecken</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="111" />
-        <location filename="../../src/app/views/machining_panel.cpp" line="113" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="112" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="114" />
         <source>path [mm]</source>
         <translation>Bahn [mm]</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="111" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="112" />
         <source>feed [mm/s]</source>
         <translation>Vorschub [mm/s]</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="113" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="114" />
         <source>axis accel. [mm/s²]</source>
         <translation>Achsbeschl. [mm/s²]</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="182" />
-        <location filename="../../src/app/views/machining_panel.cpp" line="190" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="183" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="191" />
         <source>Computing…</source>
         <translation>Wird berechnet …</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="184" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="185" />
         <source>Machining times need the machine's axis limits.</source>
         <translation>Bearbeitungszeiten brauchen die Achsgrenzen der Maschine.</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="197" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="198" />
         <source>No machining time: %1</source>
         <translation>Keine Bearbeitungszeit: %1</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="211" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="213" />
         <source>Path %1 mm (contour offset by the tool radius); optimal plan on %2 grid points; computed in %3 ms</source>
         <translation>Bahn %1 mm (Kontur um den Werkzeugradius versetzt); zeitoptimaler Plan auf %2 Gitterpunkten; berechnet in %3 ms</translation>
     </message>
@@ -621,163 +643,243 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="38" />
+        <location filename="../../src/app/mainwindow.cpp" line="41" />
         <source>Camwright projects (*.cam.json)</source>
         <translation>Camwright-Projekte (*.cam.json)</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="44" />
+        <location filename="../../src/app/mainwindow.cpp" line="47" />
         <source>… and %1 more</source>
         <translation>… und %1 weitere</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="151" />
+        <location filename="../../src/app/mainwindow.cpp" line="154" />
         <source>Machining limits and times (Ctrl+M)</source>
         <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="167" />
+        <location filename="../../src/app/mainwindow.cpp" line="170" />
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="169" />
+        <location filename="../../src/app/mainwindow.cpp" line="172" />
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
+        <location filename="../../src/app/mainwindow.cpp" line="191" />
+        <source>Approximate Arc by &amp;Béziers…</source>
+        <translation>Bogen durch &amp;Béziers annähern …</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="194" />
+        <source>Replace the selected arc by cubic Bézier pieces within a radial error you give</source>
+        <translation>Den ausgewählten Bogen durch kubische Bézierstücke innerhalb einer vorgegebenen Radialabweichung ersetzen</translation>
+    </message>
+    <message>
         <location filename="../../src/app/mainwindow.cpp" line="197" />
+        <source>&amp;Round Corner…</source>
+        <translation>Ecke &amp;verrunden …</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="201" />
+        <source>Replace the corner before the selected segment by a tangent switch arc</source>
+        <translation>Die Ecke vor dem ausgewählten Segment durch einen tangentialen Schaltbogen ersetzen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="207" />
+        <location filename="../../src/app/mainwindow.cpp" line="214" />
+        <location filename="../../src/app/mainwindow.cpp" line="220" />
+        <location filename="../../src/app/mainwindow.cpp" line="226" />
+        <source>Round Corner</source>
+        <translation>Ecke verrunden</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="208" />
+        <location filename="../../src/app/mainwindow.cpp" line="562" />
+        <source>Select the segment after the corner to round.</source>
+        <translation>Das Segment nach der zu verrundenden Ecke auswählen.</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="221" />
+        <source>Radius of the switch arc [mm] (below %1 mm fits):</source>
+        <translation>Radius des Schaltbogens [mm] (unter %1 mm passt):</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="231" />
+        <source>Approximate Arc by Béziers</source>
+        <translation>Bogen durch Béziers annähern</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="232" />
+        <source>Admissible radial error [mm]:</source>
+        <translation>Zulässige Radialabweichung [mm]:</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="235" />
+        <source>Approximate Arc</source>
+        <translation>Bogen annähern</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="246" />
         <source>About Camwright</source>
         <translation>Über Camwright</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="198" />
+        <location filename="../../src/app/mainwindow.cpp" line="247" />
         <source>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Design and inspect cam contours: exact polar kinematics of the follower.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</source>
         <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="212" />
+        <location filename="../../src/app/mainwindow.cpp" line="261" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="229" />
+        <location filename="../../src/app/mainwindow.cpp" line="278" />
         <source>%1 cannot be opened:
 %2</source>
         <translation>%1 kann nicht geöffnet werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="234" />
+        <location filename="../../src/app/mainwindow.cpp" line="283" />
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="242" />
-        <location filename="../../src/app/mainwindow.cpp" line="249" />
+        <location filename="../../src/app/mainwindow.cpp" line="291" />
+        <location filename="../../src/app/mainwindow.cpp" line="298" />
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="254" />
+        <location filename="../../src/app/mainwindow.cpp" line="303" />
         <source>The project has problems; fix them before saving (a file with these problems could not be opened again):
 %1</source>
         <translation>Das Projekt hat Fehler; bitte vor dem Speichern beheben (eine Datei mit diesen Fehlern ließe sich nicht wieder öffnen):
 %1</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="264" />
+        <location filename="../../src/app/mainwindow.cpp" line="313" />
         <source>%1 could not be written: %2</source>
         <translation>%1 konnte nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="269" />
+        <location filename="../../src/app/mainwindow.cpp" line="318" />
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="276" />
-        <location filename="../../src/app/mainwindow.cpp" line="290" />
+        <location filename="../../src/app/mainwindow.cpp" line="325" />
+        <location filename="../../src/app/mainwindow.cpp" line="339" />
         <source>Save Project</source>
         <translation>Projekt speichern</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="281" />
+        <location filename="../../src/app/mainwindow.cpp" line="330" />
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="297" />
+        <location filename="../../src/app/mainwindow.cpp" line="346" />
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="298" />
+        <location filename="../../src/app/mainwindow.cpp" line="347" />
         <source>%1 has unsaved changes. Save them?</source>
         <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="357" />
+        <location filename="../../src/app/mainwindow.cpp" line="406" />
         <source>Open Example</source>
         <translation>Beispiel öffnen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="381" />
+        <location filename="../../src/app/mainwindow.cpp" line="430" />
         <source>not computed: the project has problems</source>
         <translation>nicht berechnet: das Projekt hat Fehler</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="389" />
+        <location filename="../../src/app/mainwindow.cpp" line="438" />
         <source>%1 samples computed in %2 ms</source>
         <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="449" />
+        <location filename="../../src/app/mainwindow.cpp" line="498" />
         <source>Valid · 1 segment</source>
         <translation>Gültig · 1 Segment</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="450" />
+        <location filename="../../src/app/mainwindow.cpp" line="499" />
         <source>Valid · %1 segments</source>
         <translation>Gültig · %1 Segmente</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="455" />
+        <location filename="../../src/app/mainwindow.cpp" line="504" />
         <source>1 problem: </source>
         <translation>1 Fehler: </translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="455" />
+        <location filename="../../src/app/mainwindow.cpp" line="504" />
         <source>%1 problems: </source>
         <translation>%1 Fehler: </translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="463" />
+        <location filename="../../src/app/mainwindow.cpp" line="512" />
         <source>%1[*] — Camwright</source>
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="483" />
+        <location filename="../../src/app/mainwindow.cpp" line="532" />
         <source>Insert segment</source>
         <translation>Segment einfügen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="485" />
+        <location filename="../../src/app/mainwindow.cpp" line="534" />
         <source>Split window</source>
         <translation>Fenster teilen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="515" />
+        <location filename="../../src/app/mainwindow.cpp" line="567" />
+        <source>Round corner</source>
+        <translation>Ecke verrunden</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="569" />
+        <source>Corner rounded with a %1 mm switch arc</source>
+        <translation>Ecke mit einem Schaltbogen von %1 mm verrundet</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="574" />
+        <source>Select the arc to approximate first.</source>
+        <translation>Zuerst den anzunähernden Bogen auswählen.</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="580" />
+        <source>Approximate arc by Béziers</source>
+        <translation>Bogen durch Béziers annähern</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../../src/app/mainwindow.cpp" line="581" />
+        <source>%n Bézier piece(s): radial error %1 mm, end/middle speed ratio %2</source>
+        <translation>
+            <numerusform>%n Bézierstück: Radialabweichung %1 mm, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform><numerusform>%n Bézierstücke: Radialabweichung %1 mm, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform></translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="592" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="519" />
+        <location filename="../../src/app/mainwindow.cpp" line="596" />
         <source>The windows already fit.</source>
         <translation>Die Fenster passen bereits.</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="523" />
+        <location filename="../../src/app/mainwindow.cpp" line="600" />
         <source>Fit windows</source>
         <translation>Fenster anpassen</translation>
     </message>
