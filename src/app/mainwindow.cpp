@@ -29,6 +29,7 @@
 #include "spline/circle_approximation.h"
 #include "ui_mainwindow.h"
 #include "views/contour_view.h"
+#include "views/joints_panel.h"
 #include "views/kinematics_plots.h"
 #include "views/machining_panel.h"
 #include "views/motion_panel.h"
@@ -147,6 +148,18 @@ void MainWindow::setUpDocks() {
     m_readout = new StateReadout(m_ui->readoutDock);
     m_ui->readoutDock->setWidget(m_readout);
     splitDockWidget(m_ui->motionDock, m_ui->readoutDock, Qt::Vertical);
+    m_joints = new JointsPanel(m_ui->jointsDock);
+    m_ui->jointsDock->setWidget(m_joints);
+    tabifyDockWidget(m_ui->segmentsDock, m_ui->jointsDock);
+    m_ui->segmentsDock->raise();
+    connect(m_joints, &JointsPanel::jointPicked, this, [this](int, int right, double phi) {
+        const auto& r = m_engine->latestResult();
+        if (!r || !r->ok()) return;
+        double t = std::fmod(phi / r->omega, r->period);
+        if (t < 0) t += r->period;
+        setCursorTime(t);
+        m_ui->segmentTable->selectRow(right);
+    });
     m_machining = new MachiningPanel(m_document, m_ui->machiningDock);
     m_ui->machiningDock->setWidget(m_machining);
     QAction* machining = m_ui->machiningDock->toggleViewAction();
@@ -159,8 +172,8 @@ void MainWindow::setUpDocks() {
         if (visible && !m_engine->latestTiming()) requestCompute();
     });
     resizeDocks({m_ui->motionDock, m_ui->readoutDock}, {140, 400}, Qt::Vertical);
-    for (QDockWidget* dock :
-         {m_ui->segmentsDock, m_ui->motionDock, m_ui->readoutDock, m_ui->machiningDock}) {
+    for (QDockWidget* dock : {m_ui->segmentsDock, m_ui->jointsDock, m_ui->motionDock,
+                              m_ui->readoutDock, m_ui->machiningDock}) {
         m_ui->menuView->addAction(dock->toggleViewAction());
     }
 }
@@ -432,6 +445,7 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
     }
     m_contour->setResult(result);
     m_plots->setResult(result);
+    m_joints->setResult(result);
     m_cursorT = std::fmod(m_cursorT, result->period);
     setCursorTime(m_cursorT);
     m_computeLabel->setText(

@@ -19,6 +19,7 @@ class ArcTableModel;
 class ComputeEngine;
 class ContourView;
 class KinematicsPlots;
+class JointsPanel;
 class MachiningPanel;
 class MotionPanel;
 class ProjectDocument;
@@ -43,6 +44,7 @@ public:
     [[nodiscard]] ContourView* contourView() const { return m_contour; }
     [[nodiscard]] StateReadout* readout() const { return m_readout; }
     [[nodiscard]] MachiningPanel* machiningPanel() const { return m_machining; }
+    [[nodiscard]] JointsPanel* jointsPanel() const { return m_joints; }
 
     /// @brief Replaces arc `row` by Bézier pieces within `maxErrorMm` (one undo step); returns
     /// the problem, or empty on success (the achieved error goes to the status bar).
@@ -100,6 +102,7 @@ private:
     StateReadout* m_readout;
     MotionPanel* m_motion;
     MachiningPanel* m_machining;
+    JointsPanel* m_joints;
     QLabel* m_validationLabel;
     QLabel* m_computeLabel;
     double m_cursorT = 0.0;

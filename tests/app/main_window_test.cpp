@@ -24,6 +24,7 @@
 #include "mainwindow.h"
 #include "models/arc_table_model.h"
 #include "views/contour_view.h"
+#include "views/joints_panel.h"
 #include "views/state_readout.h"
 
 #include <qcustomplot.h>
@@ -466,6 +467,28 @@ TEST(MainWindow, RoundingACornerIsOneUndoStepOrSaysWhyNot) {
     EXPECT_EQ(window.document()->undoStack()->count(), 1);  // the refusal changed nothing
     window.document()->undoStack()->undo();
     EXPECT_EQ(window.document()->project(), before);
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(JointsPanel, ListsEveryJointAndClickingOneGoesThere) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.show();
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    JointsPanel* joints = window.jointsPanel();
+    ASSERT_EQ(joints->rowCount(), 13);
+    EXPECT_EQ(joints->item(0, 2)->text(), "C1");   // lobe meets notch: the acceleration jumps
+    EXPECT_EQ(joints->item(12, 2)->text(), "C2");  // the notch at 0° split in two
+    // Joint 2|3 sits at 69.69141°: clicking it moves the readout there.
+    QTest::mouseClick(joints->viewport(), Qt::LeftButton, {},
+                      joints->visualItemRect(joints->item(2, 0)).center());
+    EXPECT_TRUE(window.readout()->text().contains("φ 69.691411"))
+        << window.readout()->text().toStdString();
 }
 
 }  // namespace

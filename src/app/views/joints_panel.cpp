@@ -1,0 +1,63 @@
+#include "views/joints_panel.h"
+
+#include <QHeaderView>
+
+#include "common/angles.h"
+
+namespace cam {
+
+JointsPanel::JointsPanel(QWidget* parent) : QTableWidget(parent) {
+    setObjectName("jointsTable");
+    setColumnCount(7);
+    setHorizontalHeaderLabels({tr("Joint"), tr("φ [°]"), tr("Kinematic"), tr("Geometric"),
+                               tr("Tangent break [°]"), tr("Δa_r [mm/s²]"), tr("Δ(d²P/dφ²) rel.")});
+    horizontalHeaderItem(2)->setToolTip(
+        tr("Continuity in φ, as the follower feels it: C0 position, C1 velocity, C2 acceleration"));
+    horizontalHeaderItem(3)->setToolTip(
+        tr("Continuity in each curve's own parameter: G1 is a continuous direction whose "
+           "derivative jumps in length"));
+    horizontalHeaderItem(5)->setToolTip(tr("Jump of the radial acceleration at the joint"));
+    setEditTriggers(QAbstractItemView::NoEditTriggers);
+    setSelectionBehavior(QAbstractItemView::SelectRows);
+    setSelectionMode(QAbstractItemView::SingleSelection);
+    verticalHeader()->setVisible(false);
+    horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    setToolTip(tr("Click a joint to put the cursor there"));
+    connect(this, &QTableWidget::cellClicked, this, [this](int row, int) {
+        if (!m_result || row < 0 || row >= static_cast<int>(m_result->analysis.joints.size())) {
+            return;
+        }
+        const JointAnalysis& j = m_result->analysis.joints[static_cast<std::size_t>(row)];
+        emit jointPicked(static_cast<int>(j.left), static_cast<int>(j.right), j.phi);
+    });
+}
+
+void JointsPanel::setResult(const ComputeResultPtr& result) {
+    m_result = result;
+    if (!result || !result->ok()) return;
+    const auto& joints = result->analysis.joints;
+    setRowCount(static_cast<int>(joints.size()));
+    const QLocale locale;
+    for (int row = 0; row < rowCount(); ++row) {
+        const JointAnalysis& j = joints[static_cast<std::size_t>(row)];
+        const QString cells[] = {QStringLiteral("%1 | %2").arg(j.left).arg(j.right),
+                                 locale.toString(radToDeg(j.phi), 'f', 4),
+                                 continuityName(j.continuity),
+                                 continuityName(j.geometric),
+                                 locale.toString(j.tangentBreakDeg, 'g', 4),
+                                 locale.toString(j.jumpAR, 'g', 5),
+                                 locale.toString(j.relativeD2, 'g', 3)};
+        for (int c = 0; c < 7; ++c) {
+            auto* item = new QTableWidgetItem(cells[c]);
+            item->setTextAlignment(c < 4 ? Qt::Alignment(Qt::AlignCenter)
+                                         : Qt::Alignment(Qt::AlignRight | Qt::AlignVCenter));
+            if (c == 2 && j.continuity != Continuity::C2) {
+                item->setForeground(j.continuity == Continuity::C1 ? QColor(170, 100, 0)
+                                                                   : QColor(180, 0, 30));
+            }
+            setItem(row, c, item);
+        }
+    }
+}
+
+}  // namespace cam
