@@ -60,141 +60,146 @@
     </message>
     <message>
         <location filename="../../ui/mainwindow.ui" line="52" />
+        <source>Path Study</source>
+        <translation>Bahnstudie</translation>
+    </message>
+    <message>
+        <location filename="../../ui/mainwindow.ui" line="57" />
         <source>Machining</source>
         <translation>Bearbeitung</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="57" />
+        <location filename="../../ui/mainwindow.ui" line="62" />
         <source>State at Cursor</source>
         <translation>Zustand am Cursor</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="61" />
+        <location filename="../../ui/mainwindow.ui" line="66" />
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="61" />
+        <location filename="../../ui/mainwindow.ui" line="66" />
         <source>Start a new project</source>
         <translation>Ein neues Projekt beginnen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="62" />
+        <location filename="../../ui/mainwindow.ui" line="67" />
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="62" />
+        <location filename="../../ui/mainwindow.ui" line="67" />
         <source>Open a .cam.json project</source>
         <translation>Ein .cam.json-Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="63" />
+        <location filename="../../ui/mainwindow.ui" line="68" />
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="63" />
+        <location filename="../../ui/mainwindow.ui" line="68" />
         <source>Save the project</source>
         <translation>Das Projekt speichern</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="64" />
+        <location filename="../../ui/mainwindow.ui" line="69" />
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="64" />
+        <location filename="../../ui/mainwindow.ui" line="69" />
         <source>Save the project under a new name</source>
         <translation>Das Projekt unter neuem Namen speichern</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="65" />
+        <location filename="../../ui/mainwindow.ui" line="70" />
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="65" />
+        <location filename="../../ui/mainwindow.ui" line="70" />
         <source>Quit Camwright</source>
         <translation>Camwright beenden</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="66" />
+        <location filename="../../ui/mainwindow.ui" line="71" />
         <source>&amp;Insert Segment</source>
         <translation>Segment &amp;einfügen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="66" />
+        <location filename="../../ui/mainwindow.ui" line="71" />
         <source>Insert a segment after the selected one</source>
         <translation>Ein Segment nach dem ausgewählten einfügen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="67" />
+        <location filename="../../ui/mainwindow.ui" line="72" />
         <source>&amp;Delete Segment</source>
         <translation>Segment &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="67" />
+        <location filename="../../ui/mainwindow.ui" line="72" />
         <source>Delete the selected segment</source>
         <translation>Das ausgewählte Segment löschen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="68" />
+        <location filename="../../ui/mainwindow.ui" line="73" />
         <source>Move &amp;Up</source>
         <translation>Nach &amp;oben</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="68" />
+        <location filename="../../ui/mainwindow.ui" line="73" />
         <source>Move the selected segment up</source>
         <translation>Das ausgewählte Segment nach oben verschieben</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="69" />
+        <location filename="../../ui/mainwindow.ui" line="74" />
         <source>Move Do&amp;wn</source>
         <translation>Nach &amp;unten</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="69" />
+        <location filename="../../ui/mainwindow.ui" line="74" />
         <source>Move the selected segment down</source>
         <translation>Das ausgewählte Segment nach unten verschieben</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="70" />
+        <location filename="../../ui/mainwindow.ui" line="75" />
         <source>&amp;Fit Windows</source>
         <translation>Fenster &amp;anpassen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="70" />
+        <location filename="../../ui/mainwindow.ui" line="75" />
         <source>Set every window boundary to where its neighbours meet</source>
         <translation>Jede Fenstergrenze auf den Treffpunkt der Nachbarn setzen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="71" />
+        <location filename="../../ui/mainwindow.ui" line="76" />
         <source>&amp;Time Axis</source>
         <translation>&amp;Zeitachse</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="71" />
+        <location filename="../../ui/mainwindow.ui" line="76" />
         <source>Plot over time instead of angle</source>
         <translation>Über der Zeit statt über dem Winkel auftragen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="72" />
+        <location filename="../../ui/mainwindow.ui" line="77" />
         <source>&amp;Reset Zoom</source>
         <translation>Zoom &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="72" />
+        <location filename="../../ui/mainwindow.ui" line="77" />
         <source>Fit the contour and the plots into view</source>
         <translation>Kontur und Diagramme einpassen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="73" />
+        <location filename="../../ui/mainwindow.ui" line="78" />
         <source>&amp;About Camwright</source>
         <translation>Ü&amp;ber Camwright</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="73" />
+        <location filename="../../ui/mainwindow.ui" line="78" />
         <source>About Camwright</source>
         <translation>Über Camwright</translation>
     </message>
@@ -452,27 +457,27 @@
         <translation>Δa_r [mm/s²]</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="14" />
+        <location filename="../../src/app/views/joints_panel.cpp" line="13" />
         <source>Δ(d²P/dφ²) rel.</source>
         <translation>Δ(d²P/dφ²) rel.</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="16" />
+        <location filename="../../src/app/views/joints_panel.cpp" line="15" />
         <source>Continuity in φ, as the follower feels it: C0 position, C1 velocity, C2 acceleration</source>
         <translation>Stetigkeit in φ, wie der Stößel sie spürt: C0 Lage, C1 Geschwindigkeit, C2 Beschleunigung</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="18" />
+        <location filename="../../src/app/views/joints_panel.cpp" line="17" />
         <source>Continuity in each curve's own parameter: G1 is a continuous direction whose derivative jumps in length</source>
         <translation>Stetigkeit im eigenen Parameter jeder Kurve: G1 ist eine stetige Richtung, deren Ableitung in der Länge springt</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="20" />
+        <location filename="../../src/app/views/joints_panel.cpp" line="19" />
         <source>Jump of the radial acceleration at the joint</source>
         <translation>Sprung der Radialbeschleunigung am Übergang</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="26" />
+        <location filename="../../src/app/views/joints_panel.cpp" line="25" />
         <source>Click a joint to put the cursor there</source>
         <translation>Einen Übergang anklicken, um den Cursor dorthin zu setzen</translation>
     </message>
@@ -706,227 +711,227 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="42" />
+        <location filename="../../src/app/mainwindow.cpp" line="43" />
         <source>Camwright projects (*.cam.json)</source>
         <translation>Camwright-Projekte (*.cam.json)</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="48" />
+        <location filename="../../src/app/mainwindow.cpp" line="49" />
         <source>… and %1 more</source>
         <translation>… und %1 weitere</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="167" />
+        <location filename="../../src/app/mainwindow.cpp" line="172" />
         <source>Machining limits and times (Ctrl+M)</source>
         <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="183" />
+        <location filename="../../src/app/mainwindow.cpp" line="188" />
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="185" />
+        <location filename="../../src/app/mainwindow.cpp" line="190" />
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="204" />
+        <location filename="../../src/app/mainwindow.cpp" line="209" />
         <source>Approximate Arc by &amp;Béziers…</source>
         <translation>Bogen durch &amp;Béziers annähern …</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="207" />
+        <location filename="../../src/app/mainwindow.cpp" line="212" />
         <source>Replace the selected arc by cubic Bézier pieces within a radial error you give</source>
         <translation>Den ausgewählten Bogen durch kubische Bézierstücke innerhalb einer vorgegebenen Radialabweichung ersetzen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="210" />
+        <location filename="../../src/app/mainwindow.cpp" line="215" />
         <source>&amp;Round Corner…</source>
         <translation>Ecke &amp;verrunden …</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="214" />
+        <location filename="../../src/app/mainwindow.cpp" line="219" />
         <source>Replace the corner before the selected segment by a tangent switch arc</source>
         <translation>Die Ecke vor dem ausgewählten Segment durch einen tangentialen Schaltbogen ersetzen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="220" />
-        <location filename="../../src/app/mainwindow.cpp" line="227" />
-        <location filename="../../src/app/mainwindow.cpp" line="233" />
-        <location filename="../../src/app/mainwindow.cpp" line="239" />
+        <location filename="../../src/app/mainwindow.cpp" line="225" />
+        <location filename="../../src/app/mainwindow.cpp" line="232" />
+        <location filename="../../src/app/mainwindow.cpp" line="238" />
+        <location filename="../../src/app/mainwindow.cpp" line="244" />
         <source>Round Corner</source>
         <translation>Ecke verrunden</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="221" />
-        <location filename="../../src/app/mainwindow.cpp" line="576" />
+        <location filename="../../src/app/mainwindow.cpp" line="226" />
+        <location filename="../../src/app/mainwindow.cpp" line="582" />
         <source>Select the segment after the corner to round.</source>
         <translation>Das Segment nach der zu verrundenden Ecke auswählen.</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="234" />
+        <location filename="../../src/app/mainwindow.cpp" line="239" />
         <source>Radius of the switch arc [mm] (below %1 mm fits):</source>
         <translation>Radius des Schaltbogens [mm] (unter %1 mm passt):</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="244" />
+        <location filename="../../src/app/mainwindow.cpp" line="249" />
         <source>Approximate Arc by Béziers</source>
         <translation>Bogen durch Béziers annähern</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="245" />
+        <location filename="../../src/app/mainwindow.cpp" line="250" />
         <source>Admissible radial error [mm]:</source>
         <translation>Zulässige Radialabweichung [mm]:</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="248" />
+        <location filename="../../src/app/mainwindow.cpp" line="253" />
         <source>Approximate Arc</source>
         <translation>Bogen annähern</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="259" />
+        <location filename="../../src/app/mainwindow.cpp" line="264" />
         <source>About Camwright</source>
         <translation>Über Camwright</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="260" />
+        <location filename="../../src/app/mainwindow.cpp" line="265" />
         <source>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Design and inspect cam contours: exact polar kinematics of the follower.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</source>
         <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="274" />
+        <location filename="../../src/app/mainwindow.cpp" line="279" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="291" />
+        <location filename="../../src/app/mainwindow.cpp" line="296" />
         <source>%1 cannot be opened:
 %2</source>
         <translation>%1 kann nicht geöffnet werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="296" />
+        <location filename="../../src/app/mainwindow.cpp" line="301" />
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="304" />
-        <location filename="../../src/app/mainwindow.cpp" line="311" />
+        <location filename="../../src/app/mainwindow.cpp" line="309" />
+        <location filename="../../src/app/mainwindow.cpp" line="316" />
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="316" />
+        <location filename="../../src/app/mainwindow.cpp" line="321" />
         <source>The project has problems; fix them before saving (a file with these problems could not be opened again):
 %1</source>
         <translation>Das Projekt hat Fehler; bitte vor dem Speichern beheben (eine Datei mit diesen Fehlern ließe sich nicht wieder öffnen):
 %1</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="326" />
+        <location filename="../../src/app/mainwindow.cpp" line="331" />
         <source>%1 could not be written: %2</source>
         <translation>%1 konnte nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="331" />
+        <location filename="../../src/app/mainwindow.cpp" line="336" />
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="338" />
-        <location filename="../../src/app/mainwindow.cpp" line="352" />
+        <location filename="../../src/app/mainwindow.cpp" line="343" />
+        <location filename="../../src/app/mainwindow.cpp" line="357" />
         <source>Save Project</source>
         <translation>Projekt speichern</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="343" />
+        <location filename="../../src/app/mainwindow.cpp" line="348" />
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="359" />
+        <location filename="../../src/app/mainwindow.cpp" line="364" />
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="360" />
+        <location filename="../../src/app/mainwindow.cpp" line="365" />
         <source>%1 has unsaved changes. Save them?</source>
         <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="419" />
+        <location filename="../../src/app/mainwindow.cpp" line="424" />
         <source>Open Example</source>
         <translation>Beispiel öffnen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="443" />
+        <location filename="../../src/app/mainwindow.cpp" line="448" />
         <source>not computed: the project has problems</source>
         <translation>nicht berechnet: das Projekt hat Fehler</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="452" />
+        <location filename="../../src/app/mainwindow.cpp" line="458" />
         <source>%1 samples computed in %2 ms</source>
         <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="512" />
+        <location filename="../../src/app/mainwindow.cpp" line="518" />
         <source>Valid · 1 segment</source>
         <translation>Gültig · 1 Segment</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="513" />
+        <location filename="../../src/app/mainwindow.cpp" line="519" />
         <source>Valid · %1 segments</source>
         <translation>Gültig · %1 Segmente</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="518" />
+        <location filename="../../src/app/mainwindow.cpp" line="524" />
         <source>1 problem: </source>
         <translation>1 Fehler: </translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="518" />
+        <location filename="../../src/app/mainwindow.cpp" line="524" />
         <source>%1 problems: </source>
         <translation>%1 Fehler: </translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="526" />
+        <location filename="../../src/app/mainwindow.cpp" line="532" />
         <source>%1[*] — Camwright</source>
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="546" />
+        <location filename="../../src/app/mainwindow.cpp" line="552" />
         <source>Insert segment</source>
         <translation>Segment einfügen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="548" />
+        <location filename="../../src/app/mainwindow.cpp" line="554" />
         <source>Split window</source>
         <translation>Fenster teilen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="581" />
+        <location filename="../../src/app/mainwindow.cpp" line="587" />
         <source>Round corner</source>
         <translation>Ecke verrunden</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="583" />
+        <location filename="../../src/app/mainwindow.cpp" line="589" />
         <source>Corner rounded with a %1 mm switch arc</source>
         <translation>Ecke mit einem Schaltbogen von %1 mm verrundet</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="588" />
+        <location filename="../../src/app/mainwindow.cpp" line="594" />
         <source>Select the arc to approximate first.</source>
         <translation>Zuerst den anzunähernden Bogen auswählen.</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="594" />
+        <location filename="../../src/app/mainwindow.cpp" line="600" />
         <source>Approximate arc by Béziers</source>
         <translation>Bogen durch Béziers annähern</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../src/app/mainwindow.cpp" line="595" />
+        <location filename="../../src/app/mainwindow.cpp" line="601" />
         <source>%n Bézier piece(s): radial error %1 mm, end/middle speed ratio %2</source>
         <translation>
             <numerusform>%n Bézierstück: Radialabweichung %1 mm, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform>
@@ -934,17 +939,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="606" />
+        <location filename="../../src/app/mainwindow.cpp" line="612" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="610" />
+        <location filename="../../src/app/mainwindow.cpp" line="616" />
         <source>The windows already fit.</source>
         <translation>Die Fenster passen bereits.</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="614" />
+        <location filename="../../src/app/mainwindow.cpp" line="620" />
         <source>Fit windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -1002,6 +1007,55 @@ T = %3 s</translation>
         <location filename="../../src/app/views/motion_panel.cpp" line="88" />
         <source>The speed must not be 0 (and a period must be positive).</source>
         <translation>Die Drehzahl darf nicht 0 sein (und eine Periode muss positiv sein).</translation>
+    </message>
+</context>
+<context>
+    <name>cam::PathStudyPanel</name>
+    <message>
+        <location filename="../../src/app/views/path_study_panel.cpp" line="17" />
+        <source>x, y [mm]</source>
+        <translation>x, y [mm]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/path_study_panel.cpp" line="17" />
+        <source>x', y' [mm]</source>
+        <translation>x', y' [mm]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/path_study_panel.cpp" line="17" />
+        <source>x'', y'' [mm]</source>
+        <translation>x'', y'' [mm]</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/path_study_panel.cpp" line="18" />
+        <source>quot. − anal.</source>
+        <translation>Quot. − anal.</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/path_study_panel.cpp" line="23" />
+        <source>segment parameter t</source>
+        <translation>Segmentparameter t</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/path_study_panel.cpp" line="36" />
+        <source> analytic</source>
+        <translation> analytisch</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/path_study_panel.cpp" line="36" />
+        <source> quotient</source>
+        <translation> Quotient</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/path_study_panel.cpp" line="45" />
+        <location filename="../../src/app/views/path_study_panel.cpp" line="51" />
+        <source>The contour has no Bézier or Hermite segment.</source>
+        <translation>Die Kontur hat kein Bézier- oder Hermite-Segment.</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/path_study_panel.cpp" line="58" />
+        <source>The contour's splines one after another over their parameter t (piece k runs from k to k + 1). Blue x, red y; lines analytic, circles the difference quotients (step h = %1); at the bottom their difference, solid for the first and dashed for the second derivative.</source>
+        <translation>Die Splines der Kontur nacheinander über ihrem Parameter t (Stück k läuft von k bis k + 1). Blau x, rot y; Linien analytisch, Kreise die Differenzenquotienten (Schritt h = %1); unten ihre Differenz, durchgezogen für die erste und gestrichelt für die zweite Ableitung.</translation>
     </message>
 </context>
 <context>

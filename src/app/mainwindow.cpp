@@ -33,6 +33,7 @@
 #include "views/kinematics_plots.h"
 #include "views/machining_panel.h"
 #include "views/motion_panel.h"
+#include "views/path_study_panel.h"
 #include "views/state_readout.h"
 
 namespace cam {
@@ -116,6 +117,7 @@ MainWindow::MainWindow(QWidget* parent)
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
     m_ui->machiningDock->hide();  // until the user opens it (the saved layout may show it)
+    m_ui->pathStudyDock->hide();
     restoreState(settings.value("window/state").toByteArray());
     m_ui->actionAxisTime->setChecked(settings.value("view/timeAxis", false).toBool());
     rebuildRecentMenu();
@@ -160,6 +162,9 @@ void MainWindow::setUpDocks() {
         setCursorTime(t);
         m_ui->segmentTable->selectRow(right);
     });
+    m_pathStudy = new PathStudyPanel(m_ui->pathStudyDock);
+    m_ui->pathStudyDock->setWidget(m_pathStudy);
+    m_ui->pathStudyDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
     m_machining = new MachiningPanel(m_document, m_ui->machiningDock);
     m_ui->machiningDock->setWidget(m_machining);
     QAction* machining = m_ui->machiningDock->toggleViewAction();
@@ -173,7 +178,7 @@ void MainWindow::setUpDocks() {
     });
     resizeDocks({m_ui->motionDock, m_ui->readoutDock}, {140, 400}, Qt::Vertical);
     for (QDockWidget* dock : {m_ui->segmentsDock, m_ui->jointsDock, m_ui->motionDock,
-                              m_ui->readoutDock, m_ui->machiningDock}) {
+                              m_ui->readoutDock, m_ui->machiningDock, m_ui->pathStudyDock}) {
         m_ui->menuView->addAction(dock->toggleViewAction());
     }
 }
@@ -446,6 +451,7 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
     m_contour->setResult(result);
     m_plots->setResult(result);
     m_joints->setResult(result);
+    m_pathStudy->setResult(result);
     m_cursorT = std::fmod(m_cursorT, result->period);
     setCursorTime(m_cursorT);
     m_computeLabel->setText(

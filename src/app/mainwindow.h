@@ -20,6 +20,7 @@ class ComputeEngine;
 class ContourView;
 class KinematicsPlots;
 class JointsPanel;
+class PathStudyPanel;
 class MachiningPanel;
 class MotionPanel;
 class ProjectDocument;
@@ -45,6 +46,7 @@ public:
     [[nodiscard]] StateReadout* readout() const { return m_readout; }
     [[nodiscard]] MachiningPanel* machiningPanel() const { return m_machining; }
     [[nodiscard]] JointsPanel* jointsPanel() const { return m_joints; }
+    [[nodiscard]] PathStudyPanel* pathStudyPanel() const { return m_pathStudy; }
 
     /// @brief Replaces arc `row` by Bézier pieces within `maxErrorMm` (one undo step); returns
     /// the problem, or empty on success (the achieved error goes to the status bar).
@@ -103,6 +105,7 @@ private:
     MotionPanel* m_motion;
     MachiningPanel* m_machining;
     JointsPanel* m_joints;
+    PathStudyPanel* m_pathStudy;
     QLabel* m_validationLabel;
     QLabel* m_computeLabel;
     double m_cursorT = 0.0;

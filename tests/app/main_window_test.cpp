@@ -25,6 +25,7 @@
 #include "models/arc_table_model.h"
 #include "views/contour_view.h"
 #include "views/joints_panel.h"
+#include "views/path_study_panel.h"
 #include "views/state_readout.h"
 
 #include <qcustomplot.h>
@@ -489,6 +490,34 @@ TEST(JointsPanel, ListsEveryJointAndClickingOneGoesThere) {
                       joints->visualItemRect(joints->item(2, 0)).center());
     EXPECT_TRUE(window.readout()->text().contains("φ 69.691411"))
         << window.readout()->text().toStdString();
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(PathStudyPanel, ShowsTheSplinesAnalyticAndByDifferenceQuotient) {
+    MainWindow window;
+    const QString mixed = QString::fromStdString(test::dataPath("reference/spline-mix.cam.json"));
+    ASSERT_TRUE(window.loadFile(mixed).isEmpty());
+    window.show();
+    window.findChild<QDockWidget*>("pathStudyDock")->show();
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    // One Bézier and one Hermite: two pieces of 101 samples each.
+    QCustomPlot* first = window.pathStudyPanel()->plot(1);
+    EXPECT_EQ(first->graph(0)->data()->size(), 202);
+    EXPECT_EQ(first->graph(2)->data()->size(), 202);
+    // The differences are the O(h²) truncation: small against the derivatives themselves.
+    QCustomPlot* diff = window.pathStudyPanel()->plot(3);
+    double worst = 0.0;
+    for (auto it = diff->graph(0)->data()->constBegin(); it != diff->graph(0)->data()->constEnd();
+         ++it) {
+        worst = std::max(worst, std::abs(it->value));
+    }
+    EXPECT_GT(worst, 0.0);
+    EXPECT_LT(worst, 1e-2);
 }
 
 }  // namespace

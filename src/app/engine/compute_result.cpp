@@ -107,6 +107,11 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     if (cancel.load()) return nullptr;
     result->analysis = analyzeContour(*result->contour, result->omega);
     buildOutlines(*result);
+    std::vector<CubicBezier> splines;
+    for (const SegmentSpec& spec : request.project->contour) {
+        if (isSpline(spec.type)) splines.push_back(bezierOf(spec));
+    }
+    if (!splines.empty()) result->pathStudy = studyPath(splines, 100);
     if (cancel.load()) return nullptr;
     buildCurves(*result);
     result->computeMs = static_cast<double>(timer.nsecsElapsed()) / 1e6;

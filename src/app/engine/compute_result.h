@@ -14,6 +14,7 @@
 #include "contour/contour.h"
 #include "kinematics/kinematics.h"
 #include "project/project.h"
+#include "spline/path_study.h"
 #include "timing/machining_time.h"
 
 namespace cam {
@@ -57,6 +58,8 @@ struct ComputeResult {
     /// x range of the plotted turn.
     QCPRange xRange;
     double computeMs = 0.0;
+    /// The path study of the contour's spline segments, in contour order (empty: none).
+    PathStudy pathStudy;
 
     [[nodiscard]] bool ok() const { return errors.empty() && contour.has_value(); }
 };
