@@ -711,227 +711,287 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="43" />
+        <location filename="../../src/app/mainwindow.cpp" line="50" />
         <source>Camwright projects (*.cam.json)</source>
         <translation>Camwright-Projekte (*.cam.json)</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="49" />
+        <location filename="../../src/app/mainwindow.cpp" line="56" />
         <source>… and %1 more</source>
         <translation>… und %1 weitere</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="172" />
+        <location filename="../../src/app/mainwindow.cpp" line="179" />
         <source>Machining limits and times (Ctrl+M)</source>
         <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="188" />
+        <location filename="../../src/app/mainwindow.cpp" line="195" />
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="190" />
+        <location filename="../../src/app/mainwindow.cpp" line="197" />
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="209" />
+        <location filename="../../src/app/mainwindow.cpp" line="216" />
         <source>Approximate Arc by &amp;Béziers…</source>
         <translation>Bogen durch &amp;Béziers annähern …</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="212" />
+        <location filename="../../src/app/mainwindow.cpp" line="219" />
         <source>Replace the selected arc by cubic Bézier pieces within a radial error you give</source>
         <translation>Den ausgewählten Bogen durch kubische Bézierstücke innerhalb einer vorgegebenen Radialabweichung ersetzen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="215" />
+        <location filename="../../src/app/mainwindow.cpp" line="222" />
+        <source>New Contour Through &amp;Points…</source>
+        <translation>Neue Kontur durch &amp;Punkte …</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="224" />
+        <source>A closed Bézier spline through teach-in points, with automatic handles</source>
+        <translation>Ein geschlossener Bézierspline durch Teach-in-Punkte mit automatischen Griffen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="229" />
+        <source>New Contour Through Points</source>
+        <translation>Neue Kontur durch Punkte</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="232" />
+        <source>x, y per line, in mm, counter-clockwise around the rotation centre</source>
+        <translation>x, y je Zeile, in mm, gegen den Uhrzeigersinn um das Drehzentrum</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="236" />
+        <source>Chord</source>
+        <translation>Sehne</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="236" />
+        <source>Circumcircle</source>
+        <translation>Umkreis</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="236" />
+        <source>Oval</source>
+        <translation>Oval</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="243" />
+        <source>Points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="244" />
+        <source>Handle rule</source>
+        <translation>Griffregel</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="245" />
+        <source>Bulge factor</source>
+        <translation>Wölbungsfaktor</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="254" />
         <source>&amp;Round Corner…</source>
         <translation>Ecke &amp;verrunden …</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="219" />
+        <location filename="../../src/app/mainwindow.cpp" line="258" />
         <source>Replace the corner before the selected segment by a tangent switch arc</source>
         <translation>Die Ecke vor dem ausgewählten Segment durch einen tangentialen Schaltbogen ersetzen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="225" />
-        <location filename="../../src/app/mainwindow.cpp" line="232" />
-        <location filename="../../src/app/mainwindow.cpp" line="238" />
-        <location filename="../../src/app/mainwindow.cpp" line="244" />
+        <location filename="../../src/app/mainwindow.cpp" line="264" />
+        <location filename="../../src/app/mainwindow.cpp" line="271" />
+        <location filename="../../src/app/mainwindow.cpp" line="277" />
+        <location filename="../../src/app/mainwindow.cpp" line="283" />
         <source>Round Corner</source>
         <translation>Ecke verrunden</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="226" />
-        <location filename="../../src/app/mainwindow.cpp" line="582" />
+        <location filename="../../src/app/mainwindow.cpp" line="265" />
+        <location filename="../../src/app/mainwindow.cpp" line="641" />
         <source>Select the segment after the corner to round.</source>
         <translation>Das Segment nach der zu verrundenden Ecke auswählen.</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="239" />
+        <location filename="../../src/app/mainwindow.cpp" line="278" />
         <source>Radius of the switch arc [mm] (below %1 mm fits):</source>
         <translation>Radius des Schaltbogens [mm] (unter %1 mm passt):</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="249" />
+        <location filename="../../src/app/mainwindow.cpp" line="288" />
         <source>Approximate Arc by Béziers</source>
         <translation>Bogen durch Béziers annähern</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="250" />
+        <location filename="../../src/app/mainwindow.cpp" line="289" />
         <source>Admissible radial error [mm]:</source>
         <translation>Zulässige Radialabweichung [mm]:</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="253" />
+        <location filename="../../src/app/mainwindow.cpp" line="292" />
         <source>Approximate Arc</source>
         <translation>Bogen annähern</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="264" />
+        <location filename="../../src/app/mainwindow.cpp" line="303" />
         <source>About Camwright</source>
         <translation>Über Camwright</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="265" />
+        <location filename="../../src/app/mainwindow.cpp" line="304" />
         <source>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Design and inspect cam contours: exact polar kinematics of the follower.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</source>
         <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="279" />
+        <location filename="../../src/app/mainwindow.cpp" line="318" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="296" />
+        <location filename="../../src/app/mainwindow.cpp" line="335" />
         <source>%1 cannot be opened:
 %2</source>
         <translation>%1 kann nicht geöffnet werden:
 %2</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="301" />
+        <location filename="../../src/app/mainwindow.cpp" line="340" />
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="309" />
-        <location filename="../../src/app/mainwindow.cpp" line="316" />
+        <location filename="../../src/app/mainwindow.cpp" line="348" />
+        <location filename="../../src/app/mainwindow.cpp" line="355" />
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="321" />
+        <location filename="../../src/app/mainwindow.cpp" line="360" />
         <source>The project has problems; fix them before saving (a file with these problems could not be opened again):
 %1</source>
         <translation>Das Projekt hat Fehler; bitte vor dem Speichern beheben (eine Datei mit diesen Fehlern ließe sich nicht wieder öffnen):
 %1</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="331" />
+        <location filename="../../src/app/mainwindow.cpp" line="370" />
         <source>%1 could not be written: %2</source>
         <translation>%1 konnte nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="336" />
+        <location filename="../../src/app/mainwindow.cpp" line="375" />
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="343" />
-        <location filename="../../src/app/mainwindow.cpp" line="357" />
+        <location filename="../../src/app/mainwindow.cpp" line="382" />
+        <location filename="../../src/app/mainwindow.cpp" line="396" />
         <source>Save Project</source>
         <translation>Projekt speichern</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="348" />
+        <location filename="../../src/app/mainwindow.cpp" line="387" />
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="364" />
+        <location filename="../../src/app/mainwindow.cpp" line="403" />
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="365" />
+        <location filename="../../src/app/mainwindow.cpp" line="404" />
         <source>%1 has unsaved changes. Save them?</source>
         <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="424" />
+        <location filename="../../src/app/mainwindow.cpp" line="463" />
         <source>Open Example</source>
         <translation>Beispiel öffnen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="448" />
+        <location filename="../../src/app/mainwindow.cpp" line="487" />
         <source>not computed: the project has problems</source>
         <translation>nicht berechnet: das Projekt hat Fehler</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="458" />
+        <location filename="../../src/app/mainwindow.cpp" line="497" />
         <source>%1 samples computed in %2 ms</source>
         <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="518" />
+        <location filename="../../src/app/mainwindow.cpp" line="557" />
         <source>Valid · 1 segment</source>
         <translation>Gültig · 1 Segment</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="519" />
+        <location filename="../../src/app/mainwindow.cpp" line="558" />
         <source>Valid · %1 segments</source>
         <translation>Gültig · %1 Segmente</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="524" />
+        <location filename="../../src/app/mainwindow.cpp" line="563" />
         <source>1 problem: </source>
         <translation>1 Fehler: </translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="524" />
+        <location filename="../../src/app/mainwindow.cpp" line="563" />
         <source>%1 problems: </source>
         <translation>%1 Fehler: </translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="532" />
+        <location filename="../../src/app/mainwindow.cpp" line="571" />
         <source>%1[*] — Camwright</source>
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="552" />
+        <location filename="../../src/app/mainwindow.cpp" line="591" />
         <source>Insert segment</source>
         <translation>Segment einfügen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="554" />
+        <location filename="../../src/app/mainwindow.cpp" line="593" />
         <source>Split window</source>
         <translation>Fenster teilen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="587" />
+        <location filename="../../src/app/mainwindow.cpp" line="629" />
+        <source>line %1: expected "x, y" (got "%2")</source>
+        <translation>Zeile %1: erwartet "x, y" (erhalten "%2")</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="636" />
+        <source>New contour through points</source>
+        <translation>Neue Kontur durch Punkte</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="646" />
         <source>Round corner</source>
         <translation>Ecke verrunden</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="589" />
+        <location filename="../../src/app/mainwindow.cpp" line="648" />
         <source>Corner rounded with a %1 mm switch arc</source>
         <translation>Ecke mit einem Schaltbogen von %1 mm verrundet</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="594" />
+        <location filename="../../src/app/mainwindow.cpp" line="653" />
         <source>Select the arc to approximate first.</source>
         <translation>Zuerst den anzunähernden Bogen auswählen.</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="600" />
+        <location filename="../../src/app/mainwindow.cpp" line="659" />
         <source>Approximate arc by Béziers</source>
         <translation>Bogen durch Béziers annähern</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../src/app/mainwindow.cpp" line="601" />
+        <location filename="../../src/app/mainwindow.cpp" line="660" />
         <source>%n Bézier piece(s): radial error %1 mm, end/middle speed ratio %2</source>
         <translation>
             <numerusform>%n Bézierstück: Radialabweichung %1 mm, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform>
@@ -939,17 +999,17 @@
         </translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="612" />
+        <location filename="../../src/app/mainwindow.cpp" line="671" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="616" />
+        <location filename="../../src/app/mainwindow.cpp" line="675" />
         <source>The windows already fit.</source>
         <translation>Die Fenster passen bereits.</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="620" />
+        <location filename="../../src/app/mainwindow.cpp" line="679" />
         <source>Fit windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -1037,23 +1097,23 @@ T = %3 s</translation>
         <translation>Segmentparameter t</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="36" />
+        <location filename="../../src/app/views/path_study_panel.cpp" line="37" />
         <source> analytic</source>
         <translation> analytisch</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="36" />
+        <location filename="../../src/app/views/path_study_panel.cpp" line="37" />
         <source> quotient</source>
         <translation> Quotient</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="45" />
-        <location filename="../../src/app/views/path_study_panel.cpp" line="51" />
+        <location filename="../../src/app/views/path_study_panel.cpp" line="46" />
+        <location filename="../../src/app/views/path_study_panel.cpp" line="52" />
         <source>The contour has no Bézier or Hermite segment.</source>
         <translation>Die Kontur hat kein Bézier- oder Hermite-Segment.</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="58" />
+        <location filename="../../src/app/views/path_study_panel.cpp" line="59" />
         <source>The contour's splines one after another over their parameter t (piece k runs from k to k + 1). Blue x, red y; lines analytic, circles the difference quotients (step h = %1); at the bottom their difference, solid for the first and dashed for the second derivative.</source>
         <translation>Die Splines der Kontur nacheinander über ihrem Parameter t (Stück k läuft von k bis k + 1). Blau x, rot y; Linien analytisch, Kreise die Differenzenquotienten (Schritt h = %1); unten ihre Differenz, durchgezogen für die erste und gestrichelt für die zweite Ableitung.</translation>
     </message>

@@ -1,15 +1,21 @@
 #include "mainwindow.h"
 
 #include <QCloseEvent>
+#include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QEventLoop>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFormLayout>
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPlainTextEdit>
 #include <QSaveFile>
 #include <QSettings>
 #include <QSplitter>
@@ -27,6 +33,7 @@
 #include "models/arc_table_model.h"
 #include "models/delegates.h"
 #include "spline/circle_approximation.h"
+#include "spline/teach_in.h"
 #include "ui_mainwindow.h"
 #include "views/contour_view.h"
 #include "views/joints_panel.h"
@@ -212,6 +219,40 @@ void MainWindow::setUpActions() {
         tr("Replace the selected arc by cubic Bézier pieces within a radial "
            "error you give"));
     m_ui->menuEdit->addAction(approximate);
+    auto* teachIn = new QAction(tr("New Contour Through &Points…"), this);
+    teachIn->setObjectName("actionContourThroughPoints");
+    teachIn->setToolTip(
+        tr("A closed Bézier spline through teach-in points, with automatic "
+           "handles"));
+    m_ui->menuEdit->addAction(teachIn);
+    connect(teachIn, &QAction::triggered, this, [this] {
+        QDialog dialog(this);
+        dialog.setWindowTitle(tr("New Contour Through Points"));
+        auto* form = new QFormLayout(&dialog);
+        auto* points = new QPlainTextEdit(&dialog);
+        points->setPlaceholderText(
+            tr("x, y per line, in mm, counter-clockwise around the "
+               "rotation centre"));
+        points->setPlainText("20, 0\n14, 15\n-3, 22\n-18, 9\n-16, -12\n5, -19");
+        auto* rule = new QComboBox(&dialog);
+        rule->addItems({tr("Chord"), tr("Circumcircle"), tr("Oval")});
+        rule->setCurrentIndex(2);
+        auto* bulge = new QDoubleSpinBox(&dialog);
+        bulge->setRange(0.05, 5.0);
+        bulge->setSingleStep(0.05);
+        bulge->setValue(1.0);
+        auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+        form->addRow(tr("Points"), points);
+        form->addRow(tr("Handle rule"), rule);
+        form->addRow(tr("Bulge factor"), bulge);
+        form->addRow(buttons);
+        connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+        connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+        if (dialog.exec() != QDialog::Accepted) return;
+        const QString problem =
+            contourThroughPoints(points->toPlainText(), rule->currentIndex(), bulge->value());
+        if (!problem.isEmpty()) QMessageBox::warning(this, dialog.windowTitle(), problem);
+    });
     auto* round = new QAction(tr("&Round Corner…"), this);
     round->setObjectName("actionRoundCorner");
     round->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
@@ -576,6 +617,26 @@ void MainWindow::moveSegment(int delta) {
     if (row < 0 || to < 0 || to >= static_cast<int>(m_document->project().contour.size())) return;
     m_document->undoStack()->push(new MoveSegment(m_document, row, to));
     m_ui->segmentTable->selectRow(to);
+}
+
+QString MainWindow::contourThroughPoints(const QString& pointsText, int rule, double bulge) {
+    std::vector<Eigen::Vector2d> knots;
+    const QStringList lines = pointsText.split('\n', Qt::SkipEmptyParts);
+    for (int i = 0; i < lines.size(); ++i) {
+        const QStringList cells = lines[i].split(',');
+        bool okX = false, okY = false;
+        const double x = cells.value(0).trimmed().toDouble(&okX);
+        const double y = cells.value(1).trimmed().toDouble(&okY);
+        if (cells.size() != 2 || !okX || !okY || !std::isfinite(x) || !std::isfinite(y)) {
+            return tr("line %1: expected \"x, y\" (got \"%2\")").arg(i + 1).arg(lines[i]);
+        }
+        knots.emplace_back(x, y);
+    }
+    const auto contour = cam::contourThroughPoints(knots, static_cast<HandleRule>(rule), bulge);
+    if (!contour.ok()) return diagnosticsText(contour.errors());
+    m_document->undoStack()->push(
+        new ReplaceContour(m_document, contour.value(), tr("New contour through points")));
+    return {};
 }
 
 QString MainWindow::roundCorner(int joint, double rho) {

@@ -56,6 +56,10 @@ public:
     /// rho (one undo step); returns the problem with the feasible range, or empty on success.
     QString roundCorner(int joint, double rho);
 
+    /// @brief Replaces the contour by a closed Bézier spline through the points (x, y per line)
+    /// with automatic handles; one undo step. Returns the problem, empty on success.
+    QString contourThroughPoints(const QString& pointsText, int rule, double bulge);
+
     /// @brief Puts the cursor at time t (s): readout, follower ray and plot cursors.
     void setCursorTime(double t);
 

@@ -522,3 +522,23 @@ TEST(PathStudyPanel, ShowsTheSplinesAnalyticAndByDifferenceQuotient) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(MainWindow, ContourThroughPointsIsOneUndoStepAndBadLinesAreNamed) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    const Project before = window.document()->project();
+    const QString points = "20, 0\n14, 15\n-3, 22\n-18, 9\n-16, -12\n5, -19\n";
+    EXPECT_TRUE(window.contourThroughPoints(points, 2, 1.0).isEmpty());
+    EXPECT_EQ(window.document()->project().contour.size(), 6u);
+    EXPECT_EQ(window.document()->project().contour[0].type, SegmentType::Bezier);
+    EXPECT_TRUE(window.document()->isValid());
+    EXPECT_TRUE(window.contourThroughPoints("20, 0\n14, x\n", 2, 1.0).contains("line 2"));
+    window.document()->undoStack()->undo();
+    EXPECT_EQ(window.document()->project(), before);
+}
+
+}  // namespace
+}  // namespace cam
