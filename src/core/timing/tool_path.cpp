@@ -5,6 +5,7 @@
 
 #include "analysis/analysis.h"
 #include "common/angles.h"
+#include "spline/biarc.h"
 
 namespace cam {
 namespace {
@@ -204,12 +205,26 @@ void moveStart(PathSegment& s, const Vec2& p) {
                          sweepFrom(from, to, s.sweep), s.start.z());
 }
 
+/// The piece offset outwards (to the right of travel) by rho: lines shift, arcs change radius
+/// (turning left the centre is on the left, so the radius grows). Empty if it vanishes.
+std::optional<PathSegment> offsetPiece(const PathSegment& s, double rho) {
+    if (s.kind == PathSegment::Kind::Line) {
+        const Vec2 d = xy(s.end - s.start).normalized();
+        const Vec3 shift(rho * d.y(), -rho * d.x(), 0.0);
+        return PathSegment::line(s.start + shift, s.end + shift);
+    }
+    const double radius = s.radius + (s.sweep >= 0 ? rho : -rho);
+    if (radius <= 1e-9) return std::nullopt;
+    return PathSegment::arc(s.center, radius, s.startAngle, s.sweep, s.start.z());
+}
+
 }  // namespace
 
 Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) {
     Diagnostics errors;
     const std::size_t n = contour.size();
-    std::vector<PathSegment> offset;
+    // Per contour segment, its offset pieces (one, or a spline's biarcs).
+    std::vector<std::vector<PathSegment>> offset(n);
     std::vector<ContourFrame> starts, ends;
     for (std::size_t k = 0; k < n; ++k) {
         const ContourSegment& seg = contour.segment(k);
@@ -218,16 +233,28 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         ends.push_back(b);
         const std::string at = "contour[" + std::to_string(k) + "]";
         if (isSpline(seg.type)) {
-            errors.push_back({at,
-                              "Bézier and Hermite segments cannot be offset into a tool path "
-                              "of lines and arcs yet; approximate the segment by arcs"});
+            // Tangent arc pairs within 0.1 µm: lines and arcs for the planner, G1 throughout.
+            for (const PathSegment& piece :
+                 biarcsOf(CubicBezier{seg.bezierKernel.p}, kSplineToleranceMm)) {
+                const auto shifted = offsetPiece(piece, toolRadius);
+                if (!shifted) {
+                    errors.push_back({at, "the tool radius " + formatNumber(toolRadius) +
+                                              " mm is larger than this curve's tightest "
+                                              "concave radius " +
+                                              formatNumber(piece.radius) +
+                                              " mm: the offset path degenerates"});
+                    break;
+                }
+                offset[k].push_back(*shifted);
+            }
             continue;
         }
         if (seg.type == SegmentType::Line) {
-            offset.push_back(PathSegment::line(Vec3(a.point.x() + toolRadius * a.normal.x(),
-                                                    a.point.y() + toolRadius * a.normal.y(), 0),
-                                               Vec3(b.point.x() + toolRadius * b.normal.x(),
-                                                    b.point.y() + toolRadius * b.normal.y(), 0)));
+            offset[k].push_back(
+                PathSegment::line(Vec3(a.point.x() + toolRadius * a.normal.x(),
+                                       a.point.y() + toolRadius * a.normal.y(), 0),
+                                  Vec3(b.point.x() + toolRadius * b.normal.x(),
+                                       b.point.y() + toolRadius * b.normal.y(), 0)));
             continue;
         }
         const Vec2 c = seg.arc.center;
@@ -246,13 +273,18 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         const double direction = cross(wa, a.tangent) >= 0 ? 1.0 : -1.0;
         const bool fullTurn = n == 1;
         const double sweep = fullTurn ? direction * kTwoPi : sweepFrom(wa, wb, direction);
-        offset.push_back(PathSegment::arc(c, radius, std::atan2(wa.y(), wa.x()), sweep, 0.0));
+        offset[k].push_back(PathSegment::arc(c, radius, std::atan2(wa.y(), wa.x()), sweep, 0.0));
     }
     if (!errors.empty()) return errors;
-    if (toolRadius == 0.0 || n == 1) return ToolPath{offset};
-
     ToolPath path;
-    std::vector<PathSegment> joined = offset;
+    if (toolRadius == 0.0 || n == 1) {
+        for (const auto& pieces : offset) {
+            path.segments.insert(path.segments.end(), pieces.begin(), pieces.end());
+        }
+        return path;
+    }
+
+    std::vector<std::vector<PathSegment>> joined = offset;
     std::vector<std::optional<PathSegment>> cornerArcs(n);
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t next = (k + 1) % n;
@@ -276,28 +308,32 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         // Concave corner: both offsets overshoot; cut them where they cross, nearest the corner.
         const Vec2 guess = left.point + toolRadius * (left.normal + right.normal).normalized();
         std::optional<Vec2> best;
-        for (const Vec2& p : intersections(joined[k], joined[next])) {
+        for (const Vec2& p : intersections(joined[k].back(), joined[next].front())) {
             if (!best || (p - guess).norm() < (*best - guess).norm()) best = p;
         }
         if (!best) {
             errors.push_back({at, "the offset segments do not meet at this corner"});
             continue;
         }
-        moveEnd(joined[k], *best);
-        moveStart(joined[next], *best);
+        moveEnd(joined[k].back(), *best);
+        moveStart(joined[next].front(), *best);
     }
     for (std::size_t k = 0; k < n; ++k) {
-        if (joined[k].length() < 1e-9 ||
-            (joined[k].kind == PathSegment::Kind::Line &&
-             (xy(joined[k].end - joined[k].start)).dot(xy(offset[k].end - offset[k].start)) <= 0)) {
-            errors.push_back({"contour[" + std::to_string(k) + "]",
-                              "the tool radius " + formatNumber(toolRadius) +
-                                  " mm is too large for this segment: its offset vanishes"});
+        for (std::size_t i = 0; i < joined[k].size(); ++i) {
+            const PathSegment& j = joined[k][i];
+            const PathSegment& o = offset[k][i];
+            if (j.length() < 1e-9 || (j.kind == PathSegment::Kind::Line &&
+                                      (xy(j.end - j.start)).dot(xy(o.end - o.start)) <= 0)) {
+                errors.push_back({"contour[" + std::to_string(k) + "]",
+                                  "the tool radius " + formatNumber(toolRadius) +
+                                      " mm is too large for this segment: its offset vanishes"});
+                break;
+            }
         }
     }
     if (!errors.empty()) return errors;
     for (std::size_t k = 0; k < n; ++k) {
-        path.segments.push_back(joined[k]);
+        path.segments.insert(path.segments.end(), joined[k].begin(), joined[k].end());
         if (cornerArcs[k]) path.segments.push_back(*cornerArcs[k]);
     }
     return path;

@@ -54,10 +54,14 @@ struct PathPoint {
 /// repeated, an arc whose end points are at different heights, a non-finite value).
 [[nodiscard]] Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points);
 
+/// @brief How closely a spline segment's tangent arcs (biarcs) follow it in a tool path, mm.
+inline constexpr double kSplineToleranceMm = 1e-4;
+
 /// @brief The path of the tool centre that mills the contour from outside: every segment of the
-/// contour offset outwards by `toolRadius` (arcs stay arcs, lines stay lines), joined at corners
-/// by an arc around the corner (convex) or trimmed to the offsets' intersection (concave).
-/// A radius that makes an offset degenerate is an error naming the segment.
+/// contour offset outwards by `toolRadius` (arcs stay arcs, lines stay lines; a spline becomes
+/// tangent arc pairs within kSplineToleranceMm), joined at corners by an arc around the corner
+/// (convex) or trimmed to the offsets' intersection (concave). A radius that makes an offset
+/// degenerate is an error naming the segment.
 [[nodiscard]] Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius);
 
 }  // namespace cam
