@@ -11,6 +11,8 @@
 #include "io/path_csv.h"
 #include "io/project_json.h"
 #include "kinematics/kinematics.h"
+#include "spline/biarc.h"
+#include "spline/teach_in.h"
 #include "timing/machining_time.h"
 #include "timing/tool_path.h"
 
@@ -257,12 +259,43 @@ int runTiming(const Arguments& args, std::ostream& out) {
             const Diagnostic& d = points.errors().front();
             throw CliError{kInvalidInput, *pathFile + ": " + d.location, d.message};
         }
-        auto built = toolPathFromPoints(points.value());
-        if (!built.ok()) {
-            const Diagnostic& d = built.errors().front();
-            throw CliError{kInvalidInput, *pathFile + ": " + d.location, d.message};
+        if (const auto rule = args.option("--spline")) {
+            // The points are teach-in knots of an open Bézier spline (math.md §4), milled as
+            // tangent arc pairs within 0.1 µm.
+            HandleRule handles;
+            if (*rule == "chord") {
+                handles = HandleRule::Chord;
+            } else if (*rule == "circumcircle") {
+                handles = HandleRule::Circumcircle;
+            } else if (*rule == "oval") {
+                handles = HandleRule::Oval;
+            } else {
+                throw CliError{kUsage, "--spline",
+                               "must be chord, circumcircle or oval (got \"" + *rule + "\")"};
+            }
+            std::vector<Eigen::Vector2d> knots;
+            for (const PathPoint& p : points.value()) {
+                if (p.bulge != 0.0 || p.position.z() != points.value().front().position.z()) {
+                    throw CliError{kInvalidInput, *pathFile,
+                                   "spline knots must lie in one plane z = const without bulges"};
+                }
+                knots.push_back(p.position.head<2>());
+            }
+            const auto spline = splineThroughPoints(knots, false, handles);
+            if (!spline.ok()) {
+                const Diagnostic& d = spline.errors().front();
+                throw CliError{kInvalidInput, *pathFile + ": " + d.location, d.message};
+            }
+            path = toolPathFromSpline(spline.value(), kSplineToleranceMm,
+                                      points.value().front().position.z());
+        } else {
+            auto built = toolPathFromPoints(points.value());
+            if (!built.ok()) {
+                const Diagnostic& d = built.errors().front();
+                throw CliError{kInvalidInput, *pathFile + ": " + d.location, d.message};
+            }
+            path = std::move(built).value();
         }
-        path = std::move(built).value();
     } else {
         const Loaded loaded = load(args.positional.front());
         double toolRadius = 0.0;

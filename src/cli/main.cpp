@@ -19,6 +19,7 @@ commands:
   analyze PROJECT                       joints (continuity, jumps) and extremes, as JSON
   timing (PROJECT | --path POINTS.csv) --method seed|exact-stop|optimal
          [--accel AX,AY[,AZ]] [--vmax VX,VY[,VZ]] [--feed F] [--step L] [--detail]
+         [--spline chord|circumcircle|oval]   (the points are teach-in knots of a spline)
                                         machining time of the contour (offset by the tool
                                         radius) or of a point list (x,y,z[,bulge] per line)
   fillet PROJECT --joint K (--radius R | --speed V --accel A --vae E) --out NEW
@@ -50,7 +51,7 @@ int main(int argc, char** argv) {
         {"analyze", 1, {}, {}},
         {"timing",
          1,
-         {"--method", "--path", "--accel", "--vmax", "--feed", "--step"},
+         {"--method", "--path", "--accel", "--vmax", "--feed", "--step", "--spline"},
          {"--detail"},
          0},
         {"fillet", 1, {"--joint", "--radius", "--speed", "--accel", "--vae", "--out"}, {}},

@@ -150,3 +150,30 @@ TEST(CliTiming, AToolWiderThanANotchCannotBeComputed) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(CliTiming, TeachInPointsAsAnOpenSplinePath) {
+    const std::string knots = writeTemp("knots.csv", "0,0,0\n30,20,0\n60,5,0\n90,25,0\n");
+    const std::vector<std::string> limits{"--accel", "500,500,200", "--feed", "150", "--detail"};
+    auto run = [&](const char* method) {
+        std::vector<std::string> a{"timing", "--path",   knots, "--spline",
+                                   "oval",   "--method", method};
+        a.insert(a.end(), limits.begin(), limits.end());
+        return timing(a);
+    };
+    const auto optimal = run("optimal"), exact = run("exact-stop");
+    // Biarcs: many tangent pieces, through which the optimal plan keeps its speed.
+    EXPECT_GT(optimal.at("segments").get<int>(), 4);
+    EXPECT_LT(optimal.at("time_s").get<double>(), 0.5 * exact.at("time_s").get<double>());
+    // No faster than the feed allows along the spline's length.
+    EXPECT_GT(optimal.at("time_s").get<double>(), optimal.at("length_mm").get<double>() / 150.0);
+    const auto bad = test::runCli(
+        {"timing", "--path", knots, "--spline", "bogus", "--method", "optimal", "--accel", "1,1"});
+    EXPECT_EQ(bad.exitCode, 1);
+    EXPECT_NE(bad.err.find("--spline"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cam
