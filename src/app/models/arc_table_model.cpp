@@ -284,19 +284,12 @@ bool ArcTableModel::changeType(SegmentSpec& s, SegmentType type) {
     if (type == s.type) return true;
     // The curve's points at its window ends: the new segment joins the same two points, so the
     // contour stays closed.
-    Eigen::Vector2d ends[2];
+    Eigen::Vector2d ends[2] = {pointOnSegment(s, s.phiStartDeg), pointOnSegment(s, s.phiEndDeg)};
     for (int e = 0; e < 2; ++e) {
-        const double phi = degToRad(e == 0 ? s.phiStartDeg : s.phiEndDeg);
-        double r = 0.0;
-        if (s.type == SegmentType::Arc) {
-            r = Arc{s.center, s.radius, s.branch}.evaluate(phi).r;
-        } else if (s.type == SegmentType::Line) {
-            r = Line{s.from, s.to}.evaluate(phi).r;
-        } else {
-            r = (e == 0 ? bezierOf(s).p[0] : bezierOf(s).p[3]).norm();
+        if (!ends[e].allFinite()) {  // an invalid row: keep at least a direction
+            const double phi = degToRad(e == 0 ? s.phiStartDeg : s.phiEndDeg);
+            ends[e] = {std::cos(phi), std::sin(phi)};
         }
-        ends[e] = std::isfinite(r) ? Eigen::Vector2d(r * std::cos(phi), r * std::sin(phi))
-                                   : Eigen::Vector2d(std::cos(phi), std::sin(phi));
     }
     if (type == SegmentType::Line) {
         s.from = ends[0];

@@ -53,6 +53,11 @@ struct SegmentSpec {
 /// @brief Start and end point of a segment's curve (lines and splines; arcs need their window).
 [[nodiscard]] std::pair<Eigen::Vector2d, Eigen::Vector2d> endPointsOf(const SegmentSpec& segment);
 
+/// @brief Where the follower ray at angle phiDeg meets the segment's curve (its own formula,
+/// also just outside its window). At a spline's window ends its own end point is meant, even
+/// if the ray touches the curve elsewhere too. NaN where the ray misses.
+[[nodiscard]] Eigen::Vector2d pointOnSegment(const SegmentSpec& segment, double phiDeg);
+
 /// @brief How the turning speed is given; exactly one of them is stored in the file.
 enum class SpeedUnit { OmegaRadS, Rpm, PeriodS };
 

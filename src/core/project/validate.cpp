@@ -266,30 +266,13 @@ private:
         return ok;
     }
 
-    static Eigen::Vector2d pointAt(const SegmentSpec& s, double phiDeg) {
-        const double phi = degToRad(phiDeg);
-        double r = 0.0;
-        if (s.type == SegmentType::Arc) {
-            r = Arc{s.center, s.radius, s.branch}.evaluate(phi).r;
-        } else if (s.type == SegmentType::Line) {
-            r = Line{s.from, s.to}.evaluate(phi).r;
-        } else {
-            // At a window end the curve's own end point is meant, even if the ray touches the
-            // curve elsewhere too.
-            const double hint =
-                std::abs(phiDeg - s.phiStartDeg) < std::abs(phiDeg - s.phiEndDeg) ? 0.0 : 1.0;
-            r = bezierOf(s).evaluate(std::cos(phi), std::sin(phi), hint).r;
-        }
-        return {r * std::cos(phi), r * std::sin(phi)};
-    }
-
     void checkJoints() {
         const auto& c = m_project.contour;
         for (std::size_t k = 0; k < c.size(); ++k) {
             const std::size_t next = (k + 1) % c.size();
             const double angle = c[k].phiEndDeg;
-            const Eigen::Vector2d left = pointAt(c[k], angle);
-            const Eigen::Vector2d right = pointAt(c[next], c[next].phiStartDeg);
+            const Eigen::Vector2d left = pointOnSegment(c[k], angle);
+            const Eigen::Vector2d right = pointOnSegment(c[next], c[next].phiStartDeg);
             const double gap = (left - right).norm();
             if (!(gap <= kJointToleranceMm)) {
                 error(segmentLocation(k) + "/" + segmentLocation(next),
