@@ -1,6 +1,7 @@
 #include "views/joints_panel.h"
 
 #include <QHeaderView>
+#include <QShowEvent>
 
 #include "common/angles.h"
 
@@ -21,7 +22,7 @@ JointsPanel::JointsPanel(QWidget* parent) : QTableWidget(parent) {
     setSelectionBehavior(QAbstractItemView::SelectRows);
     setSelectionMode(QAbstractItemView::SingleSelection);
     verticalHeader()->setVisible(false);
-    horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
     setToolTip(tr("Click a joint to put the cursor there"));
     connect(this, &QTableWidget::cellClicked, this, [this](int row, int) {
         if (!m_result || row < 0 || row >= static_cast<int>(m_result->analysis.joints.size())) {
@@ -33,9 +34,23 @@ JointsPanel::JointsPanel(QWidget* parent) : QTableWidget(parent) {
 }
 
 void JointsPanel::setResult(const ComputeResultPtr& result) {
-    m_result = result;
     if (!result || !result->ok()) return;
-    const auto& joints = result->analysis.joints;
+    m_result = result;
+    // A hidden tab does no work while edits stream in; it catches up when it is shown.
+    m_stale = !isVisible();
+    if (!m_stale) fill();
+}
+
+void JointsPanel::showEvent(QShowEvent* event) {
+    QTableWidget::showEvent(event);
+    if (m_stale) fill();
+}
+
+void JointsPanel::fill() {
+    m_stale = false;
+    if (!m_result) return;
+    const auto& joints = m_result->analysis.joints;
+    const bool first = rowCount() == 0;
     setRowCount(static_cast<int>(joints.size()));
     const QLocale locale;
     for (int row = 0; row < rowCount(); ++row) {
@@ -58,6 +73,7 @@ void JointsPanel::setResult(const ComputeResultPtr& result) {
             setItem(row, c, item);
         }
     }
+    if (first) resizeColumnsToContents();
 }
 
 }  // namespace cam

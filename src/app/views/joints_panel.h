@@ -18,8 +18,14 @@ signals:
     /// The user picked the joint between segments `left` and `right` at angle phi (rad).
     void jointPicked(int left, int right, double phi);
 
+protected:
+    void showEvent(QShowEvent* event) override;
+
 private:
+    void fill();
+
     ComputeResultPtr m_result;
+    bool m_stale = false;  ///< a result arrived while hidden: fill when shown
 };
 
 }  // namespace cam

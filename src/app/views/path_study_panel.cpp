@@ -3,6 +3,7 @@
 #include <qcustomplot.h>
 
 #include <QLabel>
+#include <QShowEvent>
 #include <QVBoxLayout>
 
 #include "views/palette.h"
@@ -47,7 +48,20 @@ PathStudyPanel::PathStudyPanel(QWidget* parent) : QWidget(parent) {
 }
 
 void PathStudyPanel::setResult(const ComputeResultPtr& result) {
-    const PathStudy& s = result->pathStudy;
+    m_result = result;
+    m_stale = !isVisible();  // hidden (the default): no replots while edits stream in
+    if (!m_stale) fill();
+}
+
+void PathStudyPanel::showEvent(QShowEvent* event) {
+    QWidget::showEvent(event);
+    if (m_stale) fill();
+}
+
+void PathStudyPanel::fill() {
+    m_stale = false;
+    if (!m_result) return;
+    const PathStudy& s = m_result->pathStudy;
     if (s.t.empty()) {
         m_note->setText(tr("The contour has no Bézier or Hermite segment."));
         for (QCustomPlot* p : m_plots) {

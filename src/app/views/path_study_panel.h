@@ -20,9 +20,16 @@ public:
     void setResult(const ComputeResultPtr& result);
     [[nodiscard]] QCustomPlot* plot(int i) const { return m_plots[static_cast<std::size_t>(i)]; }
 
+protected:
+    void showEvent(QShowEvent* event) override;
+
 private:
+    void fill();
+
     std::array<QCustomPlot*, 4> m_plots{};
     QLabel* m_note;
+    ComputeResultPtr m_result;
+    bool m_stale = false;  ///< a result arrived while hidden: draw when shown
 };
 
 }  // namespace cam
