@@ -210,6 +210,22 @@ TEST(Translations, GermanIsEmbeddedAndComplete) {
 namespace cam {
 namespace {
 
+/// Drags in the contour view from `from` to `to` (mm) in `steps` mouse moves, as a user would.
+void dragInView(ContourView* view, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
+                int steps) {
+    auto pixel = [view](const Eigen::Vector2d& p) {
+        return QPointF(view->xAxis->coordToPixel(p.x()), view->yAxis->coordToPixel(p.y()));
+    };
+    QTest::mousePress(view, Qt::LeftButton, {}, pixel(from).toPoint());
+    for (int i = 1; i <= steps; ++i) {
+        const QPointF p = pixel(from + (to - from) * i / steps);
+        QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
+                         Qt::NoModifier);
+        QCoreApplication::sendEvent(view, &move);
+    }
+    QTest::mouseRelease(view, Qt::LeftButton, {}, pixel(to).toPoint());
+}
+
 TEST(ContourView, DraggingTheCentreHandleIsOneUndoStep) {
     MainWindow window;
     ASSERT_TRUE(window.loadFile(kExample).isEmpty());
@@ -220,19 +236,7 @@ TEST(ContourView, DraggingTheCentreHandleIsOneUndoStep) {
     view->setSelectedSegment(3);  // the lobe at the top, centre (0, 20.9)
     view->replot(QCustomPlot::rpImmediateRefresh);
     const SegmentSpec before = window.document()->project().contour[3];
-    auto pixel = [&](double x, double y) {
-        return QPointF(view->xAxis->coordToPixel(x), view->yAxis->coordToPixel(y));
-    };
-    const QPointF start = pixel(before.center.x(), before.center.y());
-    QTest::mousePress(view, Qt::LeftButton, {}, start.toPoint());
-    for (int i = 1; i <= 5; ++i) {
-        const QPointF p = pixel(before.center.x() + 0.2 * i, before.center.y());
-        QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
-                         Qt::NoModifier);
-        QCoreApplication::sendEvent(view, &move);
-    }
-    QTest::mouseRelease(view, Qt::LeftButton, {},
-                        pixel(before.center.x() + 1.0, before.center.y()).toPoint());
+    dragInView(view, before.center, before.center + Eigen::Vector2d(1.0, 0.0), 5);
     const SegmentSpec after = window.document()->project().contour[3];
     EXPECT_NEAR(after.center.x(), before.center.x() + 1.0, 0.1);  // within a pixel or so
     EXPECT_NEAR(after.center.y(), before.center.y(), 0.1);
@@ -398,18 +402,8 @@ TEST(ContourView, DraggingABezierHandleShapesTheCurveInOneUndoStep) {
     view->replot(QCustomPlot::rpImmediateRefresh);
     const SegmentSpec before = window.document()->project().contour[3];
     const int steps = window.document()->undoStack()->count();
-    auto pixel = [&](const Eigen::Vector2d& p) {
-        return QPointF(view->xAxis->coordToPixel(p.x()), view->yAxis->coordToPixel(p.y()));
-    };
     const Eigen::Vector2d p1 = before.controls[1];
-    QTest::mousePress(view, Qt::LeftButton, {}, pixel(p1).toPoint());
-    for (int i = 1; i <= 4; ++i) {
-        const QPointF p = pixel(p1 + Eigen::Vector2d(0.0, 0.25 * i));
-        QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
-                         Qt::NoModifier);
-        QCoreApplication::sendEvent(view, &move);
-    }
-    QTest::mouseRelease(view, Qt::LeftButton, {}, pixel(p1 + Eigen::Vector2d(0, 1)).toPoint());
+    dragInView(view, p1, p1 + Eigen::Vector2d(0, 1), 4);
     const SegmentSpec after = window.document()->project().contour[3];
     EXPECT_NEAR((after.controls[1] - (p1 + Eigen::Vector2d(0, 1))).norm(), 0.0, 0.1);
     EXPECT_EQ(after.controls[0], before.controls[0]);  // the ends stay on the joints
