@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "common/tolerances.h"
 #include "contour/contour.h"
 #include "kinematics/kinematics.h"
 
@@ -18,13 +19,6 @@ namespace cam {
 /// an arc's angle, a line's 0..1): G1 is a continuous direction with a jump in the derivative's
 /// length, as at a spline knot with collinear handles of different lengths.
 enum class Continuity { None, C0, G1, C1, C2 };
-
-/// @brief A joint is C1 (tangent) when the contour's tangent turns by at most this much there.
-/// Files carry about ten significant digits (the six-lobe example breaks by 8e-7°).
-inline constexpr double kTangentToleranceDeg = 1e-5;
-/// @brief A G1 joint is C1 (C1 is C2) when the first (second) derivative of P(φ) jumps by at
-/// most this fraction of its local size: "nearly continuous" in the sense of math.md §4.
-inline constexpr double kCurvatureToleranceRel = 1e-6;
 
 [[nodiscard]] const char* continuityName(Continuity c);
 

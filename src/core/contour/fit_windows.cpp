@@ -1,4 +1,5 @@
 #include "contour/fit_windows.h"
+#include "geometry/planar.h"
 
 #include <cmath>
 #include <optional>
@@ -15,8 +16,6 @@ using Vec = Eigen::Vector2d;
 /// Circles (or a circle and a line) closer than this count as touching: their tangent point
 /// is used. Far below anything a designer types, above the rounding of ten-digit data.
 double touchTolerance(double scale) { return 1e-6 * (1.0 + scale); }
-
-Vec perp(const Vec& v) { return {-v.y(), v.x()}; }
 
 std::vector<Vec> circleCircle(const Vec& c1, double r1, const Vec& c2, double r2) {
     const Vec d = c2 - c1;
@@ -78,11 +77,6 @@ std::vector<Vec> meetingPoints(const SegmentSpec& s, const SegmentSpec& t) {
     if (sArc) return lineCircle(t.from, t.to, s.center, s.radius);
     if (tArc) return lineCircle(s.from, s.to, t.center, t.radius);
     return lineLine(s.from, s.to, t.from, t.to);
-}
-
-double wrapDeg(double deg) {
-    double w = std::remainder(deg, 360.0);
-    return w <= -180.0 ? w + 360.0 : w;
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "fillet/fillet.h"
+#include "geometry/planar.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,14 +19,7 @@ namespace {
 
 using Vec = Eigen::Vector2d;
 
-double cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
-Vec perp(const Vec& v) { return {-v.y(), v.x()}; }
 double polarDeg(const Vec& p) { return radToDeg(std::atan2(p.y(), p.x())); }
-
-double mod360(double deg) {
-    const double m = std::fmod(deg, 360.0);
-    return m < 0.0 ? m + 360.0 : m;
-}
 
 /// Angle from direction a to direction b turning in `sense` (+1 ccw, -1 cw), in [0, 2π).
 double sweepRad(const Vec& a, const Vec& b, double sense) {

@@ -1,4 +1,5 @@
 #include "geometry/bezier.h"
+#include "geometry/planar.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,6 @@ namespace {
 
 using Vec = Eigen::Vector2d;
 
-double cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 /// A truncated Taylor series c0 + c1·h + c2·h² + c3·h³.
 using Series = std::array<double, 4>;

@@ -8,12 +8,6 @@
 namespace cam {
 namespace {
 
-/// Wraps an angle in degrees into (-180, 180].
-double wrapDeg(double deg) {
-    double w = std::remainder(deg, 360.0);
-    return w <= -180.0 ? w + 360.0 : w;
-}
-
 std::string deg(double value) { return formatNumber(value) + "°"; }
 
 class Validator {

@@ -3,16 +3,10 @@
 /// @brief Every rule of project-format.md, checked on the document, each problem located.
 
 #include "common/diagnostic.h"
+#include "common/tolerances.h"
 #include "project/project.h"
 
 namespace cam {
-
-/// @brief Largest disagreement of two window boundaries that still counts as "the same angle".
-inline constexpr double kWindowToleranceDeg = 1e-9;
-/// @brief Largest positional gap at a joint (C0) that is not an error.
-inline constexpr double kJointToleranceMm = 1e-6;
-/// @brief How far a line's given window may differ from the polar angles of its end points.
-inline constexpr double kLineWindowToleranceDeg = 1e-6;
 
 struct ValidationOptions {
     /// Check that neighbouring segments meet (C0). The editor's engine turns this off so that a

@@ -1,4 +1,5 @@
 #include "spline/biarc.h"
+#include "geometry/planar.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,6 @@ namespace {
 
 using Vec = Eigen::Vector2d;
 
-double cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 /// The arc that leaves `a` along unit tangent `t` and passes through `b` (a line if straight).
 PathSegment arcThrough(const Vec& a, const Vec& t, const Vec& b, double z) {

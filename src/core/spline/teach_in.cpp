@@ -1,4 +1,5 @@
 #include "spline/teach_in.h"
+#include "geometry/planar.h"
 
 #include <cmath>
 #include <limits>
@@ -10,7 +11,6 @@ namespace {
 
 using Vec = Eigen::Vector2d;
 
-double cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 /// Unit tangent at knot b of the circle through a, b, c, oriented along the travel a → c;
 /// the travel direction itself when the three are collinear.

@@ -1,4 +1,5 @@
 #include "timing/tool_path.h"
+#include "geometry/planar.h"
 
 #include <cmath>
 #include <optional>
@@ -14,7 +15,6 @@ using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 
 Vec2 xy(const Vec3& v) { return v.head<2>(); }
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 }  // namespace
 
