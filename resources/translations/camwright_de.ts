@@ -205,7 +205,7 @@
     </message>
 </context>
 <context>
-    <name>cam::ArcTableModel</name>
+    <name>cam::SegmentTableModel</name>
     <message>
         <location filename="../../src/app/models/arc_table_model.cpp" line="88" />
         <location filename="../../src/app/models/arc_table_model.cpp" line="133" />

@@ -30,8 +30,8 @@
 #include "engine/compute_engine.h"
 #include "fillet/fillet.h"
 #include "io/project_json.h"
-#include "models/arc_table_model.h"
 #include "models/delegates.h"
+#include "models/segment_table_model.h"
 #include "spline/circle_approximation.h"
 #include "spline/teach_in.h"
 #include "ui_mainwindow.h"
@@ -73,7 +73,7 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       m_ui(std::make_unique<Ui::MainWindow>()),
       m_document(new ProjectDocument(this)),
-      m_model(new ArcTableModel(m_document, this)),
+      m_model(new SegmentTableModel(m_document, this)),
       m_engine(new ComputeEngine(this)) {
     m_ui->setupUi(this);
     setAcceptDrops(true);
@@ -140,8 +140,8 @@ void MainWindow::setUpDocks() {
     table->setModel(m_model);
     auto* numbers = new NumberDelegate(table);
     auto* choices = new ChoiceDelegate(table);
-    for (int c = 0; c < ArcTableModel::ColumnCount; ++c) {
-        const bool choice = c == ArcTableModel::Type || c == ArcTableModel::Branch;
+    for (int c = 0; c < SegmentTableModel::ColumnCount; ++c) {
+        const bool choice = c == SegmentTableModel::Type || c == SegmentTableModel::Branch;
         table->setItemDelegateForColumn(
             c, choice ? static_cast<QAbstractItemDelegate*>(choices) : numbers);
     }
@@ -321,9 +321,7 @@ void MainWindow::newProject() {
     p.motion = {SpeedUnit::PeriodS, 1.0};
     // An eccentric circle in two windows: a valid contour to start editing from.
     for (double start : {0.0, 180.0}) {
-        SegmentSpec s;
-        s.center = {5.0, 0.0};
-        s.radius = 30.0;
+        SegmentSpec s{Arc{{5.0, 0.0}, 30.0, Branch::Outer}};
         s.phiStartDeg = start;
         s.phiEndDeg = start + 180.0;
         p.contour.push_back(s);
@@ -592,12 +590,11 @@ void MainWindow::insertSegment() {
         s.phiStartDeg = mid;
         m_document->undoStack()->beginMacro(tr("Insert segment"));
         m_document->undoStack()->push(
-            new EditSegment(m_document, row - 1, above, SegmentField::Whole, tr("Split window")));
+            new EditSegment(m_document, row - 1, above, EditedField::Whole, tr("Split window")));
         m_document->undoStack()->push(new InsertSegment(m_document, row, s));
         m_document->undoStack()->endMacro();
     } else {
-        s.center = {0.0, 0.0};
-        s.radius = 20.0;
+        s.shape = Arc{{0.0, 0.0}, 20.0, Branch::Outer};
         s.phiStartDeg = 0.0;
         s.phiEndDeg = 360.0;
         m_document->undoStack()->push(new InsertSegment(m_document, row, s));

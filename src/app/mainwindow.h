@@ -15,7 +15,7 @@ class MainWindow;
 
 namespace cam {
 
-class ArcTableModel;
+class SegmentTableModel;
 class ComputeEngine;
 class ContourView;
 class KinematicsPlots;
@@ -40,7 +40,7 @@ public:
 
     [[nodiscard]] ProjectDocument* document() const { return m_document; }
     [[nodiscard]] ComputeEngine* engine() const { return m_engine; }
-    [[nodiscard]] ArcTableModel* tableModel() const { return m_model; }
+    [[nodiscard]] SegmentTableModel* tableModel() const { return m_model; }
     [[nodiscard]] KinematicsPlots* plots() const { return m_plots; }
     [[nodiscard]] ContourView* contourView() const { return m_contour; }
     [[nodiscard]] StateReadout* readout() const { return m_readout; }
@@ -101,7 +101,7 @@ private:
 
     std::unique_ptr<Ui::MainWindow> m_ui;
     ProjectDocument* m_document;
-    ArcTableModel* m_model;
+    SegmentTableModel* m_model;
     ComputeEngine* m_engine;
     ContourView* m_contour;
     KinematicsPlots* m_plots;

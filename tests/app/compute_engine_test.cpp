@@ -69,7 +69,7 @@ TEST(ComputeEngine, StreamingEditsShowOnlyNewerResultsAndEndOnTheLast) {
 TEST(ComputeEngine, AnInvalidProjectGivesItsErrorsNotACrash) {
     ComputeEngine engine;
     Project p = test::loadExample();
-    p.contour[2].radius = -1.0;
+    std::get<Arc>(p.contour[2].shape).radius = -1.0;
     engine.request(p, PlotAxis::Angle);
     ASSERT_TRUE(test::processEventsUntil([&] { return engine.latestResult() != nullptr; }));
     EXPECT_FALSE(engine.latestResult()->ok());

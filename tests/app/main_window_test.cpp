@@ -22,7 +22,7 @@
 #include "document/commands.h"
 #include "engine/compute_engine.h"
 #include "mainwindow.h"
-#include "models/arc_table_model.h"
+#include "models/segment_table_model.h"
 #include "views/contour_view.h"
 #include "views/joints_panel.h"
 #include "views/path_study_panel.h"
@@ -39,7 +39,7 @@ const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-
 TEST(MainWindow, OpeningABadFileLeavesTheOpenDocumentUntouched) {
     MainWindow window;
     ASSERT_TRUE(window.loadFile(kExample).isEmpty());
-    window.tableModel()->setData(window.tableModel()->index(1, ArcTableModel::CenterX), 18.2,
+    window.tableModel()->setData(window.tableModel()->index(1, SegmentTableModel::CenterX), 18.2,
                                  Qt::EditRole);
     const Project before = window.document()->project();
     const QString pathBefore = window.document()->filePath();
@@ -64,8 +64,8 @@ TEST(MainWindow, EditSaveReopen) {
     MainWindow window;
     ASSERT_TRUE(window.loadFile(kExample).isEmpty());
     // Two edits that keep the contour valid: the notch piece becomes a line, the speed halves.
-    ASSERT_TRUE(window.tableModel()->setData(window.tableModel()->index(0, ArcTableModel::Type), 1,
-                                             Qt::EditRole));
+    ASSERT_TRUE(window.tableModel()->setData(window.tableModel()->index(0, SegmentTableModel::Type),
+                                             1, Qt::EditRole));
     window.document()->undoStack()->push(new SetMotion(window.document(), {SpeedUnit::Rpm, 75.0}));
     window.document()->undoStack()->undo();
     window.document()->undoStack()->redo();
@@ -78,7 +78,7 @@ TEST(MainWindow, EditSaveReopen) {
     MainWindow other;
     ASSERT_TRUE(other.loadFile(path).isEmpty());
     EXPECT_EQ(serializeProject(other.document()->project()), serializeProject(edited));
-    EXPECT_EQ(other.document()->project().contour[0].type, SegmentType::Line);
+    EXPECT_EQ(other.document()->project().contour[0].type(), SegmentType::Line);
     EXPECT_EQ(other.document()->project().motion.unit, SpeedUnit::Rpm);
 }
 
@@ -87,7 +87,7 @@ TEST(MainWindow, RefusesToSaveAnInvalidProjectAndWritesNothing) {
     const QString path = dir.filePath("bad.cam.json");
     MainWindow window;
     ASSERT_TRUE(window.loadFile(kExample).isEmpty());
-    window.tableModel()->setData(window.tableModel()->index(2, ArcTableModel::Radius), 0.0,
+    window.tableModel()->setData(window.tableModel()->index(2, SegmentTableModel::Radius), 0.0,
                                  Qt::EditRole);
     const QString message = window.saveFile(path);
     EXPECT_TRUE(message.contains("contour[2].radius")) << message.toStdString();
@@ -98,9 +98,9 @@ TEST(MainWindow, RefusesToSaveAnInvalidProjectAndWritesNothing) {
 TEST(MainWindow, FitWindowsActionRepairsDisturbedBoundariesInOneUndoStep) {
     MainWindow window;
     ASSERT_TRUE(window.loadFile(kExample).isEmpty());
-    ArcTableModel* model = window.tableModel();
-    model->setData(model->index(1, ArcTableModel::PhiEnd), 51.0, Qt::EditRole);
-    model->setData(model->index(2, ArcTableModel::PhiStart), 51.0, Qt::EditRole);
+    SegmentTableModel* model = window.tableModel();
+    model->setData(model->index(1, SegmentTableModel::PhiEnd), 51.0, Qt::EditRole);
+    model->setData(model->index(2, SegmentTableModel::PhiStart), 51.0, Qt::EditRole);
     EXPECT_FALSE(window.document()->isValid());  // the joint no longer meets
     auto* fit = window.findChild<QAction*>("actionFitWindows");
     ASSERT_NE(fit, nullptr);
@@ -191,10 +191,11 @@ TEST(Translations, GermanIsEmbeddedAndComplete) {
         const auto menus = window.menuBar()->actions();
         ASSERT_FALSE(menus.isEmpty());
         EXPECT_EQ(menus.front()->text(), "&Datei");
-        EXPECT_EQ(
-            window.tableModel()->headerData(ArcTableModel::Radius, Qt::Horizontal, Qt::DisplayRole),
-            "Radius [mm]");
-        EXPECT_EQ(window.tableModel()->index(0, ArcTableModel::Type).data().toString(), "Bogen");
+        EXPECT_EQ(window.tableModel()->headerData(SegmentTableModel::Radius, Qt::Horizontal,
+                                                  Qt::DisplayRole),
+                  "Radius [mm]");
+        EXPECT_EQ(window.tableModel()->index(0, SegmentTableModel::Type).data().toString(),
+                  "Bogen");
     }
     QCoreApplication::removeTranslator(&german);
     // Every string has a translation: the .ts file says so for each message.
@@ -236,11 +237,12 @@ TEST(ContourView, DraggingTheCentreHandleIsOneUndoStep) {
     view->setSelectedSegment(3);  // the lobe at the top, centre (0, 20.9)
     view->replot(QCustomPlot::rpImmediateRefresh);
     const SegmentSpec before = window.document()->project().contour[3];
-    dragInView(view, before.center, before.center + Eigen::Vector2d(1.0, 0.0), 5);
-    const SegmentSpec after = window.document()->project().contour[3];
-    EXPECT_NEAR(after.center.x(), before.center.x() + 1.0, 0.1);  // within a pixel or so
-    EXPECT_NEAR(after.center.y(), before.center.y(), 0.1);
-    EXPECT_EQ(after.radius, before.radius);
+    const Arc& arcBefore = test::arcOf(before);
+    dragInView(view, arcBefore.center, arcBefore.center + Eigen::Vector2d(1.0, 0.0), 5);
+    const Arc arcAfter = test::arcOf(window.document()->project().contour[3]);
+    EXPECT_NEAR(arcAfter.center.x(), arcBefore.center.x() + 1.0, 0.1);  // within a pixel or so
+    EXPECT_NEAR(arcAfter.center.y(), arcBefore.center.y(), 0.1);
+    EXPECT_EQ(arcAfter.radius, arcBefore.radius);
     EXPECT_EQ(window.document()->undoStack()->count(), 1);  // five moves, one gesture
     window.document()->undoStack()->undo();
     EXPECT_EQ(window.document()->project().contour[3], before);
@@ -257,13 +259,13 @@ TEST(MainWindow, EditingARadiusRedrawsThePlotsEvenThoughTheJointsOpen) {
     ASSERT_TRUE(window.loadFile(kExample).isEmpty());
     ASSERT_TRUE(window.waitForCurrentResult(10000));
     const auto before = window.engine()->latestResult();
-    ArcTableModel* model = window.tableModel();
-    ASSERT_TRUE(model->setData(model->index(1, ArcTableModel::Radius), 8.5, Qt::EditRole));
+    SegmentTableModel* model = window.tableModel();
+    ASSERT_TRUE(model->setData(model->index(1, SegmentTableModel::Radius), 8.5, Qt::EditRole));
     ASSERT_TRUE(window.waitForCurrentResult(10000));
     const auto after = window.engine()->latestResult();
     ASSERT_NE(after, before);
     ASSERT_TRUE(after->ok());
-    EXPECT_DOUBLE_EQ(after->project->contour[1].radius, 8.5);
+    EXPECT_DOUBLE_EQ(test::arcOf(after->project->contour[1]).radius, 8.5);
     // The lobe grew: its tip at 30° is 29 + 0.397 mm out, in the plotted data too.
     window.setCursorTime(after->period * 30.0 / 360.0);
     EXPECT_TRUE(window.readout()->text().contains("r 29.396819"))
@@ -394,21 +396,24 @@ TEST(ContourView, DraggingABezierHandleShapesTheCurveInOneUndoStep) {
     ASSERT_TRUE(window.loadFile(kExample).isEmpty());
     window.resize(1400, 860);
     window.show();
-    ArcTableModel* model = window.tableModel();
-    ASSERT_TRUE(model->setData(model->index(3, ArcTableModel::Type), 2, Qt::EditRole));  // Bézier
+    SegmentTableModel* model = window.tableModel();
+    ASSERT_TRUE(
+        model->setData(model->index(3, SegmentTableModel::Type), 2, Qt::EditRole));  // Bézier
     ASSERT_TRUE(window.waitForCurrentResult(10000));
     ContourView* view = window.contourView();
     view->setSelectedSegment(3);
     view->replot(QCustomPlot::rpImmediateRefresh);
     const SegmentSpec before = window.document()->project().contour[3];
     const int steps = window.document()->undoStack()->count();
-    const Eigen::Vector2d p1 = before.controls[1];
+    const CubicBezier& curveBefore = std::get<CubicBezier>(before.shape);
+    const Eigen::Vector2d p1 = curveBefore.p[1];
     dragInView(view, p1, p1 + Eigen::Vector2d(0, 1), 4);
-    const SegmentSpec after = window.document()->project().contour[3];
-    EXPECT_NEAR((after.controls[1] - (p1 + Eigen::Vector2d(0, 1))).norm(), 0.0, 0.1);
-    EXPECT_EQ(after.controls[0], before.controls[0]);  // the ends stay on the joints
-    EXPECT_EQ(after.controls[3], before.controls[3]);
-    EXPECT_EQ(after.controls[2], before.controls[2]);
+    const CubicBezier curveAfter =
+        std::get<CubicBezier>(window.document()->project().contour[3].shape);
+    EXPECT_NEAR((curveAfter.p[1] - (p1 + Eigen::Vector2d(0, 1))).norm(), 0.0, 0.1);
+    EXPECT_EQ(curveAfter.p[0], curveBefore.p[0]);  // the ends stay on the joints
+    EXPECT_EQ(curveAfter.p[3], curveBefore.p[3]);
+    EXPECT_EQ(curveAfter.p[2], curveBefore.p[2]);
     EXPECT_EQ(window.document()->undoStack()->count(), steps + 1);
     window.document()->undoStack()->undo();
     EXPECT_EQ(window.document()->project().contour[3], before);
@@ -427,7 +432,7 @@ TEST(MainWindow, ApproximatingAnArcIsOneUndoStepAndKeepsTheCamValid) {
     EXPECT_TRUE(window.approximateArc(1, 1e-5).isEmpty());
     const auto& contour = window.document()->project().contour;
     EXPECT_GT(contour.size(), before.contour.size());
-    EXPECT_EQ(contour[1].type, SegmentType::Bezier);
+    EXPECT_EQ(contour[1].type(), SegmentType::Bezier);
     EXPECT_TRUE(window.document()->isValid());
     window.document()->undoStack()->undo();
     EXPECT_EQ(window.document()->project(), before);
@@ -527,7 +532,7 @@ TEST(MainWindow, ContourThroughPointsIsOneUndoStepAndBadLinesAreNamed) {
     const QString points = "20, 0\n14, 15\n-3, 22\n-18, 9\n-16, -12\n5, -19\n";
     EXPECT_TRUE(window.contourThroughPoints(points, 2, 1.0).isEmpty());
     EXPECT_EQ(window.document()->project().contour.size(), 6u);
-    EXPECT_EQ(window.document()->project().contour[0].type, SegmentType::Bezier);
+    EXPECT_EQ(window.document()->project().contour[0].type(), SegmentType::Bezier);
     EXPECT_TRUE(window.document()->isValid());
     EXPECT_TRUE(window.contourThroughPoints("20, 0\n14, x\n", 2, 1.0).contains("line 2"));
     window.document()->undoStack()->undo();

@@ -16,7 +16,7 @@
 #include "document/commands.h"
 #include "engine/compute_engine.h"
 #include "mainwindow.h"
-#include "models/arc_table_model.h"
+#include "models/segment_table_model.h"
 #include "views/kinematics_plots.h"
 
 #include <qcustomplot.h>
@@ -41,8 +41,8 @@ std::unique_ptr<cam::MainWindow> makeWindow() {
 
 /// Toggles segment 0 between arc and line: a real table edit that keeps the contour valid.
 void editCell(cam::MainWindow& window, int k) {
-    cam::ArcTableModel* model = window.tableModel();
-    model->setData(model->index(0, cam::ArcTableModel::Type), k % 2, Qt::EditRole);
+    cam::SegmentTableModel* model = window.tableModel();
+    model->setData(model->index(0, cam::SegmentTableModel::Type), k % 2, Qt::EditRole);
 }
 
 void BM_EditToRedraw(benchmark::State& state) {

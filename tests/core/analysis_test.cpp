@@ -50,10 +50,7 @@ TEST(JointAnalysis, CornerHasTangentBreakOfItsGeometry) {
     p.motion = {SpeedUnit::PeriodS, 1.0};
     const Eigen::Vector2d corners[] = {{10, -10}, {10, 10}, {-10, 10}, {-10, -10}};
     for (int k = 0; k < 4; ++k) {
-        SegmentSpec s;
-        s.type = SegmentType::Line;
-        s.from = corners[k];
-        s.to = corners[(k + 1) % 4];
+        SegmentSpec s{Line{corners[k], corners[(k + 1) % 4]}};
         s.phiStartDeg = -45.0 + 90.0 * k;
         s.phiEndDeg = 45.0 + 90.0 * k;
         p.contour.push_back(s);

@@ -41,7 +41,7 @@ TEST(Contour, NormalizeStaysInOneTurn) {
 
 TEST(Contour, BuildRefusesAnInvalidDocumentWithLocatedErrors) {
     Project p = test::splitCircle(3.0, 20.0, {0.0, 180.0, 360.0});
-    p.contour[1].radius = -2.0;
+    std::get<Arc>(p.contour[1].shape).radius = -2.0;
     const auto c = Contour::build(p);
     ASSERT_FALSE(c.ok());
     EXPECT_EQ(c.errors().front().location, "contour[1].radius");
@@ -63,7 +63,7 @@ namespace {
 
 TEST(Contour, AnOpenJointCanBeCompiledOnRequestButIsNeverSilentlyValid) {
     Project p = test::splitCircle(3.0, 20.0, {0.0, 180.0, 360.0});
-    p.contour[1].radius = 21.0;  // both joints open by about 1 mm
+    std::get<Arc>(p.contour[1].shape).radius = 21.0;  // both joints open by about 1 mm
     const auto strict = Contour::build(p);
     ASSERT_FALSE(strict.ok());
     EXPECT_EQ(strict.errors().front().location, "contour[0]/contour[1]");
@@ -73,7 +73,7 @@ TEST(Contour, AnOpenJointCanBeCompiledOnRequestButIsNeverSilentlyValid) {
     EXPECT_DOUBLE_EQ(lenient.value().evaluate(degToRad(270.0)).r,
                      wider.evaluate(degToRad(270.0)).r);
     // Everything else is still checked.
-    p.contour[1].radius = -1.0;
+    std::get<Arc>(p.contour[1].shape).radius = -1.0;
     EXPECT_FALSE(Contour::build(p, ValidationOptions{.checkJoints = false}).ok());
 }
 

@@ -30,30 +30,22 @@ double unwrapInto(double phi, double lo) {
     return lo + std::fmod(std::fmod(phi - lo, 360.0) + 360.0, 360.0);
 }
 
+const Arc& arcOf(const SegmentSpec& s) { return std::get<Arc>(s.shape); }
+const Line& lineOf(const SegmentSpec& s) { return std::get<Line>(s.shape); }
+
 SegmentSpec line(const Vec& from, const Vec& to, double nearDeg) {
-    SegmentSpec s;
-    s.type = SegmentType::Line;
-    s.from = from;
-    s.to = to;
+    SegmentSpec s{Line{from, to}};
     std::tie(s.phiStartDeg, s.phiEndDeg) = lineWindowDeg(s, nearDeg);
     return s;
 }
 
 SegmentSpec arc(const Vec& center, double radius, Branch branch, double startDeg, double endDeg) {
-    SegmentSpec s;
-    s.type = SegmentType::Arc;
-    s.center = center;
-    s.radius = radius;
-    s.branch = branch;
-    s.phiStartDeg = startDeg;
-    s.phiEndDeg = endDeg;
-    return s;
+    return SegmentSpec{Arc{center, radius, branch}, startDeg, endDeg};
 }
 
 PolarDerivatives polar(const SegmentSpec& s, double phiDeg) {
     const double phi = degToRad(phiDeg);
-    return s.type == SegmentType::Arc ? Arc{s.center, s.radius, s.branch}.evaluate(phi)
-                                      : Line{s.from, s.to}.evaluate(phi);
+    return s.type() == SegmentType::Arc ? arcOf(s).evaluate(phi) : lineOf(s).evaluate(phi);
 }
 
 /// Where the follower ray at phi meets the segment.
@@ -77,23 +69,24 @@ Diagnostics validate(const std::vector<SegmentSpec>& contour) {
 }
 
 double distanceToLine(const Vec& p, const SegmentSpec& l) {
-    const Vec d = (l.to - l.from).normalized();
-    const Vec w = p - l.from;
+    const Vec d = (lineOf(l).to - lineOf(l).from).normalized();
+    const Vec w = p - lineOf(l).from;
     return std::abs(d.x() * w.y() - d.y() * w.x());
 }
 
 /// How far p lies from the segment's curve (line or circle).
 double offCurve(const Vec& p, const SegmentSpec& s) {
-    return s.type == SegmentType::Line ? distanceToLine(p, s)
-                                       : std::abs((p - s.center).norm() - s.radius);
+    return s.type() == SegmentType::Line ? distanceToLine(p, s)
+                                         : std::abs((p - arcOf(s).center).norm() - arcOf(s).radius);
 }
 
 /// Distance of the fillet centre from the neighbour: rho for a line; R + rho (external) or
 /// |R − rho| (internal) for a circle — returned as the deviation from the nearer of the two.
 double centreDeviation(const Vec& o, double rho, const SegmentSpec& s) {
-    if (s.type == SegmentType::Line) return std::abs(distanceToLine(o, s) - rho);
-    const double d = (o - s.center).norm();
-    return std::min(std::abs(d - (s.radius + rho)), std::abs(d - std::abs(s.radius - rho)));
+    if (s.type() == SegmentType::Line) return std::abs(distanceToLine(o, s) - rho);
+    const Arc& a = arcOf(s);
+    const double d = (o - a.center).norm();
+    return std::min(std::abs(d - (a.radius + rho)), std::abs(d - std::abs(a.radius - rho)));
 }
 
 /// Whether the ray angle phi (any turn) lies strictly inside the segment's window.
@@ -142,10 +135,10 @@ void expectValidFillet(const std::vector<SegmentSpec>& before, std::size_t joint
     const double scale = f.tangentPoint1.norm();
 
     // The fillet segment is the circle reported.
-    EXPECT_EQ(fil.type, SegmentType::Arc);
-    EXPECT_EQ(fil.radius, rho);
+    ASSERT_EQ(fil.type(), SegmentType::Arc);
+    EXPECT_EQ(arcOf(fil).radius, rho);
     EXPECT_EQ(f.radius, rho);
-    EXPECT_NEAR((fil.center - f.center).norm(), 0.0, 1e-12 * scale);
+    EXPECT_NEAR((arcOf(fil).center - f.center).norm(), 0.0, 1e-12 * scale);
 
     // Its centre lies rho from a line, R ± rho from a circle; the tangent points are on both
     // curves and on the fillet circle.
@@ -282,7 +275,7 @@ TEST(Fillet, SquareCornerHasItsCentreOnTheBisectorAtRhoRootTwo) {
                     1e-12);
         EXPECT_NEAR((r.tangentPoint1 - corner).norm(), rho, 1e-12);
         EXPECT_NEAR((r.tangentPoint2 - corner).norm(), rho, 1e-12);
-        EXPECT_EQ(r.contour[joint == 0 ? 4 : 1].branch, Branch::Outer);
+        EXPECT_EQ(arcOf(r.contour[joint == 0 ? 4 : 1]).branch, Branch::Outer);
         expectValidFillet(sq, joint, rho, r, Corner::Convex);
     }
 }
@@ -298,10 +291,10 @@ TEST(Fillet, AllFourSquareCornersRoundOneAfterAnother) {
     }
     ASSERT_EQ(c.size(), 8u);
     for (std::size_t i = 0; i < 8; ++i) {
-        EXPECT_EQ(c[i].type, i % 2 == 0 ? SegmentType::Line : SegmentType::Arc) << i;
+        EXPECT_EQ(c[i].type(), i % 2 == 0 ? SegmentType::Line : SegmentType::Arc) << i;
     }
     // Each side keeps the 12 mm between its two fillets.
-    EXPECT_NEAR((c[0].to - c[0].from).norm(), 12.0, 1e-12);
+    EXPECT_NEAR((lineOf(c[0]).to - lineOf(c[0]).from).norm(), 12.0, 1e-12);
 }
 
 TEST(Fillet, SquareRangeEndsWhereTheTangentPointReachesTheNextCorner) {
@@ -428,7 +421,7 @@ TEST(Fillet, ArcArcConvexCornerOfALens) {
         EXPECT_NEAR((r.center - Vec(0, joint == 1 ? y : -y)).norm(), 0.0, 1e-12);
         EXPECT_TRUE(relClose((r.center - Vec(e, 0)).norm(), R - rho, 1e-12));
         EXPECT_TRUE(relClose((r.center - Vec(-e, 0)).norm(), R - rho, 1e-12));
-        EXPECT_EQ(r.contour[joint == 1 ? 1 : 2].branch, Branch::Outer);
+        EXPECT_EQ(arcOf(r.contour[joint == 1 ? 1 : 2]).branch, Branch::Outer);
         expectValidFillet(lens, joint, rho, r, Corner::Convex);
     }
     // The offset circles (radius R − rho, centres 2e apart) meet while rho <= R − e.
@@ -450,7 +443,7 @@ TEST(Fillet, ArcArcConcaveCornerOfAPeanutTouchesFromOutside) {
         EXPECT_NEAR((r.center - Vec(0, joint == 1 ? y : -y)).norm(), 0.0, 1e-12);
         EXPECT_TRUE(relClose((r.center - Vec(e, 0)).norm(), R + rho, 1e-12));
         EXPECT_TRUE(relClose((r.center - Vec(-e, 0)).norm(), R + rho, 1e-12));
-        EXPECT_EQ(r.contour[joint == 1 ? 1 : 2].branch, Branch::Inner);
+        EXPECT_EQ(arcOf(r.contour[joint == 1 ? 1 : 2]).branch, Branch::Inner);
         expectValidFillet(peanut, joint, rho, r, Corner::Concave);
     }
     // As rho grows the fillet tends to the common tangent y = ±R and the tangent points to
@@ -531,7 +524,7 @@ TEST(Fillet, RefusesATangentJoint) {
 
 TEST(Fillet, RefusesAnInvalidContourAndAMissingJoint) {
     auto broken = square();
-    broken[1].from = {10, 11};  // opens the joint at (10, 10)
+    std::get<Line>(broken[1].shape).from = {10, 11};  // opens the joint at (10, 10)
     broken[1].phiStartDeg = lineWindowDeg(broken[1], 45.0).first;
     const auto f = filletJoint(broken, 2, 1.0);
     ASSERT_FALSE(f.ok());

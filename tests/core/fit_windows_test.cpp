@@ -41,9 +41,7 @@ TEST(FitWindows, MovesLineEndsToTheirIntersections) {
     const Eigen::Vector2d corners[] = {{10, -10}, {10, 10}, {-10, 10}, {-10, -10}};
     for (int k = 0; k < 4; ++k) {
         const Eigen::Vector2d a = corners[k], b = corners[(k + 1) % 4];
-        c[k].type = SegmentType::Line;
-        c[k].from = a + 0.2 * (a - b);  // 20 % beyond each corner
-        c[k].to = b + 0.1 * (b - a);
+        c[k].shape = Line{a + 0.2 * (a - b), b + 0.1 * (b - a)};  // 20 %, 10 % beyond corners
         c[k].phiStartDeg = -40.0 + 90.0 * k;
         c[k].phiEndDeg = 50.0 + 90.0 * k;
     }
@@ -51,8 +49,9 @@ TEST(FitWindows, MovesLineEndsToTheirIntersections) {
     const auto fitted = fitWindows(c);
     ASSERT_TRUE(fitted.ok());
     for (int k = 0; k < 4; ++k) {
-        EXPECT_NEAR((fitted.value()[k].from - corners[k]).norm(), 0.0, 1e-12) << k;
-        EXPECT_NEAR((fitted.value()[k].to - corners[(k + 1) % 4]).norm(), 0.0, 1e-12) << k;
+        const Line& line = *fitted.value()[k].as<Line>();
+        EXPECT_NEAR((line.from - corners[k]).norm(), 0.0, 1e-12) << k;
+        EXPECT_NEAR((line.to - corners[(k + 1) % 4]).norm(), 0.0, 1e-12) << k;
         EXPECT_NEAR(fitted.value()[k].phiStartDeg, -45.0 + 90.0 * k, 1e-12) << k;
     }
     Project p;
@@ -62,8 +61,8 @@ TEST(FitWindows, MovesLineEndsToTheirIntersections) {
 
 TEST(FitWindows, NamesAJointWhoseNeighboursDoNotMeet) {
     std::vector<SegmentSpec> c(2);
-    c[0].center = {0, 0}, c[0].radius = 10, c[0].phiStartDeg = 0, c[0].phiEndDeg = 180;
-    c[1].center = {0, 0}, c[1].radius = 12, c[1].phiStartDeg = 180, c[1].phiEndDeg = 360;
+    c[0] = {Arc{{0, 0}, 10, Branch::Outer}, 0, 180};
+    c[1] = {Arc{{0, 0}, 12, Branch::Outer}, 180, 360};
     const auto fitted = fitWindows(c);
     ASSERT_FALSE(fitted.ok());
     EXPECT_EQ(fitted.errors().front().location, "contour[0]/contour[1]");

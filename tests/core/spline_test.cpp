@@ -201,10 +201,9 @@ Project bezierCircle(double R, double stretch) {
     for (int q = 0; q < 4; ++q) {
         const double a = kPi / 2 * q, b = a + kPi / 2;
         const Vec u(std::cos(a), std::sin(a)), v(std::cos(b), std::sin(b));
-        SegmentSpec s;
-        s.type = SegmentType::Bezier;
-        s.controls = {R * u, R * u + k * v, R * v + k * u, R * v};
-        if (q == 0) s.controls[2] = R * v + stretch * k * u;
+        CubicBezier curve{{R * u, R * u + k * v, R * v + k * u, R * v}};
+        if (q == 0) curve.p[2] = R * v + stretch * k * u;
+        SegmentSpec s{curve};
         std::tie(s.phiStartDeg, s.phiEndDeg) = lineWindowDeg(s, 90.0 * q);
         p.contour.push_back(s);
     }

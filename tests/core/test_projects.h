@@ -13,14 +13,8 @@ inline Project splitCircle(double e, double radius, std::vector<double> boundari
     p.name = "split circle";
     p.motion = motion;
     for (std::size_t k = 0; k + 1 < boundariesDeg.size(); ++k) {
-        SegmentSpec s;
-        s.type = SegmentType::Arc;
-        s.center = {e, 0.0};
-        s.radius = radius;
-        s.branch = Branch::Outer;
-        s.phiStartDeg = boundariesDeg[k];
-        s.phiEndDeg = boundariesDeg[k + 1];
-        p.contour.push_back(s);
+        p.contour.push_back(SegmentSpec{Arc{{e, 0.0}, radius, Branch::Outer}, boundariesDeg[k],
+                                        boundariesDeg[k + 1]});
     }
     return p;
 }

@@ -34,10 +34,7 @@ Contour polygon(const std::vector<Eigen::Vector2d>& corners) {
     p.motion = {SpeedUnit::PeriodS, 1.0};
     double previousEnd = 0.0;
     for (std::size_t k = 0; k < corners.size(); ++k) {
-        SegmentSpec s;
-        s.type = SegmentType::Line;
-        s.from = corners[k];
-        s.to = corners[(k + 1) % corners.size()];
+        SegmentSpec s{Line{corners[k], corners[(k + 1) % corners.size()]}};
         std::tie(s.phiStartDeg, s.phiEndDeg) = lineWindowDeg(s, k == 0 ? 0.0 : previousEnd);
         previousEnd = s.phiEndDeg;
         p.contour.push_back(s);

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "common/angles.h"
 #include "io/project_json.h"
 #include "test_support.h"
 
@@ -29,8 +30,8 @@ TEST(ProjectJson, LoadsTheBundledExample) {
     EXPECT_EQ(p.value().contour.size(), 13u);
     EXPECT_EQ(p.value().motion.unit, SpeedUnit::PeriodS);
     EXPECT_DOUBLE_EQ(p.value().motion.value, 0.4);
-    EXPECT_EQ(p.value().contour[0].branch, Branch::Inner);
-    EXPECT_DOUBLE_EQ(p.value().contour[1].radius, 8.103180550000001);
+    EXPECT_EQ(std::get<Arc>(p.value().contour[0].shape).branch, Branch::Inner);
+    EXPECT_DOUBLE_EQ(std::get<Arc>(p.value().contour[1].shape).radius, 8.103180550000001);
 }
 
 TEST(ProjectJson, SaveLoadSaveIsByteStable) {
@@ -81,7 +82,7 @@ TEST(ProjectJson, PreservesUnknownTopLevelKeys) {
     EXPECT_EQ(serializeProject(parseProject(out).value()), out);
 }
 
-TEST(ProjectJson, ConvertsMetresAndRadiansOnLoad) {
+TEST(ProjectJson, ConvertsMetresAndRadiansOnLoadAndKeepsThemOnSave) {
     const std::string text = R"({
       "format": "camwright", "version": 1, "units": {"length": "m", "angle": "rad"},
       "motion": {"period_s": 2},
@@ -93,17 +94,56 @@ TEST(ProjectJson, ConvertsMetresAndRadiansOnLoad) {
     })";
     const auto p = parseProject(text);
     ASSERT_TRUE(p.ok()) << p.errors().front().text();
-    EXPECT_DOUBLE_EQ(p.value().contour[0].center.x(), 5.0);
-    EXPECT_DOUBLE_EQ(p.value().contour[0].radius, 20.0);
+    const Arc& arc = std::get<Arc>(p.value().contour[0].shape);
+    EXPECT_DOUBLE_EQ(arc.center.x(), 5.0);
+    EXPECT_DOUBLE_EQ(arc.radius, 20.0);
     EXPECT_DOUBLE_EQ(p.value().contour[0].phiEndDeg, 180.0);
     EXPECT_DOUBLE_EQ(p.value().contour[1].phiEndDeg, 360.0);
     EXPECT_DOUBLE_EQ(p.value().machining->axisAccel[2], 200.0);
     EXPECT_DOUBLE_EQ(p.value().machining->feedMax, 100.0);
     EXPECT_DOUBLE_EQ(p.value().machining->toolRadius, 3.0);
-    // Saved in mm and degrees.
+    // Saved in the file's own units, every value as it was written there (not 0.0050000000001
+    // from mm → m), so saving an untouched file changes nothing.
     const std::string out = serializeProject(p.value());
-    EXPECT_NE(out.find(R"("length": "mm")"), std::string::npos);
-    EXPECT_NE(out.find(R"("angle": "deg")"), std::string::npos);
+    EXPECT_NE(out.find(R"("length": "m")"), std::string::npos) << out;
+    EXPECT_NE(out.find(R"("angle": "rad")"), std::string::npos);
+    for (const char* written :
+         {R"("center": [
+        0.005,
+        0.0
+      ])",
+          R"("radius": 0.02)", R"("phi_end": 3.141592653589793)", R"("phi_end": 6.283185307179586)",
+          R"("tool_radius": 0.003)", R"("feed_max": 0.1)"}) {
+        EXPECT_NE(out.find(written), std::string::npos) << written << "\n" << out;
+    }
+    const auto again = parseProject(out);
+    ASSERT_TRUE(again.ok());
+    EXPECT_EQ(again.value(), p.value());
+    EXPECT_EQ(serializeProject(again.value()), out);
+}
+
+TEST(ProjectJson, AValueTypedInMetresIsWrittenBackAsTyped) {
+    // Values as a user types them in a metre file: up to seven significant digits. Reading
+    // multiplies by 1000; writing must find the typed decimal again, not x/1000's rounding.
+    std::uint64_t state = 12345;
+    auto next = [&] {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return state >> 33;
+    };
+    int checked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const int digits = 1 + static_cast<int>(next() % 7);
+        const int exponent = -6 + static_cast<int>(next() % 9);
+        std::string typed = std::to_string(next() % 10'000'000);
+        typed = typed.substr(0, static_cast<std::size_t>(digits)) + "e" + std::to_string(exponent);
+        const double value = std::stod(typed);
+        const double mm = value * 1000.0;  // what the reader stores
+        EXPECT_EQ(fileValue(mm, 1000.0), value) << typed;
+        const double deg = value * (180.0 / kPi);
+        EXPECT_EQ(fileValue(deg, 180.0 / kPi) * (180.0 / kPi), deg) << typed;
+        ++checked;
+    }
+    EXPECT_EQ(checked, 20000);
 }
 
 TEST(ProjectJson, LineWindowDefaultsToThePolarAnglesOfItsEnds) {

@@ -4,7 +4,7 @@
 
 namespace cam {
 
-EditSegment::EditSegment(ProjectDocument* document, int row, SegmentSpec after, SegmentField field,
+EditSegment::EditSegment(ProjectDocument* document, int row, SegmentSpec after, EditedField field,
                          const QString& text, int gesture, QUndoCommand* parent)
     : QUndoCommand(text, parent),
       m_document(document),

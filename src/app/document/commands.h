@@ -12,14 +12,14 @@ namespace cam {
 /// @brief Every merge id in one place: consecutive commands with the same id may merge.
 enum class MergeId : int {
     None = -1,
-    EditSegmentField = 1,  ///< repeated edits of one cell (spin-box steps, a drag)
+    EditEditedField = 1,  ///< repeated edits of one cell (spin-box steps, a drag)
     EditMotion = 2,
     EditMachining = 3,
 };
 
 /// @brief Which part of a segment an edit touched; edits of the same part of the same row merge.
-/// The first eleven are in the order of ArcTableModel's columns.
-enum class SegmentField {
+/// The first eleven are in the order of SegmentTableModel's columns.
+enum class EditedField {
     Type,
     CenterX,
     CenterY,
@@ -31,8 +31,8 @@ enum class SegmentField {
     ToY,
     PhiStart,
     PhiEnd,
-    CenterDrag,
-    RadiusDrag,
+    FirstHandleDrag,   ///< the contour view's first handle: an arc's centre, a spline's P1
+    SecondHandleDrag,  ///< the second: an arc's radius, a spline's P2
     Whole
 };
 
@@ -42,11 +42,11 @@ enum class SegmentField {
 /// `gesture` (one spin-box editing session, one mouse drag); gesture 0 never merges.
 class EditSegment : public QUndoCommand {
 public:
-    EditSegment(ProjectDocument* document, int row, SegmentSpec after, SegmentField field,
+    EditSegment(ProjectDocument* document, int row, SegmentSpec after, EditedField field,
                 const QString& text, int gesture = 0, QUndoCommand* parent = nullptr);
     void undo() override;
     void redo() override;
-    [[nodiscard]] int id() const override { return static_cast<int>(MergeId::EditSegmentField); }
+    [[nodiscard]] int id() const override { return static_cast<int>(MergeId::EditEditedField); }
     bool mergeWith(const QUndoCommand* other) override;
 
 private:
@@ -54,7 +54,7 @@ private:
     int m_row;
     SegmentSpec m_before;
     SegmentSpec m_after;
-    SegmentField m_field;
+    EditedField m_field;
     int m_gesture;
 };
 

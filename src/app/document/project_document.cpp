@@ -18,6 +18,7 @@ QString ProjectDocument::displayName() const {
 
 void ProjectDocument::reset(Project project, QString filePath) {
     m_undoStack.clear();
+    emit contourAboutToBeReset();
     m_project = std::move(project);
     m_filePath = std::move(filePath);
     m_undoStack.setClean();
@@ -43,18 +44,21 @@ void ProjectDocument::applySegment(int row, const SegmentSpec& segment) {
 }
 
 void ProjectDocument::applyInsert(int row, const SegmentSpec& segment) {
+    emit segmentAboutToBeInserted(row);
     m_project.contour.insert(m_project.contour.begin() + row, segment);
     emit segmentInserted(row);
     afterChange();
 }
 
 void ProjectDocument::applyRemove(int row) {
+    emit segmentAboutToBeRemoved(row);
     m_project.contour.erase(m_project.contour.begin() + row);
     emit segmentRemoved(row);
     afterChange();
 }
 
 void ProjectDocument::applyMove(int from, int to) {
+    emit segmentAboutToBeMoved(from, to);
     auto& c = m_project.contour;
     const SegmentSpec moved = c.at(static_cast<std::size_t>(from));
     c.erase(c.begin() + from);
@@ -64,6 +68,7 @@ void ProjectDocument::applyMove(int from, int to) {
 }
 
 void ProjectDocument::applyContour(const std::vector<SegmentSpec>& contour) {
+    emit contourAboutToBeReset();
     m_project.contour = contour;
     emit contourReset();
     afterChange();

@@ -44,10 +44,16 @@ public:
     void applyMachining(const std::optional<MachiningSpec>& machining);
 
 signals:
+    // Structural changes come in pairs, as a Qt model needs them: "about to" while the contour
+    // is still as before, then the change itself once it is done.
     void segmentChanged(int row);
+    void segmentAboutToBeInserted(int row);
     void segmentInserted(int row);
+    void segmentAboutToBeRemoved(int row);
     void segmentRemoved(int row);
+    void segmentAboutToBeMoved(int from, int to);
     void segmentMoved(int from, int to);
+    void contourAboutToBeReset();
     /// The whole contour changed (reset, fit windows): rebuild every view of it.
     void contourReset();
     void motionChanged();

@@ -109,7 +109,7 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     buildOutlines(*result);
     std::vector<CubicBezier> splines;
     for (const SegmentSpec& spec : request.project->contour) {
-        if (isSpline(spec.type)) splines.push_back(bezierOf(spec));
+        if (isSpline(spec.type())) splines.push_back(bezierOf(spec));
     }
     if (!splines.empty()) result->pathStudy = studyPath(splines, 100);
     if (cancel.load()) return nullptr;

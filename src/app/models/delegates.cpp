@@ -3,7 +3,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 
-#include "models/arc_table_model.h"
+#include "models/segment_table_model.h"
 
 namespace cam {
 
@@ -20,10 +20,10 @@ QWidget* NumberDelegate::createEditor(QWidget* parent, const QStyleOptionViewIte
     spin->setRange(-1e6, 1e6);
     spin->setAccelerated(true);
     const int c = index.column();
-    const bool angle = c == ArcTableModel::PhiStart || c == ArcTableModel::PhiEnd;
+    const bool angle = c == SegmentTableModel::PhiStart || c == SegmentTableModel::PhiEnd;
     spin->setSuffix(angle ? QStringLiteral(" °") : QStringLiteral(" mm"));
     spin->setSingleStep(angle ? 0.5 : 0.1);
-    if (c == ArcTableModel::Radius) spin->setMinimum(0.0);
+    if (c == SegmentTableModel::Radius) spin->setMinimum(0.0);
     spin->setProperty("gesture", nextGestureId());
     // Live: every step reaches the model (and the plots); the gesture id merges them.
     connect(spin, &QDoubleSpinBox::valueChanged, this,
@@ -42,13 +42,13 @@ void NumberDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,
     auto* spin = static_cast<QDoubleSpinBox*>(editor);
     spin->interpretText();
     model->setData(index, QVariantList{spin->value(), spin->property("gesture")},
-                   ArcTableModel::MergingEditRole);
+                   SegmentTableModel::MergingEditRole);
 }
 
 QWidget* ChoiceDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem&,
                                       const QModelIndex& index) const {
     auto* combo = new QComboBox(parent);
-    combo->addItems(index.data(ArcTableModel::ChoicesRole).toStringList());
+    combo->addItems(index.data(SegmentTableModel::ChoicesRole).toStringList());
     connect(combo, &QComboBox::activated, this,
             [this, combo] { emit const_cast<ChoiceDelegate*>(this)->commitData(combo); });
     return combo;

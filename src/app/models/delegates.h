@@ -19,7 +19,7 @@ public:
                       const QModelIndex& index) const override;
 };
 
-/// @brief Edits a cell whose model offers its choices under ArcTableModel::ChoicesRole.
+/// @brief Edits a cell whose model offers its choices under SegmentTableModel::ChoicesRole.
 class ChoiceDelegate : public QStyledItemDelegate {
     Q_OBJECT
 public:

@@ -48,8 +48,8 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     m_joints->setLineStyle(QCPGraph::lsNone);
     m_joints->setScatterStyle(
         QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black), QBrush(Qt::white), 5));
-    for (auto [graph, shape] : {std::pair{&m_centerHandle, QCPScatterStyle::ssSquare},
-                                std::pair{&m_radiusHandle, QCPScatterStyle::ssDiamond}}) {
+    for (auto [graph, shape] : {std::pair{&m_firstHandle, QCPScatterStyle::ssSquare},
+                                std::pair{&m_secondHandle, QCPScatterStyle::ssDiamond}}) {
         *graph = addGraph();
         (*graph)->setLineStyle(QCPGraph::lsNone);
         (*graph)->setScatterStyle(QCPScatterStyle(shape, QPen(QColor(0, 90, 200), 1.5),
@@ -173,15 +173,15 @@ void ContourView::setSelectedSegment(int row) {
     replot(rpQueuedReplot);
 }
 
-QPointF ContourView::radiusHandlePosition(int row) const {
+QPointF ContourView::secondHandlePosition(int row) const {
     const SegmentSpec& s = m_document->project().contour.at(static_cast<std::size_t>(row));
+    const Arc& arc = *s.as<Arc>();
     // On the circle, in the direction of the middle of the window as seen from the centre.
     const double mid = (s.phiStartDeg + s.phiEndDeg) / 2.0 * M_PI / 180.0;
-    const Arc arc{s.center, s.radius, s.branch};
     const double r = arc.evaluate(mid).r;
-    Eigen::Vector2d dir = Eigen::Vector2d(r * std::cos(mid), r * std::sin(mid)) - s.center;
+    Eigen::Vector2d dir = Eigen::Vector2d(r * std::cos(mid), r * std::sin(mid)) - arc.center;
     if (!std::isfinite(dir.x()) || dir.norm() < 1e-12) dir = {1.0, 0.0};
-    const Eigen::Vector2d p = s.center + s.radius * dir.normalized();
+    const Eigen::Vector2d p = arc.center + arc.radius * dir.normalized();
     return {p.x(), p.y()};
 }
 
@@ -189,17 +189,17 @@ void ContourView::updateHandles() {
     const auto& c = m_document->project().contour;
     m_controlPolygon->data()->clear();
     if (m_selected < 0 || m_selected >= static_cast<int>(c.size()) ||
-        c[static_cast<std::size_t>(m_selected)].type == SegmentType::Line) {
-        m_centerHandle->data()->clear();
-        m_radiusHandle->data()->clear();
+        c[static_cast<std::size_t>(m_selected)].type() == SegmentType::Line) {
+        m_firstHandle->data()->clear();
+        m_secondHandle->data()->clear();
         return;
     }
     const SegmentSpec& s = c[static_cast<std::size_t>(m_selected)];
-    if (isSpline(s.type)) {
+    if (isSpline(s.type())) {
         // Handles on the inner control points; the ends stay on the neighbours' joints.
         const CubicBezier b = bezierOf(s);
-        m_centerHandle->setData({b.p[1].x()}, {b.p[1].y()}, true);
-        m_radiusHandle->setData({b.p[2].x()}, {b.p[2].y()}, true);
+        m_firstHandle->setData({b.p[1].x()}, {b.p[1].y()}, true);
+        m_secondHandle->setData({b.p[2].x()}, {b.p[2].y()}, true);
         QVector<double> x, y;
         for (const auto& p : b.p) {
             x << p.x();
@@ -208,9 +208,10 @@ void ContourView::updateHandles() {
         m_controlPolygon->setData(x, y);
         return;
     }
-    const QPointF rh = radiusHandlePosition(m_selected);
-    m_centerHandle->setData({s.center.x()}, {s.center.y()}, true);
-    m_radiusHandle->setData({rh.x()}, {rh.y()}, true);
+    const Arc& arc = *s.as<Arc>();
+    const QPointF second = secondHandlePosition(m_selected);
+    m_firstHandle->setData({arc.center.x()}, {arc.center.y()}, true);
+    m_secondHandle->setData({second.x()}, {second.y()}, true);
 }
 
 ContourView::Handle ContourView::handleAt(const QPointF& pixel) const {
@@ -220,8 +221,8 @@ ContourView::Handle ContourView::handleAt(const QPointF& pixel) const {
         return QLineF(pixel, QPointF(xAxis->coordToPixel(it->key), yAxis->coordToPixel(it->value)))
             .length();
     };
-    if (distance(m_centerHandle) <= kHandlePickPixels) return Handle::Center;
-    if (distance(m_radiusHandle) <= kHandlePickPixels) return Handle::Radius;
+    if (distance(m_firstHandle) <= kHandlePickPixels) return Handle::First;
+    if (distance(m_secondHandle) <= kHandlePickPixels) return Handle::Second;
     return Handle::None;
 }
 
@@ -242,28 +243,27 @@ void ContourView::mouseMoveEvent(QMouseEvent* event) {
     if (event->buttons() & Qt::LeftButton && m_dragging == Handle::None) m_autoFit = false;
     if (m_dragging != Handle::None && m_selected >= 0) {
         SegmentSpec s = m_document->project().contour.at(static_cast<std::size_t>(m_selected));
-        SegmentField field = SegmentField::CenterDrag;
+        const bool first = m_dragging == Handle::First;
+        const EditedField field =
+            first ? EditedField::FirstHandleDrag : EditedField::SecondHandleDrag;
         QString text;
-        if (isSpline(s.type)) {
-            // Move P1 (square) or P2 (diamond); a Hermite keeps its tangents: t = 3·handle.
-            CubicBezier b = bezierOf(s);
-            const bool first = m_dragging == Handle::Center;
-            b.p[first ? 1 : 2] = {x, y};
-            if (s.type == SegmentType::Bezier) {
-                s.controls = b.p;
-            } else {
-                const auto t = b.hermiteTangents();
-                s.controls[1] = t[0];
-                s.controls[3] = t[1];
-            }
-            field = first ? SegmentField::CenterDrag : SegmentField::RadiusDrag;
+        const Eigen::Vector2d at(x, y);
+        if (CubicBezier* b = s.as<CubicBezier>()) {
+            b->p[first ? 1 : 2] = at;  // P1 (square) or P2 (diamond)
             text = tr("Shape segment %1").arg(m_selected);
-        } else if (m_dragging == Handle::Center) {
-            s.center = {x, y};
+        } else if (HermiteCurve* h = s.as<HermiteCurve>()) {
+            // The same handles as tangents (t = 3·handle); the other tangent stays bit-equal.
+            if (first) {
+                h->t0 = 3.0 * (at - h->p0);
+            } else {
+                h->t1 = 3.0 * (h->p3 - at);
+            }
+            text = tr("Shape segment %1").arg(m_selected);
+        } else if (Arc* arc = s.as<Arc>(); arc && first) {
+            arc->center = {x, y};
             text = tr("Move centre of segment %1").arg(m_selected);
-        } else {
-            s.radius = std::max(1e-3, std::hypot(x - s.center.x(), y - s.center.y()));
-            field = SegmentField::RadiusDrag;
+        } else if (arc) {
+            arc->radius = std::max(1e-3, std::hypot(x - arc->center.x(), y - arc->center.y()));
             text = tr("Change radius of segment %1").arg(m_selected);
         }
         m_document->undoStack()->push(

@@ -36,10 +36,10 @@ protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
-    enum class Handle { None, Center, Radius };
+    enum class Handle { None, First, Second };
     void updateHandles();
     [[nodiscard]] Handle handleAt(const QPointF& pixel) const;
-    [[nodiscard]] QPointF radiusHandlePosition(int row) const;
+    [[nodiscard]] QPointF secondHandlePosition(int row) const;
     void keepEqualAspect();
 
     ProjectDocument* m_document;
@@ -47,8 +47,8 @@ private:
     std::vector<QCPCurve*> m_segmentCurves;
     QCPGraph* m_centers = nullptr;
     QCPGraph* m_joints = nullptr;
-    QCPGraph* m_centerHandle = nullptr;    ///< square: the arc's centre, or a spline's P1
-    QCPGraph* m_radiusHandle = nullptr;    ///< diamond: the arc's radius, or a spline's P2
+    QCPGraph* m_firstHandle = nullptr;     ///< square: the arc's centre, or a spline's P1
+    QCPGraph* m_secondHandle = nullptr;    ///< diamond: the arc's radius, or a spline's P2
     QCPCurve* m_controlPolygon = nullptr;  ///< P0–P1–P2–P3 of the selected spline
     QCPItemLine* m_ray = nullptr;
     QCPItemTracer* m_rayPoint = nullptr;

@@ -20,14 +20,16 @@ Result<Contour> Contour::build(const Project& project, ValidationOptions options
     contour.m_segments.reserve(project.contour.size());
     for (const SegmentSpec& spec : project.contour) {
         ContourSegment seg;
-        seg.type = spec.type;
-        seg.arc = Arc{spec.center, spec.radius, spec.branch};
-        seg.arcKernel = seg.arc.kernel();
-        if (spec.type == SegmentType::Line) {
-            seg.line = Line{spec.from, spec.to};
-            seg.lineKernel = seg.line.kernel();
+        seg.type = spec.type();
+        if (const auto* arc = spec.as<Arc>()) {
+            seg.arc = *arc;
+            seg.arcKernel = arc->kernel();
+        } else if (const auto* line = spec.as<Line>()) {
+            seg.line = *line;
+            seg.lineKernel = line->kernel();
+        } else {
+            seg.bezierKernel = bezierOf(spec).kernel();
         }
-        if (isSpline(spec.type)) seg.bezierKernel = bezierOf(spec).kernel();
         seg.phiStart = degToRad(spec.phiStartDeg);
         seg.phiEnd = degToRad(spec.phiEndDeg);
         contour.m_segments.push_back(seg);

@@ -1,11 +1,11 @@
 #include "contour/fit_windows.h"
-#include "geometry/planar.h"
 
 #include <cmath>
 #include <optional>
 
 #include "common/angles.h"
 #include "geometry/line.h"
+#include "geometry/planar.h"
 #include "project/validate.h"
 
 namespace cam {
@@ -57,26 +57,29 @@ std::vector<Vec> lineLine(const Vec& a1, const Vec& b1, const Vec& a2, const Vec
 
 /// Two pieces of one circle or one line: any angle is a valid boundary.
 bool sameCurve(const SegmentSpec& s, const SegmentSpec& t) {
-    if (s.type != t.type) return false;
-    if (s.type == SegmentType::Arc) {
-        return (s.center - t.center).norm() <= touchTolerance(s.radius) &&
-               std::abs(s.radius - t.radius) <= touchTolerance(s.radius) && s.branch == t.branch;
+    if (s.type() != t.type()) return false;
+    if (const auto* a = s.as<Arc>()) {
+        const Arc& b = *t.as<Arc>();
+        return (a->center - b.center).norm() <= touchTolerance(a->radius) &&
+               std::abs(a->radius - b.radius) <= touchTolerance(a->radius) && a->branch == b.branch;
     }
-    const Vec u = (s.to - s.from).normalized();
-    auto offLine = [&](const Vec& p) {
-        const Vec w = p - s.from;
-        return std::abs(u.x() * w.y() - u.y() * w.x());
-    };
-    const double scale = std::max(s.from.norm(), s.to.norm());
-    return offLine(t.from) <= touchTolerance(scale) && offLine(t.to) <= touchTolerance(scale);
+    const Line& a = *s.as<Line>();
+    const Line& b = *t.as<Line>();
+    const Vec u = (a.to - a.from).normalized();
+    auto offLine = [&](const Vec& p) { return std::abs(cross(u, p - a.from)); };
+    const double scale = std::max(a.from.norm(), a.to.norm());
+    return offLine(b.from) <= touchTolerance(scale) && offLine(b.to) <= touchTolerance(scale);
 }
 
 std::vector<Vec> meetingPoints(const SegmentSpec& s, const SegmentSpec& t) {
-    const bool sArc = s.type == SegmentType::Arc, tArc = t.type == SegmentType::Arc;
-    if (sArc && tArc) return circleCircle(s.center, s.radius, t.center, t.radius);
-    if (sArc) return lineCircle(t.from, t.to, s.center, s.radius);
-    if (tArc) return lineCircle(s.from, s.to, t.center, t.radius);
-    return lineLine(s.from, s.to, t.from, t.to);
+    const Arc* sArc = s.as<Arc>();
+    const Arc* tArc = t.as<Arc>();
+    const Line* sLine = s.as<Line>();
+    const Line* tLine = t.as<Line>();
+    if (sArc && tArc) return circleCircle(sArc->center, sArc->radius, tArc->center, tArc->radius);
+    if (sArc) return lineCircle(tLine->from, tLine->to, sArc->center, sArc->radius);
+    if (tArc) return lineCircle(sLine->from, sLine->to, tArc->center, tArc->radius);
+    return lineLine(sLine->from, sLine->to, tLine->from, tLine->to);
 }
 
 }  // namespace
@@ -96,19 +99,16 @@ Result<std::vector<SegmentSpec>> fitWindows(const std::vector<SegmentSpec>& cont
         const SegmentSpec& right = contour[(k + 1) % n];
         const double current = left.phiEndDeg;
         std::optional<Joint> best;
-        if (isSpline(left.type) || isSpline(right.type)) {
+        if (isSpline(left.type()) || isSpline(right.type())) {
             // A spline's end points are fixed by its control points: the joint is there.
-            const Vec p = isSpline(left.type) ? endPointsOf(left).second : endPointsOf(right).first;
+            const Vec p =
+                isSpline(left.type()) ? endPointsOf(left).second : endPointsOf(right).first;
             const double angle = current + wrapDeg(radToDeg(std::atan2(p.y(), p.x())) - current);
             joints[k] = Joint{angle, p};
             continue;
         }
         if (sameCurve(left, right)) {
-            const double phi = degToRad(current);
-            const double r = left.type == SegmentType::Arc
-                                 ? Arc{left.center, left.radius, left.branch}.evaluate(phi).r
-                                 : Line{left.from, left.to}.evaluate(phi).r;
-            joints[k] = Joint{current, Vec(r * std::cos(phi), r * std::sin(phi))};
+            joints[k] = Joint{current, pointOnSegment(left, current)};
             continue;
         }
         for (const Vec& p : meetingPoints(left, right)) {
@@ -119,9 +119,9 @@ Result<std::vector<SegmentSpec>> fitWindows(const std::vector<SegmentSpec>& cont
             }
         }
         if (!best) {
-            errors.push_back({segmentLocation(k) + "/" + segmentLocation((k + 1) % n),
-                              "the neighbouring segments do not meet, so there is no boundary "
-                              "to fit"});
+            errors.push_back(Diagnostic::atJoint(k, (k + 1) % n,
+                                                 "the neighbouring segments do not meet, so "
+                                                 "there is no boundary to fit"));
         }
         joints[k] = best;
     }
@@ -139,8 +139,8 @@ Result<std::vector<SegmentSpec>> fitWindows(const std::vector<SegmentSpec>& cont
                 j.angleDeg - 360.0 * std::round((j.angleDeg - contour[0].phiStartDeg) / 360.0);
             left.phiEndDeg = right.phiStartDeg + 360.0;
         }
-        if (left.type == SegmentType::Line) left.to = j.point;
-        if (right.type == SegmentType::Line) right.from = j.point;
+        if (auto* line = left.as<Line>()) line->to = j.point;
+        if (auto* line = right.as<Line>()) line->from = j.point;
     }
     return out;
 }

@@ -1,5 +1,4 @@
 #include "fillet/fillet.h"
-#include "geometry/planar.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +11,7 @@
 #include "common/angles.h"
 #include "geometry/arc.h"
 #include "geometry/line.h"
+#include "geometry/planar.h"
 #include "project/validate.h"
 
 namespace cam {
@@ -32,24 +32,15 @@ Vec rotate(const Vec& v, double angle) {
     return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
 }
 
-bool isArc(const SegmentSpec& s) { return s.type == SegmentType::Arc; }
-
-/// The point where the follower ray at phi meets the segment.
-Vec pointAt(const SegmentSpec& s, double phiDeg) {
-    const double phi = degToRad(phiDeg);
-    const double r = isArc(s) ? Arc{s.center, s.radius, s.branch}.evaluate(phi).r
-                              : Line{s.from, s.to}.evaluate(phi).r;
-    return {r * std::cos(phi), r * std::sin(phi)};
-}
-
 /// As phi grows the ray's far intersection ("outer") moves counter-clockwise about the circle's
 /// centre and the near one clockwise, so the branch is the direction of travel.
-double arcSense(const SegmentSpec& s) { return s.branch == Branch::Outer ? 1.0 : -1.0; }
+double arcSense(const Arc& arc) { return arc.branch == Branch::Outer ? 1.0 : -1.0; }
 
 /// Unit tangent in the direction of travel (growing phi) at a point of the segment.
 Vec travelDirection(const SegmentSpec& s, const Vec& p) {
-    if (!isArc(s)) return (s.to - s.from).normalized();
-    return (arcSense(s) * perp(p - s.center)).normalized();
+    if (const auto* line = s.as<Line>()) return (line->to - line->from).normalized();
+    const Arc& arc = *s.as<Arc>();
+    return (arcSense(arc) * perp(p - arc.center)).normalized();
 }
 
 /// Joint K, seen along the direction of travel: `a` ends there, `b` starts there.
@@ -88,13 +79,14 @@ struct Offset {
 
 Offset offsetOf(const SegmentSpec& s, double side, double rho) {
     Offset o;
-    if (isArc(s)) {
+    if (const auto* arc = s.as<Arc>()) {
         o.isLine = false;
-        o.center = s.center;
-        o.signedRadius = s.radius - side * arcSense(s) * rho;
+        o.center = arc->center;
+        o.signedRadius = arc->radius - side * arcSense(*arc) * rho;
     } else {
-        o.dir = (s.to - s.from).normalized();
-        o.point = s.from + side * rho * perp(o.dir);
+        const Line& line = *s.as<Line>();
+        o.dir = (line.to - line.from).normalized();
+        o.point = line.from + side * rho * perp(o.dir);
     }
     return o;
 }
@@ -102,7 +94,8 @@ Offset offsetOf(const SegmentSpec& s, double side, double rho) {
 /// Where the fillet circle about o touches the neighbour whose offset curve o lies on.
 Vec tangentPoint(const SegmentSpec& s, const Offset& off, const Vec& o, double side, double rho) {
     if (off.isLine) return o - side * rho * perp(off.dir);
-    return s.center + (o - s.center) * (s.radius / off.signedRadius);
+    const Arc& arc = *s.as<Arc>();
+    return arc.center + (o - arc.center) * (arc.radius / off.signedRadius);
 }
 
 std::vector<Vec> intersect(const Offset& p, const Offset& q) {
@@ -151,7 +144,7 @@ bool polarMonotone(const Vec& o, double rho, const Vec& t1, double sweep, double
 
 /// Is p where the ray at phi meets the segment (and not on the circle's other branch)?
 bool onSegment(const SegmentSpec& s, double phiDeg, const Vec& p) {
-    return (pointAt(s, phiDeg) - p).norm() <= 0.1 * kJointToleranceMm;
+    return (pointOnSegment(s, phiDeg) - p).norm() <= 0.1 * kJointToleranceMm;
 }
 
 Candidate check(const Corner& k, const Offset& offA, const Offset& offB, const Vec& o, double rho) {
@@ -246,7 +239,7 @@ Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t j
     Corner k;
     k.left = (joint + n - 1) % n;
     k.right = joint;
-    k.location = segmentLocation(k.left) + "/" + segmentLocation(k.right);
+    k.location = jointLocation(k.left, k.right);
     // Everything below relies on contiguous windows and closed joints.
     Project project;
     project.contour = contour;
@@ -262,8 +255,7 @@ Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t j
     k.a = contour[k.left];
     k.b = contour[k.right];
     for (std::size_t i : {k.left, k.right}) {
-        const SegmentType t = contour[i].type;
-        if (t != SegmentType::Arc && t != SegmentType::Line) {
+        if (isSpline(contour[i].type())) {
             return Diagnostics{
                 {k.location, "fillets join arcs and lines; " + segmentLocation(i) + " is neither"}};
         }
@@ -272,9 +264,9 @@ Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t j
     k.shift = joint == 0 ? 360.0 : 0.0;
     k.widthA = k.a.phiEndDeg - k.a.phiStartDeg;
     k.widthB = k.b.phiEndDeg - k.b.phiStartDeg;
-    k.joint = pointAt(k.a, k.phiJoint);
+    k.joint = pointOnSegment(k.a, k.phiJoint);
     const Vec tA = travelDirection(k.a, k.joint);
-    const Vec tB = travelDirection(k.b, pointAt(k.b, k.b.phiStartDeg));
+    const Vec tB = travelDirection(k.b, pointOnSegment(k.b, k.b.phiStartDeg));
     k.turn = std::atan2(cross(tA, tB), tA.dot(tB));
     k.side = k.turn > 0.0 ? 1.0 : -1.0;
     const double turnDeg = radToDeg(std::abs(k.turn));
@@ -328,26 +320,20 @@ FilletResult build(const Corner& k, const std::vector<SegmentSpec>& contour, std
     SegmentSpec& b = out[k.right];
     // Lines keep their window tied to their end points; the untouched boundaries stay bit-equal
     // to their neighbours' so the chain stays contiguous.
-    if (isArc(a)) {
-        a.phiEndDeg = k.phiJoint - c.d1;
-    } else {
-        a.to = c.t1;
+    if (auto* line = a.as<Line>()) {
+        line->to = c.t1;
         const auto [start, end] = lineWindowDeg(a, a.phiStartDeg);
         a.phiEndDeg = a.phiStartDeg + (end - start);
-    }
-    if (isArc(b)) {
-        b.phiStartDeg = k.phiJoint + c.d2 - k.shift;
     } else {
-        b.from = c.t2;
-        b.phiStartDeg = lineWindowDeg(b, b.phiStartDeg).first;
+        a.phiEndDeg = k.phiJoint - c.d1;
     }
-    SegmentSpec arc;
-    arc.type = SegmentType::Arc;
-    arc.center = c.center;
-    arc.radius = rho;
-    arc.branch = k.side > 0.0 ? Branch::Outer : Branch::Inner;
-    arc.from = c.t1;
-    arc.to = c.t2;
+    if (auto* line = b.as<Line>()) {
+        line->from = c.t2;
+        b.phiStartDeg = lineWindowDeg(b, b.phiStartDeg).first;
+    } else {
+        b.phiStartDeg = k.phiJoint + c.d2 - k.shift;
+    }
+    SegmentSpec arc{Arc{c.center, rho, k.side > 0.0 ? Branch::Outer : Branch::Inner}};
     arc.phiStartDeg = a.phiEndDeg;
     arc.phiEndDeg = b.phiStartDeg + k.shift;
     // At K = 0 the arc goes last: its window ends a turn after the first one starts.

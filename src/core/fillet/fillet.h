@@ -53,8 +53,8 @@ struct FilletResult {
 /// lineWindowDeg; arcs: the window boundary moves to the tangent point's polar angle). The new
 /// arc's window runs from the polar angle of tangent point 1 to that of tangent point 2; its
 /// branch is "outer" at a convex corner (it runs counter-clockwise about its centre, so the
-/// ray meets its far side) and "inner" at a concave one. Its `from`/`to` are set to the two
-/// tangent points, so switching its type to a line gives the chamfer.
+/// ray meets its far side) and "inner" at a concave one. The arc holds nothing but its circle
+/// and window; switching its type to a line in the table joins its window ends, the chamfer.
 ///
 /// Errors, located "contour[K-1]/contour[K]": the contour does not validate (its own
 /// diagnostics follow), a neighbour is neither an arc nor a line, the joint is already tangent

@@ -64,6 +64,8 @@ struct Arc {
         const double mu = center.x() * std::cos(phi) + center.y() * std::sin(phi);
         return mu * mu - center.squaredNorm() + radius * radius;
     }
+
+    friend bool operator==(const Arc&, const Arc&) = default;
 };
 
 }  // namespace cam

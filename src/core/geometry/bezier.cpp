@@ -1,15 +1,15 @@
 #include "geometry/bezier.h"
-#include "geometry/planar.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "geometry/planar.h"
+
 namespace cam {
 namespace {
 
 using Vec = Eigen::Vector2d;
-
 
 /// A truncated Taylor series c0 + c1·h + c2·h² + c3·h³.
 using Series = std::array<double, 4>;

@@ -24,6 +24,8 @@ struct CubicBezier {
     /// @brief Hermite tangents of this curve: t0 = 3(P1 − P0), t1 = 3(P3 − P2).
     [[nodiscard]] std::array<Eigen::Vector2d, 2> hermiteTangents() const;
 
+    friend bool operator==(const CubicBezier&, const CubicBezier&) = default;
+
     /// @brief B, B', B'', B''' at s.
     [[nodiscard]] Eigen::Vector2d point(double s) const;
     [[nodiscard]] Eigen::Vector2d derivative(double s, int order) const;
@@ -51,6 +53,25 @@ struct CubicBezier {
         }
     };
     [[nodiscard]] Kernel kernel() const { return {p}; }
+};
+
+/// @brief A cubic given the Hermite way, as a file holds it: end points p0, p3 and tangent
+/// offsets t0, t1 (the curve's derivative at s = 0 and 1). The same curve as the Bézier with
+/// P1 = p0 + t0/3, P2 = p3 − t1/3.
+struct HermiteCurve {
+    Eigen::Vector2d p0{0.0, 0.0};
+    Eigen::Vector2d t0{0.0, 0.0};
+    Eigen::Vector2d p3{0.0, 0.0};
+    Eigen::Vector2d t1{0.0, 0.0};
+
+    [[nodiscard]] CubicBezier bezier() const { return CubicBezier::fromHermite(p0, t0, p3, t1); }
+    /// @brief The Hermite data of a Bézier (exact: t0 = 3(P1 − P0), t1 = 3(P3 − P2)).
+    [[nodiscard]] static HermiteCurve of(const CubicBezier& b) {
+        const auto t = b.hermiteTangents();
+        return {b.p[0], t[0], b.p[3], t[1]};
+    }
+
+    friend bool operator==(const HermiteCurve&, const HermiteCurve&) = default;
 };
 
 }  // namespace cam

@@ -54,6 +54,8 @@ struct Line {
     [[nodiscard]] PolarDerivatives evaluate(double phi) const {
         return evaluate(std::cos(phi), std::sin(phi));
     }
+
+    friend bool operator==(const Line&, const Line&) = default;
 };
 
 }  // namespace cam

@@ -6,22 +6,26 @@
 #include <string_view>
 
 #include "common/diagnostic.h"
+#include "io/project_reader.h"
+#include "io/project_writer.h"
 #include "project/project.h"
 
 namespace cam {
 
-inline constexpr int kProjectFormatVersion = 1;
+/// @brief A project file's text → the project, checked for syntax and structure only (see
+/// readProject): an unfinished design with geometric problems reads, and validateProject then
+/// lists its problems. Syntax errors are located `line L, column C`, the rest by JSON path.
+[[nodiscard]] Result<Project> parseProjectStructure(std::string_view text);
 
-/// @brief Parses and validates a project. Every problem comes back located: a JSON path such
-/// as `contour[3].radius`, a joint `contour[4]/contour[5]`, or `line L, column C` for syntax.
+/// @brief parseProjectStructure, then validateProject: only a project the engine can compute
+/// comes back; otherwise every problem, located (`contour[3].radius`, `contour[4]/contour[5]`).
 [[nodiscard]] Result<Project> parseProject(std::string_view text);
 
-/// @brief Reads a file and parses it; an unreadable file is reported at its path.
-[[nodiscard]] Result<Project> loadProjectFile(const std::string& path);
+/// @brief Reads a file and parses its structure; an unreadable file is reported at its path.
+[[nodiscard]] Result<Project> loadProjectStructure(const std::string& path);
 
-/// @brief The project as format-v1 JSON (mm, degrees), fields in the documented order,
-/// unknown top-level keys last. Requires every number to be finite (validate first).
-[[nodiscard]] std::string serializeProject(const Project& project);
+/// @brief Reads a file and parses and validates it (parseProject).
+[[nodiscard]] Result<Project> loadProjectFile(const std::string& path);
 
 /// @brief Reads a whole file; errors are located at the path.
 [[nodiscard]] Result<std::string> readTextFile(const std::string& path);

@@ -1,21 +1,21 @@
 #include "project/project.h"
 
 #include "common/angles.h"
-#include "geometry/line.h"
+#include "common/diagnostic.h"
 
 #include <cmath>
 
 namespace cam {
 
 CubicBezier bezierOf(const SegmentSpec& s) {
-    if (s.type == SegmentType::Hermite) {
-        return CubicBezier::fromHermite(s.controls[0], s.controls[1], s.controls[2], s.controls[3]);
-    }
-    return CubicBezier{s.controls};
+    if (const auto* h = s.as<HermiteCurve>()) return h->bezier();
+    const auto* b = s.as<CubicBezier>();
+    if (!b) internalError("bezierOf() of a segment that is no spline");
+    return *b;
 }
 
 std::pair<Eigen::Vector2d, Eigen::Vector2d> endPointsOf(const SegmentSpec& s) {
-    if (s.type == SegmentType::Line) return {s.from, s.to};
+    if (const auto* line = s.as<Line>()) return {line->from, line->to};
     const CubicBezier b = bezierOf(s);
     return {b.p[0], b.p[3]};
 }
@@ -23,10 +23,10 @@ std::pair<Eigen::Vector2d, Eigen::Vector2d> endPointsOf(const SegmentSpec& s) {
 Eigen::Vector2d pointOnSegment(const SegmentSpec& s, double phiDeg) {
     const double phi = degToRad(phiDeg);
     double r = 0.0;
-    if (s.type == SegmentType::Arc) {
-        r = Arc{s.center, s.radius, s.branch}.evaluate(phi).r;
-    } else if (s.type == SegmentType::Line) {
-        r = Line{s.from, s.to}.evaluate(phi).r;
+    if (const auto* arc = s.as<Arc>()) {
+        r = arc->evaluate(phi).r;
+    } else if (const auto* line = s.as<Line>()) {
+        r = line->evaluate(phi).r;
     } else {
         const double hint =
             std::abs(phiDeg - s.phiStartDeg) < std::abs(phiDeg - s.phiEndDeg) ? 0.0 : 1.0;
@@ -34,6 +34,8 @@ Eigen::Vector2d pointOnSegment(const SegmentSpec& s, double phiDeg) {
     }
     return {r * std::cos(phi), r * std::sin(phi)};
 }
+
+double UnitsSpec::angleFactor() const { return angle == AngleUnit::Rad ? 180.0 / kPi : 1.0; }
 
 double MotionSpec::omegaRadS() const {
     switch (unit) {

@@ -10,11 +10,14 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "geometry/arc.h"
 #include "geometry/bezier.h"
+#include "geometry/line.h"
 
 namespace cam {
 
@@ -25,29 +28,37 @@ enum class SegmentType { Arc, Line, Bezier, Hermite };
     return t == SegmentType::Bezier || t == SegmentType::Hermite;
 }
 
-/// @brief One row of the segment table. Fields of the other kinds are kept when the type changes.
+/// @brief The curve of a segment, exactly as the file gives it: an arc (centre, radius, branch),
+/// a line (from, to), a Bézier (four control points) or a Hermite cubic (p0, t0, p3, t1). The
+/// alternatives are in the order of SegmentType.
+using SegmentShape = std::variant<Arc, Line, CubicBezier, HermiteCurve>;
+
+/// @brief One row of the segment table: a curve and its polar window [phiStartDeg, phiEndDeg).
+/// It holds nothing else, so two segments compare equal exactly when a file would say the same.
 struct SegmentSpec {
-    SegmentType type = SegmentType::Arc;
-    // arc
-    Eigen::Vector2d center{0.0, 0.0};
-    double radius = 1.0;
-    Branch branch = Branch::Outer;
-    // line
-    Eigen::Vector2d from{0.0, 0.0};
-    Eigen::Vector2d to{0.0, 0.0};
-    // Bézier: the control points P0..P3. Hermite: p0, t0, p3, t1 (tangents are offsets, the
-    // curve's derivative at s = 0 and 1). Kept as given so files round-trip exactly.
-    std::array<Eigen::Vector2d, 4> controls{Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(),
-                                            Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
-    // polar window [phiStartDeg, phiEndDeg)
+    SegmentShape shape = Arc{};
     double phiStartDeg = 0.0;
     double phiEndDeg = 0.0;
 
+    [[nodiscard]] SegmentType type() const { return static_cast<SegmentType>(shape.index()); }
+    /// @brief The curve if it is of kind `Shape`, else null.
+    template <class Shape>
+    [[nodiscard]] const Shape* as() const {
+        return std::get_if<Shape>(&shape);
+    }
+    template <class Shape>
+    [[nodiscard]] Shape* as() {
+        return std::get_if<Shape>(&shape);
+    }
+
     friend bool operator==(const SegmentSpec&, const SegmentSpec&) = default;
 };
+static_assert(
+    std::is_same_v<std::variant_alternative_t<static_cast<int>(SegmentType::Hermite), SegmentShape>,
+                   HermiteCurve>);
 
 /// @brief The cubic Bézier of a spline segment (Hermite data converted exactly: P1 = p0 + t0/3,
-/// P2 = p3 − t1/3).
+/// P2 = p3 − t1/3). Requires a spline.
 [[nodiscard]] CubicBezier bezierOf(const SegmentSpec& segment);
 
 /// @brief Start and end point of a segment's curve (lines and splines; arcs need their window).
@@ -57,6 +68,23 @@ struct SegmentSpec {
 /// also just outside its window). At a spline's window ends its own end point is meant, even
 /// if the ray touches the curve elsewhere too. NaN where the ray misses.
 [[nodiscard]] Eigen::Vector2d pointOnSegment(const SegmentSpec& segment, double phiDeg);
+
+/// @brief The units a file gives its lengths and window angles in. The document always holds
+/// millimetres and degrees; a file is saved in the units it was read in.
+enum class LengthUnit { Mm, M };
+enum class AngleUnit { Deg, Rad };
+
+struct UnitsSpec {
+    LengthUnit length = LengthUnit::Mm;
+    AngleUnit angle = AngleUnit::Deg;
+
+    /// @brief File value × lengthFactor() = millimetres.
+    [[nodiscard]] double lengthFactor() const { return length == LengthUnit::M ? 1000.0 : 1.0; }
+    /// @brief File value × angleFactor() = degrees.
+    [[nodiscard]] double angleFactor() const;
+
+    friend bool operator==(const UnitsSpec&, const UnitsSpec&) = default;
+};
 
 /// @brief How the turning speed is given; exactly one of them is stored in the file.
 enum class SpeedUnit { OmegaRadS, Rpm, PeriodS };
@@ -97,6 +125,7 @@ inline constexpr double kMaxLengthMm = 1e6;
 /// @brief The whole document.
 struct Project {
     std::string name;
+    UnitsSpec units;  ///< how the file gives its values; the fields below are in mm and degrees
     MotionSpec motion;
     std::vector<SegmentSpec> contour;
     std::optional<FollowerSpec> follower;

@@ -3,12 +3,31 @@
 #include <cmath>
 
 #include "common/angles.h"
-#include "geometry/line.h"
+#include "geometry/planar.h"
 
 namespace cam {
 namespace {
 
 std::string deg(double value) { return formatNumber(value) + "°"; }
+
+/// Where a problem is: a place in the contour (located as data) or a project field by name.
+struct Where {
+    Where(std::string text) : location(std::move(text)) {}  // NOLINT(google-explicit-constructor)
+    Where(const char* text) : location(text) {}             // NOLINT(google-explicit-constructor)
+    Where(const SegmentPlace& place)                        // NOLINT(google-explicit-constructor)
+        : location(locationText(place)), places{place} {}
+
+    /// The x or y coordinate of this point.
+    [[nodiscard]] Where axis(int i) const {
+        if (places.empty()) return Where(location + "[" + std::to_string(i) + "]");
+        SegmentPlace p = places.front();
+        p.axis = i;
+        return Where(p);
+    }
+
+    std::string location;
+    std::vector<SegmentPlace> places;
+};
 
 class Validator {
 public:
@@ -25,37 +44,37 @@ public:
     }
 
 private:
-    void error(std::string location, std::string message) {
-        m_out.push_back({std::move(location), std::move(message), Severity::Error});
+    void error(const Where& where, std::string message) {
+        m_out.push_back({where.location, std::move(message), Severity::Error, where.places});
     }
 
     /// Finite with |value| <= 1e6 mm; returns false (and reports) otherwise.
-    bool checkLength(const std::string& location, double value) {
+    bool checkLength(const Where& where, double value) {
         if (!std::isfinite(value)) {
-            error(location, "must be a finite number (got " + formatNumber(value) + ")");
+            error(where, "must be a finite number (got " + formatNumber(value) + ")");
             return false;
         }
         if (std::abs(value) > kMaxLengthMm) {
-            error(location, "magnitude must be at most 1e6 mm (got " + formatNumber(value) + ")");
+            error(where, "magnitude must be at most 1e6 mm (got " + formatNumber(value) + ")");
             return false;
         }
         return true;
     }
 
-    bool checkPoint(const std::string& location, const Eigen::Vector2d& p) {
-        const bool x = checkLength(location + "[0]", p.x());
-        const bool y = checkLength(location + "[1]", p.y());
+    bool checkPoint(const Where& where, const Eigen::Vector2d& p) {
+        const bool x = checkLength(where.axis(0), p.x());
+        const bool y = checkLength(where.axis(1), p.y());
         return x && y;
     }
 
-    bool checkPositive(const std::string& location, double value, bool isLength) {
-        if (isLength && !checkLength(location, value)) return false;
+    bool checkPositive(const Where& where, double value, bool isLength) {
+        if (isLength && !checkLength(where, value)) return false;
         if (!std::isfinite(value)) {
-            error(location, "must be a finite number (got " + formatNumber(value) + ")");
+            error(where, "must be a finite number (got " + formatNumber(value) + ")");
             return false;
         }
         if (!(value > 0.0)) {
-            error(location, "must be > 0 (got " + formatNumber(value) + ")");
+            error(where, "must be > 0 (got " + formatNumber(value) + ")");
             return false;
         }
         return true;
@@ -95,102 +114,107 @@ private:
 
     bool checkWindow(std::size_t k) {
         const SegmentSpec& s = m_project.contour[k];
-        const std::string at = segmentLocation(k);
         bool ok = true;
-        for (auto [name, value] :
-             {std::pair{".phi_start", s.phiStartDeg}, std::pair{".phi_end", s.phiEndDeg}}) {
+        for (auto [part, value] : {std::pair{SegmentPart::PhiStart, s.phiStartDeg},
+                                   std::pair{SegmentPart::PhiEnd, s.phiEndDeg}}) {
             if (!std::isfinite(value) || std::abs(value) > 1e6) {
-                error(at + name, "must be a finite angle of magnitude at most 1e6° (got " +
-                                     formatNumber(value) + ")");
+                error(SegmentPlace{k, part},
+                      "must be a finite angle of magnitude at most 1e6° (got " +
+                          formatNumber(value) + ")");
                 ok = false;
             }
         }
         if (ok && !(s.phiEndDeg > s.phiStartDeg)) {
-            error(at + ".phi_end", "must be greater than phi_start " + deg(s.phiStartDeg) +
-                                       " (got " + deg(s.phiEndDeg) + ")");
+            error(SegmentPlace{k, SegmentPart::PhiEnd}, "must be greater than phi_start " +
+                                                            deg(s.phiStartDeg) + " (got " +
+                                                            deg(s.phiEndDeg) + ")");
             ok = false;
         }
         return ok;
     }
 
-    bool checkShape(std::size_t k, bool windowValid) {
+    /// The window of a line or spline must be the polar angles of its end points.
+    bool checkWindowFollowsEnds(std::size_t k, const char* whose) {
         const SegmentSpec& s = m_project.contour[k];
-        const std::string at = segmentLocation(k);
-        if (isSpline(s.type)) return checkSpline(k, windowValid);
-        if (s.type == SegmentType::Arc) {
-            const bool center = checkPoint(at + ".center", s.center);
-            const bool radius = checkPositive(at + ".radius", s.radius, true);
-            if (!(center && radius)) return false;
-            return !windowValid || checkArcWindow(k);
-        }
-        const bool from = checkPoint(at + ".from", s.from);
-        const bool to = checkPoint(at + ".to", s.to);
-        if (!(from && to)) return false;
-        if ((s.to - s.from).norm() <= kJointToleranceMm) {
-            error(at + ".to", "must differ from `from` (the line has no length)");
-            return false;
-        }
-        const double cross = s.from.x() * s.to.y() - s.from.y() * s.to.x();
-        const Line line{s.from, s.to};
-        if (line.distance() <= kJointToleranceMm) {
-            error(at,
-                  "the line passes through the rotation centre, so the follower ray meets "
-                  "it at no angle or at every point");
-            return false;
-        }
-        if (cross <= 0.0) {
-            error(at, "the line runs clockwise around the rotation centre (from " +
-                          deg(radToDeg(std::atan2(s.from.y(), s.from.x()))) + " to " +
-                          deg(radToDeg(std::atan2(s.to.y(), s.to.x()))) +
-                          "); swap `from` and `to`");
-            return false;
-        }
-        if (!windowValid) return false;
         const auto [start, end] = lineWindowDeg(s, s.phiStartDeg);
         if (std::abs(wrapDeg(s.phiStartDeg - start)) > kLineWindowToleranceDeg ||
             std::abs(wrapDeg(s.phiEndDeg - end)) > kLineWindowToleranceDeg ||
             std::abs((s.phiEndDeg - s.phiStartDeg) - (end - start)) > kLineWindowToleranceDeg) {
-            error(at, "window " + deg(s.phiStartDeg) + " .. " + deg(s.phiEndDeg) +
-                          " disagrees with the polar angles of from/to (" + deg(start) + " .. " +
-                          deg(end) + ")");
+            error(SegmentPlace{k}, "window " + deg(s.phiStartDeg) + " .. " + deg(s.phiEndDeg) +
+                                       " disagrees with the polar angles of " + whose + " (" +
+                                       deg(start) + " .. " + deg(end) + ")");
             return false;
         }
         return true;
+    }
+
+    bool checkShape(std::size_t k, bool windowValid) {
+        const SegmentSpec& s = m_project.contour[k];
+        if (isSpline(s.type())) return checkSpline(k, windowValid);
+        if (const auto* arc = s.as<Arc>()) {
+            const bool center = checkPoint(SegmentPlace{k, SegmentPart::Center}, arc->center);
+            const bool radius =
+                checkPositive(SegmentPlace{k, SegmentPart::Radius}, arc->radius, true);
+            if (!(center && radius)) return false;
+            return !windowValid || checkArcWindow(k, *arc);
+        }
+        const Line& line = *s.as<Line>();
+        const bool from = checkPoint(SegmentPlace{k, SegmentPart::From}, line.from);
+        const bool to = checkPoint(SegmentPlace{k, SegmentPart::To}, line.to);
+        if (!(from && to)) return false;
+        if ((line.to - line.from).norm() <= kJointToleranceMm) {
+            error(SegmentPlace{k, SegmentPart::To},
+                  "must differ from `from` (the line has no length)");
+            return false;
+        }
+        if (line.distance() <= kJointToleranceMm) {
+            error(SegmentPlace{k},
+                  "the line passes through the rotation centre, so the follower ray meets "
+                  "it at no angle or at every point");
+            return false;
+        }
+        if (cross(line.from, line.to) <= 0.0) {
+            error(SegmentPlace{k}, "the line runs clockwise around the rotation centre (from " +
+                                       deg(radToDeg(std::atan2(line.from.y(), line.from.x()))) +
+                                       " to " +
+                                       deg(radToDeg(std::atan2(line.to.y(), line.to.x()))) +
+                                       "); swap `from` and `to`");
+            return false;
+        }
+        return !windowValid || checkWindowFollowsEnds(k, "from/to");
     }
 
     /// Bézier and Hermite: finite points, the window on the polar angles of the end points, and
     /// the ray meeting the curve exactly once at every angle inside the window.
     bool checkSpline(std::size_t k, bool windowValid) {
         const SegmentSpec& s = m_project.contour[k];
-        const std::string at = segmentLocation(k);
-        const bool bezier = s.type == SegmentType::Bezier;
-        const char* names[] = {".p0", ".t0", ".p3", ".t1"};
         bool ok = true;
-        for (std::size_t i = 0; i < 4; ++i) {
-            const std::string where =
-                bezier ? at + ".points[" + std::to_string(i) + "]" : at + names[i];
-            ok = checkPoint(where, s.controls[i]) && ok;
+        if (const auto* b = s.as<CubicBezier>()) {
+            for (int i = 0; i < 4; ++i) {
+                ok = checkPoint(SegmentPlace{k, SegmentPart::Points, i},
+                                b->p[static_cast<std::size_t>(i)]) &&
+                     ok;
+            }
+        } else {
+            const HermiteCurve& h = *s.as<HermiteCurve>();
+            ok = checkPoint(SegmentPlace{k, SegmentPart::P0}, h.p0) && ok;
+            ok = checkPoint(SegmentPlace{k, SegmentPart::T0}, h.t0) && ok;
+            ok = checkPoint(SegmentPlace{k, SegmentPart::P3}, h.p3) && ok;
+            ok = checkPoint(SegmentPlace{k, SegmentPart::T1}, h.t1) && ok;
         }
         if (!ok || !windowValid) return false;
         const auto [from, to] = endPointsOf(s);
         if (from.norm() <= kJointToleranceMm || to.norm() <= kJointToleranceMm) {
-            error(at, "an end point lies on the rotation centre");
+            error(SegmentPlace{k}, "an end point lies on the rotation centre");
             return false;
         }
         const auto [start, end] = lineWindowDeg(s, s.phiStartDeg);
         if (!(end > start)) {
-            error(at, "the curve runs clockwise around the rotation centre (from " + deg(start) +
-                          " to " + deg(end) + "); reverse its points");
+            error(SegmentPlace{k}, "the curve runs clockwise around the rotation centre (from " +
+                                       deg(start) + " to " + deg(end) + "); reverse its points");
             return false;
         }
-        if (std::abs(wrapDeg(s.phiStartDeg - start)) > kLineWindowToleranceDeg ||
-            std::abs(wrapDeg(s.phiEndDeg - end)) > kLineWindowToleranceDeg ||
-            std::abs((s.phiEndDeg - s.phiStartDeg) - (end - start)) > kLineWindowToleranceDeg) {
-            error(at, "window " + deg(s.phiStartDeg) + " .. " + deg(s.phiEndDeg) +
-                          " disagrees with the polar angles of its end points (" + deg(start) +
-                          " .. " + deg(end) + ")");
-            return false;
-        }
+        if (!checkWindowFollowsEnds(k, "its end points")) return false;
         const CubicBezier curve = bezierOf(s);
         constexpr int kChecks = 256;
         for (int i = 1; i < kChecks; ++i) {
@@ -198,9 +222,9 @@ private:
             const double phi = degToRad(phiDeg);
             const std::size_t hits = curve.rayParameters(std::cos(phi), std::sin(phi)).size();
             if (hits != 1) {
-                error(at, "the follower ray meets the curve " + std::to_string(hits) +
-                              " times at " + deg(phiDeg) +
-                              "; inside its window it must meet it exactly once");
+                error(SegmentPlace{k}, "the follower ray meets the curve " + std::to_string(hits) +
+                                           " times at " + deg(phiDeg) +
+                                           "; inside its window it must meet it exactly once");
                 return false;
             }
         }
@@ -208,28 +232,28 @@ private:
     }
 
     /// The ray meets the circle with r > 0 across the whole window (math.md §1).
-    bool checkArcWindow(std::size_t k) {
+    bool checkArcWindow(std::size_t k, const Arc& arc) {
         const SegmentSpec& s = m_project.contour[k];
-        const std::string at = segmentLocation(k);
-        const double dist = s.center.norm();
-        const double rel = (dist - s.radius) / s.radius;
-        if (s.branch == Branch::Inner && rel <= 1e-12) {
-            error(at + ".branch",
+        const double dist = arc.center.norm();
+        const double rel = (dist - arc.radius) / arc.radius;
+        if (arc.branch == Branch::Inner && rel <= 1e-12) {
+            error(SegmentPlace{k, SegmentPart::Branch},
                   "the rotation centre lies inside this circle, so the inner "
                   "intersection is behind the follower (r <= 0); use \"outer\"");
             return false;
         }
         if (rel < -1e-12) return true;  // centre inside the circle: the outer branch is total
         // Centre outside (or on) the circle: the ray meets it within alpha of the centre's angle.
-        const double alphaDeg = rel <= 1e-12 ? 90.0 : radToDeg(std::asin(s.radius / dist));
-        const double centerDeg = radToDeg(std::atan2(s.center.y(), s.center.x()));
+        const double alphaDeg = rel <= 1e-12 ? 90.0 : radToDeg(std::asin(arc.radius / dist));
+        const double centerDeg = radToDeg(std::atan2(arc.center.y(), arc.center.x()));
         const double lo = wrapDeg(s.phiStartDeg - centerDeg);
         const double hi = lo + (s.phiEndDeg - s.phiStartDeg);
         constexpr double kTangentTolDeg = 1e-7;
         if (lo < -alphaDeg - kTangentTolDeg || hi > alphaDeg + kTangentTolDeg) {
-            error(at, "the follower ray misses the circle inside the window " + deg(s.phiStartDeg) +
-                          " .. " + deg(s.phiEndDeg) + "; it meets it only for phi in " +
-                          deg(centerDeg - alphaDeg) + " .. " + deg(centerDeg + alphaDeg));
+            error(SegmentPlace{k},
+                  "the follower ray misses the circle inside the window " + deg(s.phiStartDeg) +
+                      " .. " + deg(s.phiEndDeg) + "; it meets it only for phi in " +
+                      deg(centerDeg - alphaDeg) + " .. " + deg(centerDeg + alphaDeg));
             return false;
         }
         return true;
@@ -243,18 +267,22 @@ private:
             const double next = c[k + 1].phiStartDeg;
             const double diff = next - end;
             if (std::abs(diff) > kWindowToleranceDeg) {
-                error(segmentLocation(k) + "/" + segmentLocation(k + 1),
-                      std::string(diff > 0 ? "gap" : "overlap") + " of " + deg(std::abs(diff)) +
-                          " between phi_end " + formatNumber(end) + " and phi_start " +
-                          formatNumber(next));
+                m_out.push_back(Diagnostic::atJoint(k, k + 1,
+                                                    std::string(diff > 0 ? "gap" : "overlap") +
+                                                        " of " + deg(std::abs(diff)) +
+                                                        " between phi_end " + formatNumber(end) +
+                                                        " and phi_start " + formatNumber(next)));
                 ok = false;
             }
         }
         const double span = c.back().phiEndDeg - c.front().phiStartDeg;
         if (std::abs(span - 360.0) > kWindowToleranceDeg) {
-            error("contour", "the windows cover " + deg(span) + " (from " +
-                                 deg(c.front().phiStartDeg) + " to " + deg(c.back().phiEndDeg) +
-                                 "); they must cover exactly one turn, 360°");
+            Diagnostic d{"contour", "the windows cover " + deg(span) + " (from " +
+                                        deg(c.front().phiStartDeg) + " to " +
+                                        deg(c.back().phiEndDeg) +
+                                        "); they must cover exactly one turn, 360°"};
+            d.places = {{0, SegmentPart::PhiStart}, {c.size() - 1, SegmentPart::PhiEnd}};
+            m_out.push_back(std::move(d));
             ok = false;
         }
         return ok;
@@ -269,9 +297,10 @@ private:
             const Eigen::Vector2d right = pointOnSegment(c[next], c[next].phiStartDeg);
             const double gap = (left - right).norm();
             if (!(gap <= kJointToleranceMm)) {
-                error(segmentLocation(k) + "/" + segmentLocation(next),
-                      "the segments do not meet at " + deg(angle) + ": gap of " +
-                          formatNumber(gap) + " mm (at most 1e-06 mm allowed)");
+                m_out.push_back(Diagnostic::atJoint(k, next,
+                                                    "the segments do not meet at " + deg(angle) +
+                                                        ": gap of " + formatNumber(gap) +
+                                                        " mm (at most 1e-06 mm allowed)"));
             }
         }
     }
@@ -318,8 +347,6 @@ private:
 };
 
 }  // namespace
-
-std::string segmentLocation(std::size_t index) { return "contour[" + std::to_string(index) + "]"; }
 
 std::pair<double, double> lineWindowDeg(const SegmentSpec& segment, double nearDeg) {
     const auto [from, to] = endPointsOf(segment);

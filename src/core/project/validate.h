@@ -21,7 +21,4 @@ struct ValidationOptions {
 /// within 180° of `nearDeg` (the previous segment's end, or 0).
 [[nodiscard]] std::pair<double, double> lineWindowDeg(const SegmentSpec& line, double nearDeg);
 
-/// @brief "contour[3]" — the location prefix of a segment.
-[[nodiscard]] std::string segmentLocation(std::size_t index);
-
 }  // namespace cam

@@ -1,17 +1,16 @@
 #include "spline/biarc.h"
-#include "geometry/planar.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "common/angles.h"
+#include "geometry/planar.h"
 
 namespace cam {
 namespace {
 
 using Vec = Eigen::Vector2d;
-
 
 /// The arc that leaves `a` along unit tangent `t` and passes through `b` (a line if straight).
 PathSegment arcThrough(const Vec& a, const Vec& t, const Vec& b, double z) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "geometry/planar.h"
 #include "project/validate.h"
 
 namespace cam {
@@ -44,41 +45,33 @@ ArcApproximation approximateArc(const Eigen::Vector2d& center, double radius, do
 Result<std::vector<SegmentSpec>> approximateArcSegment(const std::vector<SegmentSpec>& contour,
                                                        std::size_t k, double maxErrorMm,
                                                        ArcApproximation* report) {
-    const std::string at = segmentLocation(k);
-    if (k >= contour.size()) return Diagnostics{{at, "no such segment"}};
+    if (k >= contour.size()) return Diagnostics{{segmentLocation(k), "no such segment"}};
     const SegmentSpec& s = contour[k];
-    if (s.type != SegmentType::Arc) return Diagnostics{{at, "is not an arc"}};
+    const Arc* arc = s.as<Arc>();
+    if (!arc) return Diagnostics{Diagnostic::at({k, SegmentPart::Type}, "is not an arc")};
     if (!(maxErrorMm > 0) || !std::isfinite(maxErrorMm)) {
         return Diagnostics{{"error", "the admissible radial error must be > 0 mm"}};
     }
     // The arc's piece inside the window, about its own centre, in the direction of travel.
-    const Arc arc{s.center, s.radius, s.branch};
-    auto pointAt = [&](double deg) {
-        const double phi = degToRad(deg);
-        return Eigen::Vector2d(arc.evaluate(phi).r * std::cos(phi),
-                               arc.evaluate(phi).r * std::sin(phi));
-    };
-    const Eigen::Vector2d p0 = pointAt(s.phiStartDeg) - s.center;
-    const Eigen::Vector2d p1 = pointAt(s.phiEndDeg) - s.center;
+    const Eigen::Vector2d p0 = pointOnSegment(s, s.phiStartDeg) - arc->center;
+    const Eigen::Vector2d p1 = pointOnSegment(s, s.phiEndDeg) - arc->center;
     // Direction of travel about the arc's centre: that of the contour's tangent dP/dφ.
     const double phi0 = degToRad(s.phiStartDeg);
-    const PolarDerivatives d0 = arc.evaluate(phi0);
+    const PolarDerivatives d0 = arc->evaluate(phi0);
     const Eigen::Vector2d u(std::cos(phi0), std::sin(phi0)), u1(-u.y(), u.x());
     const Eigen::Vector2d travel = d0.dr * u + d0.r * u1;
-    const double direction = p0.x() * travel.y() - p0.y() * travel.x() >= 0 ? 1.0 : -1.0;
-    double sweep = std::atan2(p0.x() * p1.y() - p0.y() * p1.x(), p0.dot(p1));
+    const double direction = cross(p0, travel) >= 0 ? 1.0 : -1.0;
+    double sweep = std::atan2(cross(p0, p1), p0.dot(p1));
     if (direction > 0 && sweep <= 0) sweep += kTwoPi;
     if (direction < 0 && sweep >= 0) sweep -= kTwoPi;
     const ArcApproximation approx =
-        approximateArc(s.center, s.radius, std::atan2(p0.y(), p0.x()), sweep, maxErrorMm);
+        approximateArc(arc->center, arc->radius, std::atan2(p0.y(), p0.x()), sweep, maxErrorMm);
     if (report) *report = approx;
 
     std::vector<SegmentSpec> out(contour.begin(), contour.begin() + static_cast<long>(k));
     double previousEnd = s.phiStartDeg;
     for (std::size_t i = 0; i < approx.pieces.size(); ++i) {
-        SegmentSpec piece;
-        piece.type = SegmentType::Bezier;
-        piece.controls = approx.pieces[i].p;
+        SegmentSpec piece{approx.pieces[i]};
         // The first and last piece keep the arc's exact window ends (the joints).
         std::tie(piece.phiStartDeg, piece.phiEndDeg) = lineWindowDeg(piece, previousEnd);
         if (i == 0) piece.phiStartDeg = s.phiStartDeg;

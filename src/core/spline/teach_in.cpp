@@ -1,9 +1,9 @@
 #include "spline/teach_in.h"
-#include "geometry/planar.h"
 
 #include <cmath>
 #include <limits>
 
+#include "geometry/planar.h"
 #include "project/validate.h"
 
 namespace cam {
@@ -11,25 +11,18 @@ namespace {
 
 using Vec = Eigen::Vector2d;
 
-
 /// Unit tangent at knot b of the circle through a, b, c, oriented along the travel a → c;
 /// the travel direction itself when the three are collinear.
 Vec circumTangent(const Vec& a, const Vec& b, const Vec& c, double* radius) {
-    const Vec ab = b - a, bc = c - b, ac = c - a;
-    const double area2 = cross(ab, bc);
-    if (std::abs(area2) <= 1e-12 * ab.norm() * bc.norm()) {
+    const Vec ac = c - a;
+    const std::optional<Vec> center = circumcenter(a, b, c);
+    if (!center) {
         *radius = std::numeric_limits<double>::infinity();
         return ac.normalized();
     }
-    *radius = ab.norm() * bc.norm() * ac.norm() / (2.0 * std::abs(area2));
-    // Centre of the circle, then the tangent at b perpendicular to the radius.
-    const double d =
-        2.0 * (a.x() * (b.y() - c.y()) + b.x() * (c.y() - a.y()) + c.x() * (a.y() - b.y()));
-    const double a2 = a.squaredNorm(), b2 = b.squaredNorm(), c2 = c.squaredNorm();
-    const Vec center((a2 * (b.y() - c.y()) + b2 * (c.y() - a.y()) + c2 * (a.y() - b.y())) / d,
-                     (a2 * (c.x() - b.x()) + b2 * (a.x() - c.x()) + c2 * (b.x() - a.x())) / d);
-    Vec t(-(b - center).y(), (b - center).x());
-    t.normalize();
+    *radius = (b - *center).norm();
+    // The tangent at b is perpendicular to the radius.
+    const Vec t = perp(b - *center).normalized();
     return t.dot(ac) >= 0 ? t : Vec(-t);  // along the travel: no parasitic loop
 }
 
@@ -108,9 +101,7 @@ Result<std::vector<SegmentSpec>> contourThroughPoints(const std::vector<Vec>& kn
     std::vector<SegmentSpec> contour;
     double previousEnd = 0.0;
     for (std::size_t i = 0; i < spline.value().size(); ++i) {
-        SegmentSpec s;
-        s.type = SegmentType::Bezier;
-        s.controls = spline.value()[i].p;
+        SegmentSpec s{spline.value()[i]};
         std::tie(s.phiStartDeg, s.phiEndDeg) = lineWindowDeg(s, i == 0 ? 0.0 : previousEnd);
         if (i > 0) s.phiStartDeg = previousEnd;  // exactly contiguous
         previousEnd = s.phiEndDeg;

@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// @brief The segment table as a Qt model: an adapter over the document that edits through
-/// undo commands and marks invalid cells with their messages.
+/// undo commands and marks invalid cells with their messages. One row per segment of any kind
+/// (arc, line, Bézier, Hermite); the columns that do not apply to a row's kind are empty.
 
 #include <QAbstractTableModel>
 #include <QHash>
@@ -11,7 +12,7 @@
 
 namespace cam {
 
-class ArcTableModel : public QAbstractTableModel {
+class SegmentTableModel : public QAbstractTableModel {
     Q_OBJECT
 public:
     enum Column {
@@ -34,7 +35,7 @@ public:
     /// data() with this role gives the list of choices of a Type or Branch cell.
     static constexpr int ChoicesRole = Qt::UserRole + 2;
 
-    explicit ArcTableModel(ProjectDocument* document, QObject* parent = nullptr);
+    explicit SegmentTableModel(ProjectDocument* document, QObject* parent = nullptr);
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
@@ -47,21 +48,21 @@ public:
     [[nodiscard]] QStringList problemsAt(int row, int column) const;
 
     /// @brief Which field an edit of this column touches (for merging).
-    static SegmentField fieldOf(int column);
+    static EditedField fieldOf(int column);
     /// @brief The segment as it would be after setting `column` to `value`; false if invalid.
+    /// The Type column converts the segment (see withType).
     static bool applyValue(SegmentSpec& segment, int column, const QVariant& value);
-    /// @brief Another kind of segment through the same two end points: Bézier ↔ Hermite is the
-    /// same curve exactly; a line becomes its 1/3-chord Bézier; an arc its κ-approximation.
-    static bool changeType(SegmentSpec& segment, SegmentType type);
+
+    /// @brief The cells a diagnostic's place marks: the field's column(s); a spline's control
+    /// points mark the Type cell (whose tooltip lists them); the whole segment marks every cell.
+    static QList<int> columnsOf(const SegmentPlace& place);
 
 private:
     void rebuildProblems();
     bool isApplicable(int row, int column) const;
 
     ProjectDocument* m_document;
-    int m_rows = 0;  ///< mirrors the document so begin/end notifications bracket each change
     QHash<quint64, QStringList> m_problems;  ///< (row << 8 | column) → messages
-    QStringList m_rowProblems;               ///< for rows not mapped to a column
 };
 
 }  // namespace cam

@@ -1,0 +1,365 @@
+#include "io/project_reader.h"
+
+#include <cmath>
+#include <set>
+
+#include "common/angles.h"
+#include "project/validate.h"
+
+namespace cam {
+namespace {
+
+const char* typeName(const Json& j) {
+    if (j.is_string()) return "a string";
+    if (j.is_boolean()) return "a boolean";
+    if (j.is_number()) return "a number";
+    if (j.is_array()) return "an array";
+    if (j.is_object()) return "an object";
+    return "null";
+}
+
+/// Reads typed fields out of the DOM, recording located errors instead of throwing.
+class Reader {
+public:
+    Diagnostics errors;
+
+    void error(const std::string& location, const std::string& message) {
+        errors.push_back({location, message, Severity::Error});
+    }
+
+    const Json* field(const Json& obj, const std::string& at, const char* key, bool required) {
+        const auto it = obj.find(key);
+        if (it == obj.end()) {
+            if (required) error(join(at, key), "missing");
+            return nullptr;
+        }
+        return &*it;
+    }
+
+    static std::string join(const std::string& at, const char* key) {
+        return at.empty() ? std::string(key) : at + "." + key;
+    }
+
+    std::optional<double> number(const Json& j, const std::string& at) {
+        if (!j.is_number()) {
+            error(at, std::string("must be a number (got ") + typeName(j) + ")");
+            return std::nullopt;
+        }
+        return j.get<double>();
+    }
+
+    std::optional<double> number(const Json& obj, const std::string& at, const char* key,
+                                 bool required) {
+        const Json* j = field(obj, at, key, required);
+        return j ? number(*j, join(at, key)) : std::nullopt;
+    }
+
+    std::optional<std::string> string(const Json& obj, const std::string& at, const char* key,
+                                      bool required) {
+        const Json* j = field(obj, at, key, required);
+        if (!j) return std::nullopt;
+        if (!j->is_string()) {
+            error(join(at, key), std::string("must be a string (got ") + typeName(*j) + ")");
+            return std::nullopt;
+        }
+        return j->get<std::string>();
+    }
+
+    std::optional<Eigen::Vector2d> point(const Json& obj, const std::string& at, const char* key,
+                                         bool required) {
+        const Json* j = field(obj, at, key, required);
+        if (!j) return std::nullopt;
+        return pointValue(*j, join(at, key));
+    }
+
+    /// A value that must be [x, y].
+    std::optional<Eigen::Vector2d> pointValue(const Json& j, const std::string& loc) {
+        if (!j.is_array() || j.size() != 2) {
+            error(loc, std::string("must be an array [x, y] of two numbers (got ") +
+                           (j.is_array() ? std::to_string(j.size()) + " elements" : typeName(j)) +
+                           ")");
+            return std::nullopt;
+        }
+        const auto x = number(j[0], loc + "[0]");
+        const auto y = number(j[1], loc + "[1]");
+        if (!x || !y) return std::nullopt;
+        return Eigen::Vector2d(*x, *y);
+    }
+
+    std::optional<std::vector<double>> numbers(const Json& obj, const std::string& at,
+                                               const char* key, bool required) {
+        const Json* j = field(obj, at, key, required);
+        if (!j) return std::nullopt;
+        const std::string loc = join(at, key);
+        if (!j->is_array()) {
+            error(loc, std::string("must be an array of numbers (got ") + typeName(*j) + ")");
+            return std::nullopt;
+        }
+        std::vector<double> out;
+        bool ok = true;
+        for (std::size_t i = 0; i < j->size(); ++i) {
+            const auto v = number((*j)[i], loc + "[" + std::to_string(i) + "]");
+            ok = ok && v.has_value();
+            out.push_back(v.value_or(0.0));
+        }
+        return ok ? std::optional(out) : std::nullopt;
+    }
+
+    bool object(const Json& j, const std::string& at) {
+        if (!j.is_object()) {
+            error(at, std::string("must be an object (got ") + typeName(j) + ")");
+            return false;
+        }
+        return true;
+    }
+
+    /// Keys inside known objects must be known: a typo must not be silently ignored.
+    void onlyKeys(const Json& obj, const std::string& at, std::initializer_list<const char*> keys) {
+        for (const auto& [key, value] : obj.items()) {
+            bool known = false;
+            for (const char* k : keys) known = known || key == k;
+            if (!known) error(join(at, key.c_str()), "unknown key");
+        }
+    }
+};
+
+void readSegment(Reader& rd, const Json& j, const std::string& at, const UnitsSpec& units,
+                 std::optional<double> previousEndDeg, SegmentSpec& s) {
+    if (!rd.object(j, at)) return;
+    const auto type = rd.string(j, at, "type", true);
+    if (!type) return;
+    const double mm = units.lengthFactor();
+    auto window = [&] {
+        const auto start = rd.number(j, at, "phi_start", true);
+        const auto end = rd.number(j, at, "phi_end", true);
+        if (start) s.phiStartDeg = *start * units.angleFactor();
+        if (end) s.phiEndDeg = *end * units.angleFactor();
+    };
+    // Lines and splines may leave their window out: it follows from their end points.
+    auto windowOrDefault = [&](bool complete) {
+        if (j.contains("phi_start") || j.contains("phi_end")) {
+            window();
+        } else if (complete) {
+            std::tie(s.phiStartDeg, s.phiEndDeg) = lineWindowDeg(s, previousEndDeg.value_or(0.0));
+        }
+    };
+    if (*type == "arc") {
+        Arc arc;
+        rd.onlyKeys(j, at, {"type", "center", "radius", "branch", "phi_start", "phi_end"});
+        if (const auto c = rd.point(j, at, "center", true)) arc.center = *c * mm;
+        if (const auto r = rd.number(j, at, "radius", true)) arc.radius = *r * mm;
+        if (const auto b = rd.string(j, at, "branch", true)) {
+            if (*b == "outer") {
+                arc.branch = Branch::Outer;
+            } else if (*b == "inner") {
+                arc.branch = Branch::Inner;
+            } else {
+                rd.error(at + ".branch", "must be \"outer\" or \"inner\" (got \"" + *b + "\")");
+            }
+        }
+        s.shape = arc;
+        window();
+    } else if (*type == "line") {
+        rd.onlyKeys(j, at, {"type", "from", "to", "phi_start", "phi_end"});
+        const auto from = rd.point(j, at, "from", true);
+        const auto to = rd.point(j, at, "to", true);
+        Line line;
+        if (from) line.from = *from * mm;
+        if (to) line.to = *to * mm;
+        s.shape = line;
+        windowOrDefault(from && to);
+    } else if (*type == "bezier") {
+        rd.onlyKeys(j, at, {"type", "points", "phi_start", "phi_end"});
+        CubicBezier curve;
+        bool complete = false;
+        if (const Json* pts = rd.field(j, at, "points", true)) {
+            if (!pts->is_array() || pts->size() != 4) {
+                rd.error(at + ".points", "must be an array of four points [x, y]");
+            } else {
+                complete = true;
+                for (std::size_t i = 0; i < 4; ++i) {
+                    const auto p =
+                        rd.pointValue((*pts)[i], at + ".points[" + std::to_string(i) + "]");
+                    if (p) curve.p[i] = *p * mm;
+                    complete = complete && p.has_value();
+                }
+            }
+        }
+        s.shape = curve;
+        windowOrDefault(complete);
+    } else if (*type == "hermite") {
+        rd.onlyKeys(j, at, {"type", "p0", "t0", "p3", "t1", "phi_start", "phi_end"});
+        HermiteCurve curve;
+        bool complete = true;
+        for (auto [key, field] : {std::pair{"p0", &curve.p0}, std::pair{"t0", &curve.t0},
+                                  std::pair{"p3", &curve.p3}, std::pair{"t1", &curve.t1}}) {
+            const auto p = rd.point(j, at, key, true);
+            if (p) *field = *p * mm;
+            complete = complete && p.has_value();
+        }
+        s.shape = curve;
+        windowOrDefault(complete);
+    } else {
+        rd.error(at + ".type", "unknown segment type \"" + *type +
+                                   "\" (expected \"arc\", \"line\", \"bezier\" or \"hermite\")");
+    }
+}
+
+void readMotion(Reader& rd, const Json& root, Project& p) {
+    const Json* m = rd.field(root, "", "motion", true);
+    if (!m || !rd.object(*m, "motion")) return;
+    rd.onlyKeys(*m, "motion", {"omega_rad_s", "rpm", "period_s"});
+    int given = 0;
+    for (auto [key, unit] :
+         {std::pair{"omega_rad_s", SpeedUnit::OmegaRadS}, std::pair{"rpm", SpeedUnit::Rpm},
+          std::pair{"period_s", SpeedUnit::PeriodS}}) {
+        if (!m->contains(key)) continue;
+        ++given;
+        if (const auto v = rd.number(*m, "motion", key, true)) p.motion = {unit, *v};
+    }
+    if (given != 1) {
+        rd.error("motion", "must give exactly one of omega_rad_s, rpm, period_s (got " +
+                               std::to_string(given) + ")");
+    }
+}
+
+void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project& p) {
+    const Json* f = rd.field(root, "", "follower", false);
+    if (!f || !rd.object(*f, "follower")) return;
+    rd.onlyKeys(*f, "follower", {"type", "offset", "radius"});
+    FollowerSpec spec;
+    if (const auto type = rd.string(*f, "follower", "type", false)) {
+        if (*type == "knife") {
+            spec.type = FollowerType::Knife;
+        } else if (*type == "roller") {
+            spec.type = FollowerType::Roller;
+        } else if (*type == "flat") {
+            spec.type = FollowerType::Flat;
+        } else {
+            rd.error("follower.type",
+                     "must be \"knife\", \"roller\" or \"flat\" (got \"" + *type + "\")");
+        }
+    }
+    if (const auto v = rd.number(*f, "follower", "offset", false)) {
+        spec.offset = *v * units.lengthFactor();
+    }
+    const bool needsRadius = spec.type == FollowerType::Roller;
+    if (const auto v = rd.number(*f, "follower", "radius", needsRadius)) {
+        spec.radius = *v * units.lengthFactor();
+    }
+    p.follower = spec;
+}
+
+void readSampling(Reader& rd, const Json& root, Project& p) {
+    const Json* s = rd.field(root, "", "sampling", false);
+    if (!s || !rd.object(*s, "sampling")) return;
+    rd.onlyKeys(*s, "sampling", {"samples_per_turn"});
+    const auto n = rd.number(*s, "sampling", "samples_per_turn", true);
+    if (!n) return;
+    if (!(std::floor(*n) == *n) || std::abs(*n) > 9e15) {
+        rd.error("sampling.samples_per_turn",
+                 "must be a whole number between 16 and 10000000 (got " + formatNumber(*n) + ")");
+        return;
+    }
+    p.samplesPerTurn = static_cast<std::int64_t>(*n);
+}
+
+void readMachining(Reader& rd, const Json& root, const UnitsSpec& units, Project& p) {
+    const Json* m = rd.field(root, "", "machining", false);
+    if (!m || !rd.object(*m, "machining")) return;
+    const std::string at = "machining";
+    rd.onlyKeys(*m, at, {"axis_accel", "axis_vmax", "feed_max", "tool_radius", "step"});
+    MachiningSpec spec;
+    const double mm = units.lengthFactor();
+    auto scaled = [&](std::vector<double> v) {
+        for (double& x : v) x *= mm;
+        return v;
+    };
+    if (const auto v = rd.numbers(*m, at, "axis_accel", true)) spec.axisAccel = scaled(*v);
+    if (const auto v = rd.numbers(*m, at, "axis_vmax", false)) spec.axisVmax = scaled(*v);
+    if (const auto v = rd.number(*m, at, "feed_max", true)) spec.feedMax = *v * mm;
+    if (const auto v = rd.number(*m, at, "tool_radius", false)) spec.toolRadius = *v * mm;
+    if (const auto v = rd.number(*m, at, "step", false)) spec.step = *v * mm;
+    p.machining = spec;
+}
+
+}  // namespace
+
+Result<Project> readProject(const Json& root) {
+    Reader rd;
+    if (!root.is_object()) {
+        rd.error("(top level)", std::string("must be an object (got ") + typeName(root) + ")");
+        return rd.errors;
+    }
+    const auto format = rd.string(root, "", "format", true);
+    if (format && *format != "camwright") {
+        rd.error("format", "must be \"camwright\" (got \"" + *format + "\")");
+    }
+    if (const Json* v = rd.field(root, "", "version", true)) {
+        if (!v->is_number_integer()) {
+            rd.error("version", std::string("must be a whole number (got ") +
+                                    (v->is_number() ? v->dump() : typeName(*v)) + ")");
+        } else if (v->get<std::int64_t>() > kProjectFormatVersion) {
+            rd.error("version", "this file has format version " + v->dump() +
+                                    "; this Camwright reads version 1 only — open it with a "
+                                    "newer Camwright");
+        } else if (v->get<std::int64_t>() < 1) {
+            rd.error("version", "must be 1 (got " + v->dump() + ")");
+        }
+    }
+    if (hasErrors(rd.errors)) return rd.errors;  // not a Camwright v1 file: say only that
+
+    Project p;
+    if (const auto name = rd.string(root, "", "name", false)) p.name = *name;
+
+    UnitsSpec& units = p.units;
+    if (const Json* u = rd.field(root, "", "units", false); u && rd.object(*u, "units")) {
+        rd.onlyKeys(*u, "units", {"length", "angle"});
+        if (const auto length = rd.string(*u, "units", "length", false)) {
+            if (*length == "m") {
+                units.length = LengthUnit::M;
+            } else if (*length != "mm") {
+                rd.error("units.length", "must be \"mm\" or \"m\" (got \"" + *length + "\")");
+            }
+        }
+        if (const auto angle = rd.string(*u, "units", "angle", false)) {
+            if (*angle == "rad") {
+                units.angle = AngleUnit::Rad;
+            } else if (*angle != "deg") {
+                rd.error("units.angle", "must be \"deg\" or \"rad\" (got \"" + *angle + "\")");
+            }
+        }
+    }
+
+    readMotion(rd, root, p);
+
+    if (const Json* c = rd.field(root, "", "contour", true)) {
+        if (!c->is_array()) {
+            rd.error("contour",
+                     std::string("must be an array of segments (got ") + typeName(*c) + ")");
+        } else {
+            std::optional<double> previousEnd;
+            for (std::size_t k = 0; k < c->size(); ++k) {
+                SegmentSpec s;
+                readSegment(rd, (*c)[k], segmentLocation(k), units, previousEnd, s);
+                previousEnd = s.phiEndDeg;
+                p.contour.push_back(s);
+            }
+        }
+    }
+    readFollower(rd, root, units, p);
+    readSampling(rd, root, p);
+    readMachining(rd, root, units, p);
+
+    static const std::set<std::string> known{"format",   "version",  "name",
+                                             "units",    "motion",   "contour",
+                                             "follower", "sampling", "machining"};
+    for (const auto& [key, value] : root.items()) {
+        if (!known.contains(key)) p.extraKeys.emplace_back(key, value.dump());
+    }
+
+    if (hasErrors(rd.errors)) return rd.errors;
+    return p;
+}
+
+}  // namespace cam

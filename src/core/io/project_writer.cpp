@@ -1,0 +1,161 @@
+#include "io/project_writer.h"
+
+#include <charconv>
+#include <cmath>
+
+#include "io/json_syntax.h"
+#include "io/project_reader.h"
+
+namespace cam {
+
+double fileValue(double internal, double factor) {
+    if (factor == 1.0 || !std::isfinite(internal)) return internal;
+    const double guess = internal / factor;
+    char buffer[40];
+    for (int digits = 1; digits <= 17; ++digits) {
+        const auto written = std::to_chars(buffer, buffer + sizeof buffer, guess,
+                                           std::chars_format::general, digits);
+        double candidate = 0.0;
+        std::from_chars(buffer, written.ptr, candidate);
+        if (candidate * factor == internal) return candidate;
+    }
+    // No decimal of up to 17 digits near the quotient maps back exactly: try its neighbours.
+    for (double candidate : {std::nextafter(guess, -INFINITY), std::nextafter(guess, INFINITY)}) {
+        if (candidate * factor == internal) return candidate;
+    }
+    return guess;
+}
+
+std::string serializeProject(const Project& p) {
+    Json root;
+    root["format"] = "camwright";
+    root["version"] = kProjectFormatVersion;
+    root["name"] = p.name;
+    const double mm = p.units.lengthFactor();
+    const double deg = p.units.angleFactor();
+    auto length = [mm](double v) { return fileValue(v, mm); };
+    auto point = [&](const Eigen::Vector2d& v) {
+        return Json::array({length(v.x()), length(v.y())});
+    };
+    root["units"] = {{"length", p.units.length == LengthUnit::M ? "m" : "mm"},
+                     {"angle", p.units.angle == AngleUnit::Rad ? "rad" : "deg"}};
+    const char* speedKey = p.motion.unit == SpeedUnit::OmegaRadS ? "omega_rad_s"
+                           : p.motion.unit == SpeedUnit::Rpm     ? "rpm"
+                                                                 : "period_s";
+    root["motion"] = {{speedKey, p.motion.value}};
+    Json contour = Json::array();
+    for (const SegmentSpec& s : p.contour) {
+        Json j;
+        if (const auto* arc = s.as<Arc>()) {
+            j["type"] = "arc";
+            j["center"] = point(arc->center);
+            j["radius"] = length(arc->radius);
+            j["branch"] = arc->branch == Branch::Outer ? "outer" : "inner";
+        } else if (const auto* line = s.as<Line>()) {
+            j["type"] = "line";
+            j["from"] = point(line->from);
+            j["to"] = point(line->to);
+        } else if (const auto* bezier = s.as<CubicBezier>()) {
+            j["type"] = "bezier";
+            j["points"] = Json::array({point(bezier->p[0]), point(bezier->p[1]),
+                                       point(bezier->p[2]), point(bezier->p[3])});
+        } else {
+            const HermiteCurve& h = *s.as<HermiteCurve>();
+            j["type"] = "hermite";
+            j["p0"] = point(h.p0);
+            j["t0"] = point(h.t0);
+            j["p3"] = point(h.p3);
+            j["t1"] = point(h.t1);
+        }
+        j["phi_start"] = fileValue(s.phiStartDeg, deg);
+        j["phi_end"] = fileValue(s.phiEndDeg, deg);
+        contour.push_back(std::move(j));
+    }
+    root["contour"] = std::move(contour);
+    if (p.follower) {
+        const FollowerSpec& f = *p.follower;
+        Json j;
+        j["type"] = f.type == FollowerType::Knife    ? "knife"
+                    : f.type == FollowerType::Roller ? "roller"
+                                                     : "flat";
+        j["offset"] = length(f.offset);
+        if (f.type == FollowerType::Roller) j["radius"] = length(f.radius);
+        root["follower"] = std::move(j);
+    }
+    if (p.samplesPerTurn) root["sampling"] = {{"samples_per_turn", *p.samplesPerTurn}};
+    if (p.machining) {
+        const MachiningSpec& m = *p.machining;
+        Json j;
+        auto lengths = [&](const std::vector<double>& values) {
+            Json list = Json::array();
+            for (double v : values) list.push_back(length(v));
+            return list;
+        };
+        j["axis_accel"] = lengths(m.axisAccel);
+        if (!m.axisVmax.empty()) j["axis_vmax"] = lengths(m.axisVmax);
+        j["feed_max"] = length(m.feedMax);
+        j["tool_radius"] = length(m.toolRadius);
+        j["step"] = length(m.step);
+        root["machining"] = std::move(j);
+    }
+    for (const auto& [key, text] : p.extraKeys) root[key] = Json::parse(text);
+    return root.dump(2) + "\n";
+}
+
+Diagnostics nonFiniteValues(const Project& p) {
+    Diagnostics out;
+    auto check = [&](double v, Diagnostic where) {
+        if (std::isfinite(v)) return;
+        where.message = "is not a finite number, which a file cannot hold";
+        out.push_back(std::move(where));
+    };
+    auto checkPoint = [&](const Eigen::Vector2d& v, SegmentPlace place) {
+        for (int axis = 0; axis < 2; ++axis) {
+            place.axis = axis;
+            check(v[axis], Diagnostic::at(place, {}));
+        }
+    };
+    check(p.motion.value, Diagnostic{"motion", {}});
+    for (std::size_t k = 0; k < p.contour.size(); ++k) {
+        const SegmentSpec& s = p.contour[k];
+        check(s.phiStartDeg, Diagnostic::at({k, SegmentPart::PhiStart}, {}));
+        check(s.phiEndDeg, Diagnostic::at({k, SegmentPart::PhiEnd}, {}));
+        if (const auto* arc = s.as<Arc>()) {
+            checkPoint(arc->center, {k, SegmentPart::Center});
+            check(arc->radius, Diagnostic::at({k, SegmentPart::Radius}, {}));
+        } else if (const auto* line = s.as<Line>()) {
+            checkPoint(line->from, {k, SegmentPart::From});
+            checkPoint(line->to, {k, SegmentPart::To});
+        } else if (const auto* b = s.as<CubicBezier>()) {
+            for (int i = 0; i < 4; ++i) {
+                checkPoint(b->p[static_cast<std::size_t>(i)], {k, SegmentPart::Points, i});
+            }
+        } else {
+            const HermiteCurve& h = *s.as<HermiteCurve>();
+            checkPoint(h.p0, {k, SegmentPart::P0});
+            checkPoint(h.t0, {k, SegmentPart::T0});
+            checkPoint(h.p3, {k, SegmentPart::P3});
+            checkPoint(h.t1, {k, SegmentPart::T1});
+        }
+    }
+    if (p.follower) {
+        check(p.follower->offset, Diagnostic{"follower.offset", {}});
+        check(p.follower->radius, Diagnostic{"follower.radius", {}});
+    }
+    if (p.machining) {
+        const MachiningSpec& m = *p.machining;
+        for (std::size_t i = 0; i < m.axisAccel.size(); ++i) {
+            check(m.axisAccel[i],
+                  Diagnostic{"machining.axis_accel[" + std::to_string(i) + "]", {}});
+        }
+        for (std::size_t i = 0; i < m.axisVmax.size(); ++i) {
+            check(m.axisVmax[i], Diagnostic{"machining.axis_vmax[" + std::to_string(i) + "]", {}});
+        }
+        check(m.feedMax, Diagnostic{"machining.feed_max", {}});
+        check(m.toolRadius, Diagnostic{"machining.tool_radius", {}});
+        check(m.step, Diagnostic{"machining.step", {}});
+    }
+    return out;
+}
+
+}  // namespace cam

@@ -1,0 +1,85 @@
+// Problems in the contour carry their place as data (segment, field, point, axis); the text
+// location is derived from it. The table marks cells from the data, never by parsing the text.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "project/validate.h"
+
+namespace cam {
+namespace {
+
+/// Four quarter-circle Béziers about the origin (radius 20), counter-clockwise: a valid closed
+/// contour whose points the tests then break one at a time.
+Project splineCircle() {
+    const double R = 20.0, k = 4.0 / 3.0 * std::tan(M_PI / 8.0) * R;
+    Project p;
+    for (int q = 0; q < 4; ++q) {
+        const double a = M_PI / 2 * q, b = a + M_PI / 2;
+        const Eigen::Vector2d u(std::cos(a), std::sin(a)), v(std::cos(b), std::sin(b));
+        const CubicBezier curve{{R * u, R * u + k * v, R * v + k * u, R * v}};
+        p.contour.push_back(SegmentSpec{curve, 90.0 * q, 90.0 * q + 90.0});
+    }
+    return p;
+}
+
+const Diagnostic* find(const Diagnostics& all, const std::string& location) {
+    for (const Diagnostic& d : all) {
+        if (d.location == location) return &d;
+    }
+    return nullptr;
+}
+
+TEST(ValidationPlaces, ABezierPointCoordinateIsLocatedAsData) {
+    Project p = splineCircle();
+    ASSERT_TRUE(validateProject(p).empty()) << validateProject(p).front().text();
+    std::get<CubicBezier>(p.contour[2].shape).p[2].x() = 2e6;  // beyond the 1e6 mm limit
+    const Diagnostics problems = validateProject(p);
+    const Diagnostic* d = find(problems, "contour[2].points[2][0]");
+    ASSERT_NE(d, nullptr) << problems.front().text();
+    ASSERT_EQ(d->places.size(), 1u);
+    EXPECT_EQ(d->places.front(), (SegmentPlace{2, SegmentPart::Points, 2, 0}));
+    EXPECT_EQ(locationText(d->places.front()), d->location);
+}
+
+TEST(ValidationPlaces, AHermiteTangentCoordinateIsLocatedAsData) {
+    Project p = splineCircle();
+    const CubicBezier b = std::get<CubicBezier>(p.contour[1].shape);
+    HermiteCurve h = HermiteCurve::of(b);
+    h.t1.y() = std::numeric_limits<double>::quiet_NaN();
+    p.contour[1].shape = h;
+    const Diagnostics problems = validateProject(p);
+    const Diagnostic* d = find(problems, "contour[1].t1[1]");
+    ASSERT_NE(d, nullptr) << problems.front().text();
+    EXPECT_EQ(d->places, (std::vector<SegmentPlace>{{1, SegmentPart::T1, -1, 1}}));
+}
+
+TEST(ValidationPlaces, AGapNamesBothSidesOfTheJoint) {
+    Project p = splineCircle();
+    p.contour[3].phiStartDeg = 271.0;
+    const Diagnostics problems = validateProject(p);
+    const Diagnostic* d = find(problems, "contour[2]/contour[3]");
+    ASSERT_NE(d, nullptr) << problems.front().text();
+    EXPECT_EQ(d->places,
+              (std::vector<SegmentPlace>{{2, SegmentPart::PhiEnd}, {3, SegmentPart::PhiStart}}));
+}
+
+TEST(ValidationPlaces, EveryPlaceSpellsItsLocation) {
+    EXPECT_EQ(locationText({7}), "contour[7]");
+    EXPECT_EQ(locationText({7, SegmentPart::Center, -1, 1}), "contour[7].center[1]");
+    EXPECT_EQ(locationText({7, SegmentPart::Radius}), "contour[7].radius");
+    EXPECT_EQ(locationText({0, SegmentPart::Points, 3}), "contour[0].points[3]");
+    EXPECT_EQ(locationText({0, SegmentPart::P0, -1, 0}), "contour[0].p0[0]");
+    EXPECT_EQ(locationText({12, SegmentPart::PhiEnd}), "contour[12].phi_end");
+    EXPECT_EQ(jointLocation(12, 0), "contour[12]/contour[0]");
+}
+
+TEST(ResultValue, ReadingAnEmptyResultAbortsWithAMessage) {
+    const Result<int> empty(Diagnostics{{"somewhere", "went wrong"}});
+    EXPECT_DEATH((void)empty.value(), "Result::value\\(\\) read without a value");
+}
+
+}  // namespace
+}  // namespace cam
