@@ -3,9 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <QApplication>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QPushButton>
+#include <QTest>
 
 #include "app_test_support.h"
 #include "document/commands.h"
@@ -105,6 +107,82 @@ TEST(MachiningPanel, ATooWideToolIsExplained) {
     ASSERT_TRUE(waitForTiming(window));
     ASSERT_FALSE(window.engine()->latestTiming()->errors.empty());
     EXPECT_EQ(window.engine()->latestTiming()->errors.front().location, "contour[0]");
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+/// The example with limits whose digits a 1- or 3-decimal editor would round away.
+Project fineLimits() {
+    Project p = loadProjectFile(kProject.toStdString()).value();
+    p.machining->axisAccel = {500.25, 499.75, 200.0};
+    p.machining->axisVmax = {123.456, 98.7654, 50.0};
+    p.machining->feedMax = 12.345;
+    p.machining->step = 0.0005;
+    p.machining->toolRadius = 2.0;
+    return p;
+}
+
+void typeAndEnter(QWidget* spin, const QString& text) {
+    spin->setFocus();
+    QTest::keyClick(spin, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(spin, text);
+    QTest::keyClick(spin, Qt::Key_Return);
+}
+
+TEST(MachiningPanelFields, AnEditChangesOnlyItsOwnField) {
+    MainWindow window;
+    const Project original = fineLimits();
+    window.document()->reset(original, {});
+    openPanel(window);
+    QApplication::setActiveWindow(&window);
+    auto* tool = window.machiningPanel()->findChild<QDoubleSpinBox*>("toolRadiusSpinBox");
+    ASSERT_NE(tool, nullptr);
+    typeAndEnter(tool, "2.5");
+    MachiningSpec expected = *original.machining;
+    expected.toolRadius = 2.5;
+    EXPECT_EQ(*window.document()->project().machining, expected);  // 500.25, 12.345, 0.0005 kept
+    EXPECT_EQ(window.document()->undoStack()->count(), 1);
+    window.document()->undoStack()->undo();
+    EXPECT_EQ(window.document()->project(), original);
+    EXPECT_EQ(tool->value(), 2.0);
+    window.document()->undoStack()->redo();
+    EXPECT_EQ(*window.document()->project().machining, expected);
+
+    // The Z acceleration to "none" removes only that axis; the velocity limits stay as they are.
+    auto* z = window.machiningPanel()->findChild<QDoubleSpinBox*>("accelZSpinBox");
+    ASSERT_NE(z, nullptr);
+    typeAndEnter(z, "0");
+    expected.axisAccel = {500.25, 499.75};
+    EXPECT_EQ(*window.document()->project().machining, expected);
+    EXPECT_EQ(z->text(), "none");
+}
+
+TEST(MachiningPanelFields, EnterOnEveryUnchangedFieldChangesNothing) {
+    MainWindow window;
+    const Project original = fineLimits();
+    window.document()->reset(original, {});
+    openPanel(window);
+    QApplication::setActiveWindow(&window);
+    const std::string before = serializeProject(original);
+    int fields = 0;
+    for (auto* spin : window.machiningPanel()->findChildren<QDoubleSpinBox*>()) {
+        spin->setFocus();
+        QTest::keyClick(spin, Qt::Key_Return);
+        spin->clearFocus();
+        ++fields;
+    }
+    EXPECT_EQ(fields, 9);
+    EXPECT_EQ(window.document()->undoStack()->count(), 0);
+    EXPECT_EQ(serializeProject(window.document()->project()), before);
+    // What the fields show: readable, and the value behind each is exact.
+    auto* feed = window.machiningPanel()->findChild<QDoubleSpinBox*>("feedSpinBox");
+    EXPECT_EQ(feed->text(), "12.345 mm/s");
+    EXPECT_EQ(window.machiningPanel()->findChild<QDoubleSpinBox*>("seedStepSpinBox")->text(),
+              "0.0005 mm");
 }
 
 }  // namespace

@@ -1,47 +1,81 @@
 #include "models/delegates.h"
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
+#include <QPersistentModelIndex>
 
 #include "models/segment_table_model.h"
+#include "widgets/number_spin_box.h"
 
 namespace cam {
+namespace {
+
+// Properties a number editor carries through its session.
+constexpr const char* kGesture = "gesture";      ///< merges the session's edits into one step
+constexpr const char* kOriginal = "original";    ///< the cell's value when the session began
+constexpr const char* kIndex = "index";          ///< the cell (a QPersistentModelIndex)
+constexpr const char* kCommitted = "committed";  ///< a step already reached the model
+
+}  // namespace
 
 int nextGestureId() {
     static int counter = 0;
     return ++counter;
 }
 
+NumberDelegate::NumberDelegate(QObject* parent) : QStyledItemDelegate(parent) {
+    connect(this, &QAbstractItemDelegate::closeEditor, this,
+            [this](QWidget* editor, QAbstractItemDelegate::EndEditHint hint) {
+                if (hint == QAbstractItemDelegate::RevertModelCache) revert(editor);
+            });
+}
+
 QWidget* NumberDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem&,
                                       const QModelIndex& index) const {
-    auto* spin = new QDoubleSpinBox(parent);
+    auto* spin = new NumberSpinBox(parent);
     spin->setFrame(false);
-    spin->setDecimals(6);
-    spin->setRange(-1e6, 1e6);
-    spin->setAccelerated(true);
     const int c = index.column();
     const bool angle = c == SegmentTableModel::PhiStart || c == SegmentTableModel::PhiEnd;
     spin->setSuffix(angle ? QStringLiteral(" °") : QStringLiteral(" mm"));
     spin->setSingleStep(angle ? 0.5 : 0.1);
-    if (c == SegmentTableModel::Radius) spin->setMinimum(0.0);
-    spin->setProperty("gesture", nextGestureId());
-    // Live: every step reaches the model (and the plots); the gesture id merges them.
+    spin->setProperty(kGesture, nextGestureId());
+    spin->setProperty(kIndex, QVariant::fromValue(QPersistentModelIndex(index)));
+    // Steps (arrows, wheel) are live: they reach the model, and the gesture id merges them.
+    // Typed text arrives only on Enter/Tab (keyboard tracking is off).
     connect(spin, &QDoubleSpinBox::valueChanged, this,
             [this, spin] { emit const_cast<NumberDelegate*>(this)->commitData(spin); });
     return spin;
 }
 
 void NumberDelegate::setEditorData(QWidget* editor, const QModelIndex& index) const {
-    auto* spin = static_cast<QDoubleSpinBox*>(editor);
+    auto* spin = static_cast<NumberSpinBox*>(editor);
+    const double v = index.data(Qt::EditRole).toDouble();
+    // Never overwrite what is being typed: once the editor shows the cell, only a value that
+    // differs (an undo, a drag elsewhere) replaces the text.
+    if (spin->property(kOriginal).isValid() && spin->value() == v) return;
+    if (!spin->property(kOriginal).isValid()) spin->setProperty(kOriginal, v);
     const QSignalBlocker block(spin);
-    spin->setValue(index.data(Qt::EditRole).toDouble());
+    spin->setValue(v);
 }
 
 void NumberDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,
                                   const QModelIndex& index) const {
-    auto* spin = static_cast<QDoubleSpinBox*>(editor);
+    auto* spin = static_cast<NumberSpinBox*>(editor);
     spin->interpretText();
-    model->setData(index, QVariantList{spin->value(), spin->property("gesture")},
+    const double v = spin->value();
+    if (v == index.data(Qt::EditRole).toDouble()) return;  // unchanged: no undo step
+    model->setData(index, QVariantList{v, spin->property(kGesture)},
+                   SegmentTableModel::MergingEditRole);
+    spin->setProperty(kCommitted, true);
+}
+
+void NumberDelegate::revert(QWidget* editor) const {
+    if (!editor->property(kCommitted).isValid()) return;  // nothing reached the model
+    const auto index = editor->property(kIndex).value<QPersistentModelIndex>();
+    if (!index.isValid()) return;
+    // The same gesture: the edit merges with the session's and, back at its start, vanishes
+    // from the undo stack.
+    auto* model = const_cast<QAbstractItemModel*>(index.model());
+    model->setData(index, QVariantList{editor->property(kOriginal), editor->property(kGesture)},
                    SegmentTableModel::MergingEditRole);
 }
 
@@ -62,7 +96,9 @@ void ChoiceDelegate::setEditorData(QWidget* editor, const QModelIndex& index) co
 
 void ChoiceDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,
                                   const QModelIndex& index) const {
-    model->setData(index, static_cast<QComboBox*>(editor)->currentIndex(), Qt::EditRole);
+    const int choice = static_cast<QComboBox*>(editor)->currentIndex();
+    if (choice == index.data(Qt::EditRole).toInt()) return;  // unchanged: no undo step
+    model->setData(index, choice, Qt::EditRole);
 }
 
 }  // namespace cam

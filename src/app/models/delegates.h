@@ -6,17 +6,24 @@
 
 namespace cam {
 
-/// @brief Edits a number in a spin box with its unit. The model is updated on every step (the
-/// plots follow live); all steps of one editing session are one undo step.
+/// @brief Edits a number in a NumberSpinBox with its unit, as in any spreadsheet: typed text is
+/// taken on Enter or Tab (so "12.5" is 12.5, never 12 on the way), arrow and wheel steps update
+/// the plots live, and all of one session is one undo step. Opening an editor and leaving it
+/// unchanged changes nothing (the value stays exact and no undo step is pushed); Escape undoes
+/// whatever the session had stepped.
 class NumberDelegate : public QStyledItemDelegate {
     Q_OBJECT
 public:
-    using QStyledItemDelegate::QStyledItemDelegate;
+    explicit NumberDelegate(QObject* parent = nullptr);
     QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem& option,
                           const QModelIndex& index) const override;
     void setEditorData(QWidget* editor, const QModelIndex& index) const override;
     void setModelData(QWidget* editor, QAbstractItemModel* model,
                       const QModelIndex& index) const override;
+
+private:
+    /// Puts the cell back to its value from before the session (Escape).
+    void revert(QWidget* editor) const;
 };
 
 /// @brief Edits a cell whose model offers its choices under SegmentTableModel::ChoicesRole.

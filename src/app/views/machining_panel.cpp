@@ -9,23 +9,20 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QVBoxLayout>
+#include <functional>
 
 #include "document/commands.h"
 #include "models/delegates.h"
 #include "views/palette.h"
+#include "widgets/number_spin_box.h"
 
 namespace cam {
 namespace {
 
-QDoubleSpinBox* spinBox(QWidget* parent, double lo, double hi, const QString& suffix,
-                        const QString& tip) {
-    auto* s = new QDoubleSpinBox(parent);
-    s->setRange(lo, hi);
-    s->setDecimals(suffix == " mm" ? 3 : 1);
+NumberSpinBox* spinBox(QWidget* parent, const QString& suffix, const QString& tip) {
+    auto* s = new NumberSpinBox(parent);
     s->setSuffix(suffix);
     s->setToolTip(tip);
-    s->setAccelerated(true);
-    s->setKeyboardTracking(false);
     return s;
 }
 
@@ -56,24 +53,36 @@ MachiningPanel::MachiningPanel(ProjectDocument* document, QWidget* parent)
     const char* axes[] = {"X", "Y", "Z"};
     grid->addWidget(new QLabel(tr("Acceleration"), m_form), 0, 0);
     for (int i = 0; i < 3; ++i) {
-        m_accel[i] = spinBox(m_form, 0.0, 1e9, " mm/s²",
-                             tr("Acceleration limit of the %1 axis").arg(axes[i]));
-        if (i == 2) m_accel[i]->setSpecialValueText(tr("none"));
+        m_accel[i] =
+            spinBox(m_form, " mm/s²", tr("Acceleration limit of the %1 axis").arg(axes[i]));
+        m_accel[i]->setObjectName(QStringLiteral("accel%1SpinBox").arg(axes[i]));
+        m_accel[i]->setSingleStep(10.0);
+        if (i == 2) {
+            // Two axes are enough for a contour in the plane: Z's limit may be left out.
+            m_accel[i]->setMinimum(0.0);
+            m_accel[i]->setSpecialValueText(tr("none"));
+            m_accel[i]->setToolTip(tr("Acceleration limit of the Z axis (none: only X and Y)"));
+        }
         grid->addWidget(m_accel[i], 0, i + 1);
     }
     m_vmaxEnabled = new QCheckBox(tr("Velocity"), m_form);
+    m_vmaxEnabled->setObjectName("vmaxCheckBox");
     m_vmaxEnabled->setToolTip(tr("Limit the velocity of each axis"));
     grid->addWidget(m_vmaxEnabled, 1, 0);
     for (int i = 0; i < 3; ++i) {
-        m_vmax[i] =
-            spinBox(m_form, 0.001, 1e9, " mm/s", tr("Velocity limit of the %1 axis").arg(axes[i]));
+        m_vmax[i] = spinBox(m_form, " mm/s", tr("Velocity limit of the %1 axis").arg(axes[i]));
+        m_vmax[i]->setObjectName(QStringLiteral("vmax%1SpinBox").arg(axes[i]));
         grid->addWidget(m_vmax[i], 1, i + 1);
     }
-    m_feed = spinBox(m_form, 0.001, 1e9, " mm/s", tr("Feed ceiling along the path"));
-    m_toolRadius = spinBox(m_form, 0.0, 1e3, " mm",
-                           tr("Radius of the tool: the path is the "
-                              "contour offset by it"));
-    m_step = spinBox(m_form, 0.001, 1e3, " mm", tr("Step of the seed method"));
+    m_feed = spinBox(m_form, " mm/s", tr("Feed ceiling along the path"));
+    m_toolRadius =
+        spinBox(m_form, " mm", tr("Radius of the tool: the path is the contour offset by it"));
+    m_toolRadius->setSingleStep(0.1);
+    m_feed->setObjectName("feedSpinBox");
+    m_toolRadius->setObjectName("toolRadiusSpinBox");
+    m_step = spinBox(m_form, " mm", tr("Step of the seed method"));
+    m_step->setSingleStep(0.1);
+    m_step->setObjectName("seedStepSpinBox");
     grid->addWidget(new QLabel(tr("Feed"), m_form), 2, 0);
     grid->addWidget(m_feed, 2, 1);
     grid->addWidget(new QLabel(tr("Tool radius"), m_form), 2, 2);
@@ -126,17 +135,50 @@ MachiningPanel::MachiningPanel(ProjectDocument* document, QWidget* parent)
     connect(m_addButton, &QPushButton::clicked, this, [this] {
         m_document->undoStack()->push(new SetMachining(m_document, MachiningSpec{}));
     });
-    for (QDoubleSpinBox* s : {m_accel[0], m_accel[1], m_accel[2], m_vmax[0], m_vmax[1], m_vmax[2],
-                              m_feed, m_toolRadius, m_step}) {
-        connect(s, &QDoubleSpinBox::valueChanged, this, [this] {
-            if (m_refreshing) return;
+    // Each field edits only its own value of the document: the others are never rewritten
+    // from what the spin boxes show.
+    auto field = [this](NumberSpinBox* s, std::function<void(MachiningSpec&, double)> set) {
+        connect(s, &QDoubleSpinBox::valueChanged, this, [this, set](double v) {
+            if (m_refreshing || !m_document->project().machining) return;
             if (m_gesture == 0) m_gesture = nextGestureId();
-            push();
+            MachiningSpec m = *m_document->project().machining;
+            set(m, v);
+            if (m != *m_document->project().machining) push(m);
         });
         connect(s, &QDoubleSpinBox::editingFinished, this, [this] { m_gesture = 0; });
+    };
+    for (std::size_t i = 0; i < 3; ++i) {
+        field(m_accel[i], [i](MachiningSpec& m, double v) {
+            if (i < 2) {
+                m.axisAccel[i] = v;
+            } else if (v > 0.0) {
+                m.axisAccel.resize(3);
+                m.axisAccel[2] = v;
+            } else {
+                m.axisAccel.resize(2);  // "none": Z unlimited
+            }
+        });
+        field(m_vmax[i], [this, i](MachiningSpec& m, double v) {
+            if (m.axisVmax.empty()) return;  // the limits are switched off
+            for (std::size_t j = m.axisVmax.size(); j <= i; ++j) {
+                m.axisVmax.push_back(m_vmax[j]->value());
+            }
+            m.axisVmax[i] = v;
+        });
     }
-    connect(m_vmaxEnabled, &QCheckBox::toggled, this, [this] {
-        if (!m_refreshing) push();
+    field(m_feed, [](MachiningSpec& m, double v) { m.feedMax = v; });
+    field(m_toolRadius, [](MachiningSpec& m, double v) { m.toolRadius = v; });
+    field(m_step, [](MachiningSpec& m, double v) { m.step = v; });
+    connect(m_vmaxEnabled, &QCheckBox::toggled, this, [this](bool on) {
+        if (m_refreshing || !m_document->project().machining) return;
+        MachiningSpec m = *m_document->project().machining;
+        m.axisVmax.clear();
+        if (on) {
+            for (std::size_t i = 0; i < m.axisAccel.size(); ++i)
+                m.axisVmax.push_back(m_vmax[i]->value());
+        }
+        m_gesture = 0;
+        push(m);
     });
     connect(m_method, &QComboBox::currentIndexChanged, this, &MachiningPanel::plotMethodChanged);
     connect(document, &ProjectDocument::machiningChanged, this, &MachiningPanel::refresh);
@@ -147,19 +189,8 @@ TimingMethod MachiningPanel::plotMethod() const {
     return static_cast<TimingMethod>(m_method->currentIndex());
 }
 
-void MachiningPanel::push() {
-    MachiningSpec m;
-    m.axisAccel = {m_accel[0]->value(), m_accel[1]->value()};
-    if (m_accel[2]->value() > 0) m.axisAccel.push_back(m_accel[2]->value());
-    if (m_vmaxEnabled->isChecked()) {
-        for (std::size_t i = 0; i < m.axisAccel.size(); ++i) {
-            m.axisVmax.push_back(m_vmax[i]->value());
-        }
-    }
-    m.feedMax = m_feed->value();
-    m.toolRadius = m_toolRadius->value();
-    m.step = m_step->value();
-    m_document->undoStack()->push(new SetMachining(m_document, m, m_gesture));
+void MachiningPanel::push(const MachiningSpec& spec) {
+    m_document->undoStack()->push(new SetMachining(m_document, spec, m_gesture));
 }
 
 void MachiningPanel::refresh() {

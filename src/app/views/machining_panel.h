@@ -17,6 +17,7 @@ class QPushButton;
 
 namespace cam {
 
+class NumberSpinBox;
 class ProjectDocument;
 
 class MachiningPanel : public QWidget {
@@ -36,17 +37,17 @@ signals:
 
 private:
     void refresh();
-    void push();
+    void push(const MachiningSpec& spec);
 
     ProjectDocument* m_document;
     QWidget* m_form;
     QPushButton* m_addButton;
-    std::array<QDoubleSpinBox*, 3> m_accel{};
-    std::array<QDoubleSpinBox*, 3> m_vmax{};
+    std::array<NumberSpinBox*, 3> m_accel{};
+    std::array<NumberSpinBox*, 3> m_vmax{};
     QCheckBox* m_vmaxEnabled;
-    QDoubleSpinBox* m_feed;
-    QDoubleSpinBox* m_toolRadius;
-    QDoubleSpinBox* m_step;
+    NumberSpinBox* m_feed;
+    NumberSpinBox* m_toolRadius;
+    NumberSpinBox* m_step;
     QComboBox* m_method;
     std::array<QLabel*, 3> m_times{};
     QLabel* m_status;

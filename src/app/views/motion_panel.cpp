@@ -10,17 +10,15 @@
 #include "common/angles.h"
 #include "document/commands.h"
 #include "models/delegates.h"
+#include "widgets/number_spin_box.h"
 
 namespace cam {
 
 MotionPanel::MotionPanel(ProjectDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document) {
     auto* form = new QFormLayout(this);
-    m_speed = new QDoubleSpinBox(this);
+    m_speed = new NumberSpinBox(this);
     m_speed->setObjectName("speedSpinBox");
-    m_speed->setDecimals(6);
-    m_speed->setRange(-1e6, 1e6);
-    m_speed->setAccelerated(true);
     m_speed->setToolTip(tr("Turning speed; a negative speed turns clockwise"));
     m_unit = new QComboBox(this);
     m_unit->setObjectName("speedUnitComboBox");
@@ -67,6 +65,7 @@ MotionPanel::MotionPanel(ProjectDocument* document, QWidget* parent)
 void MotionPanel::pushSpeed() {
     MotionSpec m = m_document->project().motion;
     m.value = m_speed->value();
+    if (m == m_document->project().motion) return;
     m_document->undoStack()->push(new SetMotion(m_document, m, m_gesture));
 }
 

@@ -11,6 +11,7 @@ class QSpinBox;
 
 namespace cam {
 
+class NumberSpinBox;
 class ProjectDocument;
 
 class MotionPanel : public QWidget {
@@ -23,7 +24,7 @@ private:
     void pushSpeed();
 
     ProjectDocument* m_document;
-    QDoubleSpinBox* m_speed;
+    NumberSpinBox* m_speed;
     QComboBox* m_unit;
     QSpinBox* m_samples;
     QLabel* m_summary;

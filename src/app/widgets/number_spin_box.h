@@ -1,0 +1,48 @@
+#pragma once
+/// @file
+/// @brief The one numeric editor of the app: shows a readable number of digits, yet never
+/// changes a value the user did not change.
+
+#include <QDoubleSpinBox>
+
+namespace cam {
+
+/// @brief A spin box for doubles that keeps the exact value.
+///
+/// QDoubleSpinBox rounds every value to its `decimals`, so merely opening an editor on
+/// 50.308589201268575 and pressing Enter stored 50.308589. This one shows at most
+/// `significantDigits` significant digits, but as long as the text is the text it showed for
+/// the current value, that value stays bit for bit; only a changed text is parsed. Typing
+/// follows the spreadsheet habit: the value is taken on Enter, Tab or leaving the field
+/// (keyboard tracking off), so "12.5" can be typed without "12" being stored on the way; the
+/// arrows, Page Up/Down and the wheel step live. Accepts the locale's decimal separator and the
+/// dot in every locale; never group separators. The value is any finite double in the range.
+class NumberSpinBox : public QDoubleSpinBox {
+    Q_OBJECT
+public:
+    explicit NumberSpinBox(QWidget* parent = nullptr);
+
+    /// @brief How many significant digits the text shows (default 10).
+    void setSignificantDigits(int digits);
+    [[nodiscard]] int significantDigits() const { return m_digits; }
+
+    QString textFromValue(double value) const override;
+    double valueFromText(const QString& text) const override;
+    QValidator::State validate(QString& text, int& pos) const override;
+    void fixup(QString& text) const override;
+
+    /// @brief As wide as a typical value ("-88888.8888") rather than the range's ends, which
+    /// span every finite double.
+    QSize sizeHint() const override;
+    QSize minimumSizeHint() const override;
+
+    /// @brief The number `text` means (locale or dot decimal, optional exponent), if it is one.
+    [[nodiscard]] static std::optional<double> parseNumber(const QString& text);
+
+private:
+    [[nodiscard]] QString stripped(const QString& text) const;
+
+    int m_digits = 10;
+};
+
+}  // namespace cam
