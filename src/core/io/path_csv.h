@@ -10,8 +10,8 @@
 
 namespace cam {
 
-/// @brief Parses a point list. A first line that is not numeric is a header; blank lines are
-/// skipped. Problems are located as `line N` (1-based, as an editor shows them).
+/// @brief Parses a point list (parseNumberRows: a header line is one without any number, blank
+/// lines are skipped, a byte-order mark is skipped). Problems are located as `line N`.
 [[nodiscard]] Result<std::vector<PathPoint>> parsePathCsv(std::string_view text);
 
 }  // namespace cam
