@@ -7,6 +7,7 @@
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QEventLoop>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -16,7 +17,6 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPlainTextEdit>
-#include <QSaveFile>
 #include <QSettings>
 #include <QSplitter>
 #include <QStandardPaths>
@@ -29,6 +29,7 @@
 #include "document/commands.h"
 #include "engine/compute_engine.h"
 #include "fillet/fillet.h"
+#include "io/atomic_file.h"
 #include "io/project_json.h"
 #include "models/arc_table_model.h"
 #include "models/delegates.h"
@@ -363,14 +364,12 @@ QString MainWindow::saveFile(const QString& path) {
                   "could not be opened again):\n%1")
             .arg(diagnosticsText(m_document->diagnostics()));
     }
-    QSaveFile file(path);
-    const std::string text = serializeProject(m_document->project());
-    if (!file.open(QIODevice::WriteOnly) ||
-        file.write(text.data(), static_cast<qint64>(text.size())) !=
-            static_cast<qint64>(text.size()) ||
-        !file.commit()) {
+    // The core's writer, as the CLI's --out: mode, owner and symlinks kept, non-files refused.
+    const Diagnostics problems = writeFileAtomically(QFile::encodeName(path).toStdString(),
+                                                     serializeProject(m_document->project()));
+    if (!problems.empty()) {
         return tr("%1 could not be written: %2")
-            .arg(QDir::toNativeSeparators(path), file.errorString());
+            .arg(QDir::toNativeSeparators(path), QString::fromStdString(problems.front().message));
     }
     m_document->markSaved(QFileInfo(path).absoluteFilePath());
     addRecentFile(QFileInfo(path).absoluteFilePath());
