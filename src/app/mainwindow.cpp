@@ -62,11 +62,8 @@ QString diagnosticsText(const Diagnostics& diagnostics, int limit = 12) {
     return lines.join('\n');
 }
 
-/// The example projects: next to the binary when installed, in the source tree when built.
-QStringList exampleDirectories() {
-    return {QDir(QCoreApplication::applicationDirPath()).filePath("../share/camwright/examples"),
-            QStringLiteral(CAMWRIGHT_SOURCE_EXAMPLES)};
-}
+/// The bundled example projects, embedded in the binary (src/app/CMakeLists.txt).
+constexpr const char* kExamplesFolder = ":/examples";
 
 }  // namespace
 
@@ -453,23 +450,23 @@ void MainWindow::rebuildRecentMenu() {
 void MainWindow::rebuildExamplesMenu() {
     QMenu* menu = m_ui->menuExamples;
     menu->clear();
-    for (const QString& dir : exampleDirectories()) {
-        const auto entries = QDir(dir).entryInfoList({"*.cam.json"}, QDir::Files, QDir::Name);
-        for (const QFileInfo& f : entries) {
-            const QString path = f.absoluteFilePath();
-            menu->addAction(f.fileName().chopped(9), this, [this, path] {
-                if (!maybeSave()) return;
-                auto loaded = loadProjectFile(path.toStdString());
-                if (!loaded.ok()) {
-                    QMessageBox::warning(this, tr("Open Example"),
-                                         diagnosticsText(loaded.errors()));
-                    return;
-                }
-                // An example opens as an untitled copy: Save asks where, never over the example.
-                m_document->reset(std::move(loaded).value(), {});
-            });
-        }
-        if (!entries.isEmpty()) break;
+    const auto entries =
+        QDir(kExamplesFolder).entryInfoList({"*.cam.json"}, QDir::Files, QDir::Name);
+    for (const QFileInfo& f : entries) {
+        const QString path = f.absoluteFilePath();
+        menu->addAction(f.fileName().chopped(9), this, [this, path] {
+            if (!maybeSave()) return;
+            QFile file(path);
+            auto loaded = file.open(QIODevice::ReadOnly)
+                              ? parseProject(file.readAll().toStdString())
+                              : Result<Project>(Diagnostics{{path.toStdString(), "cannot open"}});
+            if (!loaded.ok()) {
+                QMessageBox::warning(this, tr("Open Example"), diagnosticsText(loaded.errors()));
+                return;
+            }
+            // An example opens as an untitled copy: Save asks where, never over the example.
+            m_document->reset(std::move(loaded).value(), {});
+        });
     }
     menu->setEnabled(!menu->isEmpty());
 }

@@ -457,6 +457,17 @@ TEST(MainWindow, ExamplesOpenAsUntitledCopies) {
     auto* examples = window.findChild<QMenu*>("menuExamples");
     ASSERT_NE(examples, nullptr);
     ASSERT_FALSE(examples->actions().isEmpty());
+    // Every bundled example, read from the binary's resources: no source tree needed
+    // (packaging.NoSourcePathsInTheBinaries checks that its path is not even in the binary).
+    QStringList bundled, listed;
+    for (const auto& e : std::filesystem::directory_iterator(CAMWRIGHT_EXAMPLES)) {
+        const QString name = QString::fromStdString(e.path().filename().string());
+        if (name.endsWith(".cam.json")) bundled << name.chopped(9);
+    }
+    bundled.sort();
+    for (const QAction* a : examples->actions()) listed << a->text();
+    EXPECT_EQ(listed.join(", ").toStdString(), bundled.join(", ").toStdString());
+    EXPECT_TRUE(QFile::exists(":/examples/six-lobe-arc-cam.cam.json"));
     EXPECT_EQ(examples->actions().front()->text(), "six-lobe-arc-cam");
     examples->actions().front()->trigger();
     EXPECT_EQ(window.document()->project().contour.size(), 13u);
