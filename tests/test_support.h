@@ -2,12 +2,14 @@
 // Helpers shared by the core, io and cli tests: relative comparison, data paths, running a binary.
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <fcntl.h>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -79,6 +81,51 @@ inline RunResult run(const std::string& program, const std::vector<std::string>&
     fs::remove(outPath);
     fs::remove(errPath);
     return r;
+}
+
+/// A fresh folder under the system temp folder, removed with everything in it at the end.
+class TempDir {
+public:
+    TempDir() {
+        std::string pattern =
+            (std::filesystem::temp_directory_path() / "camwright_test_XXXXXX").string();
+        if (::mkdtemp(pattern.data()) == nullptr) ADD_FAILURE() << "mkdtemp failed";
+        m_path = pattern;
+    }
+    ~TempDir() {
+        std::error_code ec;
+        std::filesystem::remove_all(m_path, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    [[nodiscard]] const std::filesystem::path& path() const { return m_path; }
+    [[nodiscard]] std::string file(const std::string& name) const {
+        return (m_path / name).string();
+    }
+
+private:
+    std::filesystem::path m_path;
+};
+
+/// The permission bits (07777) of a file, following symlinks; -1 if it cannot be examined.
+inline int fileMode(const std::string& path) {
+    struct stat st {};
+    return ::stat(path.c_str(), &st) == 0 ? static_cast<int>(st.st_mode & 07777) : -1;
+}
+
+/// Writes a file with exactly `mode` (not masked by the umask).
+inline void writeFileWithMode(const std::string& path, const std::string& content, int mode) {
+    std::ofstream(path, std::ios::binary) << content;
+    ::chmod(path.c_str(), static_cast<mode_t>(mode));
+}
+
+/// The names in a folder (hidden ones too), sorted.
+inline std::vector<std::string> folderEntries(const std::filesystem::path& folder) {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(folder))
+        names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
 }
 
 inline RunResult runCli(const std::vector<std::string>& args) { return run(CAMWRIGHT_CLI, args); }

@@ -3,7 +3,9 @@
 //   camwright --screenshot FILE.png [--size WxH] [PROJECT]   (works without any display)
 
 #include <QApplication>
+#include <QBuffer>
 #include <QCommandLineParser>
+#include <QFile>
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QMessageBox>
@@ -12,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "io/atomic_file.h"
 #include "mainwindow.h"
 
 namespace {
@@ -52,8 +55,17 @@ int screenshot(cam::MainWindow& window, const QString& file, const QString& size
         std::fprintf(stderr, "camwright: the computation did not finish within 20 s\n");
         return 3;
     }
-    if (!image.save(file, "PNG")) {
-        std::fprintf(stderr, "camwright: %s: cannot write the PNG\n", qPrintable(file));
+    QByteArray png;
+    QBuffer buffer(&png);
+    if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG")) {
+        std::fprintf(stderr, "camwright: %s: cannot encode the PNG\n", qPrintable(file));
+        return 2;
+    }
+    const cam::Diagnostics problems = cam::writeFileAtomically(
+        QFile::encodeName(file).toStdString(), std::string_view(png.constData(), png.size()));
+    if (!problems.empty()) {
+        std::fprintf(stderr, "camwright: %s: %s\n", qPrintable(file),
+                     problems.front().message.c_str());
         return 2;
     }
     return 0;

@@ -7,6 +7,7 @@
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QEventLoop>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -16,7 +17,6 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPlainTextEdit>
-#include <QSaveFile>
 #include <QSettings>
 #include <QSplitter>
 #include <QStandardPaths>
@@ -29,6 +29,7 @@
 #include "document/commands.h"
 #include "engine/compute_engine.h"
 #include "fillet/fillet.h"
+#include "io/atomic_file.h"
 #include "io/project_json.h"
 #include "models/delegates.h"
 #include "models/segment_table_model.h"
@@ -61,11 +62,8 @@ QString diagnosticsText(const Diagnostics& diagnostics, int limit = 12) {
     return lines.join('\n');
 }
 
-/// The example projects: next to the binary when installed, in the source tree when built.
-QStringList exampleDirectories() {
-    return {QDir(QCoreApplication::applicationDirPath()).filePath("../share/camwright/examples"),
-            QStringLiteral(CAMWRIGHT_SOURCE_EXAMPLES)};
-}
+/// The bundled example projects, embedded in the binary (src/app/CMakeLists.txt).
+constexpr const char* kExamplesFolder = ":/examples";
 
 }  // namespace
 
@@ -361,14 +359,12 @@ QString MainWindow::saveFile(const QString& path) {
                   "could not be opened again):\n%1")
             .arg(diagnosticsText(m_document->diagnostics()));
     }
-    QSaveFile file(path);
-    const std::string text = serializeProject(m_document->project());
-    if (!file.open(QIODevice::WriteOnly) ||
-        file.write(text.data(), static_cast<qint64>(text.size())) !=
-            static_cast<qint64>(text.size()) ||
-        !file.commit()) {
+    // The core's writer, as the CLI's --out: mode, owner and symlinks kept, non-files refused.
+    const Diagnostics problems = writeFileAtomically(QFile::encodeName(path).toStdString(),
+                                                     serializeProject(m_document->project()));
+    if (!problems.empty()) {
         return tr("%1 could not be written: %2")
-            .arg(QDir::toNativeSeparators(path), file.errorString());
+            .arg(QDir::toNativeSeparators(path), QString::fromStdString(problems.front().message));
     }
     m_document->markSaved(QFileInfo(path).absoluteFilePath());
     addRecentFile(QFileInfo(path).absoluteFilePath());
@@ -452,23 +448,23 @@ void MainWindow::rebuildRecentMenu() {
 void MainWindow::rebuildExamplesMenu() {
     QMenu* menu = m_ui->menuExamples;
     menu->clear();
-    for (const QString& dir : exampleDirectories()) {
-        const auto entries = QDir(dir).entryInfoList({"*.cam.json"}, QDir::Files, QDir::Name);
-        for (const QFileInfo& f : entries) {
-            const QString path = f.absoluteFilePath();
-            menu->addAction(f.fileName().chopped(9), this, [this, path] {
-                if (!maybeSave()) return;
-                auto loaded = loadProjectFile(path.toStdString());
-                if (!loaded.ok()) {
-                    QMessageBox::warning(this, tr("Open Example"),
-                                         diagnosticsText(loaded.errors()));
-                    return;
-                }
-                // An example opens as an untitled copy: Save asks where, never over the example.
-                m_document->reset(std::move(loaded).value(), {});
-            });
-        }
-        if (!entries.isEmpty()) break;
+    const auto entries =
+        QDir(kExamplesFolder).entryInfoList({"*.cam.json"}, QDir::Files, QDir::Name);
+    for (const QFileInfo& f : entries) {
+        const QString path = f.absoluteFilePath();
+        menu->addAction(f.fileName().chopped(9), this, [this, path] {
+            if (!maybeSave()) return;
+            QFile file(path);
+            auto loaded = file.open(QIODevice::ReadOnly)
+                              ? parseProject(file.readAll().toStdString())
+                              : Result<Project>(Diagnostics{{path.toStdString(), "cannot open"}});
+            if (!loaded.ok()) {
+                QMessageBox::warning(this, tr("Open Example"), diagnosticsText(loaded.errors()));
+                return;
+            }
+            // An example opens as an untitled copy: Save asks where, never over the example.
+            m_document->reset(std::move(loaded).value(), {});
+        });
     }
     menu->setEnabled(!menu->isEmpty());
 }

@@ -8,6 +8,7 @@
 #include "common/angles.h"
 #include "contour/contour.h"
 #include "fillet/fillet.h"
+#include "io/atomic_file.h"
 #include "io/path_csv.h"
 #include "io/project_json.h"
 #include "kinematics/kinematics.h"

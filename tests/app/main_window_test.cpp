@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <sys/stat.h>
 #include <QAction>
 #include <QDir>
 #include <QDockWidget>
@@ -15,6 +17,7 @@
 #include <QTimer>
 #include <QTranslator>
 #include <QUrl>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 
@@ -80,6 +83,83 @@ TEST(MainWindow, EditSaveReopen) {
     EXPECT_EQ(serializeProject(other.document()->project()), serializeProject(edited));
     EXPECT_EQ(other.document()->project().contour[0].type(), SegmentType::Line);
     EXPECT_EQ(other.document()->project().motion.unit, SpeedUnit::Rpm);
+}
+
+// Save goes through the core's one writer, as the CLI's --out does.
+TEST(MainWindow, SaveKeepsTheModeTheOwnerAndTheSymlinkOfTheFile) {
+    namespace fs = std::filesystem;
+    const test::TempDir dir;
+    fs::create_directory(dir.path() / "projects");
+    const std::string real = dir.file("projects/cam.cam.json");
+    test::writeFileWithMode(real, "old", 0640);
+    const bool root = ::geteuid() == 0;
+    if (root) {
+        ASSERT_EQ(::chown(real.c_str(), 1234, 5678), 0);
+    }
+    fs::create_symlink("projects/cam.cam.json", dir.path() / "current.cam.json");
+    const QString link = QString::fromStdString(dir.file("current.cam.json"));
+
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    const QString problem = window.saveFile(link);
+    ASSERT_TRUE(problem.isEmpty()) << problem.toStdString();
+    EXPECT_FALSE(window.document()->isModified());
+    EXPECT_TRUE(fs::is_symlink(dir.path() / "current.cam.json"));
+    EXPECT_EQ(test::readFile(real), serializeProject(window.document()->project()));
+    EXPECT_EQ(test::fileMode(real), 0640);
+    struct stat st {};
+    ASSERT_EQ(::stat(real.c_str(), &st), 0);
+    if (root) {
+        EXPECT_EQ(st.st_uid, 1234u);
+        EXPECT_EQ(st.st_gid, 5678u);
+    }
+    EXPECT_EQ(test::folderEntries(dir.path() / "projects"),
+              std::vector<std::string>{"cam.cam.json"});
+}
+
+TEST(MainWindow, SavingOverSomethingThatIsNotAFileIsRefusedAndLeavesItAlone) {
+    namespace fs = std::filesystem;
+    const test::TempDir dir;
+    const std::string pipe = dir.file("pipe.cam.json");
+    ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.document()->undoStack()->push(new SetMotion(window.document(), {SpeedUnit::Rpm, 75.0}));
+    const QString message = window.saveFile(QString::fromStdString(pipe));
+    EXPECT_TRUE(message.contains("is a FIFO, not a regular file")) << message.toStdString();
+    EXPECT_TRUE(fs::is_fifo(pipe));
+    EXPECT_EQ(test::folderEntries(dir.path()), std::vector<std::string>{"pipe.cam.json"});
+    EXPECT_TRUE(window.document()->isModified());
+}
+
+TEST(MainWindow, ASaveThatFailsMidwayKeepsTheOldFileAndTheDocumentModified) {
+    const test::TempDir dir;
+    const std::string path = dir.file("cam.cam.json");
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.saveFile(QString::fromStdString(path)).isEmpty());
+    const std::string saved = test::readFile(path);
+    ASSERT_GT(saved.size(), 1024u);
+    window.document()->undoStack()->push(new SetMotion(window.document(), {SpeedUnit::Rpm, 75.0}));
+    ASSERT_TRUE(window.document()->isModified());
+
+    // A file size limit below the project's size: write() fails with EFBIG part-way through.
+    // Restored at once; nothing else in this process writes files meanwhile.
+    const auto oldHandler = ::signal(SIGXFSZ, SIG_IGN);
+    rlimit oldLimit{};
+    ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &oldLimit), 0);
+    rlimit small = oldLimit;
+    small.rlim_cur = 512;
+    ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+    const QString message = window.saveFile(QString::fromStdString(path));
+    ::setrlimit(RLIMIT_FSIZE, &oldLimit);
+    ::signal(SIGXFSZ, oldHandler);
+
+    EXPECT_TRUE(message.contains(QString::fromStdString(path))) << message.toStdString();
+    EXPECT_TRUE(message.contains("File too large")) << message.toStdString();
+    EXPECT_EQ(test::readFile(path), saved);
+    EXPECT_TRUE(window.document()->isModified());
+    EXPECT_EQ(test::folderEntries(dir.path()), std::vector<std::string>{"cam.cam.json"});
 }
 
 TEST(MainWindow, RefusesToSaveAnInvalidProjectAndWritesNothing) {
@@ -379,6 +459,17 @@ TEST(MainWindow, ExamplesOpenAsUntitledCopies) {
     auto* examples = window.findChild<QMenu*>("menuExamples");
     ASSERT_NE(examples, nullptr);
     ASSERT_FALSE(examples->actions().isEmpty());
+    // Every bundled example, read from the binary's resources: no source tree needed
+    // (packaging.NoSourcePathsInTheBinaries checks that its path is not even in the binary).
+    QStringList bundled, listed;
+    for (const auto& e : std::filesystem::directory_iterator(CAMWRIGHT_EXAMPLES)) {
+        const QString name = QString::fromStdString(e.path().filename().string());
+        if (name.endsWith(".cam.json")) bundled << name.chopped(9);
+    }
+    bundled.sort();
+    for (const QAction* a : examples->actions()) listed << a->text();
+    EXPECT_EQ(listed.join(", ").toStdString(), bundled.join(", ").toStdString());
+    EXPECT_TRUE(QFile::exists(":/examples/six-lobe-arc-cam.cam.json"));
     EXPECT_EQ(examples->actions().front()->text(), "six-lobe-arc-cam");
     examples->actions().front()->trigger();
     EXPECT_EQ(window.document()->project().contour.size(), 13u);

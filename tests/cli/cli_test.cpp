@@ -93,6 +93,45 @@ TEST(CliSample, DefaultsToTheProjectSamplingAndWritesFilesAtomically) {
     fs::remove(out);
 }
 
+// --out goes through the core's one writer (io/atomic_file.h): what a user's file was, it stays.
+TEST(CliSample, OutOverAPrivateFileKeepsItPrivate) {
+    const test::TempDir dir;
+    const std::string out = dir.file("turn.csv");
+    test::writeFileWithMode(out, "old", 0600);
+    const auto r = test::runCli({"sample", kExample, "--samples", "100000", "--out", out});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(test::fileMode(out), 0600);
+    EXPECT_EQ(lines(test::readFile(out)).size(), 100001u);  // written in several chunks
+    EXPECT_EQ(test::folderEntries(dir.path()), std::vector<std::string>{"turn.csv"});
+}
+
+TEST(CliSample, OutThroughASymlinkWritesItsTargetAndKeepsTheLink) {
+    namespace fs = std::filesystem;
+    const test::TempDir dir;
+    fs::create_directory(dir.path() / "data");
+    test::writeFileWithMode(dir.file("data/turn.csv"), "old", 0640);
+    fs::create_symlink("data/turn.csv", dir.path() / "latest.csv");
+    const auto r =
+        test::runCli({"sample", kExample, "--samples", "8", "--out", dir.file("latest.csv")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::is_symlink(dir.path() / "latest.csv"));
+    EXPECT_EQ(lines(test::readFile(dir.file("data/turn.csv"))).size(), 9u);
+    EXPECT_EQ(test::fileMode(dir.file("data/turn.csv")), 0640);
+}
+
+TEST(CliSample, OutToAFifoIsRefusedWithExitTwoAndLeftAlone) {
+    namespace fs = std::filesystem;
+    const test::TempDir dir;
+    const std::string out = dir.file("pipe");
+    ASSERT_EQ(::mkfifo(out.c_str(), 0600), 0);
+    const auto r = test::runCli({"sample", kExample, "--samples", "8", "--out", out});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err, "camwright-cli: " + out + ": is a FIFO, not a regular file: not replaced\n");
+    EXPECT_TRUE(fs::is_fifo(out));
+    EXPECT_EQ(test::folderEntries(dir.path()), std::vector<std::string>{"pipe"});
+}
+
 TEST(CliAnalyze, ReportsJointsAndExtremes) {
     const auto r = test::runCli({"analyze", kExample});
     ASSERT_EQ(r.exitCode, 0) << r.err;

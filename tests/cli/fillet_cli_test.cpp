@@ -40,6 +40,20 @@ TEST(CliFillet, RoundsASquareCornerIntoAValidProject) {
     EXPECT_EQ(analysis.at("joints")[0].at("continuity"), "C1");  // tangent now
 }
 
+TEST(CliFillet, OutKeepsTheModeAndTheSymlinkOfAnExistingProject) {
+    const test::TempDir dir;
+    fs::create_directory(dir.path() / "projects");
+    test::writeFileWithMode(dir.file("projects/cam.cam.json"), "old", 0600);
+    fs::create_symlink("projects/cam.cam.json", dir.path() / "current.cam.json");
+    const std::string out = dir.file("current.cam.json");
+    const auto r =
+        test::runCli({"fillet", square(), "--joint", "1", "--radius", "3", "--out", out});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::is_symlink(out));
+    EXPECT_EQ(test::fileMode(out), 0600);
+    EXPECT_EQ(test::runCli({"validate", out}).exitCode, 0);
+}
+
 TEST(CliFillet, RadiusFromSpeedAccelerationAndAdmissibleError) {
     const std::string out = (fs::temp_directory_path() / "camwright_fillet_out2.cam.json").string();
     const auto r = test::runCli({"fillet", square(), "--joint", "2", "--speed", "100", "--accel",

@@ -1,4 +1,4 @@
-// Project files: load, save, round trip, unit conversion, forward compatibility, atomic writes.
+// Project files: load, save, round trip, unit conversion, forward compatibility.
 
 #include <gtest/gtest.h>
 
@@ -204,28 +204,6 @@ TEST(ProjectJson, SyntaxErrorsCarryLineAndColumn) {
     ASSERT_FALSE(huge.ok());
     EXPECT_EQ(huge.errors().front().location, "line 4, column 61");
     EXPECT_NE(huge.errors().front().message.find("too large"), std::string::npos);
-}
-
-TEST(AtomicWrite, ReplacesTheTargetOrLeavesItUntouched) {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / "camwright_atomic_test";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    const std::string target = (dir / "p.cam.json").string();
-    ASSERT_TRUE(writeFileAtomically(target, "first").empty());
-    ASSERT_TRUE(writeFileAtomically(target, "second").empty());
-    EXPECT_EQ(test::readFile(target), "second");
-    {
-        AtomicFileWriter writer(target);
-        writer.write("half a fi");
-        // destroyed without commit: as if the program died mid-way
-    }
-    EXPECT_EQ(test::readFile(target), "second");
-    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 1);
-    const Diagnostics failed = writeFileAtomically((dir / "missing" / "x.json").string(), "x");
-    ASSERT_EQ(failed.size(), 1u);
-    EXPECT_NE(failed.front().message.find("No such file"), std::string::npos);
-    fs::remove_all(dir);
 }
 
 }  // namespace

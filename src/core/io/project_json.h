@@ -30,32 +30,4 @@ namespace cam {
 /// @brief Reads a whole file; errors are located at the path.
 [[nodiscard]] Result<std::string> readTextFile(const std::string& path);
 
-/// @brief Streams a file into a temporary sibling and renames it over the target on commit().
-/// Destroyed without commit(), it removes the temporary file and leaves the target untouched.
-class AtomicFileWriter {
-public:
-    explicit AtomicFileWriter(std::string path);
-    ~AtomicFileWriter();
-    AtomicFileWriter(const AtomicFileWriter&) = delete;
-    AtomicFileWriter& operator=(const AtomicFileWriter&) = delete;
-
-    /// @brief False (with errors()) if the temporary file could not be created or written.
-    [[nodiscard]] bool ok() const { return m_errors.empty(); }
-    void write(std::string_view chunk);
-    /// @brief Flushes to disk and renames; returns the problems, empty on success.
-    [[nodiscard]] Diagnostics commit();
-    [[nodiscard]] const Diagnostics& errors() const { return m_errors; }
-
-private:
-    void fail(const char* what);
-    std::string m_path;
-    std::string m_tempPath;
-    int m_fd = -1;
-    Diagnostics m_errors;
-};
-
-/// @brief Writes a file atomically: a temporary file in the same folder, flushed to disk, then
-/// renamed over the target. On failure the target is untouched and the error is returned.
-[[nodiscard]] Diagnostics writeFileAtomically(const std::string& path, std::string_view content);
-
 }  // namespace cam

@@ -1,0 +1,25 @@
+# ctest script: fails if BINARY contains FORBIDDEN (a source-tree path) as 8-bit or UTF-16LE text
+# (QStringLiteral stores UTF-16, which `strings` without -el does not show).
+#   cmake -DBINARY=… -DFORBIDDEN=… -P no_source_paths.cmake
+cmake_minimum_required(VERSION 3.25)
+file(READ "${BINARY}" hex HEX)
+string(HEX "${FORBIDDEN}" utf8)
+string(REGEX REPLACE "(..)" "\\100" utf16le "${utf8}")
+foreach(encoding utf8 utf16le)
+    set(from 0)
+    while(TRUE)
+        string(SUBSTRING "${hex}" ${from} -1 rest)
+        string(FIND "${rest}" "${${encoding}}" at)
+        if(at EQUAL -1)
+            break()
+        endif()
+        math(EXPR at "${from} + ${at}")
+        math(EXPR odd "${at} % 2")
+        if(NOT odd)  # a match on a byte boundary
+            math(EXPR offset "${at} / 2")
+            message(FATAL_ERROR "${BINARY} contains \"${FORBIDDEN}\" (${encoding}, byte ${offset})")
+        endif()
+        math(EXPR from "${at} + 1")
+    endwhile()
+endforeach()
+message(STATUS "${BINARY}: no \"${FORBIDDEN}\"")
