@@ -6,6 +6,7 @@
 
 #include "analysis/analysis.h"
 #include "common/angles.h"
+#include "project/validate.h"
 #include "spline/biarc.h"
 
 namespace cam {
@@ -231,7 +232,7 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         const ContourFrame a = frameAt(seg, seg.phiStart), b = frameAt(seg, seg.phiEnd);
         starts.push_back(a);
         ends.push_back(b);
-        const std::string at = "contour[" + std::to_string(k) + "]";
+        const std::string at = segmentLocation(k);
         if (isSpline(seg.type)) {
             // Tangent arc pairs within 0.1 µm: lines and arcs for the planner, G1 throughout.
             for (const PathSegment& piece :
@@ -296,8 +297,7 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         // of 1e-8 rad as a corner would intersect two nearly tangent offsets, which moves the
         // joint by sqrt(2Rδ) and tilts both tangents.
         if (std::abs(turn) <= degToRad(kTangentToleranceDeg)) continue;
-        const std::string at =
-            "contour[" + std::to_string(k) + "]/contour[" + std::to_string(next) + "]";
+        const std::string at = segmentLocation(k) + "/" + segmentLocation(next);
         if (turn > 0) {
             // Convex corner: the tool rolls around the corner point.
             const Vec2 na = left.normal;
@@ -324,7 +324,7 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
             const PathSegment& o = offset[k][i];
             if (j.length() < 1e-9 || (j.kind == PathSegment::Kind::Line &&
                                       (xy(j.end - j.start)).dot(xy(o.end - o.start)) <= 0)) {
-                errors.push_back({"contour[" + std::to_string(k) + "]",
+                errors.push_back({segmentLocation(k),
                                   "the tool radius " + formatNumber(toolRadius) +
                                       " mm is too large for this segment: its offset vanishes"});
                 break;
