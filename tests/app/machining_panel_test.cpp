@@ -5,6 +5,7 @@
 
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QPushButton>
 
 #include "app_test_support.h"
@@ -105,6 +106,29 @@ TEST(MachiningPanel, ATooWideToolIsExplained) {
     ASSERT_TRUE(waitForTiming(window));
     ASSERT_FALSE(window.engine()->latestTiming()->errors.empty());
     EXPECT_EQ(window.engine()->latestTiming()->errors.front().location, "contour[0]");
+}
+
+// A tool too large for the notch's dwell arc (tests/data/timing/notch-dwell.cam.json: its
+// concave corners would trim away all of the arc's offset; tool_path_test.cpp works out the
+// limit, 1.374 mm): the panel names the segment and shows no times.
+TEST(MachiningPanel, AnArcTrimmedAwayAtItsConcaveCornersIsExplained) {
+    MainWindow window;
+    ASSERT_TRUE(
+        window.loadFile(QString::fromStdString(test::dataPath("timing/notch-dwell.cam.json")))
+            .isEmpty());
+    openPanel(window);
+    ASSERT_TRUE(waitForTiming(window));
+    const auto outcome = window.engine()->latestTiming();
+    ASSERT_EQ(outcome->errors.size(), 1u);
+    EXPECT_EQ(outcome->errors.front().location, "contour[2]");
+    QStringList shown;
+    for (const QLabel* label : window.machiningPanel()->findChildren<QLabel*>()) {
+        if (label->text().startsWith("No machining time")) shown << label->text();
+    }
+    ASSERT_EQ(shown.size(), 1) << shown.join(" | ").toStdString();
+    EXPECT_TRUE(shown.front().contains("contour[2]: the tool radius 3 mm is too large here"))
+        << shown.front().toStdString();
+    EXPECT_EQ(window.machiningPanel()->timesText(), "— · — · —");
 }
 
 }  // namespace

@@ -148,6 +148,26 @@ TEST(CliTiming, AToolWiderThanANotchCannotBeComputed) {
     EXPECT_NE(r.err.find("degenerates"), std::string::npos) << r.err;
 }
 
+// The dwell arc at the bottom of the notch is trimmed from both of its concave corners; a 3 mm
+// tool would need more than all of it (tool_path_test.cpp works out the limit, 1.374 mm). The
+// old code wrapped the arc to a near-full circle and reported a 130 mm path with exit 0.
+TEST(CliTiming, AnArcTrimmedAwayAtItsConcaveCornersCannotBeComputed) {
+    const std::string project = test::dataPath("timing/notch-dwell.cam.json");
+    for (const char* method : {"seed", "exact-stop", "optimal"}) {
+        SCOPED_TRACE(method);
+        const auto r = test::runCli({"timing", project, "--method", method});
+        EXPECT_EQ(r.signal, 0);
+        EXPECT_EQ(r.exitCode, 3) << r.err;
+        EXPECT_EQ(r.err.rfind("camwright-cli: " + project +
+                                  ": contour[2]: the tool radius 3 mm is "
+                                  "too large here",
+                              0),
+                  0u)
+            << r.err;
+        EXPECT_EQ(r.out, "");
+    }
+}
+
 }  // namespace
 }  // namespace cam
 

@@ -117,6 +117,90 @@ TEST(ToolPathFromContour, ConcaveCornersAreTrimmed) {
     EXPECT_NEAR(path.value().length(), perimeter + rho * convexTurn - concaveCut, 1e-9);
 }
 
+// tests/data/timing/notch-dwell.cam.json: the square ±10 with a V notch from (10, 10) and
+// (−10, 10) down to a dwell arc of radius R = 0.87 about the origin, polar angles 60°..120°.
+// Both ends of the arc are concave corners, so its offset (radius R + ρ) is trimmed from both
+// sides; from a tool radius ρ* on, the trims meet on the y axis and nothing is left of it.
+struct Notch {
+    static constexpr double kR = 0.87;
+    Eigen::Vector2d a{10, 10};  ///< the upper right corner, where line contour[1] starts
+    Eigen::Vector2d d;          ///< unit direction of contour[1], towards the arc
+    Eigen::Vector2d n;          ///< its outward (right-hand) normal
+    Notch() {
+        const Eigen::Vector2d p1 = kR * Eigen::Vector2d(std::cos(kPi / 3), std::sin(kPi / 3));
+        d = (p1 - a).normalized();
+        n = {d.y(), -d.x()};
+    }
+    /// The ρ at which the offset of contour[1], {X : (X − a)·n = ρ}, passes through (0, R + ρ):
+    /// −10·n.x + (R + ρ − 10)·n.y = ρ.
+    [[nodiscard]] double vanishingRadius() const {
+        return (-10.0 * n.x() + (kR - 10.0) * n.y()) / (1.0 - n.y());
+    }
+    /// Where the offset of contour[1] first meets the circle R + ρ: its length t from the
+    /// offset's start a + ρ·n, and the polar angle θ1 of the meeting point. The offset arc runs
+    /// from θ1 to π − θ1 (the notch is symmetric about the y axis).
+    [[nodiscard]] std::pair<double, double> meeting(double rho) const {
+        const Eigen::Vector2d q0 = a + rho * n;
+        // |q0 + t·d|² = (R + ρ)²: the smaller root is the first meeting.
+        const double b = q0.dot(d), c = q0.squaredNorm() - (kR + rho) * (kR + rho);
+        const double t = -b - std::sqrt(b * b - c);
+        const Eigen::Vector2d x1 = q0 + t * d;
+        return {t, std::atan2(x1.y(), x1.x())};
+    }
+    /// The length of the offset path by hand, for ρ < vanishingRadius(): the three outer sides
+    /// (20 mm each, between convex corners); the convex corner arcs ρ·(π/2 + π/2 + 2·θc) with
+    /// θc the turn at (±10, 10); twice the trimmed offset of contour[1]; the trimmed arc.
+    [[nodiscard]] double pathLength(double rho) const {
+        const double thetaC = std::atan2(-d.x(), d.y());  // the turn from (0, 1) to d
+        const auto [t, theta1] = meeting(rho);
+        return 60.0 + rho * (kPi + 2.0 * thetaC) + 2.0 * t + (kR + rho) * (kPi - 2.0 * theta1);
+    }
+};
+
+Contour notchDwell() {
+    auto project = loadProjectFile(test::dataPath("timing/notch-dwell.cam.json"));
+    EXPECT_TRUE(project.ok()) << (project.ok() ? "" : project.errors().front().text());
+    return Contour::build(project.value()).value();
+}
+
+TEST(ToolPathFromContour, AnArcTrimmedAwayByItsConcaveCornersIsAnErrorNamingIt) {
+    const Contour contour = notchDwell();
+    const Notch notch;
+    const double vanishing = notch.vanishingRadius();
+    // Worked by hand: p1 = 0.87·(cos 60°, sin 60°) = (0.435, 0.753442), |p1 − a| = 13.303686,
+    // d = (−9.565, −9.246558)/13.303686 = (−0.718974, −0.695037), n = (−0.695037, 0.718974),
+    // ρ* = (6.95037 − 9.13·0.718974)/(1 − 0.718974) = 0.386138/0.281026 = 1.37404.
+    EXPECT_NEAR(vanishing, 1.37404, 2e-5);
+    for (double rho : {3.0, 1.01 * vanishing}) {
+        SCOPED_TRACE(rho);
+        const auto path = toolPathFromContour(contour, rho);
+        ASSERT_FALSE(path.ok()) << "a path of " << path.value().length() << " mm";
+        ASSERT_EQ(path.errors().size(), 1u);
+        EXPECT_EQ(path.errors().front().location, segmentLocation(2));
+        EXPECT_NE(path.errors().front().message.find("too large"), std::string::npos);
+    }
+}
+
+TEST(ToolPathFromContour, AToolJustSmallEnoughForTheNotchKeepsTheLengthWorkedByHand) {
+    const Contour contour = notchDwell();
+    const Notch notch;
+    // At ρ = 0 the contour itself: 3·20 + 2·|p1 − a| + R·π/3 = 60 + 2·13.303686 + 0.911062.
+    EXPECT_NEAR(notch.pathLength(0.0), 87.518434, 1e-6);
+    for (double rho : {0.5, 0.99 * notch.vanishingRadius()}) {
+        SCOPED_TRACE(rho);
+        const auto path = toolPathFromContour(contour, rho);
+        ASSERT_TRUE(path.ok()) << path.errors().front().text();
+        ASSERT_EQ(path.value().segments.size(), 10u);  // six pieces and four convex corner arcs
+        expectClosedAndContinuous(path.value());
+        EXPECT_NEAR(path.value().length(), notch.pathLength(rho), 1e-9);
+        // The trimmed arc is what is left between the two meeting points: short, not wrapped.
+        const PathSegment& arc = path.value().segments[3];
+        ASSERT_EQ(arc.kind, PathSegment::Kind::Arc);
+        EXPECT_NEAR(arc.radius, Notch::kR + rho, 1e-12);
+        EXPECT_NEAR(arc.sweep, kPi - 2.0 * notch.meeting(rho).second, 1e-9);
+    }
+}
+
 TEST(ToolPathFromPoints, BulgesMakeArcsWithTheRightCentreAndRadius) {
     // Bulge 1: a half circle counter-clockwise from (0,0) to (10,0): centre (5,0), radius 5.
     auto half = toolPathFromPoints({{{0, 0, 0}, 1.0}, {{10, 0, 0}, 0.0}});

@@ -219,6 +219,41 @@ std::optional<PathSegment> offsetPiece(const PathSegment& s, double rho) {
     return PathSegment::arc(s.center, radius, s.startAngle, s.sweep, s.start.z());
 }
 
+/// Where p lies along `piece`: its distance from the start along the piece, mm (on an arc,
+/// measured in the sweep's direction, in [0, 2πR)).
+double distanceAlong(const PathSegment& piece, const Vec2& p) {
+    if (piece.kind == PathSegment::Kind::Line) {
+        return (p - xy(piece.start)).dot(xy(piece.end - piece.start).normalized());
+    }
+    const Vec2 from(std::cos(piece.startAngle), std::sin(piece.startAngle));
+    const Vec2 to = (p - piece.center).normalized();
+    double angle = std::atan2(cross(from, to), from.dot(to));  // (-π, π]
+    if (piece.sweep < 0) angle = -angle;
+    if (angle < 0) angle += kTwoPi;
+    return angle * piece.radius;
+}
+
+/// Trimming at a concave corner may only shorten a piece within its own extent and direction.
+/// An arc whose sweep changed sign, wrapped or grew, or a line that runs backwards or past its
+/// ends, is what a tool too large for the piece gives: the trims of its two ends cross.
+bool trimmedWithin(const PathSegment& original, const PathSegment& trimmed) {
+    const double length = original.length();
+    const double eps = 1e-9 * std::max(1.0, length);
+    double a = distanceAlong(original, xy(trimmed.start));
+    double b = distanceAlong(original, xy(trimmed.end));
+    if (original.kind == PathSegment::Kind::Arc) {
+        // A point a hair before the start reads as almost a full turn; a hair after the end of
+        // an almost full arc as almost zero.
+        const double turn = kTwoPi * original.radius;
+        if (a > turn - eps) a -= turn;
+        if (b < eps && length > turn - eps) b += turn;
+    }
+    const bool sameSense =
+        original.kind == PathSegment::Kind::Line || (trimmed.sweep > 0) == (original.sweep > 0);
+    return sameSense && a >= -eps && b <= length + eps && b - a >= 1e-9 &&
+           std::abs((b - a) - trimmed.length()) <= eps;
+}
+
 }  // namespace
 
 Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) {
@@ -320,13 +355,11 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
     }
     for (std::size_t k = 0; k < n; ++k) {
         for (std::size_t i = 0; i < joined[k].size(); ++i) {
-            const PathSegment& j = joined[k][i];
-            const PathSegment& o = offset[k][i];
-            if (j.length() < 1e-9 || (j.kind == PathSegment::Kind::Line &&
-                                      (xy(j.end - j.start)).dot(xy(o.end - o.start)) <= 0)) {
+            if (!trimmedWithin(offset[k][i], joined[k][i])) {
                 errors.push_back({segmentLocation(k),
                                   "the tool radius " + formatNumber(toolRadius) +
-                                      " mm is too large for this segment: its offset vanishes"});
+                                      " mm is too large here: at its concave corners the offset of "
+                                      "this segment would have to be trimmed beyond its ends"});
                 break;
             }
         }
