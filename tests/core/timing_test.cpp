@@ -317,6 +317,41 @@ TEST(TimingSeed, FeedCapsTheStepSpeedByHand) {
     EXPECT_TRUE(relClose(seedSegmentTime(PathSegment::line(a, b), limits), byHand, 1e-12));
 }
 
+// Fact: the seed's profile (what the Machining panel plots) is its steps, the very ones its
+// time is made of. A 4 mm line along x, then a corner and a 3 mm line along y; a = (100, 100, 1).
+//   4 mm (FourMillimetreLineByHand): steps at s = 0 and 1 with speeds 10 and (10 + √500)/2 =
+//     16.180340, mirrored on the way down at s = 2 and 3.
+//   3 mm (ShorterLastStepByHand): steps at s = 4 (speed 10) and 5 (0.5 mm, (10 + √300)/2 =
+//     13.660254), mirrored at s = 5.5 and 6; rest at 7.
+// Acceleration over each step: (n·x − v_prev)·x/l, and x solves x² − x_prev·x = a·l, so the
+// moving axis accelerates by exactly its limit, ±100, and the other axes not at all.
+TEST(TimingSeed, ProfileIsTheStepsWorkedByHand) {
+    const MachineLimits limits = limitsOf({100, 100, 1});
+    const ToolPath path =
+        pathOf({PathSegment::line({0, 0, 0}, {4, 0, 0}), PathSegment::line({4, 0, 0}, {4, 3, 0})});
+    const TimingProfile p = timingProfile(path, limits, TimingMethod::Seed, 100);
+    const double x2 = (10.0 + std::sqrt(500.0)) / 2.0, y2 = (10.0 + std::sqrt(300.0)) / 2.0;
+    const std::vector<double> s{0, 1, 2, 3, 4, 5, 5.5, 6, 7};
+    const std::vector<double> speed{10, x2, x2, 10, 10, y2, y2, 10, 0};
+    const std::vector<Vector3d> accel{{100, 0, 0},  {100, 0, 0},  {-100, 0, 0},
+                                      {-100, 0, 0}, {0, 100, 0},  {0, 100, 0},
+                                      {0, -100, 0}, {0, -100, 0}, {0, 0, 0}};
+    ASSERT_EQ(p.s.size(), s.size());
+    ASSERT_EQ(p.speed.size(), s.size());
+    ASSERT_EQ(p.accel.size(), s.size());
+    double time = 0.0;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        SCOPED_TRACE(k);
+        EXPECT_NEAR(p.s[k], s[k], 1e-12);
+        EXPECT_TRUE(relClose(p.speed[k], speed[k], 1e-12, 1.0));
+        for (int i = 0; i < 3; ++i) EXPECT_NEAR(p.accel[k][i], accel[k][i], 1e-9);
+        if (k + 1 < s.size()) time += (s[k + 1] - s[k]) / speed[k];
+    }
+    // The profile's own time, each step at its speed, is the seed time of both segments.
+    EXPECT_TRUE(relClose(time, (0.1 + 0.1 * std::sqrt(5.0)) + (0.1 + 0.1 * std::sqrt(3.0)), 1e-12));
+    EXPECT_TRUE(relClose(timeOf(path, limits, TimingMethod::Seed), time, 1e-12));
+}
+
 // Fact: seedStep = 0.5 on a 3 mm line along x, a_x = 100: midpoint 1.5 = three 0.5 mm steps.
 //   Step 1: x² = 100·0.5 → x1 = sqrt(50) = 7.0710678, 0.5/x1 = 0.0707107 s
 //   Step 2: x² − 7.0710678·x − 50 = 0 → x2 = (7.0710678 + sqrt(50 + 200))/2

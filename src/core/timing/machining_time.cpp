@@ -323,20 +323,39 @@ double seedStepSpeed(const Vec3& n, const Vec3& vPrev, double step, const Machin
     return x;
 }
 
+/// One step of the seed method: where it starts on the segment (mm), its length, its unit
+/// direction, its speed and the axis velocities it starts from.
+struct SeedStep {
+    double s = 0.0;
+    double length = 0.0;
+    Vec3 direction = Vec3::Zero();
+    double speed = 0.0;
+    Vec3 previousVelocity = Vec3::Zero();
+};
+
+/// The seed method's walk over one segment from rest up to its midpoint (math.md §6), one call
+/// of `visit` per step. The only place the seed's steps are taken: its time and its profile
+/// both come from here.
+template <class Visit>
+void walkSeed(const PathSegment& segment, const MachineLimits& lim, Visit&& visit) {
+    const double half = segment.length() / 2.0;
+    SeedStep step;
+    for (double s = 0.0; s < half - 1e-12;) {
+        step.s = s;
+        step.length = std::min(lim.seedStep, half - s);
+        step.direction = (segment.point(s + step.length) - segment.point(s)).normalized();
+        step.speed = seedStepSpeed(step.direction, step.previousVelocity, step.length, lim);
+        visit(step);
+        step.previousVelocity = step.direction * step.speed;
+        s += step.length;
+    }
+}
+
 }  // namespace
 
 double seedSegmentTime(const PathSegment& segment, const MachineLimits& lim) {
-    const double half = segment.length() / 2.0;
-    Vec3 vPrev = Vec3::Zero();
     double time = 0.0;
-    for (double s = 0.0; s < half - 1e-12;) {
-        const double step = std::min(lim.seedStep, half - s);
-        const Vec3 n = (segment.point(s + step) - segment.point(s)).normalized();
-        const double x = seedStepSpeed(n, vPrev, step, lim);
-        time += step / x;
-        vPrev = n * x;
-        s += step;
-    }
+    walkSeed(segment, lim, [&](const SeedStep& step) { time += step.length / step.speed; });
     return 2.0 * time;
 }
 
@@ -458,16 +477,11 @@ TimingProfile timingProfile(const ToolPath& path, const MachineLimits& lim, Timi
             // The seed's steps up to the middle, each at its constant speed, then mirrored.
             std::vector<std::pair<double, double>> steps;  // (step start, speed)
             std::vector<Vec3> accels;
-            Vec3 vPrev = Vec3::Zero();
-            for (double s = 0.0; s < len / 2.0 - 1e-12;) {
-                const double step = std::min(lim.seedStep, len / 2.0 - s);
-                const Vec3 n = (seg.point(s + step) - seg.point(s)).normalized();
-                const double x = seedStepSpeed(n, vPrev, step, lim);
-                accels.push_back((n * x - vPrev) * x / step);
-                steps.emplace_back(s, x);
-                vPrev = n * x;
-                s += step;
-            }
+            walkSeed(seg, lim, [&](const SeedStep& step) {
+                accels.push_back((step.direction * step.speed - step.previousVelocity) *
+                                 step.speed / step.length);
+                steps.emplace_back(step.s, step.speed);
+            });
             for (std::size_t k = 0; k < steps.size(); ++k) {
                 out.s.push_back(offset + steps[k].first);
                 out.speed.push_back(steps[k].second);
