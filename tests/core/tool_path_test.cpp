@@ -4,10 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include "common/angles.h"
 #include "io/project_json.h"
 #include "project/validate.h"
 #include "test_support.h"
+#include "timing/machining_time.h"
 #include "timing/tool_path.h"
 
 namespace cam {
@@ -240,6 +243,96 @@ TEST(ToolPathFromContour, TangentJointsStayTangentAfterOffsetting) {
         const PathSegment& b = path.value().segments[(k + 1) % path.value().segments.size()];
         EXPECT_GT(a.tangent(a.length()).dot(b.tangent(0.0)), std::cos(1e-6)) << k;
     }
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+/// The square ±10 with its right side broken at (10, 0): the upper half leans by `breakRad`
+/// (positive: the contour turns left there, a convex joint; negative: concave).
+Contour squareBrokenAt(double breakRad) {
+    const double lean = 10.0 * std::tan(breakRad);
+    return polygon({{10, -10}, {10, 0}, {10 - lean, 10}, {-10, 10}, {-10, -10}});
+}
+
+/// Machine limits of these tests: a = 500 mm/s² on x and y, feed 100 mm/s.
+MachineLimits squareLimits() {
+    MachineLimits limits;
+    limits.accel = {500, 500, 200};
+    limits.feedMax = 100;
+    return limits;
+}
+
+// The tool path rounds or trims a joint whose tangent breaks by more than kTangentToleranceDeg
+// (1e-5° = 1.745e-7 rad); the planner used to stop only above 1e-6 rad. A break of 5e-7 rad lies
+// between: the offset treated it as a corner and the planner as tangent. Now both see a corner.
+TEST(ToolPathAndPlanner, AgreeThatABreakAboveTheToleranceIsACorner) {
+    constexpr double kBreak = 5e-7;
+    ASSERT_GT(kBreak, degToRad(kTangentToleranceDeg));
+    ASSERT_LT(kBreak, 1e-6);
+
+    // The offset: a corner arc of the tool radius through exactly the break (convex), ...
+    const auto rounded = toolPathFromContour(squareBrokenAt(kBreak), 1.0);
+    ASSERT_TRUE(rounded.ok()) << rounded.errors().front().text();
+    ASSERT_EQ(rounded.value().segments.size(), 10u);  // five sides, five corner arcs
+    const PathSegment& arc = rounded.value().segments[1];
+    ASSERT_EQ(arc.kind, PathSegment::Kind::Arc);
+    EXPECT_NEAR(arc.radius, 1.0, 1e-12);
+    EXPECT_NEAR(arc.sweep, kBreak, 1e-12);
+
+    // ... and the planner stops there: on the sides themselves (tool radius 0) every joint is a
+    // corner, so the optimal time is the sum of each side rest to rest. Each side has
+    // L <= F²/a = 20 mm: the triangle 2·sqrt(L/a_eff), a_eff = 500/max|n_i|.
+    const auto sides = toolPathFromContour(squareBrokenAt(kBreak), 0.0);
+    ASSERT_TRUE(sides.ok());
+    ASSERT_EQ(sides.value().segments.size(), 5u);
+    double restToRest = 0.0;
+    for (const PathSegment& side : sides.value().segments) {
+        const Eigen::Vector3d n = (side.end - side.start).normalized();
+        restToRest += 2.0 * std::sqrt(side.length() * n.cwiseAbs().maxCoeff() / 500.0);
+    }
+    // By hand: two 10 mm halves (0.282843 s each), three 20 mm sides (0.4 s each).
+    EXPECT_NEAR(restToRest, 4.0 * std::sqrt(0.02) + 1.2, 1e-6);
+    const auto optimal = machiningTime(sides.value(), squareLimits(), TimingMethod::Optimal);
+    ASSERT_TRUE(optimal.ok());
+    EXPECT_EQ(optimal.value().segments[0].exitSpeed, 0.0);
+    EXPECT_EQ(optimal.value().segments[1].entrySpeed, 0.0);
+    EXPECT_TRUE(test::relClose(optimal.value().timeS, restToRest, 1e-6));
+
+    // Concave: the offsets are trimmed where they cross, which leaves the same break in the
+    // path, and the planner stops there too.
+    const auto trimmed = toolPathFromContour(squareBrokenAt(-kBreak), 1.0);
+    ASSERT_TRUE(trimmed.ok()) << trimmed.errors().front().text();
+    ASSERT_EQ(trimmed.value().segments.size(), 9u);  // five sides, four convex corner arcs
+    const PathSegment& before = trimmed.value().segments[0];
+    const PathSegment& after = trimmed.value().segments[1];
+    const Eigen::Vector3d t0 = before.tangent(before.length()), t1 = after.tangent(0.0);
+    EXPECT_NEAR(std::atan2(t0.cross(t1).norm(), t0.dot(t1)), kBreak, 1e-12);
+    const auto planned = machiningTime(trimmed.value(), squareLimits(), TimingMethod::Optimal);
+    ASSERT_TRUE(planned.ok());
+    EXPECT_EQ(planned.value().segments[0].exitSpeed, 0.0);
+    EXPECT_EQ(planned.value().segments[1].entrySpeed, 0.0);
+}
+
+// And below the tolerance (1e-7 rad) both see a tangent joint: no corner arc in the offset, and
+// the planner runs through it as through one 20 mm side, which reaches the feed 100 mm/s
+// exactly at the joint (after v²/(2a) = 10 mm) and takes 20/100 + 100/500 = 0.4 s; so do the
+// three other sides: 1.6 s.
+TEST(ToolPathAndPlanner, AgreeThatABreakWithinTheToleranceIsTangent) {
+    constexpr double kBreak = 1e-7;
+    ASSERT_LT(kBreak, degToRad(kTangentToleranceDeg));
+    const auto offset = toolPathFromContour(squareBrokenAt(kBreak), 1.0);
+    ASSERT_TRUE(offset.ok());
+    EXPECT_EQ(offset.value().segments.size(), 9u);  // no corner arc at the break
+    const auto sides = toolPathFromContour(squareBrokenAt(kBreak), 0.0);
+    ASSERT_TRUE(sides.ok());
+    const auto optimal = machiningTime(sides.value(), squareLimits(), TimingMethod::Optimal);
+    ASSERT_TRUE(optimal.ok());
+    EXPECT_TRUE(test::relClose(optimal.value().segments[0].exitSpeed, 100.0, 1e-6));
+    EXPECT_TRUE(test::relClose(optimal.value().timeS, 4.0 * 0.4, 1e-6));
 }
 
 }  // namespace

@@ -1,22 +1,28 @@
 #include "timing/machining_time.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
+
+#include "common/angles.h"
+#include "common/tolerances.h"
 
 namespace cam {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-/// A joint is a corner (the tool must stop there) when the tangent turns by more than this.
-constexpr double kCornerAngle = 1e-6;
 /// Below this a tangent component counts as zero: the axis then bounds speed by curvature only.
 constexpr double kTiny = 1e-12;
 
+/// A joint is a corner (the tool must stop there) when the tangent turns by more than
+/// kTangentToleranceDeg: the rule by which the tool path decides where to round or trim, so a
+/// joint it leaves as tangent is one the planner passes through, and every other one stops it.
 bool isCorner(const PathSegment& a, const PathSegment& b) {
     const Vec3 ta = a.tangent(a.length()), tb = b.tangent(0.0);
-    return std::acos(std::clamp(ta.dot(tb), -1.0, 1.0)) > kCornerAngle;
+    // atan2 rather than acos: acos(dot) loses half the digits of a small angle.
+    return std::atan2(ta.cross(tb).norm(), ta.dot(tb)) > degToRad(kTangentToleranceDeg);
 }
 
 /// The acceleration limits at one point of the path as bounds on u = s-ddot that are linear in
