@@ -329,7 +329,9 @@ TEST(TimingSeed, ProfileIsTheStepsWorkedByHand) {
     const MachineLimits limits = limitsOf({100, 100, 1});
     const ToolPath path =
         pathOf({PathSegment::line({0, 0, 0}, {4, 0, 0}), PathSegment::line({4, 0, 0}, {4, 3, 0})});
-    const TimingProfile p = timingProfile(path, limits, TimingMethod::Seed, 100);
+    const Result<TimingProfile> profile = timingProfile(path, limits, TimingMethod::Seed, 100);
+    ASSERT_TRUE(profile.ok()) << joinedLocations(profile.errors());
+    const TimingProfile& p = profile.value();
     const double x2 = (10.0 + std::sqrt(500.0)) / 2.0, y2 = (10.0 + std::sqrt(300.0)) / 2.0;
     const std::vector<double> s{0, 1, 2, 3, 4, 5, 5.5, 6, 7};
     const std::vector<double> speed{10, x2, x2, 10, 10, y2, y2, 10, 0};

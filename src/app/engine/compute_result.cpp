@@ -127,7 +127,8 @@ TimingOutcomePtr computeTiming(const ComputeRequest& request, const Contour& con
     outcome->plotted = request.plotMethod;
     const MachiningSpec& spec = *request.project->machining;
     outcome->limits = limitsFromProject(spec);
-    auto path = toolPathFromContour(contour, spec.toolRadius);
+    auto path = toolPathFromContour(contour, spec.toolRadius, &cancel);
+    if (cancel.load()) return nullptr;
     if (!path.ok()) {
         outcome->errors = path.errors();
         return outcome;
@@ -145,8 +146,10 @@ TimingOutcomePtr computeTiming(const ComputeRequest& request, const Contour& con
         outcome->timesS[static_cast<std::size_t>(m)] = r.value().timeS;
         if (methods[m] == TimingMethod::Optimal) outcome->gridPoints = r.value().gridPoints;
     }
-    const TimingProfile profile =
-        timingProfile(path.value(), outcome->limits, request.plotMethod, 4000);
+    const auto planned =
+        timingProfile(path.value(), outcome->limits, request.plotMethod, 4000, &cancel);
+    if (!planned.ok()) return nullptr;  // only a cancel fails here: the limits passed above
+    const TimingProfile& profile = planned.value();
     QVector<QCPGraphData> feed;
     std::array<QVector<QCPGraphData>, 3> accel;
     for (std::size_t k = 0; k < profile.s.size(); ++k) {

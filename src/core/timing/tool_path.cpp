@@ -6,6 +6,7 @@
 
 #include "analysis/analysis.h"
 #include "common/angles.h"
+#include "common/cancel.h"
 #include "project/validate.h"
 #include "spline/biarc.h"
 
@@ -256,13 +257,15 @@ bool trimmedWithin(const PathSegment& original, const PathSegment& trimmed) {
 
 }  // namespace
 
-Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) {
+Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius,
+                                     const std::atomic<bool>* cancel) {
     Diagnostics errors;
     const std::size_t n = contour.size();
     // Per contour segment, its offset pieces (one, or a spline's biarcs).
     std::vector<std::vector<PathSegment>> offset(n);
     std::vector<ContourFrame> starts, ends;
     for (std::size_t k = 0; k < n; ++k) {
+        if (cancelRequested(cancel)) return cancelledDiagnostics();
         const ContourSegment& seg = contour.segment(k);
         const ContourFrame a = frameAt(seg, seg.phiStart), b = frameAt(seg, seg.phiEnd);
         starts.push_back(a);
@@ -271,7 +274,7 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         if (isSpline(seg.type)) {
             // Tangent arc pairs within 0.1 µm: lines and arcs for the planner, G1 throughout.
             for (const PathSegment& piece :
-                 biarcsOf(CubicBezier{seg.bezierKernel.p}, kSplineToleranceMm)) {
+                 biarcsOf(CubicBezier{seg.bezierKernel.p}, kSplineToleranceMm, 0.0, cancel)) {
                 const auto shifted = offsetPiece(piece, toolRadius);
                 if (!shifted) {
                     errors.push_back({at, "the tool radius " + formatNumber(toolRadius) +
@@ -311,6 +314,8 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         const double sweep = fullTurn ? direction * kTwoPi : sweepFrom(wa, wb, direction);
         offset[k].push_back(PathSegment::arc(c, radius, std::atan2(wa.y(), wa.x()), sweep, 0.0));
     }
+    // Biarcs stop early when cancelled: never hand out a path built from them.
+    if (cancelRequested(cancel)) return cancelledDiagnostics();
     if (!errors.empty()) return errors;
     ToolPath path;
     if (toolRadius == 0.0 || n == 1) {
@@ -323,6 +328,7 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
     std::vector<std::vector<PathSegment>> joined = offset;
     std::vector<std::optional<PathSegment>> cornerArcs(n);
     for (std::size_t k = 0; k < n; ++k) {
+        if (cancelRequested(cancel)) return cancelledDiagnostics();
         const std::size_t next = (k + 1) % n;
         const ContourFrame& left = ends[k];
         const ContourFrame& right = starts[next];
@@ -354,6 +360,7 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         moveStart(joined[next].front(), *best);
     }
     for (std::size_t k = 0; k < n; ++k) {
+        if (cancelRequested(cancel)) return cancelledDiagnostics();
         for (std::size_t i = 0; i < joined[k].size(); ++i) {
             if (!trimmedWithin(offset[k][i], joined[k][i])) {
                 errors.push_back({segmentLocation(k),
