@@ -12,6 +12,7 @@
 #include "document/commands.h"
 #include "engine/compute_engine.h"
 #include "mainwindow.h"
+#include "timing_reference.h"
 #include "views/machining_panel.h"
 
 namespace cam {
@@ -52,8 +53,25 @@ TEST(MachiningPanel, ShowsTheThreeTimesTheCoreComputes) {
             window.machiningPanel()->timesText().contains(QLocale().toString(expected, 'f', 4)))
             << window.machiningPanel()->timesText().toStdString();
     }
+    // And independently: the offset path built from the arcs' data and timed by the reference
+    // of timing_reference.h (a phase-plane integration and the seed from math.md's wording).
+    const std::vector<test::RefPiece> pieces =
+        test::offsetArcContour(Contour::build(p).value(), p.machining->toolRadius);
+    std::vector<bool> tangent(pieces.size(), true);
+    tangent[0] = false;  // the path starts and ends at rest at φ = 0
+    double length = 0.0;
+    for (const test::RefPiece& piece : pieces) length += piece.length();
+    EXPECT_NEAR(outcome->lengthMm, length, 1e-9);
+    EXPECT_TRUE(test::relClose(outcome->timesS[0], test::seedReference(pieces, lim), 1e-9));
+    EXPECT_TRUE(
+        test::relClose(outcome->timesS[1], test::referenceExactStop(pieces, lim, 1e-3), 1e-5));
+    EXPECT_TRUE(test::relClose(outcome->timesS[2],
+                               test::referenceOptimal(pieces, tangent, lim, 1e-3), 1e-5));
     EXPECT_LT(outcome->timesS[2], outcome->timesS[1]);  // optimal beats exact stop here
-    EXPECT_FALSE(outcome->feed->isEmpty());
+    // The plotted profile (optimal) runs over the whole path and ends at rest.
+    ASSERT_FALSE(outcome->feed->isEmpty());
+    EXPECT_NEAR((outcome->feed->constEnd() - 1)->key, length, 1e-9);
+    EXPECT_EQ((outcome->feed->constEnd() - 1)->value, 0.0);
 }
 
 TEST(MachiningPanel, EditingTheToolRadiusIsUndoableAndRecomputes) {

@@ -235,13 +235,33 @@ namespace {
 TEST(ToolPathFromContour, TangentJointsStayTangentAfterOffsetting) {
     // The six-lobe data breaks its tangents by ~1e-8 rad (ten-digit numbers). Treated as corners,
     // the offsets would be intersected — ill-conditioned for nearly tangent circles — and the
-    // planner would then stop at every joint.
-    const auto path = toolPathFromContour(sixLobe(), 2.0);
+    // planner would then stop at every joint. Offset arcs keep their angles about their centres,
+    // so each joint of the path turns by exactly what the contour turns there: dP/dφ = r'·u +
+    // r·u⊥ from the contour's own polar derivatives.
+    const Contour contour = sixLobe();
+    auto contourTangent = [&](std::size_t k, double phi) {
+        const PolarDerivatives d = contour.segment(k).evaluate(phi);
+        return Eigen::Vector2d(d.dr * std::cos(phi) - d.r * std::sin(phi),
+                               d.dr * std::sin(phi) + d.r * std::cos(phi))
+            .normalized();
+    };
+    auto turn = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+        return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    };
+    const auto path = toolPathFromContour(contour, 2.0);
     ASSERT_TRUE(path.ok());
-    for (std::size_t k = 0; k < path.value().segments.size(); ++k) {
+    const std::size_t n = contour.size();
+    ASSERT_EQ(path.value().segments.size(), n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t next = (k + 1) % n;
+        const double expected = turn(contourTangent(k, contour.segment(k).phiEnd),
+                                     contourTangent(next, contour.segment(next).phiStart));
+        EXPECT_LE(std::abs(expected), degToRad(kTangentToleranceDeg)) << k;  // the premise
         const PathSegment& a = path.value().segments[k];
-        const PathSegment& b = path.value().segments[(k + 1) % path.value().segments.size()];
-        EXPECT_GT(a.tangent(a.length()).dot(b.tangent(0.0)), std::cos(1e-6)) << k;
+        const PathSegment& b = path.value().segments[next];
+        EXPECT_NEAR(turn(a.tangent(a.length()).head<2>(), b.tangent(0.0).head<2>()), expected,
+                    1e-12)
+            << k;
     }
 }
 

@@ -43,7 +43,9 @@ struct TimingResult {
     double lengthMm = 0.0;
     std::vector<SegmentTiming> segments;
     /// Optimal (and exact stop on arcs): grid points of the finest resolution used, and the
-    /// relative change from the previous resolution.
+    /// relative change from the previous resolution. A resolution asks for N = 4096·2^k points
+    /// and rounds each segment's share up to whole intervals, at least two, so it has N to
+    /// N + 2·segments points.
     std::size_t gridPoints = 0;
     double convergence = 0.0;
 };
