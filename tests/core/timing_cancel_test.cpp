@@ -29,6 +29,9 @@ using Clock = std::chrono::steady_clock;
 constexpr double kHonouredWithinMs = 100.0;
 /// When the flag is set, after the call started: long enough that the call is well under way.
 constexpr auto kSetAfter = std::chrono::milliseconds(20);
+/// For the 8-million-point plans: after their memory is set up (some tens of ms), inside the
+/// passes themselves (together some hundreds of ms).
+constexpr auto kSetInThePasses = std::chrono::milliseconds(100);
 
 bool isCancelled(const Diagnostics& errors) {
     return errors.size() == 1 && errors.front().location.empty() &&
@@ -40,13 +43,14 @@ struct CancelRun {
     double lateMs = 0.0;     ///< how long it ran on after the flag was set
 };
 
-/// Runs `call` with a flag that another thread sets kSetAfter after the start.
-CancelRun cancelWhileRunning(const std::function<Diagnostics(const std::atomic<bool>*)>& call) {
+/// Runs `call` with a flag that another thread sets `setAfter` after the start.
+CancelRun cancelWhileRunning(const std::function<Diagnostics(const std::atomic<bool>*)>& call,
+                             std::chrono::milliseconds setAfter = kSetAfter) {
     std::atomic<bool> flag{false};
     const Clock::time_point start = Clock::now();
     Clock::time_point setAt;
     std::thread setter([&] {
-        std::this_thread::sleep_until(start + kSetAfter);
+        std::this_thread::sleep_until(start + setAfter);
         setAt = Clock::now();
         flag.store(true);
     });
@@ -110,18 +114,23 @@ TEST(TimingCancel, SeedProfileStopsWithinOneLongSegment) {
 // between them.
 TEST(TimingCancel, OptimalPlanStopsWithinAPass) {
     const ToolPath path = referencePath();
-    const CancelRun run = cancelWhileRunning([&](const std::atomic<bool>* cancel) {
-        return errorsOf(timingProfile(path, limits(), TimingMethod::Optimal, 1u << 23, cancel));
-    });
+    const CancelRun run = cancelWhileRunning(
+        [&](const std::atomic<bool>* cancel) {
+            return errorsOf(timingProfile(path, limits(), TimingMethod::Optimal, 1u << 23, cancel));
+        },
+        kSetInThePasses);
     EXPECT_TRUE(run.cancelled);
     EXPECT_LT(run.lateMs, kHonouredWithinMs);
 }
 
 TEST(TimingCancel, ExactStopPlanStopsWithinAPass) {
     const ToolPath arc{{PathSegment::arc({0, 0}, 1000, 0, 6, 0)}};
-    const CancelRun run = cancelWhileRunning([&](const std::atomic<bool>* cancel) {
-        return errorsOf(timingProfile(arc, limits(), TimingMethod::ExactStop, 1u << 23, cancel));
-    });
+    const CancelRun run = cancelWhileRunning(
+        [&](const std::atomic<bool>* cancel) {
+            return errorsOf(
+                timingProfile(arc, limits(), TimingMethod::ExactStop, 1u << 23, cancel));
+        },
+        kSetInThePasses);
     EXPECT_TRUE(run.cancelled);
     EXPECT_LT(run.lateMs, kHonouredWithinMs);
 }

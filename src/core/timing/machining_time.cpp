@@ -313,10 +313,11 @@ OptimalRun runOptimal(const ToolPath& path, const MachineLimits& lim, std::size_
         std::vector<double>& sOut = run.profile.s;
         sOut.reserve(n);
         for (const SegmentGrid& g : grid) {
-            if (cancelRequested(cancel)) return cancelledRun();
             const double base = g.first == 0 ? 0.0 : sOut.back() + g.delta;
-            for (std::size_t j = 0; j < g.intervals; ++j) {
-                sOut.push_back(base + g.delta * static_cast<double>(j));
+            if (!countUp(0, g.intervals, cancel, [&](std::size_t j) {
+                    sOut.push_back(base + g.delta * static_cast<double>(j));
+                })) {
+                return cancelledRun();
             }
         }
         sOut.push_back(path.length());
