@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 
 #include "analysis/analysis.h"
@@ -15,6 +16,7 @@
 #include "spline/biarc.h"
 #include "spline/teach_in.h"
 #include "timing/machining_time.h"
+#include "timing/timing_job.h"
 #include "timing/tool_path.h"
 
 namespace cam::cli {
@@ -249,8 +251,12 @@ int runTiming(const Arguments& args, std::ostream& out) {
         throw CliError{kUsage, "timing", "give either PROJECT or --path POINTS.csv"};
     }
 
-    ToolPath path;
-    MachineLimits limits;
+    // The tool path: a point list (or spline knots) as given, or the project's contour offset by
+    // its tool radius inside the timing job.
+    ToolPath given;
+    std::optional<Loaded> loaded;
+    TimingJob job;
+    job.methods = {method};
     bool haveAccel = false;
     if (pathFile) {
         const auto text = readTextFile(*pathFile);
@@ -287,49 +293,48 @@ int runTiming(const Arguments& args, std::ostream& out) {
                 const Diagnostic& d = spline.errors().front();
                 throw CliError{kInvalidInput, *pathFile + ": " + d.location, d.message};
             }
-            path = toolPathFromSpline(spline.value(), kSplineToleranceMm,
-                                      points.value().front().position.z());
+            given = toolPathFromSpline(spline.value(), kSplineToleranceMm,
+                                       points.value().front().position.z());
         } else {
             auto built = toolPathFromPoints(points.value());
             if (!built.ok()) {
                 const Diagnostic& d = built.errors().front();
                 throw CliError{kInvalidInput, *pathFile + ": " + d.location, d.message};
             }
-            path = std::move(built).value();
+            given = std::move(built).value();
         }
     } else {
-        const Loaded loaded = load(args.positional.front());
-        double toolRadius = 0.0;
-        if (loaded.project.machining) {
-            limits = limitsFromProject(*loaded.project.machining);
-            toolRadius = loaded.project.machining->toolRadius;
+        loaded = load(args.positional.front());
+        if (loaded->project.machining) {
+            job = timingJobFor(*loaded->project.machining, {method});
             haveAccel = true;
         }
-        auto built = toolPathFromContour(loaded.contour, toolRadius);
-        if (!built.ok()) {
-            const Diagnostic& d = built.errors().front();
-            throw CliError{kNotComputable, args.positional.front() + ": " + d.location, d.message};
-        }
-        path = std::move(built).value();
     }
     if (const auto v = args.option("--accel")) {
-        limits.accel = parseAxes("--accel", *v, "mm/s²");
+        job.limits.accel = parseAxes("--accel", *v, "mm/s²");
         haveAccel = true;
     }
-    if (const auto v = args.option("--vmax")) limits.vmax = parseAxes("--vmax", *v, "mm/s");
-    if (const auto v = args.option("--feed")) limits.feedMax = parsePositive("--feed", *v, "mm/s");
-    if (const auto v = args.option("--step")) limits.seedStep = parsePositive("--step", *v, "mm");
+    if (const auto v = args.option("--vmax")) job.limits.vmax = parseAxes("--vmax", *v, "mm/s");
+    if (const auto v = args.option("--feed"))
+        job.limits.feedMax = parsePositive("--feed", *v, "mm/s");
+    if (const auto v = args.option("--step"))
+        job.limits.seedStep = parsePositive("--step", *v, "mm");
     if (!haveAccel) {
         throw CliError{kUsage, "--accel",
                        "is required: the project has no machining section or a point list is used"};
     }
 
-    const auto result = machiningTime(path, limits, method);
-    if (!result.ok()) {
-        const Diagnostic& d = result.errors().front();
-        throw CliError{kNotComputable, d.location, d.message};
+    const auto timed = loaded ? timeContour(loaded->contour, job) : timePath(std::move(given), job);
+    if (!timed.ok()) {
+        // A project's errors are located in it (contour[k] when the tool does not fit).
+        const Diagnostic& d = timed.errors().front();
+        throw CliError{kNotComputable,
+                       loaded && !d.location.empty() ? args.positional.front() + ": " + d.location
+                                                     : d.location,
+                       d.message};
     }
-    const TimingResult& r = result.value();
+    const ToolPath& path = timed.value().path;
+    const TimingResult& r = timed.value().results.front();
     Json json{{"method", timingMethodName(r.method)},
               {"time_s", r.timeS},
               {"length_mm", r.lengthMm},

@@ -6,6 +6,7 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QPushButton>
 #include <QTest>
 
@@ -13,6 +14,7 @@
 #include "document/commands.h"
 #include "engine/compute_engine.h"
 #include "mainwindow.h"
+#include "timing_reference.h"
 #include "views/machining_panel.h"
 
 namespace cam {
@@ -53,8 +55,25 @@ TEST(MachiningPanel, ShowsTheThreeTimesTheCoreComputes) {
             window.machiningPanel()->timesText().contains(QLocale().toString(expected, 'f', 4)))
             << window.machiningPanel()->timesText().toStdString();
     }
+    // And independently: the offset path built from the arcs' data and timed by the reference
+    // of timing_reference.h (a phase-plane integration and the seed from math.md's wording).
+    const std::vector<test::RefPiece> pieces =
+        test::offsetArcContour(Contour::build(p).value(), p.machining->toolRadius);
+    std::vector<bool> tangent(pieces.size(), true);
+    tangent[0] = false;  // the path starts and ends at rest at φ = 0
+    double length = 0.0;
+    for (const test::RefPiece& piece : pieces) length += piece.length();
+    EXPECT_NEAR(outcome->lengthMm, length, 1e-9);
+    EXPECT_TRUE(test::relClose(outcome->timesS[0], test::seedReference(pieces, lim), 1e-9));
+    EXPECT_TRUE(
+        test::relClose(outcome->timesS[1], test::referenceExactStop(pieces, lim, 1e-3), 1e-5));
+    EXPECT_TRUE(test::relClose(outcome->timesS[2],
+                               test::referenceOptimal(pieces, tangent, lim, 1e-3), 1e-5));
     EXPECT_LT(outcome->timesS[2], outcome->timesS[1]);  // optimal beats exact stop here
-    EXPECT_FALSE(outcome->feed->isEmpty());
+    // The plotted profile (optimal) runs over the whole path and ends at rest.
+    ASSERT_FALSE(outcome->feed->isEmpty());
+    EXPECT_NEAR((outcome->feed->constEnd() - 1)->key, length, 1e-9);
+    EXPECT_EQ((outcome->feed->constEnd() - 1)->value, 0.0);
 }
 
 TEST(MachiningPanel, EditingTheToolRadiusIsUndoableAndRecomputes) {
@@ -107,6 +126,29 @@ TEST(MachiningPanel, ATooWideToolIsExplained) {
     ASSERT_TRUE(waitForTiming(window));
     ASSERT_FALSE(window.engine()->latestTiming()->errors.empty());
     EXPECT_EQ(window.engine()->latestTiming()->errors.front().location, "contour[0]");
+}
+
+// A tool too large for the notch's dwell arc (tests/data/timing/notch-dwell.cam.json: its
+// concave corners would trim away all of the arc's offset; tool_path_test.cpp works out the
+// limit, 1.374 mm): the panel names the segment and shows no times.
+TEST(MachiningPanel, AnArcTrimmedAwayAtItsConcaveCornersIsExplained) {
+    MainWindow window;
+    ASSERT_TRUE(
+        window.loadFile(QString::fromStdString(test::dataPath("timing/notch-dwell.cam.json")))
+            .isEmpty());
+    openPanel(window);
+    ASSERT_TRUE(waitForTiming(window));
+    const auto outcome = window.engine()->latestTiming();
+    ASSERT_EQ(outcome->errors.size(), 1u);
+    EXPECT_EQ(outcome->errors.front().location, "contour[2]");
+    QStringList shown;
+    for (const QLabel* label : window.machiningPanel()->findChildren<QLabel*>()) {
+        if (label->text().startsWith("No machining time")) shown << label->text();
+    }
+    ASSERT_EQ(shown.size(), 1) << shown.join(" | ").toStdString();
+    EXPECT_TRUE(shown.front().contains("contour[2]: the tool radius 3 mm is too large here"))
+        << shown.front().toStdString();
+    EXPECT_EQ(window.machiningPanel()->timesText(), "— · — · —");
 }
 
 }  // namespace

@@ -29,12 +29,18 @@
 #include "test_support.h"
 #include "timing/machining_time.h"
 #include "timing/tool_path.h"
+#include "timing_reference.h"
 
 namespace cam {
 namespace {
 
 using Eigen::Vector2d;
 using Eigen::Vector3d;
+using test::PhasePoint;
+using test::referenceExactStop;
+using test::referenceOptimal;
+using test::referenceTime;
+using test::RefPiece;
 using test::relClose;
 
 constexpr double kPi = std::numbers::pi;
@@ -317,6 +323,43 @@ TEST(TimingSeed, FeedCapsTheStepSpeedByHand) {
     EXPECT_TRUE(relClose(seedSegmentTime(PathSegment::line(a, b), limits), byHand, 1e-12));
 }
 
+// Fact: the seed's profile (what the Machining panel plots) is its steps, the very ones its
+// time is made of. A 4 mm line along x, then a corner and a 3 mm line along y; a = (100, 100, 1).
+//   4 mm (FourMillimetreLineByHand): steps at s = 0 and 1 with speeds 10 and (10 + √500)/2 =
+//     16.180340, mirrored on the way down at s = 2 and 3.
+//   3 mm (ShorterLastStepByHand): steps at s = 4 (speed 10) and 5 (0.5 mm, (10 + √300)/2 =
+//     13.660254), mirrored at s = 5.5 and 6; rest at 7.
+// Acceleration over each step: (n·x − v_prev)·x/l, and x solves x² − x_prev·x = a·l, so the
+// moving axis accelerates by exactly its limit, ±100, and the other axes not at all.
+TEST(TimingSeed, ProfileIsTheStepsWorkedByHand) {
+    const MachineLimits limits = limitsOf({100, 100, 1});
+    const ToolPath path =
+        pathOf({PathSegment::line({0, 0, 0}, {4, 0, 0}), PathSegment::line({4, 0, 0}, {4, 3, 0})});
+    const Result<TimingProfile> profile = timingProfile(path, limits, TimingMethod::Seed, 100);
+    ASSERT_TRUE(profile.ok()) << joinedLocations(profile.errors());
+    const TimingProfile& p = profile.value();
+    const double x2 = (10.0 + std::sqrt(500.0)) / 2.0, y2 = (10.0 + std::sqrt(300.0)) / 2.0;
+    const std::vector<double> s{0, 1, 2, 3, 4, 5, 5.5, 6, 7};
+    const std::vector<double> speed{10, x2, x2, 10, 10, y2, y2, 10, 0};
+    const std::vector<Vector3d> accel{{100, 0, 0},  {100, 0, 0},  {-100, 0, 0},
+                                      {-100, 0, 0}, {0, 100, 0},  {0, 100, 0},
+                                      {0, -100, 0}, {0, -100, 0}, {0, 0, 0}};
+    ASSERT_EQ(p.s.size(), s.size());
+    ASSERT_EQ(p.speed.size(), s.size());
+    ASSERT_EQ(p.accel.size(), s.size());
+    double time = 0.0;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        SCOPED_TRACE(k);
+        EXPECT_NEAR(p.s[k], s[k], 1e-12);
+        EXPECT_TRUE(relClose(p.speed[k], speed[k], 1e-12, 1.0));
+        for (int i = 0; i < 3; ++i) EXPECT_NEAR(p.accel[k][i], accel[k][i], 1e-9);
+        if (k + 1 < s.size()) time += (s[k + 1] - s[k]) / speed[k];
+    }
+    // The profile's own time, each step at its speed, is the seed time of both segments.
+    EXPECT_TRUE(relClose(time, (0.1 + 0.1 * std::sqrt(5.0)) + (0.1 + 0.1 * std::sqrt(3.0)), 1e-12));
+    EXPECT_TRUE(relClose(timeOf(path, limits, TimingMethod::Seed), time, 1e-12));
+}
+
 // Fact: seedStep = 0.5 on a 3 mm line along x, a_x = 100: midpoint 1.5 = three 0.5 mm steps.
 //   Step 1: x² = 100·0.5 → x1 = sqrt(50) = 7.0710678, 0.5/x1 = 0.0707107 s
 //   Step 2: x² − 7.0710678·x − 50 = 0 → x2 = (7.0710678 + sqrt(50 + 200))/2
@@ -363,199 +406,22 @@ TEST(TimingSeed, FasterThanExactStopOnLongLines) {
               << std::setprecision(7) << seed << " s, exact " << exact << " s, ratio " << text.str()
               << "\n";
 
-    // A 20 mm line (twice the 10 mm ramp) also comes out faster.
+    // A 20 mm line (twice the 10 mm ramp) also comes out faster. Exact stop: v²/a = 20 <= 20,
+    // 20/100 + 100/500 = 0.4 s. The seed's ten steps to the middle, by the loop above.
     const PathSegment shorter = PathSegment::line({0, 0, 0}, {20, 0, 0});
-    EXPECT_LT(seedSegmentTime(shorter, limits), exactStopLineTime(shorter, limits));
+    const double shorterSeed = seedSegmentTime(shorter, limits);
+    EXPECT_TRUE(relClose(exactStopLineTime(shorter, limits), 0.4, 1e-12));
+    EXPECT_TRUE(
+        relClose(shorterSeed, seedReferenceLine(shorter.start, shorter.end, limits), 1e-12));
+    EXPECT_LT(shorterSeed, 0.4);
 }
 
 // =============================================================================================
 // 4. Independent reference: time-optimal motion along a fixed path (Bobrow / Shin–McKay)
 // =============================================================================================
 //
-// State: squared path speed x = ṡ² over arc length s, so dx/ds = 2·s̈ and t = ∫ ds/sqrt(x).
-// Per axis i: |q_i'(s)|·sqrt(x) <= vmax_i, and |q_i'(s)·s̈ + q_i''(s)·x| <= a_i. The geometry
-// below is written here (it does not call PathSegment's point/tangent/curvature).
-
-/// One piece of path with its own q'(s), q''(s).
-struct RefPiece {
-    bool isArc = false;
-    Vector3d from{0, 0, 0}, to{0, 0, 0};  // line
-    Vector2d centre{0, 0};                // arc at height z, polar angle startAngle + sweep·s/L
-    double radius = 0.0, startAngle = 0.0, sweep = 0.0, z = 0.0;
-
-    static RefPiece line(const Vector3d& a, const Vector3d& b) {
-        RefPiece p;
-        p.from = a;
-        p.to = b;
-        return p;
-    }
-    static RefPiece arc(const Vector2d& c, double r, double start, double sw, double height) {
-        RefPiece p;
-        p.isArc = true;
-        p.centre = c;
-        p.radius = r;
-        p.startAngle = start;
-        p.sweep = sw;
-        p.z = height;
-        return p;
-    }
-    [[nodiscard]] double length() const {
-        return isArc ? std::abs(sweep) * radius : (to - from).norm();
-    }
-    [[nodiscard]] PathSegment toSegment() const {
-        return isArc ? PathSegment::arc(centre, radius, startAngle, sweep, z)
-                     : PathSegment::line(from, to);
-    }
-    /// q'(s) (unit tangent) and q''(s).
-    void derivatives(double s, std::array<double, 3>& d1, std::array<double, 3>& d2) const {
-        if (!isArc) {
-            const Vector3d n = (to - from) / (to - from).norm();
-            d1 = {n.x(), n.y(), n.z()};
-            d2 = {0.0, 0.0, 0.0};
-            return;
-        }
-        // Point c + R·(cos θ, sin θ) with θ = θ0 + σ·s/R, σ = sign(sweep):
-        // q' = σ·(−sin θ, cos θ), q'' = −(1/R)·(cos θ, sin θ).
-        const double sigma = sweep > 0 ? 1.0 : -1.0;
-        const double th = startAngle + sigma * s / radius;
-        d1 = {-sigma * std::sin(th), sigma * std::cos(th), 0.0};
-        d2 = {-std::cos(th) / radius, -std::sin(th) / radius, 0.0};
-    }
-};
-
-/// The phase-plane constraints at one point: axis k allows s̈ in [−alpha_k − kappa_k·x,
-/// alpha_k − kappa_k·x] (alpha = a_i/|q_i'|, kappa = q_i''/q_i'); xMax is the maximum-velocity
-/// curve (the largest x for which all those intervals and the speed limits can be met).
-struct PhasePoint {
-    std::array<double, 3> alpha{};
-    std::array<double, 3> kappa{};
-    int count = 0;
-    double xMax = kUnlimited;
-};
-
-PhasePoint phasePoint(const RefPiece& piece, double s, const MachineLimits& limits) {
-    std::array<double, 3> d1{}, d2{};
-    piece.derivatives(s, d1, d2);
-    PhasePoint p;
-    p.xMax = limits.feedMax * limits.feedMax;
-    for (int i = 0; i < 3; ++i) {
-        if (std::abs(d1[i]) > 1e-15) {
-            p.alpha[p.count] = limits.accel[i] / std::abs(d1[i]);
-            p.kappa[p.count] = d2[i] / d1[i];
-            ++p.count;
-            const double v = limits.vmax[i] / std::abs(d1[i]);
-            p.xMax = std::min(p.xMax, v * v);
-        } else if (d2[i] != 0.0) {
-            // The axis is momentarily still along the path: only its centripetal part, |q''|·x.
-            p.xMax = std::min(p.xMax, limits.accel[i] / std::abs(d2[i]));
-        }
-    }
-    // Every lower bound must stay below every upper bound: −alpha_i − kappa_i·x <=
-    // alpha_j − kappa_j·x, i.e. (kappa_j − kappa_i)·x <= alpha_i + alpha_j.
-    for (int i = 0; i < p.count; ++i) {
-        for (int j = 0; j < p.count; ++j) {
-            if (p.kappa[j] > p.kappa[i]) {
-                p.xMax = std::min(p.xMax, (p.alpha[i] + p.alpha[j]) / (p.kappa[j] - p.kappa[i]));
-            }
-        }
-    }
-    return p;
-}
-
-double maxAccel(const PhasePoint& p, double x) {
-    double u = kUnlimited;
-    for (int k = 0; k < p.count; ++k) u = std::min(u, p.alpha[k] - p.kappa[k] * x);
-    return u;
-}
-
-double maxDecel(const PhasePoint& p, double x) {
-    double u = -kUnlimited;
-    for (int k = 0; k < p.count; ++k) u = std::max(u, -p.alpha[k] - p.kappa[k] * x);
-    return u;
-}
-
-/// Rest-to-rest minimum time over pieces joined tangentially (the speed is free at the joints;
-/// a joint must satisfy both neighbours' constraints). Grid of about `step` mm; the backward
-/// pass (maximum deceleration from rest at the end) and the forward pass (maximum acceleration
-/// from rest at the start) are midpoint (second-order Runge–Kutta) steps of dx/ds = 2·s̈, each
-/// clipped to the maximum-velocity curve; the forward pass is clipped to the backward one, so
-/// the profile is their pointwise minimum. Time per cell: 2·Δs/(sqrt(x_k) + sqrt(x_k+1)),
-/// exact where x is linear in s and finite where x = 0.
-double referenceTime(const std::vector<RefPiece>& pieces, const MachineLimits& limits,
-                     double step) {
-    struct Cell {
-        const RefPiece* piece;
-        double s0;
-        double ds;
-    };
-    std::vector<Cell> cells;
-    for (const RefPiece& piece : pieces) {
-        const double length = piece.length();
-        const auto n =
-            std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(length / step - 1e-9)));
-        const double ds = length / static_cast<double>(n);
-        for (std::size_t k = 0; k < n; ++k) {
-            cells.push_back({&piece, static_cast<double>(k) * ds, ds});
-        }
-    }
-    const std::size_t n = cells.size();
-
-    std::vector<double> mvc(n + 1, kUnlimited);
-    for (std::size_t j = 0; j < n; ++j) {
-        const Cell& c = cells[j];
-        mvc[j] = std::min(mvc[j], phasePoint(*c.piece, c.s0, limits).xMax);
-        mvc[j + 1] = std::min(mvc[j + 1], phasePoint(*c.piece, c.s0 + c.ds, limits).xMax);
-    }
-    mvc[0] = 0.0;
-    mvc[n] = 0.0;
-
-    std::vector<double> back(n + 1, 0.0);
-    for (std::size_t j = n; j-- > 0;) {
-        const Cell& c = cells[j];
-        const PhasePoint end = phasePoint(*c.piece, c.s0 + c.ds, limits);
-        const PhasePoint mid = phasePoint(*c.piece, c.s0 + c.ds / 2.0, limits);
-        const double x1 = back[j + 1];
-        const double xMid = std::min(x1 - c.ds * maxDecel(end, x1), mid.xMax);
-        back[j] = std::min(x1 - 2.0 * c.ds * maxDecel(mid, xMid), mvc[j]);
-    }
-
-    double x = 0.0;
-    double time = 0.0;
-    for (std::size_t j = 0; j < n; ++j) {
-        const Cell& c = cells[j];
-        const PhasePoint start = phasePoint(*c.piece, c.s0, limits);
-        const PhasePoint mid = phasePoint(*c.piece, c.s0 + c.ds / 2.0, limits);
-        const double xMid = std::min(x + c.ds * maxAccel(start, x), mid.xMax);
-        const double next = std::min(x + 2.0 * c.ds * maxAccel(mid, xMid), back[j + 1]);
-        time += 2.0 * c.ds / (std::sqrt(x) + std::sqrt(next));
-        x = next;
-    }
-    return time;
-}
-
-/// Optimal: stop only where `tangentToPrevious` is false (corners) and at both ends.
-double referenceOptimal(const std::vector<RefPiece>& pieces,
-                        const std::vector<bool>& tangentToPrevious, const MachineLimits& limits,
-                        double step) {
-    double total = 0.0;
-    std::vector<RefPiece> chain;
-    for (std::size_t k = 0; k < pieces.size(); ++k) {
-        if (k > 0 && !tangentToPrevious[k]) {
-            total += referenceTime(chain, limits, step);
-            chain.clear();
-        }
-        chain.push_back(pieces[k]);
-    }
-    return total + referenceTime(chain, limits, step);
-}
-
-/// Exact stop: every piece rest to rest.
-double referenceExactStop(const std::vector<RefPiece>& pieces, const MachineLimits& limits,
-                          double step) {
-    double total = 0.0;
-    for (const RefPiece& piece : pieces) total += referenceTime({piece}, limits, step);
-    return total;
-}
+// The reference (RefPiece, referenceTime, referenceOptimal, referenceExactStop) lives in
+// tests/timing_reference.h so that the CLI and app tests can check their numbers against it too.
 
 // The benchmark path: line (0,0,0)→(100,0,0); tangent quarter arc R = 20 around (100,20) from
 // (100,0) to (120,20) (counter-clockwise, start angle −π/2, sweep +π/2); line (120,20,0)→
@@ -567,6 +433,34 @@ std::vector<RefPiece> benchmarkPieces() {
 }
 
 MachineLimits benchmarkLimits() { return limitsOf({500, 250, 100}, kUnlimited, {200, 150, 50}); }
+
+// Fact: on an arc the seed's step directions are chords. The benchmark's quarter arc (R = 20
+// around (100, 20), counter-clockwise from −90°), a = (500, 250, 100), step 1 mm:
+//   Step 1 (chord from −90° to −90° + 1/20 rad): n = (cos 0.025, sin 0.025) = (0.999688,
+//           0.024997); from rest x: sqrt(500/0.999688) = 22.3642, y: sqrt(250/0.024997) =
+//           100.005 → x1 = 22.3642 mm/s.
+//   Step 2: n = (cos 0.075, sin 0.075) = (0.997189, 0.074930), v_prev = n1·x1 = (22.3572,
+//           0.55905). x: (22.3572 + sqrt(22.3572² + 4·0.997189·500))/(2·0.997189) =
+//           (22.3572 + 49.9423)/1.994378 = 36.2516; y: (0.55905 + sqrt(0.55905² + 4·0.07493·250))
+//           /(2·0.07493) = 61.613 → x2 = 36.2516 mm/s.
+// The whole arc against the reference loop written from math.md (timing_reference.h).
+TEST(TimingSeed, QuarterArcStepsByHandAndTheReferenceLoop) {
+    const RefPiece arc = benchmarkPieces()[1];
+    const MachineLimits limits = benchmarkLimits();
+    const ToolPath path = pathOf({arc.toSegment()});
+    const Result<TimingProfile> profile = timingProfile(path, limits, TimingMethod::Seed, 100);
+    ASSERT_TRUE(profile.ok());
+    EXPECT_TRUE(relClose(profile.value().speed[0], 22.3642, 1e-5));
+    EXPECT_TRUE(relClose(profile.value().speed[1], 36.2516, 1e-5));
+    EXPECT_TRUE(relClose(timeOf(path, limits, TimingMethod::Seed), test::seedReference(arc, limits),
+                         1e-12));
+    // The reference loop agrees with the line loop above (and so with the hand-worked lines).
+    for (const LineCase& c : lineCases()) {
+        SCOPED_TRACE(c.name);
+        EXPECT_TRUE(relClose(test::seedReference(RefPiece::line(c.from, c.to), c.limits),
+                             seedReferenceLine(c.from, c.to, c.limits), 1e-12));
+    }
+}
 
 /// Grid step of the reference, mm. With the second-order steps the benchmark converges as h²:
 /// error against the analytic optimum below 3.0e-7 s at h = 1e-2, 2.7e-8 at 3e-3, 3.0e-9 at
@@ -639,7 +533,8 @@ TEST(TimingOptimal, BenchmarkPathMatchesIndependentIntegration) {
         const Result<TimingResult> opt = machiningTime(*path, limits, TimingMethod::Optimal);
         ASSERT_TRUE(opt.ok()) << joinedLocations(opt.errors());
         EXPECT_TRUE(relClose(opt.value().timeS, refOptimal, 1e-5));
-        EXPECT_GT(opt.value().gridPoints, 0u);
+        EXPECT_TRUE(test::onRefinementSchedule(opt.value().gridPoints, path->segments.size()));
+        EXPECT_LE(opt.value().convergence, 1e-6);
         ASSERT_EQ(opt.value().segments.size(), 3u);
         // Joint speeds from the analysis above: sqrt(5000) into the arc, 100 out of it.
         EXPECT_NEAR(opt.value().segments[0].entrySpeed, 0.0, 1e-6);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "common/angles.h"
+#include "timing/timing_job.h"
 
 namespace cam {
 namespace {
@@ -125,28 +126,22 @@ TimingOutcomePtr computeTiming(const ComputeRequest& request, const Contour& con
     auto outcome = std::make_shared<TimingOutcome>();
     outcome->generation = request.generation;
     outcome->plotted = request.plotMethod;
-    const MachiningSpec& spec = *request.project->machining;
-    outcome->limits = limitsFromProject(spec);
-    auto path = toolPathFromContour(contour, spec.toolRadius);
-    if (!path.ok()) {
-        outcome->errors = path.errors();
+    TimingJob job =
+        timingJobFor(*request.project->machining,
+                     {TimingMethod::Seed, TimingMethod::ExactStop, TimingMethod::Optimal});
+    job.profileMethod = request.plotMethod;
+    job.profilePoints = 4000;
+    outcome->limits = job.limits;
+    const auto timed = timeContour(contour, job, &cancel);
+    if (cancel.load()) return nullptr;
+    if (!timed.ok()) {
+        outcome->errors = timed.errors();
         return outcome;
     }
-    outcome->lengthMm = path.value().length();
-    const TimingMethod methods[] = {TimingMethod::Seed, TimingMethod::ExactStop,
-                                    TimingMethod::Optimal};
-    for (int m = 0; m < 3; ++m) {
-        const auto r = machiningTime(path.value(), outcome->limits, methods[m], &cancel);
-        if (cancel.load()) return nullptr;
-        if (!r.ok()) {
-            outcome->errors = r.errors();
-            return outcome;
-        }
-        outcome->timesS[static_cast<std::size_t>(m)] = r.value().timeS;
-        if (methods[m] == TimingMethod::Optimal) outcome->gridPoints = r.value().gridPoints;
-    }
-    const TimingProfile profile =
-        timingProfile(path.value(), outcome->limits, request.plotMethod, 4000);
+    outcome->lengthMm = timed.value().path.length();
+    for (std::size_t m = 0; m < 3; ++m) outcome->timesS[m] = timed.value().results[m].timeS;
+    outcome->gridPoints = timed.value().results[2].gridPoints;
+    const TimingProfile& profile = *timed.value().profile;
     QVector<QCPGraphData> feed;
     std::array<QVector<QCPGraphData>, 3> accel;
     for (std::size_t k = 0; k < profile.s.size(); ++k) {

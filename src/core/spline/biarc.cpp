@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "common/angles.h"
+#include "common/cancel.h"
 #include "geometry/planar.h"
 
 namespace cam {
@@ -77,7 +78,9 @@ std::vector<PathSegment> biarc(const Vec& a, const Vec& ta, const Vec& b, const 
     return {first, second};
 }
 
-void fit(const CubicBezier& c, double tol, double z, int depth, std::vector<PathSegment>& out) {
+void fit(const CubicBezier& c, double tol, double z, int depth, std::vector<PathSegment>& out,
+         const std::atomic<bool>* cancel) {
+    if (cancelRequested(cancel)) return;
     const Vec ta = c.derivative(0.0, 1).normalized(), tb = c.derivative(1.0, 1).normalized();
     std::vector<PathSegment> pair = biarc(c.p[0], ta, c.p[3], tb, z);
     if (depth >= 24 || fitError(c, pair) <= tol) {
@@ -87,8 +90,8 @@ void fit(const CubicBezier& c, double tol, double z, int depth, std::vector<Path
     // de Casteljau at s = 1/2.
     const Vec p01 = (c.p[0] + c.p[1]) / 2, p12 = (c.p[1] + c.p[2]) / 2, p23 = (c.p[2] + c.p[3]) / 2;
     const Vec p012 = (p01 + p12) / 2, p123 = (p12 + p23) / 2, mid = (p012 + p123) / 2;
-    fit(CubicBezier{{c.p[0], p01, p012, mid}}, tol, z, depth + 1, out);
-    fit(CubicBezier{{mid, p123, p23, c.p[3]}}, tol, z, depth + 1, out);
+    fit(CubicBezier{{c.p[0], p01, p012, mid}}, tol, z, depth + 1, out, cancel);
+    fit(CubicBezier{{mid, p123, p23, c.p[3]}}, tol, z, depth + 1, out, cancel);
 }
 
 }  // namespace
@@ -104,9 +107,10 @@ double fitError(const CubicBezier& curve, const std::vector<PathSegment>& segmen
     return worst;
 }
 
-std::vector<PathSegment> biarcsOf(const CubicBezier& curve, double toleranceMm, double z) {
+std::vector<PathSegment> biarcsOf(const CubicBezier& curve, double toleranceMm, double z,
+                                  const std::atomic<bool>* cancel) {
     std::vector<PathSegment> out;
-    fit(curve, toleranceMm, z, 0, out);
+    fit(curve, toleranceMm, z, 0, out, cancel);
     return out;
 }
 

@@ -1,22 +1,31 @@
 #include "timing/machining_time.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
+#include <optional>
+
+#include "common/angles.h"
+#include "common/cancel.h"
+#include "common/tolerances.h"
 
 namespace cam {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-/// A joint is a corner (the tool must stop there) when the tangent turns by more than this.
-constexpr double kCornerAngle = 1e-6;
 /// Below this a tangent component counts as zero: the axis then bounds speed by curvature only.
 constexpr double kTiny = 1e-12;
 
+/// A joint is a corner (the tool must stop there) when the tangent turns by more than
+/// kTangentToleranceDeg: the rule by which the tool path decides where to round or trim, so a
+/// joint it leaves as tangent is one the planner passes through, and every other one stops it.
 bool isCorner(const PathSegment& a, const PathSegment& b) {
     const Vec3 ta = a.tangent(a.length()), tb = b.tangent(0.0);
-    return std::acos(std::clamp(ta.dot(tb), -1.0, 1.0)) > kCornerAngle;
+    // atan2 rather than acos: acos(dot) loses half the digits of a small angle.
+    return std::atan2(ta.cross(tb).norm(), ta.dot(tb)) > degToRad(kTangentToleranceDeg);
 }
 
 /// The acceleration limits at one point of the path as bounds on u = s-ddot that are linear in
@@ -93,15 +102,19 @@ PointConstraints constraintsOf(const Vec3& tangent, const Vec3& curvature,
     return pc;
 }
 
-std::vector<SegmentGrid> makeGrid(const ToolPath& path, const MachineLimits& lim,
-                                  std::size_t points, std::size_t* total) {
+/// The grid of about `points` points; false if cancelled.
+bool makeGrid(const ToolPath& path, const MachineLimits& lim, std::size_t points,
+              std::vector<SegmentGrid>& grid, std::size_t* total, const std::atomic<bool>* cancel) {
     const double spacing =
         path.length() / static_cast<double>(std::max<std::size_t>(points, 2) - 1);
-    std::vector<SegmentGrid> grid(path.segments.size());
+    // Grown as it is filled (not assigned up front): memory is touched between the polls.
+    grid.clear();
+    grid.reserve(path.segments.size());
     std::size_t index = 0;
     for (std::size_t k = 0; k < path.segments.size(); ++k) {
+        if (k % kCancelPollInterval == 0 && cancelRequested(cancel)) return false;
         const PathSegment& seg = path.segments[k];
-        SegmentGrid& g = grid[k];
+        SegmentGrid& g = grid.emplace_back();
         const double len = seg.length();
         g.first = index;
         g.intervals = static_cast<std::size_t>(std::max(2.0, std::ceil(len / spacing - 1e-9)));
@@ -128,7 +141,7 @@ std::vector<SegmentGrid> makeGrid(const ToolPath& path, const MachineLimits& lim
         index += g.intervals;
     }
     *total = index + 1;  // and the end point
-    return grid;
+    return true;
 }
 
 /// Walks the points of one arc segment with a rotation recurrence (cos/sin of θ0 + j·δθ),
@@ -174,13 +187,65 @@ struct OptimalRun {
     OptimalProfile profile;
     std::vector<SegmentTiming> segments;
     std::size_t points = 0;
+    double convergence = 0.0;  ///< refinedOptimal: relative change from the previous grid
+    bool cancelled = false;
 };
 
+OptimalRun cancelledRun() {
+    OptimalRun run;
+    run.cancelled = true;
+    return run;
+}
+
+/// body(j) for j = first, first + 1, …, end − 1, reading the cancel flag before each block of
+/// kCancelPollInterval; false if cancelled. The loop within a block is the plain one (a test of
+/// the flag at every point cost the planner's benchmark 10–20 %).
+template <class Body>
+bool countUp(std::size_t first, std::size_t end, const std::atomic<bool>* cancel, Body&& body) {
+    for (std::size_t j = first; j < end;) {
+        if (cancelRequested(cancel)) return false;
+        const std::size_t blockEnd = std::min(end, j + kCancelPollInterval);
+        for (; j < blockEnd; ++j) body(j);
+    }
+    return true;
+}
+
+/// body(j) for j = first, first − 1, …, last (last >= 1), in blocks like countUp.
+template <class Body>
+bool countDown(std::size_t first, std::size_t last, const std::atomic<bool>* cancel, Body&& body) {
+    for (std::size_t j = first; j >= last;) {
+        if (cancelRequested(cancel)) return false;
+        const std::size_t blockLast =
+            j - last >= kCancelPollInterval ? j - kCancelPollInterval + 1 : last;
+        for (; j >= blockLast; --j) body(j);
+    }
+    return true;
+}
+
+/// One plan on a grid of about `points` points. Both passes read the cancel flag at every
+/// segment and every kCancelPollInterval grid points within one.
 OptimalRun runOptimal(const ToolPath& path, const MachineLimits& lim, std::size_t points,
-                      bool keepProfile) {
+                      bool keepProfile, const std::atomic<bool>* cancel) {
     std::size_t n = 0;
-    const std::vector<SegmentGrid> grid = makeGrid(path, lim, points, &n);
-    std::vector<double> hi(n), x(n);
+    std::vector<SegmentGrid> grid;
+    if (!makeGrid(path, lim, points, grid, &n, cancel)) return cancelledRun();
+    OptimalRun run;
+    // Uninitialised where possible (every point is written before it is read): zero-filling
+    // hundreds of MB up front costs time that no poll could interrupt.
+    const std::unique_ptr<double[]> hiStore(new double[n]);
+    std::unique_ptr<double[]> xStore;
+    if (keepProfile) {
+        // Grown in blocks between polls: one resize of a fine plot's grid takes a while.
+        run.profile.x.reserve(n);
+        while (run.profile.x.size() < n) {
+            if (cancelRequested(cancel)) return cancelledRun();
+            run.profile.x.resize(std::min(n, run.profile.x.size() + 64 * kCancelPollInterval));
+        }
+    } else {
+        xStore.reset(new double[n]);
+    }
+    double* const hi = hiStore.get();
+    double* const x = keepProfile ? run.profile.x.data() : xStore.get();
     // Backward pass: the largest squared speed at each point from which the end (and every
     // corner) can still be reached at rest (the controllable sets of TOPP-RA).
     hi[n - 1] = 0.0;
@@ -190,16 +255,19 @@ OptimalRun runOptimal(const ToolPath& path, const MachineLimits& lim, std::size_
             const std::size_t i = g.first + j;
             hi[i] = std::max(0.0, std::min(pc.maxX(), pc.brakeTo(hi[i + 1], g.delta)));
         };
+        bool done = true;
         if (g.isArc) {
             ArcWalker walk(g, g.intervals - 1, -1);
-            for (std::size_t j = g.intervals - 1; j >= 1; --j) step(j, walk.next(lim));
+            done = countDown(g.intervals - 1, 1, cancel,
+                             [&](std::size_t j) { step(j, walk.next(lim)); });
         } else {
             const double mvc = g.inner.maxX();
-            for (std::size_t j = g.intervals - 1; j >= 1; --j) {
+            done = countDown(g.intervals - 1, 1, cancel, [&](std::size_t j) {
                 const std::size_t i = g.first + j;
                 hi[i] = std::max(0.0, std::min(mvc, g.inner.brakeTo(hi[i + 1], g.delta)));
-            }
+            });
         }
+        if (!done) return cancelledRun();
         if (g.stopAtStart) {
             hi[g.first] = 0.0;
         } else {
@@ -207,7 +275,6 @@ OptimalRun runOptimal(const ToolPath& path, const MachineLimits& lim, std::size_
         }
     }
     // Forward pass: accelerate as hard as allowed while staying controllable.
-    OptimalRun run;
     run.segments.resize(path.segments.size());
     x[0] = 0.0;
     double time = 0.0;
@@ -228,12 +295,14 @@ OptimalRun runOptimal(const ToolPath& path, const MachineLimits& lim, std::size_
             rootPrev = root;
         };
         step(0, g.boundary);
+        bool done = true;
         if (g.isArc) {
             ArcWalker walk(g, 1, +1);
-            for (std::size_t j = 1; j < g.intervals; ++j) step(j, walk.next(lim));
+            done = countUp(1, g.intervals, cancel, [&](std::size_t j) { step(j, walk.next(lim)); });
         } else {
-            for (std::size_t j = 1; j < g.intervals; ++j) step(j, g.inner);
+            done = countUp(1, g.intervals, cancel, [&](std::size_t j) { step(j, g.inner); });
         }
+        if (!done) return cancelledRun();
         st.timeS = segmentTime;
         st.exitSpeed = std::sqrt(x[g.first + g.intervals]);
         time += segmentTime;
@@ -241,38 +310,41 @@ OptimalRun runOptimal(const ToolPath& path, const MachineLimits& lim, std::size_
     run.profile.timeS = time;
     run.points = n;
     if (keepProfile) {
-        run.profile.s.resize(n);
+        std::vector<double>& sOut = run.profile.s;
+        sOut.reserve(n);
         for (const SegmentGrid& g : grid) {
-            const double base = g.first == 0 ? 0.0 : run.profile.s[g.first - 1] + g.delta;
-            for (std::size_t j = 0; j < g.intervals; ++j) {
-                run.profile.s[g.first + j] = base + g.delta * static_cast<double>(j);
+            const double base = g.first == 0 ? 0.0 : sOut.back() + g.delta;
+            if (!countUp(0, g.intervals, cancel, [&](std::size_t j) {
+                    sOut.push_back(base + g.delta * static_cast<double>(j));
+                })) {
+                return cancelledRun();
             }
         }
-        run.profile.s[n - 1] = path.length();
-        run.profile.x = std::move(x);
+        sOut.push_back(path.length());
     }
     return run;
 }
 
-/// Doubles the grid until two resolutions agree to 1e-6 relative.
-OptimalRun refinedOptimal(const ToolPath& path, const MachineLimits& lim, std::size_t* points,
-                          double* convergence, const std::atomic<bool>* cancel) {
+/// Doubles the grid from 4096 points until two resolutions agree to 1e-6 relative (or 2^24
+/// points). Every pass polls the cancel flag.
+OptimalRun refinedOptimal(const ToolPath& path, const MachineLimits& lim,
+                          const std::atomic<bool>* cancel) {
     std::size_t n = 4096;
-    OptimalRun previous = runOptimal(path, lim, n, false);
+    OptimalRun previous = runOptimal(path, lim, n, false, cancel);
     constexpr std::size_t kMaxPoints = std::size_t{1} << 24;
-    for (;;) {
-        if (cancel && cancel->load(std::memory_order_relaxed)) return previous;
+    while (!previous.cancelled) {
         n *= 2;
-        OptimalRun current = runOptimal(path, lim, n, false);
+        OptimalRun current = runOptimal(path, lim, n, false, cancel);
+        if (current.cancelled) return current;
         const double change =
             std::abs(current.profile.timeS - previous.profile.timeS) / current.profile.timeS;
         if (change <= 1e-6 || n >= kMaxPoints) {
-            *points = current.points;
-            *convergence = change;
+            current.convergence = change;
             return current;
         }
         previous = std::move(current);
     }
+    return previous;
 }
 
 }  // namespace
@@ -323,21 +395,54 @@ double seedStepSpeed(const Vec3& n, const Vec3& vPrev, double step, const Machin
     return x;
 }
 
+/// One step of the seed method: where it starts on the segment (mm), its length, its unit
+/// direction, its speed and the axis velocities it starts from.
+struct SeedStep {
+    double s = 0.0;
+    double length = 0.0;
+    Vec3 direction = Vec3::Zero();
+    double speed = 0.0;
+    Vec3 previousVelocity = Vec3::Zero();
+};
+
+/// The seed method's walk over one segment from rest up to its midpoint (math.md §6), one call
+/// of `visit` per step. The only place the seed's steps are taken: its time and its profile
+/// both come from here. False if cancelled (polled every kCancelPollInterval steps).
+template <class Visit>
+bool walkSeed(const PathSegment& segment, const MachineLimits& lim, Visit&& visit,
+              const std::atomic<bool>* cancel = nullptr) {
+    const double half = segment.length() / 2.0;
+    SeedStep step;
+    std::size_t count = 0;
+    for (double s = 0.0; s < half - 1e-12;) {
+        if (++count % kCancelPollInterval == 0 && cancelRequested(cancel)) return false;
+        step.s = s;
+        step.length = std::min(lim.seedStep, half - s);
+        step.direction = (segment.point(s + step.length) - segment.point(s)).normalized();
+        step.speed = seedStepSpeed(step.direction, step.previousVelocity, step.length, lim);
+        visit(step);
+        step.previousVelocity = step.direction * step.speed;
+        s += step.length;
+    }
+    return true;
+}
+
+/// The seed time of one segment; nullopt if cancelled.
+std::optional<double> seedTime(const PathSegment& segment, const MachineLimits& lim,
+                               const std::atomic<bool>* cancel) {
+    double time = 0.0;
+    if (!walkSeed(
+            segment, lim, [&](const SeedStep& step) { time += step.length / step.speed; },
+            cancel)) {
+        return std::nullopt;
+    }
+    return 2.0 * time;
+}
+
 }  // namespace
 
 double seedSegmentTime(const PathSegment& segment, const MachineLimits& lim) {
-    const double half = segment.length() / 2.0;
-    Vec3 vPrev = Vec3::Zero();
-    double time = 0.0;
-    for (double s = 0.0; s < half - 1e-12;) {
-        const double step = std::min(lim.seedStep, half - s);
-        const Vec3 n = (segment.point(s + step) - segment.point(s)).normalized();
-        const double x = seedStepSpeed(n, vPrev, step, lim);
-        time += step / x;
-        vPrev = n * x;
-        s += step;
-    }
-    return 2.0 * time;
+    return *seedTime(segment, lim, nullptr);
 }
 
 double exactStopLineTime(const PathSegment& line, const MachineLimits& lim) {
@@ -355,12 +460,11 @@ double exactStopLineTime(const PathSegment& line, const MachineLimits& lim) {
 
 OptimalProfile optimalProfile(const ToolPath& path, const MachineLimits& limits,
                               std::size_t gridPoints) {
-    return runOptimal(path, limits, gridPoints, true).profile;
+    return runOptimal(path, limits, gridPoints, true, nullptr).profile;
 }
 
 Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& lim,
                                    TimingMethod method, const std::atomic<bool>* cancel) {
-    auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
     Diagnostics errors;
     if (path.segments.empty()) errors.push_back({"path", "is empty"});
     for (int i = 0; i < 3; ++i) {
@@ -380,26 +484,30 @@ Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& li
     r.method = method;
     r.lengthMm = path.length();
     if (method == TimingMethod::Optimal) {
-        OptimalRun run = refinedOptimal(path, lim, &r.gridPoints, &r.convergence, cancel);
-        if (cancelled()) return Diagnostics{{"", "cancelled"}};
+        OptimalRun run = refinedOptimal(path, lim, cancel);
+        if (run.cancelled) return cancelledDiagnostics();
         r.timeS = run.profile.timeS;
+        r.gridPoints = run.points;
+        r.convergence = run.convergence;
         r.segments = std::move(run.segments);
         return r;
     }
     for (const PathSegment& seg : path.segments) {
-        if (cancelled()) return Diagnostics{{"", "cancelled"}};
+        if (cancelRequested(cancel)) return cancelledDiagnostics();
         SegmentTiming t;
         t.lengthMm = seg.length();
         if (method == TimingMethod::Seed) {
-            t.timeS = seedSegmentTime(seg, lim);
+            const std::optional<double> time = seedTime(seg, lim, cancel);
+            if (!time) return cancelledDiagnostics();
+            t.timeS = *time;
         } else if (seg.kind == PathSegment::Kind::Line) {
             t.timeS = exactStopLineTime(seg, lim);
         } else {
-            std::size_t points = 0;
-            double change = 0.0;
-            t.timeS = refinedOptimal(ToolPath{{seg}}, lim, &points, &change, cancel).profile.timeS;
-            r.gridPoints = std::max(r.gridPoints, points);
-            r.convergence = std::max(r.convergence, change);
+            const OptimalRun run = refinedOptimal(ToolPath{{seg}}, lim, cancel);
+            if (run.cancelled) return cancelledDiagnostics();
+            t.timeS = run.profile.timeS;
+            r.gridPoints = std::max(r.gridPoints, run.points);
+            r.convergence = std::max(r.convergence, run.convergence);
         }
         r.timeS += t.timeS;
         r.segments.push_back(t);
@@ -409,65 +517,74 @@ Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& li
 
 namespace {
 
-/// Segment index and local arc length of a global arc length.
-std::pair<std::size_t, double> locate(const ToolPath& path, double s) {
-    for (std::size_t k = 0; k < path.segments.size(); ++k) {
-        const double len = path.segments[k].length();
-        if (s <= len || k + 1 == path.segments.size()) return {k, std::min(s, len)};
-        s -= len;
-    }
-    return {0, 0.0};
-}
-
-void appendPlanned(const ToolPath& path, const OptimalProfile& p, double offset,
-                   TimingProfile& out) {
+/// Appends a planned profile (grid points in ascending s) with each interval's axis
+/// accelerations, found on the segment the interval starts on. False if cancelled.
+bool appendPlanned(const ToolPath& path, const OptimalProfile& p, double offset, TimingProfile& out,
+                   const std::atomic<bool>* cancel) {
+    std::size_t seg = 0;
+    double segStart = 0.0;  // path parameter where segment `seg` starts
     for (std::size_t k = 0; k < p.s.size(); ++k) {
+        if (k % kCancelPollInterval == 0 && cancelRequested(cancel)) return false;
         Vec3 a = Vec3::Zero();
         if (k + 1 < p.s.size()) {
             const double delta = p.s[k + 1] - p.s[k];
             const double u = delta > 0 ? (p.x[k + 1] - p.x[k]) / (2.0 * delta) : 0.0;
-            const auto [seg, local] = locate(path, p.s[k] + 1e-12);
+            // A point on a joint belongs to the segment its interval runs along: the next one.
+            const double s = p.s[k] + 1e-12;
+            while (seg + 1 < path.segments.size() && s > segStart + path.segments[seg].length()) {
+                segStart += path.segments[seg].length();
+                ++seg;
+            }
             const PathSegment& sg = path.segments[seg];
+            const double local = std::clamp(s - segStart, 0.0, sg.length());
             a = sg.tangent(local) * u + sg.curvature(local) * p.x[k];
         }
         out.s.push_back(offset + p.s[k]);
         out.speed.push_back(std::sqrt(std::max(p.x[k], 0.0)));
         out.accel.push_back(a);
     }
+    return true;
 }
 
 }  // namespace
 
-TimingProfile timingProfile(const ToolPath& path, const MachineLimits& lim, TimingMethod method,
-                            std::size_t points) {
+Result<TimingProfile> timingProfile(const ToolPath& path, const MachineLimits& lim,
+                                    TimingMethod method, std::size_t points,
+                                    const std::atomic<bool>* cancel) {
     TimingProfile out;
     if (method == TimingMethod::Optimal) {
-        appendPlanned(path, optimalProfile(path, lim, points), 0.0, out);
+        const OptimalRun run = runOptimal(path, lim, points, true, cancel);
+        if (run.cancelled || !appendPlanned(path, run.profile, 0.0, out, cancel)) {
+            return cancelledDiagnostics();
+        }
         return out;
     }
     const double total = path.length();
     double offset = 0.0;
     for (const PathSegment& seg : path.segments) {
+        if (cancelRequested(cancel)) return cancelledDiagnostics();
         const double len = seg.length();
         if (method == TimingMethod::ExactStop) {
             const auto share =
                 static_cast<std::size_t>(std::max(16.0, static_cast<double>(points) * len / total));
-            appendPlanned(ToolPath{{seg}}, optimalProfile(ToolPath{{seg}}, lim, share), offset,
-                          out);
+            const ToolPath alone{{seg}};
+            const OptimalRun run = runOptimal(alone, lim, share, true, cancel);
+            if (run.cancelled || !appendPlanned(alone, run.profile, offset, out, cancel)) {
+                return cancelledDiagnostics();
+            }
         } else {
             // The seed's steps up to the middle, each at its constant speed, then mirrored.
             std::vector<std::pair<double, double>> steps;  // (step start, speed)
             std::vector<Vec3> accels;
-            Vec3 vPrev = Vec3::Zero();
-            for (double s = 0.0; s < len / 2.0 - 1e-12;) {
-                const double step = std::min(lim.seedStep, len / 2.0 - s);
-                const Vec3 n = (seg.point(s + step) - seg.point(s)).normalized();
-                const double x = seedStepSpeed(n, vPrev, step, lim);
-                accels.push_back((n * x - vPrev) * x / step);
-                steps.emplace_back(s, x);
-                vPrev = n * x;
-                s += step;
-            }
+            const bool done = walkSeed(
+                seg, lim,
+                [&](const SeedStep& step) {
+                    accels.push_back((step.direction * step.speed - step.previousVelocity) *
+                                     step.speed / step.length);
+                    steps.emplace_back(step.s, step.speed);
+                },
+                cancel);
+            if (!done) return cancelledDiagnostics();
             for (std::size_t k = 0; k < steps.size(); ++k) {
                 out.s.push_back(offset + steps[k].first);
                 out.speed.push_back(steps[k].second);

@@ -43,15 +43,20 @@ struct TimingResult {
     double lengthMm = 0.0;
     std::vector<SegmentTiming> segments;
     /// Optimal (and exact stop on arcs): grid points of the finest resolution used, and the
-    /// relative change from the previous resolution.
+    /// relative change from the previous resolution. A resolution asks for N = 4096·2^k points
+    /// and rounds each segment's share up to whole intervals, at least two, so it has N to
+    /// N + 2·segments points.
     std::size_t gridPoints = 0;
     double convergence = 0.0;
 };
 
 /// @brief Total time by the chosen method; every segment starts and ends at rest for seed and
-/// exact stop; optimal stops only at corners (tangent breaks) and at both ends of the path.
-/// If `cancel` is given it is polled between passes and segments; a cancelled computation
-/// returns the error {"", "cancelled"}.
+/// exact stop; optimal stops only at corners (tangent breaks above kTangentToleranceDeg) and at
+/// both ends of the path. Optimal (and exact stop on arcs) plans on a grid of 4096 points and
+/// doubles it until two resolutions agree to 1e-6 relative (or 2^24 points).
+/// If `cancel` is given it is polled within every loop (segments, seed steps, grid points), so a
+/// cancel is honoured within about a millisecond; a cancelled computation returns the error
+/// {"", "cancelled"}.
 [[nodiscard]] Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& limits,
                                                  TimingMethod method,
                                                  const std::atomic<bool>* cancel = nullptr);
@@ -77,11 +82,13 @@ struct OptimalProfile {
 /// parameter s (mm), the speed (mm/s) and each axis' acceleration (mm/s²) over the interval that
 /// starts there. Optimal and exact stop come from the planner on a grid of about `points` points
 /// (exact stop plans every segment alone, rest to rest); seed gives its steps, braking mirrored.
+/// Polls `cancel` like machiningTime and returns {"", "cancelled"} when it is set.
 struct TimingProfile {
     std::vector<double> s, speed;
     std::vector<Eigen::Vector3d> accel;
 };
-[[nodiscard]] TimingProfile timingProfile(const ToolPath& path, const MachineLimits& limits,
-                                          TimingMethod method, std::size_t points);
+[[nodiscard]] Result<TimingProfile> timingProfile(const ToolPath& path, const MachineLimits& limits,
+                                                  TimingMethod method, std::size_t points,
+                                                  const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace cam

@@ -6,6 +6,8 @@
 
 #include "analysis/analysis.h"
 #include "common/angles.h"
+#include "common/cancel.h"
+#include "project/validate.h"
 #include "spline/biarc.h"
 
 namespace cam {
@@ -218,24 +220,61 @@ std::optional<PathSegment> offsetPiece(const PathSegment& s, double rho) {
     return PathSegment::arc(s.center, radius, s.startAngle, s.sweep, s.start.z());
 }
 
+/// Where p lies along `piece`: its distance from the start along the piece, mm (on an arc,
+/// measured in the sweep's direction, in [0, 2πR)).
+double distanceAlong(const PathSegment& piece, const Vec2& p) {
+    if (piece.kind == PathSegment::Kind::Line) {
+        return (p - xy(piece.start)).dot(xy(piece.end - piece.start).normalized());
+    }
+    const Vec2 from(std::cos(piece.startAngle), std::sin(piece.startAngle));
+    const Vec2 to = (p - piece.center).normalized();
+    double angle = std::atan2(cross(from, to), from.dot(to));  // (-π, π]
+    if (piece.sweep < 0) angle = -angle;
+    if (angle < 0) angle += kTwoPi;
+    return angle * piece.radius;
+}
+
+/// Trimming at a concave corner may only shorten a piece within its own extent and direction.
+/// An arc whose sweep changed sign, wrapped or grew, or a line that runs backwards or past its
+/// ends, is what a tool too large for the piece gives: the trims of its two ends cross.
+bool trimmedWithin(const PathSegment& original, const PathSegment& trimmed) {
+    const double length = original.length();
+    const double eps = 1e-9 * std::max(1.0, length);
+    double a = distanceAlong(original, xy(trimmed.start));
+    double b = distanceAlong(original, xy(trimmed.end));
+    if (original.kind == PathSegment::Kind::Arc) {
+        // A point a hair before the start reads as almost a full turn; a hair after the end of
+        // an almost full arc as almost zero.
+        const double turn = kTwoPi * original.radius;
+        if (a > turn - eps) a -= turn;
+        if (b < eps && length > turn - eps) b += turn;
+    }
+    const bool sameSense =
+        original.kind == PathSegment::Kind::Line || (trimmed.sweep > 0) == (original.sweep > 0);
+    return sameSense && a >= -eps && b <= length + eps && b - a >= 1e-9 &&
+           std::abs((b - a) - trimmed.length()) <= eps;
+}
+
 }  // namespace
 
-Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) {
+Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius,
+                                     const std::atomic<bool>* cancel) {
     Diagnostics errors;
     const std::size_t n = contour.size();
     // Per contour segment, its offset pieces (one, or a spline's biarcs).
     std::vector<std::vector<PathSegment>> offset(n);
     std::vector<ContourFrame> starts, ends;
     for (std::size_t k = 0; k < n; ++k) {
+        if (cancelRequested(cancel)) return cancelledDiagnostics();
         const ContourSegment& seg = contour.segment(k);
         const ContourFrame a = frameAt(seg, seg.phiStart), b = frameAt(seg, seg.phiEnd);
         starts.push_back(a);
         ends.push_back(b);
-        const std::string at = "contour[" + std::to_string(k) + "]";
+        const std::string at = segmentLocation(k);
         if (isSpline(seg.type)) {
             // Tangent arc pairs within 0.1 µm: lines and arcs for the planner, G1 throughout.
             for (const PathSegment& piece :
-                 biarcsOf(CubicBezier{seg.bezierKernel.p}, kSplineToleranceMm)) {
+                 biarcsOf(CubicBezier{seg.bezierKernel.p}, kSplineToleranceMm, 0.0, cancel)) {
                 const auto shifted = offsetPiece(piece, toolRadius);
                 if (!shifted) {
                     errors.push_back({at, "the tool radius " + formatNumber(toolRadius) +
@@ -275,6 +314,8 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         const double sweep = fullTurn ? direction * kTwoPi : sweepFrom(wa, wb, direction);
         offset[k].push_back(PathSegment::arc(c, radius, std::atan2(wa.y(), wa.x()), sweep, 0.0));
     }
+    // Biarcs stop early when cancelled: never hand out a path built from them.
+    if (cancelRequested(cancel)) return cancelledDiagnostics();
     if (!errors.empty()) return errors;
     ToolPath path;
     if (toolRadius == 0.0 || n == 1) {
@@ -287,6 +328,7 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
     std::vector<std::vector<PathSegment>> joined = offset;
     std::vector<std::optional<PathSegment>> cornerArcs(n);
     for (std::size_t k = 0; k < n; ++k) {
+        if (cancelRequested(cancel)) return cancelledDiagnostics();
         const std::size_t next = (k + 1) % n;
         const ContourFrame& left = ends[k];
         const ContourFrame& right = starts[next];
@@ -296,8 +338,7 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         // of 1e-8 rad as a corner would intersect two nearly tangent offsets, which moves the
         // joint by sqrt(2Rδ) and tilts both tangents.
         if (std::abs(turn) <= degToRad(kTangentToleranceDeg)) continue;
-        const std::string at =
-            "contour[" + std::to_string(k) + "]/contour[" + std::to_string(next) + "]";
+        const std::string at = segmentLocation(k) + "/" + segmentLocation(next);
         if (turn > 0) {
             // Convex corner: the tool rolls around the corner point.
             const Vec2 na = left.normal;
@@ -319,14 +360,13 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius) 
         moveStart(joined[next].front(), *best);
     }
     for (std::size_t k = 0; k < n; ++k) {
+        if (cancelRequested(cancel)) return cancelledDiagnostics();
         for (std::size_t i = 0; i < joined[k].size(); ++i) {
-            const PathSegment& j = joined[k][i];
-            const PathSegment& o = offset[k][i];
-            if (j.length() < 1e-9 || (j.kind == PathSegment::Kind::Line &&
-                                      (xy(j.end - j.start)).dot(xy(o.end - o.start)) <= 0)) {
-                errors.push_back({"contour[" + std::to_string(k) + "]",
+            if (!trimmedWithin(offset[k][i], joined[k][i])) {
+                errors.push_back({segmentLocation(k),
                                   "the tool radius " + formatNumber(toolRadius) +
-                                      " mm is too large for this segment: its offset vanishes"});
+                                      " mm is too large here: at its concave corners the offset of "
+                                      "this segment would have to be trimmed beyond its ends"});
                 break;
             }
         }

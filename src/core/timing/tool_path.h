@@ -3,6 +3,7 @@
 /// @brief A 3D tool path of straight lines and circular arcs (arcs lie in a plane z = const).
 
 #include <Eigen/Core>
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -61,7 +62,10 @@ inline constexpr double kSplineToleranceMm = 1e-4;
 /// contour offset outwards by `toolRadius` (arcs stay arcs, lines stay lines; a spline becomes
 /// tangent arc pairs within kSplineToleranceMm), joined at corners by an arc around the corner
 /// (convex) or trimmed to the offsets' intersection (concave). A radius that makes an offset
-/// degenerate is an error naming the segment.
-[[nodiscard]] Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius);
+/// degenerate, or so large that a concave corner would trim a segment's offset beyond its ends,
+/// is an error naming the segment (`contour[k]`). If `cancel` is given it is polled per segment
+/// and per biarc; a cancelled computation returns the error {"", "cancelled"}.
+[[nodiscard]] Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius,
+                                                   const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace cam
