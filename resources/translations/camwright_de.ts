@@ -1,997 +1,373 @@
 <?xml version='1.0' encoding='utf-8'?>
-<!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="6" />
+        <location filename="../../ui/mainwindow.ui" line="+6" />
         <source>Camwright</source>
         <translation>Camwright</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="10" />
+        <location line="+4" />
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="11" />
+        <location line="+1" />
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="12" />
+        <location line="+1" />
         <source>&amp;Examples</source>
         <translation>&amp;Beispiele</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="16" />
+        <location line="+4" />
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="19" />
+        <location line="+3" />
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="22" />
+        <location line="+3" />
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="26" />
+        <location line="+4" />
         <source>Main Toolbar</source>
         <translation>Hauptwerkzeugleiste</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="35" />
+        <location line="+9" />
         <source>Segments</source>
         <translation>Segmente</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="42" />
+        <location line="+7" />
         <source>Motion</source>
         <translation>Bewegung</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="47" />
+        <location line="+5" />
         <source>Joints</source>
         <translation>Übergänge</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="52" />
+        <location line="+5" />
         <source>Path Study</source>
         <translation>Bahnstudie</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="57" />
+        <location line="+5" />
         <source>Machining</source>
         <translation>Bearbeitung</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="62" />
+        <location line="+5" />
         <source>State at Cursor</source>
         <translation>Zustand am Cursor</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="66" />
+        <location line="+4" />
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="66" />
+        <location line="+0" />
         <source>Start a new project</source>
         <translation>Ein neues Projekt beginnen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="67" />
+        <location line="+1" />
         <source>&amp;Open…</source>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="67" />
+        <location line="+0" />
         <source>Open a .cam.json project</source>
         <translation>Ein .cam.json-Projekt öffnen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="68" />
+        <location line="+1" />
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="68" />
+        <location line="+0" />
         <source>Save the project</source>
         <translation>Das Projekt speichern</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="69" />
+        <location line="+1" />
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter…</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="69" />
+        <location line="+0" />
         <source>Save the project under a new name</source>
         <translation>Das Projekt unter neuem Namen speichern</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="70" />
+        <location line="+1" />
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="70" />
+        <location line="+0" />
         <source>Quit Camwright</source>
         <translation>Camwright beenden</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="71" />
+        <location line="+1" />
         <source>&amp;Insert Segment</source>
         <translation>Segment &amp;einfügen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="71" />
+        <location line="+0" />
         <source>Insert a segment after the selected one</source>
         <translation>Ein Segment nach dem ausgewählten einfügen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="72" />
+        <location line="+1" />
         <source>&amp;Delete Segment</source>
         <translation>Segment &amp;löschen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="72" />
+        <location line="+0" />
         <source>Delete the selected segment</source>
         <translation>Das ausgewählte Segment löschen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="73" />
+        <location line="+1" />
         <source>Move &amp;Up</source>
         <translation>Nach &amp;oben</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="73" />
+        <location line="+0" />
         <source>Move the selected segment up</source>
         <translation>Das ausgewählte Segment nach oben verschieben</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="74" />
+        <location line="+1" />
         <source>Move Do&amp;wn</source>
         <translation>Nach &amp;unten</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="74" />
+        <location line="+0" />
         <source>Move the selected segment down</source>
         <translation>Das ausgewählte Segment nach unten verschieben</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="75" />
+        <location line="+1" />
         <source>&amp;Fit Windows</source>
         <translation>Fenster &amp;anpassen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="75" />
+        <location line="+0" />
         <source>Set every window boundary to where its neighbours meet</source>
         <translation>Jede Fenstergrenze auf den Treffpunkt der Nachbarn setzen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="76" />
+        <location line="+1" />
         <source>&amp;Time Axis</source>
         <translation>&amp;Zeitachse</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="76" />
+        <location line="+0" />
         <source>Plot over time instead of angle</source>
         <translation>Über der Zeit statt über dem Winkel auftragen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="77" />
+        <location line="+1" />
         <source>&amp;Reset Zoom</source>
         <translation>Zoom &amp;zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="77" />
+        <location line="+0" />
         <source>Fit the contour and the plots into view</source>
         <translation>Kontur und Diagramme einpassen</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="78" />
+        <location line="+1" />
         <source>&amp;About Camwright</source>
         <translation>Ü&amp;ber Camwright</translation>
     </message>
     <message>
-        <location filename="../../ui/mainwindow.ui" line="78" />
+        <location line="+0" />
         <source>About Camwright</source>
         <translation>Über Camwright</translation>
-    </message>
-</context>
-<context>
-    <name>cam::SegmentTableModel</name>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="88" />
-        <location filename="../../src/app/models/arc_table_model.cpp" line="133" />
-        <source>Arc</source>
-        <translation>Bogen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="88" />
-        <location filename="../../src/app/models/arc_table_model.cpp" line="133" />
-        <source>Line</source>
-        <translation>Gerade</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="88" />
-        <location filename="../../src/app/models/arc_table_model.cpp" line="133" />
-        <source>Bézier</source>
-        <translation>Bézier</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="88" />
-        <location filename="../../src/app/models/arc_table_model.cpp" line="133" />
-        <source>Hermite</source>
-        <translation>Hermite</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="89" />
-        <location filename="../../src/app/models/arc_table_model.cpp" line="145" />
-        <source>outer</source>
-        <translation>außen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="89" />
-        <location filename="../../src/app/models/arc_table_model.cpp" line="145" />
-        <source>inner</source>
-        <translation>innen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="96" />
-        <source>outer: far intersection of the ray with the circle; inner: near intersection</source>
-        <translation>außen: ferner Schnittpunkt des Strahls mit dem Kreis (r_oben); innen: naher Schnittpunkt (r_unten)</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="100" />
-        <source>This segment's window follows its end points</source>
-        <translation>Das Fenster dieses Segments folgt seinen Endpunkten</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="101" />
-        <source>Polar window of this segment, degrees</source>
-        <translation>Polares Fenster dieses Segments, Grad</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="107" />
-        <source>Drag the handles in the contour view to shape the curve.</source>
-        <translation>Die Griffe in der Konturansicht ziehen, um die Kurve zu formen.</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="171" />
-        <source>Centre of the arc's circle, mm</source>
-        <translation>Mittelpunkt des Kreises, mm</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="173" />
-        <source>Radius of the arc, mm</source>
-        <translation>Radius des Bogens, mm</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="178" />
-        <source>End points of the line, mm (counter-clockwise around the centre)</source>
-        <translation>Endpunkte der Geraden, mm (gegen den Uhrzeigersinn um das Drehzentrum)</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="181" />
-        <source>Polar window [φ start, φ end), degrees</source>
-        <translation>Polares Fenster [φ Anfang, φ Ende), Grad</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="189" />
-        <source>Type</source>
-        <translation>Typ</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="191" />
-        <source>Centre x [mm]</source>
-        <translation>Mittelpunkt x [mm]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="193" />
-        <source>Centre y [mm]</source>
-        <translation>Mittelpunkt y [mm]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="195" />
-        <source>Radius [mm]</source>
-        <translation>Radius [mm]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="197" />
-        <source>Branch</source>
-        <translation>Zweig</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="199" />
-        <source>From x [mm]</source>
-        <translation>Von x [mm]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="201" />
-        <source>From y [mm]</source>
-        <translation>Von y [mm]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="203" />
-        <source>To x [mm]</source>
-        <translation>Bis x [mm]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="205" />
-        <source>To y [mm]</source>
-        <translation>Bis y [mm]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="207" />
-        <source>φ start [°]</source>
-        <translation>φ Anfang [°]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="209" />
-        <source>φ end [°]</source>
-        <translation>φ Ende [°]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/models/arc_table_model.cpp" line="346" />
-        <source>Edit %1 of segment %2</source>
-        <translation>%1 von Segment %2 ändern</translation>
     </message>
 </context>
 <context>
     <name>cam::Commands</name>
     <message>
-        <location filename="../../src/app/document/commands.cpp" line="32" />
+        <location filename="../../src/app/document/commands.cpp" line="+32" />
         <source>Insert segment</source>
         <translation>Segment einfügen</translation>
     </message>
     <message>
-        <location filename="../../src/app/document/commands.cpp" line="41" />
+        <location line="+9" />
         <source>Delete segment</source>
         <translation>Segment löschen</translation>
     </message>
     <message>
-        <location filename="../../src/app/document/commands.cpp" line="50" />
+        <location line="+9" />
         <source>Move segment</source>
         <translation>Segment verschieben</translation>
     </message>
     <message>
-        <location filename="../../src/app/document/commands.cpp" line="69" />
+        <location line="+19" />
         <source>Change speed</source>
         <translation>Drehzahl ändern</translation>
     </message>
     <message>
-        <location filename="../../src/app/document/commands.cpp" line="74" />
+        <location line="+5" />
         <source>Change samples per turn</source>
         <translation>Abtastpunkte je Umdrehung ändern</translation>
     </message>
     <message>
-        <location filename="../../src/app/document/commands.cpp" line="79" />
+        <location line="+5" />
         <source>Change machining limits</source>
         <translation>Bearbeitungsgrenzen ändern</translation>
     </message>
 </context>
 <context>
-    <name>cam::ContourView</name>
+    <name>cam::ContourDialogs</name>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="18" />
-        <source>x [mm]</source>
-        <translation>x [mm]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="19" />
-        <source>y [mm]</source>
-        <translation>y [mm]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="29" />
-        <source>Wheel: zoom · drag: pan · drag a square/diamond handle: move the centre or change the radius of the selected arc</source>
-        <translation>Mausrad: zoomen · Ziehen: verschieben · Griff ziehen: Mittelpunkt verschieben oder Radius des ausgewählten Bogens ändern</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="43" />
-        <source>centres</source>
-        <translation>Mittelpunkte</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="47" />
-        <source>joints</source>
-        <translation>Übergänge</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="99" />
-        <source>segment %1</source>
-        <translation>Segment %1</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="260" />
-        <source>Shape segment %1</source>
-        <translation>Segment %1 formen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="263" />
-        <source>Move centre of segment %1</source>
-        <translation>Mittelpunkt von Segment %1 verschieben</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="267" />
-        <source>Change radius of segment %1</source>
-        <translation>Radius von Segment %1 ändern</translation>
-    </message>
-</context>
-<context>
-    <name>cam::JointsPanel</name>
-    <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="12" />
-        <source>Joint</source>
-        <translation>Übergang</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="12" />
-        <source>φ [°]</source>
-        <translation>φ [°]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="12" />
-        <source>Kinematic</source>
-        <translation>Kinematisch</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="12" />
-        <source>Geometric</source>
-        <translation>Geometrisch</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="13" />
-        <source>Tangent break [°]</source>
-        <translation>Tangentenknick [°]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="13" />
-        <source>Δa_r [mm/s²]</source>
-        <translation>Δa_r [mm/s²]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="13" />
-        <source>Δ(d²P/dφ²) rel.</source>
-        <translation>Δ(d²P/dφ²) rel.</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="15" />
-        <source>Continuity in φ, as the follower feels it: C0 position, C1 velocity, C2 acceleration</source>
-        <translation>Stetigkeit in φ, wie der Stößel sie spürt: C0 Lage, C1 Geschwindigkeit, C2 Beschleunigung</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="17" />
-        <source>Continuity in each curve's own parameter: G1 is a continuous direction whose derivative jumps in length</source>
-        <translation>Stetigkeit im eigenen Parameter jeder Kurve: G1 ist eine stetige Richtung, deren Ableitung in der Länge springt</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="19" />
-        <source>Jump of the radial acceleration at the joint</source>
-        <translation>Sprung der Radialbeschleunigung am Übergang</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="25" />
-        <source>Click a joint to put the cursor there</source>
-        <translation>Einen Übergang anklicken, um den Cursor dorthin zu setzen</translation>
-    </message>
-</context>
-<context>
-    <name>cam::KinematicsPlots</name>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="15" />
-        <source>Velocity [mm/s]</source>
-        <translation>Geschwindigkeit [mm/s]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="15" />
-        <source>Acceleration [mm/s²]</source>
-        <translation>Beschleunigung [mm/s²]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="16" />
-        <source>Jerk [mm/s³]</source>
-        <translation>Ruck [mm/s³]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="17" />
-        <source>v_r</source>
-        <translation>v_r</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="17" />
-        <source>v_φ</source>
-        <translation>v_φ</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="17" />
-        <source>|v|</source>
-        <translation>|v|</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="18" />
-        <source>a_r</source>
-        <translation>a_r</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="18" />
-        <source>a_φ</source>
-        <translation>a_φ</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="18" />
-        <source>|a|</source>
-        <translation>|a|</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="19" />
-        <source>j_r</source>
-        <translation>j_r</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="19" />
-        <source>j_φ</source>
-        <translation>j_φ</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="19" />
-        <source>|j|</source>
-        <translation>|j|</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="96" />
-        <source>φ [°]</source>
-        <translation>φ [°]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="96" />
-        <source>t [s]</source>
-        <translation>t [s]</translation>
-    </message>
-</context>
-<context>
-    <name>cam::MachiningPanel</name>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="48" />
-        <source>Add Machining Limits</source>
-        <translation>Bearbeitungsgrenzen hinzufügen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="50" />
-        <source>This project has no machining limits yet: add sensible defaults</source>
-        <translation>Dieses Projekt hat noch keine Bearbeitungsgrenzen: sinnvolle Vorgaben hinzufügen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="57" />
-        <source>Acceleration</source>
-        <translation>Beschleunigung</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="60" />
-        <source>Acceleration limit of the %1 axis</source>
-        <translation>Beschleunigungsgrenze der %1-Achse</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="61" />
-        <source>none</source>
-        <translation>keine</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="64" />
-        <source>Velocity</source>
-        <translation>Geschwindigkeit</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="65" />
-        <source>Limit the velocity of each axis</source>
-        <translation>Die Geschwindigkeit jeder Achse begrenzen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="69" />
-        <source>Velocity limit of the %1 axis</source>
-        <translation>Geschwindigkeitsgrenze der %1-Achse</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="72" />
-        <source>Feed ceiling along the path</source>
-        <translation>Höchster Vorschub entlang der Bahn</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="74" />
-        <source>Radius of the tool: the path is the contour offset by it</source>
-        <translation>Werkzeugradius: die Bahn ist die um ihn versetzte Kontur</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="76" />
-        <source>Step of the seed method</source>
-        <translation>Schrittweite des Ausgangsverfahrens</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="77" />
-        <source>Feed</source>
-        <translation>Vorschub</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="79" />
-        <source>Tool radius</source>
-        <translation>Werkzeugradius</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="81" />
-        <source>Seed step</source>
-        <translation>Schrittweite</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="85" />
-        <location filename="../../src/app/views/machining_panel.cpp" line="93" />
-        <source>Seed</source>
-        <translation>Ausgangsverfahren</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="85" />
-        <location filename="../../src/app/views/machining_panel.cpp" line="93" />
-        <source>Exact stop</source>
-        <translation>Genauhalt</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="85" />
-        <location filename="../../src/app/views/machining_panel.cpp" line="93" />
-        <source>Optimal</source>
-        <translation>Zeitoptimal</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="87" />
-        <source>The method whose feed and accelerations are plotted</source>
-        <translation>Das Verfahren, dessen Vorschub und Beschleunigungen gezeigt werden</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="88" />
-        <source>Plot</source>
-        <translation>Diagramm</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="95" />
-        <source>The seed document's 1 mm steps from rest to mid-segment, doubled: a legacy estimate that ignores the speed rising within a step</source>
-        <translation>Die 1-mm-Schritte des Ausgangsdokuments aus dem Stillstand bis zur Segmentmitte, verdoppelt: eine alte Abschätzung, die den Geschwindigkeitsanstieg innerhalb eines Schritts übergeht</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="97" />
-        <source>Rest to rest on every segment</source>
-        <translation>Auf jedem Segment aus dem Stillstand in den Stillstand</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="98" />
-        <source>Minimum time along the whole path, stopping only at corners</source>
-        <translation>Kürzeste Zeit entlang der ganzen Bahn, Halt nur an Ecken</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="112" />
-        <location filename="../../src/app/views/machining_panel.cpp" line="114" />
-        <source>path [mm]</source>
-        <translation>Bahn [mm]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="112" />
-        <source>feed [mm/s]</source>
-        <translation>Vorschub [mm/s]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="114" />
-        <source>axis accel. [mm/s²]</source>
-        <translation>Achsbeschl. [mm/s²]</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="183" />
-        <location filename="../../src/app/views/machining_panel.cpp" line="191" />
-        <source>Computing…</source>
-        <translation>Wird berechnet …</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="185" />
-        <source>Machining times need the machine's axis limits.</source>
-        <translation>Bearbeitungszeiten brauchen die Achsgrenzen der Maschine.</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="198" />
-        <source>No machining time: %1</source>
-        <translation>Keine Bearbeitungszeit: %1</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="213" />
-        <source>Path %1 mm (contour offset by the tool radius); optimal plan on %2 grid points; computed in %3 ms</source>
-        <translation>Bahn %1 mm (Kontur um den Werkzeugradius versetzt); zeitoptimaler Plan auf %2 Gitterpunkten; berechnet in %3 ms</translation>
-    </message>
-</context>
-<context>
-    <name>cam::MainWindow</name>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="50" />
-        <source>Camwright projects (*.cam.json)</source>
-        <translation>Camwright-Projekte (*.cam.json)</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="56" />
-        <source>… and %1 more</source>
-        <translation>… und %1 weitere</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="179" />
-        <source>Machining limits and times (Ctrl+M)</source>
-        <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="195" />
-        <source>&amp;Undo</source>
-        <translation>&amp;Rückgängig</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="197" />
-        <source>&amp;Redo</source>
-        <translation>&amp;Wiederholen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="216" />
-        <source>Approximate Arc by &amp;Béziers…</source>
-        <translation>Bogen durch &amp;Béziers annähern …</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="219" />
-        <source>Replace the selected arc by cubic Bézier pieces within a radial error you give</source>
-        <translation>Den ausgewählten Bogen durch kubische Bézierstücke innerhalb einer vorgegebenen Radialabweichung ersetzen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="222" />
-        <source>New Contour Through &amp;Points…</source>
-        <translation>Neue Kontur durch &amp;Punkte …</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="224" />
-        <source>A closed Bézier spline through teach-in points, with automatic handles</source>
-        <translation>Ein geschlossener Bézierspline durch Teach-in-Punkte mit automatischen Griffen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="229" />
+        <location filename="../../src/app/dialogs/contour_dialogs.cpp" line="+46" />
         <source>New Contour Through Points</source>
         <translation>Neue Kontur durch Punkte</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="232" />
+        <location line="+4" />
         <source>x, y per line, in mm, counter-clockwise around the rotation centre</source>
         <translation>x, y je Zeile, in mm, gegen den Uhrzeigersinn um das Drehzentrum</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="236" />
+        <location line="+3" />
         <source>Chord</source>
         <translation>Sehne</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="236" />
+        <location line="+0" />
         <source>Circumcircle</source>
         <translation>Umkreis</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="236" />
+        <location line="+0" />
         <source>Oval</source>
         <translation>Oval</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="243" />
+        <location line="+5" />
         <source>Points</source>
         <translation>Punkte</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="244" />
+        <location line="+1" />
         <source>Handle rule</source>
         <translation>Griffregel</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="245" />
+        <location line="+1" />
         <source>Bulge factor</source>
         <translation>Wölbungsfaktor</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="254" />
-        <source>&amp;Round Corner…</source>
-        <translation>Ecke &amp;verrunden …</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="258" />
-        <source>Replace the corner before the selected segment by a tangent switch arc</source>
-        <translation>Die Ecke vor dem ausgewählten Segment durch einen tangentialen Schaltbogen ersetzen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="264" />
-        <location filename="../../src/app/mainwindow.cpp" line="271" />
-        <location filename="../../src/app/mainwindow.cpp" line="277" />
-        <location filename="../../src/app/mainwindow.cpp" line="283" />
+        <location line="+9" />
         <source>Round Corner</source>
         <translation>Ecke verrunden</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="265" />
-        <location filename="../../src/app/mainwindow.cpp" line="641" />
-        <source>Select the segment after the corner to round.</source>
-        <translation>Das Segment nach der zu verrundenden Ecke auswählen.</translation>
+        <location line="+1" />
+        <source>Radius of the switch arc (below %1 mm fits):</source>
+        <translation>Radius des Umschaltbogens (unter %1 mm passt):</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="278" />
-        <source>Radius of the switch arc [mm] (below %1 mm fits):</source>
-        <translation>Radius des Schaltbogens [mm] (unter %1 mm passt):</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="288" />
+        <location line="+6" />
         <source>Approximate Arc by Béziers</source>
         <translation>Bogen durch Béziers annähern</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="289" />
-        <source>Admissible radial error [mm]:</source>
-        <translation>Zulässige Radialabweichung [mm]:</translation>
+        <location line="+0" />
+        <source>Admissible radial error:</source>
+        <translation>Zulässiger radialer Fehler:</translation>
     </message>
+</context>
+<context>
+    <name>cam::ContourEdits</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="292" />
-        <source>Approximate Arc</source>
-        <translation>Bogen annähern</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="303" />
-        <source>About Camwright</source>
-        <translation>Über Camwright</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="304" />
-        <source>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Design and inspect cam contours: exact polar kinematics of the follower.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="318" />
+        <location filename="../../src/app/document/contour_edits.cpp" line="+16" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="335" />
-        <source>%1 cannot be opened:
-%2</source>
-        <translation>%1 kann nicht geöffnet werden:
-%2</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="340" />
-        <source>Opened %1</source>
-        <translation>%1 geöffnet</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="348" />
-        <location filename="../../src/app/mainwindow.cpp" line="355" />
-        <source>Open Project</source>
-        <translation>Projekt öffnen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="360" />
-        <source>The project has problems; fix them before saving (a file with these problems could not be opened again):
-%1</source>
-        <translation>Das Projekt hat Fehler; bitte vor dem Speichern beheben (eine Datei mit diesen Fehlern ließe sich nicht wieder öffnen):
-%1</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="370" />
-        <source>%1 could not be written: %2</source>
-        <translation>%1 konnte nicht geschrieben werden: %2</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="375" />
-        <source>Saved %1</source>
-        <translation>%1 gespeichert</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="382" />
-        <location filename="../../src/app/mainwindow.cpp" line="396" />
-        <source>Save Project</source>
-        <translation>Projekt speichern</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="387" />
-        <source>Save Project As</source>
-        <translation>Projekt speichern unter</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="403" />
-        <source>Unsaved Changes</source>
-        <translation>Ungespeicherte Änderungen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="404" />
-        <source>%1 has unsaved changes. Save them?</source>
-        <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="463" />
-        <source>Open Example</source>
-        <translation>Beispiel öffnen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="487" />
-        <source>not computed: the project has problems</source>
-        <translation>nicht berechnet: das Projekt hat Fehler</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="497" />
-        <source>%1 samples computed in %2 ms</source>
-        <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="557" />
-        <source>Valid · 1 segment</source>
-        <translation>Gültig · 1 Segment</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="558" />
-        <source>Valid · %1 segments</source>
-        <translation>Gültig · %1 Segmente</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="563" />
-        <source>1 problem: </source>
-        <translation>1 Fehler: </translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="563" />
-        <source>%1 problems: </source>
-        <translation>%1 Fehler: </translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="571" />
-        <source>%1[*] — Camwright</source>
-        <translation>%1[*] — Camwright</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="591" />
+        <location line="+24" />
         <source>Insert segment</source>
         <translation>Segment einfügen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="593" />
+        <location line="+1" />
         <source>Split window</source>
         <translation>Fenster teilen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="629" />
-        <source>line %1: expected "x, y" (got "%2")</source>
-        <translation>Zeile %1: erwartet "x, y" (erhalten "%2")</translation>
+        <location line="+8" />
+        <source>Select the segment to delete first.</source>
+        <translation>Wählen Sie zuerst das zu löschende Segment.</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="636" />
-        <source>New contour through points</source>
-        <translation>Neue Kontur durch Punkte</translation>
+        <location line="+10" />
+        <source>The segment cannot move further.</source>
+        <translation>Das Segment kann nicht weiter verschoben werden.</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="646" />
+        <location line="+10" />
+        <source>The windows already fit.</source>
+        <translation>Die Fenster passen bereits.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Fit windows</source>
+        <translation>Fenster anpassen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Windows fitted to the joints.</source>
+        <translation>Fenster an die Stoßstellen angepasst.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Select the segment after the corner to round.</source>
+        <translation>Das Segment nach der zu verrundenden Ecke auswählen.</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Round corner</source>
         <translation>Ecke verrunden</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="648" />
+        <location line="+2" />
         <source>Corner rounded with a %1 mm switch arc</source>
         <translation>Ecke mit einem Schaltbogen von %1 mm verrundet</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="653" />
+        <location line="+4" />
         <source>Select the arc to approximate first.</source>
         <translation>Zuerst den anzunähernden Bogen auswählen.</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="659" />
+        <location line="+6" />
         <source>Approximate arc by Béziers</source>
         <translation>Bogen durch Béziers annähern</translation>
     </message>
     <message numerus="yes">
-        <location filename="../../src/app/mainwindow.cpp" line="660" />
+        <location line="+2" />
         <source>%n Bézier piece(s): radial error %1 mm, end/middle speed ratio %2</source>
         <translation>
             <numerusform>%n Bézierstück: Radialabweichung %1 mm, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform>
@@ -999,72 +375,528 @@
         </translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="671" />
+        <location line="+17" />
+        <source>New contour through points</source>
+        <translation>Neue Kontur durch Punkte</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2" />
+        <source>New contour through %n point(s)</source>
+        <translation>
+            <numerusform>Neue Kontur durch %n Punkt</numerusform>
+            <numerusform>Neue Kontur durch %n Punkte</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>cam::ContourView</name>
+    <message>
+        <location filename="../../src/app/views/contour_view.cpp" line="+18" />
+        <source>x [mm]</source>
+        <translation>x [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>y [mm]</source>
+        <translation>y [mm]</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Wheel: zoom · drag: pan · drag a square/diamond handle: move the centre or change the radius of the selected arc</source>
+        <translation>Mausrad: zoomen · Ziehen: verschieben · Griff ziehen: Mittelpunkt verschieben oder Radius des ausgewählten Bogens ändern</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>centres</source>
+        <translation>Mittelpunkte</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>joints</source>
+        <translation>Übergänge</translation>
+    </message>
+    <message>
+        <location line="+52" />
+        <source>segment %1</source>
+        <translation>Segment %1</translation>
+    </message>
+    <message>
+        <location line="+154" />
+        <location line="+8" />
+        <source>Shape segment %1</source>
+        <translation>Segment %1 formen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Move centre of segment %1</source>
+        <translation>Mittelpunkt von Segment %1 verschieben</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Change radius of segment %1</source>
+        <translation>Radius von Segment %1 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>cam::JointsPanel</name>
+    <message>
+        <location filename="../../src/app/views/joints_panel.cpp" line="+13" />
+        <source>Joint</source>
+        <translation>Übergang</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>φ [°]</source>
+        <translation>φ [°]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Kinematic</source>
+        <translation>Kinematisch</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Geometric</source>
+        <translation>Geometrisch</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tangent break [°]</source>
+        <translation>Tangentenknick [°]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Δa_r [mm/s²]</source>
+        <translation>Δa_r [mm/s²]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Δ(d²P/dφ²) rel.</source>
+        <translation>Δ(d²P/dφ²) rel.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Continuity in φ, as the follower feels it: C0 position, C1 velocity, C2 acceleration</source>
+        <translation>Stetigkeit in φ, wie der Stößel sie spürt: C0 Lage, C1 Geschwindigkeit, C2 Beschleunigung</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Continuity in each curve's own parameter: G1 is a continuous direction whose derivative jumps in length</source>
+        <translation>Stetigkeit im eigenen Parameter jeder Kurve: G1 ist eine stetige Richtung, deren Ableitung in der Länge springt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Jump of the radial acceleration at the joint</source>
+        <translation>Sprung der Radialbeschleunigung am Übergang</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Click a joint to put the cursor there</source>
+        <translation>Einen Übergang anklicken, um den Cursor dorthin zu setzen</translation>
+    </message>
+</context>
+<context>
+    <name>cam::KinematicsPlots</name>
+    <message>
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="+15" />
+        <source>Velocity [mm/s]</source>
+        <translation>Geschwindigkeit [mm/s]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Acceleration [mm/s²]</source>
+        <translation>Beschleunigung [mm/s²]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Jerk [mm/s³]</source>
+        <translation>Ruck [mm/s³]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>v_r</source>
+        <translation>v_r</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>v_φ</source>
+        <translation>v_φ</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>|v|</source>
+        <translation>|v|</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a_r</source>
+        <translation>a_r</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>a_φ</source>
+        <translation>a_φ</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>|a|</source>
+        <translation>|a|</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>j_r</source>
+        <translation>j_r</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>j_φ</source>
+        <translation>j_φ</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>|j|</source>
+        <translation>|j|</translation>
+    </message>
+    <message>
+        <location line="+77" />
+        <source>φ [°]</source>
+        <translation>φ [°]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+</context>
+<context>
+    <name>cam::MachiningPanel</name>
+    <message>
+        <location filename="../../src/app/views/machining_panel.cpp" line="+45" />
+        <source>Add Machining Limits</source>
+        <translation>Bearbeitungsgrenzen hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>This project has no machining limits yet: add sensible defaults</source>
+        <translation>Dieses Projekt hat noch keine Bearbeitungsgrenzen: sinnvolle Vorgaben hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Acceleration</source>
+        <translation>Beschleunigung</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Acceleration limit of the %1 axis</source>
+        <translation>Beschleunigungsgrenze der %1-Achse</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Acceleration limit of the Z axis (none: only X and Y)</source>
+        <translation>Beschleunigungsgrenze der Z-Achse (keine: nur X und Y)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Velocity</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Limit the velocity of each axis</source>
+        <translation>Die Geschwindigkeit jeder Achse begrenzen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Velocity limit of the %1 axis</source>
+        <translation>Geschwindigkeitsgrenze der %1-Achse</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Feed ceiling along the path</source>
+        <translation>Höchster Vorschub entlang der Bahn</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Radius of the tool: the path is the contour offset by it</source>
+        <translation>Werkzeugradius: die Bahn ist die um ihn versetzte Kontur</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Step of the seed method</source>
+        <translation>Schrittweite des Ausgangsverfahrens</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Feed</source>
+        <translation>Vorschub</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Tool radius</source>
+        <translation>Werkzeugradius</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Seed step</source>
+        <translation>Schrittweite</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <location line="+8" />
+        <source>Seed</source>
+        <translation>Ausgangsverfahren</translation>
+    </message>
+    <message>
+        <location line="-8" />
+        <location line="+8" />
+        <source>Exact stop</source>
+        <translation>Genauhalt</translation>
+    </message>
+    <message>
+        <location line="-8" />
+        <location line="+8" />
+        <source>Optimal</source>
+        <translation>Zeitoptimal</translation>
+    </message>
+    <message>
+        <location line="-6" />
+        <source>The method whose feed and accelerations are plotted</source>
+        <translation>Das Verfahren, dessen Vorschub und Beschleunigungen gezeigt werden</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Plot</source>
+        <translation>Diagramm</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The seed document's 1 mm steps from rest to mid-segment, doubled: a legacy estimate that ignores the speed rising within a step</source>
+        <translation>Die 1-mm-Schritte des Ausgangsdokuments aus dem Stillstand bis zur Segmentmitte, verdoppelt: eine alte Abschätzung, die den Geschwindigkeitsanstieg innerhalb eines Schritts übergeht</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Rest to rest on every segment</source>
+        <translation>Auf jedem Segment aus dem Stillstand in den Stillstand</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Minimum time along the whole path, stopping only at corners</source>
+        <translation>Kürzeste Zeit entlang der ganzen Bahn, Halt nur an Ecken</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <location line="+2" />
+        <source>path [mm]</source>
+        <translation>Bahn [mm]</translation>
+    </message>
+    <message>
+        <location line="-2" />
+        <source>feed [mm/s]</source>
+        <translation>Vorschub [mm/s]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>axis accel. [mm/s²]</source>
+        <translation>Achsbeschl. [mm/s²]</translation>
+    </message>
+    <message>
+        <location line="+91" />
+        <location line="+8" />
+        <source>Computing…</source>
+        <translation>Wird berechnet …</translation>
+    </message>
+    <message>
+        <location line="-6" />
+        <source>Machining times need the machine's axis limits.</source>
+        <translation>Bearbeitungszeiten brauchen die Achsgrenzen der Maschine.</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>No machining time: %1</source>
+        <translation>Keine Bearbeitungszeit: %1</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Path %1 mm (contour offset by the tool radius); optimal plan on %2 grid points; computed in %3 ms</source>
+        <translation>Bahn %1 mm (Kontur um den Werkzeugradius versetzt); zeitoptimaler Plan auf %2 Gitterpunkten; berechnet in %3 ms</translation>
+    </message>
+</context>
+<context>
+    <name>cam::MainWindow</name>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" line="+143" />
+        <source>Machining limits and times (Ctrl+M)</source>
+        <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>Approximate Arc by &amp;Béziers…</source>
+        <translation>Bogen durch &amp;Béziers annähern …</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Replace the selected arc by cubic Bézier pieces within a radial error you give</source>
+        <translation>Den ausgewählten Bogen durch kubische Bézierstücke innerhalb einer vorgegebenen Radialabweichung ersetzen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>New Contour Through &amp;Points…</source>
+        <translation>Neue Kontur durch &amp;Punkte …</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>A closed Bézier spline through teach-in points, with automatic handles</source>
+        <translation>Ein geschlossener Bézierspline durch Teach-in-Punkte mit automatischen Griffen</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>New Contour Through Points</source>
+        <translation>Neue Kontur durch Punkte</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&amp;Round Corner…</source>
+        <translation>Ecke &amp;verrunden …</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Replace the corner before the selected segment by a tangent switch arc</source>
+        <translation>Die Ecke vor dem ausgewählten Segment durch einen tangentialen Schaltbogen ersetzen</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+7" />
+        <location line="+4" />
+        <source>Round Corner</source>
+        <translation>Ecke verrunden</translation>
+    </message>
+    <message>
+        <location line="-10" />
+        <source>Select the segment after the corner to round.</source>
+        <translation>Das Segment nach der zu verrundenden Ecke auswählen.</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>Approximate Arc</source>
+        <translation>Bogen annähern</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>About Camwright</source>
+        <translation>Über Camwright</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Design and inspect cam contours: exact polar kinematics of the follower.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</source>
+        <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>not computed: the project has problems</source>
+        <translation>nicht berechnet: das Projekt hat Fehler</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>%1 samples computed in %2 ms</source>
+        <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
+    </message>
+    <message>
+        <location line="+60" />
+        <source>Valid · 1 segment</source>
+        <translation>Gültig · 1 Segment</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Valid · %1 segments</source>
+        <translation>Gültig · %1 Segmente</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>1 problem: </source>
+        <translation>1 Fehler: </translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>%1 problems: </source>
+        <translation>%1 Fehler: </translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>%1[*] — Camwright</source>
+        <translation>%1[*] — Camwright</translation>
+    </message>
+    <message>
+        <location line="-202" />
         <source>Fit Windows</source>
-        <translation>Fenster anpassen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="675" />
-        <source>The windows already fit.</source>
-        <translation>Die Fenster passen bereits.</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow.cpp" line="679" />
-        <source>Fit windows</source>
         <translation>Fenster anpassen</translation>
     </message>
 </context>
 <context>
     <name>cam::MotionPanel</name>
     <message>
-        <location filename="../../src/app/views/motion_panel.cpp" line="24" />
+        <location filename="../../src/app/views/motion_panel.cpp" line="+22" />
         <source>Turning speed; a negative speed turns clockwise</source>
         <translation>Drehzahl; negativ dreht im Uhrzeigersinn</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/motion_panel.cpp" line="27" />
+        <location line="+3" />
         <source>rad/s</source>
         <translation>rad/s</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/motion_panel.cpp" line="27" />
+        <location line="+0" />
         <source>rpm</source>
         <translation>U/min</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/motion_panel.cpp" line="27" />
+        <location line="+0" />
         <source>period [s]</source>
         <translation>Periode [s]</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/motion_panel.cpp" line="32" />
+        <location line="+5" />
         <source>Samples per turn for the plots and exports</source>
         <translation>Abtastpunkte je Umdrehung für Diagramme und Exporte</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/motion_panel.cpp" line="36" />
+        <location line="+4" />
         <source>Speed</source>
         <translation>Drehzahl</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/motion_panel.cpp" line="37" />
+        <location line="+1" />
         <source>Unit</source>
         <translation>Einheit</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/motion_panel.cpp" line="38" />
+        <location line="+1" />
         <source>Samples / turn</source>
         <translation>Punkte / Umdrehung</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/motion_panel.cpp" line="83" />
+        <location line="+46" />
         <source>ω = %1 rad/s · %2 rpm
 T = %3 s</source>
         <translation>ω = %1 rad/s · %2 U/min
 T = %3 s</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/motion_panel.cpp" line="88" />
+        <location line="+5" />
         <source>The speed must not be 0 (and a period must be positive).</source>
         <translation>Die Drehzahl darf nicht 0 sein (und eine Periode muss positiv sein).</translation>
     </message>
@@ -1072,48 +904,48 @@ T = %3 s</translation>
 <context>
     <name>cam::PathStudyPanel</name>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="17" />
+        <location filename="../../src/app/views/path_study_panel.cpp" line="+18" />
         <source>x, y [mm]</source>
         <translation>x, y [mm]</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="17" />
+        <location line="+0" />
         <source>x', y' [mm]</source>
         <translation>x', y' [mm]</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="17" />
+        <location line="+0" />
         <source>x'', y'' [mm]</source>
         <translation>x'', y'' [mm]</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="18" />
+        <location line="+1" />
         <source>quot. − anal.</source>
         <translation>Quot. − anal.</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="23" />
+        <location line="+5" />
         <source>segment parameter t</source>
         <translation>Segmentparameter t</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="37" />
+        <location line="+14" />
         <source> analytic</source>
         <translation> analytisch</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="37" />
+        <location line="+0" />
         <source> quotient</source>
         <translation> Quotient</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="46" />
-        <location filename="../../src/app/views/path_study_panel.cpp" line="52" />
+        <location line="+9" />
+        <location line="+19" />
         <source>The contour has no Bézier or Hermite segment.</source>
         <translation>Die Kontur hat kein Bézier- oder Hermite-Segment.</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="59" />
+        <location line="+7" />
         <source>The contour's splines one after another over their parameter t (piece k runs from k to k + 1). Blue x, red y; lines analytic, circles the difference quotients (step h = %1); at the bottom their difference, solid for the first and dashed for the second derivative.</source>
         <translation>Die Splines der Kontur nacheinander über ihrem Parameter t (Stück k läuft von k bis k + 1). Blau x, rot y; Linien analytisch, Kreise die Differenzenquotienten (Schritt h = %1); unten ihre Differenz, durchgezogen für die erste und gestrichelt für die zweite Ableitung.</translation>
     </message>
@@ -1121,80 +953,318 @@ T = %3 s</translation>
 <context>
     <name>cam::ProjectDocument</name>
     <message>
-        <location filename="../../src/app/document/project_document.cpp" line="16" />
+        <location filename="../../src/app/document/project_document.cpp" line="+16" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <location line="+83" />
+        <source>… and %1 more</source>
+        <translation>… und %1 weitere</translation>
+    </message>
+</context>
+<context>
+    <name>cam::ProjectFiles</name>
+    <message>
+        <location filename="../../src/app/files/project_files.cpp" line="+45" />
+        <source>%1 cannot be opened:
+%2</source>
+        <translation>%1 kann nicht geöffnet werden:
+%2</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Opened %1</source>
+        <translation>%1 geöffnet</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1" />
+        <source>Opened %1 with %n problem(s): listed in the status bar, marked in the table</source>
+        <translation>
+            <numerusform>%1 mit %n Problem geöffnet: in der Statusleiste aufgeführt, in der Tabelle markiert</numerusform>
+            <numerusform>%1 mit %n Problemen geöffnet: in der Statusleiste aufgeführt, in der Tabelle markiert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>%1 cannot be saved:
+%2</source>
+        <translation>%1 kann nicht gespeichert werden:
+%2</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>%1 could not be written: %2</source>
+        <translation>%1 konnte nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1" />
+        <source>Saved %1 with %n problem(s) still to solve</source>
+        <translation>
+            <numerusform>%1 mit %n noch offenen Problem gespeichert</numerusform>
+            <numerusform>%1 mit %n noch offenen Problemen gespeichert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <location line="+7" />
+        <source>Open Project</source>
+        <translation>Projekt öffnen</translation>
+    </message>
+    <message>
+        <location line="-5" />
+        <location line="+20" />
+        <source>Camwright projects (*.cam.json)</source>
+        <translation>Camwright-Projekte (*.cam.json)</translation>
+    </message>
+    <message>
+        <location line="-9" />
+        <location line="+25" />
+        <source>Save Project</source>
+        <translation>Projekt speichern</translation>
+    </message>
+    <message>
+        <location line="-17" />
+        <location line="+7" />
+        <source>Save Project As</source>
+        <translation>Projekt speichern unter</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 already exists.
+Do you want to replace it?</source>
+        <translation>%1 existiert bereits.
+Möchten Sie die Datei ersetzen?</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Open Example</source>
+        <translation>Beispiel öffnen</translation>
+    </message>
+</context>
+<context>
+    <name>cam::SegmentTableModel</name>
+    <message>
+        <location filename="../../src/app/models/segment_table_model.cpp" line="+81" />
+        <location line="+51" />
+        <source>Arc</source>
+        <translation>Bogen</translation>
+    </message>
+    <message>
+        <location line="-51" />
+        <location line="+51" />
+        <source>Line</source>
+        <translation>Gerade</translation>
+    </message>
+    <message>
+        <location line="-51" />
+        <location line="+51" />
+        <source>Bézier</source>
+        <translation>Bézier</translation>
+    </message>
+    <message>
+        <location line="-51" />
+        <location line="+51" />
+        <source>Hermite</source>
+        <translation>Hermite</translation>
+    </message>
+    <message>
+        <location line="-50" />
+        <location line="+62" />
+        <source>outer</source>
+        <translation>außen</translation>
+    </message>
+    <message>
+        <location line="-62" />
+        <location line="+62" />
+        <source>inner</source>
+        <translation>innen</translation>
+    </message>
+    <message>
+        <location line="-55" />
+        <source>outer: far intersection of the ray with the circle; inner: near intersection</source>
+        <translation>außen: ferner Schnittpunkt des Strahls mit dem Kreis (r_oben); innen: naher Schnittpunkt (r_unten)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>This segment's window follows its end points</source>
+        <translation>Das Fenster dieses Segments folgt seinen Endpunkten</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Polar window of this segment, degrees</source>
+        <translation>Polares Fenster dieses Segments, Grad</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Drag the handles in the contour view to shape the curve.</source>
+        <translation>Die Griffe in der Konturansicht ziehen, um die Kurve zu formen.</translation>
+    </message>
+    <message>
+        <location line="+66" />
+        <source>Centre of the arc's circle, mm</source>
+        <translation>Mittelpunkt des Kreises, mm</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Radius of the arc, mm</source>
+        <translation>Radius des Bogens, mm</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>End points of the line, mm (counter-clockwise around the centre)</source>
+        <translation>Endpunkte der Geraden, mm (gegen den Uhrzeigersinn um das Drehzentrum)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Polar window [φ start, φ end), degrees</source>
+        <translation>Polares Fenster [φ Anfang, φ Ende), Grad</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Centre x [mm]</source>
+        <translation>Mittelpunkt x [mm]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Centre y [mm]</source>
+        <translation>Mittelpunkt y [mm]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Radius [mm]</source>
+        <translation>Radius [mm]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Branch</source>
+        <translation>Zweig</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>From x [mm]</source>
+        <translation>Von x [mm]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>From y [mm]</source>
+        <translation>Von y [mm]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>To x [mm]</source>
+        <translation>Bis x [mm]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>To y [mm]</source>
+        <translation>Bis y [mm]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>φ start [°]</source>
+        <translation>φ Anfang [°]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>φ end [°]</source>
+        <translation>φ Ende [°]</translation>
+    </message>
+    <message>
+        <location line="+84" />
+        <source>Edit %1 of segment %2</source>
+        <translation>%1 von Segment %2 ändern</translation>
     </message>
 </context>
 <context>
     <name>cam::StateReadout</name>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="14" />
+        <location filename="../../src/app/views/state_readout.cpp" line="+14" />
         <source>t</source>
         <translation>t</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="14" />
+        <location line="+0" />
         <source>φ</source>
         <translation>φ</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="14" />
+        <location line="+0" />
         <source>segment</source>
         <translation>Segment</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="14" />
+        <location line="+0" />
         <source>r</source>
         <translation>r</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="14" />
+        <location line="+0" />
         <source>v_r</source>
         <translation>v_r</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="15" />
+        <location line="+1" />
         <source>v_φ</source>
         <translation>v_φ</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="15" />
+        <location line="+0" />
         <source>|v|</source>
         <translation>|v|</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="15" />
+        <location line="+0" />
         <source>a_r</source>
         <translation>a_r</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="15" />
+        <location line="+0" />
         <source>a_φ</source>
         <translation>a_φ</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="15" />
+        <location line="+0" />
         <source>|a|</source>
         <translation>|a|</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="16" />
+        <location line="+1" />
         <source>j_r</source>
         <translation>j_r</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="16" />
+        <location line="+0" />
         <source>j_φ</source>
         <translation>j_φ</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="16" />
+        <location line="+0" />
         <source>|j|</source>
         <translation>|j|</translation>
     </message>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="27" />
+        <location line="+11" />
         <source>State of the follower at the cursor: move the mouse over a plot</source>
         <translation>Zustand des Stößels am Cursor: Maus über ein Diagramm bewegen</translation>
     </message>
@@ -1202,22 +1272,22 @@ T = %3 s</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../../src/app/main.cpp" line="82" />
+        <location filename="../../src/app/main.cpp" line="+94" />
         <source>Design and inspect cam contours.</source>
         <translation>Kurvenkonturen entwerfen und prüfen.</translation>
     </message>
     <message>
-        <location filename="../../src/app/main.cpp" line="86" />
+        <location line="+4" />
         <source>A .cam.json project to open.</source>
         <translation>Ein zu öffnendes .cam.json-Projekt.</translation>
     </message>
     <message>
-        <location filename="../../src/app/main.cpp" line="89" />
+        <location line="+3" />
         <source>Render the main window into FILE.png and exit.</source>
         <translation>Das Hauptfenster in DATEI.png zeichnen und beenden.</translation>
     </message>
     <message>
-        <location filename="../../src/app/main.cpp" line="92" />
+        <location line="+3" />
         <source>Window size for --screenshot.</source>
         <translation>Fenstergröße für --screenshot.</translation>
     </message>

@@ -1,40 +1,27 @@
 #include "mainwindow.h"
 
 #include <QCloseEvent>
-#include <QComboBox>
-#include <QDialog>
-#include <QDialogButtonBox>
 #include <QDir>
-#include <QDoubleSpinBox>
 #include <QEventLoop>
-#include <QFile>
-#include <QFileDialog>
-#include <QFileInfo>
-#include <QFormLayout>
 #include <QHeaderView>
-#include <QInputDialog>
 #include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QPlainTextEdit>
 #include <QSettings>
 #include <QSplitter>
-#include <QStandardPaths>
 #include <QTableView>
 #include <QTimer>
 #include <cmath>
 
 #include "common/angles.h"
-#include "contour/fit_windows.h"
+#include "dialogs/contour_dialogs.h"
 #include "document/commands.h"
+#include "document/contour_edits.h"
 #include "engine/compute_engine.h"
+#include "files/project_files.h"
 #include "fillet/fillet.h"
-#include "io/atomic_file.h"
-#include "io/project_json.h"
 #include "models/delegates.h"
 #include "models/segment_table_model.h"
-#include "spline/circle_approximation.h"
-#include "spline/teach_in.h"
 #include "ui_mainwindow.h"
 #include "views/contour_view.h"
 #include "views/joints_panel.h"
@@ -45,27 +32,6 @@
 #include "views/state_readout.h"
 
 namespace cam {
-namespace {
-
-constexpr int kMaxRecentFiles = 8;
-const char* kFileFilter = QT_TRANSLATE_NOOP("cam::MainWindow", "Camwright projects (*.cam.json)");
-
-QString diagnosticsText(const Diagnostics& diagnostics, int limit = 12) {
-    QStringList lines;
-    for (const Diagnostic& d : diagnostics) {
-        if (lines.size() == limit) {
-            lines << MainWindow::tr("… and %1 more").arg(diagnostics.size() - limit);
-            break;
-        }
-        lines << QString::fromStdString(d.text());
-    }
-    return lines.join('\n');
-}
-
-/// The bundled example projects, embedded in the binary (src/app/CMakeLists.txt).
-constexpr const char* kExamplesFolder = ":/examples";
-
-}  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
@@ -87,6 +53,9 @@ MainWindow::MainWindow(QWidget* parent)
     splitter->setSizes({400, 600});  // 2 : 3 from the start, not from the size hints
     setCentralWidget(splitter);
 
+    m_files = new ProjectFiles(m_document, this, m_ui->menuRecent, m_ui->menuExamples);
+    connect(m_files, &ProjectFiles::message, this,
+            [this](const QString& text, int ms) { statusBar()->showMessage(text, ms); });
     setUpDocks();
     setUpActions();
 
@@ -125,10 +94,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_ui->pathStudyDock->hide();
     restoreState(settings.value("window/state").toByteArray());
     m_ui->actionAxisTime->setChecked(settings.value("view/timeAxis", false).toBool());
-    rebuildRecentMenu();
-    rebuildExamplesMenu();
-
-    newProject();
+    m_document->reset(ContourEdits::newProject(), {});
 }
 
 MainWindow::~MainWindow() = default;
@@ -200,17 +166,22 @@ void MainWindow::setUpActions() {
     m_ui->menuEdit->insertSeparator(first);
 
     connect(m_ui->actionNew, &QAction::triggered, this, [this] {
-        if (maybeSave()) newProject();
+        if (m_files->maybeSave()) m_document->reset(ContourEdits::newProject(), {});
     });
-    connect(m_ui->actionOpen, &QAction::triggered, this, [this] { openInteractive(); });
-    connect(m_ui->actionSave, &QAction::triggered, this, &MainWindow::save);
-    connect(m_ui->actionSaveAs, &QAction::triggered, this, &MainWindow::saveAs);
+    connect(m_ui->actionOpen, &QAction::triggered, this, [this] { m_files->open(); });
+    connect(m_ui->actionSave, &QAction::triggered, this, [this] { m_files->save(); });
+    connect(m_ui->actionSaveAs, &QAction::triggered, this, [this] { m_files->saveAs(); });
     connect(m_ui->actionQuit, &QAction::triggered, this, &QWidget::close);
-    connect(m_ui->actionInsertSegment, &QAction::triggered, this, &MainWindow::insertSegment);
-    connect(m_ui->actionDeleteSegment, &QAction::triggered, this, &MainWindow::deleteSegment);
-    connect(m_ui->actionMoveUp, &QAction::triggered, this, [this] { moveSegment(-1); });
-    connect(m_ui->actionMoveDown, &QAction::triggered, this, [this] { moveSegment(1); });
-    connect(m_ui->actionFitWindows, &QAction::triggered, this, &MainWindow::fitWindows);
+    connect(m_ui->actionInsertSegment, &QAction::triggered, this,
+            [this] { report(ContourEdits::insertSegment(*m_document, selectedRow())); });
+    connect(m_ui->actionDeleteSegment, &QAction::triggered, this,
+            [this] { report(ContourEdits::deleteSegment(*m_document, selectedRow()), {}); });
+    connect(m_ui->actionMoveUp, &QAction::triggered, this,
+            [this] { report(ContourEdits::moveSegment(*m_document, selectedRow(), -1), {}); });
+    connect(m_ui->actionMoveDown, &QAction::triggered, this,
+            [this] { report(ContourEdits::moveSegment(*m_document, selectedRow(), 1), {}); });
+    connect(m_ui->actionFitWindows, &QAction::triggered, this,
+            [this] { report(ContourEdits::fitWindows(*m_document), tr("Fit Windows")); });
     auto* approximate = new QAction(tr("Approximate Arc by &Béziers…"), this);
     approximate->setObjectName("actionApproximateArc");
     approximate->setToolTip(
@@ -224,32 +195,11 @@ void MainWindow::setUpActions() {
            "handles"));
     m_ui->menuEdit->addAction(teachIn);
     connect(teachIn, &QAction::triggered, this, [this] {
-        QDialog dialog(this);
-        dialog.setWindowTitle(tr("New Contour Through Points"));
-        auto* form = new QFormLayout(&dialog);
-        auto* points = new QPlainTextEdit(&dialog);
-        points->setPlaceholderText(
-            tr("x, y per line, in mm, counter-clockwise around the "
-               "rotation centre"));
-        points->setPlainText("20, 0\n14, 15\n-3, 22\n-18, 9\n-16, -12\n5, -19");
-        auto* rule = new QComboBox(&dialog);
-        rule->addItems({tr("Chord"), tr("Circumcircle"), tr("Oval")});
-        rule->setCurrentIndex(2);
-        auto* bulge = new QDoubleSpinBox(&dialog);
-        bulge->setRange(0.05, 5.0);
-        bulge->setSingleStep(0.05);
-        bulge->setValue(1.0);
-        auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
-        form->addRow(tr("Points"), points);
-        form->addRow(tr("Handle rule"), rule);
-        form->addRow(tr("Bulge factor"), bulge);
-        form->addRow(buttons);
-        connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
-        connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
-        if (dialog.exec() != QDialog::Accepted) return;
-        const QString problem =
-            contourThroughPoints(points->toPlainText(), rule->currentIndex(), bulge->value());
-        if (!problem.isEmpty()) QMessageBox::warning(this, dialog.windowTitle(), problem);
+        if (const auto input = ContourDialogs::askTeachIn(this)) {
+            report(ContourEdits::contourThroughPoints(*m_document, input->points, input->rule,
+                                                      input->bulge),
+                   tr("New Contour Through Points"));
+        }
     });
     auto* round = new QAction(tr("&Round Corner…"), this);
     round->setObjectName("actionRoundCorner");
@@ -271,25 +221,15 @@ void MainWindow::setUpActions() {
             QMessageBox::warning(this, tr("Round Corner"), diagnosticsText(range.errors()));
             return;
         }
-        bool ok = false;
-        const double max = range.value().maxRadius;
-        const double rho =
-            QInputDialog::getDouble(this, tr("Round Corner"),
-                                    tr("Radius of the switch arc [mm] (below %1 mm fits):")
-                                        .arg(QLocale().toString(max, 'g', 6)),
-                                    std::min(max / 2.0, 5.0), 1e-6, max, 6, &ok);
-        if (!ok) return;
-        const QString problem = roundCorner(joint, rho);
-        if (!problem.isEmpty()) QMessageBox::warning(this, tr("Round Corner"), problem);
+        if (const auto rho = ContourDialogs::askSwitchArcRadius(this, range.value().maxRadius)) {
+            report(ContourEdits::roundCorner(*m_document, joint, *rho), tr("Round Corner"));
+        }
     });
     connect(approximate, &QAction::triggered, this, [this] {
-        bool ok = false;
-        const double error =
-            QInputDialog::getDouble(this, tr("Approximate Arc by Béziers"),
-                                    tr("Admissible radial error [mm]:"), 0.001, 1e-9, 10.0, 6, &ok);
-        if (!ok) return;
-        const QString problem = approximateArc(selectedRow(), error);
-        if (!problem.isEmpty()) QMessageBox::warning(this, tr("Approximate Arc"), problem);
+        if (const auto error = ContourDialogs::askRadialError(this)) {
+            report(ContourEdits::approximateArc(*m_document, selectedRow(), *error),
+                   tr("Approximate Arc"));
+        }
     });
     connect(m_ui->actionAxisTime, &QAction::toggled, this, [this](bool on) {
         QSettings().setValue("view/timeAxis", on);
@@ -313,98 +253,21 @@ void MainWindow::setUpActions() {
     }
 }
 
-void MainWindow::newProject() {
-    Project p;
-    p.name = tr("Untitled").toStdString();
-    p.motion = {SpeedUnit::PeriodS, 1.0};
-    // An eccentric circle in two windows: a valid contour to start editing from.
-    for (double start : {0.0, 180.0}) {
-        SegmentSpec s{Arc{{5.0, 0.0}, 30.0, Branch::Outer}};
-        s.phiStartDeg = start;
-        s.phiEndDeg = start + 180.0;
-        p.contour.push_back(s);
+QString MainWindow::loadFile(const QString& path) { return m_files->load(path); }
+
+QString MainWindow::saveFile(const QString& path) { return m_files->save(path); }
+
+void MainWindow::report(const EditOutcome& outcome, const QString& title) {
+    if (!outcome.ok()) {
+        if (!title.isEmpty()) QMessageBox::warning(this, title, outcome.problem);
+        return;
     }
-    m_document->reset(std::move(p), {});
-}
-
-QString MainWindow::loadFile(const QString& path) {
-    auto loaded = loadProjectFile(path.toStdString());
-    if (!loaded.ok()) {
-        return tr("%1 cannot be opened:\n%2")
-            .arg(QDir::toNativeSeparators(path), diagnosticsText(loaded.errors()));
-    }
-    m_document->reset(std::move(loaded).value(), QFileInfo(path).absoluteFilePath());
-    addRecentFile(QFileInfo(path).absoluteFilePath());
-    statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)), 4000);
-    return {};
-}
-
-void MainWindow::openInteractive(const QString& givenPath) {
-    if (!maybeSave()) return;
-    QString path = givenPath;
-    if (path.isEmpty()) {
-        path = QFileDialog::getOpenFileName(this, tr("Open Project"),
-                                            QSettings().value("files/lastDir").toString(),
-                                            tr(kFileFilter));
-        if (path.isEmpty()) return;
-    }
-    QSettings().setValue("files/lastDir", QFileInfo(path).absolutePath());
-    const QString problem = loadFile(path);
-    if (!problem.isEmpty()) QMessageBox::warning(this, tr("Open Project"), problem);
-}
-
-QString MainWindow::saveFile(const QString& path) {
-    if (!m_document->isValid()) {
-        return tr("The project has problems; fix them before saving (a file with these problems "
-                  "could not be opened again):\n%1")
-            .arg(diagnosticsText(m_document->diagnostics()));
-    }
-    // The core's writer, as the CLI's --out: mode, owner and symlinks kept, non-files refused.
-    const Diagnostics problems = writeFileAtomically(QFile::encodeName(path).toStdString(),
-                                                     serializeProject(m_document->project()));
-    if (!problems.empty()) {
-        return tr("%1 could not be written: %2")
-            .arg(QDir::toNativeSeparators(path), QString::fromStdString(problems.front().message));
-    }
-    m_document->markSaved(QFileInfo(path).absoluteFilePath());
-    addRecentFile(QFileInfo(path).absoluteFilePath());
-    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 4000);
-    return {};
-}
-
-bool MainWindow::save() {
-    if (m_document->filePath().isEmpty()) return saveAs();
-    const QString problem = saveFile(m_document->filePath());
-    if (!problem.isEmpty()) QMessageBox::warning(this, tr("Save Project"), problem);
-    return problem.isEmpty();
-}
-
-bool MainWindow::saveAs() {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save Project As"),
-                                                m_document->filePath().isEmpty()
-                                                    ? QSettings().value("files/lastDir").toString()
-                                                    : m_document->filePath(),
-                                                tr(kFileFilter));
-    if (path.isEmpty()) return false;
-    if (!path.endsWith(".cam.json")) path += ".cam.json";
-    QSettings().setValue("files/lastDir", QFileInfo(path).absolutePath());
-    const QString problem = saveFile(path);
-    if (!problem.isEmpty()) QMessageBox::warning(this, tr("Save Project"), problem);
-    return problem.isEmpty();
-}
-
-bool MainWindow::maybeSave() {
-    if (!m_document->isModified()) return true;
-    const auto answer = QMessageBox::warning(
-        this, tr("Unsaved Changes"),
-        tr("%1 has unsaved changes. Save them?").arg(m_document->displayName()),
-        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
-    if (answer == QMessageBox::Save) return save();
-    return answer == QMessageBox::Discard;
+    if (!outcome.status.isEmpty()) statusBar()->showMessage(outcome.status, 6000);
+    if (outcome.row >= 0) m_ui->segmentTable->selectRow(outcome.row);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (!maybeSave()) {
+    if (!m_files->maybeSave()) {
         event->ignore();
         return;
     }
@@ -422,51 +285,7 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
 }
 
 void MainWindow::dropEvent(QDropEvent* event) {
-    openInteractive(event->mimeData()->urls().front().toLocalFile());
-}
-
-void MainWindow::addRecentFile(const QString& path) {
-    QSettings settings;
-    QStringList files = settings.value("files/recent").toStringList();
-    files.removeAll(path);
-    files.prepend(path);
-    while (files.size() > kMaxRecentFiles) files.removeLast();
-    settings.setValue("files/recent", files);
-    rebuildRecentMenu();
-}
-
-void MainWindow::rebuildRecentMenu() {
-    QMenu* menu = m_ui->menuRecent;
-    menu->clear();
-    const QStringList files = QSettings().value("files/recent").toStringList();
-    for (const QString& f : files) {
-        menu->addAction(QDir::toNativeSeparators(f), this, [this, f] { openInteractive(f); });
-    }
-    menu->setEnabled(!files.isEmpty());
-}
-
-void MainWindow::rebuildExamplesMenu() {
-    QMenu* menu = m_ui->menuExamples;
-    menu->clear();
-    const auto entries =
-        QDir(kExamplesFolder).entryInfoList({"*.cam.json"}, QDir::Files, QDir::Name);
-    for (const QFileInfo& f : entries) {
-        const QString path = f.absoluteFilePath();
-        menu->addAction(f.fileName().chopped(9), this, [this, path] {
-            if (!maybeSave()) return;
-            QFile file(path);
-            auto loaded = file.open(QIODevice::ReadOnly)
-                              ? parseProject(file.readAll().toStdString())
-                              : Result<Project>(Diagnostics{{path.toStdString(), "cannot open"}});
-            if (!loaded.ok()) {
-                QMessageBox::warning(this, tr("Open Example"), diagnosticsText(loaded.errors()));
-                return;
-            }
-            // An example opens as an untitled copy: Save asks where, never over the example.
-            m_document->reset(std::move(loaded).value(), {});
-        });
-    }
-    menu->setEnabled(!menu->isEmpty());
+    m_files->open(event->mimeData()->urls().front().toLocalFile());
 }
 
 void MainWindow::requestCompute() {
@@ -573,105 +392,23 @@ int MainWindow::selectedRow() const {
     return current.isValid() ? current.row() : -1;
 }
 
-void MainWindow::insertSegment() {
-    const auto& contour = m_document->project().contour;
-    const int row = selectedRow() < 0 ? static_cast<int>(contour.size()) : selectedRow() + 1;
-    SegmentSpec s;
-    if (row > 0) {
-        // Split the window of the segment above: the new one takes its second half.
-        s = contour.at(static_cast<std::size_t>(row - 1));
-        const double mid = (s.phiStartDeg + s.phiEndDeg) / 2.0;
-        SegmentSpec above = s;
-        above.phiEndDeg = mid;
-        s.phiStartDeg = mid;
-        m_document->undoStack()->beginMacro(tr("Insert segment"));
-        m_document->undoStack()->push(
-            new EditSegment(m_document, row - 1, above, EditedField::Whole, tr("Split window")));
-        m_document->undoStack()->push(new InsertSegment(m_document, row, s));
-        m_document->undoStack()->endMacro();
-    } else {
-        s.shape = Arc{{0.0, 0.0}, 20.0, Branch::Outer};
-        s.phiStartDeg = 0.0;
-        s.phiEndDeg = 360.0;
-        m_document->undoStack()->push(new InsertSegment(m_document, row, s));
-    }
-    m_ui->segmentTable->selectRow(row);
-}
-
-void MainWindow::deleteSegment() {
-    const int row = selectedRow();
-    if (row < 0) return;
-    m_document->undoStack()->push(new RemoveSegment(m_document, row));
-}
-
-void MainWindow::moveSegment(int delta) {
-    const int row = selectedRow();
-    const int to = row + delta;
-    if (row < 0 || to < 0 || to >= static_cast<int>(m_document->project().contour.size())) return;
-    m_document->undoStack()->push(new MoveSegment(m_document, row, to));
-    m_ui->segmentTable->selectRow(to);
-}
-
 QString MainWindow::contourThroughPoints(const QString& pointsText, int rule, double bulge) {
-    std::vector<Eigen::Vector2d> knots;
-    const QStringList lines = pointsText.split('\n', Qt::SkipEmptyParts);
-    for (int i = 0; i < lines.size(); ++i) {
-        const QStringList cells = lines[i].split(',');
-        bool okX = false, okY = false;
-        const double x = cells.value(0).trimmed().toDouble(&okX);
-        const double y = cells.value(1).trimmed().toDouble(&okY);
-        if (cells.size() != 2 || !okX || !okY || !std::isfinite(x) || !std::isfinite(y)) {
-            return tr("line %1: expected \"x, y\" (got \"%2\")").arg(i + 1).arg(lines[i]);
-        }
-        knots.emplace_back(x, y);
-    }
-    const auto contour = cam::contourThroughPoints(knots, static_cast<HandleRule>(rule), bulge);
-    if (!contour.ok()) return diagnosticsText(contour.errors());
-    m_document->undoStack()->push(
-        new ReplaceContour(m_document, contour.value(), tr("New contour through points")));
-    return {};
+    const EditOutcome outcome = ContourEdits::contourThroughPoints(
+        *m_document, pointsText, static_cast<HandleRule>(rule), bulge);
+    report(outcome, {});
+    return outcome.problem;
 }
 
 QString MainWindow::roundCorner(int joint, double rho) {
-    if (joint < 0) return tr("Select the segment after the corner to round.");
-    const auto result =
-        filletJoint(m_document->project().contour, static_cast<std::size_t>(joint), rho);
-    if (!result.ok()) return diagnosticsText(result.errors());
-    m_document->undoStack()->push(
-        new ReplaceContour(m_document, result.value().contour, tr("Round corner")));
-    statusBar()->showMessage(
-        tr("Corner rounded with a %1 mm switch arc").arg(QLocale().toString(rho, 'g', 6)), 6000);
-    return {};
+    const EditOutcome outcome = ContourEdits::roundCorner(*m_document, joint, rho);
+    report(outcome, {});
+    return outcome.problem;
 }
 
 QString MainWindow::approximateArc(int row, double maxErrorMm) {
-    if (row < 0) return tr("Select the arc to approximate first.");
-    ArcApproximation report;
-    const auto replaced = approximateArcSegment(m_document->project().contour,
-                                                static_cast<std::size_t>(row), maxErrorMm, &report);
-    if (!replaced.ok()) return diagnosticsText(replaced.errors());
-    m_document->undoStack()->push(
-        new ReplaceContour(m_document, replaced.value(), tr("Approximate arc by Béziers")));
-    statusBar()->showMessage(tr("%n Bézier piece(s): radial error %1 mm, end/middle speed ratio %2",
-                                "", static_cast<int>(report.pieces.size()))
-                                 .arg(QLocale().toString(report.radialErrorMm, 'g', 3),
-                                      QLocale().toString(report.speedRatio, 'f', 4)),
-                             8000);
-    return {};
-}
-
-void MainWindow::fitWindows() {
-    const auto fitted = cam::fitWindows(m_document->project().contour);
-    if (!fitted.ok()) {
-        QMessageBox::warning(this, tr("Fit Windows"), diagnosticsText(fitted.errors()));
-        return;
-    }
-    if (fitted.value() == m_document->project().contour) {
-        statusBar()->showMessage(tr("The windows already fit."), 3000);
-        return;
-    }
-    m_document->undoStack()->push(
-        new ReplaceContour(m_document, fitted.value(), tr("Fit windows")));
+    const EditOutcome outcome = ContourEdits::approximateArc(*m_document, row, maxErrorMm);
+    report(outcome, {});
+    return outcome.problem;
 }
 
 }  // namespace cam

@@ -24,6 +24,8 @@ class PathStudyPanel;
 class MachiningPanel;
 class MotionPanel;
 class ProjectDocument;
+class ProjectFiles;
+struct EditOutcome;
 class StateReadout;
 
 class MainWindow : public QMainWindow {
@@ -32,10 +34,11 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /// @brief Opens a project without asking anything; on failure returns the located problems
-    /// and leaves the open document untouched.
+    /// @brief Opens a project without asking anything (ProjectFiles::load): a project with
+    /// geometric problems opens with them listed; a file that is no project is refused with
+    /// the located problems and the open document stays untouched.
     QString loadFile(const QString& path);
-    /// @brief Saves to `path` atomically; returns the problem, empty on success.
+    /// @brief Saves to `path` atomically (ProjectFiles::save); returns the problem, or empty.
     QString saveFile(const QString& path);
 
     [[nodiscard]] ProjectDocument* document() const { return m_document; }
@@ -81,26 +84,18 @@ protected:
 private:
     void setUpActions();
     void setUpDocks();
-    void newProject();
-    void openInteractive(const QString& path = {});
-    bool save();
-    bool saveAs();
-    bool maybeSave();
-    void addRecentFile(const QString& path);
-    void rebuildRecentMenu();
-    void rebuildExamplesMenu();
+    /// Shows what a contour edit did (status bar, selection) or why not (a message box titled
+    /// `title`; none when empty).
+    void report(const EditOutcome& outcome, const QString& title = {});
     void requestCompute();
     void showResult(const ComputeResultPtr& result);
     void updateStatus();
     void updateTitle();
     int selectedRow() const;
-    void insertSegment();
-    void deleteSegment();
-    void moveSegment(int delta);
-    void fitWindows();
 
     std::unique_ptr<Ui::MainWindow> m_ui;
     ProjectDocument* m_document;
+    ProjectFiles* m_files = nullptr;
     SegmentTableModel* m_model;
     ComputeEngine* m_engine;
     ContourView* m_contour;

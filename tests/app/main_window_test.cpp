@@ -8,11 +8,13 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QImage>
+#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QTranslator>
@@ -47,8 +49,11 @@ TEST(MainWindow, OpeningABadFileLeavesTheOpenDocumentUntouched) {
     const Project before = window.document()->project();
     const QString pathBefore = window.document()->filePath();
     const int undoBefore = window.document()->undoStack()->count();
-    for (const char* bad : {"invalid/window-gap.cam.json", "invalid/syntax-truncated.cam.json",
-                            "invalid/identity-version-newer.cam.json", "invalid/nope.cam.json"}) {
+    // Files that are no Camwright project at all: wrong JSON, a newer format, a string where a
+    // number belongs, no file.
+    for (const char* bad :
+         {"invalid/type-string-for-number.cam.json", "invalid/syntax-truncated.cam.json",
+          "invalid/identity-version-newer.cam.json", "invalid/nope.cam.json"}) {
         const QString message = window.loadFile(QString::fromStdString(test::dataPath(bad)));
         EXPECT_FALSE(message.isEmpty()) << bad;
         EXPECT_EQ(window.document()->project(), before) << bad;
@@ -56,9 +61,10 @@ TEST(MainWindow, OpeningABadFileLeavesTheOpenDocumentUntouched) {
         EXPECT_EQ(window.document()->undoStack()->count(), undoBefore);
         EXPECT_TRUE(window.document()->isModified());
     }
-    EXPECT_TRUE(
-        window.loadFile(QString::fromStdString(test::dataPath("invalid/window-gap.cam.json")))
-            .contains("contour[0]/contour[1]: gap of 1°"));
+    const QString message = window.loadFile(
+        QString::fromStdString(test::dataPath("invalid/identity-version-newer.cam.json")));
+    EXPECT_TRUE(message.contains("version: this file has format version 2"))
+        << message.toStdString();
 }
 
 TEST(MainWindow, EditSaveReopen) {
@@ -162,15 +168,53 @@ TEST(MainWindow, ASaveThatFailsMidwayKeepsTheOldFileAndTheDocumentModified) {
     EXPECT_EQ(test::folderEntries(dir.path()), std::vector<std::string>{"cam.cam.json"});
 }
 
-TEST(MainWindow, RefusesToSaveAnInvalidProjectAndWritesNothing) {
+TEST(MainWindow, AnUnfinishedDesignOpensWithItsProblemsMarkedAndSavesAgain) {
+    // window-gap: sound JSON of format 1, every value of the right type, but a 1° gap between
+    // the windows of segments 0 and 1. It opens; the gap is listed and marked; it saves.
+    const QString gap = QString::fromStdString(test::dataPath("invalid/window-gap.cam.json"));
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(gap).isEmpty());
+    EXPECT_EQ(window.document()->filePath(), QFileInfo(gap).absoluteFilePath());
+    EXPECT_FALSE(window.document()->isValid());
+    ASSERT_FALSE(window.document()->diagnostics().empty());
+    EXPECT_EQ(window.document()->diagnostics().front().text(),
+              "contour[0]/contour[1]: gap of 1° between phi_end 180 and phi_start 181");
+    EXPECT_FALSE(window.tableModel()->problemsAt(0, SegmentTableModel::PhiEnd).isEmpty());
+    EXPECT_FALSE(window.tableModel()->problemsAt(1, SegmentTableModel::PhiStart).isEmpty());
+    EXPECT_TRUE(window.findChild<QLabel*>("validationLabel")->text().startsWith("1 problem"));
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains("with 1 problem"))
+        << window.statusBar()->currentMessage().toStdString();
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath("parked.cam.json");
+    const QString problem = window.saveFile(path);
+    ASSERT_TRUE(problem.isEmpty()) << problem.toStdString();
+    EXPECT_FALSE(window.document()->isModified());
+    const std::string saved = test::readFile(path.toStdString());
+    EXPECT_EQ(saved, serializeProject(window.document()->project()));
+    MainWindow again;
+    ASSERT_TRUE(again.loadFile(path).isEmpty());
+    EXPECT_EQ(again.document()->project(), window.document()->project());
+    // The CLI's computing commands still refuse it, naming the problem.
+    const auto state = test::run(CAMWRIGHT_CLI, {"state", path.toStdString(), "--t", "0.1"});
+    EXPECT_EQ(state.exitCode, 2);
+    EXPECT_NE(state.err.find("contour[0]/contour[1]: gap of 1°"), std::string::npos) << state.err;
+    EXPECT_EQ(test::run(CAMWRIGHT_CLI, {"validate", path.toStdString()}).exitCode, 2);
+}
+
+TEST(MainWindow, ANumberAFileCannotHoldIsNotSavedAndNothingIsWritten) {
     QTemporaryDir dir;
     const QString path = dir.filePath("bad.cam.json");
     MainWindow window;
     ASSERT_TRUE(window.loadFile(kExample).isEmpty());
-    window.tableModel()->setData(window.tableModel()->index(2, SegmentTableModel::Radius), 0.0,
-                                 Qt::EditRole);
+    // No editor lets a NaN in; the document's own undo command is the only way to get one there.
+    SegmentSpec s = window.document()->project().contour[2];
+    std::get<Arc>(s.shape).radius = std::numeric_limits<double>::quiet_NaN();
+    window.document()->undoStack()->push(
+        new EditSegment(window.document(), 2, s, EditedField::Radius, "NaN"));
     const QString message = window.saveFile(path);
-    EXPECT_TRUE(message.contains("contour[2].radius")) << message.toStdString();
+    EXPECT_TRUE(message.contains("contour[2].radius: is not a finite number"))
+        << message.toStdString();
     EXPECT_FALSE(QFile::exists(path));
     EXPECT_TRUE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
 }
@@ -372,15 +416,16 @@ TEST(ScreenshotCommand, WorksWithNoDisplayAndNoPlatformSet) {
     qunsetenv("WAYLAND_DISPLAY");
     const auto run = test::run(CAMWRIGHT_APP, {"--screenshot", png.toStdString(), "--size",
                                                "900x600", kExample.toStdString()});
-    const auto bad = test::run(CAMWRIGHT_APP, {"--screenshot", png.toStdString(),
-                                               test::dataPath("invalid/window-gap.cam.json")});
+    const auto bad = test::run(
+        CAMWRIGHT_APP,
+        {"--screenshot", png.toStdString(), test::dataPath("invalid/syntax-truncated.cam.json")});
     qputenv("QT_QPA_PLATFORM", platform);
     if (!display.isEmpty()) qputenv("DISPLAY", display);
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const QImage image(png);
     EXPECT_EQ(image.size(), QSize(900, 600));
     EXPECT_EQ(bad.exitCode, 2);
-    EXPECT_NE(bad.err.find("contour[0]/contour[1]"), std::string::npos) << bad.err;
+    EXPECT_NE(bad.err.find("cannot be opened"), std::string::npos) << bad.err;
 }
 
 TEST(MainWindow, RemembersTheDockLayout) {

@@ -92,6 +92,18 @@ void ProjectDocument::applyMachining(const std::optional<MachiningSpec>& machini
     afterChange();
 }
 
+QString diagnosticsText(const Diagnostics& diagnostics, int limit) {
+    QStringList lines;
+    for (const Diagnostic& d : diagnostics) {
+        if (lines.size() == limit) {
+            lines << ProjectDocument::tr("… and %1 more").arg(diagnostics.size() - limit);
+            break;
+        }
+        lines << QString::fromStdString(d.text());
+    }
+    return lines.join('\n');
+}
+
 void ProjectDocument::afterChange() {
     // Validation is linear in the number of segments (microseconds), so it runs here; the
     // kinematics run in the compute engine's thread.

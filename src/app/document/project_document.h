@@ -72,4 +72,8 @@ private:
     QString m_filePath;
 };
 
+/// @brief Diagnostics for a message box or tooltip: one per line, at most `limit` of them and
+/// then "… and N more".
+[[nodiscard]] QString diagnosticsText(const Diagnostics& diagnostics, int limit = 12);
+
 }  // namespace cam

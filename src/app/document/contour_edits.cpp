@@ -1,0 +1,116 @@
+#include "document/contour_edits.h"
+
+#include <QLocale>
+
+#include "contour/fit_windows.h"
+#include "document/commands.h"
+#include "document/project_document.h"
+#include "fillet/fillet.h"
+#include "io/number_rows.h"
+#include "spline/circle_approximation.h"
+
+namespace cam {
+
+Project ContourEdits::newProject() {
+    Project p;
+    p.name = tr("Untitled").toStdString();
+    p.motion = {SpeedUnit::PeriodS, 1.0};
+    // An eccentric circle in two windows: a valid contour to start editing from.
+    for (double start : {0.0, 180.0}) {
+        p.contour.push_back(
+            SegmentSpec{Arc{{5.0, 0.0}, 30.0, Branch::Outer}, start, start + 180.0});
+    }
+    return p;
+}
+
+EditOutcome ContourEdits::insertSegment(ProjectDocument& document, int row) {
+    const auto& contour = document.project().contour;
+    const int at = row < 0 ? static_cast<int>(contour.size()) : row + 1;
+    QUndoStack* stack = document.undoStack();
+    if (at == 0) {
+        const SegmentSpec circle{Arc{{0.0, 0.0}, 20.0, Branch::Outer}, 0.0, 360.0};
+        stack->push(new InsertSegment(&document, at, circle));
+        return EditOutcome::done({}, at);
+    }
+    // Split the window of the segment before: the new one takes its second half.
+    SegmentSpec copy = contour.at(static_cast<std::size_t>(at - 1));
+    SegmentSpec before = copy;
+    const double mid = (copy.phiStartDeg + copy.phiEndDeg) / 2.0;
+    before.phiEndDeg = mid;
+    copy.phiStartDeg = mid;
+    stack->beginMacro(tr("Insert segment"));
+    stack->push(new EditSegment(&document, at - 1, before, EditedField::Whole, tr("Split window")));
+    stack->push(new InsertSegment(&document, at, copy));
+    stack->endMacro();
+    return EditOutcome::done({}, at);
+}
+
+EditOutcome ContourEdits::deleteSegment(ProjectDocument& document, int row) {
+    if (row < 0 || row >= static_cast<int>(document.project().contour.size())) {
+        return EditOutcome::refused(tr("Select the segment to delete first."));
+    }
+    document.undoStack()->push(new RemoveSegment(&document, row));
+    const int rows = static_cast<int>(document.project().contour.size());
+    return EditOutcome::done({}, std::min(row, rows - 1));
+}
+
+EditOutcome ContourEdits::moveSegment(ProjectDocument& document, int row, int delta) {
+    const int to = row + delta;
+    if (row < 0 || to < 0 || to >= static_cast<int>(document.project().contour.size())) {
+        return EditOutcome::refused(tr("The segment cannot move further."));
+    }
+    document.undoStack()->push(new MoveSegment(&document, row, to));
+    return EditOutcome::done({}, to);
+}
+
+EditOutcome ContourEdits::fitWindows(ProjectDocument& document) {
+    const auto fitted = cam::fitWindows(document.project().contour);
+    if (!fitted.ok()) return EditOutcome::refused(diagnosticsText(fitted.errors()));
+    if (fitted.value() == document.project().contour) {
+        return EditOutcome::done(tr("The windows already fit."));
+    }
+    document.undoStack()->push(new ReplaceContour(&document, fitted.value(), tr("Fit windows")));
+    return EditOutcome::done(tr("Windows fitted to the joints."));
+}
+
+EditOutcome ContourEdits::roundCorner(ProjectDocument& document, int joint, double rho) {
+    if (joint < 0) return EditOutcome::refused(tr("Select the segment after the corner to round."));
+    const auto result =
+        filletJoint(document.project().contour, static_cast<std::size_t>(joint), rho);
+    if (!result.ok()) return EditOutcome::refused(diagnosticsText(result.errors()));
+    document.undoStack()->push(
+        new ReplaceContour(&document, result.value().contour, tr("Round corner")));
+    return EditOutcome::done(
+        tr("Corner rounded with a %1 mm switch arc").arg(QLocale().toString(rho, 'g', 6)), joint);
+}
+
+EditOutcome ContourEdits::approximateArc(ProjectDocument& document, int row, double maxErrorMm) {
+    if (row < 0) return EditOutcome::refused(tr("Select the arc to approximate first."));
+    ArcApproximation report;
+    const auto replaced = approximateArcSegment(document.project().contour,
+                                                static_cast<std::size_t>(row), maxErrorMm, &report);
+    if (!replaced.ok()) return EditOutcome::refused(diagnosticsText(replaced.errors()));
+    document.undoStack()->push(
+        new ReplaceContour(&document, replaced.value(), tr("Approximate arc by Béziers")));
+    return EditOutcome::done(tr("%n Bézier piece(s): radial error %1 mm, end/middle speed ratio %2",
+                                "", static_cast<int>(report.pieces.size()))
+                                 .arg(QLocale().toString(report.radialErrorMm, 'g', 3),
+                                      QLocale().toString(report.speedRatio, 'f', 4)),
+                             row);
+}
+
+EditOutcome ContourEdits::contourThroughPoints(ProjectDocument& document, const QString& pointsText,
+                                               HandleRule rule, double bulge) {
+    const auto rows = parseNumberRows(pointsText.toStdString(), {{"x", "y"}, 2});
+    if (!rows.ok()) return EditOutcome::refused(diagnosticsText(rows.errors()));
+    std::vector<Eigen::Vector2d> knots;
+    for (const auto& row : rows.value()) knots.emplace_back(row[0], row[1]);
+    const auto contour = cam::contourThroughPoints(knots, rule, bulge);
+    if (!contour.ok()) return EditOutcome::refused(diagnosticsText(contour.errors()));
+    document.undoStack()->push(
+        new ReplaceContour(&document, contour.value(), tr("New contour through points")));
+    return EditOutcome::done(
+        tr("New contour through %n point(s)", "", static_cast<int>(knots.size())), 0);
+}
+
+}  // namespace cam
