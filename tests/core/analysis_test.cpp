@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "analysis/analysis.h"
 #include "common/angles.h"
 #include "core/test_projects.h"
@@ -119,6 +121,28 @@ TEST(Extremes, MatchABruteForceSearchOverADenseSampleAndTheWindowEnds) {
         EXPECT_TRUE(relClose(e.min.value, lo, 1e-7, scale)) << quantityName(e.quantity);
         EXPECT_TRUE(relClose(e.max.value, hi, 1e-7, scale)) << quantityName(e.quantity);
     }
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(JointClassification, ANaNMeasureNeverPassesItsTest) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    // A NaN gap (a ray that misses a curve at the joint) used to fall through every `>` test
+    // and come out C2, the best a joint can be.
+    EXPECT_EQ(kinematicContinuity(nan, 0.0, 0.0), Continuity::None);
+    EXPECT_EQ(kinematicContinuity(0.0, nan, 0.0), Continuity::C0);
+    EXPECT_EQ(kinematicContinuity(0.0, 0.0, nan), Continuity::C1);
+    EXPECT_EQ(kinematicContinuity(0.0, 0.0, 0.0), Continuity::C2);
+    EXPECT_EQ(geometricContinuity(Continuity::C2, nan, 0.0), Continuity::G1);
+    EXPECT_EQ(geometricContinuity(Continuity::C1, 0.0, nan), Continuity::C1);
+    EXPECT_EQ(geometricContinuity(Continuity::C2, 0.0, 0.0), Continuity::C2);
+    // The boundaries themselves still pass.
+    EXPECT_EQ(kinematicContinuity(kJointToleranceMm, kTangentToleranceDeg, kCurvatureToleranceRel),
+              Continuity::C2);
 }
 
 }  // namespace

@@ -130,15 +130,7 @@ JointAnalysis analyzeJoint(const Contour& contour, std::size_t k, double omega) 
     const double n2 = std::max({d2(dl).norm(), d2(dr).norm(), 1e-300});
     j.relativeD1 = j.jumpD1.norm() / n1;
     j.relativeD2 = j.jumpD2.norm() / n2;
-    if (j.gapMm > kJointToleranceMm) {
-        j.continuity = Continuity::None;
-    } else if (j.tangentBreakDeg > kTangentToleranceDeg) {
-        j.continuity = Continuity::C0;
-    } else if (j.relativeD2 > kCurvatureToleranceRel) {
-        j.continuity = Continuity::C1;
-    } else {
-        j.continuity = Continuity::C2;
-    }
+    j.continuity = kinematicContinuity(j.gapMm, j.tangentBreakDeg, j.relativeD2);
 
     const auto [l1, l2] = curveDerivatives(left, false);
     const auto [r1, r2] = curveDerivatives(right, true);
@@ -146,16 +138,24 @@ JointAnalysis analyzeJoint(const Contour& contour, std::size_t k, double omega) 
     j.curveJumpD2 = r2 - l2;
     j.curveRelativeD1 = j.curveJumpD1.norm() / std::max({l1.norm(), r1.norm(), 1e-300});
     j.curveRelativeD2 = j.curveJumpD2.norm() / std::max({l2.norm(), r2.norm(), 1e-300});
-    if (j.continuity == Continuity::None || j.continuity == Continuity::C0) {
-        j.geometric = j.continuity;
-    } else if (j.curveRelativeD1 > kCurvatureToleranceRel) {
-        j.geometric = Continuity::G1;
-    } else if (j.curveRelativeD2 > kCurvatureToleranceRel) {
-        j.geometric = Continuity::C1;
-    } else {
-        j.geometric = Continuity::C2;
-    }
+    j.geometric = geometricContinuity(j.continuity, j.curveRelativeD1, j.curveRelativeD2);
     return j;
+}
+
+// Written as !(x <= tolerance): a NaN measure fails every test instead of passing all of them.
+Continuity kinematicContinuity(double gapMm, double tangentBreakDeg, double relativeD2) {
+    if (!(gapMm <= kJointToleranceMm)) return Continuity::None;
+    if (!(tangentBreakDeg <= kTangentToleranceDeg)) return Continuity::C0;
+    if (!(relativeD2 <= kCurvatureToleranceRel)) return Continuity::C1;
+    return Continuity::C2;
+}
+
+Continuity geometricContinuity(Continuity kinematic, double curveRelativeD1,
+                               double curveRelativeD2) {
+    if (kinematic == Continuity::None || kinematic == Continuity::C0) return kinematic;
+    if (!(curveRelativeD1 <= kCurvatureToleranceRel)) return Continuity::G1;
+    if (!(curveRelativeD2 <= kCurvatureToleranceRel)) return Continuity::C1;
+    return Continuity::C2;
 }
 
 namespace {

@@ -78,6 +78,16 @@ struct ContourAnalysis {
 /// of the window rather than to the grid spacing.
 [[nodiscard]] ContourAnalysis analyzeContour(const Contour& contour, double omega);
 
+/// @brief Kinematic continuity from a joint's measures: C0 needs gap <= kJointToleranceMm, C1 a
+/// tangent break <= kTangentToleranceDeg, C2 a relative jump of d²P/dφ² <= kCurvatureToleranceRel.
+/// A measure that is NaN (a ray that only touches a curve) never passes its test.
+[[nodiscard]] Continuity kinematicContinuity(double gapMm, double tangentBreakDeg,
+                                             double relativeD2);
+/// @brief Geometric continuity (in each curve's own parameter) of a joint that is at least C1 in
+/// φ, from the relative jumps of the curve's first and second derivatives; NaN never passes.
+[[nodiscard]] Continuity geometricContinuity(Continuity kinematic, double curveRelativeD1,
+                                             double curveRelativeD2);
+
 /// @brief The joint at the end of segment k.
 [[nodiscard]] JointAnalysis analyzeJoint(const Contour& contour, std::size_t k, double omega);
 
