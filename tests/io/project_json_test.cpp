@@ -208,3 +208,48 @@ TEST(ProjectJson, SyntaxErrorsCarryLineAndColumn) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(SyntaxLocations, HostileTokensAreLocatedAndQuotedShortly) {
+    // Each of these crashed both programs (std::regex recursion over the parser's message, whose
+    // length grows with the last token) or was located "line ?". The place now comes from the
+    // parser's byte position — the last character it read, as nlohmann's own messages count — and
+    // at most 40 characters of a token are quoted. The columns are counted by hand: the head is
+    // 23 characters.
+    struct Case {
+        std::string text;
+        std::string location;
+    };
+    const std::string head = R"({"format": "camwright",)";
+    const std::vector<Case> cases{
+        {head + std::string(3500, '\t') + "#", "line 1, column 3524"},  // the '#'
+        {head + "\"name\": \"" + std::string(30000, 'x'), "line 1, column 30033"},
+        {head + "\"version\": 1" + std::string(40000, '7') + "e400}", "line 1, column 35"},
+        {"{\n  \"a\": [1, 2,\n  ]\n}", "line 3, column 3"},
+        {"{\"a\": 1 \"b\": 2}", "line 1, column 11"},  // the end of the unexpected "b"
+    };
+    for (const Case& c : cases) {
+        const auto p = parseProject(c.text);
+        ASSERT_FALSE(p.ok());
+        const Diagnostic& d = p.errors().front();
+        EXPECT_EQ(d.location, c.location) << d.text().substr(0, 200);
+        EXPECT_LT(d.message.size(), 200u) << d.message.substr(0, 300);
+    }
+}
+
+TEST(SyntaxLocations, ANulByteIsAnErrorAtItsOffsetNotTheEndOfTheFile) {
+    // nlohmann reads NUL as the end of the input: everything after it used to be ignored.
+    std::string text = kMinimal;
+    text += '\0';
+    text += "garbage";
+    const auto p = parseProject(text);
+    ASSERT_FALSE(p.ok());
+    EXPECT_EQ(p.errors().front().message, "a NUL byte (at byte offset " +
+                                              std::to_string(kMinimal.size()) +
+                                              "): a project file is text");
+}
+
+}  // namespace
+}  // namespace cam
