@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Refresh the .ts files from the sources and keep every translation a moved string already had.
 
-    python3 resources/translations/update_translations.py
+    python3 resources/translations/update_translations.py          # refresh the .ts files
+    python3 resources/translations/update_translations.py --check  # fail if they are stale
 
 lupdate files a string under the class it is translated in; when code moves to another class
 the string comes back "unfinished" in the new context. This runs lupdate (dropping vanished
@@ -11,8 +12,10 @@ and exits 1 if anything is.
 """
 import copy
 import os
+import shutil
 import subprocess
 import sys
+import tempfile
 import xml.etree.ElementTree as ET
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -35,6 +38,30 @@ def known_translations(tree):
         if (translation.text or "").strip() or len(translation):
             out.setdefault(key(message), copy.deepcopy(translation))
     return out
+
+
+def messages(tree):
+    return {(c.findtext("name"), m.findtext("source"), m.findtext("comment") or "")
+            for c in tree.iter("context") for m in c.iter("message")}
+
+
+def check(ts_path):
+    """What lupdate would extract now that the committed file lacks or leaves unfinished."""
+    committed = ET.parse(ts_path)
+    with tempfile.TemporaryDirectory() as tmp:
+        fresh_path = os.path.join(tmp, os.path.basename(ts_path))
+        shutil.copy(ts_path, fresh_path)
+        subprocess.run([LUPDATE, "-no-obsolete", "-locations", "none", os.path.join(ROOT, "src"),
+                        os.path.join(ROOT, "ui"), "-ts", fresh_path], check=True,
+                       stdout=subprocess.DEVNULL)
+        fresh = ET.parse(fresh_path)
+    problems = [f"not in {os.path.basename(ts_path)}: {c}: {s!r}"
+                for c, s, _ in sorted(messages(fresh) - messages(committed))]
+    problems += [f"unfinished: {c.findtext('name')}: {m.findtext('source')!r}"
+                 for c in fresh.iter("context") for m in c.iter("message")
+                 if m.find("translation") is not None
+                 and m.find("translation").get("type") == "unfinished"]
+    return problems
 
 
 def update(ts_path):
@@ -64,12 +91,16 @@ def update(ts_path):
 
 
 def main():
+    checking = "--check" in sys.argv[1:]
     missing = []
     for name in sorted(os.listdir(HERE)):
         if name.endswith(".ts"):
-            missing += update(os.path.join(HERE, name))
+            path = os.path.join(HERE, name)
+            missing += check(path) if checking else update(path)
     for m in missing:
-        print("untranslated:", m)
+        print("untranslated:" if not checking else "stale:", m)
+    if missing and checking:
+        print("run: python3 resources/translations/update_translations.py, then translate")
     return 1 if missing else 0
 
 

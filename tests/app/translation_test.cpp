@@ -1,0 +1,181 @@
+// German: every string the window shows must be one the translation file knows. A string that
+// lupdate never extracted (built without tr(), or tr() in a place lupdate cannot see) stays
+// English in the German window; this walks every visible text of the real window and fails on
+// any that no German translation explains.
+
+#include <gtest/gtest.h>
+
+#include <qcustomplot.h>
+#include <QAbstractButton>
+#include <QAction>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QFile>
+#include <QGroupBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QRegularExpression>
+#include <QSet>
+#include <QTabBar>
+#include <QTableView>
+#include <QTranslator>
+#include <QXmlStreamReader>
+
+#include "app_test_support.h"
+#include "engine/compute_engine.h"
+#include "mainwindow.h"
+#include "models/segment_table_model.h"
+
+namespace cam {
+namespace {
+
+QString withoutAccelerators(QString s) {
+    s.replace(QStringLiteral("&&"), QStringLiteral("\x01"));
+    s.remove('&');
+    s.replace(QChar(1), QChar('&'));
+    return s.trimmed();
+}
+
+/// What the German translation file can explain: every translation as a pattern (%1, %n, %L1 …
+/// stand for any text), and every word any translation uses (for texts the window composes
+/// from translated parts, numbers and units, such as "Genauhalt\n4,5949 s").
+struct German {
+    std::vector<QRegularExpression> patterns;
+    QSet<QString> words;
+
+    explicit German(const QString& tsPath) {
+        QFile file(tsPath);
+        EXPECT_TRUE(file.open(QIODevice::ReadOnly)) << tsPath.toStdString();
+        QXmlStreamReader xml(&file);
+        static const QRegularExpression placeholder(R"(%L?[0-9n])");
+        static const QRegularExpression word(R"([A-Za-zÄÖÜäöüßé]{3,})");
+        while (!xml.atEnd()) {
+            xml.readNext();
+            if (!xml.isStartElement()) continue;
+            if (xml.name() != QLatin1String("translation") &&
+                xml.name() != QLatin1String("numerusform")) {
+                continue;
+            }
+            const QString text =
+                withoutAccelerators(xml.readElementText(QXmlStreamReader::IncludeChildElements));
+            if (text.isEmpty()) continue;
+            QStringList pieces;
+            for (const QString& piece : text.split(placeholder)) {
+                pieces << QRegularExpression::escape(piece);
+            }
+            patterns.emplace_back(
+                QRegularExpression::anchoredPattern(pieces.join(QStringLiteral("[\\s\\S]*"))));
+            for (auto it = word.globalMatch(text); it.hasNext();)
+                words.insert(it.next().captured());
+        }
+    }
+
+    [[nodiscard]] bool explains(const QString& shown) const {
+        for (const auto& p : patterns) {
+            if (p.match(shown).hasMatch()) return true;
+        }
+        static const QRegularExpression word(R"([A-Za-zÄÖÜäöüßé]{3,})");
+        for (auto it = word.globalMatch(shown); it.hasNext();) {
+            if (!words.contains(it.next().captured())) return false;
+        }
+        return true;
+    }
+};
+
+/// Worth checking: holds a word of three or more Latin letters (symbols such as v_r, |v|, φ,
+/// units such as mm/s², numbers and paths of the test's own files are not words).
+bool hasWords(const QString& s) {
+    static const QRegularExpression word(R"([A-Za-zÄÖÜäöüß]{3,})");
+    return word.match(s).hasMatch();
+}
+
+TEST(GermanWindow, EveryVisibleStringIsATranslationTheFileKnows) {
+    QTranslator german;
+    ASSERT_TRUE(
+        german.load(QLocale(QLocale::German, QLocale::Germany), "camwright", "_", ":/i18n"));
+    QCoreApplication::installTranslator(&german);
+    QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+    const German german_(QString::fromUtf8(CAMWRIGHT_SOURCE_DIR) +
+                         "/resources/translations/camwright_de.ts");
+    ASSERT_GT(german_.patterns.size(), 200u);
+
+    QStringList offending;
+    int checked = 0;
+    {
+        MainWindow window;
+        const QString project =
+            QString::fromStdString(test::dataPath("app/six-lobe-machining.cam.json"));
+        ASSERT_TRUE(window.loadFile(project).isEmpty());
+        window.resize(1400, 860);
+        window.show();
+        for (auto* dock : window.findChildren<QDockWidget*>()) dock->show();
+        ASSERT_TRUE(window.waitForCurrentResult(20000));
+        ASSERT_TRUE(test::processEventsUntil([&] {
+            const auto& t = window.engine()->latestTiming();
+            return t && t->generation == window.engine()->latestGeneration();
+        }));
+        QCoreApplication::processEvents();
+
+        QStringList shown;
+        auto add = [&](const QString& s) { shown << withoutAccelerators(s); };
+        add(window.windowTitle());
+        // File names are data, not text: the recent files and the examples' names.
+        QList<QAction*> named = window.findChild<QMenu*>("menuRecent")->actions();
+        named += window.findChild<QMenu*>("menuExamples")->actions();
+        for (auto* a : window.findChildren<QAction*>()) {
+            if (a->isSeparator() || named.contains(a)) continue;
+            add(a->text());
+            add(a->toolTip());
+            add(a->statusTip());
+        }
+        for (auto* m : window.findChildren<QMenu*>()) add(m->title());
+        for (auto* d : window.findChildren<QDockWidget*>()) add(d->windowTitle());
+        for (auto* w : window.findChildren<QWidget*>()) {
+            if (!w->isVisible()) continue;
+            add(w->toolTip());
+            add(w->whatsThis());
+            if (auto* l = qobject_cast<QLabel*>(w)) add(l->text());
+            if (auto* b = qobject_cast<QAbstractButton*>(w)) add(b->text());
+            if (auto* g = qobject_cast<QGroupBox*>(w)) add(g->title());
+            if (auto* c = qobject_cast<QComboBox*>(w)) {
+                for (int i = 0; i < c->count(); ++i) add(c->itemText(i));
+            }
+            if (auto* t = qobject_cast<QTabBar*>(w)) {
+                for (int i = 0; i < t->count(); ++i) add(t->tabText(i));
+            }
+            if (auto* p = qobject_cast<QCustomPlot*>(w)) {
+                for (QCPAxis* axis : p->axisRect()->axes()) add(axis->label());
+                // A curve's name is shown in the legend, if the plot has one.
+                for (int i = 0; i < p->plottableCount(); ++i) {
+                    if (p->legend->visible() && p->legend->hasItemWithPlottable(p->plottable(i))) {
+                        add(p->plottable(i)->name());
+                    }
+                }
+            }
+        }
+        SegmentTableModel* model = window.tableModel();
+        for (int c = 0; c < model->columnCount(); ++c) {
+            add(model->headerData(c, Qt::Horizontal, Qt::DisplayRole).toString());
+            add(model->headerData(c, Qt::Horizontal, Qt::ToolTipRole).toString());
+            for (int r = 0; r < model->rowCount(); ++r) {
+                add(model->index(r, c).data(Qt::DisplayRole).toString());
+                add(model->index(r, c).data(Qt::ToolTipRole).toString());
+            }
+        }
+        for (const QString& s : shown) {
+            if (!hasWords(s) || s.contains(project)) continue;
+            ++checked;
+            if (!german_.explains(s) && !offending.contains(s)) offending << s;
+        }
+    }
+    QLocale::setDefault(QLocale::c());
+    QCoreApplication::removeTranslator(&german);
+    EXPECT_GT(checked, 150);
+    EXPECT_TRUE(offending.isEmpty()) << "shown in the German window but not translated:\n  "
+                                     << offending.join("\n  ").toStdString();
+}
+
+}  // namespace
+}  // namespace cam
