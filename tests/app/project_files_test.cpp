@@ -92,15 +92,7 @@ TEST(SaveAs, ANameWithoutTheSuffixAsksBeforeReplacingTheSuffixedFile) {
 }
 
 TEST(SaveKeepsUnits, AMetreAndRadianFileStaysSoAndOnlyTheEditedValueChanges) {
-    const std::string text = R"({
-      "format": "camwright", "version": 1, "name": "metric", "units": {"length": "m", "angle": "rad"},
-      "motion": {"period_s": 2},
-      "contour": [ {"type": "arc", "center": [0.005, 0], "radius": 0.02, "branch": "outer",
-                    "phi_start": 0, "phi_end": 3.141592653589793},
-                   {"type": "arc", "center": [0.005, 0], "radius": 0.02, "branch": "outer",
-                    "phi_start": 3.141592653589793, "phi_end": 6.283185307179586} ],
-      "machining": {"axis_accel": [0.5, 0.5, 0.2], "feed_max": 0.1, "tool_radius": 0.003}
-    })";
+    const std::string text = test::readFile(test::dataPath("io/metres-radians.cam.json"));
     // The file as Camwright writes it: loading and saving it untouched must give these bytes.
     const std::string canonical = serializeProject(parseProject(text).value());
     QTemporaryDir dir;

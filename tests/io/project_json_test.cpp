@@ -83,15 +83,8 @@ TEST(ProjectJson, PreservesUnknownTopLevelKeys) {
 }
 
 TEST(ProjectJson, ConvertsMetresAndRadiansOnLoadAndKeepsThemOnSave) {
-    const std::string text = R"({
-      "format": "camwright", "version": 1, "units": {"length": "m", "angle": "rad"},
-      "motion": {"period_s": 2},
-      "contour": [ {"type": "arc", "center": [0.005, 0], "radius": 0.02, "branch": "outer",
-                    "phi_start": 0, "phi_end": 3.141592653589793},
-                   {"type": "arc", "center": [0.005, 0], "radius": 0.02, "branch": "outer",
-                    "phi_start": 3.141592653589793, "phi_end": 6.283185307179586} ],
-      "machining": {"axis_accel": [0.5, 0.5, 0.2], "feed_max": 0.1, "tool_radius": 0.003}
-    })";
+    // A project written in metres and radians (radius 20 mm, centre 5 mm, two half turns).
+    const std::string text = test::readFile(test::dataPath("io/metres-radians.cam.json"));
     const auto p = parseProject(text);
     ASSERT_TRUE(p.ok()) << p.errors().front().text();
     const Arc& arc = std::get<Arc>(p.value().contour[0].shape);
