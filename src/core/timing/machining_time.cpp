@@ -10,6 +10,7 @@
 #include "common/angles.h"
 #include "common/cancel.h"
 #include "common/tolerances.h"
+#include "timing/seed_method.h"
 
 namespace cam {
 namespace {
@@ -371,78 +372,6 @@ const char* timingMethodName(TimingMethod method) {
             return "optimal";
     }
     return "?";
-}
-
-namespace {
-
-/// The seed's speed for one step of length `step` in direction n after axis speeds vPrev: the
-/// largest x with |n_i·x − v_i|·x/step <= a_i on every axis, capped by the feed (math.md §6).
-double seedStepSpeed(const Vec3& n, const Vec3& vPrev, double step, const MachineLimits& lim) {
-    double x = lim.feedMax;
-    for (int i = 0; i < 3; ++i) {
-        const double a = lim.accel[i];
-        if (std::isinf(a)) continue;
-        if (std::abs(n[i]) < kTiny) {
-            // No motion of this axis in this step: only stopping its previous speed counts.
-            if (std::abs(vPrev[i]) > 0) x = std::min(x, a * step / std::abs(vPrev[i]));
-            continue;
-        }
-        // The rising root of |n_i|·x² − sgn(n_i)·v_i·x − a_i·step = 0.
-        const double an = std::abs(n[i]);
-        const double v = std::copysign(1.0, n[i]) * vPrev[i];
-        x = std::min(x, (v + std::sqrt(v * v + 4.0 * an * a * step)) / (2.0 * an));
-    }
-    return x;
-}
-
-/// One step of the seed method: where it starts on the segment (mm), its length, its unit
-/// direction, its speed and the axis velocities it starts from.
-struct SeedStep {
-    double s = 0.0;
-    double length = 0.0;
-    Vec3 direction = Vec3::Zero();
-    double speed = 0.0;
-    Vec3 previousVelocity = Vec3::Zero();
-};
-
-/// The seed method's walk over one segment from rest up to its midpoint (math.md §6), one call
-/// of `visit` per step. The only place the seed's steps are taken: its time and its profile
-/// both come from here. False if cancelled (polled every kCancelPollInterval steps).
-template <class Visit>
-bool walkSeed(const PathSegment& segment, const MachineLimits& lim, Visit&& visit,
-              const std::atomic<bool>* cancel = nullptr) {
-    const double half = segment.length() / 2.0;
-    SeedStep step;
-    std::size_t count = 0;
-    for (double s = 0.0; s < half - 1e-12;) {
-        if (++count % kCancelPollInterval == 0 && cancelRequested(cancel)) return false;
-        step.s = s;
-        step.length = std::min(lim.seedStep, half - s);
-        step.direction = (segment.point(s + step.length) - segment.point(s)).normalized();
-        step.speed = seedStepSpeed(step.direction, step.previousVelocity, step.length, lim);
-        visit(step);
-        step.previousVelocity = step.direction * step.speed;
-        s += step.length;
-    }
-    return true;
-}
-
-/// The seed time of one segment; nullopt if cancelled.
-std::optional<double> seedTime(const PathSegment& segment, const MachineLimits& lim,
-                               const std::atomic<bool>* cancel) {
-    double time = 0.0;
-    if (!walkSeed(
-            segment, lim, [&](const SeedStep& step) { time += step.length / step.speed; },
-            cancel)) {
-        return std::nullopt;
-    }
-    return 2.0 * time;
-}
-
-}  // namespace
-
-double seedSegmentTime(const PathSegment& segment, const MachineLimits& lim) {
-    return *seedTime(segment, lim, nullptr);
 }
 
 double exactStopLineTime(const PathSegment& line, const MachineLimits& lim) {

@@ -1,0 +1,58 @@
+#pragma once
+/// @file
+/// @brief The seed document's machining-time method (math.md §6): 1 mm steps from rest to the
+/// middle of a segment, each at the largest speed every axis allows, doubled for braking. Used
+/// for the seed time and for its plotted profile, so both come from the same steps.
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <atomic>
+#include <optional>
+
+#include "common/cancel.h"
+#include "timing/machining_time.h"
+
+namespace cam {
+
+/// @brief The seed's speed for one step of length `step` in direction n after axis speeds
+/// vPrev: the largest x with |n_i·x − v_i|·x/step <= a_i on every axis, capped by the feed.
+[[nodiscard]] double seedStepSpeed(const Eigen::Vector3d& n, const Eigen::Vector3d& vPrev,
+                                   double step, const MachineLimits& lim);
+
+/// One step of the seed method: where it starts on the segment (mm), its length, its unit
+/// direction, its speed and the axis velocities it starts from.
+struct SeedStep {
+    double s = 0.0;
+    double length = 0.0;
+    Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+    double speed = 0.0;
+    Eigen::Vector3d previousVelocity = Eigen::Vector3d::Zero();
+};
+
+/// The seed method's walk over one segment from rest up to its midpoint (math.md §6), one call
+/// of `visit` per step. The only place the seed's steps are taken: its time and its profile
+/// both come from here. False if cancelled (polled every kCancelPollInterval steps).
+template <class Visit>
+bool walkSeed(const PathSegment& segment, const MachineLimits& lim, Visit&& visit,
+              const std::atomic<bool>* cancel = nullptr) {
+    const double half = segment.length() / 2.0;
+    SeedStep step;
+    std::size_t count = 0;
+    for (double s = 0.0; s < half - 1e-12;) {
+        if (++count % kCancelPollInterval == 0 && cancelRequested(cancel)) return false;
+        step.s = s;
+        step.length = std::min(lim.seedStep, half - s);
+        step.direction = (segment.point(s + step.length) - segment.point(s)).normalized();
+        step.speed = seedStepSpeed(step.direction, step.previousVelocity, step.length, lim);
+        visit(step);
+        step.previousVelocity = step.direction * step.speed;
+        s += step.length;
+    }
+    return true;
+}
+
+/// @brief The seed time of one segment; nullopt if cancelled.
+[[nodiscard]] std::optional<double> seedTime(const PathSegment& segment, const MachineLimits& lim,
+                                             const std::atomic<bool>* cancel);
+
+}  // namespace cam
