@@ -41,6 +41,7 @@
 #include "views/machining_panel.h"
 #include "views/motion_panel.h"
 #include "views/path_study_panel.h"
+#include "views/plot_data.h"
 #include "views/state_readout.h"
 
 namespace cam {
@@ -106,6 +107,8 @@ MainWindow::MainWindow(QWidget* parent)
     });
     connect(m_document, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
+    // The views' containers are made in the worker, next to the computation.
+    m_engine->setPlotDataPreparer(std::make_shared<QcpPlotDataPreparer>());
     connect(m_engine, &ComputeEngine::resultReady, this, &MainWindow::showResult);
     connect(m_engine, &ComputeEngine::timingReady, m_machining, &MachiningPanel::setOutcome);
     connect(m_contour, &ContourView::cursorAngleChanged, this, [this](double phi) {
@@ -497,7 +500,7 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
     setCursorTime(m_cursorT);
     m_computeLabel->setText(
         tr("%1 samples computed in %2 ms")
-            .arg(QLocale().toString(static_cast<qlonglong>(result->turn.size())),
+            .arg(QLocale().toString(static_cast<qlonglong>(result->sampleCount)),
                  QLocale().toString(result->computeMs, 'f', 1)));
     emit resultShown(result);
 }

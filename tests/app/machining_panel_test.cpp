@@ -52,7 +52,7 @@ TEST(MachiningPanel, ShowsTheThreeTimesTheCoreComputes) {
             << window.machiningPanel()->timesText().toStdString();
     }
     EXPECT_LT(outcome->timesS[2], outcome->timesS[1]);  // optimal beats exact stop here
-    EXPECT_FALSE(outcome->feed->isEmpty());
+    EXPECT_FALSE(outcome->profile.s.empty());
 }
 
 TEST(MachiningPanel, EditingTheToolRadiusIsUndoableAndRecomputes) {

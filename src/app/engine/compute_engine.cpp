@@ -27,22 +27,34 @@ void ComputeWorker::submit(ComputeRequest request) {
     }
 }
 
+void ComputeWorker::setPreparer(std::shared_ptr<const PlotDataPreparer> preparer) {
+    QMutexLocker lock(&m_mutex);
+    m_preparer = std::move(preparer);
+}
+
 void ComputeWorker::run() {
     for (;;) {
         ComputeRequest request;
+        std::shared_ptr<const PlotDataPreparer> preparer;
         {
             QMutexLocker lock(&m_mutex);
             while (!m_pending && !m_abort) m_wake.wait(&m_mutex);
             if (m_abort) return;
             request = std::move(*m_pending);
             m_pending.reset();
+            preparer = m_preparer;
             m_cancel = false;
         }
-        ComputeResultPtr result = computeProject(request, m_cancel);
+        ComputeResultPtr result = computeProject(request, m_cancel, preparer.get());
         if (!result || m_cancel.load()) continue;
         emit finished(result);
         if (request.timing && result->ok() && request.project->machining) {
             TimingOutcomePtr outcome = computeTiming(request, *result->contour, m_cancel);
+            if (outcome && preparer && outcome->errors.empty()) {
+                auto prepared = std::make_shared<TimingOutcome>(*outcome);
+                prepared->prepared = preparer->prepareTiming(*prepared);
+                outcome = std::move(prepared);
+            }
             if (outcome && !m_cancel.load()) emit timingFinished(outcome);
         }
     }
@@ -67,6 +79,10 @@ ComputeEngine::ComputeEngine(QObject* parent) : QObject(parent) {
 }
 
 ComputeEngine::~ComputeEngine() = default;
+
+void ComputeEngine::setPlotDataPreparer(std::shared_ptr<const PlotDataPreparer> preparer) {
+    m_worker.setPreparer(std::move(preparer));
+}
 
 void ComputeEngine::request(const Project& project, PlotAxis axis, bool timing,
                             TimingMethod plotMethod) {

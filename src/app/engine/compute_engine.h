@@ -8,8 +8,10 @@
 #include <QTimer>
 #include <QWaitCondition>
 #include <atomic>
+#include <memory>
 
 #include "engine/compute_result.h"
+#include "engine/plot_data_preparer.h"
 
 namespace cam {
 
@@ -23,6 +25,9 @@ public:
 
     /// @brief Replaces the pending request (thread-safe) and cancels the current computation.
     void submit(ComputeRequest request);
+    /// @brief Used for every following request (thread-safe); null: results carry no
+    /// prepared plot data.
+    void setPreparer(std::shared_ptr<const PlotDataPreparer> preparer);
 
 signals:
     void finished(cam::ComputeResultPtr result);
@@ -35,6 +40,7 @@ private:
     QMutex m_mutex;
     QWaitCondition m_wake;
     std::optional<ComputeRequest> m_pending;
+    std::shared_ptr<const PlotDataPreparer> m_preparer;
     std::atomic<bool> m_cancel{false};
     bool m_abort = false;
 };
@@ -55,6 +61,9 @@ public:
                  TimingMethod plotMethod = TimingMethod::Optimal);
     /// @brief Milliseconds that a burst of requests is coalesced over (0: submit at once).
     void setCoalesceMs(int ms) { m_timer.setInterval(ms); }
+    /// @brief The views' preparer, run in the worker on every following result (see
+    /// PlotDataPreparer).
+    void setPlotDataPreparer(std::shared_ptr<const PlotDataPreparer> preparer);
 
     [[nodiscard]] std::uint64_t latestGeneration() const { return m_generation; }
     [[nodiscard]] const ComputeResultPtr& latestResult() const { return m_latest; }

@@ -13,16 +13,21 @@ class QCPItemStraightLine;
 
 namespace cam {
 
+struct KinematicsPlotData;
+
 class KinematicsPlots : public QWidget {
     Q_OBJECT
 public:
     explicit KinematicsPlots(QWidget* parent = nullptr);
 
+    /// @brief Shows a result (one that could not be computed is ignored).
     void setResult(const ComputeResultPtr& result);
     /// @brief Moves the cursor line to x (degrees or seconds, as the axis shows).
     void setCursorX(double x);
     void resetZoom();
     [[nodiscard]] QCustomPlot* plot(int i) const { return m_plots[static_cast<std::size_t>(i)]; }
+    /// @brief The level of the result's curves the graphs draw now.
+    [[nodiscard]] std::size_t shownLevel() const { return m_level; }
 
 signals:
     /// The mouse points at x (degrees or seconds, as the axis shows).
@@ -30,17 +35,19 @@ signals:
 
 private:
     void rebuildJointMarkers();
-    /// Whole turn in view: draw the envelopes; zoomed in: the full-resolution curves.
-    void chooseResolution();
+    /// Draws the coarsest level whose buckets are at most a pixel wide at the current zoom.
+    void chooseResolution(bool force = false);
     void fitY();
 
     std::array<QCustomPlot*, 3> m_plots{};
     std::array<QCPItemStraightLine*, 3> m_cursors{};
     std::vector<QCPItemStraightLine*> m_jointMarkers;
     ComputeResultPtr m_result;
+    std::shared_ptr<const KinematicsPlotData> m_data;
     PlotAxis m_axis = PlotAxis::Angle;
+    PlotRange m_xRange;
     bool m_fitted = false;
-    bool m_showingEnvelope = false;
+    std::size_t m_level = static_cast<std::size_t>(-1);
 };
 
 }  // namespace cam
