@@ -377,6 +377,19 @@
     </message>
 </context>
 <context>
+    <name>cam::ComputeWorker</name>
+    <message>
+        <location filename="../../src/app/engine/compute_engine.cpp" />
+        <source>out of memory — fewer samples per turn would need less</source>
+        <translation>zu wenig Arbeitsspeicher – weniger Abtastpunkte pro Umdrehung bräuchten weniger</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/engine/compute_engine.cpp" />
+        <source>the computation failed: %1</source>
+        <translation>die Berechnung ist fehlgeschlagen: %1</translation>
+    </message>
+</context>
+<context>
     <name>cam::ContourView</name>
     <message>
         <location filename="../../src/app/views/contour_view.cpp" line="18" />
@@ -919,6 +932,16 @@
         <location filename="../../src/app/mainwindow.cpp" line="487" />
         <source>not computed: the project has problems</source>
         <translation>nicht berechnet: das Projekt hat Fehler</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" />
+        <source>not computed: %1</source>
+        <translation>nicht berechnet: %1</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow.cpp" />
+        <source>Computation failed: %1</source>
+        <translation>Berechnung fehlgeschlagen: %1</translation>
     </message>
     <message>
         <location filename="../../src/app/mainwindow.cpp" line="497" />

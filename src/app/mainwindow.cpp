@@ -489,9 +489,15 @@ void MainWindow::requestCompute() {
 
 void MainWindow::showResult(const ComputeResultPtr& result) {
     if (!result->ok()) {
-        m_computeLabel->setText(tr("not computed: the project has problems"));
+        const QString first = QString::fromStdString(result->errors.front().text());
+        // The problems themselves are in the validation label beside it.
+        m_computeLabel->setText(result->failed ? tr("not computed: %1").arg(first)
+                                               : tr("not computed: the project has problems"));
+        m_computeLabel->setStyleSheet("color: #b00020;");
+        if (result->failed) statusBar()->showMessage(tr("Computation failed: %1").arg(first));
         return;
     }
+    m_computeLabel->setStyleSheet({});
     m_contour->setResult(result);
     m_plots->setResult(result);
     m_joints->setResult(result);

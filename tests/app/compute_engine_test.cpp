@@ -101,6 +101,81 @@ TEST(ComputeEngine, AnInvalidProjectGivesItsErrorsNotACrash) {
 namespace cam {
 namespace {
 
+/// A preparer that fails, stalls or passes, as a test needs: what the worker runs after the
+/// computation, so it stands for any step that throws or ignores the cancel flag.
+class ScriptedPreparer : public PlotDataPreparer {
+public:
+    enum class Mode { Pass, ThrowOutOfMemory, ThrowError, IgnoreCancelFor2s };
+    std::atomic<Mode> mode{Mode::Pass};
+    mutable std::atomic<int> calls{0};
+
+    PreparedPlotDataPtr prepare(const ComputeResult&, const std::atomic<bool>&) const override {
+        ++calls;
+        switch (mode.load()) {
+            case Mode::ThrowOutOfMemory:
+                throw std::bad_alloc();
+            case Mode::ThrowError:
+                throw std::runtime_error("scripted failure");
+            case Mode::IgnoreCancelFor2s:
+                QThread::msleep(2000);
+                return nullptr;
+            case Mode::Pass:
+                return nullptr;
+        }
+        return nullptr;
+    }
+    PreparedPlotDataPtr prepareTiming(const TimingOutcome&) const override { return nullptr; }
+};
+
+TEST(ComputeEngine, AComputationThatThrowsBecomesAMessageAndTheNextRequestWorks) {
+    ComputeEngine engine;
+    engine.setCoalesceMs(0);
+    auto preparer = std::make_shared<ScriptedPreparer>();
+    engine.setPlotDataPreparer(preparer);
+    const auto answered = [&](std::uint64_t generation) {
+        return test::processEventsUntil([&] {
+            return engine.latestResult() && engine.latestResult()->generation == generation;
+        });
+    };
+    preparer->mode = ScriptedPreparer::Mode::ThrowOutOfMemory;
+    engine.request(test::loadExample(), PlotAxis::Angle);
+    ASSERT_TRUE(answered(1));
+    EXPECT_FALSE(engine.latestResult()->ok());
+    EXPECT_TRUE(engine.latestResult()->failed);
+    ASSERT_EQ(engine.latestResult()->errors.size(), 1u);
+    EXPECT_NE(engine.latestResult()->errors.front().message.find("out of memory"),
+              std::string::npos);
+
+    preparer->mode = ScriptedPreparer::Mode::ThrowError;
+    engine.request(test::loadExample(), PlotAxis::Angle);
+    ASSERT_TRUE(answered(2));
+    EXPECT_TRUE(engine.latestResult()->failed);
+    EXPECT_NE(engine.latestResult()->errors.front().message.find("scripted failure"),
+              std::string::npos);
+
+    preparer->mode = ScriptedPreparer::Mode::Pass;
+    engine.request(test::loadExample(), PlotAxis::Angle);
+    ASSERT_TRUE(answered(3));
+    EXPECT_TRUE(engine.latestResult()->ok());
+    EXPECT_FALSE(engine.latestResult()->failed);
+    EXPECT_EQ(preparer->calls.load(), 3);
+}
+
+TEST(ComputeEngine, DestructorReturnsWithinItsBoundEvenIfAStepIgnoresCancel) {
+    auto preparer = std::make_shared<ScriptedPreparer>();
+    preparer->mode = ScriptedPreparer::Mode::IgnoreCancelFor2s;
+    QElapsedTimer timer;
+    {
+        ComputeEngine engine;
+        engine.setPlotDataPreparer(preparer);
+        engine.request(test::loadExample(), PlotAxis::Angle);
+        ASSERT_TRUE(test::processEventsUntil([&] { return preparer->calls.load() > 0; }));
+        timer.start();
+    }
+    EXPECT_LT(timer.elapsed(), ComputeEngine::kStopTimeoutMs + 300);
+    EXPECT_GE(timer.elapsed(), ComputeEngine::kStopTimeoutMs - 50);  // it did wait first
+}
+
 Project bigExample() {
     Project p = test::loadExample();
     p.samplesPerTurn = kMaxSamplesPerTurn;  // 10,000,000

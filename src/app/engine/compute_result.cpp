@@ -69,6 +69,16 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     return result;
 }
 
+ComputeResultPtr failedResult(const ComputeRequest& request, const std::string& message) {
+    auto result = std::make_shared<ComputeResult>();
+    result->generation = request.generation;
+    result->project = request.project;
+    result->axis = request.axis;
+    result->errors = {Diagnostic{"", message}};
+    result->failed = true;
+    return result;
+}
+
 TimingOutcomePtr computeTiming(const ComputeRequest& request, const Contour& contour,
                                const std::atomic<bool>& cancel) {
     QElapsedTimer timer;

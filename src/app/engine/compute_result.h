@@ -46,7 +46,10 @@ struct ComputeResult {
     std::uint64_t generation = 0;
     std::shared_ptr<const Project> project;
     PlotAxis axis = PlotAxis::Angle;
-    Diagnostics errors;  ///< non-empty: the project could not be computed
+    /// Non-empty: nothing was computed — the project has problems, or the computation failed
+    /// (`failed`); the views mark what they still show as out of date.
+    Diagnostics errors;
+    bool failed = false;  ///< the computation itself failed (e.g. out of memory)
     std::optional<Contour> contour;
     double omega = 0.0;           ///< rad/s
     double period = 0.0;          ///< s
@@ -94,6 +97,9 @@ TimingOutcomePtr computeTiming(const ComputeRequest& request, const Contour& con
 /// thread, the worker's).
 ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic<bool>& cancel,
                                 const PlotDataPreparer* preparer = nullptr);
+
+/// @brief A result that says the computation failed and why (the message is shown as is).
+ComputeResultPtr failedResult(const ComputeRequest& request, const std::string& message);
 
 }  // namespace cam
 
