@@ -1150,6 +1150,24 @@ T = %3 s</translation>
     </message>
 </context>
 <context>
+    <name>cam::StaleLabel</name>
+    <message numerus="yes">
+        <location filename="../../src/app/views/stale_label.h" />
+        <source> (and %n more)</source>
+        <translation>
+            <numerusform> (und %n weiteres)</numerusform>
+            <numerusform> (und %n weitere)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../../src/app/views/stale_label.h" />
+        <source>Not computed: %1%2
+Grey: the last computed state, out of date.</source>
+        <translation>Nicht berechnet: %1%2
+Grau: der zuletzt berechnete Stand, veraltet.</translation>
+    </message>
+</context>
+<context>
     <name>cam::StateReadout</name>
     <message>
         <location filename="../../src/app/views/state_readout.cpp" line="14" />

@@ -112,15 +112,15 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_engine, &ComputeEngine::resultReady, this, &MainWindow::showResult);
     connect(m_engine, &ComputeEngine::timingReady, m_machining, &MachiningPanel::setOutcome);
     connect(m_contour, &ContourView::cursorAngleChanged, this, [this](double phi) {
-        const auto& r = m_engine->latestResult();
-        if (!r || !r->ok()) return;
+        const auto& r = m_shown;
+        if (!r) return;
         double t = std::fmod(phi / r->omega, r->period);
         if (t < 0) t += r->period;
         setCursorTime(t);
     });
     connect(m_plots, &KinematicsPlots::cursorMoved, this, [this](double x) {
-        const auto& r = m_engine->latestResult();
-        if (!r || !r->ok()) return;
+        const auto& r = m_shown;
+        if (!r) return;
         setCursorTime(r->axis == PlotAxis::Angle ? degToRad(x) / r->omega : x);
     });
 
@@ -165,10 +165,9 @@ void MainWindow::setUpDocks() {
     tabifyDockWidget(m_ui->segmentsDock, m_ui->jointsDock);
     m_ui->segmentsDock->raise();
     connect(m_joints, &JointsPanel::jointPicked, this, [this](int, int right, double phi) {
-        const auto& r = m_engine->latestResult();
-        if (!r || !r->ok()) return;
-        double t = std::fmod(phi / r->omega, r->period);
-        if (t < 0) t += r->period;
+        if (!m_shown) return;
+        double t = std::fmod(phi / m_shown->omega, m_shown->period);
+        if (t < 0) t += m_shown->period;
         setCursorTime(t);
         m_ui->segmentTable->selectRow(right);
     });
@@ -488,6 +487,11 @@ void MainWindow::requestCompute() {
 }
 
 void MainWindow::showResult(const ComputeResultPtr& result) {
+    // The views keep what they drew from the last computable result and mark it out of date.
+    m_contour->setResult(result);
+    m_plots->setResult(result);
+    m_joints->setResult(result);
+    m_pathStudy->setResult(result);
     if (!result->ok()) {
         const QString first = QString::fromStdString(result->errors.front().text());
         // The problems themselves are in the validation label beside it.
@@ -495,14 +499,12 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
                                                : tr("not computed: the project has problems"));
         m_computeLabel->setStyleSheet("color: #b00020;");
         if (result->failed) statusBar()->showMessage(tr("Computation failed: %1").arg(first));
+        m_readout->clear();  // no state of the project as it is
+        emit resultShown(result);
         return;
     }
+    m_shown = result;
     m_computeLabel->setStyleSheet({});
-    m_contour->setResult(result);
-    m_plots->setResult(result);
-    m_joints->setResult(result);
-    m_pathStudy->setResult(result);
-    m_cursorT = std::fmod(m_cursorT, result->period);
     setCursorTime(m_cursorT);
     m_computeLabel->setText(
         tr("%1 samples computed in %2 ms")
@@ -512,14 +514,20 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
 }
 
 void MainWindow::setCursorTime(double t) {
-    m_cursorT = t;
-    const auto& r = m_engine->latestResult();
-    if (!r || !r->ok()) return;
+    const auto& r = m_shown;
+    const auto& latest = m_engine->latestResult();
+    if (!r || !latest || !latest->ok()) {
+        // Nothing computed for the project as it is: no state to read out.
+        m_cursorT = t;
+        m_readout->clear();
+        return;
+    }
+    m_cursorT = std::fmod(t, r->period);
     // One state from the shared, immutable contour of the result: a few hundred nanoseconds.
-    const KinematicState s = stateAt(*r->contour, r->omega, t);
+    const KinematicState s = stateAt(*r->contour, r->omega, m_cursorT);
     m_readout->setState(s);
     m_contour->setCursorAngle(s.phi);
-    m_plots->setCursorX(r->axis == PlotAxis::Angle ? radToDeg(s.phi) : t);
+    m_plots->setCursorX(r->axis == PlotAxis::Angle ? radToDeg(s.phi) : m_cursorT);
 }
 
 bool MainWindow::waitForCurrentResult(int timeoutMs) {
@@ -553,7 +561,7 @@ QImage MainWindow::renderScreenshot(const QSize& size) {
         });
         if (!current()) loop.exec();
     }
-    setCursorTime(m_engine->latestResult()->period / 8.0);
+    if (m_shown) setCursorTime(m_shown->period / 8.0);
     statusBar()->clearMessage();  // transient messages name paths: not part of the picture
     for (int p = 0; p < 3; ++p) m_plots->plot(p)->replot(QCustomPlot::rpImmediateRefresh);
     m_contour->replot(QCustomPlot::rpImmediateRefresh);

@@ -1,5 +1,5 @@
-// The main window when a computation is huge: a turn of ten million samples fits in bounded
-// memory.
+// The main window when a computation fails or is huge: the failure is a message, the app
+// carries on, and a turn of ten million samples fits in bounded memory.
 
 #include <gtest/gtest.h>
 
@@ -17,11 +17,51 @@
 #include "models/arc_table_model.h"
 #include "views/contour_view.h"
 #include "views/kinematics_plots.h"
+#include "views/plot_data.h"
 
 namespace cam {
 namespace {
 
 const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json"));
+
+/// Stands for a computation that runs out of memory in the worker.
+class OutOfMemory : public PlotDataPreparer {
+public:
+    PreparedPlotDataPtr prepare(const ComputeResult&, const std::atomic<bool>&) const override {
+        throw std::bad_alloc();
+    }
+    PreparedPlotDataPtr prepareTiming(const TimingOutcome&) const override { return nullptr; }
+};
+
+TEST(MainWindow, AFailedComputationIsReportedAndTheAppCarriesOn) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.resize(1400, 860);
+    window.show();
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    auto* computeLabel = window.findChild<QLabel*>("computeLabel");
+    ASSERT_NE(computeLabel, nullptr);
+
+    window.engine()->setPlotDataPreparer(std::make_shared<OutOfMemory>());
+    ArcTableModel* model = window.tableModel();
+    ASSERT_TRUE(model->setData(model->index(1, ArcTableModel::Radius), 8.2, Qt::EditRole));
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    EXPECT_TRUE(window.engine()->latestResult()->failed);
+    EXPECT_TRUE(computeLabel->text().contains("out of memory"))
+        << computeLabel->text().toStdString();
+    EXPECT_TRUE(window.plots()->staleReason().contains("out of memory"));
+    EXPECT_TRUE(window.contourView()->staleReason().contains("out of memory"));
+
+    // The next computation works again and replaces the message.
+    window.engine()->setPlotDataPreparer(std::make_shared<QcpPlotDataPreparer>());
+    window.document()->undoStack()->undo();
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    EXPECT_TRUE(window.engine()->latestResult()->ok());
+    EXPECT_TRUE(computeLabel->text().contains("samples computed"))
+        << computeLabel->text().toStdString();
+    EXPECT_TRUE(window.plots()->staleReason().isEmpty());
+    EXPECT_TRUE(window.contourView()->staleReason().isEmpty());
+}
 
 TEST(ScreenshotCommand, ATenMillionSampleTurnFitsInAGigabyteAndAHalf) {
     // Before, the whole turn and its plot data were kept: 2.6 GB at its peak, and std::terminate

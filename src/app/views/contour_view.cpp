@@ -5,6 +5,7 @@
 #include "document/commands.h"
 #include "models/delegates.h"
 #include "views/palette.h"
+#include "views/stale_label.h"
 
 namespace cam {
 namespace {
@@ -65,6 +66,8 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     origin->setSize(12);
     origin->setPen(QPen(Qt::black));
 
+    m_staleLabel = makeStaleLabel(this);
+
     connect(this, &QCustomPlot::mouseWheel, this, [this] { m_autoFit = false; });
     connect(document, &ProjectDocument::changed, this, [this] {
         updateHandles();
@@ -73,11 +76,14 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
 }
 
 void ContourView::setResult(const ComputeResultPtr& result) {
-    m_result = result;
-    if (!result || !result->ok()) {
-        replot(rpQueuedReplot);
+    if (!result) return;
+    if (!result->ok()) {
+        // The last contour stays for orientation, greyed and labelled as out of date.
+        setStale(staleText(*result));
         return;
     }
+    setStale({});
+    m_result = result;
     const std::size_t n = result->outlines.size();
     while (m_segmentCurves.size() > n) {
         removePlottable(m_segmentCurves.back());
@@ -150,6 +156,7 @@ void ContourView::keepEqualAspect() {
 
 void ContourView::resizeEvent(QResizeEvent* event) {
     QCustomPlot::resizeEvent(event);
+    if (m_stale) placeStaleLabel(m_staleLabel);
     if (m_autoFit) {
         resetZoom();
     } else {
@@ -164,6 +171,31 @@ void ContourView::setCursorAngle(double phi) {
     const double reach = std::max(r * 1.25, r + 5.0);
     m_ray->end->setCoords(reach * std::cos(phi), reach * std::sin(phi));
     m_rayPoint->position->setCoords(r * std::cos(phi), r * std::sin(phi));
+    replot(rpQueuedReplot);
+}
+
+QString ContourView::staleReason() const { return m_stale ? m_staleLabel->text() : QString(); }
+
+void ContourView::setStale(const QString& reason) {
+    const bool stale = !reason.isEmpty();
+    if (stale == m_stale && reason == m_staleLabel->text()) return;
+    m_stale = stale;
+    m_staleLabel->setText(reason);
+    m_staleLabel->setVisible(stale);
+    if (stale) placeStaleLabel(m_staleLabel);
+    for (std::size_t k = 0; k < m_segmentCurves.size(); ++k) {
+        QPen pen = m_segmentCurves[k]->pen();
+        pen.setColor(stale ? staleColor() : segmentColor(static_cast<int>(k)));
+        m_segmentCurves[k]->setPen(pen);
+    }
+    for (auto [graph, color] :
+         {std::pair{m_centers, QColor(80, 80, 80)}, std::pair{m_joints, QColor(Qt::black)}}) {
+        QCPScatterStyle style = graph->scatterStyle();
+        style.setPen(QPen(stale ? staleColor() : color));
+        graph->setScatterStyle(style);
+    }
+    m_ray->setVisible(!stale);
+    m_rayPoint->setVisible(!stale);
     replot(rpQueuedReplot);
 }
 

@@ -6,6 +6,7 @@
 #include "common/angles.h"
 #include "views/palette.h"
 #include "views/plot_data.h"
+#include "views/stale_label.h"
 
 namespace cam {
 
@@ -92,10 +93,16 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
         p->legend->setMinimumSize(legendWidth, 0);
         p->legend->setMaximumSize(legendWidth, QWIDGETSIZE_MAX);
     }
+    m_staleLabel = makeStaleLabel(this);
 }
 
 void KinematicsPlots::setResult(const ComputeResultPtr& result) {
-    if (!result || !result->ok()) return;
+    if (!result) return;
+    if (!result->ok()) {
+        setStale(staleText(*result));
+        return;
+    }
+    setStale({});
     m_result = result;
     // Made in the worker by the views' preparer; made here only without one (tests).
     m_data = std::dynamic_pointer_cast<const KinematicsPlotData>(result->prepared);
@@ -119,6 +126,31 @@ void KinematicsPlots::setResult(const ComputeResultPtr& result) {
     }
     chooseResolution(true);  // always the new result's data, also when the level stays
     fitY();
+}
+
+QString KinematicsPlots::staleReason() const { return m_stale ? m_staleLabel->text() : QString(); }
+
+void KinematicsPlots::setStale(const QString& reason) {
+    const bool stale = !reason.isEmpty();
+    if (stale == m_stale && reason == m_staleLabel->text()) return;
+    m_stale = stale;
+    m_staleLabel->setText(reason);
+    m_staleLabel->setVisible(stale);
+    if (stale) cam::placeStaleLabel(m_staleLabel);
+    for (QCustomPlot* plot : m_plots) {
+        for (int c = 0; c < plot->graphCount(); ++c) {
+            QPen pen = plot->graph(c)->pen();
+            pen.setColor(stale ? staleColor() : componentColor(c));
+            plot->graph(c)->setPen(pen);
+        }
+        plot->replot(QCustomPlot::rpQueuedReplot);
+    }
+    for (QCPItemStraightLine* m : m_jointMarkers) m->setVisible(!stale);
+}
+
+void KinematicsPlots::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    if (m_stale) cam::placeStaleLabel(m_staleLabel);
 }
 
 void KinematicsPlots::chooseResolution(bool force) {
