@@ -1,10 +1,13 @@
-// The contour view and the plots as a user drives them: a project that cannot be computed is
-// shown as out of date (edit, undo, redo).
+// The contour view and the readout as a user drives them: joints that stay marked when zoomed
+// in, a project that cannot be computed shown as out of date (edit, undo, redo), and a readout
+// that reads every angle and instant within one turn.
 
 #include <gtest/gtest.h>
 
 #include <QImage>
 #include <QLabel>
+#include <QTest>
+#include <QWheelEvent>
 #include <cmath>
 
 #include "app_test_support.h"
@@ -24,6 +27,73 @@ namespace cam {
 namespace {
 
 const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json"));
+
+QPointF pixelOf(const ContourView* view, double x, double y) {
+    return {view->xAxis->coordToPixel(x), view->yAxis->coordToPixel(y)};
+}
+
+/// Turns the mouse wheel over `at` (mm) until the view spans at most `spanMm` across.
+void wheelZoom(ContourView* view, const QPointF& at, double spanMm) {
+    for (int i = 0; i < 60 && view->xAxis->range().size() > spanMm; ++i) {
+        const QPointF pos = pixelOf(view, at.x(), at.y());
+        QWheelEvent wheel(pos, view->mapToGlobal(pos), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QCoreApplication::sendEvent(view, &wheel);
+    }
+}
+
+QCPGraph* graphNamed(QCustomPlot* plot, const QString& name) {
+    for (int i = 0; i < plot->graphCount(); ++i) {
+        if (plot->graph(i)->name() == name) return plot->graph(i);
+    }
+    return nullptr;
+}
+
+TEST(ContourView, EveryJointStaysMarkedWhenZoomedInOnIt) {
+    const Project project = test::loadExample();
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.resize(1400, 860);
+    window.show();
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    ContourView* view = window.contourView();
+    QCPGraph* joints = graphNamed(view, "joints");
+    ASSERT_NE(joints, nullptr);
+    int drawn = 0;
+    for (std::size_t k = 0; k < project.contour.size(); ++k) {
+        // Where segment k begins: on its arc at its start angle (from the document alone).
+        const SegmentSpec& s = project.contour[k];
+        const double phi = degToRad(s.phiStartDeg);
+        const double r = Arc{s.center, s.radius, s.branch}.evaluate(phi).r;
+        const QPointF joint(r * std::cos(phi), r * std::sin(phi));
+        view->resetZoom();
+        view->replot(QCustomPlot::rpImmediateRefresh);
+        wheelZoom(view, joint, 2.0);  // a ±1 mm view
+        ASSERT_LE(view->xAxis->range().size(), 2.0);
+        window.setCursorTime(0.55 * window.engine()->latestResult()->period);  // ray elsewhere
+        view->replot(QCustomPlot::rpImmediateRefresh);
+        const QPointF pixel = pixelOf(view, joint.x(), joint.y());
+        // The graph finds the point among those it draws, and the picture shows its marker: a
+        // white dot in a black ring, over the thick coloured contour.
+        const double distance = joints->selectTest(pixel, false);
+        const QImage image = view->grab().toImage();
+        const QColor centre = image.pixelColor(pixel.toPoint());
+        int ring = 0;
+        for (int a = 0; a < 16; ++a) {
+            const QPoint p =
+                (pixel + 2.5 * QPointF(std::cos(a * kPi / 8), std::sin(a * kPi / 8))).toPoint();
+            const QColor c = image.pixelColor(p);
+            ring += c.red() < 90 && c.green() < 90 && c.blue() < 90;
+        }
+        const bool marked =
+            distance >= 0 && distance < 2.0 && centre.lightness() > 230 && ring >= 6;
+        EXPECT_TRUE(marked) << "joint " << k << " at (" << joint.x() << ", " << joint.y()
+                            << "): distance " << distance << ", centre "
+                            << centre.name().toStdString() << ", ring " << ring;
+        drawn += marked;
+    }
+    EXPECT_EQ(drawn, 13);
+}
 
 TEST(ContourView, AProjectThatCannotBeComputedIsShownGreyedAndLabelled) {
     MainWindow window;

@@ -30,6 +30,9 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
         tr("Wheel: zoom · drag: pan · drag a square/diamond handle: move the centre or "
            "change the radius of the selected arc"));
 
+    // Centres and joints above the segments' curves (which come and go with the segments): a
+    // marker never disappears under the line it marks.
+    addLayer("markers", layer("main"), QCustomPlot::limAbove);
     m_ray = new QCPItemLine(this);
     m_ray->setPen(QPen(QColor(90, 90, 90), 1, Qt::DashLine));
     m_ray->start->setCoords(0, 0);
@@ -41,10 +44,12 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     m_rayPoint->setBrush(Qt::white);
 
     m_centers = addGraph();
+    m_centers->setLayer("markers");
     m_centers->setName(tr("centres"));
     m_centers->setLineStyle(QCPGraph::lsNone);
     m_centers->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QColor(80, 80, 80), 6));
     m_joints = addGraph();
+    m_joints->setLayer("markers");
     m_joints->setName(tr("joints"));
     m_joints->setLineStyle(QCPGraph::lsNone);
     m_joints->setScatterStyle(
@@ -112,7 +117,9 @@ void ContourView::setResult(const ComputeResultPtr& result) {
         }
     }
     m_centers->setData(cx, cy);
-    m_joints->setData(jx, jy, true);
+    // Around the contour x goes back and forth: the graph must sort the joints by x itself, or
+    // its search for the visible ones skips some when zoomed in.
+    m_joints->setData(jx, jy);
     if (m_autoFit) resetZoom();
     setCursorAngle(m_cursorPhi);
 }
