@@ -114,9 +114,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_contour, &ContourView::cursorAngleChanged, this, [this](double phi) {
         const auto& r = m_shown;
         if (!r) return;
-        double t = std::fmod(phi / r->omega, r->period);
-        if (t < 0) t += r->period;
-        setCursorTime(t);
+        setCursorTime(phi / r->omega);  // the instant the ray points there (reduced below)
     });
     connect(m_plots, &KinematicsPlots::cursorMoved, this, [this](double x) {
         const auto& r = m_shown;
@@ -166,9 +164,7 @@ void MainWindow::setUpDocks() {
     m_ui->segmentsDock->raise();
     connect(m_joints, &JointsPanel::jointPicked, this, [this](int, int right, double phi) {
         if (!m_shown) return;
-        double t = std::fmod(phi / m_shown->omega, m_shown->period);
-        if (t < 0) t += m_shown->period;
-        setCursorTime(t);
+        setCursorTime(phi / m_shown->omega);
         m_ui->segmentTable->selectRow(right);
     });
     m_pathStudy = new PathStudyPanel(m_ui->pathStudyDock);
@@ -522,12 +518,16 @@ void MainWindow::setCursorTime(double t) {
         m_readout->clear();
         return;
     }
-    m_cursorT = std::fmod(t, r->period);
+    // Any instant, the mouse's or a joint's, is read within the turn: 0 <= t < T.
+    t = std::fmod(t, r->period);
+    if (t < 0.0) t += r->period;
+    if (t >= r->period) t = 0.0;
+    m_cursorT = t;
     // One state from the shared, immutable contour of the result: a few hundred nanoseconds.
-    const KinematicState s = stateAt(*r->contour, r->omega, m_cursorT);
+    const KinematicState s = stateAt(*r->contour, r->omega, t);
     m_readout->setState(s);
     m_contour->setCursorAngle(s.phi);
-    m_plots->setCursorX(r->axis == PlotAxis::Angle ? radToDeg(s.phi) : m_cursorT);
+    m_plots->setCursorX(r->axis == PlotAxis::Angle ? radToDeg(s.phi) : t);
 }
 
 bool MainWindow::waitForCurrentResult(int timeoutMs) {

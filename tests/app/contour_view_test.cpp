@@ -178,5 +178,49 @@ TEST(ContourView, AProjectThatCannotBeComputedIsShownGreyedAndLabelled) {
     expectStale(true, "after redo");
 }
 
+TEST(StateReadout, ReadsAnglesAndInstantsWithinOneTurnWhereverTheMouseIs) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.resize(1400, 860);
+    window.show();
+    for (const double omega : {15.0, -15.0}) {
+        window.document()->undoStack()->push(
+            new SetMotion(window.document(), {SpeedUnit::OmegaRadS, omega}));
+        ASSERT_TRUE(window.waitForCurrentResult(10000));
+        const double period = kTwoPi / 15.0;
+        ContourView* view = window.contourView();
+        view->replot(QCustomPlot::rpImmediateRefresh);
+        // The mouse in the lower half of the contour, at 303.69° (−56.31°).
+        const QPointF at = pixelOf(view, 10.0, -15.0);
+        QTest::mouseMove(view, at.toPoint());
+        QCoreApplication::processEvents();
+        const double x = view->xAxis->pixelToCoord(at.toPoint().x());
+        const double y = view->yAxis->pixelToCoord(at.toPoint().y());
+        const double phi = std::atan2(y, x) + kTwoPi;  // in [0, 2π): the lower half
+        // Turning clockwise, the ray reaches 303.69° after 360° − 303.69° of rotation.
+        const double t = omega > 0 ? phi / omega : (kTwoPi - phi) / -omega;
+        // The readout shows eight significant digits.
+        EXPECT_TRUE(test::relClose(test::readoutValue(window, "φ"), radToDeg(phi), 1e-7)) << omega;
+        EXPECT_TRUE(test::relClose(test::readoutValue(window, "t"), t, 1e-7)) << omega;
+        EXPECT_GE(test::readoutValue(window, "t"), 0.0);
+        EXPECT_LT(test::readoutValue(window, "t"), period);
+
+        // Left of the plots' axis, where the axis reads a negative x: still within the turn.
+        QCustomPlot* velocity = window.plots()->plot(0);
+        const QRect rect = velocity->axisRect()->rect();
+        QTest::mouseMove(velocity, QPoint(rect.left() - 20, rect.center().y()));
+        QCoreApplication::processEvents();
+        const double readT = test::readoutValue(window, "t");
+        const double readPhi = test::readoutValue(window, "φ");
+        EXPECT_GE(readT, 0.0) << omega;
+        EXPECT_LT(readT, period) << omega;
+        EXPECT_GE(readPhi, 0.0) << omega;
+        EXPECT_LT(readPhi, 360.0) << omega;
+        // The angle the mouse points at, a few degrees before the start, read within the turn.
+        const double xDeg = velocity->xAxis->pixelToCoord(rect.left() - 20);
+        EXPECT_TRUE(test::relClose(readPhi, mod360(xDeg), 1e-7)) << omega;
+    }
+}
+
 }  // namespace
 }  // namespace cam
