@@ -262,5 +262,44 @@ TEST(KinematicsPlots, ZoomingInDrawsFinerDataButNeverMoreThanAFewPointsPerPixel)
     EXPECT_TRUE(std::is_sorted(levels.rbegin(), levels.rend()));
 }
 
+TEST(KinematicsPlots, CursorMovesRedrawOnlyTheCursorLayer) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.resize(1400, 860);
+    window.show();
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    test::processEventsUntil([] { return false; }, 100);  // queued replots are done
+    std::vector<QCustomPlot*> views = {window.plots()->plot(0), window.plots()->plot(1),
+                                       window.plots()->plot(2), window.contourView()};
+    std::vector<int> fullReplots(views.size(), 0);
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        QObject::connect(views[i], &QCustomPlot::afterReplot,
+                         [&fullReplots, i] { ++fullReplots[i]; });
+        QCPLayer* layer = views[i]->layer("cursor");
+        ASSERT_NE(layer, nullptr) << i;
+        EXPECT_EQ(layer->mode(), QCPLayer::lmBuffered) << i;
+        EXPECT_FALSE(layer->children().isEmpty()) << i;
+    }
+    QCustomPlot* velocity = window.plots()->plot(0);
+    const QRect rect = velocity->axisRect()->rect();
+    int column = 0;
+    for (int step = 1; step <= 5; ++step) {
+        column = rect.left() + rect.width() * step / 6;
+        QTest::mouseMove(velocity, QPoint(column, rect.center().y()));
+        test::processEventsUntil([] { return false; }, 20);
+    }
+    for (std::size_t i = 0; i < views.size(); ++i) EXPECT_EQ(fullReplots[i], 0) << i;
+    // The cursor did move: the readout and the dashed line are at the mouse's angle.
+    const double x = velocity->xAxis->pixelToCoord(column);
+    EXPECT_TRUE(test::relClose(test::readoutValue(window, "φ"), x, 1e-7));  // 8 digits shown
+    const QImage image = velocity->grab().toImage();
+    int dark = 0;
+    for (int y = rect.top() + 2; y < rect.bottom() - 2; ++y) {
+        const QColor c = image.pixelColor(column, y);
+        dark += c.red() < 120 && c.green() < 120 && c.blue() < 120;
+    }
+    EXPECT_GT(dark, rect.height() / 4);  // a dashed line: about half of the column
+}
+
 }  // namespace
 }  // namespace cam

@@ -31,13 +31,19 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
            "change the radius of the selected arc"));
 
     // Centres and joints above the segments' curves (which come and go with the segments): a
-    // marker never disappears under the line it marks.
+    // marker never disappears under the line it marks. Above them the follower ray and its
+    // point, on a buffered layer of their own: a cursor move redraws them alone.
     addLayer("markers", layer("main"), QCustomPlot::limAbove);
+    addLayer("cursor", layer("markers"), QCustomPlot::limAbove);
+    m_cursorLayer = layer("cursor");
+    m_cursorLayer->setMode(QCPLayer::lmBuffered);
     m_ray = new QCPItemLine(this);
+    m_ray->setLayer(m_cursorLayer);
     m_ray->setPen(QPen(QColor(90, 90, 90), 1, Qt::DashLine));
     m_ray->start->setCoords(0, 0);
     m_ray->end->setCoords(0, 0);
     m_rayPoint = new QCPItemTracer(this);
+    m_rayPoint->setLayer(m_cursorLayer);
     m_rayPoint->setStyle(QCPItemTracer::tsCircle);
     m_rayPoint->setSize(7);
     m_rayPoint->setPen(QPen(Qt::black));
@@ -122,6 +128,7 @@ void ContourView::setResult(const ComputeResultPtr& result) {
     m_joints->setData(jx, jy);
     if (m_autoFit) resetZoom();
     setCursorAngle(m_cursorPhi);
+    replot(rpQueuedReplot);  // the new contour (the cursor alone redraws only its layer)
 }
 
 void ContourView::resetZoom() {
@@ -178,7 +185,7 @@ void ContourView::setCursorAngle(double phi) {
     const double reach = std::max(r * 1.25, r + 5.0);
     m_ray->end->setCoords(reach * std::cos(phi), reach * std::sin(phi));
     m_rayPoint->position->setCoords(r * std::cos(phi), r * std::sin(phi));
-    replot(rpQueuedReplot);
+    m_cursorLayer->replot();
 }
 
 QString ContourView::staleReason() const { return m_stale ? m_staleLabel->text() : QString(); }

@@ -55,6 +55,7 @@ private:
     QCPCurve* m_controlPolygon = nullptr;  ///< P0–P1–P2–P3 of the selected spline
     QCPItemLine* m_ray = nullptr;
     QCPItemTracer* m_rayPoint = nullptr;
+    QCPLayer* m_cursorLayer = nullptr;  ///< buffered: the ray and its point alone
     QLabel* m_staleLabel = nullptr;
     bool m_stale = false;
     int m_selected = -1;

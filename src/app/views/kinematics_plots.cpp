@@ -50,7 +50,13 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
         side->addElement(1, 0, new QCPLayoutElement(plot));  // spacer: legend stays at the top
         side->setRowStretchFactor(0, 0.001);
         side->setMargins(QMargins(0, 8, 4, 0));
+        // The cursor on a buffered layer of its own: a move redraws one line, not the curves.
+        plot->addLayer("cursor", plot->layer("main"), QCustomPlot::limAbove);
+        QCPLayer* cursorLayer = plot->layer("cursor");
+        cursorLayer->setMode(QCPLayer::lmBuffered);
+        m_cursorLayers[static_cast<std::size_t>(p)] = cursorLayer;
         auto* cursor = new QCPItemStraightLine(plot);
+        cursor->setLayer(cursorLayer);
         cursor->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
         cursor->point1->setCoords(0, 0);
         cursor->point2->setCoords(0, 1);
@@ -199,7 +205,7 @@ void KinematicsPlots::setCursorX(double x) {
     for (std::size_t p = 0; p < 3; ++p) {
         m_cursors[p]->point1->setCoords(x, 0);
         m_cursors[p]->point2->setCoords(x, 1);
-        m_plots[p]->replot(QCustomPlot::rpQueuedReplot);
+        m_cursorLayers[p]->replot();
     }
 }
 

@@ -10,6 +10,7 @@
 
 class QCustomPlot;
 class QCPItemStraightLine;
+class QCPLayer;
 class QLabel;
 
 namespace cam {
@@ -24,7 +25,8 @@ public:
     /// @brief Shows a result. One that could not be computed leaves the last curves in place,
     /// greyed, under a label that says why (see staleReason()).
     void setResult(const ComputeResultPtr& result);
-    /// @brief Moves the cursor line to x (degrees or seconds, as the axis shows).
+    /// @brief Moves the cursor line to x (degrees or seconds, as the axis shows). Redraws only
+    /// the cursor's own buffered layer.
     void setCursorX(double x);
     void resetZoom();
     [[nodiscard]] QCustomPlot* plot(int i) const { return m_plots[static_cast<std::size_t>(i)]; }
@@ -49,6 +51,7 @@ private:
 
     std::array<QCustomPlot*, 3> m_plots{};
     std::array<QCPItemStraightLine*, 3> m_cursors{};
+    std::array<QCPLayer*, 3> m_cursorLayers{};
     std::vector<QCPItemStraightLine*> m_jointMarkers;
     QLabel* m_staleLabel = nullptr;
     ComputeResultPtr m_result;  ///< the result drawn (the last one that could be computed)
