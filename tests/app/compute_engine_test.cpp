@@ -191,7 +191,7 @@ TEST(ComputeEngine, DestroyingTheEngineDuringABigTurnIsQuick) {
         test::processEventsUntil([] { return false; }, 150);  // well into the computation
         timer.start();
     }
-    EXPECT_LT(timer.elapsed(), 100);
+    EXPECT_LT(timer.elapsed(), 300);  // it took 650–830 ms when only the sampling polled
 }
 
 TEST(ComputeEngine, ATenMillionSampleTurnHoldsABoundedNumberOfPoints) {
