@@ -237,6 +237,19 @@
     </message>
 </context>
 <context>
+    <name>cam::ComputeWorker</name>
+    <message>
+        <location filename="../../src/app/engine/compute_engine.cpp" line="+45" />
+        <source>out of memory — fewer samples per turn would need less</source>
+        <translation>zu wenig Arbeitsspeicher – weniger Abtastpunkte pro Umdrehung bräuchten weniger</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the computation failed: %1</source>
+        <translation>die Berechnung ist fehlgeschlagen: %1</translation>
+    </message>
+</context>
+<context>
     <name>cam::ContourDialogs</name>
     <message>
         <location filename="../../src/app/dialogs/contour_dialogs.cpp" line="+46" />
@@ -307,7 +320,7 @@
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+25" />
         <source>Insert segment</source>
         <translation>Segment einfügen</translation>
     </message>
@@ -347,7 +360,7 @@
         <translation>Das Segment nach der zu verrundenden Ecke auswählen.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>Round corner</source>
         <translation>Ecke verrunden</translation>
     </message>
@@ -367,7 +380,7 @@
         <translation>Bogen durch Béziers annähern</translation>
     </message>
     <message numerus="yes">
-        <location line="+2" />
+        <location line="+1" />
         <source>%n Bézier piece(s): radial error %1 mm, end/middle speed ratio %2</source>
         <translation>
             <numerusform>%n Bézierstück: Radialabweichung %1 mm, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform>
@@ -375,7 +388,7 @@
         </translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+16" />
         <source>New contour through points</source>
         <translation>Neue Kontur durch Punkte</translation>
     </message>
@@ -391,7 +404,7 @@
 <context>
     <name>cam::ContourView</name>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="+18" />
+        <location filename="../../src/app/views/contour_view.cpp" line="+19" />
         <source>x [mm]</source>
         <translation>x [mm]</translation>
     </message>
@@ -406,22 +419,22 @@
         <translation>Mausrad: zoomen · Ziehen: verschieben · Griff ziehen: Mittelpunkt verschieben oder Radius des ausgewählten Bogens ändern</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+24" />
         <source>centres</source>
         <translation>Mittelpunkte</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>joints</source>
         <translation>Übergänge</translation>
     </message>
     <message>
-        <location line="+52" />
+        <location line="+57" />
         <source>segment %1</source>
         <translation>Segment %1</translation>
     </message>
     <message>
-        <location line="+154" />
+        <location line="+183" />
         <location line="+8" />
         <source>Shape segment %1</source>
         <translation>Segment %1 formen</translation>
@@ -498,7 +511,7 @@
 <context>
     <name>cam::KinematicsPlots</name>
     <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="+15" />
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="+17" />
         <source>Velocity [mm/s]</source>
         <translation>Geschwindigkeit [mm/s]</translation>
     </message>
@@ -558,7 +571,7 @@
         <translation>|j|</translation>
     </message>
     <message>
-        <location line="+77" />
+        <location line="+104" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -571,7 +584,7 @@
 <context>
     <name>cam::MachiningPanel</name>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="+45" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="+46" />
         <source>Add Machining Limits</source>
         <translation>Bearbeitungsgrenzen hinzufügen</translation>
     </message>
@@ -729,7 +742,7 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+143" />
+        <location filename="../../src/app/mainwindow.cpp" line="+141" />
         <source>Machining limits and times (Ctrl+M)</source>
         <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
     </message>
@@ -806,17 +819,27 @@
         <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+58" />
+        <location line="+65" />
+        <source>not computed: %1</source>
+        <translation>nicht berechnet: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>not computed: the project has problems</source>
         <translation>nicht berechnet: das Projekt hat Fehler</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+2" />
+        <source>Computation failed: %1</source>
+        <translation>Berechnung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>%1 samples computed in %2 ms</source>
         <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
     </message>
     <message>
-        <location line="+60" />
+        <location line="+70" />
         <source>Valid · 1 segment</source>
         <translation>Gültig · 1 Segment</translation>
     </message>
@@ -841,7 +864,7 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-202" />
+        <location line="-221" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -940,7 +963,7 @@ T = %3 s</translation>
     </message>
     <message>
         <location line="+9" />
-        <location line="+19" />
+        <location line="+22" />
         <source>The contour has no Bézier or Hermite segment.</source>
         <translation>Die Kontur hat kein Bézier- oder Hermite-Segment.</translation>
     </message>
@@ -1194,6 +1217,16 @@ Möchten Sie die Datei ersetzen?</translation>
         <location line="+84" />
         <source>Edit %1 of segment %2</source>
         <translation>%1 von Segment %2 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>cam::StaleLabel</name>
+    <message>
+        <location filename="../../src/app/views/stale_label.h" line="+28" />
+        <source>Not computed: %1%2
+Grey: the last computed state, out of date.</source>
+        <translation>Nicht berechnet: %1%2
+Grau: der zuletzt berechnete Stand, veraltet.</translation>
     </message>
 </context>
 <context>

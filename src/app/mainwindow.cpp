@@ -29,6 +29,7 @@
 #include "views/machining_panel.h"
 #include "views/motion_panel.h"
 #include "views/path_study_panel.h"
+#include "views/plot_data.h"
 #include "views/state_readout.h"
 
 namespace cam {
@@ -73,18 +74,18 @@ MainWindow::MainWindow(QWidget* parent)
     });
     connect(m_document, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
+    // The views' containers are made in the worker, next to the computation.
+    m_engine->setPlotDataPreparer(std::make_shared<QcpPlotDataPreparer>());
     connect(m_engine, &ComputeEngine::resultReady, this, &MainWindow::showResult);
     connect(m_engine, &ComputeEngine::timingReady, m_machining, &MachiningPanel::setOutcome);
     connect(m_contour, &ContourView::cursorAngleChanged, this, [this](double phi) {
-        const auto& r = m_engine->latestResult();
-        if (!r || !r->ok()) return;
-        double t = std::fmod(phi / r->omega, r->period);
-        if (t < 0) t += r->period;
-        setCursorTime(t);
+        const auto& r = m_shown;
+        if (!r) return;
+        setCursorTime(phi / r->omega);  // the instant the ray points there (reduced below)
     });
     connect(m_plots, &KinematicsPlots::cursorMoved, this, [this](double x) {
-        const auto& r = m_engine->latestResult();
-        if (!r || !r->ok()) return;
+        const auto& r = m_shown;
+        if (!r) return;
         setCursorTime(r->axis == PlotAxis::Angle ? degToRad(x) / r->omega : x);
     });
 
@@ -126,11 +127,8 @@ void MainWindow::setUpDocks() {
     tabifyDockWidget(m_ui->segmentsDock, m_ui->jointsDock);
     m_ui->segmentsDock->raise();
     connect(m_joints, &JointsPanel::jointPicked, this, [this](int, int right, double phi) {
-        const auto& r = m_engine->latestResult();
-        if (!r || !r->ok()) return;
-        double t = std::fmod(phi / r->omega, r->period);
-        if (t < 0) t += r->period;
-        setCursorTime(t);
+        if (!m_shown) return;
+        setCursorTime(phi / m_shown->omega);
         m_ui->segmentTable->selectRow(right);
     });
     m_pathStudy = new PathStudyPanel(m_ui->pathStudyDock);
@@ -298,27 +296,46 @@ void MainWindow::requestCompute() {
 }
 
 void MainWindow::showResult(const ComputeResultPtr& result) {
-    if (!result->ok()) {
-        m_computeLabel->setText(tr("not computed: the project has problems"));
-        return;
-    }
+    // The views keep what they drew from the last computable result and mark it out of date.
     m_contour->setResult(result);
     m_plots->setResult(result);
     m_joints->setResult(result);
     m_pathStudy->setResult(result);
-    m_cursorT = std::fmod(m_cursorT, result->period);
+    if (!result->ok()) {
+        const QString first = QString::fromStdString(result->errors.front().text());
+        // The problems themselves are in the validation label beside it.
+        m_computeLabel->setText(result->failed ? tr("not computed: %1").arg(first)
+                                               : tr("not computed: the project has problems"));
+        m_computeLabel->setStyleSheet("color: #b00020;");
+        if (result->failed) statusBar()->showMessage(tr("Computation failed: %1").arg(first));
+        m_readout->clear();  // no state of the project as it is
+        emit resultShown(result);
+        return;
+    }
+    m_shown = result;
+    m_computeLabel->setStyleSheet({});
     setCursorTime(m_cursorT);
     m_computeLabel->setText(
         tr("%1 samples computed in %2 ms")
-            .arg(QLocale().toString(static_cast<qlonglong>(result->turn.size())),
+            .arg(QLocale().toString(static_cast<qlonglong>(result->sampleCount)),
                  QLocale().toString(result->computeMs, 'f', 1)));
     emit resultShown(result);
 }
 
 void MainWindow::setCursorTime(double t) {
+    const auto& r = m_shown;
+    const auto& latest = m_engine->latestResult();
+    if (!r || !latest || !latest->ok()) {
+        // Nothing computed for the project as it is: no state to read out.
+        m_cursorT = t;
+        m_readout->clear();
+        return;
+    }
+    // Any instant, the mouse's or a joint's, is read within the turn: 0 <= t < T.
+    t = std::fmod(t, r->period);
+    if (t < 0.0) t += r->period;
+    if (t >= r->period) t = 0.0;
     m_cursorT = t;
-    const auto& r = m_engine->latestResult();
-    if (!r || !r->ok()) return;
     // One state from the shared, immutable contour of the result: a few hundred nanoseconds.
     const KinematicState s = stateAt(*r->contour, r->omega, t);
     m_readout->setState(s);
@@ -357,7 +374,7 @@ QImage MainWindow::renderScreenshot(const QSize& size) {
         });
         if (!current()) loop.exec();
     }
-    setCursorTime(m_engine->latestResult()->period / 8.0);
+    if (m_shown) setCursorTime(m_shown->period / 8.0);
     statusBar()->clearMessage();  // transient messages name paths: not part of the picture
     for (int p = 0; p < 3; ++p) m_plots->plot(p)->replot(QCustomPlot::rpImmediateRefresh);
     m_contour->replot(QCustomPlot::rpImmediateRefresh);

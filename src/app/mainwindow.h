@@ -108,6 +108,7 @@ private:
     QLabel* m_validationLabel;
     QLabel* m_computeLabel;
     double m_cursorT = 0.0;
+    ComputeResultPtr m_shown;  ///< the last result that could be computed: what the views draw
 };
 
 }  // namespace cam

@@ -3,7 +3,10 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QLocale>
+#include <QStringList>
 #include <QThread>
+#include <limits>
 
 #include "io/project_json.h"
 #include "test_support.h"
@@ -29,6 +32,20 @@ bool processEventsUntil(Predicate done, int timeoutMs = 10000) {
         QThread::msleep(1);
     }
     return done();
+}
+
+/// The number a row of the State-at-Cursor readout shows ("φ 45 °" → 45); NaN if absent.
+template <class Window>
+double readoutValue(const Window& window, const QString& name) {
+    for (const QString& line : window.readout()->text().split('\n')) {
+        const QStringList parts = line.split(' ');
+        if (parts.size() >= 2 && parts[0] == name) {
+            bool ok = false;
+            const double value = QLocale::c().toDouble(QString(parts[1]).remove(','), &ok);
+            if (ok) return value;
+        }
+    }
+    return std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace cam::test

@@ -3,6 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <QElapsedTimer>
+#include <QThread>
+#include <algorithm>
+#include <new>
+#include <stdexcept>
+
 #include "app_test_support.h"
 #include "common/angles.h"
 #include "engine/compute_engine.h"
@@ -12,7 +18,9 @@ namespace {
 
 Project heavyExample(double period) {
     Project p = test::loadExample();
-    p.samplesPerTurn = 200'000;  // a few ms per computation: long enough to be superseded
+    // A few ms per computation (long enough to be superseded), and few enough samples that the
+    // plotted curves keep every one of them (PlotCurves::kMaxLevelPoints).
+    p.samplesPerTurn = 60'000;
     p.motion = {SpeedUnit::PeriodS, period};
     return p;
 }
@@ -40,12 +48,23 @@ TEST(ComputeEngine, HundredRapidEditsGiveOneFinalResultForTheLastSnapshot) {
     EXPECT_DOUBLE_EQ(r->project->motion.value, lastPeriod);
     const Contour contour = Contour::build(heavyExample(lastPeriod)).value();
     SampledTurn expected;
-    sampleTurn(contour, kTwoPi / lastPeriod, 200'000, expected);
-    ASSERT_EQ(r->turn.size(), expected.size());
-    for (std::size_t k = 0; k < expected.size(); k += 997) {
-        EXPECT_EQ(r->turn.r[k], expected.r[k]);
-        EXPECT_EQ(r->turn.aR[k], expected.aR[k]);
-        EXPECT_EQ(r->turn.jPhi[k], expected.jPhi[k]);
+    sampleTurn(contour, kTwoPi / lastPeriod, 60'000, expected);
+    // The finest level of the plotted curves holds every sample (in chunks, bit for bit).
+    ASSERT_EQ(r->sampleCount, expected.size());
+    const PlotLevel& finest = r->curves.levels.front();
+    ASSERT_EQ(finest.samplesPerBucket, 1u);
+    for (const auto& [curve, values] :
+         {std::pair{Curve::AR, &expected.aR}, std::pair{Curve::JPhi, &expected.jPhi},
+          std::pair{Curve::V, &expected.v}}) {
+        const auto& points = finest.curves[static_cast<std::size_t>(curve)];
+        for (std::size_t k = 0; k < expected.size(); k += 997) {
+            const double x = radToDeg(expected.phi[k]);
+            const auto at = std::lower_bound(points.begin(), points.end(), x,
+                                             [](const PlotPoint& p, double v) { return p.x < v; });
+            ASSERT_NE(at, points.end());
+            ASSERT_EQ(at->x, x) << k;
+            EXPECT_EQ(at->y, (*values)[k]) << k;
+        }
     }
 }
 
@@ -74,6 +93,150 @@ TEST(ComputeEngine, AnInvalidProjectGivesItsErrorsNotACrash) {
     ASSERT_TRUE(test::processEventsUntil([&] { return engine.latestResult() != nullptr; }));
     EXPECT_FALSE(engine.latestResult()->ok());
     EXPECT_EQ(engine.latestResult()->errors.front().location, "contour[2].radius");
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+/// A preparer that fails, stalls or passes, as a test needs: what the worker runs after the
+/// computation, so it stands for any step that throws or ignores the cancel flag.
+class ScriptedPreparer : public PlotDataPreparer {
+public:
+    enum class Mode { Pass, ThrowOutOfMemory, ThrowError, IgnoreCancelFor2s };
+    std::atomic<Mode> mode{Mode::Pass};
+    mutable std::atomic<int> calls{0};
+
+    PreparedPlotDataPtr prepare(const ComputeResult&, const std::atomic<bool>&) const override {
+        ++calls;
+        switch (mode.load()) {
+            case Mode::ThrowOutOfMemory:
+                throw std::bad_alloc();
+            case Mode::ThrowError:
+                throw std::runtime_error("scripted failure");
+            case Mode::IgnoreCancelFor2s:
+                QThread::msleep(2000);
+                return nullptr;
+            case Mode::Pass:
+                return nullptr;
+        }
+        return nullptr;
+    }
+    PreparedPlotDataPtr prepareTiming(const TimingOutcome&) const override { return nullptr; }
+};
+
+TEST(ComputeEngine, AComputationThatThrowsBecomesAMessageAndTheNextRequestWorks) {
+    ComputeEngine engine;
+    engine.setCoalesceMs(0);
+    auto preparer = std::make_shared<ScriptedPreparer>();
+    engine.setPlotDataPreparer(preparer);
+    const auto answered = [&](std::uint64_t generation) {
+        return test::processEventsUntil([&] {
+            return engine.latestResult() && engine.latestResult()->generation == generation;
+        });
+    };
+    preparer->mode = ScriptedPreparer::Mode::ThrowOutOfMemory;
+    engine.request(test::loadExample(), PlotAxis::Angle);
+    ASSERT_TRUE(answered(1));
+    EXPECT_FALSE(engine.latestResult()->ok());
+    EXPECT_TRUE(engine.latestResult()->failed);
+    ASSERT_EQ(engine.latestResult()->errors.size(), 1u);
+    EXPECT_NE(engine.latestResult()->errors.front().message.find("out of memory"),
+              std::string::npos);
+
+    preparer->mode = ScriptedPreparer::Mode::ThrowError;
+    engine.request(test::loadExample(), PlotAxis::Angle);
+    ASSERT_TRUE(answered(2));
+    EXPECT_TRUE(engine.latestResult()->failed);
+    EXPECT_NE(engine.latestResult()->errors.front().message.find("scripted failure"),
+              std::string::npos);
+
+    preparer->mode = ScriptedPreparer::Mode::Pass;
+    engine.request(test::loadExample(), PlotAxis::Angle);
+    ASSERT_TRUE(answered(3));
+    EXPECT_TRUE(engine.latestResult()->ok());
+    EXPECT_FALSE(engine.latestResult()->failed);
+    EXPECT_EQ(preparer->calls.load(), 3);
+}
+
+TEST(ComputeEngine, DestructorReturnsWithinItsBoundEvenIfAStepIgnoresCancel) {
+    auto preparer = std::make_shared<ScriptedPreparer>();
+    preparer->mode = ScriptedPreparer::Mode::IgnoreCancelFor2s;
+    QElapsedTimer timer;
+    {
+        ComputeEngine engine;
+        engine.setPlotDataPreparer(preparer);
+        engine.request(test::loadExample(), PlotAxis::Angle);
+        ASSERT_TRUE(test::processEventsUntil([&] { return preparer->calls.load() > 0; }));
+        timer.start();
+    }
+    EXPECT_LT(timer.elapsed(), ComputeEngine::kStopTimeoutMs + 300);
+    EXPECT_GE(timer.elapsed(), ComputeEngine::kStopTimeoutMs - 50);  // it did wait first
+}
+
+Project bigExample() {
+    Project p = test::loadExample();
+    p.samplesPerTurn = kMaxSamplesPerTurn;  // 10,000,000
+    return p;
+}
+
+TEST(ComputeEngine, DestroyingTheEngineDuringABigTurnIsQuick) {
+    // Every step polls the cancel flag: sampling, envelopes, analysis.
+    QElapsedTimer timer;
+    {
+        ComputeEngine engine;
+        engine.request(bigExample(), PlotAxis::Angle);
+        test::processEventsUntil([] { return false; }, 150);  // well into the computation
+        timer.start();
+    }
+    EXPECT_LT(timer.elapsed(), 300);  // it took 650–830 ms when only the sampling polled
+}
+
+TEST(ComputeEngine, ATenMillionSampleTurnHoldsABoundedNumberOfPoints) {
+    ComputeEngine engine;
+    const Project p = bigExample();
+    engine.request(p, PlotAxis::Angle);
+    ASSERT_TRUE(test::processEventsUntil([&] { return engine.latestResult() != nullptr; }, 60000));
+    const ComputeResult& r = *engine.latestResult();
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r.sampleCount, 10'000'000u);
+    EXPECT_EQ(r.curves.levels.front().samplesPerBucket, 512u);  // the finest envelope
+    // The bound: per curve, the finest level at most kMaxLevelPoints and each coarser one a
+    // quarter of the one before (together at most a third more), plus per level three points
+    // per joint and the end point.
+    const std::size_t joints = r.contour->size();
+    const std::size_t perCurve =
+        4 * PlotCurves::kMaxLevelPoints / 3 + r.curves.levels.size() * (3 * joints + 1);
+    EXPECT_LE(r.curves.pointCount(), kCurveCount * perCurve);
+    EXPECT_GT(r.curves.levels.size(), 1u);
+    // Bounded, and still true: the ranges of the plots are the exact extremes the analysis
+    // finds (golden-section search on each segment's own formula), here at joints.
+    const ContourAnalysis analysis = analyzeContour(*r.contour, r.omega);
+    const auto extreme = [&](Quantity q) {
+        for (const QuantityExtremes& e : analysis.extremes) {
+            if (e.quantity == q) return e;
+        }
+        return QuantityExtremes{};
+    };
+    EXPECT_NEAR(r.curves.yRanges[1].upper, extreme(Quantity::A).max.value, 1e-9 * 4e5);
+    EXPECT_NEAR(r.curves.yRanges[1].lower, extreme(Quantity::AR).min.value, 1e-9 * 4e5);
+    EXPECT_NEAR(r.curves.yRanges[0].upper, extreme(Quantity::V).max.value, 1e-9 * 1e3);
+    // Every level keeps those extremes, in ascending x over the whole turn [0°, 360°].
+    for (const PlotLevel& level : r.curves.levels) {
+        const auto& a = level.curves[static_cast<std::size_t>(Curve::A)];
+        double hi = 0.0;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            if (!std::isnan(a[i].y)) hi = std::max(hi, a[i].y);
+            if (i > 0) {
+                ASSERT_LE(a[i - 1].x, a[i].x) << level.samplesPerBucket;
+            }
+        }
+        EXPECT_DOUBLE_EQ(hi, r.curves.yRanges[1].upper) << level.samplesPerBucket;
+        EXPECT_EQ(a.front().x, 0.0);
+        EXPECT_NEAR(a.back().x, 360.0, 1e-12);
+    }
 }
 
 }  // namespace

@@ -71,9 +71,9 @@ TEST(MachiningPanel, ShowsTheThreeTimesTheCoreComputes) {
                                test::referenceOptimal(pieces, tangent, lim, 1e-3), 1e-5));
     EXPECT_LT(outcome->timesS[2], outcome->timesS[1]);  // optimal beats exact stop here
     // The plotted profile (optimal) runs over the whole path and ends at rest.
-    ASSERT_FALSE(outcome->feed->isEmpty());
-    EXPECT_NEAR((outcome->feed->constEnd() - 1)->key, length, 1e-9);
-    EXPECT_EQ((outcome->feed->constEnd() - 1)->value, 0.0);
+    ASSERT_FALSE(outcome->profile.s.empty());
+    EXPECT_NEAR(outcome->profile.s.back(), length, 1e-9);
+    EXPECT_EQ(outcome->profile.speed.back(), 0.0);
 }
 
 TEST(MachiningPanel, EditingTheToolRadiusIsUndoableAndRecomputes) {

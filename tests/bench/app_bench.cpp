@@ -4,11 +4,16 @@
 //                         kinematics plots have been redrawn with its result (manual time).
 //  BM_StreamingEdits    — 200 cell edits at 100 Hz; counters report the longest stall of the
 //                         GUI thread and its 99th percentile, measured by a 1 ms probe timer.
+//  BM_ComputeProject    — the worker's share of an edit: the whole computation of one request
+//                         including the views' plot containers (no GUI involved).
+//  BM_CursorMove        — one mouse move over the velocity plot: from the event until the three
+//                         plots and the contour view have painted the new cursor (manual time).
 
 #include <benchmark/benchmark.h>
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QMouseEvent>
 #include <QTimer>
 #include <algorithm>
 #include <vector>
@@ -17,7 +22,9 @@
 #include "engine/compute_engine.h"
 #include "mainwindow.h"
 #include "models/segment_table_model.h"
+#include "views/contour_view.h"
 #include "views/kinematics_plots.h"
+#include "views/plot_data.h"
 
 #include <qcustomplot.h>
 
@@ -122,6 +129,101 @@ BENCHMARK(BM_StreamingEdits)
     ->Iterations(1)
     ->Repetitions(3)
     ->ReportAggregatesOnly(false);
+
+void BM_ComputeProject(benchmark::State& state) {
+    auto window = std::make_unique<cam::MainWindow>();
+    if (!window->loadFile(QStringLiteral(CAMWRIGHT_EXAMPLES "/six-lobe-arc-cam.cam.json"))
+             .isEmpty()) {
+        std::abort();
+    }
+    cam::Project p = window->document()->project();
+    p.samplesPerTurn = state.range(0);
+    const cam::ComputeRequest request{1, std::make_shared<const cam::Project>(p),
+                                      cam::PlotAxis::Angle};
+    const cam::QcpPlotDataPreparer preparer;
+    const std::atomic<bool> cancel{false};
+    for (auto _ : state) {
+        auto result = cam::computeProject(request, cancel, &preparer);
+        benchmark::DoNotOptimize(result);
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_ComputeProject)
+    ->Arg(3600)
+    ->Arg(100'000)
+    ->Arg(1'000'000)
+    ->Arg(10'000'000)
+    ->Unit(benchmark::kMillisecond);
+
+void BM_ReplotViews(benchmark::State& state) {
+    auto window = makeWindow();
+    std::vector<QCustomPlot*> views = {window->plots()->plot(0), window->plots()->plot(1),
+                                       window->plots()->plot(2), window->contourView()};
+    for (auto _ : state) {
+        QElapsedTimer timer;
+        timer.start();
+        for (QCustomPlot* v : views) v->replot(QCustomPlot::rpImmediateRefresh);
+        state.SetIterationTime(static_cast<double>(timer.nsecsElapsed()) * 1e-9);
+    }
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        state.counters["ms_" + std::to_string(i)] = views[i]->replotTime(true);
+    }
+}
+BENCHMARK(BM_ReplotViews)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(20);
+
+/// Counts the paint events of the widgets it watches.
+class PaintCounter : public QObject {
+public:
+    int count = 0;
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        if (event->type() == QEvent::Paint) ++count;
+        return QObject::eventFilter(watched, event);
+    }
+};
+
+void BM_CursorMove(benchmark::State& state) {
+    auto window = makeWindow();
+    QCustomPlot* velocity = window->plots()->plot(0);
+    std::vector<QWidget*> painted = {window->plots()->plot(0), window->plots()->plot(1),
+                                     window->plots()->plot(2), window->contourView()};
+    std::vector<PaintCounter> counters(painted.size());
+    for (std::size_t i = 0; i < painted.size(); ++i) painted[i]->installEventFilter(&counters[i]);
+    const QRect rect = velocity->axisRect()->rect();
+    int k = 0;
+    for (auto _ : state) {
+        std::vector<int> before;
+        for (const PaintCounter& c : counters) before.push_back(c.count);
+        // Sweep back and forth across the axis rect, a few pixels per move, as a hand would.
+        const int span = rect.width() - 2;
+        const int step = (k * 7) % (2 * span);
+        const QPointF pos(rect.left() + 1 + (step < span ? step : 2 * span - step),
+                          rect.center().y());
+        ++k;
+        QElapsedTimer timer;
+        timer.start();
+        QMouseEvent move(QEvent::MouseMove, pos, velocity->mapToGlobal(pos), Qt::NoButton,
+                         Qt::NoButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(velocity, &move);
+        auto allPainted = [&] {
+            for (std::size_t i = 0; i < counters.size(); ++i) {
+                if (counters[i].count == before[i]) return false;
+            }
+            return true;
+        };
+        while (!allPainted() && timer.elapsed() < 2000) {
+            QCoreApplication::processEvents(QEventLoop::AllEvents);
+        }
+        state.SetIterationTime(static_cast<double>(timer.nsecsElapsed()) * 1e-9);
+    }
+    for (std::size_t i = 0; i < painted.size(); ++i) painted[i]->removeEventFilter(&counters[i]);
+}
+// 300 moves, each timed alone.
+BENCHMARK(BM_CursorMove)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(300)
+    ->ReportAggregatesOnly(true);
 
 }  // namespace
 

@@ -145,5 +145,19 @@ TEST(JointClassification, ANaNMeasureNeverPassesItsTest) {
               Continuity::C2);
 }
 
+TEST(Analysis, ReturnsAtOnceWhenCancelled) {
+    auto p = loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json"));
+    ASSERT_TRUE(p.ok());
+    const Contour c = Contour::build(p.value()).value();
+    const std::atomic<bool> cancel{true};
+    const ContourAnalysis cancelled = analyzeContour(c, 1.0, &cancel);
+    EXPECT_TRUE(cancelled.joints.empty());
+    EXPECT_TRUE(cancelled.extremes.empty());
+    const std::atomic<bool> go{false};
+    const ContourAnalysis full = analyzeContour(c, 1.0, &go);
+    EXPECT_EQ(full.joints.size(), 13u);
+    EXPECT_EQ(full.extremes.size(), kAllQuantities.size());
+}
+
 }  // namespace
 }  // namespace cam

@@ -133,3 +133,49 @@ TEST(SampledTurn, StopsWhenCancelledAndCompletesOtherwise) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(SampledTurn, ChunksAreTheWholeTurn) {
+    // A big turn is computed in chunks of bounded memory by the app. Chunks that start and end
+    // on block boundaries (or at the end) hold exactly the whole turn's samples; any others
+    // only differ in the last bit (the vector loop and its scalar remainder round differently).
+    const Contour sixLobeCam = sixLobe();
+    const Contour clockwise =
+        Contour::build(test::splitCircle(4.0, 25.0, {-30.0, 10.0, 10.5, 200.0, 330.0})).value();
+    for (const auto& [contour, omega] :
+         {std::pair{&sixLobeCam, 5.0 * kPi}, std::pair{&clockwise, -7.0}}) {
+        const std::size_t n = 10'007;
+        SampledTurn whole, chunk;
+        ASSERT_TRUE(sampleTurn(*contour, omega, n, whole));
+        for (const auto& [first, count] : {std::pair<std::size_t, std::size_t>{0, 1},
+                                           {0, 1024},
+                                           {1024, 3000},
+                                           {5 * kSampleBlock, n - 5 * kSampleBlock},
+                                           {1000, 3000},
+                                           {n - 1, 1}}) {
+            ASSERT_TRUE(sampleTurnRange(*contour, omega, n, first, count, chunk));
+            ASSERT_EQ(chunk.size(), count);
+            const bool aligned = first % kSampleBlock == 0 &&
+                                 ((first + count) % kSampleBlock == 0 || first + count == n);
+            const auto same = [&](double a, double b, double scale) {
+                return aligned ? a == b : static_cast<bool>(relClose(a, b, 1e-14, scale));
+            };
+            for (std::size_t i = 0; i < count; ++i) {
+                const std::size_t k = first + i;
+                ASSERT_EQ(chunk.t[i], whole.t[k]) << k;
+                ASSERT_EQ(chunk.phi[i], whole.phi[k]) << k;
+                ASSERT_EQ(chunk.segment[i], whole.segment[k]) << k;
+                ASSERT_TRUE(same(chunk.r[i], whole.r[k], whole.r[k])) << k;
+                ASSERT_TRUE(same(chunk.x[i], whole.x[k], whole.r[k])) << k;
+                ASSERT_TRUE(same(chunk.vPhi[i], whole.vPhi[k], whole.v[k])) << k;
+                ASSERT_TRUE(same(chunk.a[i], whole.a[k], whole.a[k])) << k;
+                ASSERT_TRUE(same(chunk.jR[i], whole.jR[k], whole.j[k])) << k;
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace cam

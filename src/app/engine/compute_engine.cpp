@@ -1,19 +1,24 @@
 #include "engine/compute_engine.h"
 
+#include <QCoreApplication>
+#include <QDeadlineTimer>
 #include <QMutexLocker>
+#include <new>
 
 namespace cam {
 
 ComputeWorker::ComputeWorker(QObject* parent) : QThread(parent) {}
 
-ComputeWorker::~ComputeWorker() {
+ComputeWorker::~ComputeWorker() { stop(-1); }
+
+bool ComputeWorker::stop(int timeoutMs) {
     {
         QMutexLocker lock(&m_mutex);
         m_abort = true;
         m_cancel = true;
         m_wake.wakeOne();
     }
-    wait();
+    return timeoutMs < 0 ? wait() : wait(QDeadlineTimer(timeoutMs));
 }
 
 void ComputeWorker::submit(ComputeRequest request) {
@@ -27,37 +32,94 @@ void ComputeWorker::submit(ComputeRequest request) {
     }
 }
 
+void ComputeWorker::setPreparer(std::shared_ptr<const PlotDataPreparer> preparer) {
+    QMutexLocker lock(&m_mutex);
+    m_preparer = std::move(preparer);
+}
+
+namespace {
+
+/// What the user reads when a computation threw: the message names the cause and the way out.
+std::string failureMessage(const std::exception* e) {
+    if (dynamic_cast<const std::bad_alloc*>(e)) {
+        return QCoreApplication::translate("cam::ComputeWorker",
+                                           "out of memory — fewer samples per turn would need less")
+            .toStdString();
+    }
+    const QString what = e ? QString::fromLocal8Bit(e->what()) : QStringLiteral("?");
+    return QCoreApplication::translate("cam::ComputeWorker", "the computation failed: %1")
+        .arg(what)
+        .toStdString();
+}
+
+}  // namespace
+
 void ComputeWorker::run() {
     for (;;) {
         ComputeRequest request;
+        std::shared_ptr<const PlotDataPreparer> preparer;
         {
             QMutexLocker lock(&m_mutex);
             while (!m_pending && !m_abort) m_wake.wait(&m_mutex);
             if (m_abort) return;
             request = std::move(*m_pending);
             m_pending.reset();
+            preparer = m_preparer;
             m_cancel = false;
         }
-        ComputeResultPtr result = computeProject(request, m_cancel);
+        // The barrier: an exception escaping run() would end the program in std::terminate.
+        // Whatever the computation held is released by the unwinding; the request is answered
+        // with a result that says what happened, and the next request starts afresh.
+        ComputeResultPtr result;
+        try {
+            result = computeProject(request, m_cancel, preparer.get());
+        } catch (const std::exception& e) {
+            result = failedResult(request, failureMessage(&e));
+        } catch (...) {
+            result = failedResult(request, failureMessage(nullptr));
+        }
         if (!result || m_cancel.load()) continue;
         emit finished(result);
         if (request.timing && result->ok() && request.project->machining) {
-            TimingOutcomePtr outcome = computeTiming(request, *result->contour, m_cancel);
-            if (outcome && !m_cancel.load()) emit timingFinished(outcome);
+            computeTimingOf(request, *result, preparer.get());
         }
     }
 }
 
-ComputeEngine::ComputeEngine(QObject* parent) : QObject(parent) {
+void ComputeWorker::computeTimingOf(const ComputeRequest& request, const ComputeResult& result,
+                                    const PlotDataPreparer* preparer) {
+    TimingOutcomePtr outcome;
+    try {
+        outcome = computeTiming(request, *result.contour, m_cancel);
+        if (outcome && preparer && outcome->errors.empty()) {
+            auto prepared = std::make_shared<TimingOutcome>(*outcome);
+            prepared->prepared = preparer->prepareTiming(*prepared);
+            outcome = std::move(prepared);
+        }
+    } catch (const std::exception& e) {
+        auto failed = std::make_shared<TimingOutcome>();
+        failed->generation = request.generation;
+        failed->errors = {Diagnostic{"", failureMessage(&e)}};
+        outcome = std::move(failed);
+    } catch (...) {
+        auto failed = std::make_shared<TimingOutcome>();
+        failed->generation = request.generation;
+        failed->errors = {Diagnostic{"", failureMessage(nullptr)}};
+        outcome = std::move(failed);
+    }
+    if (outcome && !m_cancel.load()) emit timingFinished(outcome);
+}
+
+ComputeEngine::ComputeEngine(QObject* parent) : QObject(parent), m_worker(new ComputeWorker) {
     qRegisterMetaType<cam::ComputeResultPtr>();
     qRegisterMetaType<cam::TimingOutcomePtr>();
     m_timer.setSingleShot(true);
     m_timer.setInterval(30);
     connect(&m_timer, &QTimer::timeout, this, &ComputeEngine::submitPending);
-    connect(&m_worker, &ComputeWorker::finished, this, &ComputeEngine::onFinished,
+    connect(m_worker, &ComputeWorker::finished, this, &ComputeEngine::onFinished,
             Qt::QueuedConnection);
     connect(
-        &m_worker, &ComputeWorker::timingFinished, this,
+        m_worker, &ComputeWorker::timingFinished, this,
         [this](const TimingOutcomePtr& outcome) {
             if (outcome->generation != m_generation) return;  // answers an older request
             m_latestTiming = outcome;
@@ -66,7 +128,22 @@ ComputeEngine::ComputeEngine(QObject* parent) : QObject(parent) {
         Qt::QueuedConnection);
 }
 
-ComputeEngine::~ComputeEngine() = default;
+ComputeEngine::~ComputeEngine() {
+    QObject::disconnect(m_worker, nullptr, this, nullptr);
+    if (m_worker->stop(kStopTimeoutMs)) {
+        delete m_worker;
+        return;
+    }
+    // Some step does not poll the cancel flag. Deleting a running QThread would abort the
+    // program, and waiting could hang it: the thread is left to end on its own (it sees the
+    // abort flag as soon as the step returns) and its few bytes are not reclaimed.
+    qWarning("camwright: the compute thread did not stop within %d ms; leaving it to finish",
+             kStopTimeoutMs);
+}
+
+void ComputeEngine::setPlotDataPreparer(std::shared_ptr<const PlotDataPreparer> preparer) {
+    m_worker->setPreparer(std::move(preparer));
+}
 
 void ComputeEngine::request(const Project& project, PlotAxis axis, bool timing,
                             TimingMethod plotMethod) {
@@ -81,7 +158,7 @@ void ComputeEngine::request(const Project& project, PlotAxis axis, bool timing,
 }
 
 void ComputeEngine::submitPending() {
-    if (m_pending) m_worker.submit(std::move(*std::exchange(m_pending, std::nullopt)));
+    if (m_pending) m_worker->submit(std::move(*std::exchange(m_pending, std::nullopt)));
 }
 
 void ComputeEngine::onFinished(const ComputeResultPtr& result) {

@@ -2,9 +2,9 @@
 
 #include <QElapsedTimer>
 #include <cmath>
-#include <limits>
 
 #include "common/angles.h"
+#include "engine/plot_data_preparer.h"
 #include "timing/timing_job.h"
 
 namespace cam {
@@ -27,65 +27,10 @@ void buildOutlines(ComputeResult& r) {
     }
 }
 
-void buildCurves(ComputeResult& r) {
-    const SampledTurn& t = r.turn;
-    const std::vector<double>* sources[] = {&t.vR, &t.vPhi, &t.v,    &t.aR, &t.aPhi,
-                                            &t.a,  &t.jR,   &t.jPhi, &t.j};
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    const bool angle = r.axis == PlotAxis::Angle;
-    const std::size_t n = t.size();
-    std::vector<double> x(n);
-    for (std::size_t k = 0; k < n; ++k) x[k] = angle ? radToDeg(t.phi[k]) : t.t[k];
-    const bool ascending = !angle || r.omega > 0.0;
-    r.xRange = QCPRange(std::min(x.front(), x.back()), std::max(x.front(), x.back()));
-    const std::size_t bucket = std::max<std::size_t>(1, n / ComputeResult::kEnvelopeBuckets);
-
-    for (int c = 0; c < static_cast<int>(Curve::Count); ++c) {
-        const std::vector<double>& y = *sources[c];
-        QVector<QCPGraphData> full, envelope;
-        full.reserve(static_cast<int>(n + r.contour->size() + 1));
-        envelope.reserve(static_cast<int>(2 * (n / bucket) + 2 * r.contour->size() + 4));
-        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-        std::size_t runStart = 0;
-        for (std::size_t k = 0; k <= n; ++k) {
-            const bool runEnds = k == n || (k > 0 && t.segment[k] != t.segment[k - 1]);
-            if (runEnds && k > runStart) {
-                if (runStart > 0) envelope.append({x[runStart], nan});
-                // Min and max of each bucket of this run, in x order.
-                for (std::size_t b = runStart; b < k; b += bucket) {
-                    const std::size_t e = std::min(k, b + bucket);
-                    std::size_t iMin = b, iMax = b;
-                    for (std::size_t i = b; i < e; ++i) {
-                        if (y[i] < y[iMin]) iMin = i;
-                        if (y[i] > y[iMax]) iMax = i;
-                    }
-                    const std::size_t first = std::min(iMin, iMax), second = std::max(iMin, iMax);
-                    envelope.append({x[first], y[first]});
-                    if (second != first) envelope.append({x[second], y[second]});
-                }
-                runStart = k;
-            }
-            if (k == n) break;
-            if (k > 0 && t.segment[k] != t.segment[k - 1]) full.append({x[k], nan});
-            full.append({x[k], y[k]});
-            lo = std::min(lo, y[k]);
-            hi = std::max(hi, y[k]);
-        }
-        auto fullContainer = QSharedPointer<QCPGraphDataContainer>::create();
-        fullContainer->set(full, ascending);
-        auto envelopeContainer = QSharedPointer<QCPGraphDataContainer>::create();
-        envelopeContainer->set(envelope, ascending);
-        r.curves[static_cast<std::size_t>(c)] = fullContainer;
-        r.envelopes[static_cast<std::size_t>(c)] = envelopeContainer;
-        QCPRange& range = r.plotRanges[static_cast<std::size_t>(c / 3)];
-        range = c % 3 == 0 ? QCPRange(lo, hi)
-                           : QCPRange(std::min(range.lower, lo), std::max(range.upper, hi));
-    }
-}
-
 }  // namespace
 
-ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic<bool>& cancel) {
+ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic<bool>& cancel,
+                                const PlotDataPreparer* preparer) {
     QElapsedTimer timer;
     timer.start();
     auto result = std::make_shared<ComputeResult>();
@@ -103,10 +48,13 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     result->contour = std::move(contour).value();
     result->omega = request.project->motion.omegaRadS();
     result->period = kTwoPi / std::abs(result->omega);
-    const auto n = static_cast<std::size_t>(request.project->samplesPerTurnOrDefault());
-    if (!sampleTurn(*result->contour, result->omega, n, result->turn, &cancel)) return nullptr;
+    result->sampleCount = static_cast<std::size_t>(request.project->samplesPerTurnOrDefault());
+    if (!buildPlotCurves(*result->contour, result->omega, result->sampleCount, request.axis,
+                         result->curves, cancel)) {
+        return nullptr;
+    }
+    result->analysis = analyzeContour(*result->contour, result->omega, &cancel);
     if (cancel.load()) return nullptr;
-    result->analysis = analyzeContour(*result->contour, result->omega);
     buildOutlines(*result);
     std::vector<CubicBezier> splines;
     for (const SegmentSpec& spec : request.project->contour) {
@@ -114,8 +62,21 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     }
     if (!splines.empty()) result->pathStudy = studyPath(splines, 100);
     if (cancel.load()) return nullptr;
-    buildCurves(*result);
+    if (preparer) {
+        result->prepared = preparer->prepare(*result, cancel);
+        if (cancel.load()) return nullptr;
+    }
     result->computeMs = static_cast<double>(timer.nsecsElapsed()) / 1e6;
+    return result;
+}
+
+ComputeResultPtr failedResult(const ComputeRequest& request, const std::string& message) {
+    auto result = std::make_shared<ComputeResult>();
+    result->generation = request.generation;
+    result->project = request.project;
+    result->axis = request.axis;
+    result->errors = {Diagnostic{"", message}};
+    result->failed = true;
     return result;
 }
 
@@ -141,21 +102,7 @@ TimingOutcomePtr computeTiming(const ComputeRequest& request, const Contour& con
     outcome->lengthMm = timed.value().path.length();
     for (std::size_t m = 0; m < 3; ++m) outcome->timesS[m] = timed.value().results[m].timeS;
     outcome->gridPoints = timed.value().results[2].gridPoints;
-    const TimingProfile& profile = *timed.value().profile;
-    QVector<QCPGraphData> feed;
-    std::array<QVector<QCPGraphData>, 3> accel;
-    for (std::size_t k = 0; k < profile.s.size(); ++k) {
-        feed.append({profile.s[k], profile.speed[k]});
-        for (int i = 0; i < 3; ++i) {
-            accel[static_cast<std::size_t>(i)].append({profile.s[k], profile.accel[k][i]});
-        }
-    }
-    outcome->feed = QSharedPointer<QCPGraphDataContainer>::create();
-    outcome->feed->set(feed, true);
-    for (std::size_t i = 0; i < 3; ++i) {
-        outcome->accel[i] = QSharedPointer<QCPGraphDataContainer>::create();
-        outcome->accel[i]->set(accel[i], true);
-    }
+    outcome->profile = *timed.value().profile;
     outcome->computeMs = static_cast<double>(timer.nsecsElapsed()) / 1e6;
     return outcome;
 }

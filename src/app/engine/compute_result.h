@@ -1,17 +1,21 @@
 #pragma once
 /// @file
-/// @brief What the compute engine hands back: immutable, shared, ready to draw.
+/// @brief What the compute engine hands back: immutable, shared, plain data (no plotting
+/// library types). What a view needs beyond that it prepares itself in the worker thread,
+/// through a PlotDataPreparer (plot_data_preparer.h).
 
-#include <qcustomplot.h>
-
-#include <QSharedPointer>
+#include <QMetaType>
+#include <QPointF>
+#include <QVector>
 #include <array>
+#include <atomic>
 #include <memory>
 #include <optional>
 
 #include "analysis/analysis.h"
 #include "common/diagnostic.h"
 #include "contour/contour.h"
+#include "engine/plot_levels.h"
 #include "kinematics/kinematics.h"
 #include "project/project.h"
 #include "spline/path_study.h"
@@ -19,11 +23,15 @@
 
 namespace cam {
 
-/// @brief The x axis of the kinematics plots.
-enum class PlotAxis { Angle, Time };
+class PlotDataPreparer;
 
-/// @brief The curves of the kinematics plots, in this order.
-enum class Curve { VR, VPhi, V, AR, APhi, A, JR, JPhi, J, Count };
+/// @brief Opaque data a view derived from a result in the worker thread, ready to draw (for
+/// instance the plotting library's containers). The engine only carries it.
+class PreparedPlotData {
+public:
+    virtual ~PreparedPlotData() = default;
+};
+using PreparedPlotDataPtr = std::shared_ptr<const PreparedPlotData>;
 
 struct ComputeRequest {
     std::uint64_t generation = 0;
@@ -38,28 +46,24 @@ struct ComputeResult {
     std::uint64_t generation = 0;
     std::shared_ptr<const Project> project;
     PlotAxis axis = PlotAxis::Angle;
-    Diagnostics errors;  ///< non-empty: the project could not be computed
+    /// Non-empty: nothing was computed — the project has problems, or the computation failed
+    /// (`failed`); the views mark what they still show as out of date.
+    Diagnostics errors;
+    bool failed = false;  ///< the computation itself failed (e.g. out of memory)
     std::optional<Contour> contour;
-    double omega = 0.0;   ///< rad/s
-    double period = 0.0;  ///< s
-    SampledTurn turn;
+    double omega = 0.0;           ///< rad/s
+    double period = 0.0;          ///< s
+    std::size_t sampleCount = 0;  ///< samples per turn that were computed (in chunks)
     ContourAnalysis analysis;
     /// Per segment, its outline for the contour view (x, y in mm), ends included.
     std::vector<QVector<QPointF>> outlines;
-    /// Plot data over angle (deg) or time (s), with NaN gaps where the segment changes so a
-    /// jump shows as a jump.
-    std::array<QSharedPointer<QCPGraphDataContainer>, static_cast<int>(Curve::Count)> curves;
-    /// The same curves reduced to the minimum and maximum of each of kEnvelopeBuckets buckets
-    /// (per segment run, so joints still break the line): what a plot of the whole turn draws.
-    std::array<QSharedPointer<QCPGraphDataContainer>, static_cast<int>(Curve::Count)> envelopes;
-    static constexpr int kEnvelopeBuckets = 4096;
-    /// y range of each plot (velocity, acceleration, jerk) over all of its curves.
-    std::array<QCPRange, 3> plotRanges;
-    /// x range of the plotted turn.
-    QCPRange xRange;
+    /// The kinematics curves over angle or time at several resolutions, with their ranges.
+    PlotCurves curves;
     double computeMs = 0.0;
     /// The path study of the contour's spline segments, in contour order (empty: none).
     PathStudy pathStudy;
+    /// What the views' preparer made of this result (null without a preparer).
+    PreparedPlotDataPtr prepared;
 
     [[nodiscard]] bool ok() const { return errors.empty() && contour.has_value(); }
 };
@@ -77,9 +81,10 @@ struct TimingOutcome {
     TimingMethod plotted = TimingMethod::Optimal;
     MachineLimits limits;
     /// Feed (mm/s) and per-axis acceleration (mm/s²) over the path length (mm).
-    QSharedPointer<QCPGraphDataContainer> feed;
-    std::array<QSharedPointer<QCPGraphDataContainer>, 3> accel;
+    TimingProfile profile;
     double computeMs = 0.0;
+    /// What the views' preparer made of this outcome (null without a preparer).
+    PreparedPlotDataPtr prepared;
 };
 using TimingOutcomePtr = std::shared_ptr<const TimingOutcome>;
 
@@ -87,8 +92,14 @@ using TimingOutcomePtr = std::shared_ptr<const TimingOutcome>;
 TimingOutcomePtr computeTiming(const ComputeRequest& request, const Contour& contour,
                                const std::atomic<bool>& cancel);
 
-/// @brief Does the whole computation for one request; polls `cancel`. Returns null if cancelled.
-ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic<bool>& cancel);
+/// @brief Does the whole computation for one request; polls `cancel`. Returns null if
+/// cancelled. With a preparer, its data for the views is made here too (in the caller's
+/// thread, the worker's).
+ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic<bool>& cancel,
+                                const PlotDataPreparer* preparer = nullptr);
+
+/// @brief A result that says the computation failed and why (the message is shown as is).
+ComputeResultPtr failedResult(const ComputeRequest& request, const std::string& message);
 
 }  // namespace cam
 

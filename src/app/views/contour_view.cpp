@@ -5,6 +5,7 @@
 #include "document/commands.h"
 #include "models/delegates.h"
 #include "views/palette.h"
+#include "views/stale_label.h"
 
 namespace cam {
 namespace {
@@ -29,21 +30,32 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
         tr("Wheel: zoom · drag: pan · drag a square/diamond handle: move the centre or "
            "change the radius of the selected arc"));
 
+    // Centres and joints above the segments' curves (which come and go with the segments): a
+    // marker never disappears under the line it marks. Above them the follower ray and its
+    // point, on a buffered layer of their own: a cursor move redraws them alone.
+    addLayer("markers", layer("main"), QCustomPlot::limAbove);
+    addLayer("cursor", layer("markers"), QCustomPlot::limAbove);
+    m_cursorLayer = layer("cursor");
+    m_cursorLayer->setMode(QCPLayer::lmBuffered);
     m_ray = new QCPItemLine(this);
+    m_ray->setLayer(m_cursorLayer);
     m_ray->setPen(QPen(QColor(90, 90, 90), 1, Qt::DashLine));
     m_ray->start->setCoords(0, 0);
     m_ray->end->setCoords(0, 0);
     m_rayPoint = new QCPItemTracer(this);
+    m_rayPoint->setLayer(m_cursorLayer);
     m_rayPoint->setStyle(QCPItemTracer::tsCircle);
     m_rayPoint->setSize(7);
     m_rayPoint->setPen(QPen(Qt::black));
     m_rayPoint->setBrush(Qt::white);
 
     m_centers = addGraph();
+    m_centers->setLayer("markers");
     m_centers->setName(tr("centres"));
     m_centers->setLineStyle(QCPGraph::lsNone);
     m_centers->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QColor(80, 80, 80), 6));
     m_joints = addGraph();
+    m_joints->setLayer("markers");
     m_joints->setName(tr("joints"));
     m_joints->setLineStyle(QCPGraph::lsNone);
     m_joints->setScatterStyle(
@@ -58,12 +70,21 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     m_controlPolygon = new QCPCurve(xAxis, yAxis);
     m_controlPolygon->setPen(QPen(QColor(0, 90, 200, 160), 1, Qt::DashLine));
     m_controlPolygon->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 4));
+    // The drag handles above the markers: a centre cross never hides the handle on it.
+    addLayer("handles", layer("markers"), QCustomPlot::limAbove);
+    for (QCPAbstractPlottable* p :
+         std::initializer_list<QCPAbstractPlottable*>{m_firstHandle, m_secondHandle,
+                                                      m_controlPolygon}) {
+        p->setLayer("handles");
+    }
     // Origin: the rotation centre.
     auto* origin = new QCPItemTracer(this);
     origin->position->setCoords(0, 0);
     origin->setStyle(QCPItemTracer::tsPlus);
     origin->setSize(12);
     origin->setPen(QPen(Qt::black));
+
+    m_staleLabel = makeStaleLabel(this);
 
     connect(this, &QCustomPlot::mouseWheel, this, [this] { m_autoFit = false; });
     connect(document, &ProjectDocument::changed, this, [this] {
@@ -73,11 +94,14 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
 }
 
 void ContourView::setResult(const ComputeResultPtr& result) {
-    m_result = result;
-    if (!result || !result->ok()) {
-        replot(rpQueuedReplot);
+    if (!result) return;
+    if (!result->ok()) {
+        // The last contour stays for orientation, greyed and labelled as out of date.
+        setStale(staleText(*result));
         return;
     }
+    setStale({});
+    m_result = result;
     const std::size_t n = result->outlines.size();
     while (m_segmentCurves.size() > n) {
         removePlottable(m_segmentCurves.back());
@@ -106,9 +130,12 @@ void ContourView::setResult(const ComputeResultPtr& result) {
         }
     }
     m_centers->setData(cx, cy);
-    m_joints->setData(jx, jy, true);
+    // Around the contour x goes back and forth: the graph must sort the joints by x itself, or
+    // its search for the visible ones skips some when zoomed in.
+    m_joints->setData(jx, jy);
     if (m_autoFit) resetZoom();
     setCursorAngle(m_cursorPhi);
+    replot(rpQueuedReplot);  // the new contour (the cursor alone redraws only its layer)
 }
 
 void ContourView::resetZoom() {
@@ -150,6 +177,7 @@ void ContourView::keepEqualAspect() {
 
 void ContourView::resizeEvent(QResizeEvent* event) {
     QCustomPlot::resizeEvent(event);
+    if (m_stale) placeStaleLabel(m_staleLabel);
     if (m_autoFit) {
         resetZoom();
     } else {
@@ -164,6 +192,31 @@ void ContourView::setCursorAngle(double phi) {
     const double reach = std::max(r * 1.25, r + 5.0);
     m_ray->end->setCoords(reach * std::cos(phi), reach * std::sin(phi));
     m_rayPoint->position->setCoords(r * std::cos(phi), r * std::sin(phi));
+    m_cursorLayer->replot();
+}
+
+QString ContourView::staleReason() const { return m_stale ? m_staleLabel->text() : QString(); }
+
+void ContourView::setStale(const QString& reason) {
+    const bool stale = !reason.isEmpty();
+    if (stale == m_stale && reason == m_staleLabel->text()) return;
+    m_stale = stale;
+    m_staleLabel->setText(reason);
+    m_staleLabel->setVisible(stale);
+    if (stale) placeStaleLabel(m_staleLabel);
+    for (std::size_t k = 0; k < m_segmentCurves.size(); ++k) {
+        QPen pen = m_segmentCurves[k]->pen();
+        pen.setColor(stale ? staleColor() : segmentColor(static_cast<int>(k)));
+        m_segmentCurves[k]->setPen(pen);
+    }
+    for (auto [graph, color] :
+         {std::pair{m_centers, QColor(80, 80, 80)}, std::pair{m_joints, QColor(Qt::black)}}) {
+        QCPScatterStyle style = graph->scatterStyle();
+        style.setPen(QPen(stale ? staleColor() : color));
+        graph->setScatterStyle(style);
+    }
+    m_ray->setVisible(!stale);
+    m_rayPoint->setVisible(!stale);
     replot(rpQueuedReplot);
 }
 

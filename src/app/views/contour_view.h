@@ -23,6 +23,8 @@ public:
     void setSelectedSegment(int row);
     /// @brief Fits the contour into the view with equal scales.
     void resetZoom();
+    /// @brief Why the contour shown is out of date; empty when it is the current project's.
+    [[nodiscard]] QString staleReason() const;
 
 signals:
     /// The mouse points at this polar angle (rad).
@@ -41,6 +43,7 @@ private:
     [[nodiscard]] Handle handleAt(const QPointF& pixel) const;
     [[nodiscard]] QPointF secondHandlePosition(int row) const;
     void keepEqualAspect();
+    void setStale(const QString& reason);
 
     ProjectDocument* m_document;
     ComputeResultPtr m_result;
@@ -52,6 +55,9 @@ private:
     QCPCurve* m_controlPolygon = nullptr;  ///< P0–P1–P2–P3 of the selected spline
     QCPItemLine* m_ray = nullptr;
     QCPItemTracer* m_rayPoint = nullptr;
+    QCPLayer* m_cursorLayer = nullptr;  ///< buffered: the ray and its point alone
+    QLabel* m_staleLabel = nullptr;
+    bool m_stale = false;
     int m_selected = -1;
     Handle m_dragging = Handle::None;
     int m_gesture = 0;

@@ -34,7 +34,9 @@ JointsPanel::JointsPanel(QWidget* parent) : QTableWidget(parent) {
 }
 
 void JointsPanel::setResult(const ComputeResultPtr& result) {
-    if (!result || !result->ok()) return;
+    if (!result) return;
+    setEnabled(result->ok());  // greyed: the joints of the last project that could be computed
+    if (!result->ok()) return;
     m_result = result;
     // A hidden tab does no work while edits stream in; it catches up when it is shown.
     m_stale = !isVisible();

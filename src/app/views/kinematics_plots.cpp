@@ -5,6 +5,8 @@
 
 #include "common/angles.h"
 #include "views/palette.h"
+#include "views/plot_data.h"
+#include "views/stale_label.h"
 
 namespace cam {
 
@@ -29,7 +31,11 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
         for (int c = 0; c < 3; ++c) {
             QCPGraph* g = plot->addGraph();
             g->setName(names[p][c]);
-            g->setPen(QPen(componentColor(c), c == 2 ? 1.5 : 1.0));
+            g->setPen(QPen(componentColor(c), 1.0));
+            // The engine's levels are min/max envelopes of at most a pixel per bucket: the
+            // graph draws them as they are. (QCustomPlot's own reduction would start a pixel's
+            // cluster at a NaN break and then lose that pixel's extremes.)
+            g->setAdaptiveSampling(false);
         }
         // The legend gets a narrow column of its own beside the plot: it never hides a curve.
         plot->legend->setVisible(true);
@@ -44,7 +50,13 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
         side->addElement(1, 0, new QCPLayoutElement(plot));  // spacer: legend stays at the top
         side->setRowStretchFactor(0, 0.001);
         side->setMargins(QMargins(0, 8, 4, 0));
+        // The cursor on a buffered layer of its own: a move redraws one line, not the curves.
+        plot->addLayer("cursor", plot->layer("main"), QCustomPlot::limAbove);
+        QCPLayer* cursorLayer = plot->layer("cursor");
+        cursorLayer->setMode(QCPLayer::lmBuffered);
+        m_cursorLayers[static_cast<std::size_t>(p)] = cursorLayer;
         auto* cursor = new QCPItemStraightLine(plot);
+        cursor->setLayer(cursorLayer);
         cursor->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
         cursor->point1->setCoords(0, 0);
         cursor->point2->setCoords(0, 1);
@@ -72,6 +84,9 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
     }
     connect(m_plots[0]->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
             [this] { chooseResolution(); });
+    // A new width (the window resized, a dock moved) may want another level: known once the
+    // plot has laid itself out, before it draws.
+    connect(m_plots[0], &QCustomPlot::afterLayout, this, [this] { chooseResolution(); });
     // The left axes line up however wide their tick labels are.
     auto* group = new QCPMarginGroup(m_plots[0]);
     for (QCustomPlot* p : m_plots) p->axisRect()->setMarginGroup(QCP::msLeft | QCP::msRight, group);
@@ -84,50 +99,93 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
         p->legend->setMinimumSize(legendWidth, 0);
         p->legend->setMaximumSize(legendWidth, QWIDGETSIZE_MAX);
     }
+    m_staleLabel = makeStaleLabel(this);
 }
 
 void KinematicsPlots::setResult(const ComputeResultPtr& result) {
+    if (!result) return;
+    if (!result->ok()) {
+        setStale(staleText(*result));
+        return;
+    }
+    setStale({});
     m_result = result;
-    if (!result || !result->ok()) return;
-    const bool axisChanged = result->axis != m_axis;
+    // Made in the worker by the views' preparer; made here only without one (tests).
+    m_data = std::dynamic_pointer_cast<const KinematicsPlotData>(result->prepared);
+    if (!m_data) m_data = makeKinematicsPlotData(*result, nullptr);
+    // A new axis, or a turn that now spans another range (another period, the other sense
+    // of rotation), is shown whole; otherwise the user's zoom stays.
+    const PlotRange& x = result->curves.xRange;
+    const bool refit = !m_fitted || result->axis != m_axis || x.lower != m_xRange.lower ||
+                       x.upper != m_xRange.upper;
     m_axis = result->axis;
+    m_xRange = x;
     for (int p = 0; p < 3; ++p) {
         QCustomPlot* plot = m_plots[static_cast<std::size_t>(p)];
         plot->xAxis->setLabel(p == 2 ? (m_axis == PlotAxis::Angle ? tr("φ [°]") : tr("t [s]"))
                                      : QString());
     }
     rebuildJointMarkers();
-    if (!m_fitted || axisChanged) {
+    if (refit) {
         m_fitted = true;
-        resetZoom();  // sets the x range, which chooses the resolution
-    } else {
-        m_showingEnvelope = !m_showingEnvelope;  // force chooseResolution to set the new data
-        chooseResolution();
+        for (QCustomPlot* p : m_plots) p->xAxis->setRange(x.lower, x.upper);
     }
+    chooseResolution(true);  // always the new result's data, also when the level stays
     fitY();
 }
 
-void KinematicsPlots::chooseResolution() {
-    if (!m_result || !m_result->ok()) return;
-    const double visible = m_plots[0]->xAxis->range().size() / m_result->xRange.size();
-    const bool envelope = visible > 0.25;
-    if (envelope == m_showingEnvelope && m_plots[0]->graph(0)->data() != nullptr) return;
-    m_showingEnvelope = envelope;
-    const auto& source = envelope ? m_result->envelopes : m_result->curves;
+QString KinematicsPlots::staleReason() const { return m_stale ? m_staleLabel->text() : QString(); }
+
+void KinematicsPlots::setStale(const QString& reason) {
+    const bool stale = !reason.isEmpty();
+    if (stale == m_stale && reason == m_staleLabel->text()) return;
+    m_stale = stale;
+    m_staleLabel->setText(reason);
+    m_staleLabel->setVisible(stale);
+    if (stale) cam::placeStaleLabel(m_staleLabel);
+    for (QCustomPlot* plot : m_plots) {
+        for (int c = 0; c < plot->graphCount(); ++c) {
+            QPen pen = plot->graph(c)->pen();
+            pen.setColor(stale ? staleColor() : componentColor(c));
+            plot->graph(c)->setPen(pen);
+        }
+        plot->replot(QCustomPlot::rpQueuedReplot);
+    }
+    for (QCPItemStraightLine* m : m_jointMarkers) m->setVisible(!stale);
+}
+
+void KinematicsPlots::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    if (m_stale) cam::placeStaleLabel(m_staleLabel);
+}
+
+void KinematicsPlots::chooseResolution(bool force) {
+    if (!m_result || !m_data || m_data->levels.empty()) return;
+    const PlotCurves& curves = m_result->curves;
+    const double visible = m_plots[0]->xAxis->range().size() / curves.xRange.size();
+    // The axis rect's width as of the last layout (before the first, the widget's: wider, so
+    // on the safe side).
+    const int axisWidth = m_plots[0]->axisRect()->width();
+    const std::size_t level =
+        curves.levelFor(visible, axisWidth > 0 ? axisWidth : m_plots[0]->width());
+    if (level == m_level && !force) return;
+    m_level = std::min(level, m_data->levels.size() - 1);
+    const auto& containers = m_data->levels[m_level];
     for (int p = 0; p < 3; ++p) {
         for (int c = 0; c < 3; ++c) {
             m_plots[static_cast<std::size_t>(p)]->graph(c)->setData(
-                source[static_cast<std::size_t>(3 * p + c)]);
+                containers[static_cast<std::size_t>(3 * p + c)]);
         }
         m_plots[static_cast<std::size_t>(p)]->replot(QCustomPlot::rpQueuedReplot);
     }
 }
 
 void KinematicsPlots::fitY() {
-    if (!m_result || !m_result->ok()) return;
+    if (!m_result) return;
     // The worker measured the ranges; rescaling here would scan every point again.
     for (std::size_t p = 0; p < 3; ++p) {
-        QCPRange range = m_result->plotRanges[p];
+        const PlotRange& y = m_result->curves.yRanges[p];
+        QCPRange range(y.lower, y.upper);
         if (!(range.size() > 0.0)) range = QCPRange(range.lower - 1.0, range.upper + 1.0);
         m_plots[p]->yAxis->setRange(range);
         m_plots[p]->yAxis->scaleRange(1.08);
@@ -136,8 +194,9 @@ void KinematicsPlots::fitY() {
 }
 
 void KinematicsPlots::resetZoom() {
-    if (!m_result || !m_result->ok()) return;
-    for (QCustomPlot* p : m_plots) p->xAxis->setRange(m_result->xRange);
+    if (!m_result) return;
+    const PlotRange& x = m_result->curves.xRange;
+    for (QCustomPlot* p : m_plots) p->xAxis->setRange(x.lower, x.upper);
     chooseResolution();
     fitY();
 }
@@ -146,14 +205,14 @@ void KinematicsPlots::setCursorX(double x) {
     for (std::size_t p = 0; p < 3; ++p) {
         m_cursors[p]->point1->setCoords(x, 0);
         m_cursors[p]->point2->setCoords(x, 1);
-        m_plots[p]->replot(QCustomPlot::rpQueuedReplot);
+        m_cursorLayers[p]->replot();
     }
 }
 
 void KinematicsPlots::rebuildJointMarkers() {
     for (QCPItemStraightLine* m : m_jointMarkers) m->parentPlot()->removeItem(m);
     m_jointMarkers.clear();
-    if (!m_result || m_result->turn.size() == 0) return;
+    if (!m_result || !m_result->ok()) return;
     const double omega = m_result->omega;
     for (const JointAnalysis& j : m_result->analysis.joints) {
         if (j.continuity == Continuity::C2) continue;  // a_r is continuous here

@@ -10,37 +10,57 @@
 
 class QCustomPlot;
 class QCPItemStraightLine;
+class QCPLayer;
+class QLabel;
 
 namespace cam {
+
+struct KinematicsPlotData;
 
 class KinematicsPlots : public QWidget {
     Q_OBJECT
 public:
     explicit KinematicsPlots(QWidget* parent = nullptr);
 
+    /// @brief Shows a result. One that could not be computed leaves the last curves in place,
+    /// greyed, under a label that says why (see staleReason()).
     void setResult(const ComputeResultPtr& result);
-    /// @brief Moves the cursor line to x (degrees or seconds, as the axis shows).
+    /// @brief Moves the cursor line to x (degrees or seconds, as the axis shows). Redraws only
+    /// the cursor's own buffered layer.
     void setCursorX(double x);
     void resetZoom();
     [[nodiscard]] QCustomPlot* plot(int i) const { return m_plots[static_cast<std::size_t>(i)]; }
+    /// @brief Why the curves shown are out of date; empty when they are the current project's.
+    [[nodiscard]] QString staleReason() const;
+    /// @brief The level of the result's curves the graphs draw now.
+    [[nodiscard]] std::size_t shownLevel() const { return m_level; }
 
 signals:
     /// The mouse points at x (degrees or seconds, as the axis shows).
     void cursorMoved(double x);
 
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
     void rebuildJointMarkers();
-    /// Whole turn in view: draw the envelopes; zoomed in: the full-resolution curves.
-    void chooseResolution();
+    /// Draws the coarsest level whose buckets are at most a pixel wide at the current zoom.
+    void chooseResolution(bool force = false);
     void fitY();
+    void setStale(const QString& reason);
 
     std::array<QCustomPlot*, 3> m_plots{};
     std::array<QCPItemStraightLine*, 3> m_cursors{};
+    std::array<QCPLayer*, 3> m_cursorLayers{};
     std::vector<QCPItemStraightLine*> m_jointMarkers;
-    ComputeResultPtr m_result;
+    QLabel* m_staleLabel = nullptr;
+    ComputeResultPtr m_result;  ///< the result drawn (the last one that could be computed)
+    std::shared_ptr<const KinematicsPlotData> m_data;
     PlotAxis m_axis = PlotAxis::Angle;
+    PlotRange m_xRange;
     bool m_fitted = false;
-    bool m_showingEnvelope = false;
+    bool m_stale = false;
+    std::size_t m_level = static_cast<std::size_t>(-1);
 };
 
 }  // namespace cam

@@ -14,6 +14,7 @@
 #include "document/commands.h"
 #include "models/delegates.h"
 #include "views/palette.h"
+#include "views/plot_data.h"
 #include "widgets/number_spin_box.h"
 
 namespace cam {
@@ -246,14 +247,17 @@ void MachiningPanel::setOutcome(const TimingOutcomePtr& outcome) {
                           .arg(QLocale().toString(outcome->lengthMm, 'f', 2),
                                QLocale().toString(static_cast<qlonglong>(outcome->gridPoints)),
                                QLocale().toString(outcome->computeMs, 'f', 0)));
-    m_feedPlot->graph(0)->setData(outcome->feed);
+    // Made in the worker by the views' preparer; made here only without one (tests).
+    auto data = std::dynamic_pointer_cast<const MachiningPlotData>(outcome->prepared);
+    if (!data) data = makeMachiningPlotData(*outcome);
+    m_feedPlot->graph(0)->setData(data->feed);
     m_feedPlot->rescaleAxes();
     m_feedPlot->yAxis->setRangeLower(0.0);
     m_feedPlot->yAxis->scaleRange(1.08, m_feedPlot->yAxis->range().lower);
     m_feedPlot->replot(QCustomPlot::rpQueuedReplot);
     double limit = 0.0;
     for (int i = 0; i < 3; ++i) {
-        m_accelPlot->graph(i)->setData(outcome->accel[static_cast<std::size_t>(i)]);
+        m_accelPlot->graph(i)->setData(data->accel[static_cast<std::size_t>(i)]);
         if (std::isfinite(outcome->limits.accel[i])) {
             limit = std::max(limit, outcome->limits.accel[i]);
         }

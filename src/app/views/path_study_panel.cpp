@@ -48,6 +48,9 @@ PathStudyPanel::PathStudyPanel(QWidget* parent) : QWidget(parent) {
 }
 
 void PathStudyPanel::setResult(const ComputeResultPtr& result) {
+    if (!result) return;
+    setEnabled(result->ok());  // greyed: the splines of the last project that could be computed
+    if (!result->ok()) return;
     m_result = result;
     m_stale = !isVisible();  // hidden (the default): no replots while edits stream in
     if (!m_stale) fill();

@@ -33,11 +33,13 @@ void StateReadout::setState(const KinematicState& s) {
         return locale.toString(v, 'g', 8) + QStringLiteral(" ") + unit;
     };
     const PolarMotion& m = s.motion;
+    // Where on the cam, 0 … 360°, whichever way it turns (s.phi = ω·t is negative clockwise).
+    double phiDeg = mod360(radToDeg(s.phi));
+    if (phiDeg >= 360.0) phiDeg = 0.0;  // −1e-17 reduces to 360 in floating point
     const QString values[kRows] = {
-        num(s.t, "s"),        num(radToDeg(s.phi), "°"), QString::number(s.segment),
-        num(s.polar.r, "mm"), num(m.vR, "mm/s"),         num(m.vPhi, "mm/s"),
-        num(m.v, "mm/s"),     num(m.aR, "mm/s²"),        num(m.aPhi, "mm/s²"),
-        num(m.a, "mm/s²"),    num(m.jR, "mm/s³"),        num(m.jPhi, "mm/s³"),
+        num(s.t, "s"),        num(phiDeg, "°"),    QString::number(s.segment), num(s.polar.r, "mm"),
+        num(m.vR, "mm/s"),    num(m.vPhi, "mm/s"), num(m.v, "mm/s"),           num(m.aR, "mm/s²"),
+        num(m.aPhi, "mm/s²"), num(m.a, "mm/s²"),   num(m.jR, "mm/s³"),         num(m.jPhi, "mm/s³"),
         num(m.j, "mm/s³")};
     for (int i = 0; i < kRows; ++i) m_values[i]->setText(values[i]);
 }

@@ -215,15 +215,19 @@ Extremum segmentExtremum(const ContourSegment& seg, std::size_t k, Quantity q, d
 
 }  // namespace
 
-ContourAnalysis analyzeContour(const Contour& contour, double omega) {
+ContourAnalysis analyzeContour(const Contour& contour, double omega,
+                               const std::atomic<bool>* cancel) {
+    const auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
     ContourAnalysis result;
     for (std::size_t k = 0; k < contour.size(); ++k) {
+        if (cancelled()) return result;
         if (contour.size() > 1) result.joints.push_back(analyzeJoint(contour, k, omega));
     }
     for (Quantity q : kAllQuantities) {
         QuantityExtremes e;
         e.quantity = q;
         for (std::size_t k = 0; k < contour.size(); ++k) {
+            if (cancelled()) return result;
             const Extremum hi = segmentExtremum(contour.segment(k), k, q, omega, 1.0);
             const Extremum lo = segmentExtremum(contour.segment(k), k, q, omega, -1.0);
             if (k == 0 || hi.value > e.max.value) e.max = hi;

@@ -3,6 +3,7 @@
 /// @brief What a designer asks of a contour: how each joint continues, and where the extremes are.
 
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -76,7 +77,11 @@ struct ContourAnalysis {
 /// Extremes are found per segment on a fine grid that includes both window ends (one-sided
 /// values at joints) and then refined by golden-section search, so they are exact to ~1e-10
 /// of the window rather than to the grid spacing.
-[[nodiscard]] ContourAnalysis analyzeContour(const Contour& contour, double omega);
+///
+/// If `cancel` is given it is polled between segments; when it reads true the function returns
+/// at once with a partial analysis (the caller, who set the flag, drops it).
+[[nodiscard]] ContourAnalysis analyzeContour(const Contour& contour, double omega,
+                                             const std::atomic<bool>* cancel = nullptr);
 
 /// @brief Kinematic continuity from a joint's measures: C0 needs gap <= kJointToleranceMm, C1 a
 /// tangent break <= kTangentToleranceDeg, C2 a relative jump of d²P/dφ² <= kCurvatureToleranceRel.

@@ -31,6 +31,7 @@ namespace {
 // loop-carried dependency (so it vectorises) and no error growth (a few ulp, always).
 constexpr std::size_t kBlockBits = 10;
 constexpr std::size_t kBlock = std::size_t{1} << kBlockBits;
+static_assert(kBlock == kSampleBlock);
 
 struct Outputs {
     double* __restrict t;
@@ -48,6 +49,7 @@ struct Outputs {
     double* __restrict jPhi;
     double* __restrict j;
     std::int32_t* __restrict segment;
+    std::size_t first;  ///< index in the turn of element 0 of the arrays
 };
 
 /// Samples [k0, k0 + count) that share one block and one segment.
@@ -57,9 +59,10 @@ void runPiece(const Evaluate evaluate, const Outputs o, const double* __restrict
               double omega, double dt, std::int32_t seg) {
     const std::size_t j0 = k0 & (kBlock - 1);
     const double k0d = static_cast<double>(k0);
+    const std::size_t w0 = k0 - o.first;
     const auto n = static_cast<std::int32_t>(count);  // count <= kBlock
     for (std::int32_t i = 0; i < n; ++i) {
-        const std::size_t k = k0 + static_cast<std::size_t>(i);
+        const std::size_t k = w0 + static_cast<std::size_t>(i);
         const double c = cb * ct[j0 + i] - sb * st[j0 + i];
         const double s = sb * ct[j0 + i] + cb * st[j0 + i];
         const PolarDerivatives d = evaluate(c, s);
@@ -88,12 +91,13 @@ void runSegment(const Evaluate& evaluate, const Outputs& o, const std::vector<do
                 const std::vector<double>& st, const std::vector<double>& cb,
                 const std::vector<double>& sb, std::size_t k0, std::size_t k1, double omega,
                 double dt, std::int32_t seg) {
+    const std::size_t firstBlock = o.first >> kBlockBits;  // cb/sb start at this block
     for (std::size_t k = k0; k < k1;) {
         const std::size_t block = k >> kBlockBits;
         const std::size_t blockEnd = (block + 1) << kBlockBits;
         const std::size_t end = std::min(k1, blockEnd);
-        runPiece(evaluate, o, ct.data(), st.data(), cb[block], sb[block], k, end - k, omega, dt,
-                 seg);
+        runPiece(evaluate, o, ct.data(), st.data(), cb[block - firstBlock], sb[block - firstBlock],
+                 k, end - k, omega, dt, seg);
         k = end;
     }
 }
@@ -128,31 +132,40 @@ void runLineSegment(const Line::Kernel& kernel, const Outputs& o, const std::vec
 
 bool sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn& out,
                 const std::atomic<bool>* cancel) {
-    out.resize(n);
+    return sampleTurnRange(contour, omega, n, 0, n, out, cancel);
+}
+
+bool sampleTurnRange(const Contour& contour, double omega, std::size_t n, std::size_t first,
+                     std::size_t count, SampledTurn& out, const std::atomic<bool>* cancel) {
+    out.resize(count);
     const double period = kTwoPi / std::abs(omega);
     const double dt = period / static_cast<double>(n);
-    const double dphi = omega * dt;  // signed step
+    const double dphi = omega * dt;          // signed step
+    const std::size_t last = first + count;  // one past
 
-    const std::size_t blocks = (n + kBlock - 1) / kBlock;
+    // The block table covers the blocks of [first, last) only; cos/sin of sample k depend on k
+    // alone, so a chunk's values equal those of the whole turn.
+    const std::size_t firstBlock = first >> kBlockBits;
+    const std::size_t blocks = count == 0 ? 0 : ((last - 1) >> kBlockBits) - firstBlock + 1;
     std::vector<double> ct(kBlock), st(kBlock), cb(blocks), sb(blocks);
     for (std::size_t j = 0; j < kBlock; ++j) {
         ct[j] = std::cos(static_cast<double>(j) * dphi);
         st[j] = std::sin(static_cast<double>(j) * dphi);
     }
     for (std::size_t b = 0; b < blocks; ++b) {
-        const double angle = omega * (static_cast<double>(b * kBlock) * dt);
+        const double angle = omega * (static_cast<double>((firstBlock + b) * kBlock) * dt);
         cb[b] = std::cos(angle);
         sb[b] = std::sin(angle);
     }
 
-    const Outputs o{out.t.data(),    out.phi.data(),  out.r.data(),      out.x.data(),
-                    out.y.data(),    out.vR.data(),   out.vPhi.data(),   out.v.data(),
-                    out.aR.data(),   out.aPhi.data(), out.a.data(),      out.jR.data(),
-                    out.jPhi.data(), out.j.data(),    out.segment.data()};
+    const Outputs o{out.t.data(),    out.phi.data(),  out.r.data(),       out.x.data(),
+                    out.y.data(),    out.vR.data(),   out.vPhi.data(),    out.v.data(),
+                    out.aR.data(),   out.aPhi.data(), out.a.data(),       out.jR.data(),
+                    out.jPhi.data(), out.j.data(),    out.segment.data(), first};
     auto phiOf = [&](std::size_t k) { return omega * (static_cast<double>(k) * dt); };
 
     constexpr std::size_t kSamplesBetweenPolls = 16 * kBlock;
-    for (std::size_t k = 0; k < n;) {
+    for (std::size_t k = first; k < last;) {
         if (cancel && cancel->load(std::memory_order_relaxed)) return false;
         const double x = contour.normalize(phiOf(k));
         const std::size_t seg = contour.segmentAtNormalized(x);
@@ -162,9 +175,9 @@ bool sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn
         const double remaining = omega > 0.0 ? s.phiEnd - x : x - s.phiStart;
         const double steps = std::floor(remaining / std::abs(dphi));
         std::size_t end = k + 1 + static_cast<std::size_t>(std::max(0.0, std::min(steps, 1e18)));
-        end = std::min(end, n);
+        end = std::min(end, last);
         while (end > k + 1 && contour.segmentAt(phiOf(end - 1)) != seg) --end;
-        while (end < n && contour.segmentAt(phiOf(end)) == seg) ++end;
+        while (end < last && contour.segmentAt(phiOf(end)) == seg) ++end;
         end = std::min(end, k + kSamplesBetweenPolls);
 
         const auto segIndex = static_cast<std::int32_t>(seg);

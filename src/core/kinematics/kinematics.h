@@ -68,4 +68,18 @@ struct SampledTurn {
 bool sampleTurn(const Contour& contour, double omega, std::size_t n, SampledTurn& out,
                 const std::atomic<bool>* cancel = nullptr);
 
+/// @brief Chunks aligned to this many samples reproduce sampleTurn() exactly.
+inline constexpr std::size_t kSampleBlock = 1024;
+
+/// @brief Samples k = first … first + count − 1 of an n-sample turn into `out` (resized to
+/// `count`; out.t[i] is the time of sample first + i), so that a big turn can be computed in
+/// chunks of bounded memory. When the chunk starts and ends on multiples of kSampleBlock (or
+/// ends at n) the values are bit for bit those that sampleTurn() gives for the same k;
+/// otherwise they may differ in the last bit (the vectorised loop and its scalar remainder
+/// round differently). Requires
+/// first + count <= n. Cancellation as for sampleTurn().
+bool sampleTurnRange(const Contour& contour, double omega, std::size_t n, std::size_t first,
+                     std::size_t count, SampledTurn& out,
+                     const std::atomic<bool>* cancel = nullptr);
+
 }  // namespace cam

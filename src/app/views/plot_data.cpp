@@ -1,0 +1,48 @@
+#include "views/plot_data.h"
+
+namespace cam {
+namespace {
+
+QSharedPointer<QCPGraphDataContainer> containerOf(const std::vector<PlotPoint>& points) {
+    QVector<QCPGraphData> data;
+    data.reserve(static_cast<qsizetype>(points.size()));
+    for (const PlotPoint& p : points) data.emplaceBack(p.x, p.y);
+    auto container = QSharedPointer<QCPGraphDataContainer>::create();
+    container->set(data, true);  // the engine made them ascending in x
+    return container;
+}
+
+}  // namespace
+
+std::shared_ptr<const KinematicsPlotData> makeKinematicsPlotData(const ComputeResult& result,
+                                                                 const std::atomic<bool>* cancel) {
+    auto data = std::make_shared<KinematicsPlotData>();
+    for (const PlotLevel& level : result.curves.levels) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) return nullptr;
+        auto& containers = data->levels.emplace_back();
+        for (std::size_t c = 0; c < kCurveCount; ++c) containers[c] = containerOf(level.curves[c]);
+    }
+    return data;
+}
+
+std::shared_ptr<const MachiningPlotData> makeMachiningPlotData(const TimingOutcome& outcome) {
+    auto data = std::make_shared<MachiningPlotData>();
+    const TimingProfile& profile = outcome.profile;
+    QVector<QCPGraphData> feed;
+    std::array<QVector<QCPGraphData>, 3> accel;
+    for (std::size_t k = 0; k < profile.s.size(); ++k) {
+        feed.append({profile.s[k], profile.speed[k]});
+        for (int i = 0; i < 3; ++i) {
+            accel[static_cast<std::size_t>(i)].append({profile.s[k], profile.accel[k][i]});
+        }
+    }
+    data->feed = QSharedPointer<QCPGraphDataContainer>::create();
+    data->feed->set(feed, true);
+    for (std::size_t i = 0; i < 3; ++i) {
+        data->accel[i] = QSharedPointer<QCPGraphDataContainer>::create();
+        data->accel[i]->set(accel[i], true);
+    }
+    return data;
+}
+
+}  // namespace cam
