@@ -3,9 +3,7 @@
 //   camwright --screenshot FILE.png [--size WxH] [PROJECT]   (works without any display)
 
 #include <QApplication>
-#include <QBuffer>
 #include <QCommandLineParser>
-#include <QFile>
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QMessageBox>
@@ -14,8 +12,8 @@
 #include <cstdio>
 #include <cstring>
 
-#include "io/atomic_file.h"
 #include "mainwindow.h"
+#include "screenshot.h"
 
 namespace {
 
@@ -31,44 +29,6 @@ void chooseOffscreenWhenThereIsNoDisplay(int argc, char** argv) {
     const bool noDisplay =
         qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
     if (headless || noDisplay) qputenv("QT_QPA_PLATFORM", "offscreen");
-}
-
-int screenshot(cam::MainWindow& window, const QString& file, const QString& size) {
-    int w = 1400, h = 860;
-    if (!size.isEmpty()) {
-        const QStringList parts = size.split('x');
-        bool okW = false, okH = false;
-        if (parts.size() == 2) {
-            w = parts[0].toInt(&okW);
-            h = parts[1].toInt(&okH);
-        }
-        if (!okW || !okH || w < 320 || h < 240 || w > 8000 || h > 8000) {
-            std::fprintf(stderr,
-                         "camwright: --size: expected WxH between 320x240 and 8000x8000 "
-                         "(got \"%s\")\n",
-                         qPrintable(size));
-            return 1;
-        }
-    }
-    const QImage image = window.renderScreenshot(QSize(w, h));
-    if (image.isNull()) {
-        std::fprintf(stderr, "camwright: the computation did not finish within 20 s\n");
-        return 3;
-    }
-    QByteArray png;
-    QBuffer buffer(&png);
-    if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG")) {
-        std::fprintf(stderr, "camwright: %s: cannot encode the PNG\n", qPrintable(file));
-        return 2;
-    }
-    const cam::Diagnostics problems = cam::writeFileAtomically(
-        QFile::encodeName(file).toStdString(), std::string_view(png.constData(), png.size()));
-    if (!problems.empty()) {
-        std::fprintf(stderr, "camwright: %s: %s\n", qPrintable(file),
-                     problems.front().message.c_str());
-        return 2;
-    }
-    return 0;
 }
 
 }  // namespace
@@ -124,7 +84,8 @@ int main(int argc, char** argv) {
         }
     }
     if (headless)
-        return screenshot(window, parser.value(screenshotOption), parser.value(sizeOption));
+        return cam::writeScreenshot(window, parser.value(screenshotOption),
+                                    parser.value(sizeOption));
     window.show();
     return QApplication::exec();
 }

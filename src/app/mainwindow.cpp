@@ -357,31 +357,6 @@ bool MainWindow::waitForCurrentResult(int timeoutMs) {
     return loop.exec() == 0;
 }
 
-QImage MainWindow::renderScreenshot(const QSize& size) {
-    resize(size);
-    show();
-    QCoreApplication::processEvents();
-    if (!waitForCurrentResult(20000)) return {};
-    if (!m_ui->machiningDock->isHidden() && m_document->project().machining) {
-        const auto current = [this] {
-            const auto& t = m_engine->latestTiming();
-            return t && t->generation == m_engine->latestGeneration();
-        };
-        QEventLoop loop;
-        QTimer::singleShot(20000, &loop, &QEventLoop::quit);
-        connect(m_engine, &ComputeEngine::timingReady, &loop, [&] {
-            if (current()) loop.quit();
-        });
-        if (!current()) loop.exec();
-    }
-    if (m_shown) setCursorTime(m_shown->period / 8.0);
-    statusBar()->clearMessage();  // transient messages name paths: not part of the picture
-    for (int p = 0; p < 3; ++p) m_plots->plot(p)->replot(QCustomPlot::rpImmediateRefresh);
-    m_contour->replot(QCustomPlot::rpImmediateRefresh);
-    QCoreApplication::processEvents();
-    return grab().toImage();
-}
-
 void MainWindow::updateStatus() {
     const Diagnostics& d = m_document->diagnostics();
     const int n = static_cast<int>(m_document->project().contour.size());

@@ -68,9 +68,8 @@ public:
 
     /// @brief Runs the event loop until the plots show the result of the newest request.
     bool waitForCurrentResult(int timeoutMs);
-    /// @brief The window at `size` with the cursor at T/8, as `--screenshot` writes it.
-    /// Empty if no result arrived within 20 s.
-    QImage renderScreenshot(const QSize& size);
+    /// @brief The last result that could be computed: what the views draw (null before one).
+    [[nodiscard]] const ComputeResultPtr& shownResult() const { return m_shown; }
 
 signals:
     /// The plots show this result (emitted after they were updated).

@@ -72,9 +72,8 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     m_controlPolygon->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 4));
     // The drag handles above the markers: a centre cross never hides the handle on it.
     addLayer("handles", layer("markers"), QCustomPlot::limAbove);
-    for (QCPAbstractPlottable* p :
-         std::initializer_list<QCPAbstractPlottable*>{m_firstHandle, m_secondHandle,
-                                                      m_controlPolygon}) {
+    for (QCPAbstractPlottable* p : std::initializer_list<QCPAbstractPlottable*>{
+             m_firstHandle, m_secondHandle, m_controlPolygon}) {
         p->setLayer("handles");
     }
     // Origin: the rotation centre.
