@@ -18,6 +18,14 @@
 
 namespace cam::test {
 
+/// True in a build with AddressSanitizer (the debug preset): code runs several times slower and
+/// cannot run under an address-space limit, which timing bounds and memory tests must allow for.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kSanitized = true;
+#else
+inline constexpr bool kSanitized = false;
+#endif
+
 /// |actual - expected| <= rel·max(|expected|, floor): relative, with an absolute floor for zeros.
 inline ::testing::AssertionResult relClose(double actual, double expected, double rel,
                                            double floor = 0.0) {

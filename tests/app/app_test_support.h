@@ -24,7 +24,7 @@ inline Project loadExample() {
 
 /// Processes events until `done()` or the timeout; returns done().
 template <class Predicate>
-bool processEventsUntil(Predicate done, int timeoutMs = 10000) {
+bool processEventsUntil(Predicate done, int timeoutMs = kSanitized ? 60000 : 10000) {
     QElapsedTimer timer;
     timer.start();
     while (!done() && timer.elapsed() < timeoutMs) {

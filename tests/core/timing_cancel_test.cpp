@@ -25,8 +25,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// How long a call may go on after its flag was set.
-constexpr double kHonouredWithinMs = 100.0;
+/// How long a call may go on after its flag was set (sanitizers slow everything down several
+/// times; a loop that does not poll still overshoots by seconds).
+constexpr double kHonouredWithinMs = test::kSanitized ? 500.0 : 100.0;
 /// When the flag is set, after the call started: long enough that the call is well under way.
 constexpr auto kSetAfter = std::chrono::milliseconds(20);
 /// For the 8-million-point plans: after their memory is set up (some tens of ms), inside the

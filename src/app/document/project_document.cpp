@@ -12,6 +12,11 @@ ProjectDocument::ProjectDocument(QObject* parent) : QObject(parent) {
     m_diagnostics = validateProject(m_project);
 }
 
+ProjectDocument::~ProjectDocument() {
+    m_undoStack.blockSignals(true);
+    blockSignals(true);
+}
+
 QString ProjectDocument::displayName() const {
     return m_filePath.isEmpty() ? tr("Untitled") : QFileInfo(m_filePath).fileName();
 }

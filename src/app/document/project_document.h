@@ -17,6 +17,9 @@ class ProjectDocument : public QObject {
     Q_OBJECT
 public:
     explicit ProjectDocument(QObject* parent = nullptr);
+    /// Silent: the undo stack's last cleanChanged would otherwise reach listeners (the main
+    /// window) that are already half destroyed.
+    ~ProjectDocument() override;
 
     [[nodiscard]] const Project& project() const { return m_project; }
     [[nodiscard]] QUndoStack* undoStack() { return &m_undoStack; }
