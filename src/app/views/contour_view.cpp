@@ -83,7 +83,7 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     origin->setSize(12);
     origin->setPen(QPen(Qt::black));
 
-    m_staleLabel = makeStaleLabel(this);
+    m_staleLabel = new StaleLabel(this);
 
     connect(this, &QCustomPlot::mouseWheel, this, [this] { m_autoFit = false; });
     connect(document, &ProjectDocument::changed, this, [this] {
@@ -176,7 +176,7 @@ void ContourView::keepEqualAspect() {
 
 void ContourView::resizeEvent(QResizeEvent* event) {
     QCustomPlot::resizeEvent(event);
-    if (m_stale) placeStaleLabel(m_staleLabel);
+    m_staleLabel->place();
     if (m_autoFit) {
         resetZoom();
     } else {
@@ -194,15 +194,11 @@ void ContourView::setCursorAngle(double phi) {
     m_cursorLayer->replot();
 }
 
-QString ContourView::staleReason() const { return m_stale ? m_staleLabel->text() : QString(); }
+QString ContourView::staleReason() const { return m_staleLabel->reason(); }
 
 void ContourView::setStale(const QString& reason) {
-    const bool stale = !reason.isEmpty();
-    if (stale == m_stale && reason == m_staleLabel->text()) return;
-    m_stale = stale;
-    m_staleLabel->setText(reason);
-    m_staleLabel->setVisible(stale);
-    if (stale) placeStaleLabel(m_staleLabel);
+    if (!m_staleLabel->setReason(reason)) return;
+    const bool stale = m_staleLabel->isStale();
     for (std::size_t k = 0; k < m_segmentCurves.size(); ++k) {
         QPen pen = m_segmentCurves[k]->pen();
         pen.setColor(stale ? staleColor() : segmentColor(static_cast<int>(k)));

@@ -10,6 +10,7 @@
 namespace cam {
 
 class ProjectDocument;
+class StaleLabel;
 
 class ContourView : public QCustomPlot {
     Q_OBJECT
@@ -56,8 +57,7 @@ private:
     QCPItemLine* m_ray = nullptr;
     QCPItemTracer* m_rayPoint = nullptr;
     QCPLayer* m_cursorLayer = nullptr;  ///< buffered: the ray and its point alone
-    QLabel* m_staleLabel = nullptr;
-    bool m_stale = false;
+    StaleLabel* m_staleLabel = nullptr;
     int m_selected = -1;
     Handle m_dragging = Handle::None;
     int m_gesture = 0;

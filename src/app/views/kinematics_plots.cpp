@@ -99,7 +99,7 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
         p->legend->setMinimumSize(legendWidth, 0);
         p->legend->setMaximumSize(legendWidth, QWIDGETSIZE_MAX);
     }
-    m_staleLabel = makeStaleLabel(this);
+    m_staleLabel = new StaleLabel(this);
 }
 
 void KinematicsPlots::setResult(const ComputeResultPtr& result) {
@@ -134,15 +134,11 @@ void KinematicsPlots::setResult(const ComputeResultPtr& result) {
     fitY();
 }
 
-QString KinematicsPlots::staleReason() const { return m_stale ? m_staleLabel->text() : QString(); }
+QString KinematicsPlots::staleReason() const { return m_staleLabel->reason(); }
 
 void KinematicsPlots::setStale(const QString& reason) {
-    const bool stale = !reason.isEmpty();
-    if (stale == m_stale && reason == m_staleLabel->text()) return;
-    m_stale = stale;
-    m_staleLabel->setText(reason);
-    m_staleLabel->setVisible(stale);
-    if (stale) cam::placeStaleLabel(m_staleLabel);
+    if (!m_staleLabel->setReason(reason)) return;
+    const bool stale = m_staleLabel->isStale();
     for (QCustomPlot* plot : m_plots) {
         for (int c = 0; c < plot->graphCount(); ++c) {
             QPen pen = plot->graph(c)->pen();
@@ -156,7 +152,7 @@ void KinematicsPlots::setStale(const QString& reason) {
 
 void KinematicsPlots::resizeEvent(QResizeEvent* event) {
     QWidget::resizeEvent(event);
-    if (m_stale) cam::placeStaleLabel(m_staleLabel);
+    m_staleLabel->place();
 }
 
 void KinematicsPlots::chooseResolution(bool force) {

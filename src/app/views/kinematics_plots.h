@@ -11,9 +11,10 @@
 class QCustomPlot;
 class QCPItemStraightLine;
 class QCPLayer;
-class QLabel;
 
 namespace cam {
+
+class StaleLabel;
 
 struct KinematicsPlotData;
 
@@ -53,13 +54,12 @@ private:
     std::array<QCPItemStraightLine*, 3> m_cursors{};
     std::array<QCPLayer*, 3> m_cursorLayers{};
     std::vector<QCPItemStraightLine*> m_jointMarkers;
-    QLabel* m_staleLabel = nullptr;
+    StaleLabel* m_staleLabel = nullptr;
     ComputeResultPtr m_result;  ///< the result drawn (the last one that could be computed)
     std::shared_ptr<const KinematicsPlotData> m_data;
     PlotAxis m_axis = PlotAxis::Angle;
     PlotRange m_xRange;
     bool m_fitted = false;
-    bool m_stale = false;
     std::size_t m_level = static_cast<std::size_t>(-1);
 };
 

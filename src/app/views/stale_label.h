@@ -31,29 +31,48 @@ inline QString staleText(const ComputeResult& result) {
         .arg(first, more);
 }
 
-/// @brief A hidden label over `parent` (place it with placeStaleLabel()).
-inline QLabel* makeStaleLabel(QWidget* parent) {
-    auto* label = new QLabel(parent);
-    label->setObjectName("staleLabel");
-    label->setWordWrap(true);
-    label->setAlignment(Qt::AlignCenter);
-    label->setTextFormat(Qt::PlainText);
-    label->setAttribute(Qt::WA_TransparentForMouseEvents);
-    label->setStyleSheet(
-        "QLabel { color: #b00020; background: rgba(255, 255, 255, 225); border: 1px solid "
-        "#b00020; border-radius: 3px; padding: 6px; font-weight: bold; }");
-    label->hide();
-    return label;
-}
+/// @brief The label laid over a view that draws an out-of-date picture: hidden while the view is
+/// current, red and centred at the top of the view (at most 90 % of its width) while not.
+class StaleLabel : public QLabel {
+public:
+    explicit StaleLabel(QWidget* parent) : QLabel(parent) {
+        setObjectName("staleLabel");
+        setWordWrap(true);
+        setAlignment(Qt::AlignCenter);
+        setTextFormat(Qt::PlainText);
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        setStyleSheet(
+            "QLabel { color: #b00020; background: rgba(255, 255, 255, 225); border: 1px solid "
+            "#b00020; border-radius: 3px; padding: 6px; font-weight: bold; }");
+        hide();
+    }
 
-/// @brief Centres the label at the top of its parent, at most 90 % of its width.
-inline void placeStaleLabel(QLabel* label) {
-    const QWidget* parent = label->parentWidget();
-    const int width = std::min(parent->width() * 9 / 10, 560);
-    label->setFixedWidth(std::max(width, 80));
-    label->setFixedHeight(label->heightForWidth(label->width()));
-    label->move((parent->width() - label->width()) / 2, 6);
-    label->raise();
-}
+    /// @brief Shows `reason` (empty: current again, hidden). False when nothing changed.
+    bool setReason(const QString& reason) {
+        if (reason.isEmpty() == !m_stale && reason == text()) return false;
+        m_stale = !reason.isEmpty();
+        setText(reason);
+        setVisible(m_stale);
+        place();
+        return true;
+    }
+    [[nodiscard]] bool isStale() const { return m_stale; }
+    /// @brief Why the view is out of date; empty when it is current.
+    [[nodiscard]] QString reason() const { return m_stale ? text() : QString(); }
+
+    /// @brief Follows the parent's size (call from its resizeEvent).
+    void place() {
+        if (!m_stale) return;
+        const QWidget* p = parentWidget();
+        const int width = std::min(p->width() * 9 / 10, 560);
+        setFixedWidth(std::max(width, 80));
+        setFixedHeight(heightForWidth(this->width()));
+        move((p->width() - this->width()) / 2, 6);
+        raise();
+    }
+
+private:
+    bool m_stale = false;
+};
 
 }  // namespace cam
