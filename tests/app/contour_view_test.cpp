@@ -9,11 +9,13 @@
 #include <QTest>
 #include <QWheelEvent>
 #include <cmath>
+#include <fstream>
 
 #include "app_test_support.h"
 #include "common/angles.h"
 #include "document/commands.h"
 #include "engine/compute_engine.h"
+#include "io/project_json.h"
 #include "mainwindow.h"
 #include "models/segment_table_model.h"
 #include "views/contour_view.h"
@@ -47,6 +49,59 @@ QCPGraph* graphNamed(QCustomPlot* plot, const QString& name) {
         if (plot->graph(i)->name() == name) return plot->graph(i);
     }
     return nullptr;
+}
+
+TEST(ContourView, ManySegmentsAreDrawnByAFixedSetOfCurves) {
+    // At 612d090 every segment was a curve of its own with a legend item: closing a window of
+    // 10,000 segments took more than five minutes (QCPLegend::removeItem, one by one). Now the
+    // segments share the ten colour curves, separated by gaps, and nothing enters a legend.
+    MainWindow small;
+    ASSERT_TRUE(small.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(small.waitForCurrentResult(10000));
+    const int fixed = small.contourView()->plottableCount();
+
+    const test::TempDir dir;
+    constexpr int kSegments = 2000;
+    Project p = test::loadExample();
+    p.contour.clear();
+    for (int k = 0; k < kSegments; ++k) {  // the circle about (5, 0) of radius 20, split
+        p.contour.push_back(SegmentSpec{Arc{{5.0, 0.0}, 20.0, Branch::Outer}, 360.0 * k / kSegments,
+                                        360.0 * (k + 1) / kSegments});
+    }
+    const std::string path = dir.file("split.cam.json");
+    std::ofstream(path, std::ios::binary) << serializeProject(p);
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(QString::fromStdString(path)).isEmpty());
+    ASSERT_TRUE(window.waitForCurrentResult(60000));
+    ContourView* view = window.contourView();
+    EXPECT_EQ(view->plottableCount(), fixed);
+    EXPECT_EQ(view->legend->itemCount(), 0);
+    // Each segment's run of points lies on the circle and spans exactly its window.
+    for (int k : {0, 1, 9, 10, 1234, kSegments - 1}) {
+        const QCPCurve* curve = view->segmentCurve(k);
+        const auto [first, count] = view->segmentRun(k);
+        ASSERT_GE(count, 9) << k;
+        ASSERT_LE(first + count, curve->data()->size()) << k;
+        for (int i = first; i < first + count; ++i) {
+            const auto it = curve->data()->at(i);
+            EXPECT_NEAR(std::hypot(it->key - 5.0, it->value), 20.0, 1e-9) << k;
+        }
+        const auto start = curve->data()->at(first);
+        const auto end = curve->data()->at(first + count - 1);
+        const auto turnsApart = [](double a, double b) { return std::remainder(a - b, kTwoPi); };
+        EXPECT_NEAR(
+            turnsApart(std::atan2(start->value, start->key), degToRad(360.0 * k / kSegments)), 0.0,
+            1e-12)
+            << k;
+        EXPECT_NEAR(
+            turnsApart(std::atan2(end->value, end->key), degToRad(360.0 * (k + 1) / kSegments)),
+            0.0, 1e-12)
+            << k;
+        // A gap (NaN) separates it from the next segment of its colour.
+        if (first + count < curve->data()->size()) {
+            EXPECT_TRUE(std::isnan(curve->data()->at(first + count)->key)) << k;
+        }
+    }
 }
 
 TEST(ContourView, EveryJointStaysMarkedWhenZoomedInOnIt) {
@@ -161,15 +216,15 @@ TEST(ContourView, AProjectThatCannotBeComputedIsShownGreyedAndLabelled) {
     // What is drawn is the document as it is now: segment 2 on its circle again.
     const SegmentSpec& s = window.document()->project().contour[2];
     int checked = 0;
-    for (int i = 0; i < view->plottableCount(); ++i) {
-        auto* c = qobject_cast<QCPCurve*>(view->plottable(i));
-        if (!c || c->name() != "segment 2") continue;
-        for (auto it = c->data()->constBegin(); it != c->data()->constEnd(); ++it) {
-            const Arc& arc = test::arcOf(s);
-            EXPECT_NEAR(std::hypot(it->key - arc.center.x(), it->value - arc.center.y()),
-                        arc.radius, 1e-9);
-            ++checked;
-        }
+    const QCPCurve* curve = view->segmentCurve(2);
+    const auto [first, count] = view->segmentRun(2);
+    ASSERT_LE(first + count, curve->data()->size());
+    for (int i = first; i < first + count; ++i) {
+        const auto it = curve->data()->at(i);
+        const Arc& arc = test::arcOf(s);
+        EXPECT_NEAR(std::hypot(it->key - arc.center.x(), it->value - arc.center.y()), arc.radius,
+                    1e-9);
+        ++checked;
     }
     EXPECT_GT(checked, 100);
 

@@ -1,6 +1,6 @@
 // The window as a picture: compared with a golden image, strictly enough that hiding any single
-// curve — one of the nine kinematic curves or one contour segment — is noticed. The second test
-// proves that by hiding each in turn.
+// curve — one of the nine kinematic curves or one of the contour's ten colour curves — is
+// noticed. The second test proves that by hiding each in turn.
 //
 // Regenerate with CAMWRIGHT_UPDATE_GOLDEN=1 after a deliberate change of the window, and look at
 // the new image before committing it.
@@ -109,9 +109,11 @@ TEST(GoldenScreenshot, HidingAnySingleCurveIsNoticed) {
     ContourView* contour = window.contourView();
     for (int i = 0; i < contour->plottableCount(); ++i) {
         QCPAbstractPlottable* c = contour->plottable(i);
-        if (c->name().startsWith("segment")) curves.emplace_back(c->name().toStdString(), c);
+        if (c->name().startsWith("segments")) curves.emplace_back(c->name().toStdString(), c);
     }
-    ASSERT_EQ(curves.size(), 9u + 13u);
+    // The 13 segments of the example are drawn by the ten colour curves (segment k by curve
+    // k mod 10): hiding each hides one to two segments.
+    ASSERT_EQ(curves.size(), 9u + 10u);
     int least = std::numeric_limits<int>::max();
     for (const auto& [name, curve] : curves) {
         curve->setVisible(false);

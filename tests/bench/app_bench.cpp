@@ -6,6 +6,9 @@
 //                         GUI thread and its 99th percentile, measured by a 1 ms probe timer.
 //  BM_ComputeProject    — the worker's share of an edit: the whole computation of one request
 //                         including the views' plot containers (no GUI involved).
+//  BM_ManySegments      — a split circle of 1,000 to 100,000 arcs: open until drawn, one
+//                         replot of the contour view, close (counters open_ms, replot_ms,
+//                         close_ms).
 //  BM_CursorMove        — one mouse move over the velocity plot: from the event until the three
 //                         plots and the contour view have painted the new cursor (manual time).
 
@@ -13,7 +16,9 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QMouseEvent>
+#include <QTemporaryDir>
 #include <QTimer>
 #include <algorithm>
 #include <vector>
@@ -170,6 +175,65 @@ void BM_ReplotViews(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_ReplotViews)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(20);
+
+/// A circle about (5, 0) of radius 20 (branch "outer": the origin is inside) split into n arcs.
+QString writeSplitCircle(const QTemporaryDir& dir, int n) {
+    const QString path = dir.filePath(QStringLiteral("split-%1.cam.json").arg(n));
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) std::abort();
+    QByteArray text = R"({"format": "camwright", "version": 1, "motion": {"period_s": 1},
+ "contour": [)";
+    for (int k = 0; k < n; ++k) {
+        text += k == 0 ? "\n" : ",\n";
+        text +=
+            QStringLiteral(R"({"type": "arc", "center": [5, 0], "radius": 20, "branch": "outer", )"
+                           R"("phi_start": %1, "phi_end": %2})")
+                .arg(360.0 * k / n, 0, 'g', 17)
+                .arg(k + 1 == n ? 360.0 : 360.0 * (k + 1) / n, 0, 'g', 17)
+                .toUtf8();
+    }
+    text += "]}\n";
+    file.write(text);
+    return path;
+}
+
+/// A contour of many segments in the real window: opening it until its first result is drawn,
+/// one full replot of the contour view, and closing the window (at 612d090 closing 10,000
+/// segments took more than five minutes: a legend item per segment curve).
+void BM_ManySegments(benchmark::State& state) {
+    const QTemporaryDir dir;
+    const QString path = writeSplitCircle(dir, static_cast<int>(state.range(0)));
+    double openMs = 0, replotMs = 0, closeMs = 0;
+    for (auto _ : state) {
+        QElapsedTimer timer;
+        timer.start();
+        auto window = std::make_unique<cam::MainWindow>();
+        window->resize(1400, 860);
+        window->show();
+        if (!window->loadFile(path).isEmpty()) std::abort();
+        if (!window->waitForCurrentResult(600'000)) std::abort();
+        QCoreApplication::processEvents();
+        window->contourView()->replot(QCustomPlot::rpImmediateRefresh);
+        openMs = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
+        timer.restart();
+        window->contourView()->replot(QCustomPlot::rpImmediateRefresh);
+        replotMs = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
+        timer.restart();
+        window.reset();
+        closeMs = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
+        state.SetIterationTime((openMs + replotMs + closeMs) * 1e-3);
+    }
+    state.counters["open_ms"] = openMs;
+    state.counters["replot_ms"] = replotMs;
+    state.counters["close_ms"] = closeMs;
+}
+BENCHMARK(BM_ManySegments)
+    ->Arg(1'000)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 /// Counts the paint events of the widgets it watches.
 class PaintCounter : public QObject {

@@ -1,6 +1,7 @@
 #include "engine/compute_result.h"
 
 #include <QElapsedTimer>
+#include <algorithm>
 #include <cmath>
 
 #include "common/angles.h"
@@ -10,17 +11,25 @@
 namespace cam {
 namespace {
 
-constexpr int kOutlinePointsPerSegment = 160;
+/// Points per segment outline: 160 intervals for a few segments, fewer for many, so that the
+/// contour view never holds much more than kOutlinePointsTotal points (100,000 segments would
+/// otherwise be 16 million points to copy and draw); at least 8 intervals each.
+constexpr int kOutlineIntervalsPerSegment = 160;
+constexpr int kOutlineIntervalsMin = 8;
+constexpr std::size_t kOutlinePointsTotal = 1u << 18;
 
 void buildOutlines(ComputeResult& r) {
     const Contour& c = *r.contour;
     r.outlines.resize(c.size());
+    const int intervals = static_cast<int>(
+        std::clamp<std::size_t>(kOutlinePointsTotal / std::max<std::size_t>(c.size(), 1),
+                                kOutlineIntervalsMin, kOutlineIntervalsPerSegment));
     for (std::size_t k = 0; k < c.size(); ++k) {
         const ContourSegment& s = c.segment(k);
         QVector<QPointF>& out = r.outlines[k];
-        out.reserve(kOutlinePointsPerSegment + 1);
-        for (int i = 0; i <= kOutlinePointsPerSegment; ++i) {
-            const double phi = s.phiStart + (s.phiEnd - s.phiStart) * i / kOutlinePointsPerSegment;
+        out.reserve(intervals + 1);
+        for (int i = 0; i <= intervals; ++i) {
+            const double phi = s.phiStart + (s.phiEnd - s.phiStart) * i / intervals;
             const double rr = s.evaluate(phi).r;
             out.append({rr * std::cos(phi), rr * std::sin(phi)});
         }

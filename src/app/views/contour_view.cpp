@@ -1,6 +1,8 @@
 #include "views/contour_view.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "document/commands.h"
 #include "models/delegates.h"
@@ -49,6 +51,15 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     m_rayPoint->setPen(QPen(Qt::black));
     m_rayPoint->setBrush(Qt::white);
 
+    // No legend here: the table names the segments. (QCustomPlot would otherwise add a legend
+    // item per plottable, and removing items one by one is quadratic.)
+    setAutoAddPlottableToLegend(false);
+    for (int c = 0; c < kSegmentColorCount; ++c) {
+        auto* curve = new QCPCurve(xAxis, yAxis);
+        curve->setName(QStringLiteral("segments %1 mod %2").arg(c).arg(kSegmentColorCount));
+        curve->setPen(QPen(segmentColor(c), 2));
+        m_colourCurves[static_cast<std::size_t>(c)] = curve;
+    }
     m_centers = addGraph();
     m_centers->setLayer("markers");
     m_centers->setName(tr("centres"));
@@ -102,31 +113,45 @@ void ContourView::setResult(const ComputeResultPtr& result) {
     setStale({});
     m_result = result;
     const std::size_t n = result->outlines.size();
-    while (m_segmentCurves.size() > n) {
-        removePlottable(m_segmentCurves.back());
-        m_segmentCurves.pop_back();
-    }
-    while (m_segmentCurves.size() < n) {
-        auto* curve = new QCPCurve(xAxis, yAxis);
-        curve->setPen(QPen(segmentColor(static_cast<int>(m_segmentCurves.size())), 2));
-        m_segmentCurves.push_back(curve);
-    }
+    constexpr double kGap = std::numeric_limits<double>::quiet_NaN();
+    std::array<QVector<QCPCurveData>, kSegmentColorCount> data;
+    m_runs.assign(n, {0, 0});
     QVector<double> cx, cy, jx, jy;
+    double left = 0, right = 0, bottom = 0, top = 0;
+    bool any = false;
     for (std::size_t k = 0; k < n; ++k) {
-        QVector<double> x, y;
-        for (const QPointF& p : result->outlines[k]) {
-            x << p.x();
-            y << p.y();
+        const auto& outline = result->outlines[k];
+        auto& points = data[k % kSegmentColorCount];
+        if (!points.isEmpty()) points.append(QCPCurveData(points.size(), kGap, kGap));
+        m_runs[k] = {static_cast<int>(points.size()), static_cast<int>(outline.size())};
+        for (const QPointF& p : outline) {
+            points.append(QCPCurveData(points.size(), p.x(), p.y()));
+            if (!any) {
+                left = right = p.x();
+                bottom = top = p.y();
+                any = true;
+            }
+            left = std::min(left, p.x());
+            right = std::max(right, p.x());
+            bottom = std::min(bottom, p.y());
+            top = std::max(top, p.y());
         }
-        m_segmentCurves[k]->setData(x, y);
-        m_segmentCurves[k]->setName(tr("segment %1").arg(k));
-        jx << x.front();
-        jy << y.front();
+        if (!outline.empty()) {
+            jx << outline.front().x();
+            jy << outline.front().y();
+        }
         const ContourSegment& s = result->contour->segment(k);
         if (s.type == SegmentType::Arc) {
             cx << s.arc.center.x();
             cy << s.arc.center.y();
         }
+    }
+    m_hasBounds = any;
+    m_xBounds = QCPRange(left, right);
+    m_yBounds = QCPRange(bottom, top);
+    for (int c = 0; c < kSegmentColorCount; ++c) {
+        m_colourCurves[static_cast<std::size_t>(c)]->data()->set(data[static_cast<std::size_t>(c)],
+                                                                 true);
     }
     m_centers->setData(cx, cy);
     // Around the contour x goes back and forth: the graph must sort the joints by x itself, or
@@ -137,23 +162,20 @@ void ContourView::setResult(const ComputeResultPtr& result) {
     replot(rpQueuedReplot);  // the new contour (the cursor alone redraws only its layer)
 }
 
+QCPCurve* ContourView::segmentCurve(int k) const {
+    return m_colourCurves[static_cast<std::size_t>(k % kSegmentColorCount)];
+}
+
+std::pair<int, int> ContourView::segmentRun(int k) const {
+    return m_runs.at(static_cast<std::size_t>(k));
+}
+
 void ContourView::resetZoom() {
-    bool found = false;
-    QCPRange xr, yr;
-    for (auto* c : m_segmentCurves) {
-        bool ok = false;
-        const QCPRange a = c->getKeyRange(ok);
-        const QCPRange b = c->getValueRange(ok);
-        if (!ok) continue;
-        xr = found ? QCPRange(std::min(xr.lower, a.lower), std::max(xr.upper, a.upper)) : a;
-        yr = found ? QCPRange(std::min(yr.lower, b.lower), std::max(yr.upper, b.upper)) : b;
-        found = true;
-    }
-    if (!found) return;
+    if (!m_hasBounds) return;
     m_autoFit = true;
-    const double pad = 0.08 * std::max(xr.size(), yr.size());
-    xAxis->setRange(xr.lower - pad, xr.upper + pad);
-    yAxis->setRange(yr.lower - pad, yr.upper + pad);
+    const double pad = 0.08 * std::max(m_xBounds.size(), m_yBounds.size());
+    xAxis->setRange(m_xBounds.lower - pad, m_xBounds.upper + pad);
+    yAxis->setRange(m_yBounds.lower - pad, m_yBounds.upper + pad);
     keepEqualAspect();
     replot(rpQueuedReplot);
 }
@@ -199,10 +221,11 @@ QString ContourView::staleReason() const { return m_staleLabel->reason(); }
 void ContourView::setStale(const QString& reason) {
     if (!m_staleLabel->setReason(reason)) return;
     const bool stale = m_staleLabel->isStale();
-    for (std::size_t k = 0; k < m_segmentCurves.size(); ++k) {
-        QPen pen = m_segmentCurves[k]->pen();
-        pen.setColor(stale ? staleColor() : segmentColor(static_cast<int>(k)));
-        m_segmentCurves[k]->setPen(pen);
+    for (int c = 0; c < kSegmentColorCount; ++c) {
+        QCPCurve* curve = m_colourCurves[static_cast<std::size_t>(c)];
+        QPen pen = curve->pen();
+        pen.setColor(stale ? staleColor() : segmentColor(c));
+        curve->setPen(pen);
     }
     for (auto [graph, color] :
          {std::pair{m_centers, QColor(80, 80, 80)}, std::pair{m_joints, QColor(Qt::black)}}) {

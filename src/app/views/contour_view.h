@@ -5,7 +5,10 @@
 
 #include <qcustomplot.h>
 
+#include <array>
+
 #include "engine/compute_result.h"
+#include "views/palette.h"
 
 namespace cam {
 
@@ -18,6 +21,10 @@ public:
     explicit ContourView(ProjectDocument* document, QWidget* parent = nullptr);
 
     void setResult(const ComputeResultPtr& result);
+    /// @brief The curve that draws segment k (shared by every tenth segment, see
+    /// m_colourCurves), and where segment k's points begin in it and how many there are.
+    [[nodiscard]] QCPCurve* segmentCurve(int k) const;
+    [[nodiscard]] std::pair<int, int> segmentRun(int k) const;
     /// @brief Shows the follower ray at this angle (rad) and the contour point on it.
     void setCursorAngle(double phi);
     /// @brief Shows the drag handles of this segment (-1: none).
@@ -48,7 +55,13 @@ private:
 
     ProjectDocument* m_document;
     ComputeResultPtr m_result;
-    std::vector<QCPCurve*> m_segmentCurves;
+    /// One curve per segment colour: segment k is a run of colourCurves[k mod 10], the runs
+    /// separated by a NaN point (a gap). Ten curves whatever the number of segments: drawing,
+    /// replacing and closing cost what the points cost, not a plottable per segment.
+    std::array<QCPCurve*, kSegmentColorCount> m_colourCurves{};
+    QCPRange m_xBounds, m_yBounds;            ///< of every outline point
+    bool m_hasBounds = false;                 ///< false until a result with points arrives
+    std::vector<std::pair<int, int>> m_runs;  ///< per segment: first index, count in its curve
     QCPGraph* m_centers = nullptr;
     QCPGraph* m_joints = nullptr;
     QCPGraph* m_firstHandle = nullptr;     ///< square: the arc's centre, or a spline's P1

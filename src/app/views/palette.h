@@ -7,11 +7,14 @@
 namespace cam {
 
 /// @brief A colour for segment k, distinct for neighbours (Tableau 10, cycled).
+/// @brief How many colours segments cycle through: segment k is drawn in colour k mod this.
+inline constexpr int kSegmentColorCount = 10;
+
 inline QColor segmentColor(int k) {
-    static const QColor colors[] = {
+    static const QColor colors[kSegmentColorCount] = {
         {31, 119, 180}, {255, 127, 14},  {44, 160, 44},   {214, 39, 40},  {148, 103, 189},
         {140, 86, 75},  {227, 119, 194}, {127, 127, 127}, {188, 189, 34}, {23, 190, 207}};
-    return colors[k % 10];
+    return colors[k % kSegmentColorCount];
 }
 
 /// @brief Radial, tangential, magnitude.
