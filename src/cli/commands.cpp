@@ -78,6 +78,52 @@ Json stateJson(const KinematicState& s) {
                 {"j", m.j}};
 }
 
+/// No command prints a non-finite number with exit 0: a result that is not a finite number is
+/// "not computable" (exit 3), named by its place in the output ("extremes/j/max/value").
+void requireFinite(const Json& value, const std::string& where) {
+    if (value.is_number_float() && !std::isfinite(value.get<double>())) {
+        throw CliError{kNotComputable, where,
+                       "is not a finite number (" + formatNumber(value.get<double>()) +
+                           "): the result is beyond what a double can hold"};
+    }
+    if (value.is_object()) {
+        for (const auto& [key, item] : value.items()) {
+            requireFinite(item, where.empty() ? key : where + "/" + key);
+        }
+    } else if (value.is_array()) {
+        for (std::size_t i = 0; i < value.size(); ++i) {
+            requireFinite(value[i], where + "[" + std::to_string(i) + "]");
+        }
+    }
+}
+
+/// Prints a JSON result after checking every number in it.
+void printJson(std::ostream& out, const Json& result) {
+    requireFinite(result, "");
+    out << result.dump(2) << "\n";
+}
+
+/// Every sampled value is finite, checked before the first row is written.
+void requireFiniteColumns(const SampledTurn& turn) {
+    const std::pair<const char*, const std::vector<double>*> columns[] = {
+        {"t", &turn.t},        {"phi_deg", &turn.phi}, {"r", &turn.r},        {"x", &turn.x},
+        {"y", &turn.y},        {"v_r", &turn.vR},      {"v_phi", &turn.vPhi}, {"v", &turn.v},
+        {"a_r", &turn.aR},     {"a_phi", &turn.aPhi},  {"a", &turn.a},        {"j_r", &turn.jR},
+        {"j_phi", &turn.jPhi}, {"j", &turn.j}};
+    for (const auto& [name, values] : columns) {
+        for (std::size_t k = 0; k < values->size(); ++k) {
+            if (std::isfinite((*values)[k])) continue;
+            throw CliError{kNotComputable, std::string("sample ") + std::to_string(k) + ", " + name,
+                           "is not a finite number (" + formatNumber((*values)[k]) +
+                               "): the result is beyond what a double can hold"};
+        }
+    }
+}
+
+/// Beyond 1e15 turns one rounding of t/T moves the angle by more than a tenth of a turn: the
+/// instant no longer names a cam angle.
+constexpr double kMaxTurns = 1e15;
+
 }  // namespace
 
 int runValidate(const Arguments& args, std::ostream& out, std::ostream& err) {
@@ -99,7 +145,14 @@ int runState(const Arguments& args, std::ostream& out) {
     if (!tText) throw CliError{kUsage, "--t", "is required (the time in seconds)"};
     const double t = parseFiniteNumber("--t", *tText, "seconds");
     const Loaded loaded = load(args.positional.at(0));
-    out << stateJson(stateAt(loaded.contour, loaded.omega, t)).dump(2) << "\n";
+    if (!(std::abs(turnsAt(loaded.project.motion, t)) <= kMaxTurns)) {
+        throw CliError{kInvalidInput, "--t",
+                       "must be within " + formatNumber(kMaxTurns) + " turns of 0 (got " +
+                           formatNumber(t) + " s, " +
+                           formatNumber(turnsAt(loaded.project.motion, t)) +
+                           " turns): beyond that a double no longer resolves the cam angle"};
+    }
+    printJson(out, stateJson(stateAt(loaded.contour, loaded.project.motion, t)));
     return kOk;
 }
 
@@ -121,6 +174,7 @@ int runSample(const Arguments& args, std::ostream& out) {
     }
     SampledTurn turn;
     sampleTurn(loaded.contour, loaded.omega, static_cast<std::size_t>(n), turn);
+    requireFiniteColumns(turn);
 
     std::string chunk = "t,phi_deg,segment,r,x,y,v_r,v_phi,v,a_r,a_phi,a,j_r,j_phi,j\n";
     auto flush = [&] {
@@ -193,7 +247,7 @@ int runAnalyze(const Arguments& args, std::ostream& out) {
                       {"units", {{"length", "mm"}, {"angle", "deg"}, {"time", "s"}}},
                       {"joints", std::move(joints)},
                       {"extremes", std::move(extremes)}};
-    out << result.dump(2) << "\n";
+    printJson(out, result);
     return kOk;
 }
 
@@ -395,18 +449,18 @@ int runFillet(const Arguments& args, std::ostream& out) {
     }
     Project filleted = loaded.project;
     filleted.contour = result.value().contour;
+    const FilletResult& f = result.value();
+    const Json summary{{"joint", joint},
+                       {"radius_mm", f.radius},
+                       {"center", {f.center.x(), f.center.y()}},
+                       {"tangent_point_1", {f.tangentPoint1.x(), f.tangentPoint1.y()}},
+                       {"tangent_point_2", {f.tangentPoint2.x(), f.tangentPoint2.y()}},
+                       {"segments", filleted.contour.size()},
+                       {"out", *outPath}};
+    requireFinite(summary, "");  // before the file is written: nothing is left of a failure
     const Diagnostics written = writeFileAtomically(*outPath, serializeProject(filleted));
     if (!written.empty()) throw CliError{kInvalidInput, *outPath, written.front().message};
-    const FilletResult& f = result.value();
-    out << Json{{"joint", joint},
-                {"radius_mm", f.radius},
-                {"center", {f.center.x(), f.center.y()}},
-                {"tangent_point_1", {f.tangentPoint1.x(), f.tangentPoint1.y()}},
-                {"tangent_point_2", {f.tangentPoint2.x(), f.tangentPoint2.y()}},
-                {"segments", filleted.contour.size()},
-                {"out", *outPath}}
-               .dump(2)
-        << "\n";
+    printJson(out, summary);
     return kOk;
 }
 

@@ -302,7 +302,7 @@ TEST(Fillet, SquareRangeEndsWhereTheTangentPointReachesTheNextCorner) {
     // At a right angle the tangent points are rho from the corner: the 20 mm side bounds rho.
     const auto range = filletRange(sq, 1);
     ASSERT_TRUE(range.ok()) << range.errors().front().text();
-    EXPECT_EQ(range.value().minRadius, 0.0);
+    EXPECT_EQ(range.value().minRadius, 1e-6);  // project-format.md: radii are at least 1e-6 mm
     EXPECT_TRUE(relClose(range.value().maxRadius, 20.0, 1e-9));
     EXPECT_TRUE(filletJoint(sq, 1, 19.99).ok());
 

@@ -358,7 +358,7 @@ Result<FilletRange> filletRange(const std::vector<SegmentSpec>& contour, std::si
     if (bound.maxRadius == 0.0) {
         return Diagnostics{{k.location, nothingFits(k, bound.why)}};
     }
-    return FilletRange{0.0, bound.maxRadius};
+    return FilletRange{kMinLengthMm, bound.maxRadius};
 }
 
 Result<FilletResult> filletJoint(const std::vector<SegmentSpec>& contour, std::size_t joint,
@@ -374,6 +374,12 @@ Result<FilletResult> filletJoint(const std::vector<SegmentSpec>& contour, std::s
         return errors;
     }
     const Corner& k = corner.value();
+    if (std::isfinite(rho) && rho > 0.0 && rho < kMinLengthMm) {
+        return Diagnostics{{k.location, "radius " + formatNumber(rho) +
+                                            " mm is too small: a fillet radius is at least " +
+                                            formatNumber(kMinLengthMm) +
+                                            " mm, the smallest radius a project holds"}};
+    }
     const Candidate c = std::isfinite(rho) && rho > 0.0 ? solve(k, rho) : Candidate{};
     if (c.failure == Failure::None) {
         FilletResult result = build(k, contour, joint, c, rho);

@@ -17,16 +17,15 @@ namespace cam {
 /// (math.md §5, seed 002). NaN unless accel > 0 and admissibleError > 0.
 [[nodiscard]] double minimumSwitchRadius(double speed, double accel, double admissibleError);
 
-/// @brief The radii a fillet at one joint may have: minRadius < rho < maxRadius, both bounds
-/// open.
+/// @brief The radii a fillet at one joint may have: minRadius <= rho < maxRadius.
 ///
-/// minRadius is always 0: geometry sets no lower bound (the speed does, see
-/// minimumSwitchRadius). maxRadius is where the first condition fails as rho grows from 0: a
-/// tangent point reaches the far end of its segment, no circle of that radius touches both
-/// neighbours inside the corner any more, or the follower ray would meet the fillet twice. It
-/// is at most 1e6 mm, the largest length a project holds.
+/// minRadius is always kMinLengthMm (1e-6 mm), the smallest radius a project holds: geometry
+/// sets no lower bound (the speed does, see minimumSwitchRadius). maxRadius is where the first
+/// condition fails as rho grows from 0: a tangent point reaches the far end of its segment, no
+/// circle of that radius touches both neighbours inside the corner any more, or the follower ray
+/// would meet the fillet twice. It is at most 1e6 mm, the largest length a project holds.
 struct FilletRange {
-    double minRadius = 0.0;
+    double minRadius = kMinLengthMm;
     double maxRadius = 0.0;
 };
 

@@ -17,6 +17,33 @@ KinematicState stateAt(const Contour& contour, double omega, double t) {
     return s;
 }
 
+double turnsAt(const MotionSpec& motion, double t) {
+    switch (motion.unit) {
+        case SpeedUnit::PeriodS:
+            return t / motion.value;
+        case SpeedUnit::Rpm:
+            return t * motion.value / 60.0;
+        case SpeedUnit::OmegaRadS:
+            break;
+    }
+    return t * motion.value / kTwoPi;
+}
+
+KinematicState stateAt(const Contour& contour, const MotionSpec& motion, double t) {
+    const double omega = motion.omegaRadS();
+    // The fraction of the current turn is exact (turns − floor(turns) loses nothing), so the
+    // only rounding left is that of the one division or product in turnsAt.
+    const double turns = turnsAt(motion, t);
+    const double reduced = kTwoPi * (turns - std::floor(turns));
+    KinematicState s;
+    s.t = t;
+    s.phi = omega * t;
+    s.segment = contour.segmentAt(reduced);
+    s.polar = contour.segment(s.segment).evaluate(reduced);
+    s.motion = polarMotion(s.polar, omega);
+    return s;
+}
+
 void SampledTurn::resize(std::size_t n) {
     for (auto* v : {&t, &phi, &r, &x, &y, &vR, &vPhi, &v, &aR, &aPhi, &a, &jR, &jPhi, &j}) {
         v->resize(n);

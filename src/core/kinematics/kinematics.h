@@ -51,6 +51,17 @@ struct KinematicState {
 /// @brief State at time t for angular speed omega (rad/s).
 [[nodiscard]] KinematicState stateAt(const Contour& contour, double omega, double t);
 
+/// @brief How many turns the cam has made at time t (negative when it turns clockwise),
+/// computed from the speed as the project gives it (t/period, t·rpm/60, ω·t/2π) with one
+/// rounding, not through ω·t in radians.
+[[nodiscard]] double turnsAt(const MotionSpec& motion, double t);
+
+/// @brief State at time t, the angle reduced through whole turns of the motion as given: an
+/// instant many turns out keeps its angle (t = 1e14 s at a period of 0.4 s is 2.5e14 whole
+/// turns, so φ ≡ 0), where ω·t in radians would carry a rounding of 0.25 rad into r. `phi`
+/// still reports ω·t. Requires a valid motion.
+[[nodiscard]] KinematicState stateAt(const Contour& contour, const MotionSpec& motion, double t);
+
 /// @brief One turn sampled at N instants t_k = k·T/N, as flat arrays (structure of arrays).
 struct SampledTurn {
     std::vector<double> t, phi, r, x, y;

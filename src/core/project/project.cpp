@@ -20,18 +20,18 @@ std::pair<Eigen::Vector2d, Eigen::Vector2d> endPointsOf(const SegmentSpec& s) {
     return {b.p[0], b.p[3]};
 }
 
+PolarDerivatives polarOfSegment(const SegmentSpec& s, double phiDeg) {
+    const double phi = degToRad(phiDeg);
+    if (const auto* arc = s.as<Arc>()) return arc->evaluate(phi);
+    if (const auto* line = s.as<Line>()) return line->evaluate(phi);
+    const double hint =
+        std::abs(phiDeg - s.phiStartDeg) < std::abs(phiDeg - s.phiEndDeg) ? 0.0 : 1.0;
+    return bezierOf(s).evaluate(std::cos(phi), std::sin(phi), hint);
+}
+
 Eigen::Vector2d pointOnSegment(const SegmentSpec& s, double phiDeg) {
     const double phi = degToRad(phiDeg);
-    double r = 0.0;
-    if (const auto* arc = s.as<Arc>()) {
-        r = arc->evaluate(phi).r;
-    } else if (const auto* line = s.as<Line>()) {
-        r = line->evaluate(phi).r;
-    } else {
-        const double hint =
-            std::abs(phiDeg - s.phiStartDeg) < std::abs(phiDeg - s.phiEndDeg) ? 0.0 : 1.0;
-        r = bezierOf(s).evaluate(std::cos(phi), std::sin(phi), hint).r;
-    }
+    const double r = polarOfSegment(s, phiDeg).r;
     return {r * std::cos(phi), r * std::sin(phi)};
 }
 

@@ -64,6 +64,11 @@ static_assert(
 /// @brief Start and end point of a segment's curve (lines and splines; arcs need their window).
 [[nodiscard]] std::pair<Eigen::Vector2d, Eigen::Vector2d> endPointsOf(const SegmentSpec& segment);
 
+/// @brief r(φ) and its first three derivatives of the segment's curve at phiDeg (its own
+/// formula, also just outside its window; at a spline's window ends its own end point). NaN or
+/// infinite where the ray misses or only touches the curve.
+[[nodiscard]] PolarDerivatives polarOfSegment(const SegmentSpec& segment, double phiDeg);
+
 /// @brief Where the follower ray at angle phiDeg meets the segment's curve (its own formula,
 /// also just outside its window). At a spline's window ends its own end point is meant, even
 /// if the ray touches the curve elsewhere too. NaN where the ray misses.
@@ -121,6 +126,28 @@ inline constexpr std::int64_t kMinSamplesPerTurn = 16;
 inline constexpr std::int64_t kMaxSamplesPerTurn = 10'000'000;
 inline constexpr std::int64_t kDefaultSamplesPerTurn = 3600;
 inline constexpr double kMaxLengthMm = 1e6;
+
+// The ranges in which the arithmetic is sound (project-format.md; every value is checked on load
+// and on every edit, so no computation sees a value outside them):
+/// @brief Radii, roller radius and seed step are at least this (the joint tolerance): below it
+/// a circle is a point and its curvature overflows in the jerk.
+inline constexpr double kMinLengthMm = 1e-6;
+/// @brief The speed's magnitude in the unit the project gives it: ω from 1e-6 to 1e6 rad/s,
+/// 1e-5 to 1e7 rpm, a period from 1e-5 s to 1e7 s (about 116 days). Inside these ω³·r stays far
+/// inside a double and the period 2π/|ω| never overflows or vanishes.
+struct ValueRange {
+    double lo;
+    double hi;
+};
+inline constexpr ValueRange kOmegaRadSRange{1e-6, 1e6};
+inline constexpr ValueRange kRpmRange{1e-5, 1e7};
+inline constexpr ValueRange kPeriodSRange{1e-5, 1e7};
+/// @brief At a window end the follower ray crosses the curve at least this steeply (rad).
+inline constexpr double kMinRayAngleRad = 1e-6;
+/// @brief Machine limits: accelerations in mm/s², speeds in mm/s.
+inline constexpr double kMinMachineLimit = 1e-6;
+inline constexpr double kMaxAccelMmS2 = 1e12;
+inline constexpr double kMaxSpeedMmS = 1e9;
 
 /// @brief The whole document.
 struct Project {

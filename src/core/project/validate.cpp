@@ -67,6 +67,33 @@ private:
         return x && y;
     }
 
+    /// Finite and within [lo, hi]; returns false (and reports) otherwise.
+    bool checkRange(const Where& where, double value, double lo, double hi, const char* unit) {
+        if (!std::isfinite(value)) {
+            error(where, "must be a finite number (got " + formatNumber(value) + ")");
+            return false;
+        }
+        if (!(value >= lo && value <= hi)) {
+            error(where, "must be between " + formatNumber(lo) + " and " + formatNumber(hi) + unit +
+                             " (got " + formatNumber(value) + ")");
+            return false;
+        }
+        return true;
+    }
+
+    /// A radius or step: > 0 (as project-format.md words it), and then at least kMinLengthMm.
+    bool checkPositiveLength(const Where& where, double value) {
+        if (!checkPositive(where, value, true)) return false;
+        if (value < kMinLengthMm) {
+            error(where, "must be at least " + formatNumber(kMinLengthMm) + " mm (got " +
+                             formatNumber(value) +
+                             "): a smaller circle or step is below the "
+                             "precision of the joints");
+            return false;
+        }
+        return true;
+    }
+
     bool checkPositive(const Where& where, double value, bool isLength) {
         if (isLength && !checkLength(where, value)) return false;
         if (!std::isfinite(value)) {
@@ -91,6 +118,19 @@ private:
             error(key, "must be > 0 (got " + formatNumber(m.value) + ")");
         } else if (m.value == 0.0) {
             error(key, "must not be 0 (its sign gives the turning direction)");
+        } else {
+            const ValueRange range = m.unit == SpeedUnit::OmegaRadS ? kOmegaRadSRange
+                                     : m.unit == SpeedUnit::Rpm     ? kRpmRange
+                                                                    : kPeriodSRange;
+            const double lo = range.lo;
+            const double hi = range.hi;
+            const char* unit = m.unit == SpeedUnit::OmegaRadS ? " rad/s"
+                               : m.unit == SpeedUnit::Rpm     ? " rpm"
+                                                              : " s";
+            if (!(std::abs(m.value) >= lo && std::abs(m.value) <= hi)) {
+                error(key, std::string("magnitude must be between ") + formatNumber(lo) + " and " +
+                               formatNumber(hi) + unit + " (got " + formatNumber(m.value) + ")");
+            }
         }
     }
 
@@ -105,7 +145,8 @@ private:
         for (std::size_t k = 0; k < segments.size(); ++k) {
             const bool window = checkWindow(k);
             windowsValid = windowsValid && window;
-            allShapesValid = checkShape(k, window) && allShapesValid;
+            const bool shape = checkShape(k, window) && (!window || checkFiniteEnds(k));
+            allShapesValid = shape && allShapesValid;
         }
         if (!windowsValid) return;
         const bool chainValid = checkContiguity();
@@ -133,6 +174,34 @@ private:
         return ok;
     }
 
+    /// At both ends of the window the follower ray crosses the curve at an angle of at least
+    /// kMinRayAngleRad, and r and its derivatives are finite. A window that reaches the angle
+    /// where the ray only grazes the curve (r' infinite, or so large that the jerk overflows) is
+    /// not a contour the follower can ride. Inside the window an arc meets the ray more steeply
+    /// than at one of its ends; lines and splines have their own checks.
+    bool checkFiniteEnds(std::size_t k) {
+        const SegmentSpec& s = m_project.contour[k];
+        for (double phiDeg : {s.phiStartDeg, s.phiEndDeg}) {
+            const PolarDerivatives d = polarOfSegment(s, phiDeg);
+            // The angle between the ray and the curve's tangent: tan ψ = r / |r'|.
+            const double angle = std::atan2(std::abs(d.r), std::abs(d.dr));
+            if (std::isfinite(d.r) && std::isfinite(d.dr) && std::isfinite(d.d2r) &&
+                std::isfinite(d.d3r) && angle >= kMinRayAngleRad) {
+                continue;
+            }
+            error(SegmentPlace{k, phiDeg == s.phiStartDeg ? SegmentPart::PhiStart
+                                                          : SegmentPart::PhiEnd},
+                  "at " + deg(phiDeg) +
+                      " the follower ray only grazes the curve (it must cross it at an angle of "
+                      "at least " +
+                      formatNumber(kMinRayAngleRad) +
+                      " rad, or the follower would need an unbounded speed); the window must "
+                      "end before it");
+            return false;
+        }
+        return true;
+    }
+
     /// The window of a line or spline must be the polar angles of its end points.
     bool checkWindowFollowsEnds(std::size_t k, const char* whose) {
         const SegmentSpec& s = m_project.contour[k];
@@ -154,7 +223,7 @@ private:
         if (const auto* arc = s.as<Arc>()) {
             const bool center = checkPoint(SegmentPlace{k, SegmentPart::Center}, arc->center);
             const bool radius =
-                checkPositive(SegmentPlace{k, SegmentPart::Radius}, arc->radius, true);
+                checkPositiveLength(SegmentPlace{k, SegmentPart::Radius}, arc->radius);
             if (!(center && radius)) return false;
             return !windowValid || checkArcWindow(k, *arc);
         }
@@ -309,7 +378,9 @@ private:
         if (!m_project.follower) return;
         const FollowerSpec& f = *m_project.follower;
         checkLength("follower.offset", f.offset);
-        if (f.type == FollowerType::Roller) checkPositive("follower.radius", f.radius, true);
+        if (f.type == FollowerType::Roller) {
+            checkPositiveLength("follower.radius", f.radius);
+        }
     }
 
     void checkSampling() {
@@ -324,21 +395,22 @@ private:
     void checkMachining() {
         if (!m_project.machining) return;
         const MachiningSpec& m = *m_project.machining;
-        auto checkAxes = [&](const std::string& key, const std::vector<double>& values) {
+        auto checkAxes = [&](const std::string& key, const std::vector<double>& values, double hi,
+                             const char* unit) {
             if (values.size() < 2 || values.size() > 3) {
                 error(key, "must list 2 or 3 axes (got " + std::to_string(values.size()) + ")");
             }
             for (std::size_t i = 0; i < values.size(); ++i) {
-                checkPositive(key + "[" + std::to_string(i) + "]", values[i], false);
+                checkRange(key + "[" + std::to_string(i) + "]", values[i], kMinMachineLimit, hi,
+                           unit);
             }
         };
-        checkAxes("machining.axis_accel", m.axisAccel);
-        if (!m.axisVmax.empty()) checkAxes("machining.axis_vmax", m.axisVmax);
-        checkPositive("machining.feed_max", m.feedMax, false);
-        if (checkLength("machining.tool_radius", m.toolRadius) && m.toolRadius < 0.0) {
-            error("machining.tool_radius", "must be >= 0 (got " + formatNumber(m.toolRadius) + ")");
-        }
-        checkPositive("machining.step", m.step, true);
+        checkAxes("machining.axis_accel", m.axisAccel, kMaxAccelMmS2, " mm/s²");
+        if (!m.axisVmax.empty())
+            checkAxes("machining.axis_vmax", m.axisVmax, kMaxSpeedMmS, " mm/s");
+        checkRange("machining.feed_max", m.feedMax, kMinMachineLimit, kMaxSpeedMmS, " mm/s");
+        checkRange("machining.tool_radius", m.toolRadius, 0.0, kMaxLengthMm, " mm");
+        checkPositiveLength("machining.step", m.step);
     }
 
     const Project& m_project;
