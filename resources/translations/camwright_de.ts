@@ -404,7 +404,7 @@
 <context>
     <name>cam::ContourView</name>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="+19" />
+        <location filename="../../src/app/views/contour_view.cpp" line="+21" />
         <source>x [mm]</source>
         <translation>x [mm]</translation>
     </message>
@@ -419,7 +419,7 @@
         <translation>Mausrad: zoomen · Ziehen: verschieben · Griff ziehen: Mittelpunkt verschieben oder Radius des ausgewählten Bogens ändern</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+33" />
         <source>centres</source>
         <translation>Mittelpunkte</translation>
     </message>
@@ -429,12 +429,7 @@
         <translation>Übergänge</translation>
     </message>
     <message>
-        <location line="+57" />
-        <source>segment %1</source>
-        <translation>Segment %1</translation>
-    </message>
-    <message>
-        <location line="+183" />
+        <location line="+254" />
         <location line="+8" />
         <source>Shape segment %1</source>
         <translation>Segment %1 formen</translation>
@@ -839,7 +834,7 @@
         <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
     </message>
     <message>
-        <location line="+70" />
+        <location line="+45" />
         <source>Valid · 1 segment</source>
         <translation>Gültig · 1 Segment</translation>
     </message>
@@ -864,7 +859,7 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-221" />
+        <location line="-196" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -976,12 +971,12 @@ T = %3 s</translation>
 <context>
     <name>cam::ProjectDocument</name>
     <message>
-        <location filename="../../src/app/document/project_document.cpp" line="+16" />
+        <location filename="../../src/app/document/project_document.cpp" line="+21" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+83" />
+        <location line="+89" />
         <source>… and %1 more</source>
         <translation>… und %1 weitere</translation>
     </message>
@@ -989,14 +984,44 @@ T = %3 s</translation>
 <context>
     <name>cam::ProjectFiles</name>
     <message>
-        <location filename="../../src/app/files/project_files.cpp" line="+45" />
+        <location filename="../../src/app/files/project_files.cpp" line="+62" />
+        <source>%1 cannot be opened: another file is being opened</source>
+        <translation>%1 kann nicht geöffnet werden: Es wird gerade eine andere Datei geöffnet</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>Opening</source>
+        <translation>Öffnen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Reading %1 (%2)…</source>
+        <translation>%1 wird gelesen (%2)…</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Reading %1…</source>
+        <translation>%1 wird gelesen…</translation>
+    </message>
+    <message>
+        <location line="+32" />
+        <source>Opening %1 cancelled</source>
+        <translation>Öffnen von %1 abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Opening %1 was cancelled</source>
+        <translation>Das Öffnen von %1 wurde abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>%1 cannot be opened:
 %2</source>
         <translation>%1 kann nicht geöffnet werden:
 %2</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+7" />
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
@@ -1035,13 +1060,13 @@ T = %3 s</translation>
     </message>
     <message>
         <location line="+10" />
-        <location line="+7" />
+        <location line="+9" />
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location line="-5" />
-        <location line="+20" />
+        <location line="-7" />
+        <location line="+23" />
         <source>Camwright projects (*.cam.json)</source>
         <translation>Camwright-Projekte (*.cam.json)</translation>
     </message>
@@ -1305,7 +1330,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../../src/app/main.cpp" line="+94" />
+        <location filename="../../src/app/main.cpp" line="+54" />
         <source>Design and inspect cam contours.</source>
         <translation>Kurvenkonturen entwerfen und prüfen.</translation>
     </message>

@@ -1,5 +1,6 @@
 // Save As and the file's units, driven through the real dialogs: the QFileDialog is filled and
-// accepted, the question box answered, as a user would.
+// accepted, the question box answered, as a user would. Opening a big file: the window keeps
+// answering, a progress dialog offers Cancel, and cancelling leaves the document as it was.
 
 #include <gtest/gtest.h>
 
@@ -8,14 +9,17 @@
 #include <QFileDialog>
 #include <QLineEdit>
 #include <QMessageBox>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QTemporaryDir>
 #include <QTimer>
+#include <fstream>
 
 #include "app_test_support.h"
 #include "io/project_json.h"
 #include "mainwindow.h"
 #include "models/segment_table_model.h"
+#include "test_support.h"
 
 namespace cam {
 namespace {
@@ -117,6 +121,81 @@ TEST(SaveKeepsUnits, AMetreAndRadianFileStaysSoAndOnlyTheEditedValueChanges) {
     ASSERT_NE(at, std::string::npos);
     expected.replace(at, 14, "\"radius\": 0.021");
     EXPECT_EQ(test::readFile(path.toStdString()), expected);
+}
+
+/// A circle about (5, 0) of radius 20 split into n arcs: n = 100,000 is an 11 MB file.
+std::string writeSplitCircle(const std::string& path, int n) {
+    std::string text = R"({"format": "camwright", "version": 1, "motion": {"period_s": 1},
+ "contour": [)";
+    char line[200];
+    for (int k = 0; k < n; ++k) {
+        std::snprintf(line, sizeof line,
+                      R"(%s{"type": "arc", "center": [5, 0], "radius": 20, "branch": "outer", )"
+                      R"("phi_start": %.17g, "phi_end": %.17g})",
+                      k == 0 ? "\n" : ",\n", 360.0 * k / n,
+                      k + 1 == n ? 360.0 : 360.0 * (k + 1) / n);
+        text += line;
+    }
+    text += "]}\n";
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+/// Watches the GUI thread while a file opens: counts the ticks of a 5 ms timer (they only fire
+/// while the GUI thread answers) and notes when the progress dialog is up.
+struct LoadWatcher {
+    QTimer timer;
+    int ticks = 0;
+    int ticksWithDialog = 0;
+    bool cancelWhenShown = false;
+    LoadWatcher() {
+        QObject::connect(&timer, &QTimer::timeout, [this] {
+            ++ticks;
+            for (QWidget* w : QApplication::topLevelWidgets()) {
+                auto* progress = qobject_cast<QProgressDialog*>(w);
+                if (!progress || !progress->isVisible()) continue;
+                ++ticksWithDialog;
+                // Clicked as a user clicks it.
+                auto* cancel = progress->findChild<QPushButton*>();
+                if (cancelWhenShown && cancel) cancel->click();
+            }
+        });
+        timer.start(5);
+    }
+};
+
+TEST(OpenBigFile, TheWindowKeepsAnsweringAndShowsProgress) {
+    // At 612d090 the GUI thread parsed and validated the file itself: the window froze for as
+    // long as that took (24 s for 400,000 empty objects).
+    const test::TempDir dir;
+    const std::string path = writeSplitCircle(dir.file("big.cam.json"), 100'000);
+    MainWindow window;
+    window.show();
+    LoadWatcher watcher;
+    const QString problem = window.loadFile(QString::fromStdString(path));
+    EXPECT_TRUE(problem.isEmpty()) << problem.toStdString();
+    EXPECT_GT(watcher.ticks, 10);  // the event loop ran while the file was read
+    EXPECT_GT(watcher.ticksWithDialog, 0);
+    EXPECT_EQ(window.document()->project().contour.size(), 100'000u);
+    EXPECT_TRUE(window.document()->diagnostics().empty());
+    EXPECT_FALSE(window.document()->isModified());
+}
+
+TEST(OpenBigFile, CancelKeepsTheOpenProject) {
+    const test::TempDir dir;
+    const std::string path = writeSplitCircle(dir.file("big.cam.json"), 100'000);
+    MainWindow window;
+    window.show();
+    ASSERT_TRUE(
+        window.loadFile(QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json")))
+            .isEmpty());
+    const Project before = window.document()->project();
+    LoadWatcher watcher;
+    watcher.cancelWhenShown = true;
+    const QString problem = window.loadFile(QString::fromStdString(path));
+    EXPECT_TRUE(problem.contains("cancelled")) << problem.toStdString();
+    EXPECT_TRUE(window.document()->project() == before);
+    EXPECT_TRUE(window.document()->filePath().endsWith("six-lobe-arc-cam.cam.json"));
 }
 
 }  // namespace

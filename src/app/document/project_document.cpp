@@ -22,16 +22,22 @@ QString ProjectDocument::displayName() const {
 }
 
 void ProjectDocument::reset(Project project, QString filePath) {
+    Diagnostics diagnostics = validateProject(project);
+    reset(std::move(project), std::move(filePath), std::move(diagnostics));
+}
+
+void ProjectDocument::reset(Project project, QString filePath, Diagnostics diagnostics) {
     m_undoStack.clear();
     emit contourAboutToBeReset();
     m_project = std::move(project);
+    m_diagnostics = std::move(diagnostics);
     m_filePath = std::move(filePath);
     m_undoStack.setClean();
     emit filePathChanged(m_filePath);
     emit contourReset();
     emit motionChanged();
     emit machiningChanged();
-    afterChange();
+    emit changed();
 }
 
 void ProjectDocument::markSaved(const QString& filePath) {

@@ -33,6 +33,9 @@ public:
 
     /// @brief Replaces the whole project (New, Open): clears the undo history.
     void reset(Project project, QString filePath);
+    /// @brief The same, with the project's diagnostics already computed (validateProject, off
+    /// the GUI thread for a big file).
+    void reset(Project project, QString filePath, Diagnostics diagnostics);
     /// @brief After a successful save: remembers the path and marks the state clean.
     void markSaved(const QString& filePath);
 

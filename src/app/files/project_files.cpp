@@ -1,21 +1,32 @@
 #include "files/project_files.h"
 
 #include <QDir>
+#include <QEventLoop>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QLocale>
 #include <QMenu>
 #include <QMessageBox>
+#include <QProgressDialog>
 #include <QSettings>
+#include <QThread>
+#include <QTimer>
+#include <atomic>
+#include <memory>
+#include <optional>
 
 #include "document/project_document.h"
 #include "io/atomic_file.h"
 #include "io/project_json.h"
+#include "project/validate.h"
 
 namespace cam {
 namespace {
 
 constexpr int kMaxRecentFiles = 8;
+/// A load that takes longer than this shows its progress dialog.
+constexpr int kProgressAfterMs = 300;
 constexpr const char* kSuffix = ".cam.json";
 /// The bundled example projects, embedded in the binary (src/app/CMakeLists.txt).
 constexpr const char* kExamplesFolder = ":/examples";
@@ -39,22 +50,94 @@ ProjectFiles::ProjectFiles(ProjectDocument* document, QWidget* window, QMenu* re
     rebuildExamplesMenu();
 }
 
+ProjectFiles::~ProjectFiles() {
+    // A load the user cancelled may still be reading: it writes only into its own shared
+    // state, but the thread object must outlive it.
+    for (const QPointer<QThread>& loader : m_abandonedLoaders) {
+        if (loader) loader->wait();
+    }
+}
+
 QString ProjectFiles::load(const QString& path) {
-    auto loaded = loadProjectStructure(QFile::encodeName(path).toStdString());
+    if (m_loading) return tr("%1 cannot be opened: another file is being opened").arg(path);
+    const QString shown = QDir::toNativeSeparators(path);
+    // Reading, parsing and validating happen in a worker thread: the window keeps drawing and
+    // a big file shows its progress with a Cancel button (application modal, so nothing else
+    // can change the document meanwhile).
+    struct Outcome {
+        std::atomic<bool> done{false};
+        std::optional<Result<Project>> project;
+        Diagnostics diagnostics;
+    };
+    auto outcome = std::make_shared<Outcome>();
+    QThread* worker = QThread::create([file = QFile::encodeName(path).toStdString(), outcome] {
+        auto loaded = loadProjectStructure(file);
+        if (loaded.ok()) outcome->diagnostics = validateProject(loaded.value());
+        outcome->project.emplace(std::move(loaded));
+        outcome->done = true;
+    });
+    worker->setObjectName("projectLoader");
+    m_loading = true;
+    QEventLoop loop;
+    connect(worker, &QThread::finished, &loop, &QEventLoop::quit);
+    QProgressDialog progress(m_window);
+    progress.setObjectName("openProgress");
+    progress.setWindowTitle(tr("Opening"));
+    const qint64 bytes = QFileInfo(path).size();
+    progress.setLabelText(
+        bytes > 0 ? tr("Reading %1 (%2)…")
+                        .arg(QFileInfo(path).fileName(), QLocale().formattedDataSize(bytes))
+                  : tr("Reading %1…").arg(QFileInfo(path).fileName()));
+    progress.setRange(0, 0);  // busy: the parser reports no fraction
+    progress.setWindowModality(Qt::ApplicationModal);
+    progress.setMinimumDuration(kProgressAfterMs);
+    progress.setValue(0);  // starts the clock of minimumDuration
+    bool cancelled = false;
+    connect(&progress, &QProgressDialog::canceled, &loop, [&] {
+        cancelled = true;
+        loop.quit();
+    });
+    QTimer tick;
+    tick.setInterval(20);
+    connect(&tick, &QTimer::timeout, &loop, &QEventLoop::quit);
+    tick.start();
+    worker->start();
+    // Until the dialog shows, the user's input waits (it must not reach the window while its
+    // document is about to be replaced); once it shows, only the dialog takes input.
+    while (!outcome->done && !cancelled && !progress.wasCanceled()) {
+        loop.exec(progress.isVisible() ? QEventLoop::AllEvents
+                                       : QEventLoop::ExcludeUserInputEvents);
+    }
+    m_loading = false;
+    cancelled = cancelled || progress.wasCanceled();
+    m_loadCancelled = cancelled;
+    progress.reset();
+    if (cancelled) {
+        if (worker->isFinished()) {
+            delete worker;
+        } else {
+            connect(worker, &QThread::finished, worker, &QObject::deleteLater);
+            m_abandonedLoaders.push_back(worker);
+        }
+        emit message(tr("Opening %1 cancelled").arg(shown), 4000);
+        return tr("Opening %1 was cancelled").arg(shown);
+    }
+    worker->wait();
+    delete worker;
+    Result<Project>& loaded = *outcome->project;
     if (!loaded.ok()) {
-        return tr("%1 cannot be opened:\n%2")
-            .arg(QDir::toNativeSeparators(path), diagnosticsText(loaded.errors()));
+        return tr("%1 cannot be opened:\n%2").arg(shown, diagnosticsText(loaded.errors()));
     }
     const QString absolute = QFileInfo(path).absoluteFilePath();
-    m_document->reset(std::move(loaded).value(), absolute);
+    m_document->reset(std::move(loaded).value(), absolute, std::move(outcome->diagnostics));
     addRecentFile(absolute);
     const int problems = errorCount(m_document->diagnostics());
     emit message(problems == 0
-                     ? tr("Opened %1").arg(QDir::toNativeSeparators(path))
+                     ? tr("Opened %1").arg(shown)
                      : tr("Opened %1 with %n problem(s): listed in the status bar, marked in the "
                           "table",
                           "", problems)
-                           .arg(QDir::toNativeSeparators(path)),
+                           .arg(shown),
                  problems == 0 ? 4000 : 10000);
     return {};
 }
@@ -96,7 +179,10 @@ void ProjectFiles::open(const QString& givenPath) {
     }
     QSettings().setValue("files/lastDir", QFileInfo(path).absolutePath());
     const QString problem = load(path);
-    if (!problem.isEmpty()) QMessageBox::warning(m_window, tr("Open Project"), problem);
+    // A cancelled open needs no box: the user asked for it, the status bar says it.
+    if (!problem.isEmpty() && !m_loadCancelled) {
+        QMessageBox::warning(m_window, tr("Open Project"), problem);
+    }
 }
 
 bool ProjectFiles::save() {

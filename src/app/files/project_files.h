@@ -4,7 +4,10 @@
 /// prompt, recent files and the bundled examples.
 
 #include <QObject>
+#include <QPointer>
 #include <QString>
+#include <QThread>
+#include <vector>
 
 class QMenu;
 class QWidget;
@@ -24,9 +27,13 @@ public:
     /// @brief `window` parents the dialogs; the menus are kept up to date (recent, examples).
     ProjectFiles(ProjectDocument* document, QWidget* window, QMenu* recentMenu,
                  QMenu* examplesMenu);
+    ~ProjectFiles() override;
 
     /// @brief Opens without asking anything; on failure returns the located problems and leaves
-    /// the open document untouched.
+    /// the open document untouched. The file is read, parsed and validated in a worker thread
+    /// while the window keeps answering; after 300 ms a progress dialog offers Cancel (then the
+    /// document stays as it was and the message says so). Files over 64 MB are refused with
+    /// their size (io/project_json.h).
     QString load(const QString& path);
     /// @brief Saves to `path` atomically (see io/atomic_file.h); returns the problem, or empty.
     QString save(const QString& path);
@@ -53,6 +60,9 @@ private:
     void rebuildExamplesMenu();
 
     ProjectDocument* m_document;
+    bool m_loading = false;
+    bool m_loadCancelled = false;  ///< the last load() ended by the user's Cancel
+    std::vector<QPointer<QThread>> m_abandonedLoaders;
     QWidget* m_window;
     QMenu* m_recentMenu;
     QMenu* m_examplesMenu;
