@@ -737,7 +737,12 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+141" />
+        <location filename="../../src/app/mainwindow.cpp" line="+77" />
+        <source>computing…</source>
+        <translation>wird berechnet…</translation>
+    </message>
+    <message>
+        <location line="+73" />
         <source>Machining limits and times (Ctrl+M)</source>
         <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
     </message>
@@ -814,7 +819,7 @@
         <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+65" />
+        <location line="+67" />
         <source>not computed: %1</source>
         <translation>nicht berechnet: %1</translation>
     </message>
@@ -859,7 +864,7 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-196" />
+        <location line="-198" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -994,12 +999,12 @@ T = %3 s</translation>
         <translation>Öffnen</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>Reading %1 (%2)…</source>
         <translation>%1 wird gelesen (%2)…</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+2" />
         <source>Reading %1…</source>
         <translation>%1 wird gelesen…</translation>
     </message>

@@ -67,6 +67,15 @@ MainWindow::MainWindow(QWidget* parent)
     // Permanent widgets: transient messages ("Saved …") appear beside them, never over them.
     statusBar()->addPermanentWidget(m_validationLabel);
     statusBar()->addPermanentWidget(m_computeLabel);
+    m_busyTimer = new QTimer(this);
+    m_busyTimer->setSingleShot(true);
+    m_busyTimer->setInterval(400);
+    connect(m_busyTimer, &QTimer::timeout, this, [this] {
+        const ComputeResultPtr& latest = m_engine->latestResult();
+        if (latest && latest->generation == m_engine->latestGeneration()) return;
+        m_computeLabel->setStyleSheet({});
+        m_computeLabel->setText(tr("computing…"));
+    });
 
     connect(m_document, &ProjectDocument::changed, this, [this] {
         requestCompute();
@@ -293,9 +302,11 @@ void MainWindow::requestCompute() {
     m_engine->request(m_document->project(),
                       m_ui->actionAxisTime->isChecked() ? PlotAxis::Time : PlotAxis::Angle, timing,
                       m_machining->plotMethod());
+    m_busyTimer->start();
 }
 
 void MainWindow::showResult(const ComputeResultPtr& result) {
+    m_busyTimer->stop();
     // The views keep what they drew from the last computable result and mark it out of date.
     m_contour->setResult(result);
     m_plots->setResult(result);

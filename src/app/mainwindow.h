@@ -3,6 +3,7 @@
 /// @brief The main window: actions, docks and wiring. Views draw; the engine computes.
 
 #include <QMainWindow>
+#include <QTimer>
 #include <memory>
 
 #include "engine/compute_result.h"
@@ -106,6 +107,9 @@ private:
     PathStudyPanel* m_pathStudy;
     QLabel* m_validationLabel;
     QLabel* m_computeLabel;
+    /// Fires when a request has waited kBusyAfterMs without its result: the label then says
+    /// "computing…" instead of describing a result of the project as it was.
+    QTimer* m_busyTimer;
     double m_cursorT = 0.0;
     ComputeResultPtr m_shown;  ///< the last result that could be computed: what the views draw
 };

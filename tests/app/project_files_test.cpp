@@ -6,7 +6,9 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QElapsedTimer>
 #include <QFileDialog>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QProgressDialog>
@@ -179,6 +181,14 @@ TEST(OpenBigFile, TheWindowKeepsAnsweringAndShowsProgress) {
     EXPECT_EQ(window.document()->project().contour.size(), 100'000u);
     EXPECT_TRUE(window.document()->diagnostics().empty());
     EXPECT_FALSE(window.document()->isModified());
+    // Its kinematics take many seconds (100,000 segments' extremes): meanwhile the status bar
+    // says so, instead of describing the result of the project that was open before.
+    QElapsedTimer waited;
+    waited.start();
+    while (waited.elapsed() < 700) QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    const auto* label = window.findChild<QLabel*>("computeLabel");
+    ASSERT_NE(label, nullptr);
+    EXPECT_EQ(label->text(), "computing…");
 }
 
 TEST(OpenBigFile, CancelKeepsTheOpenProject) {
