@@ -200,6 +200,8 @@ int runSample(const Arguments& args, std::ostream& out) {
         }
         chunk += '\n';
         if (chunk.size() > (1u << 20)) flush();
+        // A failed stdout (full disk, closed) is reported by main; a failed --out file below.
+        if (!out || (file && !file->ok())) break;
     }
     flush();
     if (file) {

@@ -1,11 +1,15 @@
 // camwright-cli: everything the desktop application computes, without a display (cli.md).
 
+#include <unistd.h>
+
+#include <csignal>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/output.h"
 
 namespace {
 
@@ -27,21 +31,18 @@ commands:
                                         by a tangent arc (radius given or V²/(vae·A))
 
 units: mm, s, degrees; v in mm/s, a in mm/s², j in mm/s³.
-exit codes: 0 ok, 1 usage error, 2 invalid input, 3 not computable.
+exit codes: 0 ok, 1 usage error, 2 invalid input (or results that cannot be written),
+            3 not computable.
 )";
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(const std::vector<std::string>& args, std::ostream& out) {
     using namespace cam::cli;
-    std::ios::sync_with_stdio(false);
-    const std::vector<std::string> args(argv + 1, argv + argc);
     if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
-        std::cout << kUsageText;
+        out << kUsageText;
         return kOk;
     }
     if (!args.empty() && args[0] == "--version") {
-        std::cout << "camwright-cli " << CAMWRIGHT_VERSION << "\n";
+        out << "camwright-cli " << CAMWRIGHT_VERSION << "\n";
         return kOk;
     }
     const std::vector<CommandSyntax> commands{
@@ -58,20 +59,41 @@ int main(int argc, char** argv) {
     };
     try {
         const Arguments parsed = parseArguments(args, commands);
-        if (parsed.command == "validate") return runValidate(parsed, std::cout, std::cerr);
-        if (parsed.command == "state") return runState(parsed, std::cout);
-        if (parsed.command == "sample") return runSample(parsed, std::cout);
-        if (parsed.command == "analyze") return runAnalyze(parsed, std::cout);
-        if (parsed.command == "timing") return runTiming(parsed, std::cout);
-        if (parsed.command == "fillet") return runFillet(parsed, std::cout);
+        if (parsed.command == "validate") return runValidate(parsed, out, std::cerr);
+        if (parsed.command == "state") return runState(parsed, out);
+        if (parsed.command == "sample") return runSample(parsed, out);
+        if (parsed.command == "analyze") return runAnalyze(parsed, out);
+        if (parsed.command == "timing") return runTiming(parsed, out);
+        if (parsed.command == "fillet") return runFillet(parsed, out);
         return kUsage;
     } catch (const CliError& e) {
-        std::cout.flush();
+        out.flush();
         std::cerr << "camwright-cli: " << e.location << ": " << e.message << "\n";
         if (e.code == kUsage) std::cerr << "(run 'camwright-cli --help' for usage)\n";
         return e.code;
     } catch (const std::exception& e) {
+        out.flush();
         std::cerr << "camwright-cli: internal error: " << e.what() << "\n";
         return kNotComputable;
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace cam::cli;
+    occupyClosedStandardStreams();
+    // Over a file size limit (ulimit -f) write() then fails with EFBIG and is reported with the
+    // file's name, instead of the signal killing the program with a temporary file left behind.
+    std::signal(SIGXFSZ, SIG_IGN);
+    std::ios::sync_with_stdio(false);
+    CheckedOutput results(STDOUT_FILENO);
+    std::ostream out(&results);
+    const int code = run(std::vector<std::string>(argv + 1, argv + argc), out);
+    // Results that did not reach stdout are a failure, whatever the command said.
+    if (!results.finish()) {
+        std::cerr << "camwright-cli: stdout: " << results.failureText() << "\n";
+        return code == kOk ? kInvalidInput : code;
+    }
+    return code;
 }

@@ -1,0 +1,204 @@
+// camwright-cli against hostile input and faults (issue 9): no input crashes or hangs it, no
+// failed write is reported as success, every failure names its place, and an interrupted --out
+// leaves nothing behind. Big inputs are generated here, not kept in the repository.
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "test_support.h"
+
+namespace cam {
+namespace {
+
+namespace fs = std::filesystem;
+using test::readFile;
+using test::RunResult;
+using test::TempDir;
+
+const std::string kExample = test::examplePath("six-lobe-arc-cam.cam.json");
+
+std::size_t lineCount(const std::string& text) {
+    return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+/// A square of four lines: fillet needs a real corner.
+std::string writeSquare(const TempDir& dir) {
+    const std::string path = dir.file("square.cam.json");
+    writeText(path, R"({"format": "camwright", "version": 1, "motion": {"period_s": 1},
+      "contour": [{"type": "line", "from": [10, -10], "to": [10, 10]},
+                  {"type": "line", "from": [10, 10], "to": [-10, 10]},
+                  {"type": "line", "from": [-10, 10], "to": [-10, -10]},
+                  {"type": "line", "from": [-10, -10], "to": [10, -10]}]})");
+    return path;
+}
+
+/// The hidden siblings `.<name>.…` of a file: where --out streams to.
+std::vector<std::string> temporariesOf(const fs::path& folder, const std::string& name) {
+    std::vector<std::string> out;
+    for (const std::string& e : test::folderEntries(folder)) {
+        if (e.rfind("." + name + ".", 0) == 0) out.push_back(e);
+    }
+    return out;
+}
+
+// --- running the CLI with a broken stdout, or in the background --------------------------------
+
+enum class Stdout { DevFull, Closed, AtTheSizeLimit };
+
+/// Runs camwright-cli with stdout on /dev/full, closed, or appending to a file that has reached
+/// the process's file size limit (RLIMIT_FSIZE: a full disk for this process; SIGXFSZ left at
+/// its default, which kills). stderr goes to a new file, below the limit, and is captured.
+RunResult runWithBrokenStdout(const std::vector<std::string>& args, Stdout mode,
+                              const std::string& scratch) {
+    constexpr rlim_t kLimit = 64 * 1024;
+    const std::string errPath = scratch + ".err";
+    if (mode == Stdout::AtTheSizeLimit) writeText(scratch, std::string(kLimit, '#'));
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        const int e = ::open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        ::dup2(e, 2);
+        if (mode == Stdout::Closed) {
+            ::close(1);
+        } else {
+            const int o = mode == Stdout::DevFull ? ::open("/dev/full", O_WRONLY)
+                                                  : ::open(scratch.c_str(), O_WRONLY | O_APPEND);
+            ::dup2(o, 1);
+            if (mode == Stdout::AtTheSizeLimit) {
+                const rlimit limit{kLimit, kLimit};
+                ::setrlimit(RLIMIT_FSIZE, &limit);
+            }
+        }
+        ::alarm(60);
+        std::vector<char*> argv{const_cast<char*>(CAMWRIGHT_CLI)};
+        for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        ::execv(CAMWRIGHT_CLI, argv.data());
+        ::_exit(127);
+    }
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    RunResult r;
+    if (WIFEXITED(status)) r.exitCode = WEXITSTATUS(status);
+    if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+    r.err = readFile(errPath);
+    fs::remove(errPath);
+    return r;
+}
+
+// --- 4. results that cannot be written are a failure -------------------------------------------
+
+/// Every command that prints results, with arguments that succeed.
+std::vector<std::vector<std::string>> everyPrintingCommand(const TempDir& dir) {
+    const std::string square = writeSquare(dir);
+    return {{"validate", kExample},
+            {"state", kExample, "--t", "0.05"},
+            {"sample", kExample, "--samples", "100000"},
+            {"analyze", kExample},
+            {"timing", kExample, "--method", "exact-stop", "--accel", "500,500,200"},
+            {"fillet", square, "--joint", "1", "--radius", "3", "--out", dir.file("f.cam.json")},
+            {"--help"},
+            {"--version"}};
+}
+
+TEST(CliOutputFailures, AFullStdoutIsExitTwoWithAMessageForEveryCommand) {
+    const TempDir dir;
+    for (const auto& args : everyPrintingCommand(dir)) {
+        SCOPED_TRACE(args[0]);
+        ASSERT_EQ(test::runCli(args).exitCode, 0);  // the same command succeeds normally
+        const RunResult r = runWithBrokenStdout(args, Stdout::DevFull, dir.file("scratch"));
+        EXPECT_EQ(r.signal, 0);
+        EXPECT_EQ(r.exitCode, 2);
+        EXPECT_EQ(r.err,
+                  "camwright-cli: stdout: cannot write the results: No space left on device\n");
+    }
+}
+
+TEST(CliOutputFailures, AClosedStdoutIsExitTwoWithAMessageForEveryCommand) {
+    const TempDir dir;
+    for (const auto& args : everyPrintingCommand(dir)) {
+        SCOPED_TRACE(args[0]);
+        const RunResult r = runWithBrokenStdout(args, Stdout::Closed, dir.file("scratch"));
+        EXPECT_EQ(r.signal, 0);
+        EXPECT_EQ(r.exitCode, 2);
+        EXPECT_EQ(r.err,
+                  "camwright-cli: stdout: is closed or not open for writing: the results are "
+                  "lost\n");
+    }
+    // A closed stdout must not be taken over by a file opened later: sample --out writes
+    // nothing to stdout and succeeds, and the file holds only the CSV.
+    const std::string out = dir.file("turn.csv");
+    const RunResult r = runWithBrokenStdout({"sample", kExample, "--samples", "8", "--out", out},
+                                            Stdout::Closed, dir.file("scratch"));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(lineCount(readFile(out)), 9u);
+}
+
+TEST(CliOutputFailures, AStdoutFileAtTheSizeLimitIsExitTwoWithAMessageForEveryCommand) {
+    // The full disk of the issue: `sample > out.csv` under `ulimit -f` wrote part of the CSV and
+    // was killed by SIGXFSZ (at 612d090), or on a full disk wrote 3,930 of 100,001 lines and
+    // exited 0.
+    const TempDir dir;
+    for (const auto& args : everyPrintingCommand(dir)) {
+        SCOPED_TRACE(args[0]);
+        const std::string scratch = dir.file("out.txt");
+        const RunResult r = runWithBrokenStdout(args, Stdout::AtTheSizeLimit, scratch);
+        EXPECT_EQ(r.signal, 0);
+        EXPECT_EQ(r.exitCode, 2);
+        EXPECT_EQ(r.err, "camwright-cli: stdout: cannot write the results: File too large\n");
+        EXPECT_EQ(readFile(scratch), std::string(64 * 1024, '#'));  // not a byte more
+    }
+}
+
+// In a forked child: `sample --out` under a 64 KiB file size limit, SIGXFSZ ignored or not.
+[[noreturn]] void execSampleUnderASizeLimit(const std::string& out, const std::string& errPath,
+                                            bool ignoreSigxfsz) {
+    const int e = ::open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    ::dup2(e, 2);
+    if (ignoreSigxfsz) ::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{64 * 1024, 64 * 1024};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    ::execl(CAMWRIGHT_CLI, CAMWRIGHT_CLI, "sample", kExample.c_str(), "--samples", "100000",
+            "--out", out.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+}
+
+TEST(CliOutputFailures, AnOutFileOverTheSizeLimitIsExitTwoTheOldFileWholeAndNoTemporary) {
+    for (const bool ignored : {true, false}) {
+        SCOPED_TRACE(ignored ? "SIGXFSZ ignored" : "SIGXFSZ at its default");
+        const TempDir dir;
+        const std::string out = dir.file("turn.csv");
+        const std::string old(100 * 1024, 'o');  // above the limit: only new bytes count
+        writeText(out, old);
+        const pid_t pid = ::fork();
+        if (pid == 0) execSampleUnderASizeLimit(out, dir.file("err"), ignored);
+        int status = 0;
+        ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+        ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+        EXPECT_EQ(WEXITSTATUS(status), 2);
+        EXPECT_EQ(readFile(dir.file("err")),
+                  "camwright-cli: " + out + ": cannot write " + out + ": File too large\n");
+        EXPECT_EQ(readFile(out), old);
+        EXPECT_TRUE(temporariesOf(dir.path(), "turn.csv").empty());
+    }
+}
+
+}  // namespace
+}  // namespace cam
