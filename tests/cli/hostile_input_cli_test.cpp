@@ -200,5 +200,83 @@ TEST(CliOutputFailures, AnOutFileOverTheSizeLimitIsExitTwoTheOldFileWholeAndNoTe
     }
 }
 
+// --- 5. --out never destroys what it should not; an interrupted --out leaves nothing ----------
+
+TEST(CliOut, AnythingButARegularFileOrANewPathIsRefusedAndLeftAlone) {
+    const TempDir dir;
+    // /dev/full and /dev/stdout are reached through links of our own: a writer that got this
+    // wrong (612d090 did, as root) renames over the link, not over the machine's /dev entries.
+    std::error_code ec;
+    const fs::path devStdout = fs::read_symlink("/dev/stdout", ec);
+    ASSERT_FALSE(ec) << "/dev/stdout is not a symbolic link here: " << ec.message();
+    fs::create_symlink(devStdout, dir.path() / "stdout");
+    fs::create_symlink("/dev/full", dir.path() / "full");
+    fs::create_directory(dir.path() / "folder");
+    ASSERT_EQ(::mkfifo(dir.file("pipe").c_str(), 0600), 0);
+    const std::string square = writeSquare(dir);
+    const auto before = test::folderEntries(dir.path());
+    struct Case {
+        std::string out;
+        std::string says;
+    };
+    const std::vector<Case> cases{
+        // The test runner gives the CLI a regular file as stdout: following /dev/stdout to it and
+        // renaming over it would replace the file under the shell's redirection.
+        {dir.file("stdout"),
+         "/proc/self/fd/1 is a link to an open file descriptor, not a file: not replaced"},
+        {"/dev/fd/1", "is a link to an open file descriptor, not a file: not replaced"},
+        {dir.file("full"), "/dev/full is a character device, not a regular file: not replaced"},
+        {dir.file("folder"), "is a folder, not a regular file: not replaced"},
+        {dir.file("pipe"), "is a FIFO, not a regular file: not replaced"},
+    };
+    for (const Case& c : cases) {
+        for (const auto& args :
+             {std::vector<std::string>{"sample", kExample, "--samples", "8", "--out", c.out},
+              std::vector<std::string>{"fillet", square, "--joint", "1", "--radius", "3", "--out",
+                                       c.out}}) {
+            SCOPED_TRACE(args[0] + " --out " + c.out);
+            const RunResult r = test::runCli(args);
+            EXPECT_EQ(r.signal, 0);
+            EXPECT_EQ(r.exitCode, 2);
+            EXPECT_EQ(r.out, "");
+            EXPECT_EQ(r.err, "camwright-cli: " + c.out + ": " + c.says + "\n");
+        }
+    }
+    EXPECT_EQ(test::folderEntries(dir.path()), before);  // no temporary file either
+    EXPECT_EQ(fs::read_symlink(dir.path() / "stdout"), devStdout);
+    EXPECT_EQ(fs::read_symlink(dir.path() / "full"), "/dev/full");
+    EXPECT_TRUE(fs::is_empty(dir.path() / "folder"));
+    EXPECT_TRUE(fs::is_fifo(dir.path() / "pipe"));
+}
+
+TEST(CliOut, ThroughASymlinkTheTargetKeepsItsModeAndOwner) {
+    if (::geteuid() != 0) GTEST_SKIP() << "only root may give a file to another owner";
+    const TempDir dir;
+    fs::create_directory(dir.path() / "data");
+    const std::string target = dir.file("data/turn.csv");
+    test::writeFileWithMode(target, "old", 0640);
+    constexpr uid_t kOwner = 4242;  // someone else's file, which root updates for them
+    constexpr gid_t kGroup = 4343;
+    ASSERT_EQ(::chown(target.c_str(), kOwner, kGroup), 0);
+    fs::create_symlink("data/turn.csv", dir.path() / "latest.csv");
+    for (const auto& args :
+         {std::vector<std::string>{"sample", kExample, "--samples", "8", "--out",
+                                   dir.file("latest.csv")},
+          std::vector<std::string>{"fillet", writeSquare(dir), "--joint", "1", "--radius", "3",
+                                   "--out", dir.file("latest.csv")}}) {
+        SCOPED_TRACE(args[0]);
+        const RunResult r = test::runCli(args);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_TRUE(fs::is_symlink(dir.path() / "latest.csv"));
+        EXPECT_NE(readFile(target), "old");
+        struct stat st {};
+        ASSERT_EQ(::stat(target.c_str(), &st), 0);
+        EXPECT_EQ(st.st_mode & 07777, 0640u);
+        EXPECT_EQ(st.st_uid, kOwner);
+        EXPECT_EQ(st.st_gid, kGroup);
+    }
+    EXPECT_EQ(test::folderEntries(dir.path() / "data"), std::vector<std::string>{"turn.csv"});
+}
+
 }  // namespace
 }  // namespace cam

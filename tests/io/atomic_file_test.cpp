@@ -1,9 +1,10 @@
 // The one file writer (io/atomic_file.h), guarantee by guarantee: a temporary sibling renamed
 // over the target; symlinks followed and kept; mode and owner kept; non-files refused; never a
-// partial file, even when a write fails midway.
+// partial file, even when a write fails midway; links to open descriptors refused.
 
 #include "io/atomic_file.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -12,6 +13,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -332,6 +334,46 @@ TEST(AtomicFile, AWriteThatFailsMidwayLeavesTheOldFileWholeAndNoTemporary) {
         EXPECT_EQ(fileMode(target), 0600);
         EXPECT_EQ(folderEntries(dir.path()), std::vector<std::string>{"p.csv"});
     }
+}
+
+// --- 6. a link to an open file descriptor is not a file to replace -------------------------
+
+TEST(AtomicFile, DevStdoutAndProcFdLinksAreRefused) {
+    TempDir dir;
+    // Our own stdout pointing at a regular file is the dangerous case: following the link would
+    // rename over that file behind the back of whoever has it open.
+    const std::string captured = dir.file("captured.txt");
+    std::ofstream(captured) << "old";
+    const int fd = ::open(captured.c_str(), O_WRONLY);
+    ASSERT_GE(fd, 0);
+    // /dev/stdout itself is used through a copy of its link: a writer that got this wrong
+    // (612d090 did, as root) would rename over the machine's /dev/stdout, not a test file.
+    std::error_code ec;
+    const fs::path devStdout = fs::read_symlink("/dev/stdout", ec);
+    ASSERT_FALSE(ec) << "/dev/stdout is not a symbolic link here: " << ec.message();
+    ASSERT_EQ(devStdout, "/proc/self/fd/1");
+    const std::string stdoutLink = dir.file("stdout");
+    fs::create_symlink(devStdout, stdoutLink);
+    struct Case {
+        std::string path;
+        std::string says;
+    };
+    const std::string fdText = std::to_string(fd);
+    for (const Case& c :
+         {Case{stdoutLink, "/proc/self/fd/1 is a link"},
+          Case{"/proc/self/fd/" + fdText, "is a link"}, Case{"/dev/fd/" + fdText, "is a link"}}) {
+        SCOPED_TRACE(c.path);
+        const Diagnostics failed = writeFileAtomically(c.path, "new");
+        ASSERT_EQ(failed.size(), 1u);
+        EXPECT_EQ(failed.front().location, c.path);
+        EXPECT_TRUE(contains(failed.front().message,
+                             c.says + " to an open file descriptor, not a file: not replaced"))
+            << failed.front().message;
+    }
+    ::close(fd);
+    EXPECT_EQ(readFile(captured), "old");
+    EXPECT_TRUE(fs::is_symlink(stdoutLink));
+    EXPECT_EQ(folderEntries(dir.path()), (std::vector<std::string>{"captured.txt", "stdout"}));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/vfs.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -14,6 +15,9 @@ namespace {
 
 // Linux's own limit for one path lookup (MAXSYMLINKS).
 constexpr int kMaxSymlinkHops = 40;
+
+// procfs: its fd links name open files, pipes and terminals, not paths to replace.
+constexpr long kProcSuperMagic = 0x9fa0;
 
 std::string folderOf(const std::string& path) {
     const auto slash = path.find_last_of('/');
@@ -85,6 +89,14 @@ void AtomicFileWriter::resolveTarget() {
             return;
         }
         if (S_ISLNK(st.st_mode)) {
+            struct statfs fs {};
+            if (::statfs(folderOf(current).c_str(), &fs) == 0 &&
+                static_cast<long>(fs.f_type) == kProcSuperMagic) {
+                m_errors.push_back(
+                    {m_path, (current == m_path ? "" : current + " ") +
+                                 "is a link to an open file descriptor, not a file: not replaced"});
+                return;
+            }
             if (hops == kMaxSymlinkHops) {
                 fail("cannot follow its symbolic links", ELOOP);
                 return;

@@ -18,8 +18,11 @@ namespace cam {
 ///   file, so the rename stays inside one folder and the symlinks stay symlinks. A dangling
 ///   symlink is followed too: its target is created, as `echo > link` would.
 /// - **What is refused**: a target that exists and is not a regular file (a folder, a FIFO, a
-///   device, a socket) — left untouched, nothing is opened; also a symlink loop, and a file
-///   this process may not write (as `>` in a shell would refuse it; root may write any).
+///   device, a socket) — left untouched, nothing is opened; a link to an open file descriptor
+///   (`/dev/stdout`, `/proc/self/fd/N`: what it names is a pipe or a terminal as often as a
+///   file, and renaming over that file would cut it off from whoever has it open); a symlink
+///   loop; a file this process may not write (as `>` in a shell would refuse it; root may write
+///   any).
 /// - **Order**: write the temporary file, fsync it, rename it over the target, fsync the
 ///   folder. Until the rename the target is untouched; any failure before it removes the
 ///   temporary file. A failure of the folder's fsync (after the rename) is reported too: the
