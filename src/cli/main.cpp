@@ -10,6 +10,7 @@
 #include "cli/arguments.h"
 #include "cli/commands.h"
 #include "cli/output.h"
+#include "io/atomic_file.h"
 
 namespace {
 
@@ -86,6 +87,8 @@ int main(int argc, char** argv) {
     // Over a file size limit (ulimit -f) write() then fails with EFBIG and is reported with the
     // file's name, instead of the signal killing the program with a temporary file left behind.
     std::signal(SIGXFSZ, SIG_IGN);
+    // Ctrl+C or a kill during `--out` leaves no temporary file behind (io/atomic_file.h).
+    cam::installTemporaryFileCleanup();
     std::ios::sync_with_stdio(false);
     CheckedOutput results(STDOUT_FILENO);
     std::ostream out(&results);

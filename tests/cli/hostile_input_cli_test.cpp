@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -16,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "test_support.h"
@@ -100,6 +102,67 @@ RunResult runWithBrokenStdout(const std::vector<std::string>& args, Stdout mode,
     r.err = readFile(errPath);
     fs::remove(errPath);
     return r;
+}
+
+/// camwright-cli running in the background (stdout and stderr to /dev/null), with SIGINT and
+/// SIGTERM at their defaults as for a command run in the foreground (a test run in the
+/// background of a script inherits SIGINT ignored). A test that stops early (a failed ASSERT)
+/// does not leave it behind: it is killed and reaped.
+class BackgroundCli {
+public:
+    explicit BackgroundCli(const std::vector<std::string>& args) : m_pid(::fork()) {
+        if (m_pid == 0) {
+            const int null = ::open("/dev/null", O_WRONLY);
+            ::dup2(null, 1);
+            ::dup2(null, 2);
+            ::signal(SIGINT, SIG_DFL);
+            ::signal(SIGTERM, SIG_DFL);
+            ::alarm(120);
+            std::vector<char*> argv{const_cast<char*>(CAMWRIGHT_CLI)};
+            for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+            argv.push_back(nullptr);
+            ::execv(CAMWRIGHT_CLI, argv.data());
+            ::_exit(127);
+        }
+    }
+    ~BackgroundCli() {
+        if (m_pid <= 0) return;
+        ::kill(m_pid, SIGKILL);
+        wait();
+    }
+    BackgroundCli(const BackgroundCli&) = delete;
+    BackgroundCli& operator=(const BackgroundCli&) = delete;
+
+    void signal(int signal) const { ::kill(m_pid, signal); }
+    /// Waits for it to end; its wait status.
+    int wait() {
+        int status = 0;
+        ::waitpid(m_pid, &status, 0);
+        m_pid = -1;
+        return status;
+    }
+
+private:
+    pid_t m_pid;
+};
+
+/// Whether someone holds an exclusive flock(2) on the file, as a writer does on its temporary.
+bool isLocked(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    const bool free = ::flock(fd, LOCK_EX | LOCK_NB) == 0;
+    ::close(fd);  // releases the lock if we took it
+    return !free;
+}
+
+/// Waits until a temporary file of `name` appears in `folder` (the writer has started).
+bool waitForTemporary(const fs::path& folder, const std::string& name) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (!temporariesOf(folder, name).empty()) return true;
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    return false;
 }
 
 // --- 4. results that cannot be written are a failure -------------------------------------------
@@ -276,6 +339,71 @@ TEST(CliOut, ThroughASymlinkTheTargetKeepsItsModeAndOwner) {
         EXPECT_EQ(st.st_gid, kGroup);
     }
     EXPECT_EQ(test::folderEntries(dir.path() / "data"), std::vector<std::string>{"turn.csv"});
+}
+
+TEST(CliOut, SigtermAndSigintDuringALongSampleLeaveNoTemporaryFile) {
+    for (const int signal : {SIGTERM, SIGINT}) {
+        SCOPED_TRACE(strsignal(signal));
+        const TempDir dir;
+        const std::string out = dir.file("turn.csv");
+        writeText(out, "old");
+        BackgroundCli cli({"sample", kExample, "--samples", "1000000", "--out", out});
+        ASSERT_TRUE(waitForTemporary(dir.path(), "turn.csv"));
+        cli.signal(signal);
+        const int status = cli.wait();
+        ASSERT_TRUE(WIFSIGNALED(status)) << "exit code " << WEXITSTATUS(status);
+        EXPECT_EQ(WTERMSIG(status), signal);  // still ends by the signal, as a shell expects
+        EXPECT_EQ(readFile(out), "old");
+        EXPECT_EQ(test::folderEntries(dir.path()), std::vector<std::string>{"turn.csv"});
+    }
+}
+
+TEST(CliOut, TheLeftoverOfAKilledRunIsRemovedByTheNextRunToTheSameFile) {
+    const TempDir dir;
+    const std::string out = dir.file("turn.csv");
+    writeText(out, "old");
+    writeText(dir.file("other.csv"), "other");
+    // SIGKILL: nothing can run, the temporary file stays...
+    BackgroundCli cli({"sample", kExample, "--samples", "1000000", "--out", out});
+    ASSERT_TRUE(waitForTemporary(dir.path(), "turn.csv"));
+    cli.signal(SIGKILL);
+    ASSERT_TRUE(WIFSIGNALED(cli.wait()));
+    ASSERT_EQ(temporariesOf(dir.path(), "turn.csv").size(), 1u);
+    EXPECT_EQ(readFile(out), "old");
+    // ... until the next run that writes the same file.
+    const RunResult r = test::runCli({"sample", kExample, "--samples", "8", "--out", out});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(lineCount(readFile(out)), 9u);
+    EXPECT_EQ(test::folderEntries(dir.path()), (std::vector<std::string>{"other.csv", "turn.csv"}));
+}
+
+TEST(CliOut, TheTemporaryFileOfARunningWriterIsNotTouched) {
+    const TempDir dir;
+    const std::string out = dir.file("turn.csv");
+    BackgroundCli slow({"sample", kExample, "--samples", "500000", "--out", out});
+    ASSERT_TRUE(waitForTemporary(dir.path(), "turn.csv"));
+    // Stopped (alive, but not getting anywhere) while it holds its temporary file locked: caught
+    // between creating and locking it, the file would look like a leftover, and the writer would
+    // take a new one when it went on.
+    std::vector<std::string> slowTemp;
+    for (int attempt = 0; attempt < 1000; ++attempt) {
+        slow.signal(SIGSTOP);
+        slowTemp = temporariesOf(dir.path(), "turn.csv");
+        if (slowTemp.size() == 1 && isLocked(dir.file(slowTemp.front()))) break;
+        slow.signal(SIGCONT);
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    ASSERT_EQ(slowTemp.size(), 1u);
+    ASSERT_TRUE(isLocked(dir.file(slowTemp.front())));
+    const RunResult quick = test::runCli({"sample", kExample, "--samples", "8", "--out", out});
+    EXPECT_EQ(quick.exitCode, 0) << quick.err;
+    EXPECT_EQ(temporariesOf(dir.path(), "turn.csv"), slowTemp);
+    slow.signal(SIGCONT);
+    const int status = slow.wait();
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+    EXPECT_EQ(lineCount(readFile(out)), 500001u);  // the slow writer finished last
+    EXPECT_EQ(test::folderEntries(dir.path()), std::vector<std::string>{"turn.csv"});
 }
 
 }  // namespace

@@ -1,17 +1,20 @@
 // The one file writer (io/atomic_file.h), guarantee by guarantee: a temporary sibling renamed
 // over the target; symlinks followed and kept; mode and owner kept; non-files refused; never a
-// partial file, even when a write fails midway; links to open descriptors refused.
+// partial file, even when a write fails midway; links to open descriptors refused; no temporary
+// file left by a signal, nor for long by a crash.
 
 #include "io/atomic_file.h"
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -67,9 +70,10 @@ TEST(AtomicFile, StreamsIntoATemporarySiblingAndRenamesItOnCommit) {
         EXPECT_EQ(readFile(target), "old");
         const auto temps = temporariesOf(dir.path(), "p.cam.json");
         ASSERT_EQ(temps.size(), 1u);
-        // A known pattern, so leftovers of a crash can be found: .<name>.camwright-XXXXXX
+        // A known pattern, so leftovers of a crash can be found: .<name>.camwright-XXXXXX.tmp
         EXPECT_EQ(temps.front().rfind(".p.cam.json.camwright-", 0), 0u) << temps.front();
-        EXPECT_EQ(temps.front().size(), std::string(".p.cam.json.camwright-XXXXXX").size());
+        EXPECT_EQ(temps.front().size(), std::string(".p.cam.json.camwright-XXXXXX.tmp").size());
+        EXPECT_TRUE(temps.front().ends_with(".tmp")) << temps.front();
         EXPECT_EQ(readFile(dir.file(temps.front())), "new content");
         EXPECT_TRUE(writer.commit().empty());
     }
@@ -374,6 +378,114 @@ TEST(AtomicFile, DevStdoutAndProcFdLinksAreRefused) {
     EXPECT_EQ(readFile(captured), "old");
     EXPECT_TRUE(fs::is_symlink(stdoutLink));
     EXPECT_EQ(folderEntries(dir.path()), (std::vector<std::string>{"captured.txt", "stdout"}));
+}
+
+// --- 7. leftovers: a dead writer's temporary file goes with the next write, a live one stays --
+
+TEST(AtomicFile, ALeftoverOfADeadWriterIsRemovedByTheNextWriteOfThatFile) {
+    TempDir dir;
+    const std::string target = dir.file("p.csv");
+    writeFileWithMode(target, "old", 0644);
+    // What a SIGKILLed writer leaves: a temporary file nobody holds locked. Next to it, files
+    // that only look alike and must stay: another target's, other suffixes, a folder.
+    std::ofstream(dir.file(".p.csv.camwright-Ab3dE9.tmp")) << "half a fi";
+    const std::vector<std::string> unrelated{
+        ".other.csv.camwright-Ab3dE9.tmp", ".p.csv.camwright-Ab3dE9.tmp.bak",
+        ".p.csv.camwright-Ab3dE.tmp",      ".p.csv.camwright-Ab3dE9",
+        ".p.csv.camwright-Ab_dE9.tmp",     "p.csv.camwright-Ab3dE9.tmp"};
+    for (const std::string& name : unrelated) std::ofstream(dir.file(name)) << "keep";
+    fs::create_directory(dir.path() / ".p.csv.camwright-Folder.tmp");
+
+    ASSERT_TRUE(writeFileAtomically(target, "new").empty());
+    EXPECT_EQ(readFile(target), "new");
+    EXPECT_FALSE(fs::exists(dir.path() / ".p.csv.camwright-Ab3dE9.tmp"));
+    for (const std::string& name : unrelated) EXPECT_EQ(readFile(dir.file(name)), "keep") << name;
+    EXPECT_TRUE(fs::is_directory(dir.path() / ".p.csv.camwright-Folder.tmp"));
+}
+
+TEST(AtomicFile, ATemporaryFileOfALiveWriterIsLeftAlone) {
+    TempDir dir;
+    const std::string target = dir.file("p.csv");
+    AtomicFileWriter slow(target);
+    ASSERT_TRUE(slow.ok());
+    slow.write("the slow writer's content");
+    const auto slowTemp = temporariesOf(dir.path(), "p.csv");
+    ASSERT_EQ(slowTemp.size(), 1u);
+    // A second writer of the same file (flock locks are per open file, so this holds within one
+    // process as between two) finds it locked and leaves it.
+    ASSERT_TRUE(writeFileAtomically(target, "quick").empty());
+    EXPECT_EQ(readFile(target), "quick");
+    EXPECT_EQ(temporariesOf(dir.path(), "p.csv"), slowTemp);
+    EXPECT_EQ(readFile(dir.file(slowTemp.front())), "the slow writer's content");
+    ASSERT_TRUE(slow.commit().empty());
+    EXPECT_EQ(readFile(target), "the slow writer's content");
+    EXPECT_EQ(folderEntries(dir.path()), std::vector<std::string>{"p.csv"});
+}
+
+TEST(AtomicFile, ALeftoverHeldLockedByAnotherProcessIsLeftAlone) {
+    TempDir dir;
+    const std::string target = dir.file("p.csv");
+    const std::string held = dir.file(".p.csv.camwright-Held00.tmp");
+    std::ofstream(held) << "in progress";
+    int ready[2];
+    int release[2];
+    ASSERT_EQ(::pipe(ready), 0);
+    ASSERT_EQ(::pipe(release), 0);
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        const int fd = ::open(held.c_str(), O_RDONLY);
+        if (fd < 0 || ::flock(fd, LOCK_EX) != 0) ::_exit(1);
+        char c = 'r';
+        if (::write(ready[1], &c, 1) != 1) ::_exit(2);
+        if (::read(release[0], &c, 1) != 1) ::_exit(3);  // hold the lock until told
+        ::_exit(0);
+    }
+    char c = 0;
+    ASSERT_EQ(::read(ready[0], &c, 1), 1);
+    const bool written = writeFileAtomically(target, "new").empty();
+    const bool heldSurvived = fs::exists(held);
+    ASSERT_EQ(::write(release[1], &c, 1), 1);
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    EXPECT_TRUE(written);
+    EXPECT_TRUE(heldSurvived);
+    // Once its holder is gone it is a leftover like any other.
+    ASSERT_TRUE(writeFileAtomically(target, "newer").empty());
+    EXPECT_EQ(folderEntries(dir.path()), std::vector<std::string>{"p.csv"});
+    for (int fd : {ready[0], ready[1], release[0], release[1]}) ::close(fd);
+}
+
+// In a forked child: a writer in progress, then the signal. Exit codes say what went wrong.
+[[noreturn]] void childKilledWhileWriting(const std::string& target, int signal) {
+    // As in a foreground program: a test run in the background of a script inherits SIGINT
+    // ignored, and the cleanup leaves ignored signals alone (nohup).
+    ::signal(signal, SIG_DFL);
+    installTemporaryFileCleanup();
+    AtomicFileWriter writer(target);
+    writer.write("half a fi");
+    if (!writer.ok() || temporariesOf(fs::path(target).parent_path(), "p.csv").size() != 1) {
+        ::_exit(10);
+    }
+    ::raise(signal);
+    ::_exit(11);  // not reached: the signal ends the process
+}
+
+TEST(AtomicFile, SigintSigtermAndSighupRemoveTheTemporaryFileAndStillEndTheProgram) {
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        SCOPED_TRACE(strsignal(signal));
+        TempDir dir;
+        const std::string target = dir.file("p.csv");
+        writeFileWithMode(target, "old", 0644);
+        const pid_t pid = ::fork();
+        if (pid == 0) childKilledWhileWriting(target, signal);
+        int status = 0;
+        ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+        ASSERT_TRUE(WIFSIGNALED(status)) << "exit code " << WEXITSTATUS(status);
+        EXPECT_EQ(WTERMSIG(status), signal);
+        EXPECT_EQ(readFile(target), "old");
+        EXPECT_EQ(folderEntries(dir.path()), std::vector<std::string>{"p.csv"});
+    }
 }
 
 }  // namespace

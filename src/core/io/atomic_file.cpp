@@ -1,11 +1,16 @@
 #include "io/atomic_file.h"
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <limits.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/vfs.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <random>
 #include <utility>
@@ -16,8 +21,92 @@ namespace {
 // Linux's own limit for one path lookup (MAXSYMLINKS).
 constexpr int kMaxSymlinkHops = 40;
 
+// The temporary file of target "name" is ".name" + kTempInfix + six letters or digits +
+// kTempSuffix; nothing else in the folder is ever removed.
+constexpr std::string_view kTempInfix = ".camwright-";
+constexpr std::string_view kTempSuffix = ".tmp";
+constexpr std::size_t kRandomChars = 6;
+
 // procfs: its fd links name open files, pipes and terminals, not paths to replace.
 constexpr long kProcSuperMagic = 0x9fa0;
+
+bool isTemporaryOf(std::string_view entry, const std::string& name) {
+    const std::size_t prefix = 1 + name.size() + kTempInfix.size();
+    if (entry.size() != prefix + kRandomChars + kTempSuffix.size()) return false;
+    if (entry[0] != '.' || entry.substr(1, name.size()) != name ||
+        entry.substr(1 + name.size(), kTempInfix.size()) != kTempInfix ||
+        entry.substr(prefix + kRandomChars) != kTempSuffix) {
+        return false;
+    }
+    for (const char c : entry.substr(prefix, kRandomChars)) {
+        if (!((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9'))) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool sameFile(const struct stat& a, const struct stat& b) {
+    return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
+
+// The temporary files in progress, for the signal handler: fixed storage (a handler may not
+// allocate, and must never read memory being freed), claimed and released with atomics.
+// state: 0 free, 1 being filled, 2 armed (path complete, removed on a signal).
+struct SignalSlot {
+    std::atomic<int> state{0};
+    char path[PATH_MAX];
+};
+constexpr int kSignalSlots = 16;
+SignalSlot g_signalSlots[kSignalSlots];
+constexpr int kCleanedSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+int armSignalSlot(const std::string& path) {
+    if (path.size() >= PATH_MAX) return -1;
+    for (int i = 0; i < kSignalSlots; ++i) {
+        int expected = 0;
+        if (g_signalSlots[i].state.compare_exchange_strong(expected, 1)) {
+            std::memcpy(g_signalSlots[i].path, path.c_str(), path.size() + 1);
+            g_signalSlots[i].state.store(2);
+            return i;
+        }
+    }
+    return -1;  // more writers at once than slots: a signal leaves this one to the next writer
+}
+
+void releaseSignalSlot(int& slot) {
+    if (slot >= 0) g_signalSlots[slot].state.store(0);
+    slot = -1;
+}
+
+/// Holds back SIGINT, SIGTERM and SIGHUP in this thread for the scope; a signal that arrives
+/// meanwhile is delivered when the scope ends.
+class BlockedCleanedSignals {
+public:
+    BlockedCleanedSignals() {
+        sigset_t set;
+        sigemptyset(&set);
+        for (const int signal : kCleanedSignals) sigaddset(&set, signal);
+        ::pthread_sigmask(SIG_BLOCK, &set, &m_previous);
+    }
+    ~BlockedCleanedSignals() { ::pthread_sigmask(SIG_SETMASK, &m_previous, nullptr); }
+    BlockedCleanedSignals(const BlockedCleanedSignals&) = delete;
+    BlockedCleanedSignals& operator=(const BlockedCleanedSignals&) = delete;
+
+private:
+    sigset_t m_previous{};
+};
+
+extern "C" void removeTemporariesAndDie(int signal) {
+    const int savedErrno = errno;
+    for (SignalSlot& slot : g_signalSlots) {
+        if (slot.state.load() == 2) ::unlink(slot.path);
+    }
+    errno = savedErrno;
+    // SA_RESETHAND has restored the default action; the signal is blocked until this handler
+    // returns, and then ends the program as it would have without the handler.
+    ::raise(signal);
+}
 
 std::string folderOf(const std::string& path) {
     const auto slash = path.find_last_of('/');
@@ -65,10 +154,37 @@ void AtomicFileWriter::fail(const std::string& what, int error) {
 }
 
 void AtomicFileWriter::discardTemporary() {
-    if (m_fd >= 0) ::close(m_fd);
-    m_fd = -1;
+    // Removed while still locked: no other writer can take it for a leftover meanwhile.
     if (!m_tempPath.empty()) ::unlink(m_tempPath.c_str());
     m_tempPath.clear();
+    releaseSignalSlot(m_signalSlot);
+    if (m_fd >= 0) ::close(m_fd);
+    m_fd = -1;
+}
+
+void AtomicFileWriter::removeStaleTemporaries(const std::string& folder,
+                                              const std::string& name) const {
+    DIR* dir = ::opendir(folder.c_str());
+    if (dir == nullptr) return;  // creating the temporary file will say what is wrong
+    const std::string prefix = folder == "/" ? "/" : folder + "/";
+    while (const dirent* entry = ::readdir(dir)) {
+        if (!isTemporaryOf(entry->d_name, name)) continue;
+        const std::string path = prefix + entry->d_name;
+        const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+        if (fd < 0) continue;  // not ours to judge (another user's), or already gone
+        struct stat opened {
+        }, named{};
+        // Unlocked means its writer is gone: a live writer holds the lock until its rename. The
+        // name must still be the file we locked (another writer may have removed it and a new
+        // one taken the name) when it is removed.
+        if (::fstat(fd, &opened) == 0 && S_ISREG(opened.st_mode) &&
+            ::flock(fd, LOCK_EX | LOCK_NB) == 0 && ::lstat(path.c_str(), &named) == 0 &&
+            sameFile(opened, named)) {
+            ::unlink(path.c_str());
+        }
+        ::close(fd);
+    }
+    ::closedir(dir);
 }
 
 void AtomicFileWriter::resolveTarget() {
@@ -144,20 +260,45 @@ void AtomicFileWriter::createTemporary() {
         m_errors.push_back({m_path, "names a folder, not a file"});
         return;
     }
+    removeStaleTemporaries(folder, name);
     // An existing target's owner is copied here, its mode in commit(); until then the temporary
     // file is private. A new file gets 0666 & ~umask (and any default ACL) from the kernel.
     const mode_t createMode = m_targetExists ? 0600 : 0666;
-    const std::string prefix = (folder == "/" ? "/" : folder + "/") + "." + name + ".camwright-";
+    const std::string prefix =
+        (folder == "/" ? "/" : folder + "/") + "." + name + std::string(kTempInfix);
     for (int attempt = 0; attempt < 100 && m_fd < 0; ++attempt) {
-        std::string temp = prefix + randomSuffix();
-        const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, createMode);
-        if (fd >= 0) {
-            m_fd = fd;
-            m_tempPath = std::move(temp);
-        } else if (errno != EEXIST) {
-            fail("cannot create a temporary file in " + folder, errno);
+        std::string temp = prefix + randomSuffix() + std::string(kTempSuffix);
+        // Created and made known to the signal handler with the cleaned signals blocked: a
+        // Ctrl+C in between would otherwise leave a file the handler does not know about.
+        int fd = -1;
+        int openError = 0;
+        {
+            const BlockedCleanedSignals blocked;
+            fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, createMode);
+            openError = errno;
+            if (fd >= 0) m_signalSlot = armSignalSlot(temp);
+        }
+        if (fd < 0) {
+            if (openError == EEXIST) continue;
+            fail("cannot create a temporary file in " + folder, openError);
             return;
         }
+        // Locked for as long as it is written. Another writer's cleanup may have locked and
+        // removed it between open and flock (it looked like a leftover): then take a new name.
+        // Where there are no locks (an NFS mount without lockd) it is written unlocked, and
+        // nobody's cleanup can judge it either.
+        while (::flock(fd, LOCK_EX) != 0 && errno == EINTR) {
+        }
+        struct stat opened {
+        }, named{};
+        if (::fstat(fd, &opened) != 0 || ::lstat(temp.c_str(), &named) != 0 ||
+            !sameFile(opened, named)) {
+            releaseSignalSlot(m_signalSlot);
+            ::close(fd);
+            continue;
+        }
+        m_fd = fd;
+        m_tempPath = std::move(temp);
     }
     if (m_fd < 0) {
         fail("cannot create a temporary file in " + folder, EEXIST);
@@ -200,11 +341,6 @@ Diagnostics AtomicFileWriter::commit() {
         fail("cannot flush " + m_resolvedPath + " to disk", errno);
         return m_errors;
     }
-    const int fd = std::exchange(m_fd, -1);
-    if (::close(fd) != 0) {
-        fail("cannot write " + m_resolvedPath, errno);
-        return m_errors;
-    }
     // Something may have appeared in its place while we wrote; replace only a regular file.
     struct stat st {};
     if (::lstat(m_resolvedPath.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
@@ -213,11 +349,18 @@ Diagnostics AtomicFileWriter::commit() {
         discardTemporary();
         return m_errors;
     }
+    // Renamed while still open and locked: until then it must not look like a leftover.
     if (::rename(m_tempPath.c_str(), m_resolvedPath.c_str()) != 0) {
         fail("cannot replace " + m_resolvedPath, errno);
         return m_errors;
     }
     m_tempPath.clear();  // it is the target now
+    releaseSignalSlot(m_signalSlot);
+    // fsync succeeded, so the content is on disk; a failing close would still be news.
+    if (::close(std::exchange(m_fd, -1)) != 0 && errno != EINTR) {
+        fail("replaced, but cannot close " + m_resolvedPath, errno);
+        return m_errors;
+    }
     // Make the rename itself durable. Some file systems cannot fsync a folder (EINVAL): there is
     // nothing more to do on those.
     const std::string folder = folderOf(m_resolvedPath);
@@ -227,6 +370,21 @@ Diagnostics AtomicFileWriter::commit() {
     }
     if (dir >= 0) ::close(dir);
     return m_errors;
+}
+
+void installTemporaryFileCleanup() {
+    for (const int signal : kCleanedSignals) {
+        struct sigaction current {};
+        if (::sigaction(signal, nullptr, &current) != 0 || current.sa_handler != SIG_DFL ||
+            (current.sa_flags & SA_SIGINFO) != 0) {
+            continue;  // ignored or handled by someone else: not ours to change
+        }
+        struct sigaction action {};
+        action.sa_handler = removeTemporariesAndDie;
+        sigemptyset(&action.sa_mask);
+        action.sa_flags = SA_RESETHAND;
+        ::sigaction(signal, &action, nullptr);
+    }
 }
 
 Diagnostics writeFileAtomically(const std::string& path, std::string_view content) {

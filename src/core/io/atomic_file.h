@@ -14,9 +14,10 @@ namespace cam {
 /// @brief Streams a file into a temporary sibling and renames it over the target on commit().
 ///
 /// - **Where**: the target is the path with every symlink followed (chains and relative links
-///   too); the temporary file `.<name>.camwright-XXXXXX` is created next to that resolved
-///   file, so the rename stays inside one folder and the symlinks stay symlinks. A dangling
-///   symlink is followed too: its target is created, as `echo > link` would.
+///   too); the temporary file `.<name>.camwright-XXXXXX.tmp` (six random letters or digits) is
+///   created next to that resolved file, so the rename stays inside one folder and the symlinks
+///   stay symlinks. A dangling symlink is followed too: its target is created, as `echo > link`
+///   would.
 /// - **What is refused**: a target that exists and is not a regular file (a folder, a FIFO, a
 ///   device, a socket) — left untouched, nothing is opened; a link to an open file descriptor
 ///   (`/dev/stdout`, `/proc/self/fd/N`: what it names is a pipe or a terminal as often as a
@@ -34,6 +35,14 @@ namespace cam {
 /// - **Errors**: Diagnostics located at the path as given, saying what failed and why (the
 ///   errno text), e.g. {"out.csv", "cannot write /data/out.csv: File too large"}. The first
 ///   failure is kept; later writes do nothing.
+/// - **Leftovers**: the writer holds an exclusive flock(2) on its temporary file from creation
+///   to the rename. A temporary file of the same target that nobody holds locked belongs to a
+///   writer that died (SIGKILL, a power loss): each new writer removes those before it creates
+///   its own, so a crash costs disk space only until the next write of that file. Files of that
+///   name pattern that someone holds locked (a live writer, in this or another process) and
+///   files that cannot be opened to test the lock (another user's) are left alone.
+/// - **Signals**: with installTemporaryFileCleanup(), SIGINT, SIGTERM and SIGHUP remove every
+///   temporary file in progress before the program ends by the signal as it would have.
 ///
 /// Destroyed without commit() (or after a failure), it removes the temporary file and leaves
 /// the target as it was.
@@ -59,11 +68,13 @@ private:
     void createTemporary();
     void fail(const std::string& what, int error);
     void discardTemporary();
+    void removeStaleTemporaries(const std::string& folder, const std::string& name) const;
 
     std::string m_path;
     std::string m_resolvedPath;
     std::string m_tempPath;
     int m_fd = -1;
+    int m_signalSlot = -1;  ///< where the temporary file is known to the signal handler, or -1
     bool m_targetExists = false;
     mode_t m_mode = 0;
     uid_t m_uid = 0;
@@ -71,6 +82,13 @@ private:
     bool m_committed = false;
     Diagnostics m_errors;
 };
+
+/// @brief Makes SIGINT, SIGTERM and SIGHUP remove the temporary files of every AtomicFileWriter
+/// in progress, then end the program by that signal as before (exit status 128 + signal).
+/// Signals that are ignored (nohup) or already handled are left as they are. For programs, not
+/// libraries: call it once at start (the CLI does). Async-signal-safe: the handler only calls
+/// unlink(2) on paths prepared before, for up to 16 writers at a time.
+void installTemporaryFileCleanup();
 
 /// @brief Writes a whole file through AtomicFileWriter: all of `content` or, on failure, the
 /// target untouched and the problem returned.
