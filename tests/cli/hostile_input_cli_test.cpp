@@ -406,5 +406,67 @@ TEST(CliOut, TheTemporaryFileOfARunningWriterIsNotTouched) {
     EXPECT_EQ(test::folderEntries(dir.path()), std::vector<std::string>{"turn.csv"});
 }
 
+// --- 7. big inputs: linear; size and kind checked before reading ------------------------------
+
+TEST(CliBigInputs, AFileOver64MiBIsRefusedWithItsSizeBeforeItIsRead) {
+    const TempDir dir;
+    // Sparse files: no disk space, and reading 8 GiB would take far longer than the bound.
+    struct Case {
+        const char* name;
+        off_t size;
+        const char* says;
+    };
+    for (const Case c :
+         {Case{"just-over.cam.json", (off_t{64} << 20) + 1,
+               "is 64.0 MiB (67108865 bytes): files larger than 64 MiB are not read"},
+          Case{"huge.cam.json", off_t{8} << 30,
+               "is 8192.0 MiB (8589934592 bytes): files larger than 64 MiB are not "
+               "read"}}) {
+        SCOPED_TRACE(c.name);
+        const std::string file = dir.file(c.name);
+        writeText(file, "");
+        ASSERT_EQ(::truncate(file.c_str(), c.size), 0);
+        for (const std::vector<std::string>& args :
+             {std::vector<std::string>{"validate", file},
+              std::vector<std::string>{"timing", "--path", file, "--method", "seed", "--accel",
+                                       "1,1"}}) {
+            // Reading 8 GiB would take a while and the memory would run out: a hang is killed.
+            const auto start = std::chrono::steady_clock::now();
+            const RunResult r = test::run(CAMWRIGHT_CLI, args, 30);
+            const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+            EXPECT_EQ(r.signal, 0);
+            EXPECT_EQ(r.exitCode, 2);
+            EXPECT_EQ(r.err, "camwright-cli: " + file + ": " + c.says + "\n");
+            EXPECT_LT(took.count(), 10.0);
+        }
+    }
+}
+
+TEST(CliBigInputs, DevicesFifosAndFoldersAreRefusedSayingWhatTheyAre) {
+    const TempDir dir;
+    const std::string fifo = dir.file("pipe");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    struct Case {
+        std::string path;
+        const char* kind;
+    };
+    for (const Case& c : {Case{"/dev/zero", "a character device"}, Case{fifo, "a FIFO"},
+                          Case{dir.path().string(), "a folder"}}) {
+        SCOPED_TRACE(c.path);
+        for (const std::vector<std::string>& args :
+             {std::vector<std::string>{"validate", c.path},
+              std::vector<std::string>{"state", c.path, "--t", "0"},
+              std::vector<std::string>{"timing", "--path", c.path, "--method", "seed", "--accel",
+                                       "1,1"}}) {
+            // /dev/zero never ends and a FIFO waits for a writer: a hang is killed after 10 s.
+            const RunResult r = test::run(CAMWRIGHT_CLI, args, 10);
+            EXPECT_EQ(r.signal, 0);
+            EXPECT_EQ(r.exitCode, 2);
+            EXPECT_EQ(r.err, "camwright-cli: " + c.path + ": is " + c.kind +
+                                 ", not a regular file: not read\n");
+        }
+    }
+}
+
 }  // namespace
 }  // namespace cam

@@ -2,6 +2,7 @@
 /// @file
 /// @brief Reading and writing `.cam.json` project files, format version 1 (project-format.md).
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -27,7 +28,17 @@ namespace cam {
 /// @brief Reads a file and parses and validates it (parseProject).
 [[nodiscard]] Result<Project> loadProjectFile(const std::string& path);
 
-/// @brief Reads a whole file; errors are located at the path.
+/// @brief The largest project file (or point list) readTextFile reads: 64 MiB, checked before
+/// reading. A real project is a few kilobytes; 64 MiB of JSON hold some 600,000 line segments,
+/// which take about 0.5 GB of memory while they are parsed. The app refuses larger files too.
+inline constexpr std::uint64_t kMaxProjectFileBytes = 64ull << 20;
+
+/// @brief Reads a whole file; errors are located at the path:
+/// - anything that is not a regular file (a folder, a FIFO, a device, a socket) is refused,
+///   saying what it is, without reading from it or waiting for a writer (`/dev/zero` and a FIFO
+///   never end);
+/// - a file larger than kMaxProjectFileBytes is refused with its size, before it is read;
+/// - otherwise the reason from the system (`cannot open: Permission denied`).
 [[nodiscard]] Result<std::string> readTextFile(const std::string& path);
 
 }  // namespace cam
