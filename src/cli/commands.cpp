@@ -130,10 +130,16 @@ int runValidate(const Arguments& args, std::ostream& out, std::ostream& err) {
     const std::string& path = args.positional.at(0);
     const auto project = loadProjectFile(path);
     if (!project.ok()) {
+        // One write for all: stderr is unbuffered, and a file can have a problem per segment.
+        std::string lines;
         for (const Diagnostic& d : project.errors()) {
-            err << "camwright-cli: " << (d.location == path ? path : path + ": " + d.location)
-                << ": " << d.message << "\n";
+            lines += "camwright-cli: ";
+            lines += d.location == path ? path : path + ": " + d.location;
+            lines += ": ";
+            lines += d.message;
+            lines += '\n';
         }
+        err << lines;
         return kInvalidInput;
     }
     out << "valid: " << project.value().contour.size() << " segments\n";

@@ -20,12 +20,16 @@
 #include <thread>
 #include <vector>
 
+#include "big_projects.h"
 #include "test_support.h"
 
 namespace cam {
 namespace {
 
 namespace fs = std::filesystem;
+using test::emptyObjects;
+using test::projectOfArcs;
+using test::projectOfEmptySegments;
 using test::readFile;
 using test::RunResult;
 using test::TempDir;
@@ -407,6 +411,56 @@ TEST(CliOut, TheTemporaryFileOfARunningWriterIsNotTouched) {
 }
 
 // --- 7. big inputs: linear; size and kind checked before reading ------------------------------
+
+/// Runs `validate file` and says how long it took, in seconds.
+double secondsToValidate(const std::string& file, RunResult& result) {
+    const auto start = std::chrono::steady_clock::now();
+    result = test::run(CAMWRIGHT_CLI, {"validate", file}, 100);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The bounds below are generous on purpose (a shared machine, two jobs at once): they only
+// separate seconds from the minutes the quadratic steps of 612d090 took. tests/bench/
+// load_bench.cpp measures the time per segment from 10,000 to 1,000,000.
+
+TEST(CliBigInputs, ValidatingTwoHundredThousandSegmentsTakesSecondsNotMinutes) {
+    // 160,000 segments took 10 s at 612d090, 100,000 lines 5.2 s (a million: 2 min 53 s);
+    // about 1.5 s now.
+    const TempDir dir;
+    const std::size_t n = 200000;
+    const std::string file = dir.file("arcs.cam.json");
+    writeText(file, projectOfArcs(n));
+    RunResult r;
+    const double took = secondsToValidate(file, r);
+    EXPECT_EQ(r.exitCode, 0) << r.err.substr(0, 300);
+    EXPECT_EQ(r.out, "valid: 200000 segments\n");
+    EXPECT_LT(took, test::kSanitized ? 90.0 : 10.0);
+}
+
+TEST(CliBigInputs, FourHundredThousandEmptyObjectsAreRefusedInSecondsNotMinutes) {
+    // 1.2 MB: 24 s to refuse at 612d090 (68 s on a busy machine), as the parser rescanned the
+    // array after every object. About 0.2 s now.
+    const TempDir dir;
+    const std::size_t n = 400000;
+    const std::string top = dir.file("top.json");
+    writeText(top, emptyObjects(n));
+    RunResult r;
+    double took = secondsToValidate(top, r);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.err, "camwright-cli: " + top + ": (top level): must be an object (got an array)\n");
+    EXPECT_LT(took, test::kSanitized ? 60.0 : 10.0);
+
+    // As the contour each object is a segment without a type: one line for each, in order.
+    const std::string contour = dir.file("contour.cam.json");
+    writeText(contour, projectOfEmptySegments(n));
+    took = secondsToValidate(contour, r);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(lineCount(r.err), n);
+    const std::string prefix = "camwright-cli: " + contour + ": contour[";
+    EXPECT_EQ(r.err.substr(0, r.err.find('\n') + 1), prefix + "0].type: missing\n");
+    EXPECT_TRUE(r.err.ends_with(prefix + std::to_string(n - 1) + "].type: missing\n"));
+    EXPECT_LT(took, test::kSanitized ? 60.0 : 10.0);
+}
 
 TEST(CliBigInputs, AFileOver64MiBIsRefusedWithItsSizeBeforeItIsRead) {
     const TempDir dir;
