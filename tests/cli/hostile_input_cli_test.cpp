@@ -16,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
 #include <vector>
@@ -35,6 +36,10 @@ using test::RunResult;
 using test::TempDir;
 
 const std::string kExample = test::examplePath("six-lobe-arc-cam.cam.json");
+
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
 
 std::size_t lineCount(const std::string& text) {
     return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
@@ -167,6 +172,50 @@ bool waitForTemporary(const fs::path& folder, const std::string& name) {
         std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
     return false;
+}
+
+// --- 1. small files that once overflowed the stack ---------------------------------------------
+
+TEST(CliHostileInput, SmallFilesThatOverflowedTheStackAreRefusedWithTheirPlace) {
+    // At 612d090 each of these ended in a segmentation fault (exit 139): std::regex recursed
+    // over nlohmann's message, which quotes the whole last token.
+    // A token is quoted to its first 40 characters and "…" (io/json_syntax.h), not echoed whole.
+    struct Case {
+        const char* name;
+        std::string text;
+        std::string says;  // location and the start of the message
+        std::string ends;  // the capped quote that ends it
+    };
+    const std::vector<Case> cases{
+        {"tabs", R"({"format": "camwright",)" + std::string(3500, '\t') + "#",
+         "line 1, column 3524: syntax error",  // the '#'
+         "…'"},
+        {"unterminated-string", R"({"format": ")" + std::string(30000, 'a'),
+         "line 1, column 30013: syntax error while parsing value - invalid string: missing "
+         "closing quote",  // the end of the file
+         "; last read: '\"" + std::string(39, 'a') + "…'"},
+        {"huge-number", R"({"format": )" + std::string(40000, '1'),
+         "line 1, column 12: number '",  // the first digit
+         std::string(40, '1') + "…' is too large for a double"},
+    };
+    const TempDir dir;
+    for (const Case& c : cases) {
+        const std::string file = dir.file(std::string(c.name) + ".cam.json");
+        writeText(file, c.text);
+        for (const std::vector<std::string>& args :
+             {std::vector<std::string>{"validate", file},
+              std::vector<std::string>{"state", file, "--t", "0"}}) {
+            SCOPED_TRACE(args[0] + " " + c.name);
+            const RunResult r = test::runCli(args);
+            EXPECT_EQ(r.signal, 0);
+            EXPECT_EQ(r.exitCode, 2);
+            EXPECT_EQ(r.out, "");
+            EXPECT_EQ(r.err.rfind("camwright-cli: " + file + ": " + c.says, 0), 0u) << r.err;
+            EXPECT_TRUE(r.err.ends_with(c.ends + "\n")) << r.err.substr(0, 400);
+            EXPECT_EQ(lineCount(r.err), 1u);
+            EXPECT_LT(r.err.size(), 250 + file.size()) << r.err.substr(0, 400);
+        }
+    }
 }
 
 // --- 4. results that cannot be written are a failure -------------------------------------------
@@ -518,6 +567,69 @@ TEST(CliBigInputs, DevicesFifosAndFoldersAreRefusedSayingWhatTheyAre) {
             EXPECT_EQ(r.exitCode, 2);
             EXPECT_EQ(r.err, "camwright-cli: " + c.path + ": is " + c.kind +
                                  ", not a regular file: not read\n");
+        }
+    }
+}
+
+// --- 11. the point list's and the project's own traps -----------------------------------------
+
+TEST(CliInputKinds, APointListWithAByteOrderMarkKeepsItsFirstPoint) {
+    const TempDir dir;
+    const std::string csv = dir.file("bom.csv");
+    writeText(csv,
+              "\xEF\xBB\xBF"
+              "0,0,0\n100,0,0\n200,0,0\n");
+    const RunResult r =
+        test::runCli({"timing", "--path", csv, "--method", "exact-stop", "--accel", "500,500,200"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto json = nlohmann::json::parse(r.out);
+    EXPECT_EQ(json.at("length_mm").get<double>(), 200.0);
+    EXPECT_EQ(json.at("segments").get<int>(), 2);
+}
+
+TEST(CliInputKinds, AFirstLineWithALetterOForZeroIsAnErrorOnLineOne) {
+    const TempDir dir;
+    const std::string csv = dir.file("typo.csv");
+    writeText(csv, "O,0,0\n10,0,0\n20,0,0\n");
+    const RunResult r =
+        test::runCli({"timing", "--path", csv, "--method", "exact-stop", "--accel", "500,500,200"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err, "camwright-cli: " + csv + ": line 1: x must be a finite number (got \"O\")\n");
+}
+
+TEST(CliInputKinds, ANulByteInAProjectIsAnErrorAtItsOffset) {
+    // Everything after a NUL used to be ignored: a whole project, a NUL and garbage was valid.
+    const TempDir dir;
+    const std::string text = readFile(kExample);
+    const std::size_t inside = text.find("\"contour\"");
+    ASSERT_NE(inside, std::string::npos);
+    struct Case {
+        const char* name;
+        std::string bytes;
+        std::size_t nul;
+    };
+    // Built by appending: GCC 12 warns falsely on std::string::insert here (-Wrestrict).
+    std::string trailing = text;
+    trailing.push_back('\0');
+    trailing += "garbage \x01\x02 {not json";
+    std::string within = text.substr(0, inside);
+    within.push_back('\0');
+    within.append(text, inside);
+    for (const Case& c :
+         {Case{"trailing", trailing, text.size()}, Case{"within", within, inside}}) {
+        SCOPED_TRACE(c.name);
+        const std::string file = dir.file(std::string(c.name) + ".cam.json");
+        writeText(file, c.bytes);
+        for (const char* command : {"validate", "analyze"}) {
+            const RunResult r = test::runCli({command, file});
+            EXPECT_EQ(r.exitCode, 2);
+            EXPECT_EQ(r.out, "");
+            EXPECT_TRUE(contains(r.err, "a NUL byte (at byte offset " + std::to_string(c.nul) +
+                                            "): a project file is text"))
+                << r.err;
+            EXPECT_EQ(r.err.rfind("camwright-cli: " + file + ": line ", 0), 0u) << r.err;
+            EXPECT_EQ(lineCount(r.err), 1u);
         }
     }
 }
