@@ -15,6 +15,7 @@
 #include <QPushButton>
 #include <QTemporaryDir>
 #include <QTimer>
+#include <filesystem>
 #include <fstream>
 
 #include "app_test_support.h"
@@ -205,6 +206,22 @@ TEST(OpenBigFile, CancelKeepsTheOpenProject) {
     const QString problem = window.loadFile(QString::fromStdString(path));
     EXPECT_TRUE(problem.contains("cancelled")) << problem.toStdString();
     EXPECT_TRUE(window.document()->project() == before);
+    EXPECT_TRUE(window.document()->filePath().endsWith("six-lobe-arc-cam.cam.json"));
+}
+
+TEST(OpenBigFile, AFileOverTheSizeLimitIsRefusedWithItsSize) {
+    // A sparse file of 64 MiB + 1 byte: refused before it is read, the open project kept.
+    const test::TempDir dir;
+    const std::string path = dir.file("huge.cam.json");
+    std::ofstream(path, std::ios::binary).put('{');
+    std::filesystem::resize_file(path, (64u << 20) + 1);
+    MainWindow window;
+    ASSERT_TRUE(
+        window.loadFile(QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json")))
+            .isEmpty());
+    const QString problem = window.loadFile(QString::fromStdString(path));
+    EXPECT_TRUE(problem.contains("67108865 bytes")) << problem.toStdString();
+    EXPECT_TRUE(problem.contains("64 MiB")) << problem.toStdString();
     EXPECT_TRUE(window.document()->filePath().endsWith("six-lobe-arc-cam.cam.json"));
 }
 
