@@ -232,6 +232,41 @@ TEST(SyntaxLocations, HostileTokensAreLocatedAndQuotedShortly) {
     }
 }
 
+TEST(SyntaxLocations, AQuoteIsCutBetweenCharactersNeverInsideOne) {
+    // A string broken by a raw tab after 36 characters (nlohmann quotes it as "<U+0009>", bytes
+    // 37 to 45 of the token) and an unterminated one of 'é' (2 bytes each): the 40-byte cut
+    // used to split "<U+0…" and the UTF-8 bytes.
+    const std::string head = R"({"format": "camwright", "name": ")";
+    for (const std::string& body : {std::string(36, 'x') + "\t", [] {
+                                        std::string s;
+                                        for (int i = 0; i < 100; ++i) s += "\xc3\xa9";
+                                        return s;
+                                    }()}) {
+        const auto p = parseProject(head + body);
+        ASSERT_FALSE(p.ok());
+        const std::string& m = p.errors().front().message;
+        const std::size_t open = m.find("last read: '");
+        ASSERT_NE(open, std::string::npos) << m;
+        const std::string quoted = m.substr(open + 12, m.rfind("…'") - open - 12);
+        EXPECT_LE(quoted.size(), 40u) << m;
+        EXPECT_GE(quoted.size(), 30u) << m;  // cut near the limit, not far before it
+        // Whole escapes only, and whole UTF-8 characters only.
+        std::size_t escapes = 0;
+        for (std::size_t i = quoted.find("<U+"); i != std::string::npos;
+             i = quoted.find("<U+", i + 1)) {
+            EXPECT_EQ(quoted.substr(i, 8), "<U+0009>") << m;
+            ++escapes;
+        }
+        std::size_t continuation = 0, lead = 0;
+        for (unsigned char c : quoted) {
+            continuation += (c & 0xC0) == 0x80;
+            lead += (c & 0xE0) == 0xC0;
+        }
+        EXPECT_EQ(continuation, lead) << m;
+        EXPECT_EQ(quoted.find('<'), std::string::npos) << m;  // the escape did not fit: left out
+    }
+}
+
 TEST(SyntaxLocations, ANulByteIsAnErrorAtItsOffsetNotTheEndOfTheFile) {
     // nlohmann reads NUL as the end of the input: everything after it used to be ignored.
     std::string text = kMinimal;

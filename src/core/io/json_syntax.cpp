@@ -1,5 +1,6 @@
 #include "io/json_syntax.h"
 
+#include <algorithm>
 #include <unordered_set>
 #include <vector>
 
@@ -10,8 +11,20 @@ namespace {
 constexpr std::size_t kQuotedChars = 40;
 
 std::string quotedToken(std::string_view token) {
+    // Cut at kQuotedChars bytes, but never inside a UTF-8 character or inside one of the
+    // "<U+0009>" escapes nlohmann writes for control characters.
+    std::size_t cut = std::min(token.size(), kQuotedChars);
+    while (cut > 0 && cut < token.size() &&
+           (static_cast<unsigned char>(token[cut]) & 0xC0) == 0x80) {
+        --cut;
+    }
+    if (const std::size_t open = token.substr(0, cut).rfind("<U+");
+        open != std::string_view::npos && cut < token.size() &&
+        token.substr(open, cut - open).find('>') == std::string_view::npos) {
+        cut = open;
+    }
     std::string out = "'";
-    for (char c : token.substr(0, kQuotedChars)) {
+    for (char c : token.substr(0, cut)) {
         // Control characters would garble a terminal or a message box: show them escaped.
         if (static_cast<unsigned char>(c) < 0x20) {
             static const char* hex = "0123456789abcdef";
@@ -22,7 +35,7 @@ std::string quotedToken(std::string_view token) {
             out += c;
         }
     }
-    if (token.size() > kQuotedChars) out += "…";
+    if (cut < token.size()) out += "…";
     return out + "'";
 }
 
