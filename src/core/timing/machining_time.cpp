@@ -500,7 +500,7 @@ struct Refined {
     std::vector<SegmentTiming> segments;
     double timeS = 0.0;
     std::size_t points = 0;
-    double errorS = 0.0;  ///< sum over segments of the change at their last refinement
+    double errorS = 0.0;  ///< sum over segments of the larger of their last two changes
     bool converged = true;
     bool cancelled = false;
 };
@@ -589,7 +589,9 @@ bool refineStretch(const ToolPath& path, std::size_t first, std::size_t last, do
     for (std::size_t k = 0; k < count; ++k) {
         out.segments.push_back(plan.segments[k]);
         out.timeS += plan.segments[k].timeS;
-        if (std::isfinite(error[k])) out.errorS += error[k];
+        // A segment the budget never let be doubled has no estimate: it counts with its whole
+        // time, so an unconverged result never looks better than it is.
+        out.errorS += std::isfinite(error[k]) ? error[k] : plan.segments[k].timeS;
     }
     if (!converged) out.converged = false;
     out.points += plan.points;
@@ -608,6 +610,10 @@ Refined refinedOptimal(const ToolPath& path, const MachineLimits& lim, std::size
     const double spacing = baseSpacing(path);
     std::size_t first = 0;
     for (std::size_t k = 1; k <= path.segments.size(); ++k) {
+        if (k % kCancelPollInterval == 0 && cancelRequested(cancel)) {
+            out.cancelled = true;
+            return out;
+        }
         if (k < path.segments.size() && !isCorner(path.segments[k - 1], path.segments[k])) {
             continue;
         }

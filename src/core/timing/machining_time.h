@@ -55,8 +55,9 @@ struct TimingResult {
     /// Optimal (and exact stop on arcs): the grid points of the final plans (summed over the
     /// stretches planned apart: between stops for optimal, every arc for exact stop).
     std::size_t gridPoints = 0;
-    /// The estimated relative error: the sum over segments of how much each one's time moved
-    /// when its intervals were last doubled, over the total time.
+    /// The estimated relative error: the sum over segments of the larger of the last two moves
+    /// of each one's time as its intervals were doubled (its whole time if the grid limit never
+    /// let it be doubled), over the total time.
     double convergence = 0.0;
     /// Whether every segment's time moved by at most 1e-6 of itself at its last two doublings.
     /// False when the grid limit (kMaxPlanPoints in one plan) stopped the refinement first: the
