@@ -124,6 +124,28 @@ TEST(TimingHostile, ASeedStepTinyAgainstThePathIsRefusedAtOnce) {
     EXPECT_TRUE(relClose(atLimit.value().timeS, 2.0 * std::sqrt(100.0 / 500.0), 1e-3));
 }
 
+// Fact: the seed's plotted profile holds its steps, but not 1e7 of them: with more steps over
+// the path than the plot asks points for, every m-th step is kept. 1000 mm at a 1e-4 mm step
+// (1e7 steps, the most the seed takes) for a plot of 4000 points: m = 2500, so 2000 steps up to
+// the middle (one more if the sum of 5e6 steps of 1e-4 falls short of 500 mm by a rounding and
+// a last sliver of a step follows), mirrored, and the end: 4001 to 4003 samples, ascending.
+TEST(TimingHostile, TheSeedProfileOfAFineStepIsThinned) {
+    const ToolPath path{{PathSegment::line({0, 0, 0}, {1000, 0, 0})}};
+    MachineLimits lim = limitsOf({500, 500, 200}, 100);
+    lim.seedStep = 1e-4;
+    const Result<TimingProfile> profile = timingProfile(path, lim, TimingMethod::Seed, 4000);
+    ASSERT_TRUE(profile.ok()) << textOf(profile.errors());
+    const TimingProfile& p = profile.value();
+    EXPECT_GE(p.s.size(), 4001u);
+    EXPECT_LE(p.s.size(), 4003u);
+    for (std::size_t k = 1; k < p.s.size(); ++k) ASSERT_GT(p.s[k], p.s[k - 1]) << k;
+    EXPECT_EQ(p.s.back(), 1000.0);
+    // The first kept step is the first step: from rest, x² = a·l → sqrt(500·1e-4) mm/s; the
+    // speed is capped by the feed after 10 mm (v² = 2·a·s).
+    EXPECT_TRUE(relClose(p.speed[0], std::sqrt(500.0 * 1e-4), 1e-12));
+    EXPECT_EQ(p.speed[1000], 100.0);
+}
+
 // Fact: the job names the step after its source: a project's `machining.step`, the CLI's
 // `--step`. The six-lobe cam's tool path is about 150 mm: a step of 1e-6 mm (which the
 // project's validation allows) would be 1.5e8 steps.
