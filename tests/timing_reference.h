@@ -279,18 +279,15 @@ inline std::vector<RefPiece> offsetArcContour(const Contour& contour, double rho
     return pieces;
 }
 
-/// What machining_time.h documents for TimingResult::gridPoints: the finest grid the refinement
-/// used, N = 4096·2^k points asked for (k >= 1: at least one doubling to compare with), each
-/// segment's share rounded up to whole intervals (at least two), so N to N + 2·segments points.
-inline ::testing::AssertionResult onRefinementSchedule(std::size_t gridPoints,
-                                                       std::size_t segments) {
-    for (std::size_t n = 8192; n <= (std::size_t{1} << 24); n *= 2) {
-        if (gridPoints >= n && gridPoints <= n + 2 * segments) {
-            return ::testing::AssertionSuccess();
-        }
+/// What machining_time.h documents for TimingResult::gridPoints: the final plans' points,
+/// summed over the stretches planned apart. The refinement starts from each segment's share of a
+/// 4096-point grid and only adds points, and no plan holds more than kMaxPlanPoints.
+inline ::testing::AssertionResult onRefinedGrid(std::size_t gridPoints, std::size_t stretches) {
+    if (gridPoints >= 4096 && gridPoints <= stretches * kMaxPlanPoints) {
+        return ::testing::AssertionSuccess();
     }
-    return ::testing::AssertionFailure() << gridPoints << " grid points is not 4096·2^k (k >= 1) "
-                                         << "plus at most " << 2 * segments;
+    return ::testing::AssertionFailure()
+           << gridPoints << " grid points is not within [4096, " << stretches << "·2^24]";
 }
 
 }  // namespace cam::test

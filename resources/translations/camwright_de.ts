@@ -697,7 +697,7 @@
         <translation>Kürzeste Zeit entlang der ganzen Bahn, Halt nur an Ecken</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+15" />
         <location line="+2" />
         <source>path [mm]</source>
         <translation>Bahn [mm]</translation>
@@ -729,9 +729,19 @@
         <translation>Keine Bearbeitungszeit: %1</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+14" />
+        <source>%1 (relative error about %2)</source>
+        <translation>%1 (relativer Fehler etwa %2)</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>Path %1 mm (contour offset by the tool radius); optimal plan on %2 grid points; computed in %3 ms</source>
         <translation>Bahn %1 mm (Kontur um den Werkzeugradius versetzt); zeitoptimaler Plan auf %2 Gitterpunkten; berechnet in %3 ms</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Not converged: the grid limit stopped the refinement first, so these times are estimates: %1.</source>
+        <translation>Nicht konvergiert: die Gittergrenze hat die Verfeinerung vorher beendet, diese Zeiten sind daher Schätzungen: %1.</translation>
     </message>
 </context>
 <context>

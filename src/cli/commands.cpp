@@ -261,8 +261,21 @@ int runAnalyze(const Arguments& args, std::ostream& out) {
 
 namespace {
 
-/// "AX,AY[,AZ]": 2 or 3 finite numbers > 0; a missing third axis is unlimited.
-Eigen::Vector3d parseAxes(const std::string& option, const std::string& text, const char* unit) {
+/// A machine limit or length given as an option: within [lo, hi] (the ranges in which the
+/// arithmetic is sound, as the project's validation has them).
+double checkInRange(const std::string& option, double value, double lo, double hi,
+                    const char* unit) {
+    if (!(value >= lo && value <= hi)) {
+        throw CliError{kInvalidInput, option,
+                       "must be between " + formatNumber(lo) + " and " + formatNumber(hi) + " " +
+                           unit + " (got " + formatNumber(value) + ")"};
+    }
+    return value;
+}
+
+/// "AX,AY[,AZ]": 2 or 3 finite numbers in [lo, hi]; a missing third axis is unlimited.
+Eigen::Vector3d parseAxes(const std::string& option, const std::string& text, double lo, double hi,
+                          const char* unit) {
     std::vector<double> values;
     std::size_t begin = 0;
     while (begin <= text.size()) {
@@ -277,13 +290,8 @@ Eigen::Vector3d parseAxes(const std::string& option, const std::string& text, co
         throw CliError{kInvalidInput, option,
                        "expects 2 or 3 comma-separated values (got \"" + text + "\")"};
     }
-    Eigen::Vector3d v(values[0], values[1], values.size() == 3 ? values[2] : kUnlimited);
-    for (int i = 0; i < static_cast<int>(values.size()); ++i) {
-        if (!(v[i] > 0)) {
-            throw CliError{kInvalidInput, option, "values must be > 0 (got \"" + text + "\")"};
-        }
-    }
-    return v;
+    for (const double v : values) checkInRange(option, v, lo, hi, unit);
+    return {values[0], values[1], values.size() == 3 ? values[2] : kUnlimited};
 }
 
 double parsePositive(const std::string& option, const std::string& text, const char* unit) {
@@ -373,14 +381,23 @@ int runTiming(const Arguments& args, std::ostream& out) {
         }
     }
     if (const auto v = args.option("--accel")) {
-        job.limits.accel = parseAxes("--accel", *v, "mm/s²");
+        job.limits.accel = parseAxes("--accel", *v, kMinMachineLimit, kMaxAccelMmS2, "mm/s²");
         haveAccel = true;
     }
-    if (const auto v = args.option("--vmax")) job.limits.vmax = parseAxes("--vmax", *v, "mm/s");
-    if (const auto v = args.option("--feed"))
-        job.limits.feedMax = parsePositive("--feed", *v, "mm/s");
-    if (const auto v = args.option("--step"))
-        job.limits.seedStep = parsePositive("--step", *v, "mm");
+    if (const auto v = args.option("--vmax")) {
+        job.limits.vmax = parseAxes("--vmax", *v, kMinMachineLimit, kMaxSpeedMmS, "mm/s");
+    }
+    if (const auto v = args.option("--feed")) {
+        job.limits.feedMax = checkInRange("--feed", parseFiniteNumber("--feed", *v, "mm/s"),
+                                          kMinMachineLimit, kMaxSpeedMmS, "mm/s");
+    }
+    // The step's bound relative to the path (at most kMaxSeedSteps steps) is the job's, named
+    // after where the step came from.
+    if (const auto v = args.option("--step")) {
+        job.limits.seedStep = checkInRange("--step", parseFiniteNumber("--step", *v, "mm"),
+                                           kMinLengthMm, kMaxLengthMm, "mm");
+    }
+    if (!loaded || args.option("--step")) job.stepLocation = "--step";
     if (!haveAccel) {
         throw CliError{kUsage, "--accel",
                        "is required: the project has no machining section or a point list is used"};
@@ -404,6 +421,15 @@ int runTiming(const Arguments& args, std::ostream& out) {
     if (r.gridPoints > 0) {
         json["grid_points"] = r.gridPoints;
         json["convergence"] = r.convergence;
+        json["converged"] = r.converged;
+        if (!r.converged) {
+            json["warning"] = "not converged: the grid limit of one plan (" +
+                              std::to_string(kMaxPlanPoints) +
+                              " points) stopped the refinement before every segment's time had "
+                              "settled to 1e-6 of itself; the total's estimated relative error "
+                              "is " +
+                              formatNumber(r.convergence);
+        }
     }
     if (args.hasFlag("--detail")) {
         Json detail = Json::array();
@@ -419,7 +445,8 @@ int runTiming(const Arguments& args, std::ostream& out) {
         }
         json["detail"] = std::move(detail);
     }
-    out << json.dump(2) << "\n";
+    // No number printed is non-finite: one that is ends the command with exit 3, named.
+    printJson(out, json);
     return kOk;
 }
 

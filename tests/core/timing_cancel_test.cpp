@@ -1,7 +1,7 @@
 // Cancellation of the machining-time computations: a flag set from another thread while a long
 // computation runs must stop it, with the error {"", "cancelled"}, within a bound far below the
-// computation's own duration. The workloads take 1–3 s each uncancelled on the development
-// machine (a 25-million-step seed walk, an 8-million-point plan); the bound is 100 ms, so a
+// computation's own duration. The workloads take 0.3–3 s each uncancelled on the development
+// machine (a 5-million-step seed walk, an 8-million-point plan); the bound is 100 ms, so a
 // loop that does not poll fails by an order of magnitude, while a polling one answers in about
 // a millisecond and has ample room for a loaded machine.
 
@@ -79,8 +79,9 @@ MachineLimits limits() {
     return lim;
 }
 
-/// One 1000 m line: with 0.02 mm steps, the seed walks 25 million steps to its middle.
-ToolPath longLine() { return ToolPath{{PathSegment::line({0, 0, 0}, {1e6, 0, 0})}}; }
+/// One 100 m line: with 0.01 mm steps (the most the seed method takes, kMaxSeedSteps = 1e7 over
+/// the path), the seed walks 5 million steps to its middle.
+ToolPath longLine() { return ToolPath{{PathSegment::line({0, 0, 0}, {1e5, 0, 0})}}; }
 
 /// The reference path: line, tangent quarter arc, line.
 ToolPath referencePath() {
@@ -91,7 +92,7 @@ ToolPath referencePath() {
 
 TEST(TimingCancel, SeedStopsWithinOneLongSegment) {
     MachineLimits lim = limits();
-    lim.seedStep = 0.02;
+    lim.seedStep = 0.01;
     const ToolPath path = longLine();
     const CancelRun run = cancelWhileRunning([&](const std::atomic<bool>* cancel) {
         return errorsOf(machiningTime(path, lim, TimingMethod::Seed, cancel));
@@ -102,7 +103,7 @@ TEST(TimingCancel, SeedStopsWithinOneLongSegment) {
 
 TEST(TimingCancel, SeedProfileStopsWithinOneLongSegment) {
     MachineLimits lim = limits();
-    lim.seedStep = 0.02;
+    lim.seedStep = 0.01;
     const ToolPath path = longLine();
     const CancelRun run = cancelWhileRunning([&](const std::atomic<bool>* cancel) {
         return errorsOf(timingProfile(path, lim, TimingMethod::Seed, 4000, cancel));

@@ -109,7 +109,12 @@ TimingOutcomePtr computeTiming(const ComputeRequest& request, const Contour& con
         return outcome;
     }
     outcome->lengthMm = timed.value().path.length();
-    for (std::size_t m = 0; m < 3; ++m) outcome->timesS[m] = timed.value().results[m].timeS;
+    for (std::size_t m = 0; m < 3; ++m) {
+        const TimingResult& r = timed.value().results[m];
+        outcome->timesS[m] = r.timeS;
+        outcome->converged[m] = r.converged;
+        outcome->convergence[m] = r.convergence;
+    }
     outcome->gridPoints = timed.value().results[2].gridPoints;
     outcome->profile = *timed.value().profile;
     outcome->computeMs = static_cast<double>(timer.nsecsElapsed()) / 1e6;

@@ -76,7 +76,11 @@ struct TimingOutcome {
     std::uint64_t generation = 0;
     Diagnostics errors;  ///< non-empty: no tool path (e.g. the tool is wider than a notch)
     std::array<double, 3> timesS{};  ///< seed, exact stop, optimal
-    std::size_t gridPoints = 0;      ///< of the optimal plan
+    /// Per method: whether the planner's refinement reached its tolerance (the seed always
+    /// does), and the estimated relative error of its time (TimingResult).
+    std::array<bool, 3> converged{true, true, true};
+    std::array<double, 3> convergence{};
+    std::size_t gridPoints = 0;  ///< of the optimal plan
     double lengthMm = 0.0;
     TimingMethod plotted = TimingMethod::Optimal;
     MachineLimits limits;

@@ -116,6 +116,7 @@ MachiningPanel::MachiningPanel(ProjectDocument* document, QWidget* parent)
     }
     layout->addLayout(times);
     m_status = new QLabel(this);
+    m_status->setObjectName("machiningStatus");
     m_status->setWordWrap(true);
     layout->addWidget(m_status);
 
@@ -232,11 +233,19 @@ void MachiningPanel::setOutcome(const TimingOutcomePtr& outcome) {
         return;
     }
     const int plotted = static_cast<int>(outcome->plotted);
+    QStringList estimates;
     for (int m = 0; m < 3; ++m) {
-        const QString text =
-            QStringLiteral("%1\n%2 s")
-                .arg(m_times[m]->property("name").toString(),
-                     QLocale().toString(outcome->timesS[static_cast<std::size_t>(m)], 'f', 4));
+        const auto k = static_cast<std::size_t>(m);
+        // A time whose refinement stopped short is an estimate, and shown as one.
+        const QString text = QStringLiteral("%1\n%2%3 s")
+                                 .arg(m_times[m]->property("name").toString(),
+                                      outcome->converged[k] ? QString() : QStringLiteral("≈ "),
+                                      QLocale().toString(outcome->timesS[k], 'f', 4));
+        if (!outcome->converged[k]) {
+            estimates << tr("%1 (relative error about %2)")
+                             .arg(m_times[m]->property("name").toString(),
+                                  QLocale().toString(outcome->convergence[k], 'g', 2));
+        }
         m_times[m]->setText(text);
         QFont f = m_times[m]->font();
         f.setBold(m == plotted);
@@ -247,6 +256,12 @@ void MachiningPanel::setOutcome(const TimingOutcomePtr& outcome) {
                           .arg(QLocale().toString(outcome->lengthMm, 'f', 2),
                                QLocale().toString(static_cast<qlonglong>(outcome->gridPoints)),
                                QLocale().toString(outcome->computeMs, 'f', 0)));
+    if (!estimates.isEmpty()) {
+        m_status->setText(m_status->text() + "\n" +
+                          tr("Not converged: the grid limit stopped the refinement first, so "
+                             "these times are estimates: %1.")
+                              .arg(estimates.join(", ")));
+    }
     // Made in the worker by the views' preparer; made here only without one (tests).
     auto data = std::dynamic_pointer_cast<const MachiningPlotData>(outcome->prepared);
     if (!data) data = makeMachiningPlotData(*outcome);

@@ -10,6 +10,23 @@ constexpr double kTiny = 1e-12;
 
 }  // namespace
 
+Diagnostics checkSeedStep(const ToolPath& path, double step, const std::string& location) {
+    if (!std::isfinite(step) || !(step >= kMinLengthMm)) {
+        return {{location, "must be a finite length of at least " + formatNumber(kMinLengthMm) +
+                               " mm (got " + formatNumber(step) + ")"}};
+    }
+    const double length = path.length();
+    const double steps = length / step;
+    if (!(steps <= kMaxSeedSteps)) {
+        return {{location, formatNumber(step) + " mm makes " + formatNumber(std::ceil(steps)) +
+                               " steps on this " + formatNumber(length) +
+                               " mm path; the seed method takes at most " +
+                               formatNumber(kMaxSeedSteps) + ": a step of at least " +
+                               formatNumber(length / kMaxSeedSteps) + " mm"}};
+    }
+    return {};
+}
+
 double seedStepSpeed(const Eigen::Vector3d& n, const Eigen::Vector3d& vPrev, double step,
                      const MachineLimits& lim) {
     double x = lim.feedMax;

@@ -8,11 +8,23 @@
 #include <algorithm>
 #include <atomic>
 #include <optional>
+#include <string>
 
 #include "common/cancel.h"
 #include "timing/machining_time.h"
 
 namespace cam {
+
+/// @brief Most steps the seed method takes on one path (path length / step): some tenths of a
+/// second of work. A step that small relative to the path is refused, not walked for minutes.
+inline constexpr double kMaxSeedSteps = 1e7;
+
+/// @brief A step the seed method can walk on `path`: finite, at least kMinLengthMm, and at most
+/// kMaxSeedSteps steps over the path's length. Errors are located `location` (the caller names
+/// where the step came from: `machining.step`, `--step`) and name the limit and the smallest
+/// step that would do.
+[[nodiscard]] Diagnostics checkSeedStep(const ToolPath& path, double step,
+                                        const std::string& location);
 
 /// @brief The seed's speed for one step of length `step` in direction n after axis speeds
 /// vPrev: the largest x with |n_i·x − v_i|·x/step <= a_i on every axis, capped by the feed.
@@ -42,7 +54,11 @@ bool walkSeed(const PathSegment& segment, const MachineLimits& lim, Visit&& visi
         if (++count % kCancelPollInterval == 0 && cancelRequested(cancel)) return false;
         step.s = s;
         step.length = std::min(lim.seedStep, half - s);
-        step.direction = (segment.point(s + step.length) - segment.point(s)).normalized();
+        // The chord's direction. On an arc that is the tangent half way along it, which does not
+        // subtract the large coordinates of a point on a circle of huge radius from each other.
+        step.direction = segment.kind == PathSegment::Kind::Line
+                             ? segment.tangent(0.0)
+                             : segment.tangent(s + step.length / 2.0);
         step.speed = seedStepSpeed(step.direction, step.previousVelocity, step.length, lim);
         visit(step);
         step.previousVelocity = step.direction * step.speed;

@@ -1,6 +1,9 @@
 #include "timing/timing_job.h"
 
+#include <algorithm>
 #include <utility>
+
+#include "timing/seed_method.h"
 
 namespace cam {
 
@@ -20,6 +23,14 @@ Result<TimedPath> timeContour(const Contour& contour, const TimingJob& job,
 }
 
 Result<TimedPath> timePath(ToolPath path, const TimingJob& job, const std::atomic<bool>* cancel) {
+    const bool seed =
+        job.profileMethod == TimingMethod::Seed ||
+        std::find(job.methods.begin(), job.methods.end(), TimingMethod::Seed) != job.methods.end();
+    if (seed) {
+        // Refused before anything is computed, and named after where the step came from.
+        const Diagnostics step = checkSeedStep(path, job.limits.seedStep, job.stepLocation);
+        if (!step.empty()) return step;
+    }
     TimedPath timed;
     timed.path = std::move(path);
     for (const TimingMethod method : job.methods) {

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "common/diagnostic.h"
@@ -24,6 +25,8 @@ struct TimingJob {
     /// Also the feed and axis-acceleration profile of this method, on about profilePoints points.
     std::optional<TimingMethod> profileMethod;
     std::size_t profilePoints = 4000;
+    /// Where the seed step came from, for its errors: `machining.step` (a project's), `--step`.
+    std::string stepLocation = "machining.step";
 };
 
 /// @brief The job a project's `machining` section describes: its tool radius and its limits.
@@ -39,8 +42,9 @@ struct TimedPath {
 
 /// @brief The contour's tool path (toolPathFromContour with the job's tool radius), then the
 /// job on it. Errors: the tool path's, located `contour[k]`; the limits', located as
-/// machiningTime does (`accel[i]`, `feed`, …); or {"", "cancelled"} once `cancel` is set, which
-/// every step polls.
+/// machiningTime does (`accel[i]`, `feed`, …); a seed step too small for the path (more than
+/// kMaxSeedSteps steps), located `stepLocation`, before any work; or {"", "cancelled"} once
+/// `cancel` is set, which every step polls.
 [[nodiscard]] Result<TimedPath> timeContour(const Contour& contour, const TimingJob& job,
                                             const std::atomic<bool>* cancel = nullptr);
 

@@ -2,6 +2,7 @@
 #include "geometry/planar.h"
 
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "analysis/analysis.h"
@@ -74,13 +75,43 @@ double ToolPath::length() const {
     return total;
 }
 
+namespace {
+
+constexpr double kUnlimitedReach = std::numeric_limits<double>::infinity();
+
+/// The largest coordinate magnitude on the arc around `center` of `radius` that starts in the
+/// direction `from` (from the centre) and sweeps `sweep`: its end points and the extremes of the
+/// circle (at 0°, 90°, 180°, 270°) that it passes.
+double arcReach(const Vec2& center, double radius, const Vec2& from, double sweep) {
+    const double start = std::atan2(from.y(), from.x());
+    double reach = 0.0;
+    auto take = [&](double angle) {
+        const Vec2 p = center + radius * Vec2(std::cos(angle), std::sin(angle));
+        // A circle too large for a double (bulge 1.7e308) has no finite point: it reaches "inf".
+        const double far = p.allFinite() ? p.cwiseAbs().maxCoeff() : kUnlimitedReach;
+        reach = std::max(reach, far);
+    };
+    take(start);
+    take(start + sweep);
+    for (int q = 0; q < 4; ++q) {
+        const double extreme = q * kPi / 2.0;
+        // How far along the sweep's direction the extreme lies from the start, in [0, 2π).
+        double along = std::remainder(sweep >= 0 ? extreme - start : start - extreme, kTwoPi);
+        if (along < 0) along += kTwoPi;
+        if (along <= std::abs(sweep)) take(extreme);
+    }
+    return reach;
+}
+
+}  // namespace
+
 Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
     Diagnostics errors;
     auto at = [](std::size_t k) { return "point[" + std::to_string(k) + "]"; };
     for (std::size_t k = 0; k < points.size(); ++k) {
         const PathPoint& p = points[k];
         if (!p.position.allFinite() || !std::isfinite(p.bulge) ||
-            p.position.cwiseAbs().maxCoeff() > 1e6) {
+            p.position.cwiseAbs().maxCoeff() > kMaxPathCoordinateMm) {
             errors.push_back({at(k),
                               "coordinates must be finite, at most 1e6 mm, and the bulge "
                               "finite"});
@@ -98,7 +129,7 @@ Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
             continue;
         }
         const double bulge = points[k].bulge;
-        if (bulge == 0.0) {
+        if (std::abs(bulge) <= kStraightBulge) {
             path.segments.push_back(PathSegment::line(a, b));
             continue;
         }
@@ -114,16 +145,29 @@ Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
             errors.push_back({at(k + 1), "an arc needs two distinct points in the XY plane"});
             continue;
         }
-        // DXF bulge b = tan(θ/4): the centre sits (c/2)·(1 − b²)/(2b) to the left of the chord.
+        // DXF bulge b = tan(θ/4): the centre sits (c/4)·(1/b − b) to the left of the chord and
+        // the radius is (c/4)·(1/|b| + |b|) (written so that neither b² nor 1/b² overflows).
         const double theta = 4.0 * std::atan(bulge);
         const Vec2 left(-chord.y() / c, chord.x() / c);
-        const Vec2 center =
-            (xy(a) + xy(b)) / 2.0 + left * (c / 2.0) * (1.0 - bulge * bulge) / (2.0 * bulge);
-        const double radius = (xy(a) - center).norm();
+        const double offset = (c / 4.0) / bulge - (c / 4.0) * bulge;
+        const double radius = (c / 4.0) / std::abs(bulge) + (c / 4.0) * std::abs(bulge);
+        const Vec2 center = (xy(a) + xy(b)) / 2.0 + left * offset;
+        // The arc stays where the points may be: a large bulge on a long chord is a circle of
+        // huge radius (bulge 1e9 on a 10 mm chord: 2.5e9 mm), with a length and times to match.
+        const double reach = arcReach(center, radius, (xy(a) - center), theta);
+        if (!(reach <= kMaxPathCoordinateMm)) {
+            errors.push_back({at(k), "the arc (bulge " + formatNumber(bulge) + ") reaches " +
+                                         formatNumber(reach) +
+                                         " mm from the origin; a path must stay within " +
+                                         formatNumber(kMaxPathCoordinateMm) + " mm"});
+            continue;
+        }
         const Vec2 ra = xy(a) - center;
         path.segments.push_back(
             PathSegment::arc(center, radius, std::atan2(ra.y(), ra.x()), theta, a.z()));
-        path.segments.back().end = b;  // exactly the given point, not its recomputation
+        // Exactly the given points, not their recomputation from a far centre.
+        path.segments.back().start = a;
+        path.segments.back().end = b;
     }
     if (!errors.empty()) return errors;
     return path;

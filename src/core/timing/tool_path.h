@@ -51,8 +51,18 @@ struct PathPoint {
     double bulge = 0.0;
 };
 
+/// @brief Coordinates of a point list, and every point of its arcs, are at most this, mm.
+inline constexpr double kMaxPathCoordinateMm = 1e6;
+
+/// @brief A bulge of at most this magnitude makes a straight segment: such an arc turns from its
+/// chord by at most 2e-9 rad at its ends (a hundredth of the tangent tolerance,
+/// kTangentToleranceDeg) and bulges out by at most 5e-10 of the chord's length. (Taken as an
+/// arc, a bulge of 1e-300 would put the centre 1e300 chord lengths away.)
+inline constexpr double kStraightBulge = 1e-9;
+
 /// @brief Lines and arcs through the points. Errors are located as `point[k]` (a point
-/// repeated, an arc whose end points are at different heights, a non-finite value).
+/// repeated, an arc whose end points are at different heights, a non-finite value, a
+/// coordinate beyond kMaxPathCoordinateMm, an arc reaching beyond it).
 [[nodiscard]] Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points);
 
 /// @brief How closely a spline segment's tangent arcs (biarcs) follow it in a tool path, mm.
