@@ -31,6 +31,13 @@ commands:
                                         round the corner between contour[K-1] and contour[K]
                                         by a tangent arc (radius given or V²/(vae·A))
 
+  export PROJECT --format csv|dxf|svg|camtable --out FILE
+         [--tolerance MM] [--points N] [--dialect csv] [--tool-radius MM]
+         [--polyline] [--spline-entities] [--centres]
+                                        the profile for CAD (dxf: LINE/ARC on layer CONTOUR,
+                                        TOOLPATH with --tool-radius, CENTRES; svg: 1:1 in mm),
+                                        the sampled turn (csv) or a servo cam table (camtable)
+
 units: mm, s, degrees; v in mm/s, a in mm/s², j in mm/s³.
 exit codes: 0 ok, 1 usage error, 2 invalid input (or results that cannot be written),
             3 not computable.
@@ -57,6 +64,10 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
          {"--detail"},
          0},
         {"fillet", 1, {"--joint", "--radius", "--speed", "--accel", "--vae", "--out"}, {}},
+        {"export",
+         1,
+         {"--format", "--out", "--tolerance", "--points", "--dialect", "--tool-radius"},
+         {"--polyline", "--spline-entities", "--centres"}},
     };
     try {
         const Arguments parsed = parseArguments(args, commands);
@@ -66,6 +77,7 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
         if (parsed.command == "analyze") return runAnalyze(parsed, out);
         if (parsed.command == "timing") return runTiming(parsed, out);
         if (parsed.command == "fillet") return runFillet(parsed, out);
+        if (parsed.command == "export") return runExport(parsed, out);
         return kUsage;
     } catch (const CliError& e) {
         out.flush();

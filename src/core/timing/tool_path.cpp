@@ -303,6 +303,13 @@ bool trimmedWithin(const PathSegment& original, const PathSegment& trimmed) {
 
 Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius,
                                      const std::atomic<bool>* cancel) {
+    auto offset = offsetContour(contour, toolRadius, kSplineToleranceMm, cancel);
+    if (!offset.ok()) return offset.errors();
+    return std::move(offset.value().path);
+}
+
+Result<ContourOffset> offsetContour(const Contour& contour, double toolRadius,
+                                    double splineToleranceMm, const std::atomic<bool>* cancel) {
     Diagnostics errors;
     const std::size_t n = contour.size();
     // Per contour segment, its offset pieces (one, or a spline's biarcs).
@@ -318,7 +325,7 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius,
         if (isSpline(seg.type)) {
             // Tangent arc pairs within 0.1 µm: lines and arcs for the planner, G1 throughout.
             for (const PathSegment& piece :
-                 biarcsOf(CubicBezier{seg.bezierKernel.p}, kSplineToleranceMm, 0.0, cancel)) {
+                 biarcsOf(CubicBezier{seg.bezierKernel.p}, splineToleranceMm, 0.0, cancel)) {
                 const auto shifted = offsetPiece(piece, toolRadius);
                 if (!shifted) {
                     errors.push_back({at, "the tool radius " + formatNumber(toolRadius) +
@@ -361,12 +368,14 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius,
     // Biarcs stop early when cancelled: never hand out a path built from them.
     if (cancelRequested(cancel)) return cancelledDiagnostics();
     if (!errors.empty()) return errors;
-    ToolPath path;
+    ContourOffset result;
+    ToolPath& path = result.path;
     if (toolRadius == 0.0 || n == 1) {
-        for (const auto& pieces : offset) {
-            path.segments.insert(path.segments.end(), pieces.begin(), pieces.end());
+        for (std::size_t k = 0; k < n; ++k) {
+            path.segments.insert(path.segments.end(), offset[k].begin(), offset[k].end());
+            result.origin.insert(result.origin.end(), offset[k].size(), k);
         }
-        return path;
+        return result;
     }
 
     std::vector<std::vector<PathSegment>> joined = offset;
@@ -418,9 +427,13 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius,
     if (!errors.empty()) return errors;
     for (std::size_t k = 0; k < n; ++k) {
         path.segments.insert(path.segments.end(), joined[k].begin(), joined[k].end());
-        if (cornerArcs[k]) path.segments.push_back(*cornerArcs[k]);
+        result.origin.insert(result.origin.end(), joined[k].size(), k);
+        if (cornerArcs[k]) {
+            path.segments.push_back(*cornerArcs[k]);
+            result.origin.push_back(kCornerPiece);
+        }
     }
-    return path;
+    return result;
 }
 
 }  // namespace cam
