@@ -573,7 +573,7 @@ int runExport(const Arguments& args, std::ostream& out) {
                            "is the project being exported; choose another file"};
         }
     }
-    double tolerance = kDefaultExportToleranceMm;
+    double tolerance = *format == "svg" ? kSvgToleranceMm : kDefaultExportToleranceMm;
     if (const auto text = args.option("--tolerance")) {
         tolerance = parseFiniteNumber("--tolerance", *text, "a tolerance in mm");
     }

@@ -10,9 +10,13 @@
 
 namespace cam {
 
+/// @brief The default spline tolerance of an SVG drawing, mm.
+inline constexpr double kSvgToleranceMm = 1e-6;
+
 struct SvgOptions {
-    /// Bézier and Hermite segments as tangent arc pairs within this distance, mm.
-    double toleranceMm = kDefaultExportToleranceMm;
+    /// Bézier and Hermite segments as tangent arc pairs within this distance, mm: by default
+    /// the 1e-6 mm to which exports.md holds the whole path.
+    double toleranceMm = kSvgToleranceMm;
     /// Shown above the drawing and as its <title>.
     std::string title;
 };
