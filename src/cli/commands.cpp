@@ -611,10 +611,17 @@ int runExport(const Arguments& args, std::ostream& out) {
             options.points = static_cast<std::size_t>(
                 parseCount("--points", *p, kMinCamTablePoints, kMaxCamTablePoints));
         }
-        if (const auto d = args.option("--dialect"); d && *d != "csv") {
-            throw CliError{kInvalidInput, "--dialect",
-                           "unknown cam table dialect '" + *d + "' (csv)"};
+        if (const auto d = args.option("--dialect")) {
+            if (*d == "codesys") {
+                options.dialect = CamTableDialect::Codesys;
+            } else if (*d != "csv") {
+                throw CliError{kInvalidInput, "--dialect",
+                               "unknown cam table dialect '" + *d + "' (csv, codesys)"};
+            }
         }
+        options.name = loaded.project.name.empty()
+                           ? std::filesystem::path(input).stem().stem().string()
+                           : loaded.project.name;
         text = camTableText(loaded.contour, options);
     }
     if (!text.ok()) exportFailed(input, text.errors());

@@ -32,7 +32,7 @@ commands:
                                         by a tangent arc (radius given or V²/(vae·A))
 
   export PROJECT --format csv|dxf|svg|camtable --out FILE
-         [--tolerance MM] [--points N] [--dialect csv] [--tool-radius MM]
+         [--tolerance MM] [--points N] [--dialect csv|codesys] [--tool-radius MM]
          [--polyline] [--spline-entities] [--centres]
                                         the profile for CAD (dxf: LINE/ARC on layer CONTOUR,
                                         TOOLPATH with --tool-radius, CENTRES; svg: 1:1 in mm),

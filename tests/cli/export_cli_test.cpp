@@ -128,6 +128,22 @@ TEST_P(ExportEveryCam, CamTablePositionsAreTheLiftToABillionthOfTheStroke) {
     EXPECT_LE(s.value("worst_position_rel", 1.0), 1e-9);
 }
 
+// Fact: the CODESYS table is Structured Text with ARRAY[0..N] OF SMC_CAMXYVA (the knot at 360°
+// repeating the first) and an MC_CAM_REF with byType 3 (XYVA), byVarType 6 (LREAL) and
+// nElements N + 1; its knots are the lift to 1e-9 of the stroke, and the fifth-order
+// polynomials a drive puts through them follow the profile between the knots (away from
+// joints) to 1e-4 of the stroke — which they do only with slopes per master degree.
+TEST_P(ExportEveryCam, CodesysCamIsTheLiftInXyvaKnots) {
+    const std::string out = dir.file("cam.st");
+    const auto r = test::runCli(
+        {"export", GetParam(), "--format", "camtable", "--dialect", "codesys", "--out", out});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Json s = check("codesys", GetParam(), out);
+    EXPECT_EQ(s.value("knots", 0), 361);
+    EXPECT_LE(s.value("worst_knot_rel", 1.0), 1e-9);
+    EXPECT_LE(s.value("worst_smooth_midpoint_rel", 1.0), 1e-4);
+}
+
 INSTANTIATE_TEST_SUITE_P(Cams, ExportEveryCam, ::testing::ValuesIn(cams()), camName);
 
 /// A project file of the given contour, written into `dir`.
@@ -241,7 +257,9 @@ TEST(ExportArguments, BadArgumentsAreLocatedAndLeaveNoFile) {
         {{"--format", "dxf", "--out", out, "--tolerance", "nan"}, 2, "--tolerance"},
         {{"--format", "camtable", "--out", out, "--points", "0"}, 2, "--points"},
         {{"--format", "camtable", "--out", out, "--points", "-5"}, 2, "--points"},
-        {{"--format", "camtable", "--out", out, "--dialect", "siemens"}, 2, "--dialect"},
+        {{"--format", "camtable", "--out", out, "--dialect", "siemens"},
+         2,
+         "--dialect: unknown cam table dialect 'siemens' (csv, codesys)"},
         {{"--format", "svg", "--out", out, "--points", "10"},
          1,
          "--points: is not an option of --format svg"},

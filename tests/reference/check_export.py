@@ -457,9 +457,104 @@ def check_camtable(project, path):
     return summary
 
 
+def lift_and_slopes(project, min_r, deg):
+    """Every (lift, r' per degree, r'' per degree^2) the profile has at a master angle: one, or
+    both sides' within a rounding of a joint."""
+    phi = mpmath.radians(mpf(deg))
+    try:
+        seg, phi_n = ref.find_segment(project, phi)
+    except ref.ReferenceError:
+        seg, phi_n = ref.find_segment(project, phi + mpf("1e-25"))
+    candidates = [(seg, phi_n)]
+    segments = project["segments"]
+    k = seg["index"]
+    if abs(phi_n - seg["start"]) < mpf("1e-12"):
+        candidates.append((segments[k - 1], phi_n if k > 0 else phi_n + project["turn"]))
+    if abs(phi_n - seg["end"]) < mpf("1e-12"):
+        candidates.append((segments[(k + 1) % len(segments)],
+                           phi_n if k + 1 < len(segments) else phi_n - project["turn"]))
+    per_deg = math.pi / 180
+    return [(float(c["r"](at) - min_r), float(one_sided_slope(c, at)) * per_deg)
+            for c, at in candidates]
+
+
+def quintic(x0, x1, k0, k1, x):
+    """The fifth-order polynomial through two XYVA knots (position, slope, curvature at both
+    ends), evaluated at x: the interpolation of an XYVA cam (CODESYS byType 3)."""
+    h = x1 - x0
+    t = (x - x0) / h
+    # Hermite basis of degree five on [0, 1] for value, first and second derivative.
+    h00 = 1 - 10 * t**3 + 15 * t**4 - 6 * t**5
+    h10 = t - 6 * t**3 + 8 * t**4 - 3 * t**5
+    h20 = 0.5 * t**2 - 1.5 * t**3 + 1.5 * t**4 - 0.5 * t**5
+    h01 = 10 * t**3 - 15 * t**4 + 6 * t**5
+    h11 = -4 * t**3 + 7 * t**4 - 3 * t**5
+    h21 = 0.5 * t**3 - t**4 + 0.5 * t**5
+    return (h00 * k0[1] + h * h10 * k0[2] + h * h * h20 * k0[3] +
+            h01 * k1[1] + h * h11 * k1[2] + h * h * h21 * k1[3])
+
+
+def check_codesys(project, path):
+    text = open(path, encoding="ascii").read()
+    knots = [tuple(float(v) for v in m) for m in re.findall(
+        r"\(dX := ([^,]+), dY := ([^,]+), dV := ([^,]+), dA := ([^)]+)\)", text)]
+    declared = re.search(r"ARRAY\[0\.\.(\d+)\] OF SMC_CAMXYVA", text)
+    ref_block = re.search(r"(\w+) : MC_CAM_REF := \(([^;]*)\);", text, re.S)
+    summary = {"knots": len(knots)}
+    if not declared or int(declared.group(1)) + 1 != len(knots):
+        fail("ARRAY[0..n] does not declare the knots written")
+    if not ref_block:
+        fail("no MC_CAM_REF")
+        return summary
+    fields = dict(re.findall(r"(\w+) := ([^,\n)]+\)?)", ref_block.group(2)))
+    summary["cam_ref"] = fields
+    want = {"byType": "3", "byVarType": "6", "nElements": str(len(knots)), "xStart": "0.0",
+            "xEnd": "360.0"}
+    for key, value in want.items():
+        if fields.get(key) != value:
+            fail(f"MC_CAM_REF {key} is {fields.get(key)}, not {value}")
+    if "pce" not in fields or not fields["pce"].startswith("ADR("):
+        fail("MC_CAM_REF.pce is not ADR(the knots)")
+    for literal in re.findall(r"d[XYVA] := ([^,)]+)", text):
+        if "." not in literal:
+            fail(f"{literal} is not an LREAL literal (no decimal point)")
+            break
+    min_r = reference_min_r(project)
+    lifts = [min(lift_and_slopes(project, min_r, k[0]), key=lambda c: abs(c[0] - k[1]))
+             for k in knots]
+    stroke = max(l for l, _ in lifts) - min(l for l, _ in lifts)
+    worst = max(abs(k[1] - l[0]) for k, l in zip(knots, lifts))
+    summary["worst_knot_rel"] = worst / stroke
+    if worst > 1e-9 * stroke:
+        fail(f"a knot is {worst} mm from the lift")
+    if knots[-1][0] != 360.0 or knots[-1][1:] != knots[0][1:]:
+        fail("the last knot is not the first at 360 deg")
+    # Between knots the drive follows the quintic: it must follow the profile, which it does
+    # only if dV and dA are per master degree.
+    # Where a joint lies in the interval (the curvature jumps there) no quintic can follow;
+    # elsewhere it must, to the interpolation's own error: at most 8e-6 of the stroke on the
+    # test cams at 1 degree (the tight notch of notch-flat), where slopes per radian instead of
+    # per degree would be off by a good part of the stroke.
+    joints = [float(mpmath.degrees(seg["start"])) % 360.0 for seg in project["segments"]]
+    worst_mid = worst_smooth = 0.0
+    for k0, k1 in zip(knots, knots[1:]):
+        x = (k0[0] + k1[0]) / 2
+        exact = lift_and_slopes(project, min_r, x)[0][0]
+        error = abs(quintic(k0[0], k1[0], k0, k1, x) - exact)
+        worst_mid = max(worst_mid, error)
+        if not any(k0[0] - 1e-9 <= j <= k1[0] + 1e-9 or k0[0] - 1e-9 <= j + 360 <= k1[0] + 1e-9
+                   for j in joints):
+            worst_smooth = max(worst_smooth, error)
+    summary["worst_midpoint_rel"] = worst_mid / stroke
+    summary["worst_smooth_midpoint_rel"] = worst_smooth / stroke
+    if worst_smooth > 1e-4 * stroke:
+        fail(f"between knots away from joints the quintic is {worst_smooth} mm off the lift")
+    return summary
+
+
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("kind", choices=["dxf", "svg", "camtable"])
+    parser.add_argument("kind", choices=["dxf", "svg", "camtable", "codesys"])
     parser.add_argument("project")
     parser.add_argument("file")
     parser.add_argument("--tolerance", type=float, default=0.001)
@@ -470,6 +565,8 @@ def main():
         summary = check_dxf(project, args.file, args.tolerance, args.tool_radius)
     elif args.kind == "svg":
         summary = check_svg(project, args.file, args.tolerance)
+    elif args.kind == "codesys":
+        summary = check_codesys(project, args.file)
     else:
         summary = check_camtable(project, args.file)
     summary["problems"] = problems
