@@ -455,20 +455,6 @@ TEST(TimingRefinement, TheIssuesArcsAreEachTimedAsTheReference) {
     }
 }
 
-/// Knuth's MMIX linear congruential generator: the same numbers on every platform.
-class Lcg {
-public:
-    explicit Lcg(std::uint64_t seed) : m_state(seed * 2654435761ULL + 1ULL) {}
-    double uniform() {
-        m_state = m_state * 6364136223846793005ULL + 1442695040888963407ULL;
-        return static_cast<double>(m_state >> 11) * (1.0 / 9007199254740992.0);
-    }
-    double range(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-
-private:
-    std::uint64_t m_state;
-};
-
 /// A long line (10 to 50 m) and then 300 to 600 short arcs (chords 0.05 to 0.5 mm, bulges of
 /// either sense from 0.05 to 1.5), the fraction `corners` of them after a kink of 0.3 to 2.5
 /// rad, the others continuing the previous one tangentially. A global grid spaced for the line
@@ -476,7 +462,7 @@ private:
 /// A bulge b arc along a chord heading φ starts heading φ − 2·atan(b) and ends heading
 /// φ + 2·atan(b), so for a tangent joint the next chord heads (end heading) + 2·atan(b').
 std::vector<PathPoint> shortArcPath(std::uint64_t seed, double corners) {
-    Lcg g(seed);
+    test::Lcg g(seed);
     std::vector<PathPoint> points;
     Vector3d p(0, 0, 0);
     double heading = g.range(-kPi, kPi);
