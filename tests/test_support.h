@@ -9,6 +9,7 @@
 #include <fcntl.h>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -135,6 +136,20 @@ inline std::vector<std::string> folderEntries(const std::filesystem::path& folde
     std::sort(names.begin(), names.end());
     return names;
 }
+
+/// Knuth's MMIX linear congruential generator: the same numbers on every platform.
+class Lcg {
+public:
+    explicit Lcg(std::uint64_t seed) : m_state(seed * 2654435761ULL + 1ULL) {}
+    double uniform() {
+        m_state = m_state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<double>(m_state >> 11) * (1.0 / 9007199254740992.0);
+    }
+    double range(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+
+private:
+    std::uint64_t m_state;
+};
 
 inline RunResult runCli(const std::vector<std::string>& args) { return run(CAMWRIGHT_CLI, args); }
 

@@ -522,6 +522,44 @@ TEST(Fillet, RefusesATangentJoint) {
     EXPECT_EQ(range.errors().front().location, "contour[1]/contour[0]");
 }
 
+TEST(Fillet, RangeStartsAtTheSmallestRadiusEvenAboveAGap) {
+    // Found by the fillet fuzzer (tests/fuzz/regressions/fillet/): a huge inner arc meets a line
+    // that starts 0.36 mm from the rotation centre. Radii up to ~1.4e-9 mm fit, then a gap, and
+    // radii from 1e-6 mm to ~1.15 mm fit again. The scan for the largest radius started near 0,
+    // stopped at the gap and reported the empty range 1e-6 .. 1.4e-9 mm; the range starts at
+    // the smallest radius a project holds, so the scan starts there too.
+    const std::vector<SegmentSpec> c = {
+        arc({-306136.1404167459, -30846.08291410225}, 307686.18867687264, Branch::Inner, -128.0,
+            -91.23040380047506),
+        line({-0.007632961612482174, -0.3553867894612641}, {93.60551787574047, -131.040400923125},
+             -91.23040380047506),
+        line({93.60551787574047, -131.040400923125}, {106.13019436541605, -33.85252902517654},
+             -54.46080760095012),
+        arc({63.6192824427185, 116.51540800756763}, 156.26162075181054, Branch::Outer,
+            -17.69121140142518, 19.078384798099762),
+        line({213.98873159443394, 74.00984505643936}, {105.05459473054471, 154.8619438085457},
+             19.078384798099762),
+        line({105.05459473054471, 154.8619438085457}, {-4.4504522373502216, 97.3475408516744},
+             55.8479809976247),
+        line({-4.4504522373502216, 97.3475408516744}, {-112.61164903760955, 137.15825628901152},
+             92.61757719714964),
+        line({-112.61164903760955, 137.15825628901152}, {-46.78784717276267, 11.529636299042764},
+             129.3871733966746),
+        line({-46.78784717276267, 11.529636299042764},
+             {-0.03847884220785364, -0.049250672100420126}, 166.15676959619952)};
+    expectValid(c);
+    const auto range = filletRange(c, 1);
+    ASSERT_TRUE(range.ok()) << range.errors().front().text();
+    EXPECT_EQ(range.value().minRadius, 1e-6);
+    EXPECT_GT(range.value().maxRadius, range.value().minRadius);
+    for (double rho :
+         {1e-6, std::sqrt(1e-6 * range.value().maxRadius), 0.999 * range.value().maxRadius}) {
+        const auto f = filletJoint(c, 1, rho);
+        ASSERT_TRUE(f.ok()) << rho << ": " << f.errors().front().text();
+        expectValid(f.value().contour);
+    }
+}
+
 TEST(Fillet, RefusesAnInvalidContourAndAMissingJoint) {
     auto broken = square();
     std::get<Line>(broken[1].shape).from = {10, 11};  // opens the joint at (10, 10)

@@ -607,20 +607,6 @@ TEST(TimingOptimal, SmoothJointLetsPathAccelerationJump) {
 // 5. Optimal <= exact stop; equality when every joint is a corner
 // =============================================================================================
 
-/// Knuth's MMIX linear congruential generator: the same numbers on every platform.
-class Lcg {
-public:
-    explicit Lcg(std::uint64_t seed) : m_state(seed * 2654435761ULL + 1ULL) {}
-    double uniform() {
-        m_state = m_state * 6364136223846793005ULL + 1442695040888963407ULL;
-        return static_cast<double>(m_state >> 11) * (1.0 / 9007199254740992.0);
-    }
-    double range(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-
-private:
-    std::uint64_t m_state;
-};
-
 struct RandomPath {
     std::vector<RefPiece> pieces;
     std::vector<bool> tangentToPrevious;
@@ -631,7 +617,7 @@ struct RandomPath {
 /// rad (a corner), and 3D lines (a corner on both sides). Random limits. Every draw is
 /// sequenced explicitly so the numbers match the Python prototype.
 RandomPath randomPath(std::uint64_t seed) {
-    Lcg g(seed);
+    test::Lcg g(seed);
     RandomPath r;
     std::array<double, 3> accel{}, vmax{};
     accel[0] = g.range(100, 1000);

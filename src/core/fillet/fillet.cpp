@@ -213,10 +213,6 @@ std::string reason(const Corner& k, Failure f, bool atBound) {
     return "";
 }
 
-std::string nothingFits(const Corner& k, Failure why) {
-    return "no fillet radius fits at this joint (" + reason(k, why, false) + ")";
-}
-
 /// Ten significant digits: the bound is computed to ~1e-13, the message need not show noise.
 std::string rounded(double v) {
     char buffer[32];
@@ -285,21 +281,25 @@ struct Bound {
     Failure why = Failure::None;
 };
 
-/// Scan rho upwards from (nearly) 0 in small geometric steps and bisect the first failure.
+/// Scan rho upwards from (nearly) the smallest radius a project holds in small geometric steps
+/// and bisect the first failure.
 Bound largestRadius(const Corner& k) {
     auto fits = [&](double rho) { return solve(k, rho).failure == Failure::None; };
     // Start where the tangent points sit ~1e-9 of the joint's size from it (for two lines they
-    // are rho·tan(|turn|/2) away): far above rounding, far below any real bound.
+    // are rho·tan(|turn|/2) away): far above rounding, far below any real bound. But never below
+    // kMinLengthMm: feasible radii need not form one interval, and a scan from below it could
+    // stop at a gap under it and report a range that ends before it begins.
     const double scale = std::max(k.joint.norm(), 1e-300);
     const double start = 1e-9 * scale / std::tan(0.5 * std::min(std::abs(k.turn), 3.0));
+    const double first = std::max(start, kMinLengthMm);
     double lo = 0.0;
-    for (double s : {start, start * 1e-3, start * 1e-6}) {
+    for (double s : {first, std::max(start * 1e-3, kMinLengthMm), kMinLengthMm}) {
         if (fits(s)) {
             lo = s;
             break;
         }
     }
-    if (lo == 0.0) return {0.0, solve(k, start).failure};
+    if (lo == 0.0) return {0.0, solve(k, first).failure};
     constexpr double kStep = 1.02;  // fine enough that a narrow infeasible gap is not skipped
     double hi = lo * kStep;
     while (fits(hi)) {
@@ -311,6 +311,15 @@ Bound largestRadius(const Corner& k) {
         (fits(mid) ? lo : hi) = mid;
     }
     return {lo, solve(k, hi).failure};
+}
+
+/// No range of radii from kMinLengthMm up fits (the scan found none, or only kMinLengthMm
+/// itself, which leaves the range [min, max) empty).
+bool nothingFits(const Bound& bound) { return bound.maxRadius <= kMinLengthMm; }
+
+std::string nothingFitsMessage(const Corner& k, const Bound& bound) {
+    return "no fillet radius of at least " + formatNumber(kMinLengthMm) +
+           " mm fits at this joint (" + reason(k, bound.why, bound.maxRadius > 0.0) + ")";
 }
 
 FilletResult build(const Corner& k, const std::vector<SegmentSpec>& contour, std::size_t joint,
@@ -355,9 +364,7 @@ Result<FilletRange> filletRange(const std::vector<SegmentSpec>& contour, std::si
     if (!corner.ok()) return corner.errors();
     const Corner& k = corner.value();
     const Bound bound = largestRadius(k);
-    if (bound.maxRadius == 0.0) {
-        return Diagnostics{{k.location, nothingFits(k, bound.why)}};
-    }
+    if (nothingFits(bound)) return Diagnostics{{k.location, nothingFitsMessage(k, bound)}};
     return FilletRange{kMinLengthMm, bound.maxRadius};
 }
 
@@ -395,8 +402,8 @@ Result<FilletResult> filletJoint(const std::vector<SegmentSpec>& contour, std::s
     }
     const std::string asked = "radius " + formatNumber(rho) + " mm";
     const Bound bound = largestRadius(k);
-    if (bound.maxRadius == 0.0) {
-        return Diagnostics{{k.location, asked + " does not fit: " + nothingFits(k, bound.why)}};
+    if (nothingFits(bound)) {
+        return Diagnostics{{k.location, asked + " does not fit: " + nothingFitsMessage(k, bound)}};
     }
     const std::string below = "radii below " + rounded(bound.maxRadius) + " mm";
     if (!(rho > 0.0) || !std::isfinite(rho)) {

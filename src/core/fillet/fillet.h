@@ -21,9 +21,10 @@ namespace cam {
 ///
 /// minRadius is always kMinLengthMm (1e-6 mm), the smallest radius a project holds: geometry
 /// sets no lower bound (the speed does, see minimumSwitchRadius). maxRadius is where the first
-/// condition fails as rho grows from 0: a tangent point reaches the far end of its segment, no
-/// circle of that radius touches both neighbours inside the corner any more, or the follower ray
-/// would meet the fillet twice. It is at most 1e6 mm, the largest length a project holds.
+/// condition fails as rho grows from minRadius: a tangent point reaches the far end of its
+/// segment, no circle of that radius touches both neighbours inside the corner any more, or the
+/// follower ray would meet the fillet twice. It is at most 1e6 mm, the largest length a project
+/// holds.
 struct FilletRange {
     double minRadius = kMinLengthMm;
     double maxRadius = 0.0;
@@ -64,7 +65,9 @@ struct FilletResult {
                                                std::size_t joint, double rho);
 
 /// @brief The feasible radii at joint K (see FilletRange), found by a scan in rho and
-/// bisection to ~1e-13 relative. The same errors as filletJoint, and one when no radius fits.
+/// bisection to ~1e-13 relative (the scan starts at minRadius: radii below it that fit, or a
+/// gap below it, do not count). The same errors as filletJoint, and one when no radius of at
+/// least minRadius fits, so a range always has minRadius < maxRadius.
 [[nodiscard]] Result<FilletRange> filletRange(const std::vector<SegmentSpec>& contour,
                                               std::size_t joint);
 

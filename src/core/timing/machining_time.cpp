@@ -694,16 +694,26 @@ Diagnostics checkMachineLimits(const MachineLimits& lim) {
     return errors;
 }
 
-Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& lim,
-                                   TimingMethod method, const std::atomic<bool>* cancel,
-                                   std::size_t maxPlanPoints) {
+namespace {
+
+/// What every timing entry point refuses before any work: limits out of range, an empty path,
+/// a seed step that is no step for this path.
+Diagnostics checkTimingInputs(const ToolPath& path, const MachineLimits& lim, TimingMethod method) {
     Diagnostics errors = checkMachineLimits(lim);
     if (path.segments.empty()) errors.push_back({"path", "is empty"});
     if (method == TimingMethod::Seed && errors.empty()) {
         const Diagnostics step = checkSeedStep(path, lim.seedStep, "step");
         errors.insert(errors.end(), step.begin(), step.end());
     }
-    if (!errors.empty()) return errors;
+    return errors;
+}
+
+}  // namespace
+
+Result<TimingResult> machiningTime(const ToolPath& path, const MachineLimits& lim,
+                                   TimingMethod method, const std::atomic<bool>* cancel,
+                                   std::size_t maxPlanPoints) {
+    if (Diagnostics errors = checkTimingInputs(path, lim, method); !errors.empty()) return errors;
 
     TimingResult r;
     r.method = method;
@@ -784,13 +794,7 @@ bool appendPlanned(const ToolPath& path, const OptimalProfile& p, double offset,
 Result<TimingProfile> timingProfile(const ToolPath& path, const MachineLimits& lim,
                                     TimingMethod method, std::size_t points,
                                     const std::atomic<bool>* cancel) {
-    Diagnostics errors = checkMachineLimits(lim);
-    if (path.segments.empty()) errors.push_back({"path", "is empty"});
-    if (method == TimingMethod::Seed && errors.empty()) {
-        const Diagnostics step = checkSeedStep(path, lim.seedStep, "step");
-        errors.insert(errors.end(), step.begin(), step.end());
-    }
-    if (!errors.empty()) return errors;
+    if (Diagnostics errors = checkTimingInputs(path, lim, method); !errors.empty()) return errors;
     TimingProfile out;
     if (method == TimingMethod::Optimal) {
         const std::vector<std::size_t> n = intervalsFor(
