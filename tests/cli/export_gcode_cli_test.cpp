@@ -34,6 +34,9 @@ using Vec3 = Eigen::Vector3d;
 constexpr double kPi = std::numbers::pi;
 /// rs274 prints 4 decimals: the precision to which the cut path is known.
 constexpr double kTolMm = 1e-4;
+/// Cut moves and the profile are checked at points this far apart, mm (arcs and lines: their
+/// distance from the profile varies smoothly between them).
+constexpr double kSampleStepMm = 0.05;
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 Vec2 perp(const Vec2& v) { return {-v.y(), v.x()}; }
@@ -89,9 +92,16 @@ struct Piece {
             total += (bezier((i + 1) / 1000.0) - bezier(i / 1000.0)).norm();
         return total;
     }
-    /// The distance from q: closed forms for lines and arcs; on a Bézier the nearest of 1024
-    /// samples, refined by a golden-section search between its neighbours.
-    [[nodiscard]] double distance(const Vec2& q) const {
+    // A Bézier's points at 256 equal parameter steps, and the box of its control points (which
+    // holds the curve).
+    std::vector<Vec2> coarse;
+    Vec2 boxLo{0, 0}, boxHi{0, 0};
+
+    /// The distance from q: closed forms for lines and arcs; on a Bézier the nearest of its
+    /// coarse points, refined by a golden-section search between its neighbours. A Bézier whose
+    /// box is `bound` or farther away returns `bound`.
+    [[nodiscard]] double distance(const Vec2& q,
+                                  double bound = std::numeric_limits<double>::infinity()) const {
         if (kind == Line) return distanceToSegment(q, a, b);
         if (kind == Arc) {
             const Vec2 w = q - c;
@@ -99,16 +109,17 @@ struct Piece {
             if (along <= std::abs(sweep)) return std::abs(w.norm() - r);
             return std::min((q - a).norm(), (q - b).norm());
         }
-        constexpr int n = 1024;
+        if ((q.cwiseMax(boxLo).cwiseMin(boxHi) - q).norm() >= bound) return bound;
+        const int n = static_cast<int>(coarse.size()) - 1;
         int best = 0;
         double bestD = std::numeric_limits<double>::infinity();
         for (int i = 0; i <= n; ++i) {
-            const double d = (bezier(double(i) / n) - q).squaredNorm();
-            if (d < bestD) bestD = d, best = i;
+            const double dx = coarse[i].x() - q.x(), dy = coarse[i].y() - q.y();
+            if (dx * dx + dy * dy < bestD) bestD = dx * dx + dy * dy, best = i;
         }
         double lo = std::max(0, best - 1) / double(n), hi = std::min(n, best + 1) / double(n);
         const double g = (std::sqrt(5.0) - 1) / 2;
-        for (int it = 0; it < 60; ++it) {
+        for (int it = 0; it < 50; ++it) {
             const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
             if ((bezier(m1) - q).squaredNorm() < (bezier(m2) - q).squaredNorm()) {
                 hi = m2;
@@ -131,7 +142,12 @@ struct Profile {
 
     [[nodiscard]] double distance(const Vec2& q) const {
         double d = std::numeric_limits<double>::infinity();
-        for (const Piece& p : pieces) d = std::min(d, p.distance(q));
+        for (const Piece& p : pieces) {
+            if (p.kind != Piece::Bezier) d = std::min(d, p.distance(q));
+        }
+        for (const Piece& p : pieces) {
+            if (p.kind == Piece::Bezier) d = std::min(d, p.distance(q, d));
+        }
         return d;
     }
     /// Winding number of the profile round q: 0 outside the part.
@@ -202,6 +218,12 @@ Profile profileOf(const nlohmann::json& project) {
             }
             piece.a = piece.p[0];
             piece.b = piece.p[3];
+            for (int i = 0; i <= 256; ++i) piece.coarse.push_back(piece.bezier(i / 256.0));
+            piece.boxLo = piece.boxHi = piece.p[0];
+            for (const Vec2& c : piece.p) {
+                piece.boxLo = piece.boxLo.cwiseMin(c);
+                piece.boxHi = piece.boxHi.cwiseMax(c);
+            }
         }
         profile.pieces.push_back(piece);
     }
@@ -421,7 +443,7 @@ void checkPass(const Pass& pass, const Profile& profile, const Expect& e, const 
     for (std::size_t i = 0; i < pass.moves.size(); ++i) {
         const bool loop = static_cast<int>(i) >= e.leadMoves &&
                           static_cast<int>(i) < static_cast<int>(pass.moves.size()) - e.leadMoves;
-        for (const Vec2& q : pass.moves[i].samples(0.01)) {
+        for (const Vec2& q : pass.moves[i].samples(kSampleStepMm)) {
             const double d = profile.distance(q);
             worstGouge = std::max(worstGouge, rho - d);
             if (profile.winding(q) != 0) ++inside;
@@ -464,7 +486,7 @@ void checkPass(const Pass& pass, const Profile& profile, const Expect& e, const 
     int unreached = 0;
     double worstReach = 0;
     for (const Piece& piece : profile.pieces) {
-        const int n = std::max(50, static_cast<int>(piece.length() / 0.02));
+        const int n = std::max(50, static_cast<int>(piece.length() / kSampleStepMm));
         for (int i = 0; i <= n; ++i) {
             const Vec2 q = piece.at(double(i) / n);
             double d = std::numeric_limits<double>::infinity();
