@@ -13,6 +13,7 @@
 #include "contour/contour.h"
 #include "export/cam_table.h"
 #include "export/dxf.h"
+#include "export/gcode.h"
 #include "export/number_text.h"
 #include "export/svg.h"
 #include "fillet/fillet.h"
@@ -525,7 +526,7 @@ void writeExport(const std::string& path, const std::string& text) {
 }
 
 /// The formats `export` writes today, in the order --help lists them.
-constexpr const char* kExportFormats = "csv, dxf, svg, camtable";
+constexpr const char* kExportFormats = "csv, dxf, svg, gcode, camtable";
 
 }  // namespace
 
@@ -537,8 +538,8 @@ int runExport(const Arguments& args, std::ostream& out) {
                        "--format is required (" + std::string(kExportFormats) + ")"};
     const std::optional<std::string> outPath = args.option("--out");
     if (!outPath) throw CliError{kUsage, "export", "--out FILE is required"};
-    const bool known =
-        *format == "csv" || *format == "dxf" || *format == "svg" || *format == "camtable";
+    const bool known = *format == "csv" || *format == "dxf" || *format == "svg" ||
+                       *format == "gcode" || *format == "camtable";
     if (!known) {
         throw CliError{
             kUsage, "--format",
@@ -549,6 +550,7 @@ int runExport(const Arguments& args, std::ostream& out) {
         {"csv", {"--points"}},
         {"dxf", {"--tolerance", "--tool-radius"}},
         {"svg", {"--tolerance"}},
+        {"gcode", {"--tolerance", "--tool-radius", "--depth", "--step-down"}},
         {"camtable", {"--points", "--dialect"}},
     };
     for (const auto& [name, value] : args.options) {
@@ -561,7 +563,8 @@ int runExport(const Arguments& args, std::ostream& out) {
     for (const std::string& flag : args.flags) {
         const bool dxfFlag =
             flag == "--polyline" || flag == "--spline-entities" || flag == "--centres";
-        if (!(dxfFlag && *format == "dxf")) {
+        const bool gcodeFlag = flag == "--compensation";
+        if (!(dxfFlag && *format == "dxf") && !(gcodeFlag && *format == "gcode")) {
             throw CliError{kUsage, flag, "is not an option of --format " + *format};
         }
     }
@@ -598,6 +601,31 @@ int runExport(const Arguments& args, std::ostream& out) {
             options.toolRadiusMm = parseFiniteNumber("--tool-radius", *r, "a radius in mm");
         }
         text = dxfDocument(loaded.contour, options);
+    } else if (*format == "gcode") {
+        GcodeOptions options;
+        const MachiningSpec machining = loaded.project.machining.value_or(MachiningSpec{});
+        if (const auto r = args.option("--tool-radius")) {
+            options.toolRadiusMm = parseFiniteNumber("--tool-radius", *r, "a radius in mm");
+        } else if (machining.toolRadius > 0.0) {
+            options.toolRadiusMm = machining.toolRadius;
+        } else {
+            throw CliError{kUsage, "--tool-radius",
+                           "is required: the project gives no machining.tool_radius"};
+        }
+        options.feedMmMin = machining.feedMax * 60.0;
+        // Finer than a drawing's default: the program is checked to 1e-4 mm.
+        options.toleranceMm = args.option("--tolerance") ? tolerance : kDefaultGcodeToleranceMm;
+        if (const auto d = args.option("--depth")) {
+            options.depthMm = parseFiniteNumber("--depth", *d, "a depth in mm");
+        }
+        if (const auto d = args.option("--step-down")) {
+            options.stepDownMm = parseFiniteNumber("--step-down", *d, "a depth in mm");
+        }
+        options.compensation = args.hasFlag("--compensation");
+        options.projectName = loaded.project.name.empty()
+                                  ? std::filesystem::path(input).filename().string()
+                                  : loaded.project.name;
+        text = gcodeProgram(loaded.contour, options);
     } else if (*format == "svg") {
         SvgOptions options;
         options.toleranceMm = tolerance;
