@@ -182,8 +182,9 @@ TEST(ExportDxf, ACircleCamIsOneCircle) {
 // Fact: the polyline option writes one closed LWPOLYLINE whose bulge arcs are the profile.
 TEST(ExportDxf, PolylineOptionIsOneClosedBulgedPolyline) {
     test::TempDir dir;
-    for (const std::string cam : {test::dataPath("reference/d-flat.cam.json"),
-                                  test::dataPath("reference/spline-mix.cam.json")}) {
+    const std::vector<std::string> cams{test::dataPath("reference/d-flat.cam.json"),
+                                        test::dataPath("reference/spline-mix.cam.json")};
+    for (const std::string& cam : cams) {
         SCOPED_TRACE(cam);
         const std::string out = dir.file("p.dxf");
         const auto r = test::runCli({"export", cam, "--format", "dxf", "--out", out, "--polyline"});
