@@ -13,7 +13,10 @@ packages=(
     libeigen3-dev nlohmann-json3-dev
     # tests and benchmarks
     libgtest-dev libgmock-dev googletest libbenchmark-dev
-    python3 python3-mpmath python3-numpy python3-ezdxf
+    python3 python3-mpmath python3-numpy python3-ezdxf python3-svgelements
+    # the programs that read exports in the tests: LinuxCNC's rs274 (unpacked on first use by
+    # ../shared/tools/rs274) needs this library
+    libboost-python1.74.0
     # headless rendering needs real fonts
     fonts-dejavu-core
 )

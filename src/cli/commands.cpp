@@ -1,6 +1,9 @@
 #include "cli/commands.h"
 
+#include <algorithm>
 #include <charconv>
+#include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
@@ -8,6 +11,11 @@
 #include "analysis/analysis.h"
 #include "common/angles.h"
 #include "contour/contour.h"
+#include "export/cam_table.h"
+#include "export/dxf.h"
+#include "export/gcode.h"
+#include "export/number_text.h"
+#include "export/svg.h"
 #include "fillet/fillet.h"
 #include "io/atomic_file.h"
 #include "io/path_csv.h"
@@ -51,14 +59,6 @@ Loaded load(const std::string& path) {
     }
     const double omega = project.value().motion.omegaRadS();
     return {std::move(project).value(), std::move(contour).value(), omega};
-}
-
-/// %.17g, locale-independent.
-void appendNumber(std::string& out, double value) {
-    char buffer[32];
-    const auto [end, ec] =
-        std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 17);
-    out.append(buffer, end);
 }
 
 Json stateJson(const KinematicState& s) {
@@ -162,15 +162,11 @@ int runState(const Arguments& args, std::ostream& out) {
     return kOk;
 }
 
-int runSample(const Arguments& args, std::ostream& out) {
-    long long n = 0;
-    if (const auto text = args.option("--samples")) {
-        n = parseCount("--samples", *text, 1, kMaxSamplesPerTurn);
-    }
-    const std::optional<std::string> outPath = args.option("--out");
-    const Loaded loaded = load(args.positional.at(0));
-    if (n == 0) n = loaded.project.samplesPerTurnOrDefault();
+namespace {
 
+/// One turn at n instants as CSV (the `sample` columns), to `outPath` (atomically) or `out`.
+void writeSampleCsv(const Loaded& loaded, long long n, std::ostream& out,
+                    const std::optional<std::string>& outPath) {
     std::optional<AtomicFileWriter> file;
     if (outPath) {
         file.emplace(*outPath);
@@ -201,7 +197,7 @@ int runSample(const Arguments& args, std::ostream& out) {
             if (c == 2) {
                 chunk += std::to_string(turn.segment[k]);
             } else {
-                appendNumber(chunk, row[c]);
+                appendExact(chunk, row[c]);
             }
         }
         chunk += '\n';
@@ -214,6 +210,18 @@ int runSample(const Arguments& args, std::ostream& out) {
         const Diagnostics problems = file->commit();
         if (!problems.empty()) throw CliError{kInvalidInput, *outPath, problems.front().message};
     }
+}
+
+}  // namespace
+
+int runSample(const Arguments& args, std::ostream& out) {
+    long long n = 0;
+    if (const auto text = args.option("--samples")) {
+        n = parseCount("--samples", *text, 1, kMaxSamplesPerTurn);
+    }
+    const Loaded loaded = load(args.positional.at(0));
+    if (n == 0) n = loaded.project.samplesPerTurnOrDefault();
+    writeSampleCsv(loaded, n, out, args.option("--out"));
     return kOk;
 }
 
@@ -496,6 +504,156 @@ int runFillet(const Arguments& args, std::ostream& out) {
     const Diagnostics written = writeFileAtomically(*outPath, serializeProject(filleted));
     if (!written.empty()) throw CliError{kInvalidInput, *outPath, written.front().message};
     printJson(out, summary);
+    return kOk;
+}
+
+namespace {
+
+/// Writes `text` to `path` atomically (io/atomic_file.h); a failure throws (exit 2).
+void writeExport(const std::string& path, const std::string& text) {
+    AtomicFileWriter file(path);
+    file.write(text);
+    Diagnostics problems = file.commit();
+    if (!problems.empty()) throw CliError{kInvalidInput, path, problems.front().message};
+}
+
+/// The first error of an export that cannot be made: a bad option (exit 2) or geometry the
+/// format cannot take (exit 3, naming the segment).
+[[noreturn]] void exportFailed(const std::string& project, const Diagnostics& errors) {
+    const Diagnostic& d = errors.front();
+    if (d.location.rfind("--", 0) == 0) throw CliError{kInvalidInput, d.location, d.message};
+    throw CliError{kNotComputable, project + ": " + d.location, d.message};
+}
+
+/// The formats `export` writes today, in the order --help lists them.
+constexpr const char* kExportFormats = "csv, dxf, svg, gcode, camtable";
+
+}  // namespace
+
+int runExport(const Arguments& args, std::ostream& out) {
+    const std::string& input = args.positional.at(0);
+    const std::optional<std::string> format = args.option("--format");
+    if (!format)
+        throw CliError{kUsage, "export",
+                       "--format is required (" + std::string(kExportFormats) + ")"};
+    const std::optional<std::string> outPath = args.option("--out");
+    if (!outPath) throw CliError{kUsage, "export", "--out FILE is required"};
+    const bool known = *format == "csv" || *format == "dxf" || *format == "svg" ||
+                       *format == "gcode" || *format == "camtable";
+    if (!known) {
+        throw CliError{
+            kUsage, "--format",
+            "unknown format '" + *format + "' (one of " + std::string(kExportFormats) + ")"};
+    }
+    // Which options each format takes; any other is a mistake worth saying.
+    const std::map<std::string, std::vector<std::string>> accepts{
+        {"csv", {"--points"}},
+        {"dxf", {"--tolerance", "--tool-radius"}},
+        {"svg", {"--tolerance"}},
+        {"gcode", {"--tolerance", "--tool-radius", "--depth", "--step-down"}},
+        {"camtable", {"--points", "--dialect"}},
+    };
+    for (const auto& [name, value] : args.options) {
+        if (name == "--format" || name == "--out") continue;
+        const auto& ok = accepts.at(*format);
+        if (std::find(ok.begin(), ok.end(), name) == ok.end()) {
+            throw CliError{kUsage, name, "is not an option of --format " + *format};
+        }
+    }
+    for (const std::string& flag : args.flags) {
+        const bool dxfFlag =
+            flag == "--polyline" || flag == "--spline-entities" || flag == "--centres";
+        const bool gcodeFlag = flag == "--compensation";
+        if (!(dxfFlag && *format == "dxf") && !(gcodeFlag && *format == "gcode")) {
+            throw CliError{kUsage, flag, "is not an option of --format " + *format};
+        }
+    }
+    {
+        // --out must not name the project it is made from (it would be replaced by the export).
+        std::error_code ec;
+        if (std::filesystem::equivalent(input, *outPath, ec)) {
+            throw CliError{kInvalidInput, *outPath,
+                           "is the project being exported; choose another file"};
+        }
+    }
+    double tolerance = *format == "svg" ? kSvgToleranceMm : kDefaultExportToleranceMm;
+    if (const auto text = args.option("--tolerance")) {
+        tolerance = parseFiniteNumber("--tolerance", *text, "a tolerance in mm");
+    }
+    const Loaded loaded = load(input);
+
+    if (*format == "csv") {
+        long long n = loaded.project.samplesPerTurnOrDefault();
+        if (const auto text = args.option("--points")) {
+            n = parseCount("--points", *text, 1, kMaxSamplesPerTurn);
+        }
+        writeSampleCsv(loaded, n, out, outPath);
+        return kOk;
+    }
+    Result<std::string> text = std::string();
+    if (*format == "dxf") {
+        DxfOptions options;
+        options.toleranceMm = tolerance;
+        options.polyline = args.hasFlag("--polyline");
+        options.splineEntities = args.hasFlag("--spline-entities");
+        options.centres = args.hasFlag("--centres");
+        if (const auto r = args.option("--tool-radius")) {
+            options.toolRadiusMm = parseFiniteNumber("--tool-radius", *r, "a radius in mm");
+        }
+        text = dxfDocument(loaded.contour, options);
+    } else if (*format == "gcode") {
+        GcodeOptions options;
+        const MachiningSpec machining = loaded.project.machining.value_or(MachiningSpec{});
+        if (const auto r = args.option("--tool-radius")) {
+            options.toolRadiusMm = parseFiniteNumber("--tool-radius", *r, "a radius in mm");
+        } else if (machining.toolRadius > 0.0) {
+            options.toolRadiusMm = machining.toolRadius;
+        } else {
+            throw CliError{kUsage, "--tool-radius",
+                           "is required: the project gives no machining.tool_radius"};
+        }
+        options.feedMmMin = machining.feedMax * 60.0;
+        // Finer than a drawing's default: the program is checked to 1e-4 mm.
+        options.toleranceMm = args.option("--tolerance") ? tolerance : kDefaultGcodeToleranceMm;
+        if (const auto d = args.option("--depth")) {
+            options.depthMm = parseFiniteNumber("--depth", *d, "a depth in mm");
+        }
+        if (const auto d = args.option("--step-down")) {
+            options.stepDownMm = parseFiniteNumber("--step-down", *d, "a depth in mm");
+        }
+        options.compensation = args.hasFlag("--compensation");
+        options.projectName = loaded.project.name.empty()
+                                  ? std::filesystem::path(input).filename().string()
+                                  : loaded.project.name;
+        text = gcodeProgram(loaded.contour, options);
+    } else if (*format == "svg") {
+        SvgOptions options;
+        options.toleranceMm = tolerance;
+        options.title = loaded.project.name.empty()
+                            ? std::filesystem::path(input).filename().string()
+                            : loaded.project.name;
+        text = svgDocument(loaded.contour, options);
+    } else {
+        CamTableOptions options;
+        if (const auto p = args.option("--points")) {
+            options.points = static_cast<std::size_t>(
+                parseCount("--points", *p, kMinCamTablePoints, kMaxCamTablePoints));
+        }
+        if (const auto d = args.option("--dialect")) {
+            if (*d == "codesys") {
+                options.dialect = CamTableDialect::Codesys;
+            } else if (*d != "csv") {
+                throw CliError{kInvalidInput, "--dialect",
+                               "unknown cam table dialect '" + *d + "' (csv, codesys)"};
+            }
+        }
+        options.name = loaded.project.name.empty()
+                           ? std::filesystem::path(input).stem().stem().string()
+                           : loaded.project.name;
+        text = camTableText(loaded.contour, options);
+    }
+    if (!text.ok()) exportFailed(input, text.errors());
+    writeExport(*outPath, text.value());
     return kOk;
 }
 

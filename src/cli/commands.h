@@ -14,5 +14,6 @@ int runSample(const Arguments& args, std::ostream& out);
 int runAnalyze(const Arguments& args, std::ostream& out);
 int runTiming(const Arguments& args, std::ostream& out);
 int runFillet(const Arguments& args, std::ostream& out);
+int runExport(const Arguments& args, std::ostream& out);
 
 }  // namespace cam::cli

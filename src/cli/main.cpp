@@ -31,6 +31,18 @@ commands:
                                         round the corner between contour[K-1] and contour[K]
                                         by a tangent arc (radius given or V²/(vae·A))
 
+  export PROJECT --format csv|dxf|svg|gcode|camtable --out FILE
+         [--tolerance MM] [--points N] [--dialect csv|codesys] [--tool-radius MM]
+         [--polyline] [--spline-entities] [--centres]
+         [--depth MM] [--step-down MM] [--compensation]
+                                        the profile for CAD (dxf: LINE/ARC on layer CONTOUR,
+                                        TOOLPATH with --tool-radius, CENTRES; svg: 1:1 in mm),
+                                        G-code milling it from outside (gcode: the tool-centre
+                                        path, or the contour with G41/G42 by --compensation;
+                                        tool radius from the project unless given, depth
+                                        default 5 mm, passes of --step-down), the sampled turn
+                                        (csv) or a servo cam table (camtable)
+
 units: mm, s, degrees; v in mm/s, a in mm/s², j in mm/s³.
 exit codes: 0 ok, 1 usage error, 2 invalid input (or results that cannot be written),
             3 not computable.
@@ -57,6 +69,11 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
          {"--detail"},
          0},
         {"fillet", 1, {"--joint", "--radius", "--speed", "--accel", "--vae", "--out"}, {}},
+        {"export",
+         1,
+         {"--format", "--out", "--tolerance", "--points", "--dialect", "--tool-radius", "--depth",
+          "--step-down"},
+         {"--polyline", "--spline-entities", "--centres", "--compensation"}},
     };
     try {
         const Arguments parsed = parseArguments(args, commands);
@@ -66,6 +83,7 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
         if (parsed.command == "analyze") return runAnalyze(parsed, out);
         if (parsed.command == "timing") return runTiming(parsed, out);
         if (parsed.command == "fillet") return runFillet(parsed, out);
+        if (parsed.command == "export") return runExport(parsed, out);
         return kUsage;
     } catch (const CliError& e) {
         out.flush();

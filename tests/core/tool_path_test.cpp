@@ -201,6 +201,29 @@ TEST(ToolPathFromContour, AToolJustSmallEnoughForTheNotchKeepsTheLengthWorkedByH
     }
 }
 
+TEST(ToolPathFromContour, ConcaveCornersNextToSplinesCutAsManyArcsAsTheyMust) {
+    // The Bézier of spline-mix meets the arc at (0, 20) in a concave corner of 35.5°: the
+    // offsets cross about ρ·tan(17.8°) from it, beyond the first few of the Bézier's short arcs
+    // when the tolerance is fine. The path must not depend on how finely the Bézier is split.
+    const Contour contour =
+        Contour::build(loadProjectFile(test::dataPath("reference/spline-mix.cam.json")).value())
+            .value();
+    for (const double rho : {0.5, 2.0, 3.0, 5.0}) {
+        const auto reference = offsetContour(contour, rho, 1e-7);
+        ASSERT_TRUE(reference.ok()) << rho << ": " << reference.errors().front().text();
+        for (const double tolerance : {1e-3, 1e-4, 1e-5, 1e-6}) {
+            SCOPED_TRACE("tool radius " + std::to_string(rho) + ", tolerance " +
+                         std::to_string(tolerance));
+            const auto offset = offsetContour(contour, rho, tolerance);
+            ASSERT_TRUE(offset.ok()) << offset.errors().front().text();
+            expectClosedAndContinuous(offset.value().path, 1e-6);
+            // Arcs within the tolerance of the curve are as long as it to a few tolerances.
+            EXPECT_NEAR(offset.value().path.length(), reference.value().path.length(),
+                        10 * tolerance);
+        }
+    }
+}
+
 TEST(ToolPathFromPoints, BulgesMakeArcsWithTheRightCentreAndRadius) {
     // Bulge 1: a half circle counter-clockwise from (0,0) to (10,0): centre (5,0), radius 5.
     auto half = toolPathFromPoints({{{0, 0, 0}, 1.0}, {{10, 0, 0}, 0.0}});

@@ -278,6 +278,17 @@ double distanceAlong(const PathSegment& piece, const Vec2& p) {
     return angle * piece.radius;
 }
 
+/// Whether p (on the piece's line or circle) lies within the piece, to 1e-9 of its length.
+bool liesOn(const PathSegment& piece, const Vec2& p) {
+    const double length = piece.length();
+    const double eps = 1e-9 * std::max(1.0, length);
+    double a = distanceAlong(piece, p);
+    if (piece.kind == PathSegment::Kind::Arc && a > kTwoPi * piece.radius - eps) {
+        a -= kTwoPi * piece.radius;  // a hair before the start
+    }
+    return a >= -eps && a <= length + eps;
+}
+
 /// Trimming at a concave corner may only shorten a piece within its own extent and direction.
 /// An arc whose sweep changed sign, wrapped or grew, or a line that runs backwards or past its
 /// ends, is what a tool too large for the piece gives: the trims of its two ends cross.
@@ -303,6 +314,13 @@ bool trimmedWithin(const PathSegment& original, const PathSegment& trimmed) {
 
 Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius,
                                      const std::atomic<bool>* cancel) {
+    auto offset = offsetContour(contour, toolRadius, kSplineToleranceMm, cancel);
+    if (!offset.ok()) return offset.errors();
+    return std::move(offset.value().path);
+}
+
+Result<ContourOffset> offsetContour(const Contour& contour, double toolRadius,
+                                    double splineToleranceMm, const std::atomic<bool>* cancel) {
     Diagnostics errors;
     const std::size_t n = contour.size();
     // Per contour segment, its offset pieces (one, or a spline's biarcs).
@@ -318,7 +336,7 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius,
         if (isSpline(seg.type)) {
             // Tangent arc pairs within 0.1 µm: lines and arcs for the planner, G1 throughout.
             for (const PathSegment& piece :
-                 biarcsOf(CubicBezier{seg.bezierKernel.p}, kSplineToleranceMm, 0.0, cancel)) {
+                 biarcsOf(CubicBezier{seg.bezierKernel.p}, splineToleranceMm, 0.0, cancel)) {
                 const auto shifted = offsetPiece(piece, toolRadius);
                 if (!shifted) {
                     errors.push_back({at, "the tool radius " + formatNumber(toolRadius) +
@@ -361,12 +379,14 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius,
     // Biarcs stop early when cancelled: never hand out a path built from them.
     if (cancelRequested(cancel)) return cancelledDiagnostics();
     if (!errors.empty()) return errors;
-    ToolPath path;
+    ContourOffset result;
+    ToolPath& path = result.path;
     if (toolRadius == 0.0 || n == 1) {
-        for (const auto& pieces : offset) {
-            path.segments.insert(path.segments.end(), pieces.begin(), pieces.end());
+        for (std::size_t k = 0; k < n; ++k) {
+            path.segments.insert(path.segments.end(), offset[k].begin(), offset[k].end());
+            result.origin.insert(result.origin.end(), offset[k].size(), k);
         }
-        return path;
+        return result;
     }
 
     std::vector<std::vector<PathSegment>> joined = offset;
@@ -392,16 +412,45 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius,
         }
         // Concave corner: both offsets overshoot; cut them where they cross, nearest the corner.
         const Vec2 guess = left.point + toolRadius * (left.normal + right.normal).normalized();
+        auto nearest = [&](const PathSegment& a, const PathSegment& b, bool onBoth) {
+            std::optional<Vec2> best;
+            for (const Vec2& p : intersections(a, b)) {
+                if (onBoth && !(liesOn(a, p) && liesOn(b, p))) continue;
+                if (!best || (p - guess).norm() < (*best - guess).norm()) best = p;
+            }
+            return best;
+        };
+        // A spline's offset is many short arcs: the crossing may lie pieces away from the corner.
+        // The pair that drops the fewest pieces and crosses on both wins; with none, the last
+        // and first pieces are cut where their curves cross (trimmedWithin judges that below).
+        std::vector<PathSegment>& before = joined[k];
+        std::vector<PathSegment>& after = joined[next];
+        std::size_t keepBefore = before.size() - 1, keepAfter = 0;
         std::optional<Vec2> best;
-        for (const Vec2& p : intersections(joined[k].back(), joined[next].front())) {
-            if (!best || (p - guess).norm() < (*best - guess).norm()) best = p;
+        for (std::size_t dropped = 0; !best && dropped + 1 < before.size() + after.size();
+             ++dropped) {
+            for (std::size_t fromBefore = 0; !best && fromBefore <= dropped; ++fromBefore) {
+                const std::size_t fromAfter = dropped - fromBefore;
+                if (fromBefore >= before.size() || fromAfter >= after.size()) continue;
+                best = nearest(before[before.size() - 1 - fromBefore], after[fromAfter], true);
+                if (best) {
+                    keepBefore = before.size() - 1 - fromBefore;
+                    keepAfter = fromAfter;
+                }
+            }
         }
+        if (!best) best = nearest(before.back(), after.front(), false);
         if (!best) {
             errors.push_back({at, "the offset segments do not meet at this corner"});
             continue;
         }
-        moveEnd(joined[k].back(), *best);
-        moveStart(joined[next].front(), *best);
+        before.resize(keepBefore + 1);
+        offset[k].resize(keepBefore + 1);
+        after.erase(after.begin(), after.begin() + static_cast<std::ptrdiff_t>(keepAfter));
+        offset[next].erase(offset[next].begin(),
+                           offset[next].begin() + static_cast<std::ptrdiff_t>(keepAfter));
+        moveEnd(before.back(), *best);
+        moveStart(after.front(), *best);
     }
     for (std::size_t k = 0; k < n; ++k) {
         if (cancelRequested(cancel)) return cancelledDiagnostics();
@@ -418,9 +467,13 @@ Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius,
     if (!errors.empty()) return errors;
     for (std::size_t k = 0; k < n; ++k) {
         path.segments.insert(path.segments.end(), joined[k].begin(), joined[k].end());
-        if (cornerArcs[k]) path.segments.push_back(*cornerArcs[k]);
+        result.origin.insert(result.origin.end(), joined[k].size(), k);
+        if (cornerArcs[k]) {
+            path.segments.push_back(*cornerArcs[k]);
+            result.origin.push_back(kCornerPiece);
+        }
     }
-    return path;
+    return result;
 }
 
 }  // namespace cam

@@ -78,4 +78,21 @@ inline constexpr double kSplineToleranceMm = 1e-4;
 [[nodiscard]] Result<ToolPath> toolPathFromContour(const Contour& contour, double toolRadius,
                                                    const std::atomic<bool>* cancel = nullptr);
 
+/// @brief Marks a piece of a ContourOffset that follows no segment: the arc that rolls the tool
+/// around a convex corner.
+inline constexpr std::size_t kCornerPiece = static_cast<std::size_t>(-1);
+
+/// @brief A contour offset, and for each of its pieces the contour segment it follows.
+struct ContourOffset {
+    ToolPath path;
+    std::vector<std::size_t> origin;  ///< per piece of `path`: segment index, or kCornerPiece
+};
+
+/// @brief toolPathFromContour with the spline tolerance given (mm, > 0) and each piece's origin.
+/// With toolRadius 0 it is the profile itself: one line or arc per line or arc segment (exact),
+/// tangent arc pairs within `splineToleranceMm` for a spline.
+[[nodiscard]] Result<ContourOffset> offsetContour(const Contour& contour, double toolRadius,
+                                                  double splineToleranceMm,
+                                                  const std::atomic<bool>* cancel = nullptr);
+
 }  // namespace cam

@@ -1,0 +1,146 @@
+#include "export/cam_table.h"
+
+#include <cctype>
+#include <cmath>
+#include <initializer_list>
+
+#include "analysis/analysis.h"
+#include "common/angles.h"
+#include "export/number_text.h"
+
+namespace cam {
+
+std::vector<CamKnot> camKnots(const Contour& contour, std::size_t points) {
+    // The smallest r of the turn, refined between grid points (analysis.h); ω does not matter.
+    const ContourAnalysis analysis = analyzeContour(contour, 1.0);
+    double minR = 0.0;
+    for (const QuantityExtremes& e : analysis.extremes) {
+        if (e.quantity == Quantity::R) minR = e.min.value;
+    }
+    constexpr double perDeg = kPi / 180.0;
+    std::vector<CamKnot> knots(points);
+    for (std::size_t i = 0; i < points; ++i) {
+        // 360·i/N exactly for the row, and the angle from it.
+        const double deg = 360.0 * static_cast<double>(i) / static_cast<double>(points);
+        const PolarDerivatives d = contour.evaluate(degToRad(deg));
+        knots[i] = {deg, d.r - minR, d.dr * perDeg, d.d2r * perDeg * perDeg};
+    }
+    return knots;
+}
+
+namespace {
+
+void appendRow(std::string& out, std::initializer_list<double> values) {
+    bool first = true;
+    for (double v : values) {
+        if (!first) out += ',';
+        first = false;
+        appendExact(out, v);
+    }
+    out += '\n';
+}
+
+std::string csvTable(const std::vector<CamKnot>& knots, const CamTableOptions& options) {
+    const auto n = static_cast<double>(knots.size());
+    std::string out = "# camwright cam table";
+    if (!options.name.empty()) out += " of " + options.name;
+    out += ": master angle -> knife-edge lift r(phi) - min r\n";
+    out += "# master_start_deg=0\n# master_step_deg=";
+    appendExact(out, 360.0 / n);
+    out += "\n# points=" + std::to_string(knots.size()) + "\n# periodic=true\n# slave=lift_mm\n";
+    out += "master_deg,position,velocity_per_deg,acceleration_per_deg2\n";
+    for (const CamKnot& k : knots)
+        appendRow(out, {k.masterDeg, k.position, k.velocity, k.acceleration});
+    return out;
+}
+
+/// The name as an IEC 61131-3 identifier: letters, digits and single underscores, starting
+/// with a letter ("cam" if nothing is left).
+std::string identifier(const std::string& name) {
+    std::string id;
+    for (unsigned char c : name) {
+        if (std::isalnum(c) && c < 128) {
+            id += static_cast<char>(c);
+        } else if (!id.empty() && id.back() != '_') {
+            id += '_';
+        }
+    }
+    while (!id.empty() && id.back() == '_') id.pop_back();
+    if (id.empty() || std::isdigit(static_cast<unsigned char>(id.front()))) id = "cam_" + id;
+    if (id.back() == '_') id.pop_back();
+    return id;
+}
+
+/// The text of a comment: "(*" and "*)" cannot appear inside one.
+std::string commentText(std::string text) {
+    for (std::size_t i = 0; i + 1 < text.size(); ++i) {
+        if ((text[i] == '(' && text[i + 1] == '*') || (text[i] == '*' && text[i + 1] == ')')) {
+            text[i] = ' ';
+        }
+    }
+    return text;
+}
+
+/// An LREAL literal of IEC 61131-3: 17 digits, always with a decimal point ("45.0", "1.0e-05").
+void appendReal(std::string& out, double value) {
+    std::string text;
+    appendExact(text, value);
+    if (text.find('.') == std::string::npos) {
+        const std::size_t e = text.find('e');
+        text.insert(e == std::string::npos ? text.size() : e, ".0");
+    }
+    out += text;
+}
+
+void appendKnot(std::string& out, const CamKnot& k, bool last) {
+    out += "        (dX := ";
+    appendReal(out, k.masterDeg);
+    out += ", dY := ";
+    appendReal(out, k.position);
+    out += ", dV := ";
+    appendReal(out, k.velocity);
+    out += ", dA := ";
+    appendReal(out, k.acceleration);
+    out += last ? ")\n" : "),\n";
+}
+
+std::string codesysTable(const std::vector<CamKnot>& knots, const CamTableOptions& options) {
+    const std::string id = identifier(options.name);
+    const std::size_t n = knots.size();
+    std::string out = "(* Camwright electronic cam";
+    if (!options.name.empty()) out += ": " + commentText(options.name);
+    out +=
+        " *)\n(* master: cam angle in degrees, 0 .. 360, periodic; slave: knife-edge lift in mm\n"
+        "   (r(phi) - min r); dV in mm/deg, dA in mm/deg^2. Knots for SMC_CAMXYVA, interpolated\n"
+        "   by fifth-order polynomials (byType 3). The knot at 360 deg repeats the one at 0. *)\n";
+    out += "VAR_GLOBAL\n";
+    out += "    " + id + "_knots : ARRAY[0.." + std::to_string(n) + "] OF SMC_CAMXYVA := [\n";
+    for (const CamKnot& k : knots) appendKnot(out, k, false);
+    CamKnot closing = knots.front();
+    closing.masterDeg = 360.0;
+    appendKnot(out, closing, true);
+    out += "    ];\n";
+    out +=
+        "    " + id + " : MC_CAM_REF := (xStart := 0.0, xEnd := 360.0, byType := 3, byVarType := 6,\n";
+    out += "        nElements := " + std::to_string(n + 1) + ", nTappets := 0, pce := ADR(" + id +
+           "_knots));\n";
+    out += "END_VAR\n";
+    return out;
+}
+
+}  // namespace
+
+Result<std::string> camTableText(const Contour& contour, const CamTableOptions& options) {
+    const auto n = static_cast<long long>(options.points);
+    if (n < kMinCamTablePoints || n > kMaxCamTablePoints) {
+        return Diagnostics{{"--points", "a cam table has from " +
+                                            std::to_string(kMinCamTablePoints) + " to " +
+                                            std::to_string(kMaxCamTablePoints) + " points, not " +
+                                            std::to_string(n)}};
+    }
+    const std::vector<CamKnot> knots = camKnots(contour, options.points);
+    return options.dialect == CamTableDialect::Csv ? csvTable(knots, options)
+                                                   : codesysTable(knots, options);
+}
+
+}  // namespace cam

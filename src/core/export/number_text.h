@@ -1,0 +1,30 @@
+#pragma once
+/// @file
+/// @brief Numbers as export files write them: C locale, whatever the process's locale is.
+
+#include <charconv>
+#include <string>
+
+namespace cam {
+
+/// @brief Appends `value` with 17 significant digits (%.17g): it reads back to the same double.
+inline void appendExact(std::string& out, double value) {
+    char buffer[32];
+    const auto result =
+        std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 17);
+    out.append(buffer, result.ptr);
+}
+
+/// @brief Appends `value` with `decimals` digits after the point (%.Nf), never "-0.000".
+inline void appendFixed(std::string& out, double value, int decimals) {
+    char buffer[64];
+    auto result =
+        std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
+    std::string_view text(buffer, static_cast<std::size_t>(result.ptr - buffer));
+    if (text.front() == '-' && text.find_first_not_of("-0.") == std::string_view::npos) {
+        text.remove_prefix(1);
+    }
+    out.append(text);
+}
+
+}  // namespace cam

@@ -1,0 +1,167 @@
+#include "export/svg.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/angles.h"
+#include "export/export_checks.h"
+#include "export/number_text.h"
+#include "timing/tool_path.h"
+
+namespace cam {
+namespace {
+
+/// The text with &, <, > and " escaped for XML.
+std::string escaped(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
+        }
+    }
+    return out;
+}
+
+void appendPoint(std::string& out, const Eigen::Vector3d& p) {
+    appendExact(out, p.x());
+    out += ' ';
+    appendExact(out, -p.y());  // SVG's y points down
+}
+
+/// The SVG arc command to the end of `s`. In SVG's y-down frame a counter-clockwise arc of ours
+/// turns the negative way: sweep-flag 0.
+void appendArc(std::string& out, const PathSegment& s) {
+    out += " A ";
+    appendExact(out, s.radius);
+    out += ' ';
+    appendExact(out, s.radius);
+    out += " 0 ";
+    out += std::abs(s.sweep) > kPi ? '1' : '0';
+    out += ' ';
+    out += s.sweep > 0 ? '0' : '1';
+    out += ' ';
+    appendPoint(out, s.end);
+}
+
+void appendCross(std::string& out, const Eigen::Vector2d& c, double size, const char* cssClass) {
+    out += "  <path class=\"";
+    out += cssClass;
+    out += "\" d=\"M ";
+    appendExact(out, c.x() - size);
+    out += ' ';
+    appendExact(out, -c.y());
+    out += " h ";
+    appendExact(out, 2 * size);
+    out += " M ";
+    appendExact(out, c.x());
+    out += ' ';
+    appendExact(out, -c.y() - size);
+    out += " v ";
+    appendExact(out, 2 * size);
+    out += "\"/>\n";
+}
+
+}  // namespace
+
+Result<std::string> svgDocument(const Contour& contour, const SvgOptions& options) {
+    Diagnostics errors;
+    checkTolerance(options.toleranceMm, errors);
+    if (!errors.empty()) return errors;
+    auto profile = offsetContour(contour, 0.0, options.toleranceMm);
+    if (!profile.ok()) return profile.errors();
+    const std::vector<PathSegment>& pieces = profile.value().path.segments;
+
+    // The drawing's box: the profile (arcs through their extreme points) and the rotation centre.
+    Eigen::Vector2d lo = Eigen::Vector2d::Zero(), hi = Eigen::Vector2d::Zero();
+    for (const PathSegment& s : pieces) {
+        const int samples = s.kind == PathSegment::Kind::Arc ? 64 : 1;
+        for (int i = 0; i <= samples; ++i) {
+            const Eigen::Vector2d p = s.point(s.length() * i / samples).head<2>();
+            lo = lo.cwiseMin(p);
+            hi = hi.cwiseMax(p);
+        }
+    }
+    const double size = std::max((hi - lo).maxCoeff(), 1e-3);
+    const double margin = 0.05 * size + 2.0;
+    const double text = 0.04 * size + 1.0;  // title height, mm
+    const double mark = 0.02 * size;
+    const double stroke = 0.0025 * size;
+    // Wide enough for the title too (a sans-serif letter is at most about 0.6 em wide on average).
+    const double titleWidth = 0.6 * text * static_cast<double>(options.title.size());
+    const double x0 = lo.x() - margin, y0 = -hi.y() - margin - 1.5 * text;
+    const double w = std::max(hi.x() - lo.x(), titleWidth) + 2 * margin;
+    const double h = (hi.y() - lo.y()) + 2 * margin + 1.5 * text;
+
+    std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"";
+    appendExact(out, w);
+    out += "mm\" height=\"";
+    appendExact(out, h);
+    out += "mm\" viewBox=\"";
+    for (double v : {x0, y0, w, h}) {
+        appendExact(out, v);
+        out += ' ';
+    }
+    out.back() = '"';
+    out += ">\n  <title>" + escaped(options.title) + "</title>\n";
+    out +=
+        "  <desc>Cam profile, 1:1 in millimetres (1 user unit = 1 mm, y up drawn up), "
+        "written by Camwright</desc>\n";
+    out += "  <style>.profile{fill:none;stroke:#000;stroke-width:";
+    appendExact(out, stroke);
+    out += "} .centre{fill:none;stroke:#c00;stroke-width:";
+    appendExact(out, stroke / 2);
+    out += "} .title{font-family:sans-serif;font-size:";
+    appendExact(out, text);
+    out += "px}</style>\n";
+
+    out += "  <path id=\"profile\" class=\"profile\" d=\"M ";
+    appendPoint(out, pieces.front().start);
+    for (const PathSegment& s : pieces) {
+        if (s.kind == PathSegment::Kind::Line) {
+            out += " L ";
+            appendPoint(out, s.end);
+        } else {
+            // An SVG arc is given by its end points and radius; its centre is well determined
+            // only well away from a half turn (and a full turn has no second point): pieces of
+            // at most a quarter turn each.
+            const int parts =
+                std::max(1, static_cast<int>(std::ceil(std::abs(s.sweep) / (kPi / 2) - 1e-9)));
+            for (int i = 0; i < parts; ++i) {
+                const double part = s.sweep / parts;
+                PathSegment piece =
+                    PathSegment::arc(s.center, s.radius, s.startAngle + i * part, part, 0.0);
+                if (i + 1 == parts) piece.end = s.end;  // exactly where the next piece starts
+                appendArc(out, piece);
+            }
+        }
+    }
+    out += " Z\"/>\n";
+    appendCross(out, Eigen::Vector2d::Zero(), mark, "centre");
+    for (std::size_t k = 0; k < contour.size(); ++k) {
+        if (contour.segment(k).type == SegmentType::Arc) {
+            appendCross(out, contour.segment(k).arc.center, mark / 2, "centre");
+        }
+    }
+    out += "  <text class=\"title\" x=\"";
+    appendExact(out, lo.x());
+    out += "\" y=\"";
+    appendExact(out, -hi.y() - margin);
+    out += "\">" + escaped(options.title) + "</text>\n</svg>\n";
+    return out;
+}
+
+}  // namespace cam
