@@ -412,33 +412,13 @@ def check_camtable(project, path):
     for i, (master, position, velocity, _) in enumerate(rows):
         if abs(master - 360.0 * i / n) > 1e-12:
             fail(f"row {i}: master {master}, not {360.0 * i / n}")
-        phi = mpmath.radians(mpf(360) * i / n)
-        try:
-            seg, phi_n = ref.find_segment(project, phi)
-        except ref.ReferenceError:
-            # Reduced by a whole turn, a first window's start can come out a rounding below it.
-            seg, phi_n = ref.find_segment(project, phi + mpf("1e-25"))
-        # Within a rounding of a joint (a decimal window end against 360·i/N), either side's
-        # segment is the one the ray meets: take the one that agrees better.
-        candidates = [(seg, phi_n)]
-        segments = project["segments"]
-        k = seg["index"]
-        if abs(phi_n - seg["start"]) < mpf("1e-12"):
-            prev = segments[k - 1]
-            candidates.append((prev, phi_n + (prev["end"] - seg["start"]) if k > 0 else
-                               phi_n + project["turn"]))
-        if abs(phi_n - seg["end"]) < mpf("1e-12"):
-            nxt = segments[(k + 1) % len(segments)]
-            candidates.append((nxt, phi_n if k + 1 < len(segments) else phi_n - project["turn"]))
         best = None
-        for cand, at in candidates:
-            lift = cand["r"](at) - min_r
-            slope = one_sided_slope(cand, at)
-            error = (abs(position - float(lift)), abs(velocity - float(slope) * math.pi / 180))
+        for lift, slope_deg in lift_and_slopes(project, min_r, mpf(360) * i / n):
+            error = (abs(position - lift), abs(velocity - slope_deg))
             # Both sides have the same position to the joint's C0 tolerance (1e-6 mm); the
             # velocity tells them apart at a corner.
             if best is None or (error[0] <= 1e-6 and error[1] < best[0][1]):
-                best = (error, lift, float(slope) * math.pi / 180)
+                best = (error, lift, slope_deg)
         (position_error, velocity_error), lift, slope_deg = best
         lifts.append(lift)
         velocities.append(slope_deg)
