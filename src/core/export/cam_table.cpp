@@ -120,8 +120,8 @@ std::string codesysTable(const std::vector<CamKnot>& knots, const CamTableOption
     closing.masterDeg = 360.0;
     appendKnot(out, closing, true);
     out += "    ];\n";
-    out +=
-        "    " + id + " : MC_CAM_REF := (xStart := 0.0, xEnd := 360.0, byType := 3, byVarType := 6,\n";
+    out += "    " + id +
+           " : MC_CAM_REF := (xStart := 0.0, xEnd := 360.0, byType := 3, byVarType := 6,\n";
     out += "        nElements := " + std::to_string(n + 1) + ", nTappets := 0, pce := ADR(" + id +
            "_knots));\n";
     out += "END_VAR\n";
