@@ -368,7 +368,10 @@ Milled interpret(const test::TempDir& dir, const std::string& program,
             << m.program.substr(lineEnd + 1);
     }
     fs::remove(canon);
-    const auto r = test::run(rs274Path(), {interpreted, canon}, 120);
+    // One rs274 at a time: LinuxCNC keeps its tool data in a memory-mapped file of a fixed name,
+    // and two interpreters at once (ctest -j) truncate it under each other's feet (SIGBUS).
+    const std::string lock = (fs::temp_directory_path() / "camwright-rs274.lock").string();
+    const auto r = test::run("/usr/bin/flock", {lock, rs274Path(), interpreted, canon}, 120);
     EXPECT_EQ(r.exitCode, 0) << "rs274 refused the program: " << r.err << "\n" << m.program;
     m.moves = parseCanon(test::readFile(canon));
     return m;
