@@ -151,6 +151,13 @@ private:
     std::uint64_t m_state;
 };
 
+/// Writes `text` to the file `name` in the system temp folder and returns its path.
+inline std::string writeTempFile(const std::string& name, const std::string& text) {
+    const std::filesystem::path p = std::filesystem::temp_directory_path() / name;
+    std::ofstream(p) << text;
+    return p.string();
+}
+
 inline RunResult runCli(const std::vector<std::string>& args) { return run(CAMWRIGHT_CLI, args); }
 
 }  // namespace cam::test

@@ -22,6 +22,16 @@ namespace cam::test {
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 
+/// Machine limits: per-axis accelerations, and optionally a feed ceiling and per-axis speeds.
+inline MachineLimits limitsOf(const Vector3d& accel, double feedMax = kUnlimited,
+                              const Vector3d& vmax = Vector3d::Constant(kUnlimited)) {
+    MachineLimits limits;
+    limits.accel = accel;
+    limits.vmax = vmax;
+    limits.feedMax = feedMax;
+    return limits;
+}
+
 // State: squared path speed x = ṡ² over arc length s, so dx/ds = 2·s̈ and t = ∫ ds/sqrt(x).
 // Per axis i: |q_i'(s)|·sqrt(x) <= vmax_i, and |q_i'(s)·s̈ + q_i''(s)·x| <= a_i. The geometry
 // below is written here (it does not call PathSegment's point/tangent/curvature).

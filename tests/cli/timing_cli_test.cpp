@@ -15,12 +15,8 @@
 namespace cam {
 namespace {
 
-namespace fs = std::filesystem;
-
 std::string writeTemp(const std::string& name, const std::string& text) {
-    const fs::path p = fs::temp_directory_path() / ("camwright_timing_" + name);
-    std::ofstream(p) << text;
-    return p.string();
+    return test::writeTempFile("camwright_timing_" + name, text);
 }
 
 // The reference path as a point list: the bulge tan(π/8) makes the 90° arc.

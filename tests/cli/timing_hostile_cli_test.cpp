@@ -20,12 +20,8 @@
 namespace cam {
 namespace {
 
-namespace fs = std::filesystem;
-
 std::string writeTemp(const std::string& name, const std::string& text) {
-    const fs::path p = fs::temp_directory_path() / ("camwright_hostile_" + name);
-    std::ofstream(p) << text;
-    return p.string();
+    return test::writeTempFile("camwright_hostile_" + name, text);
 }
 
 /// A point list of the arcs: (10k, 0, 0) with bulge `bulge` (or ±bulge in turn).

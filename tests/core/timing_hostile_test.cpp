@@ -28,6 +28,8 @@
 namespace cam {
 namespace {
 
+using test::limitsOf;
+
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 using test::RefPiece;
@@ -44,15 +46,6 @@ std::string textOf(const Diagnostics& errors) {
 template <class T>
 Diagnostics errorsOf(const Result<T>& result) {
     return result.ok() ? Diagnostics{} : result.errors();
-}
-
-MachineLimits limitsOf(const Vector3d& accel, double feed = kUnlimited,
-                       const Vector3d& vmax = Vector3d::Constant(kUnlimited)) {
-    MachineLimits lim;
-    lim.accel = accel;
-    lim.vmax = vmax;
-    lim.feedMax = feed;
-    return lim;
 }
 
 /// Runs `call` on a thread of its own and waits at most `seconds` for it: a call that hangs

@@ -34,6 +34,8 @@
 namespace cam {
 namespace {
 
+using test::limitsOf;
+
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 using test::PhasePoint;
@@ -44,15 +46,6 @@ using test::RefPiece;
 using test::relClose;
 
 constexpr double kPi = std::numbers::pi;
-
-MachineLimits limitsOf(const Vector3d& accel, double feedMax = kUnlimited,
-                       const Vector3d& vmax = Vector3d::Constant(kUnlimited)) {
-    MachineLimits limits;
-    limits.accel = accel;
-    limits.vmax = vmax;
-    limits.feedMax = feedMax;
-    return limits;
-}
 
 ToolPath pathOf(std::vector<PathSegment> segments) {
     ToolPath path;

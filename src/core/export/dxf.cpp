@@ -220,27 +220,29 @@ void tables(DxfText& d, const std::vector<Layer>& layers) {
     endSection(d);
 }
 
+/// The group codes every entity starts with: type, handle, owner, subclass, layer.
+void entityHeader(DxfText& d, const char* type, unsigned handle, unsigned owner,
+                  const char* layer) {
+    d.pair(0, type);
+    d.handle(5, handle);
+    d.handle(330, owner);
+    d.pair(100, "AcDbEntity");
+    d.pair(8, layer);
+}
+
 void blocks(DxfText& d) {
     beginSection(d, "BLOCKS");
     for (const auto& [name, record, begin, end] :
          {std::tuple{"*Model_Space", kModelSpaceRecord, kModelSpaceBlock, kModelSpaceEnd},
           std::tuple{"*Paper_Space", kPaperSpaceRecord, kPaperSpaceBlock, kPaperSpaceEnd}}) {
-        d.pair(0, "BLOCK");
-        d.handle(5, begin);
-        d.handle(330, record);
-        d.pair(100, "AcDbEntity");
-        d.pair(8, "0");
+        entityHeader(d, "BLOCK", begin, record, "0");
         d.pair(100, "AcDbBlockBegin");
         d.pair(2, name);
         d.pair(70, 0);
         d.point(10, 0, 0);
         d.pair(3, name);
         d.pair(1, "");
-        d.pair(0, "ENDBLK");
-        d.handle(5, end);
-        d.handle(330, record);
-        d.pair(100, "AcDbEntity");
-        d.pair(8, "0");
+        entityHeader(d, "ENDBLK", end, record, "0");
         d.pair(100, "AcDbBlockEnd");
     }
     endSection(d);
@@ -269,11 +271,7 @@ public:
     explicit Entities(DxfText& d) : m_d(d) {}
 
     void begin(const char* type, const char* layer) {
-        m_d.pair(0, type);
-        m_d.handle(5, m_next++);
-        m_d.handle(330, kModelSpaceRecord);
-        m_d.pair(100, "AcDbEntity");
-        m_d.pair(8, layer);
+        entityHeader(m_d, type, m_next++, kModelSpaceRecord, layer);
     }
 
     void piece(const PathSegment& s, const char* layer, bool fullCircle) {
