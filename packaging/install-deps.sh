@@ -15,8 +15,9 @@ packages=(
     libgtest-dev libgmock-dev googletest libbenchmark-dev
     python3 python3-mpmath python3-numpy python3-ezdxf python3-svgelements
     # the programs that read exports in the tests: LinuxCNC's rs274 (unpacked on first use by
-    # ../shared/tools/rs274) needs this library
-    libboost-python1.74.0
+    # ../shared/tools/rs274) needs this library; poppler (pdfinfo, pdftotext, pdftoppm) and
+    # rsvg-convert read the pictures of the plots
+    libboost-python1.74.0 poppler-utils librsvg2-bin
     # headless rendering needs real fonts
     fonts-dejavu-core
 )

@@ -1,6 +1,39 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>ExportFormat</name>
+    <message>
+        <location filename="../../src/app/export/export_request.cpp" line="+13" />
+        <source>CSV: the sampled turn</source>
+        <translation>CSV: die abgetastete Umdrehung</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>DXF drawing (R2000, mm)</source>
+        <translation>DXF-Zeichnung (R2000, mm)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>SVG drawing, 1:1 in mm</source>
+        <translation>SVG-Zeichnung, 1:1 in mm</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>G-code for milling the cam</source>
+        <translation>G-Code zum Fräsen der Kurvenscheibe</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Servo cam table</source>
+        <translation>Kurvenscheibentabelle für Servoantriebe</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Picture of a plot (PNG, PDF, SVG)</source>
+        <translation>Bild eines Diagramms (PNG, PDF, SVG)</translation>
+    </message>
+</context>
+<context>
     <name>MainWindow</name>
     <message>
         <location filename="../../ui/mainwindow.ui" line="+6" />
@@ -201,6 +234,39 @@
         <location line="+0" />
         <source>About Camwright</source>
         <translation>Über Camwright</translation>
+    </message>
+</context>
+<context>
+    <name>PlotKind</name>
+    <message>
+        <location filename="../../src/app/export/plot_picture.cpp" line="+103" />
+        <source>Contour</source>
+        <translation>Kontur</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Velocity</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Acceleration</source>
+        <translation>Beschleunigung</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Jerk</source>
+        <translation>Ruck</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Feed along the path</source>
+        <translation>Vorschub entlang der Bahn</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Axis accelerations</source>
+        <translation>Achsbeschleunigungen</translation>
     </message>
 </context>
 <context>
@@ -429,7 +495,7 @@
         <translation>Übergänge</translation>
     </message>
     <message>
-        <location line="+254" />
+        <location line="+258" />
         <location line="+8" />
         <source>Shape segment %1</source>
         <translation>Segment %1 formen</translation>
@@ -443,6 +509,220 @@
         <location line="+3" />
         <source>Change radius of segment %1</source>
         <translation>Radius von Segment %1 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>cam::ExportDialog</name>
+    <message>
+        <location filename="../../src/app/export/export_dialog.cpp" line="+51" />
+        <location line="+207" />
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <location line="-198" />
+        <source>&amp;Format:</source>
+        <translation>&amp;Format:</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Instants over one turn, equally spaced in time</source>
+        <translation>Zeitpunkte über eine Umdrehung, zeitlich gleichabständig</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Samples per turn:</source>
+        <translation>&amp;Stützstellen je Umdrehung:</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <location line="+25" />
+        <location line="+24" />
+        <source>Splines become tangent arc pairs within this distance</source>
+        <translation>Splines werden zu tangentialen Bogenpaaren innerhalb dieses Abstands</translation>
+    </message>
+    <message>
+        <location line="-48" />
+        <location line="+25" />
+        <location line="+24" />
+        <source>Spline &amp;tolerance:</source>
+        <translation>Spline-&amp;Toleranz:</translation>
+    </message>
+    <message>
+        <location line="-48" />
+        <source>One closed &amp;polyline with bulges</source>
+        <translation>Eine geschlossene &amp;Polylinie mit Bögen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Instead of one LINE or ARC entity per segment</source>
+        <translation>Statt eines LINE- oder ARC-Elements je Segment</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Bézier and Hermite segments exactly, instead of arc pairs</source>
+        <translation>Bézier- und Hermite-Segmente exakt statt als Bogenpaare</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Arc &amp;centres on layer CENTRES</source>
+        <translation>Bogen&amp;mittelpunkte auf Layer CENTRES</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The cutter's radius: the path keeps this distance</source>
+        <translation>Der Fräserradius: die Bahn hält diesen Abstand</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <location line="+14" />
+        <source>Tool &amp;radius:</source>
+        <translation>Werkzeug&amp;radius:</translation>
+    </message>
+    <message>
+        <location line="-2" />
+        <source>The cutter's radius (the project's machining section gives the default)</source>
+        <translation>Der Fräserradius (vorgegeben aus dem Bearbeitungsabschnitt des Projekts)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Feed along the profile; plunges go at half</source>
+        <translation>Vorschub entlang des Profils; Eintauchen mit der Hälfte</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Total depth of cut below the stock's top (Z0)</source>
+        <translation>Gesamte Schnitttiefe unter der Rohteiloberkante (Z0)</translation>
+    </message>
+    <message>
+        <location line="-33" />
+        <source>Splines as SP&amp;LINE entities</source>
+        <translation>Splines als SP&amp;LINE-Elemente</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Tool centre path on layer TOOLPAT&amp;H</source>
+        <translation>Werkzeugmittelpunktsbahn auf Layer TOOLPAT&amp;H</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>Fee&amp;d:</source>
+        <translation>&amp;Vorschub:</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>De&amp;pth:</source>
+        <translation>T&amp;iefe:</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Step down by</source>
+        <translation>&amp;Zustellung je</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Depth of each pass; the last pass reaches the full depth</source>
+        <translation>Tiefe je Durchgang; der letzte erreicht die volle Tiefe</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Part contour with cutter &amp;compensation (G41)</source>
+        <translation>Werkstückkontur mit Fräser&amp;radiuskorrektur (G41)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Program the profile itself and let the controller offset it by the radius of tool 1, instead of the tool centre path</source>
+        <translation>Das Profil selbst programmieren und die Steuerung um den Radius von Werkzeug 1 versetzen lassen, statt der Werkzeugmittelpunktsbahn</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Equidistant master angles over one turn (360° not repeated)</source>
+        <translation>Gleichabständige Leitwinkel über eine Umdrehung (360° nicht wiederholt)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Points:</source>
+        <translation>&amp;Punkte:</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>CSV</source>
+        <translation>CSV</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>CODESYS Structured Text (SMC_CAMXYVA)</source>
+        <translation>CODESYS Strukturierter Text (SMC_CAMXYVA)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>&amp;Dialect:</source>
+        <translation>&amp;Dialekt:</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>&amp;Plot:</source>
+        <translation>&amp;Diagramm:</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>PNG image</source>
+        <translation>PNG-Bild</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>PDF document (vector)</source>
+        <translation>PDF-Dokument (Vektor)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>SVG drawing (vector)</source>
+        <translation>SVG-Zeichnung (Vektor)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Type:</source>
+        <translation>&amp;Art:</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Si&amp;ze (px, pt):</source>
+        <translation>&amp;Größe (px, pt):</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>&amp;Browse…</source>
+        <translation>&amp;Durchsuchen…</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>F&amp;ile:</source>
+        <translation>Dat&amp;ei:</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <location line="+92" />
+        <source>Name the file to write.</source>
+        <translation>Geben Sie die zu schreibende Datei an.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The folder %1 does not exist.</source>
+        <translation>Den Ordner %1 gibt es nicht.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 is a folder; name a file in it.</source>
+        <translation>%1 ist ein Ordner; geben Sie eine Datei darin an.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>No plot can be drawn yet.</source>
+        <translation>Noch kann kein Diagramm gezeichnet werden.</translation>
     </message>
 </context>
 <context>
@@ -747,7 +1027,7 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+77" />
+        <location filename="../../src/app/mainwindow.cpp" line="+78" />
         <source>computing…</source>
         <translation>wird berechnet…</translation>
     </message>
@@ -877,6 +1157,103 @@
         <location line="-198" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/mainwindow_exports.cpp" line="+47" />
+        <source>E&amp;xport…</source>
+        <translation>E&amp;xportieren…</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Write the profile as CSV, DXF, SVG, G-code or a servo cam table, or a plot as a picture (Ctrl+E)</source>
+        <translation>Das Profil als CSV, DXF, SVG, G-Code oder Servo-Kurventabelle schreiben, oder ein Diagramm als Bild (Strg+E)</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Export Plot…</source>
+        <translation>Diagramm exportieren…</translation>
+    </message>
+    <message>
+        <location line="+58" />
+        <source>Nothing has been computed yet.</source>
+        <translation>Es wurde noch nichts berechnet.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The project has no machining section: there is no %1 plot.</source>
+        <translation>Das Projekt hat keinen Bearbeitungsabschnitt: es gibt kein Diagramm „%1“.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The %1 plot is drawn only while the Machining panel is open (Ctrl+M).</source>
+        <translation>Das Diagramm „%1“ wird nur gezeichnet, während die Bearbeitungsleiste offen ist (Strg+M).</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>The picture could not be drawn.</source>
+        <translation>Das Bild konnte nicht gezeichnet werden.</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>PNG image (*.png)</source>
+        <translation>PNG-Bild (*.png)</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF-Dokument (*.pdf)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>SVG drawing (*.svg)</source>
+        <translation>SVG-Zeichnung (*.svg)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Export Plot</source>
+        <translation>Diagramm exportieren</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>%1 plot</source>
+        <translation>Diagramm „%1“</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>The project has problems; correct them first:
+%1</source>
+        <translation>Das Projekt hat Fehler; beheben Sie sie zuerst:
+%1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Exporting %1 to %2…</source>
+        <translation>Exportiere %1 nach %2…</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>Exported %1 to %2 (%3)</source>
+        <translation>%1 nach %2 exportiert (%3)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Export failed: %1</source>
+        <translation>Export fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 was not written.</source>
+        <translation>%1 wurde nicht geschrieben.</translation>
     </message>
 </context>
 <context>
@@ -1345,7 +1722,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../../src/app/main.cpp" line="+54" />
+        <location filename="../../src/app/main.cpp" line="+79" />
         <source>Design and inspect cam contours.</source>
         <translation>Kurvenkonturen entwerfen und prüfen.</translation>
     </message>
@@ -1363,6 +1740,21 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <location line="+3" />
         <source>Window size for --screenshot.</source>
         <translation>Fenstergröße für --screenshot.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Draw one plot of PROJECT into --out and exit (contour, velocity, acceleration, jerk, feed, axis-acceleration).</source>
+        <translation>Ein Diagramm von PROJECT nach --out zeichnen und beenden (contour, velocity, acceleration, jerk, feed, axis-acceleration).</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Picture format for --export-plot: png, pdf or svg (default: the suffix of --out).</source>
+        <translation>Bildformat für --export-plot: png, pdf oder svg (Vorgabe: die Endung von --out).</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The file --export-plot writes.</source>
+        <translation>Die Datei, die --export-plot schreibt.</translation>
     </message>
 </context>
 </TS>

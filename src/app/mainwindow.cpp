@@ -59,6 +59,7 @@ MainWindow::MainWindow(QWidget* parent)
             [this](const QString& text, int ms) { statusBar()->showMessage(text, ms); });
     setUpDocks();
     setUpActions();
+    setUpExports();
 
     m_validationLabel = new QLabel(this);
     m_validationLabel->setObjectName("validationLabel");

@@ -7,7 +7,9 @@
 #include <memory>
 
 #include "engine/compute_result.h"
+#include "export/export_request.h"
 
+class QCustomPlot;
 class QLabel;
 
 namespace Ui {
@@ -67,6 +69,22 @@ public:
     /// @brief Puts the cursor at time t (s): readout, follower ray and plot cursors.
     void setCursorTime(double t);
 
+    /// @brief The widget that draws this plot.
+    [[nodiscard]] QCustomPlot* plotWidget(PlotKind kind) const;
+    /// @brief The plots that can be drawn now: every plot once a result is shown, the
+    /// machining plots only while the Machining panel shows times of a machining section.
+    [[nodiscard]] std::vector<PlotKind> drawablePlots() const;
+    /// @brief The plot as a picture titled "PROJECT — PLOT" (renderPlotPicture), at `size`
+    /// (empty: the plot's size on screen). Empty with `problem` set when it cannot be drawn.
+    [[nodiscard]] QByteArray plotPicture(PlotKind kind, PictureFormat format, QSize size,
+                                         QString* problem);
+    /// @brief Writes the export (File → Export… after its dialog): text formats are made and
+    /// written in a worker thread, plot pictures drawn here and written at once. Reports in the
+    /// status bar, or in a message box naming the problem; emits exportFinished() either way.
+    void exportFile(const ExportRequest& request);
+    /// @brief Shows the Machining panel (its plots and times are computed only while shown).
+    void showMachiningPanel();
+
     /// @brief Runs the event loop until the plots show the result of the newest request.
     bool waitForCurrentResult(int timeoutMs);
     /// @brief The last result that could be computed: what the views draw (null before one).
@@ -75,6 +93,8 @@ public:
 signals:
     /// The plots show this result (emitted after they were updated).
     void resultShown(const cam::ComputeResultPtr& result);
+    /// An export ended: `problem` is empty when `path` was written.
+    void exportFinished(const QString& path, const QString& problem);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -83,6 +103,13 @@ protected:
 
 private:
     void setUpActions();
+    /// File → Export… and right-click → Export Plot… on every plot.
+    void setUpExports();
+    void askExportPlot(PlotKind kind);
+    void finishExport(const QString& path, const QString& what, qint64 bytes,
+                      const QString& problem);
+    /// The project's file name without .cam.json ("untitled" before it has one).
+    [[nodiscard]] QString exportBaseName() const;
     void setUpDocks();
     /// Shows what a contour edit did (status bar, selection) or why not (a message box titled
     /// `title`; none when empty).

@@ -20,4 +20,12 @@ class MainWindow;
 /// when the computation did not finish); messages go to stderr.
 int writeScreenshot(MainWindow& window, const QString& file, const QString& sizeText);
 
+/// @brief `--export-plot NAME [--format png|pdf|svg] --out FILE [--size WxH]`: the plot of the
+/// loaded project as MainWindow::plotPicture() draws it, written through the one file writer.
+/// The format defaults to FILE's suffix, the size to defaultPictureSize(). Returns the exit
+/// code as camwright-cli does (1 a bad argument, 2 a file that cannot be written, 3 a plot that
+/// cannot be drawn); messages go to stderr.
+int writePlotPicture(MainWindow& window, const QString& plotName, const QString& formatName,
+                     const QString& file, const QString& sizeText);
+
 }  // namespace cam

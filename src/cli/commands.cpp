@@ -9,12 +9,14 @@
 #include <ostream>
 
 #include "analysis/analysis.h"
+#include "cli/plot_pictures.h"
 #include "common/angles.h"
 #include "contour/contour.h"
 #include "export/cam_table.h"
 #include "export/dxf.h"
 #include "export/gcode.h"
 #include "export/number_text.h"
+#include "export/sample_csv.h"
 #include "export/svg.h"
 #include "fillet/fillet.h"
 #include "io/atomic_file.h"
@@ -105,18 +107,8 @@ void printJson(std::ostream& out, const Json& result) {
 
 /// Every sampled value is finite, checked before the first row is written.
 void requireFiniteColumns(const SampledTurn& turn) {
-    const std::pair<const char*, const std::vector<double>*> columns[] = {
-        {"t", &turn.t},        {"phi_deg", &turn.phi}, {"r", &turn.r},        {"x", &turn.x},
-        {"y", &turn.y},        {"v_r", &turn.vR},      {"v_phi", &turn.vPhi}, {"v", &turn.v},
-        {"a_r", &turn.aR},     {"a_phi", &turn.aPhi},  {"a", &turn.a},        {"j_r", &turn.jR},
-        {"j_phi", &turn.jPhi}, {"j", &turn.j}};
-    for (const auto& [name, values] : columns) {
-        for (std::size_t k = 0; k < values->size(); ++k) {
-            if (std::isfinite((*values)[k])) continue;
-            throw CliError{kNotComputable, std::string("sample ") + std::to_string(k) + ", " + name,
-                           "is not a finite number (" + formatNumber((*values)[k]) +
-                               "): the result is beyond what a double can hold"};
-        }
+    if (const auto problem = firstNonFiniteSample(turn)) {
+        throw CliError{kNotComputable, problem->location, problem->message};
     }
 }
 
@@ -178,7 +170,7 @@ void writeSampleCsv(const Loaded& loaded, long long n, std::ostream& out,
     sampleTurn(loaded.contour, loaded.omega, static_cast<std::size_t>(n), turn);
     requireFiniteColumns(turn);
 
-    std::string chunk = "t,phi_deg,segment,r,x,y,v_r,v_phi,v,a_r,a_phi,a,j_r,j_phi,j\n";
+    std::string chunk(kSampleCsvHeader);
     auto flush = [&] {
         if (file) {
             file->write(chunk);
@@ -188,19 +180,7 @@ void writeSampleCsv(const Loaded& loaded, long long n, std::ostream& out,
         chunk.clear();
     };
     for (std::size_t k = 0; k < turn.size(); ++k) {
-        const double row[] = {
-            turn.t[k],  radToDeg(turn.phi[k]), 0.0,       turn.r[k],  turn.x[k],    turn.y[k],
-            turn.vR[k], turn.vPhi[k],          turn.v[k], turn.aR[k], turn.aPhi[k], turn.a[k],
-            turn.jR[k], turn.jPhi[k],          turn.j[k]};
-        for (std::size_t c = 0; c < std::size(row); ++c) {
-            if (c > 0) chunk += ',';
-            if (c == 2) {
-                chunk += std::to_string(turn.segment[k]);
-            } else {
-                appendExact(chunk, row[c]);
-            }
-        }
-        chunk += '\n';
+        appendSampleCsvRow(chunk, turn, k);
         if (chunk.size() > (1u << 20)) flush();
         // A failed stdout (full disk, closed) is reported by main; a failed --out file below.
         if (!out || (file && !file->ok())) break;
@@ -526,7 +506,7 @@ void writeExport(const std::string& path, const std::string& text) {
 }
 
 /// The formats `export` writes today, in the order --help lists them.
-constexpr const char* kExportFormats = "csv, dxf, svg, gcode, camtable";
+constexpr const char* kExportFormats = "csv, dxf, svg, png, pdf, gcode, camtable";
 
 }  // namespace
 
@@ -538,8 +518,11 @@ int runExport(const Arguments& args, std::ostream& out) {
                        "--format is required (" + std::string(kExportFormats) + ")"};
     const std::optional<std::string> outPath = args.option("--out");
     if (!outPath) throw CliError{kUsage, "export", "--out FILE is required"};
+    const bool picture =
+        *format == "png" || *format == "pdf" || (*format == "svg" && args.option("--plot"));
     const bool known = *format == "csv" || *format == "dxf" || *format == "svg" ||
-                       *format == "gcode" || *format == "camtable";
+                       *format == "png" || *format == "pdf" || *format == "gcode" ||
+                       *format == "camtable";
     if (!known) {
         throw CliError{
             kUsage, "--format",
@@ -552,10 +535,11 @@ int runExport(const Arguments& args, std::ostream& out) {
         {"svg", {"--tolerance"}},
         {"gcode", {"--tolerance", "--tool-radius", "--depth", "--step-down"}},
         {"camtable", {"--points", "--dialect"}},
+        {"picture", {"--plot", "--size"}},
     };
     for (const auto& [name, value] : args.options) {
         if (name == "--format" || name == "--out") continue;
-        const auto& ok = accepts.at(*format);
+        const auto& ok = accepts.at(picture ? "picture" : *format);
         if (std::find(ok.begin(), ok.end(), name) == ok.end()) {
             throw CliError{kUsage, name, "is not an option of --format " + *format};
         }
@@ -582,6 +566,15 @@ int runExport(const Arguments& args, std::ostream& out) {
     }
     const Loaded loaded = load(input);
 
+    if (picture) {
+        const std::string plot = args.option("--plot").value_or("contour");
+        const auto& names = kPlotNames;
+        if (std::find(std::begin(names), std::end(names), plot) == std::end(names)) {
+            throw CliError{kUsage, "--plot",
+                           "unknown plot '" + plot + "' (one of " + plotNameList() + ")"};
+        }
+        return drawPlotWithApp(input, plot, *format, args.option("--size"), *outPath);
+    }
     if (*format == "csv") {
         long long n = loaded.project.samplesPerTurnOrDefault();
         if (const auto text = args.option("--points")) {

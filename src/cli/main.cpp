@@ -31,17 +31,21 @@ commands:
                                         round the corner between contour[K-1] and contour[K]
                                         by a tangent arc (radius given or V²/(vae·A))
 
-  export PROJECT --format csv|dxf|svg|gcode|camtable --out FILE
+  export PROJECT --format csv|dxf|svg|png|pdf|gcode|camtable --out FILE
          [--tolerance MM] [--points N] [--dialect csv|codesys] [--tool-radius MM]
          [--polyline] [--spline-entities] [--centres]
          [--depth MM] [--step-down MM] [--compensation]
+         [--plot contour|velocity|acceleration|jerk|feed|axis-acceleration] [--size WxH]
                                         the profile for CAD (dxf: LINE/ARC on layer CONTOUR,
                                         TOOLPATH with --tool-radius, CENTRES; svg: 1:1 in mm),
                                         G-code milling it from outside (gcode: the tool-centre
                                         path, or the contour with G41/G42 by --compensation;
                                         tool radius from the project unless given, depth
                                         default 5 mm, passes of --step-down), the sampled turn
-                                        (csv) or a servo cam table (camtable)
+                                        (csv) or a servo cam table (camtable); png, pdf and
+                                        svg --plot: a plot as the app draws it (by the app
+                                        camwright beside this program; default contour,
+                                        1200x800 px for png, A4 landscape for pdf and svg)
 
 units: mm, s, degrees; v in mm/s, a in mm/s², j in mm/s³.
 exit codes: 0 ok, 1 usage error, 2 invalid input (or results that cannot be written),
@@ -72,7 +76,7 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
         {"export",
          1,
          {"--format", "--out", "--tolerance", "--points", "--dialect", "--tool-radius", "--depth",
-          "--step-down"},
+          "--step-down", "--plot", "--size"},
          {"--polyline", "--spline-entities", "--centres", "--compensation"}},
     };
     try {

@@ -199,6 +199,10 @@ void ContourView::keepEqualAspect() {
 void ContourView::resizeEvent(QResizeEvent* event) {
     QCustomPlot::resizeEvent(event);
     m_staleLabel->place();
+    fitToViewport();
+}
+
+void ContourView::fitToViewport() {
     if (m_autoFit) {
         resetZoom();
     } else {

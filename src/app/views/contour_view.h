@@ -31,6 +31,9 @@ public:
     void setSelectedSegment(int row);
     /// @brief Fits the contour into the view with equal scales.
     void resetZoom();
+    /// @brief Keeps equal scales at the current viewport: refits while the user has not zoomed
+    /// or panned, else widens one axis (what a resize does; a picture at another size too).
+    void fitToViewport();
     /// @brief Why the contour shown is out of date; empty when it is the current project's.
     [[nodiscard]] QString staleReason() const;
 

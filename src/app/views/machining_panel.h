@@ -24,6 +24,10 @@ class MachiningPanel : public QWidget {
     Q_OBJECT
 public:
     explicit MachiningPanel(ProjectDocument* document, QWidget* parent = nullptr);
+    /// @brief The feed along the path and the axis accelerations (shown with a machining
+    /// section).
+    [[nodiscard]] QCustomPlot* feedPlot() const { return m_feedPlot; }
+    [[nodiscard]] QCustomPlot* accelerationPlot() const { return m_accelPlot; }
 
     void setOutcome(const TimingOutcomePtr& outcome);
     /// @brief The computation is running (edits arrived, times not back yet).

@@ -1,0 +1,316 @@
+#include "export/export_dialog.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStackedWidget>
+#include <QVBoxLayout>
+
+#include "widgets/number_spin_box.h"
+
+namespace cam {
+namespace {
+
+NumberSpinBox* lengthBox(QWidget* parent, const char* name, double min, double max, double value,
+                         const QString& tip) {
+    auto* box = new NumberSpinBox(parent);
+    box->setObjectName(name);
+    box->setRange(min, max);
+    box->setValue(value);
+    box->setSuffix(QStringLiteral(" mm"));
+    box->setToolTip(tip);
+    return box;
+}
+
+QWidget* page(QStackedWidget* pages, QFormLayout*& form) {
+    auto* w = new QWidget(pages);
+    form = new QFormLayout(w);
+    pages->addWidget(w);
+    return w;
+}
+
+}  // namespace
+
+ExportDialog::ExportDialog(const Project& project, const QString& fileName, const QString& baseName,
+                           std::vector<PlotKind> plots, QWidget* parent)
+    : QDialog(parent),
+      m_baseName(baseName),
+      m_plots(std::move(plots)),
+      m_title(project.name.empty() ? fileName.toStdString() : project.name),
+      m_tableName(project.name.empty() ? baseName.toStdString() : project.name) {
+    setWindowTitle(tr("Export"));
+    setObjectName("exportDialog");
+    auto* layout = new QVBoxLayout(this);
+    auto* top = new QFormLayout;
+    m_format = new QComboBox(this);
+    m_format->setObjectName("exportFormat");
+    for (ExportFormat f : kExportFormats) {
+        m_format->addItem(exportFormatTitle(f), static_cast<int>(f));
+    }
+    top->addRow(tr("&Format:"), m_format);
+    layout->addLayout(top);
+
+    m_pages = new QStackedWidget(this);
+    layout->addWidget(m_pages);
+    const MachiningSpec machining = project.machining.value_or(MachiningSpec{});
+    const double toolRadius = machining.toolRadius > 0.0 ? machining.toolRadius : 5.0;
+    QFormLayout* form = nullptr;
+
+    // CSV
+    page(m_pages, form);
+    m_csvPoints = new QSpinBox(this);
+    m_csvPoints->setObjectName("csvPoints");
+    m_csvPoints->setRange(1, static_cast<int>(kMaxSamplesPerTurn));
+    m_csvPoints->setValue(static_cast<int>(project.samplesPerTurnOrDefault()));
+    m_csvPoints->setToolTip(tr("Instants over one turn, equally spaced in time"));
+    form->addRow(tr("&Samples per turn:"), m_csvPoints);
+
+    // DXF
+    page(m_pages, form);
+    m_dxfTolerance = lengthBox(this, "dxfTolerance", 1e-6, 1.0, kDefaultExportToleranceMm,
+                               tr("Splines become tangent arc pairs within this distance"));
+    form->addRow(tr("Spline &tolerance:"), m_dxfTolerance);
+    m_dxfPolyline = new QCheckBox(tr("One closed &polyline with bulges"), this);
+    m_dxfPolyline->setObjectName("dxfPolyline");
+    m_dxfPolyline->setToolTip(tr("Instead of one LINE or ARC entity per segment"));
+    form->addRow(m_dxfPolyline);
+    m_dxfSplines = new QCheckBox(tr("Splines as SP&LINE entities"), this);
+    m_dxfSplines->setObjectName("dxfSplines");
+    m_dxfSplines->setToolTip(tr("Bézier and Hermite segments exactly, instead of arc pairs"));
+    form->addRow(m_dxfSplines);
+    m_dxfCentres = new QCheckBox(tr("Arc &centres on layer CENTRES"), this);
+    m_dxfCentres->setObjectName("dxfCentres");
+    form->addRow(m_dxfCentres);
+    m_dxfToolPath = new QCheckBox(tr("Tool centre path on layer TOOLPAT&H"), this);
+    m_dxfToolPath->setObjectName("dxfToolPath");
+    form->addRow(m_dxfToolPath);
+    m_dxfToolRadius = lengthBox(this, "dxfToolRadius", 1e-6, 1e6, toolRadius,
+                                tr("The cutter's radius: the path keeps this distance"));
+    m_dxfToolRadius->setEnabled(false);
+    form->addRow(tr("Tool &radius:"), m_dxfToolRadius);
+    connect(m_dxfToolPath, &QCheckBox::toggled, m_dxfToolRadius, &QWidget::setEnabled);
+
+    // SVG
+    page(m_pages, form);
+    m_svgTolerance = lengthBox(this, "svgTolerance", 1e-6, 1.0, kSvgToleranceMm,
+                               tr("Splines become tangent arc pairs within this distance"));
+    form->addRow(tr("Spline &tolerance:"), m_svgTolerance);
+
+    // G-code
+    page(m_pages, form);
+    m_gcodeToolRadius = lengthBox(this, "gcodeToolRadius", 1e-6, 1e6, toolRadius,
+                                  tr("The cutter's radius (the project's machining section "
+                                     "gives the default)"));
+    form->addRow(tr("Tool &radius:"), m_gcodeToolRadius);
+    m_gcodeFeed = lengthBox(this, "gcodeFeed", 1e-3, 1e7, machining.feedMax * 60.0,
+                            tr("Feed along the profile; plunges go at half"));
+    m_gcodeFeed->setSuffix(QStringLiteral(" mm/min"));
+    form->addRow(tr("Fee&d:"), m_gcodeFeed);
+    m_gcodeDepth = lengthBox(this, "gcodeDepth", 1e-6, 1e4, kDefaultGcodeDepthMm,
+                             tr("Total depth of cut below the stock's top (Z0)"));
+    form->addRow(tr("De&pth:"), m_gcodeDepth);
+    m_gcodeStepDownOn = new QCheckBox(tr("&Step down by"), this);
+    m_gcodeStepDownOn->setObjectName("gcodeStepDownOn");
+    m_gcodeStepDown = lengthBox(this, "gcodeStepDown", 1e-6, 1e4, 1.0,
+                                tr("Depth of each pass; the last pass reaches the full depth"));
+    m_gcodeStepDown->setEnabled(false);
+    connect(m_gcodeStepDownOn, &QCheckBox::toggled, m_gcodeStepDown, &QWidget::setEnabled);
+    form->addRow(m_gcodeStepDownOn, m_gcodeStepDown);
+    m_gcodeTolerance = lengthBox(this, "gcodeTolerance", 1e-6, 1.0, kDefaultGcodeToleranceMm,
+                                 tr("Splines become tangent arc pairs within this distance"));
+    form->addRow(tr("Spline &tolerance:"), m_gcodeTolerance);
+    m_gcodeCompensation = new QCheckBox(tr("Part contour with cutter &compensation (G41)"), this);
+    m_gcodeCompensation->setObjectName("gcodeCompensation");
+    m_gcodeCompensation->setToolTip(
+        tr("Program the profile itself and let the controller offset it by the radius of "
+           "tool 1, instead of the tool centre path"));
+    form->addRow(m_gcodeCompensation);
+
+    // Cam table
+    page(m_pages, form);
+    m_tablePoints = new QSpinBox(this);
+    m_tablePoints->setObjectName("tablePoints");
+    m_tablePoints->setRange(static_cast<int>(kMinCamTablePoints),
+                            static_cast<int>(kMaxCamTablePoints));
+    m_tablePoints->setValue(static_cast<int>(kDefaultCamTablePoints));
+    m_tablePoints->setToolTip(tr("Equidistant master angles over one turn (360° not repeated)"));
+    form->addRow(tr("&Points:"), m_tablePoints);
+    m_tableDialect = new QComboBox(this);
+    m_tableDialect->setObjectName("tableDialect");
+    m_tableDialect->addItem(tr("CSV"), static_cast<int>(CamTableDialect::Csv));
+    m_tableDialect->addItem(tr("CODESYS Structured Text (SMC_CAMXYVA)"),
+                            static_cast<int>(CamTableDialect::Codesys));
+    form->addRow(tr("&Dialect:"), m_tableDialect);
+    connect(m_tableDialect, &QComboBox::currentIndexChanged, this, &ExportDialog::matchSuffix);
+
+    // Plot picture
+    page(m_pages, form);
+    m_plot = new QComboBox(this);
+    m_plot->setObjectName("plotKind");
+    for (PlotKind kind : m_plots) m_plot->addItem(plotKindTitle(kind), static_cast<int>(kind));
+    form->addRow(tr("&Plot:"), m_plot);
+    m_picture = new QComboBox(this);
+    m_picture->setObjectName("pictureFormat");
+    m_picture->addItem(tr("PNG image"), static_cast<int>(PictureFormat::Png));
+    m_picture->addItem(tr("PDF document (vector)"), static_cast<int>(PictureFormat::Pdf));
+    m_picture->addItem(tr("SVG drawing (vector)"), static_cast<int>(PictureFormat::Svg));
+    form->addRow(tr("&Type:"), m_picture);
+    m_width = new QSpinBox(this);
+    m_width->setObjectName("pictureWidth");
+    m_height = new QSpinBox(this);
+    m_height->setObjectName("pictureHeight");
+    for (QSpinBox* s : {m_width, m_height}) s->setRange(kMinPictureSide, kMaxPictureSide);
+    auto* sizeRow = new QHBoxLayout;
+    sizeRow->addWidget(m_width);
+    sizeRow->addWidget(new QLabel(QStringLiteral("×"), this));
+    sizeRow->addWidget(m_height);
+    form->addRow(tr("Si&ze (px, pt):"), sizeRow);
+    const auto pictureChanged = [this] {
+        const QSize size =
+            defaultPictureSize(static_cast<PictureFormat>(m_picture->currentData().toInt()));
+        m_width->setValue(size.width());
+        m_height->setValue(size.height());
+        matchSuffix();
+    };
+    connect(m_picture, &QComboBox::currentIndexChanged, this, pictureChanged);
+    connect(m_plot, &QComboBox::currentIndexChanged, this, &ExportDialog::matchSuffix);
+
+    auto* fileRow = new QHBoxLayout;
+    m_file = new QLineEdit(this);
+    m_file->setObjectName("exportFile");
+    auto* browse = new QPushButton(tr("&Browse…"), this);
+    fileRow->addWidget(m_file, 1);
+    fileRow->addWidget(browse);
+    auto* fileForm = new QFormLayout;
+    fileForm->addRow(tr("F&ile:"), fileRow);
+    layout->addLayout(fileForm);
+    m_problem = new QLabel(this);
+    m_problem->setObjectName("exportProblem");
+    m_problem->setStyleSheet("color: #b00020;");
+    m_problem->setWordWrap(true);
+    m_problem->hide();
+    layout->addWidget(m_problem);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    buttons->button(QDialogButtonBox::Ok)->setText(tr("&Export"));
+    layout->addWidget(buttons);
+    connect(buttons, &QDialogButtonBox::accepted, this, &ExportDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    connect(browse, &QPushButton::clicked, this, &ExportDialog::browse);
+    connect(m_format, &QComboBox::currentIndexChanged, this, &ExportDialog::formatChanged);
+
+    const QSettings settings;
+    const QString folder = settings.value("export/folder", QDir::homePath()).toString();
+    m_file->setText(QDir(folder).filePath(baseName));
+    pictureChanged();
+    const int last = m_format->findData(settings.value("export/format", 1).toInt());
+    m_format->setCurrentIndex(last >= 0 ? last : 1);
+    formatChanged();
+}
+
+ExportFormat ExportDialog::format() const {
+    return static_cast<ExportFormat>(m_format->currentData().toInt());
+}
+
+void ExportDialog::setFormat(ExportFormat format) {
+    m_format->setCurrentIndex(m_format->findData(static_cast<int>(format)));
+}
+
+void ExportDialog::setFileName(const QString& path) { m_file->setText(path); }
+
+void ExportDialog::formatChanged() {
+    m_pages->setCurrentIndex(m_format->currentIndex());
+    matchSuffix();
+}
+
+void ExportDialog::matchSuffix() {
+    const QString suffix = exportSuffix(request());
+    QString path = m_file->text();
+    if (path.isEmpty()) return;
+    const QFileInfo info(path);
+    const QString stem =
+        info.completeSuffix().isEmpty()
+            ? info.fileName()
+            : info.fileName().left(info.fileName().size() - info.suffix().size() - 1);
+    // A plot's name is part of its file's name: switching plots renames the file.
+    QString base = stem;
+    for (PlotKind kind : kPlotKinds) {
+        const QString tail = "-" + plotKindName(kind);
+        if (base.endsWith(tail)) base.chop(tail.size());
+    }
+    if (format() == ExportFormat::Plot && m_plot->count() > 0) {
+        base += "-" + plotKindName(static_cast<PlotKind>(m_plot->currentData().toInt()));
+    }
+    m_file->setText(info.dir().filePath(base + "." + suffix));
+}
+
+void ExportDialog::browse() {
+    const ExportRequest r = request();
+    const QString filter = exportFormatTitle(r.format) + " (*." + exportSuffix(r) + ")";
+    const QString chosen = QFileDialog::getSaveFileName(this, tr("Export"), m_file->text(), filter);
+    if (!chosen.isEmpty()) m_file->setText(chosen);
+}
+
+ExportRequest ExportDialog::request() const {
+    ExportRequest r;
+    r.format = format();
+    r.path = m_file->text();
+    r.csvPoints = static_cast<std::size_t>(m_csvPoints->value());
+    r.dxf.toleranceMm = m_dxfTolerance->value();
+    r.dxf.polyline = m_dxfPolyline->isChecked();
+    r.dxf.splineEntities = m_dxfSplines->isChecked();
+    r.dxf.centres = m_dxfCentres->isChecked();
+    if (m_dxfToolPath->isChecked()) r.dxf.toolRadiusMm = m_dxfToolRadius->value();
+    r.svg.toleranceMm = m_svgTolerance->value();
+    r.svg.title = m_title;
+    r.gcode.toolRadiusMm = m_gcodeToolRadius->value();
+    r.gcode.feedMmMin = m_gcodeFeed->value();
+    r.gcode.depthMm = m_gcodeDepth->value();
+    if (m_gcodeStepDownOn->isChecked()) r.gcode.stepDownMm = m_gcodeStepDown->value();
+    r.gcode.toleranceMm = m_gcodeTolerance->value();
+    r.gcode.compensation = m_gcodeCompensation->isChecked();
+    r.gcode.projectName = m_title;
+    r.camTable.points = static_cast<std::size_t>(m_tablePoints->value());
+    r.camTable.dialect = static_cast<CamTableDialect>(m_tableDialect->currentData().toInt());
+    r.camTable.name = m_tableName;
+    if (m_plot->count() > 0) r.plot = static_cast<PlotKind>(m_plot->currentData().toInt());
+    r.picture = static_cast<PictureFormat>(m_picture->currentData().toInt());
+    r.pictureSize = QSize(m_width->value(), m_height->value());
+    return r;
+}
+
+void ExportDialog::accept() {
+    const QString path = m_file->text().trimmed();
+    QString problem;
+    const QFileInfo info(path);
+    if (path.isEmpty()) {
+        problem = tr("Name the file to write.");
+    } else if (!info.dir().exists()) {
+        problem =
+            tr("The folder %1 does not exist.").arg(QDir::toNativeSeparators(info.absolutePath()));
+    } else if (info.isDir()) {
+        problem = tr("%1 is a folder; name a file in it.").arg(QDir::toNativeSeparators(path));
+    } else if (format() == ExportFormat::Plot && m_plot->count() == 0) {
+        problem = tr("No plot can be drawn yet.");
+    }
+    if (!problem.isEmpty()) {
+        m_problem->setText(problem);
+        m_problem->show();
+        return;
+    }
+    QSettings settings;
+    settings.setValue("export/folder", info.absolutePath());
+    settings.setValue("export/format", static_cast<int>(format()));
+    QDialog::accept();
+}
+
+}  // namespace cam

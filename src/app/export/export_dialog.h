@@ -1,0 +1,79 @@
+#pragma once
+/// @file
+/// @brief File → Export…: the format, the options of that format and the file, in one dialog.
+
+#include <QDialog>
+#include <vector>
+
+#include "export/export_request.h"
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QSpinBox;
+class QStackedWidget;
+
+namespace cam {
+
+class NumberSpinBox;
+
+class ExportDialog : public QDialog {
+    Q_OBJECT
+public:
+    /// @brief Options start from the project (its samples per turn, tool radius, feed) and the
+    /// last export (format and folder, from QSettings). The project's name (else `fileName`)
+    /// titles the SVG and G-code as camwright-cli does; the name (else `baseName`, the file
+    /// name without .cam.json) names the cam table's variables, and `baseName` the file by
+    /// default. `plots` are the plots that can be drawn now.
+    ExportDialog(const Project& project, const QString& fileName, const QString& baseName,
+                 std::vector<PlotKind> plots, QWidget* parent = nullptr);
+
+    /// @brief The export as the dialog's fields say (meaningful once accepted).
+    [[nodiscard]] ExportRequest request() const;
+    /// @brief Chooses a format as if the user picked it (the file's suffix follows).
+    void setFormat(ExportFormat format);
+    /// @brief Names the file as if the user typed it.
+    void setFileName(const QString& path);
+
+    void accept() override;
+
+private:
+    void formatChanged();
+    void browse();
+    /// The file's suffix follows the format (and for pictures the picture format).
+    void matchSuffix();
+    [[nodiscard]] ExportFormat format() const;
+
+    QString m_baseName;
+    std::vector<PlotKind> m_plots;
+    QComboBox* m_format = nullptr;
+    QStackedWidget* m_pages = nullptr;
+    QSpinBox* m_csvPoints = nullptr;
+    NumberSpinBox* m_dxfTolerance = nullptr;
+    QCheckBox* m_dxfPolyline = nullptr;
+    QCheckBox* m_dxfSplines = nullptr;
+    QCheckBox* m_dxfCentres = nullptr;
+    QCheckBox* m_dxfToolPath = nullptr;
+    NumberSpinBox* m_dxfToolRadius = nullptr;
+    NumberSpinBox* m_svgTolerance = nullptr;
+    NumberSpinBox* m_gcodeToolRadius = nullptr;
+    NumberSpinBox* m_gcodeFeed = nullptr;
+    NumberSpinBox* m_gcodeDepth = nullptr;
+    QCheckBox* m_gcodeStepDownOn = nullptr;
+    NumberSpinBox* m_gcodeStepDown = nullptr;
+    NumberSpinBox* m_gcodeTolerance = nullptr;
+    QCheckBox* m_gcodeCompensation = nullptr;
+    QSpinBox* m_tablePoints = nullptr;
+    QComboBox* m_tableDialect = nullptr;
+    QComboBox* m_plot = nullptr;
+    QComboBox* m_picture = nullptr;
+    QSpinBox* m_width = nullptr;
+    QSpinBox* m_height = nullptr;
+    QLineEdit* m_file = nullptr;
+    QLabel* m_problem = nullptr;
+    std::string m_title;      ///< of the SVG and the G-code header
+    std::string m_tableName;  ///< of the cam table
+};
+
+}  // namespace cam

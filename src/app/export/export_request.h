@@ -1,0 +1,57 @@
+#pragma once
+/// @file
+/// @brief What File → Export… asks for: a format, its options and a file; and the text of the
+/// file formats that the core writes (every format but plot pictures).
+
+#include <QSize>
+#include <QString>
+#include <cstddef>
+#include <string>
+
+#include "common/diagnostic.h"
+#include "export/cam_table.h"
+#include "export/dxf.h"
+#include "export/gcode.h"
+#include "export/plot_picture.h"
+#include "export/svg.h"
+#include "project/project.h"
+
+namespace cam {
+
+enum class ExportFormat {
+    Csv,       ///< the sampled turn (exports.md `csv`)
+    Dxf,       ///< the DXF drawing
+    Svg,       ///< the 1:1 SVG drawing
+    Gcode,     ///< the milling program
+    CamTable,  ///< the servo cam table (CSV or CODESYS Structured Text)
+    Plot,      ///< a picture of one of the app's plots (PNG, PDF, SVG)
+};
+inline constexpr ExportFormat kExportFormats[] = {ExportFormat::Csv,      ExportFormat::Dxf,
+                                                  ExportFormat::Svg,      ExportFormat::Gcode,
+                                                  ExportFormat::CamTable, ExportFormat::Plot};
+
+struct ExportRequest {
+    ExportFormat format = ExportFormat::Dxf;
+    QString path;               ///< the file to write
+    std::size_t csvPoints = 0;  ///< samples of the turn; 0: the project's samples_per_turn
+    DxfOptions dxf;
+    SvgOptions svg;
+    GcodeOptions gcode;
+    CamTableOptions camTable;
+    PlotKind plot = PlotKind::Contour;
+    PictureFormat picture = PictureFormat::Png;
+    QSize pictureSize;  ///< empty: defaultPictureSize()
+};
+
+/// @brief "DXF drawing (R2000)", … (translated).
+[[nodiscard]] QString exportFormatTitle(ExportFormat format);
+/// @brief The file suffix a request's file gets by default: csv, dxf, svg, ngc, csv or st,
+/// png/pdf/svg.
+[[nodiscard]] QString exportSuffix(const ExportRequest& request);
+
+/// @brief The file's text for every format but Plot, from a snapshot of the project: the same
+/// core functions as `camwright-cli export`. Safe to call from any thread. Errors: the project's
+/// problems, an option out of range, a shape the format cannot take (a tool too wide).
+[[nodiscard]] Result<std::string> exportText(const Project& project, const ExportRequest& request);
+
+}  // namespace cam

@@ -1,0 +1,193 @@
+#include "export/plot_picture.h"
+
+#include <qcustomplot.h>
+#include <QBuffer>
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QPageSize>
+#include <QPdfWriter>
+#include <QStringList>
+#include <QSvgGenerator>
+
+namespace cam {
+namespace {
+
+/// Puts the plot into the picture's state for its lifetime and back afterwards: viewport at the
+/// picture's size, a title row, an x label, the ranges the fit may change.
+class PictureState {
+public:
+    PictureState(QCustomPlot& plot, QSize size, const PictureText& text) : m_plot(plot) {
+        m_viewport = plot.viewport();
+        for (QCPAxis* axis : plot.axisRect()->axes()) m_ranges.push_back({axis, axis->range()});
+        m_xLabel = plot.xAxis->label();
+        if (m_xLabel.isEmpty() && !text.xLabel.isEmpty()) plot.xAxis->setLabel(text.xLabel);
+        // A plot of a stack may leave its numbers to the plot below: a picture stands alone.
+        m_xTickLabels = plot.xAxis->tickLabels();
+        plot.xAxis->setTickLabels(true);
+        if (!text.title.isEmpty()) {
+            plot.plotLayout()->insertRow(0);
+            QFont font = plot.font();
+            font.setPointSizeF(font.pointSizeF() * 1.25);
+            font.setBold(true);
+            m_title = new QCPTextElement(&plot, text.title, font);
+            plot.plotLayout()->addElement(0, 0, m_title);
+        }
+        plot.setViewport(QRect(QPoint(0, 0), size));
+        plot.plotLayout()->update(QCPLayoutElement::upPreparation);
+        plot.plotLayout()->update(QCPLayoutElement::upMargins);
+        plot.plotLayout()->update(QCPLayoutElement::upLayout);
+    }
+    ~PictureState() {
+        if (m_title) {
+            m_plot.plotLayout()->remove(m_title);
+            m_plot.plotLayout()->simplify();
+        }
+        m_plot.xAxis->setLabel(m_xLabel);
+        m_plot.xAxis->setTickLabels(m_xTickLabels);
+        for (const auto& [axis, range] : m_ranges) axis->setRange(range);
+        m_plot.setViewport(m_viewport);
+        m_plot.replot(QCustomPlot::rpQueuedReplot);
+    }
+    PictureState(const PictureState&) = delete;
+    PictureState& operator=(const PictureState&) = delete;
+
+private:
+    QCustomPlot& m_plot;
+    QRect m_viewport;
+    std::vector<std::pair<QCPAxis*, QCPRange>> m_ranges;
+    QString m_xLabel;
+    bool m_xTickLabels = true;
+    QCPTextElement* m_title = nullptr;
+};
+
+QString creator() { return QStringLiteral("Camwright " CAMWRIGHT_VERSION); }
+
+}  // namespace
+
+QString plotKindName(PlotKind kind) {
+    switch (kind) {
+        case PlotKind::Contour:
+            return "contour";
+        case PlotKind::Velocity:
+            return "velocity";
+        case PlotKind::Acceleration:
+            return "acceleration";
+        case PlotKind::Jerk:
+            return "jerk";
+        case PlotKind::Feed:
+            return "feed";
+        case PlotKind::AxisAcceleration:
+            return "axis-acceleration";
+    }
+    return {};
+}
+
+std::optional<PlotKind> plotKindNamed(const QString& name) {
+    for (PlotKind kind : kPlotKinds) {
+        if (plotKindName(kind) == name) return kind;
+    }
+    return std::nullopt;
+}
+
+QString plotKindNames() {
+    QStringList names;
+    for (PlotKind kind : kPlotKinds) names << plotKindName(kind);
+    return names.join(", ");
+}
+
+QString plotKindTitle(PlotKind kind) {
+    switch (kind) {
+        case PlotKind::Contour:
+            return QCoreApplication::translate("PlotKind", "Contour");
+        case PlotKind::Velocity:
+            return QCoreApplication::translate("PlotKind", "Velocity");
+        case PlotKind::Acceleration:
+            return QCoreApplication::translate("PlotKind", "Acceleration");
+        case PlotKind::Jerk:
+            return QCoreApplication::translate("PlotKind", "Jerk");
+        case PlotKind::Feed:
+            return QCoreApplication::translate("PlotKind", "Feed along the path");
+        case PlotKind::AxisAcceleration:
+            return QCoreApplication::translate("PlotKind", "Axis accelerations");
+    }
+    return {};
+}
+
+std::optional<PictureFormat> pictureFormatNamed(const QString& name) {
+    const QString n = name.toLower();
+    if (n == "png") return PictureFormat::Png;
+    if (n == "pdf") return PictureFormat::Pdf;
+    if (n == "svg") return PictureFormat::Svg;
+    return std::nullopt;
+}
+
+std::optional<PictureFormat> pictureFormatOfFile(const QString& fileName) {
+    return pictureFormatNamed(QFileInfo(fileName).suffix());
+}
+
+QString pictureSuffix(PictureFormat format) {
+    switch (format) {
+        case PictureFormat::Png:
+            return "png";
+        case PictureFormat::Pdf:
+            return "pdf";
+        case PictureFormat::Svg:
+            return "svg";
+    }
+    return {};
+}
+
+QSize defaultPictureSize(PictureFormat format) {
+    return format == PictureFormat::Png ? QSize(1200, 800) : QSize(842, 595);
+}
+
+QByteArray renderPlotPicture(QCustomPlot& plot, PictureFormat format, QSize size,
+                             const PictureText& text, const std::function<void()>& fit) {
+    const PictureState state(plot, size, text);
+    if (fit) fit();
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    const int w = size.width(), h = size.height();
+    switch (format) {
+        case PictureFormat::Png: {
+            const QPixmap pixmap = plot.toPixmap(w, h, 1.0);
+            if (pixmap.isNull() || !pixmap.save(&buffer, "PNG")) return {};
+            break;
+        }
+        case PictureFormat::Pdf: {
+            QPdfWriter writer(&buffer);
+            writer.setTitle(text.title);
+            writer.setCreator(creator());
+            writer.setResolution(72);  // one device unit = one point: the plot's pixels
+            writer.setPageSize(
+                QPageSize(QSizeF(w, h), QPageSize::Point, QString(), QPageSize::ExactMatch));
+            writer.setPageMargins(QMarginsF(0, 0, 0, 0));
+            QCPPainter painter;
+            if (!painter.begin(&writer)) return {};
+            painter.setMode(QCPPainter::pmVectorized);
+            painter.setMode(QCPPainter::pmNoCaching);
+            plot.toPainter(&painter, w, h);
+            painter.end();
+            break;
+        }
+        case PictureFormat::Svg: {
+            QSvgGenerator generator;
+            generator.setOutputDevice(&buffer);
+            generator.setSize(size);
+            generator.setViewBox(QRect(QPoint(0, 0), size));
+            generator.setTitle(text.title);
+            generator.setDescription(creator());
+            QCPPainter painter;
+            if (!painter.begin(&generator)) return {};
+            painter.setMode(QCPPainter::pmVectorized);
+            painter.setMode(QCPPainter::pmNoCaching);
+            plot.toPainter(&painter, w, h);
+            painter.end();
+            break;
+        }
+    }
+    return bytes;
+}
+
+}  // namespace cam

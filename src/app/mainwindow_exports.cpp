@@ -1,0 +1,245 @@
+// The main window's exports: File → Export…, right-click → Export Plot… and the pictures of
+// the plots (mainwindow.h).
+
+#include <qcustomplot.h>
+#include <QApplication>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFutureWatcher>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStatusBar>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "document/project_document.h"
+#include "engine/compute_engine.h"
+#include "export/export_dialog.h"
+#include "io/atomic_file.h"
+#include "mainwindow.h"
+#include "ui_mainwindow.h"
+#include "views/contour_view.h"
+#include "views/kinematics_plots.h"
+#include "views/machining_panel.h"
+
+namespace cam {
+
+namespace {
+
+/// What a worker hands back: the bytes written, or the problem.
+struct ExportOutcome {
+    qint64 bytes = 0;
+    QString problem;
+};
+
+QString problemText(const Diagnostics& problems) { return diagnosticsText(problems, 6); }
+
+ExportOutcome writeExport(const QString& path, std::string_view content) {
+    const Diagnostics problems =
+        writeFileAtomically(QFile::encodeName(path).toStdString(), content);
+    if (!problems.empty()) return {0, problemText(problems)};
+    return {static_cast<qint64>(content.size()), {}};
+}
+
+}  // namespace
+
+void MainWindow::setUpExports() {
+    auto* exportAction = new QAction(tr("E&xport…"), this);
+    exportAction->setObjectName("actionExport");
+    exportAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    exportAction->setToolTip(
+        tr("Write the profile as CSV, DXF, SVG, G-code or a servo cam table, or a plot as a "
+           "picture (Ctrl+E)"));
+    m_ui->menuFile->insertAction(m_ui->actionQuit, exportAction);
+    m_ui->menuFile->insertSeparator(m_ui->actionQuit);
+    connect(exportAction, &QAction::triggered, this, [this] {
+        ExportDialog dialog(m_document->project(), m_document->displayName(), exportBaseName(),
+                            drawablePlots(), this);
+        if (dialog.exec() == QDialog::Accepted) exportFile(dialog.request());
+    });
+    for (PlotKind kind : kPlotKinds) {
+        QCustomPlot* plot = plotWidget(kind);
+        plot->setContextMenuPolicy(Qt::CustomContextMenu);
+        connect(plot, &QWidget::customContextMenuRequested, this, [this, kind, plot](QPoint at) {
+            QMenu menu(this);
+            QAction* a = menu.addAction(tr("Export Plot…"));
+            a->setObjectName("actionExportPlot");
+            connect(a, &QAction::triggered, this, [this, kind] { askExportPlot(kind); });
+            menu.exec(plot->mapToGlobal(at));
+        });
+    }
+}
+
+QString MainWindow::exportBaseName() const {
+    const QString path = m_document->filePath();
+    if (path.isEmpty()) return "untitled";
+    QString name = QFileInfo(path).fileName();
+    for (const QString& suffix : {QStringLiteral(".cam.json"), QStringLiteral(".json")}) {
+        if (name.endsWith(suffix)) {
+            name.chop(suffix.size());
+            break;
+        }
+    }
+    return name;
+}
+
+QCustomPlot* MainWindow::plotWidget(PlotKind kind) const {
+    switch (kind) {
+        case PlotKind::Contour:
+            return m_contour;
+        case PlotKind::Velocity:
+            return m_plots->plot(0);
+        case PlotKind::Acceleration:
+            return m_plots->plot(1);
+        case PlotKind::Jerk:
+            return m_plots->plot(2);
+        case PlotKind::Feed:
+            return m_machining->feedPlot();
+        case PlotKind::AxisAcceleration:
+            return m_machining->accelerationPlot();
+    }
+    return nullptr;
+}
+
+void MainWindow::showMachiningPanel() { m_ui->machiningDock->show(); }
+
+std::vector<PlotKind> MainWindow::drawablePlots() const {
+    std::vector<PlotKind> kinds;
+    if (!m_shown) return kinds;
+    const bool machining = !m_ui->machiningDock->isHidden() &&
+                           m_document->project().machining.has_value() &&
+                           m_engine->latestTiming() != nullptr;
+    for (PlotKind kind : kPlotKinds) {
+        if (!isMachiningPlot(kind) || machining) kinds.push_back(kind);
+    }
+    return kinds;
+}
+
+QByteArray MainWindow::plotPicture(PlotKind kind, PictureFormat format, QSize size,
+                                   QString* problem) {
+    const std::vector<PlotKind> drawable = drawablePlots();
+    if (std::find(drawable.begin(), drawable.end(), kind) == drawable.end()) {
+        if (problem) {
+            *problem = !m_shown ? tr("Nothing has been computed yet.")
+                       : !m_document->project().machining
+                           ? tr("The project has no machining section: there is no %1 plot.")
+                                 .arg(plotKindTitle(kind))
+                           : tr("The %1 plot is drawn only while the Machining panel is open "
+                                "(Ctrl+M).")
+                                 .arg(plotKindTitle(kind));
+        }
+        return {};
+    }
+    QCustomPlot* plot = plotWidget(kind);
+    if (size.isEmpty()) size = plot->size();
+    PictureText text;
+    text.title = tr("%1 — %2").arg(exportBaseName(), plotKindTitle(kind));
+    // The stacked plots share the bottom one's x axis label.
+    if (kind == PlotKind::Velocity || kind == PlotKind::Acceleration) {
+        text.xLabel = m_plots->plot(2)->xAxis->label();
+    }
+    std::function<void()> fit;
+    if (kind == PlotKind::Contour) {
+        // The drag handles of the selected segment are for editing, not for the picture.
+        m_contour->setSelectedSegment(-1);
+        fit = [this] { m_contour->fitToViewport(); };
+    }
+    QByteArray bytes = renderPlotPicture(*plot, format, size, text, fit);
+    if (kind == PlotKind::Contour) m_contour->setSelectedSegment(selectedRow());
+    if (bytes.isEmpty() && problem) *problem = tr("The picture could not be drawn.");
+    return bytes;
+}
+
+void MainWindow::askExportPlot(PlotKind kind) {
+    QSettings settings;
+    const QString folder = settings.value("export/folder", QDir::homePath()).toString();
+    const QString suffix = settings.value("export/plotSuffix", "png").toString();
+    const QString proposed =
+        QDir(folder).filePath(exportBaseName() + "-" + plotKindName(kind) + "." + suffix);
+    const QString png = tr("PNG image (*.png)"), pdf = tr("PDF document (*.pdf)"),
+                  svg = tr("SVG drawing (*.svg)");
+    QString selected = suffix == "pdf" ? pdf : suffix == "svg" ? svg : png;
+    QString path = QFileDialog::getSaveFileName(this, tr("Export Plot"), proposed,
+                                                png + ";;" + pdf + ";;" + svg, &selected);
+    if (path.isEmpty()) return;
+    std::optional<PictureFormat> format = pictureFormatOfFile(path);
+    if (!format) {  // no or another suffix: the filter chosen says which
+        format = selected == pdf   ? PictureFormat::Pdf
+                 : selected == svg ? PictureFormat::Svg
+                                   : PictureFormat::Png;
+        path += "." + pictureSuffix(*format);
+    }
+    settings.setValue("export/folder", QFileInfo(path).absolutePath());
+    settings.setValue("export/plotSuffix", pictureSuffix(*format));
+    ExportRequest request;
+    request.format = ExportFormat::Plot;
+    request.plot = kind;
+    request.picture = *format;
+    request.path = path;
+    request.pictureSize = plotWidget(kind)->size();  // what is on screen
+    exportFile(request);
+}
+
+void MainWindow::exportFile(const ExportRequest& request) {
+    const QString what = request.format == ExportFormat::Plot
+                             ? tr("%1 plot").arg(plotKindTitle(request.plot))
+                             : exportFormatTitle(request.format);
+    if (request.format == ExportFormat::Plot) {
+        QString problem;
+        const QSize size = request.pictureSize.isEmpty() ? defaultPictureSize(request.picture)
+                                                         : request.pictureSize;
+        const QByteArray bytes = plotPicture(request.plot, request.picture, size, &problem);
+        if (bytes.isEmpty()) {
+            finishExport(request.path, what, 0, problem);
+            return;
+        }
+        const ExportOutcome outcome =
+            writeExport(request.path, std::string_view(bytes.constData(), bytes.size()));
+        finishExport(request.path, what, outcome.bytes, outcome.problem);
+        return;
+    }
+    if (hasErrors(m_document->diagnostics())) {
+        finishExport(request.path, what, 0,
+                     tr("The project has problems; correct them first:\n%1")
+                         .arg(problemText(m_document->diagnostics())));
+        return;
+    }
+    statusBar()->showMessage(
+        tr("Exporting %1 to %2…").arg(what, QDir::toNativeSeparators(request.path)));
+    // The worker gets a copy of the project: edits meanwhile do not reach it.
+    auto* watcher = new QFutureWatcher<ExportOutcome>(this);
+    connect(watcher, &QFutureWatcher<ExportOutcome>::finished, this,
+            [this, watcher, request, what] {
+                const ExportOutcome outcome = watcher->result();
+                watcher->deleteLater();
+                finishExport(request.path, what, outcome.bytes, outcome.problem);
+            });
+    watcher->setFuture(QtConcurrent::run([project = m_document->project(), request] {
+        const Result<std::string> text = exportText(project, request);
+        if (!text.ok()) return ExportOutcome{0, problemText(text.errors())};
+        return writeExport(request.path, text.value());
+    }));
+}
+
+void MainWindow::finishExport(const QString& path, const QString& what, qint64 bytes,
+                              const QString& problem) {
+    const QString shown = QDir::toNativeSeparators(path);
+    if (problem.isEmpty()) {
+        statusBar()->showMessage(
+            tr("Exported %1 to %2 (%3)").arg(what, shown, QLocale().formattedDataSize(bytes)),
+            10000);
+    } else {
+        statusBar()->showMessage(tr("Export failed: %1").arg(shown), 10000);
+        // Not modal for the event loop: the window stays live, tests can read and close it.
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Export"),
+                                    tr("%1 was not written.").arg(shown), QMessageBox::Ok, this);
+        box->setObjectName("exportProblemBox");
+        box->setInformativeText(problem);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    }
+    emit exportFinished(path, problem);
+}
+
+}  // namespace cam

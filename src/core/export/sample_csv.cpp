@@ -1,0 +1,61 @@
+#include "export/sample_csv.h"
+
+#include <cmath>
+#include <iterator>
+#include <utility>
+
+#include "common/angles.h"
+#include "export/number_text.h"
+
+namespace cam {
+
+std::optional<Diagnostic> firstNonFiniteSample(const SampledTurn& turn) {
+    const std::pair<const char*, const std::vector<double>*> columns[] = {
+        {"t", &turn.t},        {"phi_deg", &turn.phi}, {"r", &turn.r},        {"x", &turn.x},
+        {"y", &turn.y},        {"v_r", &turn.vR},      {"v_phi", &turn.vPhi}, {"v", &turn.v},
+        {"a_r", &turn.aR},     {"a_phi", &turn.aPhi},  {"a", &turn.a},        {"j_r", &turn.jR},
+        {"j_phi", &turn.jPhi}, {"j", &turn.j}};
+    for (const auto& [name, values] : columns) {
+        for (std::size_t k = 0; k < values->size(); ++k) {
+            if (std::isfinite((*values)[k])) continue;
+            std::string message = "is not a finite number (";
+            appendExact(message, (*values)[k]);
+            message += "): the result is beyond what a double can hold";
+            std::string location = "sample ";
+            location += std::to_string(k);
+            location += ", ";
+            location += name;
+            return Diagnostic(std::move(location), std::move(message));
+        }
+    }
+    return std::nullopt;
+}
+
+void appendSampleCsvRow(std::string& out, const SampledTurn& turn, std::size_t k) {
+    const double row[] = {
+        turn.t[k],  radToDeg(turn.phi[k]), 0.0,       turn.r[k],  turn.x[k],    turn.y[k],
+        turn.vR[k], turn.vPhi[k],          turn.v[k], turn.aR[k], turn.aPhi[k], turn.a[k],
+        turn.jR[k], turn.jPhi[k],          turn.j[k]};
+    for (std::size_t c = 0; c < std::size(row); ++c) {
+        if (c > 0) out += ',';
+        if (c == 2) {
+            out += std::to_string(turn.segment[k]);
+        } else {
+            appendExact(out, row[c]);
+        }
+    }
+    out += '\n';
+}
+
+Result<std::string> sampleCsv(const Contour& contour, double omega, std::size_t points) {
+    if (points < 1) return Diagnostics{{"points", "must be at least 1 (got 0)"}};
+    SampledTurn turn;
+    sampleTurn(contour, omega, points, turn);
+    if (auto problem = firstNonFiniteSample(turn)) return Diagnostics{std::move(*problem)};
+    std::string text(kSampleCsvHeader);
+    text.reserve(text.size() + turn.size() * 300);
+    for (std::size_t k = 0; k < turn.size(); ++k) appendSampleCsvRow(text, turn, k);
+    return text;
+}
+
+}  // namespace cam

@@ -1,0 +1,32 @@
+#pragma once
+/// @file
+/// @brief The sampled turn as CSV (exports.md `csv`, the `sample` columns): written by
+/// `camwright-cli sample`, `export --format csv` and the app's File → Export.
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "common/diagnostic.h"
+#include "contour/contour.h"
+#include "kinematics/kinematics.h"
+
+namespace cam {
+
+/// @brief The header line: time s, angle deg, segment index, then mm, mm/s, mm/s², mm/s³.
+inline constexpr std::string_view kSampleCsvHeader =
+    "t,phi_deg,segment,r,x,y,v_r,v_phi,v,a_r,a_phi,a,j_r,j_phi,j\n";
+
+/// @brief The first sample holding a number that is not finite, located "sample K, COLUMN";
+/// none when every value is finite (a turn too fast or too big for a double).
+[[nodiscard]] std::optional<Diagnostic> firstNonFiniteSample(const SampledTurn& turn);
+
+/// @brief Appends sample k as one line: %.17g in the C locale, the segment as an integer.
+void appendSampleCsvRow(std::string& out, const SampledTurn& turn, std::size_t k);
+
+/// @brief One turn at `points` instants t_k = k·T/points, header included. Errors: a point
+/// count below 1, a value that is not finite.
+[[nodiscard]] Result<std::string> sampleCsv(const Contour& contour, double omega,
+                                            std::size_t points);
+
+}  // namespace cam

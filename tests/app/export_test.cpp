@@ -1,0 +1,363 @@
+// File → Export… (issue 10): the dialog's defaults, checks and memory, and the window's exports.
+// Every format the app writes is byte for byte what `camwright-cli export` writes with the same
+// options (whose files the CLI tests read back with ezdxf, svgelements, rs274 and an independent
+// evaluation); failures name the problem and lose nothing; long exports leave the GUI thread.
+
+#include <gtest/gtest.h>
+
+#include <qcustomplot.h>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTimer>
+#include <filesystem>
+#include <fstream>
+
+#include "app_test_support.h"
+#include "document/commands.h"
+#include "document/project_document.h"
+#include "export/export_dialog.h"
+#include "mainwindow.h"
+#include "models/segment_table_model.h"
+#include "widgets/number_spin_box.h"
+
+namespace cam {
+namespace {
+
+const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json"));
+const QString kMachining =
+    QString::fromStdString(test::dataPath("app/six-lobe-machining.cam.json"));
+
+/// Starts the export and waits for its end; the problem (empty on success).
+QString exportAndWait(MainWindow& window, const ExportRequest& request) {
+    QSignalSpy finished(&window, &MainWindow::exportFinished);
+    window.exportFile(request);
+    EXPECT_TRUE(test::processEventsUntil([&] { return finished.count() > 0; }, 60000));
+    if (finished.isEmpty()) return "no exportFinished";
+    EXPECT_EQ(finished.front().at(0).toString(), request.path);
+    return finished.front().at(1).toString();
+}
+
+/// Closes the message box an export failure opens (it does not block the event loop).
+void closeProblemBox(MainWindow& window) {
+    for (auto* box : window.findChildren<QMessageBox*>("exportProblemBox")) box->close();
+    QCoreApplication::processEvents();
+}
+
+struct FormatCase {
+    const char* name;
+    std::vector<std::string> cliOptions;
+    std::function<void(ExportRequest&)> setUp;
+};
+
+TEST(ExportInWindow, EveryFormatWritesWhatTheCliWrites) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kMachining).isEmpty());
+    const std::string title = window.document()->project().name;
+    ASSERT_FALSE(title.empty());
+    const FormatCase cases[] = {
+        {"csv",
+         {"--format", "csv", "--points", "720"},
+         [](ExportRequest& r) {
+             r.format = ExportFormat::Csv;
+             r.csvPoints = 720;
+         }},
+        {"dxf",
+         {"--format", "dxf", "--centres", "--tool-radius", "3"},
+         [](ExportRequest& r) {
+             r.format = ExportFormat::Dxf;
+             r.dxf.centres = true;
+             r.dxf.toolRadiusMm = 3.0;
+         }},
+        {"dxf-polyline",
+         {"--format", "dxf", "--polyline"},
+         [](ExportRequest& r) {
+             r.format = ExportFormat::Dxf;
+             r.dxf.polyline = true;
+         }},
+        {"svg",
+         {"--format", "svg"},
+         [&](ExportRequest& r) {
+             r.format = ExportFormat::Svg;
+             r.svg.title = title;
+         }},
+        {"gcode",
+         {"--format", "gcode", "--tool-radius", "2", "--depth", "3", "--step-down", "1.5"},
+         [&](ExportRequest& r) {
+             r.format = ExportFormat::Gcode;
+             r.gcode.toolRadiusMm = 2.0;
+             r.gcode.depthMm = 3.0;
+             r.gcode.stepDownMm = 1.5;
+             r.gcode.feedMmMin = window.document()->project().machining->feedMax * 60.0;
+             r.gcode.projectName = title;
+         }},
+        {"camtable",
+         {"--format", "camtable", "--points", "720"},
+         [&](ExportRequest& r) {
+             r.format = ExportFormat::CamTable;
+             r.camTable.points = 720;
+             r.camTable.name = title;
+         }},
+        {"codesys",
+         {"--format", "camtable", "--dialect", "codesys"},
+         [&](ExportRequest& r) {
+             r.format = ExportFormat::CamTable;
+             r.camTable.dialect = CamTableDialect::Codesys;
+             r.camTable.name = title;
+         }},
+    };
+    test::TempDir dir;
+    for (const FormatCase& c : cases) {
+        const std::string cliFile = dir.file(std::string("cli-") + c.name);
+        std::vector<std::string> args{"export", kMachining.toStdString()};
+        args.insert(args.end(), c.cliOptions.begin(), c.cliOptions.end());
+        args.insert(args.end(), {"--out", cliFile});
+        const auto cli = test::runCli(args);
+        ASSERT_EQ(cli.exitCode, 0) << c.name << ": " << cli.err;
+
+        ExportRequest request;
+        c.setUp(request);
+        request.path = QString::fromStdString(dir.file(std::string("app-") + c.name));
+        const QString problem = exportAndWait(window, request);
+        ASSERT_TRUE(problem.isEmpty()) << c.name << ": " << problem.toStdString();
+        const std::string written = test::readFile(request.path.toStdString());
+        EXPECT_GT(written.size(), 200u) << c.name;
+        EXPECT_EQ(written, test::readFile(cliFile)) << c.name;
+        EXPECT_TRUE(window.statusBar()->currentMessage().contains(request.path))
+            << window.statusBar()->currentMessage().toStdString();
+    }
+}
+
+TEST(ExportInWindow, AFailureNamesTheProblemAndLosesNothing) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    test::TempDir dir;
+    const std::string kept = dir.file("kept.ngc");
+    {
+        std::ofstream f(kept);
+        f << "the old program";
+    }
+    // A tool wider than the cam's concave arcs (radius 4.5 mm) cannot cut them.
+    ExportRequest request;
+    request.format = ExportFormat::Gcode;
+    request.gcode.toolRadiusMm = 6.0;
+    request.path = QString::fromStdString(kept);
+    QString problem = exportAndWait(window, request);
+    EXPECT_TRUE(problem.contains("contour[")) << problem.toStdString();
+    EXPECT_EQ(test::readFile(kept), "the old program");
+    auto* box = window.findChild<QMessageBox*>("exportProblemBox");
+    ASSERT_NE(box, nullptr);
+    EXPECT_TRUE(box->informativeText().contains("contour["))
+        << box->informativeText().toStdString();
+    closeProblemBox(window);
+
+    // A folder that is not there.
+    request.format = ExportFormat::Dxf;
+    request.path = QString::fromStdString(dir.file("no/such/cam.dxf"));
+    problem = exportAndWait(window, request);
+    EXPECT_TRUE(problem.contains("no/such")) << problem.toStdString();
+    closeProblemBox(window);
+
+    // A project with a problem is not exported at all.
+    window.tableModel()->setData(window.tableModel()->index(0, SegmentTableModel::Radius), -2.0,
+                                 Qt::EditRole);
+    ASSERT_FALSE(window.document()->diagnostics().empty());
+    request.path = QString::fromStdString(kept);
+    problem = exportAndWait(window, request);
+    EXPECT_TRUE(problem.contains("contour[0]")) << problem.toStdString();
+    EXPECT_EQ(test::readFile(kept), "the old program");
+    closeProblemBox(window);
+    EXPECT_EQ(test::folderEntries(dir.path()), std::vector<std::string>{"kept.ngc"});
+}
+
+TEST(ExportInWindow, ALongExportRunsOffTheGuiThread) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    test::TempDir dir;
+    ExportRequest request;
+    request.format = ExportFormat::Csv;
+    request.csvPoints = 400'000;  // about 120 MB of text: far more than a frame
+    request.path = QString::fromStdString(dir.file("turn.csv"));
+    QSignalSpy finished(&window, &MainWindow::exportFinished);
+    window.exportFile(request);
+    // exportFile returned at once: nothing written yet, the window says what is under way.
+    EXPECT_EQ(finished.count(), 0);
+    EXPECT_FALSE(std::filesystem::exists(request.path.toStdString()));
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains("Exporting"));
+    ASSERT_TRUE(test::processEventsUntil([&] { return finished.count() > 0; }, 120000));
+    EXPECT_EQ(finished.front().at(1).toString(), QString());
+    // Header and 400 000 rows.
+    std::ifstream in(request.path.toStdString());
+    std::size_t lines = 0;
+    for (std::string line; std::getline(in, line);) ++lines;
+    EXPECT_EQ(lines, 400'001u);
+}
+
+TEST(ExportInWindow, APlotPictureFromTheWindow) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.resize(1200, 800);
+    window.show();
+    ASSERT_TRUE(window.waitForCurrentResult(20000));
+    test::TempDir dir;
+    ExportRequest request;
+    request.format = ExportFormat::Plot;
+    request.plot = PlotKind::Acceleration;
+    request.picture = PictureFormat::Pdf;
+    request.pictureSize = QSize(700, 400);
+    request.path = QString::fromStdString(dir.file("a.pdf"));
+    ASSERT_EQ(exportAndWait(window, request), QString());
+    const auto check =
+        test::run("/usr/bin/python3",
+                  {std::string(CAMWRIGHT_SOURCE_DIR) + "/tests/reference/check_picture.py", "pdf",
+                   request.path.toStdString(), "--title", "six-lobe-arc-cam — Acceleration",
+                   "--size", "700x400", "--text", "Acceleration [mm/s²]", "--text", "φ [°]"});
+    EXPECT_EQ(check.exitCode, 0) << check.out << check.err;
+}
+
+/// Answers the next popup menu or modal dialog with `answer` as soon as it appears.
+void whenShown(std::function<bool()> answer) {
+    auto* timer = new QTimer;
+    timer->setInterval(20);
+    QObject::connect(timer, &QTimer::timeout, [timer, answer] {
+        if (answer()) timer->deleteLater();
+    });
+    timer->start();
+}
+
+TEST(ExportInWindow, RightClickOnAPlotExportsIt) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.resize(1200, 800);
+    window.show();
+    ASSERT_TRUE(window.waitForCurrentResult(20000));
+    test::TempDir dir;
+    const QString path = QString::fromStdString(dir.file("jerk.svg"));
+    QCustomPlot* plot = window.plotWidget(PlotKind::Jerk);
+    whenShown([] {
+        auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+        if (!menu) return false;
+        auto* action = menu->findChild<QAction*>("actionExportPlot");
+        if (!action) return false;
+        menu->close();
+        action->trigger();
+        return true;
+    });
+    whenShown([path] {
+        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+        if (!dialog) return false;
+        dialog->selectFile(path);
+        QMetaObject::invokeMethod(dialog, "accept");
+        return true;
+    });
+    QSignalSpy finished(&window, &MainWindow::exportFinished);
+    emit plot->customContextMenuRequested(QPoint(50, 50));
+    ASSERT_TRUE(test::processEventsUntil([&] { return finished.count() > 0; }));
+    EXPECT_EQ(finished.front().at(1).toString(), QString());
+    const auto check =
+        test::run("/usr/bin/python3",
+                  {std::string(CAMWRIGHT_SOURCE_DIR) + "/tests/reference/check_picture.py", "svg",
+                   path.toStdString(), "--title", "six-lobe-arc-cam — Jerk", "--size",
+                   std::to_string(plot->width()) + "x" + std::to_string(plot->height()), "--text",
+                   "Jerk [mm/s³]"});
+    EXPECT_EQ(check.exitCode, 0) << check.out << check.err;
+    // The folder is remembered for the next export.
+    EXPECT_EQ(QSettings().value("export/folder").toString(),
+              QString::fromStdString(dir.path().string()));
+}
+
+TEST(ExportDialogTest, StartsFromTheProjectAndTheLastExport) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kMachining).isEmpty());
+    const Project& project = window.document()->project();
+    test::TempDir dir;
+    QSettings().setValue("export/folder", QString::fromStdString(dir.path().string()));
+    QSettings().setValue("export/format", static_cast<int>(ExportFormat::Gcode));
+    ExportDialog dialog(project, "six-lobe-machining.cam.json", "six-lobe-machining",
+                        {PlotKind::Contour, PlotKind::Velocity});
+    // The last format, in the last folder, the file named after the project.
+    ExportRequest r = dialog.request();
+    EXPECT_EQ(r.format, ExportFormat::Gcode);
+    EXPECT_EQ(r.path, QString::fromStdString(dir.file("six-lobe-machining.ngc")));
+    EXPECT_EQ(r.gcode.toolRadiusMm, project.machining->toolRadius);
+    EXPECT_EQ(r.gcode.feedMmMin, project.machining->feedMax * 60.0);
+    EXPECT_EQ(r.gcode.projectName, project.name);
+    EXPECT_FALSE(r.gcode.stepDownMm.has_value());
+    EXPECT_EQ(r.csvPoints, static_cast<std::size_t>(project.samplesPerTurnOrDefault()));
+    EXPECT_EQ(r.camTable.points, 360u);
+
+    // The file's suffix follows the format, the dialect and the plot.
+    dialog.setFormat(ExportFormat::CamTable);
+    EXPECT_TRUE(dialog.request().path.endsWith("six-lobe-machining.csv"));
+    dialog.findChild<QComboBox*>("tableDialect")->setCurrentIndex(1);
+    EXPECT_TRUE(dialog.request().path.endsWith("six-lobe-machining.st"));
+    dialog.setFormat(ExportFormat::Plot);
+    EXPECT_TRUE(dialog.request().path.endsWith("six-lobe-machining-contour.png"));
+    dialog.findChild<QComboBox*>("plotKind")->setCurrentIndex(1);
+    dialog.findChild<QComboBox*>("pictureFormat")->setCurrentIndex(1);
+    r = dialog.request();
+    EXPECT_TRUE(r.path.endsWith("six-lobe-machining-velocity.pdf")) << r.path.toStdString();
+    EXPECT_EQ(r.plot, PlotKind::Velocity);
+    EXPECT_EQ(r.picture, PictureFormat::Pdf);
+    EXPECT_EQ(r.pictureSize, QSize(842, 595));
+
+    // Options reach the request.
+    dialog.setFormat(ExportFormat::Dxf);
+    dialog.findChild<QCheckBox*>("dxfToolPath")->setChecked(true);
+    dialog.findChild<NumberSpinBox*>("dxfToolRadius")->setValue(2.5);
+    dialog.findChild<QCheckBox*>("dxfSplines")->setChecked(true);
+    r = dialog.request();
+    EXPECT_EQ(r.dxf.toolRadiusMm, 2.5);
+    EXPECT_TRUE(r.dxf.splineEntities);
+    EXPECT_FALSE(r.dxf.polyline);
+
+    // A folder that is not there keeps the dialog open and says so.
+    dialog.show();
+    dialog.setFileName(QString::fromStdString(dir.file("missing/cam.dxf")));
+    dialog.accept();
+    EXPECT_TRUE(dialog.isVisible());
+    auto* problem = dialog.findChild<QLabel*>("exportProblem");
+    EXPECT_TRUE(problem->isVisibleTo(&dialog));
+    EXPECT_TRUE(problem->text().contains("missing")) << problem->text().toStdString();
+    // A good one is taken, and remembered with the format.
+    test::TempDir other;
+    dialog.setFileName(QString::fromStdString(other.file("cam.dxf")));
+    dialog.accept();
+    EXPECT_EQ(dialog.result(), QDialog::Accepted);
+    EXPECT_EQ(QSettings().value("export/folder").toString(),
+              QString::fromStdString(other.path().string()));
+    EXPECT_EQ(QSettings().value("export/format").toInt(), static_cast<int>(ExportFormat::Dxf));
+}
+
+TEST(ExportDialogTest, FileExportIsInTheMenuWithItsShortcut) {
+    MainWindow window;
+    auto* action = window.findChild<QAction*>("actionExport");
+    ASSERT_NE(action, nullptr);
+    EXPECT_EQ(action->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_E));
+    EXPECT_FALSE(action->toolTip().isEmpty());
+    // Without a machining section the machining plots are not offered; with one, while the
+    // Machining panel shows its times, they are.
+    ASSERT_TRUE(window.loadFile(kMachining).isEmpty());
+    ASSERT_TRUE(window.waitForCurrentResult(20000));
+    auto plots = window.drawablePlots();
+    EXPECT_EQ(std::count(plots.begin(), plots.end(), PlotKind::Feed), 0);
+    window.showMachiningPanel();
+    window.show();
+    ASSERT_TRUE(test::processEventsUntil([&] {
+        const auto p = window.drawablePlots();
+        return std::count(p.begin(), p.end(), PlotKind::Feed) == 1;
+    }));
+}
+
+}  // namespace
+}  // namespace cam
