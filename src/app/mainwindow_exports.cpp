@@ -177,7 +177,8 @@ void MainWindow::askExportPlot(PlotKind kind) {
     request.plot = kind;
     request.picture = *format;
     request.path = path;
-    request.pictureSize = plotWidget(kind)->size();  // what is on screen
+    // What is on screen, but room enough for the title and the numbers of both axes.
+    request.pictureSize = plotWidget(kind)->size().expandedTo(QSize(640, 400));
     exportFile(request);
 }
 

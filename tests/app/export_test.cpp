@@ -268,8 +268,9 @@ TEST(ExportInWindow, RightClickOnAPlotExportsIt) {
         test::run("/usr/bin/python3",
                   {std::string(CAMWRIGHT_SOURCE_DIR) + "/tests/reference/check_picture.py", "svg",
                    path.toStdString(), "--title", "six-lobe-arc-cam — Jerk", "--size",
-                   std::to_string(plot->width()) + "x" + std::to_string(plot->height()), "--text",
-                   "Jerk [mm/s³]"});
+                   std::to_string(std::max(plot->width(), 640)) + "x" +
+                       std::to_string(std::max(plot->height(), 400)),
+                   "--text", "Jerk [mm/s³]"});
     EXPECT_EQ(check.exitCode, 0) << check.out << check.err;
     // The folder is remembered for the next export.
     EXPECT_EQ(QSettings().value("export/folder").toString(),

@@ -63,7 +63,8 @@ ExportDialog::ExportDialog(const Project& project, const QString& fileName, cons
     m_pages = new QStackedWidget(this);
     layout->addWidget(m_pages);
     const MachiningSpec machining = project.machining.value_or(MachiningSpec{});
-    const double toolRadius = machining.toolRadius > 0.0 ? machining.toolRadius : 5.0;
+    // Without a machining section: a 6 mm end mill, common and narrow enough for most cams.
+    const double toolRadius = machining.toolRadius > 0.0 ? machining.toolRadius : 3.0;
     QFormLayout* form = nullptr;
 
     // CSV
@@ -174,7 +175,10 @@ ExportDialog::ExportDialog(const Project& project, const QString& fileName, cons
     sizeRow->addWidget(m_width);
     sizeRow->addWidget(new QLabel(QStringLiteral("×"), this));
     sizeRow->addWidget(m_height);
-    form->addRow(tr("Si&ze (px, pt):"), sizeRow);
+    // A row of a layout gets no buddy by itself: without one the label would show its "&".
+    auto* sizeLabel = new QLabel(tr("Si&ze (px, pt):"), this);
+    sizeLabel->setBuddy(m_width);
+    form->addRow(sizeLabel, sizeRow);
     const auto pictureChanged = [this] {
         const QSize size =
             defaultPictureSize(static_cast<PictureFormat>(m_picture->currentData().toInt()));
@@ -192,7 +196,9 @@ ExportDialog::ExportDialog(const Project& project, const QString& fileName, cons
     fileRow->addWidget(m_file, 1);
     fileRow->addWidget(browse);
     auto* fileForm = new QFormLayout;
-    fileForm->addRow(tr("F&ile:"), fileRow);
+    auto* fileLabel = new QLabel(tr("F&ile:"), this);
+    fileLabel->setBuddy(m_file);
+    fileForm->addRow(fileLabel, fileRow);
     layout->addLayout(fileForm);
     m_problem = new QLabel(this);
     m_problem->setObjectName("exportProblem");
