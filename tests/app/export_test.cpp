@@ -338,6 +338,18 @@ TEST(ExportDialogTest, StartsFromTheProjectAndTheLastExport) {
     EXPECT_EQ(QSettings().value("export/folder").toString(),
               QString::fromStdString(other.path().string()));
     EXPECT_EQ(QSettings().value("export/format").toInt(), static_cast<int>(ExportFormat::Dxf));
+
+    // The next dialog starts with the options of this one; what the project gives comes from
+    // the project.
+    ExportDialog next(project, "six-lobe-machining.cam.json", "six-lobe-machining", {});
+    r = next.request();
+    EXPECT_EQ(r.format, ExportFormat::Dxf);
+    EXPECT_EQ(r.path, QString::fromStdString(other.file("six-lobe-machining.dxf")));
+    EXPECT_TRUE(r.dxf.splineEntities);
+    EXPECT_EQ(r.dxf.toolRadiusMm, project.machining->toolRadius);  // checked; from the project
+    EXPECT_EQ(r.camTable.dialect, CamTableDialect::Codesys);
+    EXPECT_EQ(r.picture, PictureFormat::Pdf);
+    EXPECT_EQ(r.pictureSize, QSize(842, 595));
 }
 
 TEST(ExportDialogTest, FileExportIsInTheMenuWithItsShortcut) {

@@ -15,6 +15,7 @@
 #include <QSpinBox>
 #include <QStackedWidget>
 #include <QVBoxLayout>
+#include <cmath>
 
 #include "widgets/number_spin_box.h"
 
@@ -218,9 +219,39 @@ ExportDialog::ExportDialog(const Project& project, const QString& fileName, cons
     const QString folder = settings.value("export/folder", QDir::homePath()).toString();
     m_file->setText(QDir(folder).filePath(baseName));
     pictureChanged();
+    restoreOptions();
     const int last = m_format->findData(settings.value("export/format", 1).toInt());
     m_format->setCurrentIndex(last >= 0 ? last : 1);
     formatChanged();
+}
+
+std::vector<QWidget*> ExportDialog::rememberedOptions() const {
+    // The picture's type before its size: choosing a type resets the size to its default.
+    return {m_dxfTolerance,   m_dxfPolyline,       m_dxfSplines,
+            m_dxfCentres,     m_dxfToolPath,       m_svgTolerance,
+            m_gcodeDepth,     m_gcodeStepDownOn,   m_gcodeStepDown,
+            m_gcodeTolerance, m_gcodeCompensation, m_tablePoints,
+            m_tableDialect,   m_picture,           m_width,
+            m_height};
+}
+
+void ExportDialog::restoreOptions() {
+    const QSettings settings;
+    for (QWidget* w : rememberedOptions()) {
+        const QVariant value = settings.value("export/options/" + w->objectName());
+        if (!value.isValid()) continue;
+        if (auto* box = qobject_cast<QCheckBox*>(w)) box->setChecked(value.toBool());
+        // Out-of-range values from an edited settings file are clamped by the boxes.
+        if (auto* spin = qobject_cast<QSpinBox*>(w)) spin->setValue(value.toInt());
+        if (auto* number = qobject_cast<NumberSpinBox*>(w)) {
+            const double v = value.toDouble();
+            if (std::isfinite(v)) number->setValue(v);
+        }
+        if (auto* combo = qobject_cast<QComboBox*>(w)) {
+            const int i = value.toInt();
+            if (i >= 0 && i < combo->count()) combo->setCurrentIndex(i);
+        }
+    }
 }
 
 ExportFormat ExportDialog::format() const {
@@ -316,6 +347,14 @@ void ExportDialog::accept() {
     QSettings settings;
     settings.setValue("export/folder", info.absolutePath());
     settings.setValue("export/format", static_cast<int>(format()));
+    for (QWidget* w : rememberedOptions()) {
+        const QString key = "export/options/" + w->objectName();
+        if (auto* box = qobject_cast<QCheckBox*>(w)) settings.setValue(key, box->isChecked());
+        if (auto* spin = qobject_cast<QSpinBox*>(w)) settings.setValue(key, spin->value());
+        if (auto* number = qobject_cast<NumberSpinBox*>(w)) settings.setValue(key, number->value());
+        if (auto* combo = qobject_cast<QComboBox*>(w))
+            settings.setValue(key, combo->currentIndex());
+    }
     QDialog::accept();
 }
 

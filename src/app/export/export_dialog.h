@@ -22,9 +22,9 @@ class ExportDialog : public QDialog {
     Q_OBJECT
 public:
     /// @brief Options start from the project (its samples per turn, tool radius, feed) and the
-    /// last export (format and folder, from QSettings). The project's name (else `fileName`)
-    /// titles the SVG and G-code as camwright-cli does; the name (else `baseName`, the file
-    /// name without .cam.json) names the cam table's variables, and `baseName` the file by
+    /// last export (format, folder and the other options, from QSettings). The project's name (else
+    /// `fileName`) titles the SVG and G-code as camwright-cli does; the name (else `baseName`, the
+    /// file name without .cam.json) names the cam table's variables, and `baseName` the file by
     /// default. `plots` are the plots that can be drawn now.
     ExportDialog(const Project& project, const QString& fileName, const QString& baseName,
                  std::vector<PlotKind> plots, QWidget* parent = nullptr);
@@ -44,6 +44,10 @@ private:
     /// The file's suffix follows the format (and for pictures the picture format).
     void matchSuffix();
     [[nodiscard]] ExportFormat format() const;
+    /// The options remembered from one export to the next (QSettings export/options/NAME):
+    /// all but those the project gives (samples per turn, tool radius, feed) and the plot.
+    [[nodiscard]] std::vector<QWidget*> rememberedOptions() const;
+    void restoreOptions();
 
     QString m_baseName;
     std::vector<PlotKind> m_plots;
