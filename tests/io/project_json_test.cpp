@@ -44,6 +44,34 @@ TEST(ProjectJson, SaveLoadSaveIsByteStable) {
     EXPECT_EQ(serializeProject(again.value()), first);
 }
 
+TEST(ProjectJson, KeepsEveryFollowerField) {
+    auto p = loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json"));
+    ASSERT_TRUE(p.ok());
+    Project project = p.value();
+    FollowerSpec swinging;
+    swinging.type = FollowerType::Roller;
+    swinging.motion = FollowerMotion::Oscillating;
+    swinging.radius = 2.5;
+    swinging.pivot = {70.0, -12.5};
+    swinging.armLength = 61.0;
+    swinging.arm = ArmSide::Cw;
+    swinging.maxPressureAngleDeg = 40.0;
+    FollowerSpec offset;
+    offset.type = FollowerType::Flat;
+    offset.offset = -3.25;
+    for (const FollowerSpec& f : {swinging, offset}) {
+        project.follower = f;
+        const std::string text = serializeProject(project);
+        const auto again = parseProject(text);
+        ASSERT_TRUE(again.ok()) << text;
+        EXPECT_EQ(again.value().follower, f) << text;
+    }
+    EXPECT_EQ(swinging.maxPressureAngleOrDefault(), 40.0);
+    EXPECT_EQ(offset.maxPressureAngleOrDefault(), 30.0);
+    offset.motion = FollowerMotion::Oscillating;
+    EXPECT_EQ(offset.maxPressureAngleOrDefault(), 45.0);
+}
+
 TEST(ProjectJson, WritesFieldsInTheDocumentedOrder) {
     std::string text = withReplaced(kMinimal, R"("name": "disc",)",
                                     R"("name": "disc", "sampling": {"samples_per_turn": 720},)");

@@ -226,7 +226,9 @@ void readMotion(Reader& rd, const Json& root, Project& p) {
 void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project& p) {
     const Json* f = rd.field(root, "", "follower", false);
     if (!f || !rd.object(*f, "follower")) return;
-    rd.onlyKeys(*f, "follower", {"type", "offset", "radius"});
+    rd.onlyKeys(*f, "follower",
+                {"type", "motion", "offset", "radius", "pivot", "arm_length", "arm",
+                 "max_pressure_angle_deg"});
     FollowerSpec spec;
     if (const auto type = rd.string(*f, "follower", "type", false)) {
         if (*type == "knife") {
@@ -240,12 +242,34 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
                      "must be \"knife\", \"roller\" or \"flat\" (got \"" + *type + "\")");
         }
     }
-    if (const auto v = rd.number(*f, "follower", "offset", false)) {
-        spec.offset = *v * units.lengthFactor();
+    if (const auto motion = rd.string(*f, "follower", "motion", false)) {
+        if (*motion == "translating") {
+            spec.motion = FollowerMotion::Translating;
+        } else if (*motion == "oscillating") {
+            spec.motion = FollowerMotion::Oscillating;
+        } else {
+            rd.error("follower.motion",
+                     "must be \"translating\" or \"oscillating\" (got \"" + *motion + "\")");
+        }
     }
+    const double mm = units.lengthFactor();
+    if (const auto v = rd.number(*f, "follower", "offset", false)) spec.offset = *v * mm;
     const bool needsRadius = spec.type == FollowerType::Roller;
-    if (const auto v = rd.number(*f, "follower", "radius", needsRadius)) {
-        spec.radius = *v * units.lengthFactor();
+    if (const auto v = rd.number(*f, "follower", "radius", needsRadius)) spec.radius = *v * mm;
+    const bool swinging = spec.motion == FollowerMotion::Oscillating;
+    if (const auto v = rd.point(*f, "follower", "pivot", swinging)) spec.pivot = *v * mm;
+    if (const auto v = rd.number(*f, "follower", "arm_length", swinging)) spec.armLength = *v * mm;
+    if (const auto arm = rd.string(*f, "follower", "arm", false)) {
+        if (*arm == "ccw") {
+            spec.arm = ArmSide::Ccw;
+        } else if (*arm == "cw") {
+            spec.arm = ArmSide::Cw;
+        } else {
+            rd.error("follower.arm", "must be \"cw\" or \"ccw\" (got \"" + *arm + "\")");
+        }
+    }
+    if (const auto v = rd.number(*f, "follower", "max_pressure_angle_deg", false)) {
+        spec.maxPressureAngleDeg = *v;
     }
     p.follower = spec;
 }

@@ -78,8 +78,16 @@ std::string serializeProject(const Project& p) {
         j["type"] = f.type == FollowerType::Knife    ? "knife"
                     : f.type == FollowerType::Roller ? "roller"
                                                      : "flat";
-        j["offset"] = length(f.offset);
+        if (f.motion == FollowerMotion::Oscillating) {
+            j["motion"] = "oscillating";
+            j["pivot"] = {length(f.pivot.x()), length(f.pivot.y())};
+            j["arm_length"] = length(f.armLength);
+            j["arm"] = f.arm == ArmSide::Ccw ? "ccw" : "cw";
+        } else {
+            j["offset"] = length(f.offset);
+        }
         if (f.type == FollowerType::Roller) j["radius"] = length(f.radius);
+        if (f.maxPressureAngleDeg) j["max_pressure_angle_deg"] = *f.maxPressureAngleDeg;
         root["follower"] = std::move(j);
     }
     if (p.samplesPerTurn) root["sampling"] = {{"samples_per_turn", *p.samplesPerTurn}};

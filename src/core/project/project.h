@@ -105,11 +105,30 @@ struct MotionSpec {
 };
 
 enum class FollowerType { Knife, Roller, Flat };
+/// @brief How the follower moves (math.md §7): along a line, or swinging on an arm.
+enum class FollowerMotion { Translating, Oscillating };
+/// @brief Which side of the line from the pivot to the cam centre an arm's roller is on.
+enum class ArmSide { Ccw, Cw };
+
+/// @brief The usual limits of the pressure angle when the project sets none (math.md §7).
+inline constexpr double kDefaultMaxPressureAngleTranslatingDeg = 30.0;
+inline constexpr double kDefaultMaxPressureAngleOscillatingDeg = 45.0;
 
 struct FollowerSpec {
     FollowerType type = FollowerType::Knife;
-    double offset = 0.0;  ///< mm
-    double radius = 0.0;  ///< roller radius, mm
+    FollowerMotion motion = FollowerMotion::Translating;
+    double offset = 0.0;              ///< translating: e along n, mm
+    double radius = 0.0;              ///< roller radius, mm
+    Eigen::Vector2d pivot{0.0, 0.0};  ///< oscillating: in the follower frame, mm
+    double armLength = 0.0;           ///< oscillating, mm
+    ArmSide arm = ArmSide::Ccw;       ///< oscillating
+    std::optional<double> maxPressureAngleDeg;
+
+    [[nodiscard]] double maxPressureAngleOrDefault() const {
+        return maxPressureAngleDeg.value_or(motion == FollowerMotion::Translating
+                                                ? kDefaultMaxPressureAngleTranslatingDeg
+                                                : kDefaultMaxPressureAngleOscillatingDeg);
+    }
     friend bool operator==(const FollowerSpec&, const FollowerSpec&) = default;
 };
 

@@ -378,8 +378,38 @@ private:
         if (!m_project.follower) return;
         const FollowerSpec& f = *m_project.follower;
         checkLength("follower.offset", f.offset);
-        if (f.type == FollowerType::Roller) {
-            checkPositiveLength("follower.radius", f.radius);
+        bool radiusOk = true;
+        if (f.type == FollowerType::Roller)
+            radiusOk = checkPositiveLength("follower.radius", f.radius);
+        if (f.maxPressureAngleDeg) {
+            checkRange("follower.max_pressure_angle_deg", *f.maxPressureAngleDeg, 1e-6, 89.0, "°");
+        }
+        if (f.motion == FollowerMotion::Oscillating) {
+            if (f.type == FollowerType::Flat) {
+                error("follower.type",
+                      "a flat face moves only translating (math.md §7); use a knife or a roller "
+                      "on an oscillating arm");
+            }
+            checkPoint("follower.pivot", f.pivot);
+            checkPositiveLength("follower.arm_length", f.armLength);
+        }
+        // A roller must fit into every concave arc it rides (its pitch circle R − ρ > 0).
+        if (f.type != FollowerType::Roller || !radiusOk) return;
+        for (std::size_t k = 0; k < m_project.contour.size(); ++k) {
+            const SegmentSpec& segment = m_project.contour[k];
+            const Arc* arc = segment.as<Arc>();
+            if (!arc || !(f.radius >= arc->radius)) continue;
+            const PolarDerivatives d = polarOfSegment(segment, segment.phiStartDeg);
+            const double phi = degToRad(segment.phiStartDeg);
+            const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), n(-u.y(), u.x());
+            const Eigen::Vector2d point = d.r * u, travel = d.dr * u + d.r * n;
+            const Eigen::Vector2d fromCentre = point - arc->center;
+            const bool concave = fromCentre.x() * travel.y() - fromCentre.y() * travel.x() < 0.0;
+            if (!concave) continue;
+            error("follower.radius", "must be smaller than the radius " +
+                                         formatNumber(arc->radius) + " mm of the concave arc " +
+                                         segmentLocation(k) + " (got " + formatNumber(f.radius) +
+                                         " mm): the roller cannot enter it");
         }
     }
 

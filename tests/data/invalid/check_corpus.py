@@ -334,11 +334,45 @@ def validate(doc, probs):
     f = doc.get("follower")
     if f is not None:
         t = string(f, "type", "follower.type", probs, ["knife", "roller", "flat"], required=False)
+        motion = string(f, "motion", "follower.motion", probs, ["translating", "oscillating"],
+                        required=False)
         length(f, "offset", "follower.offset", probs, required=False)
+        if "max_pressure_angle_deg" in f:
+            a = number(f, "max_pressure_angle_deg", "follower.max_pressure_angle_deg", probs)
+            if a is not None and not 0 < a <= 89:
+                probs.add("follower.max_pressure_angle_deg", f"must be in (0, 89] (got {a})")
+        if motion == "oscillating":
+            if t == "flat":
+                probs.add("follower.type", "a flat face only translates")
+            point(f, "pivot", "follower.pivot", probs)
+            arm = length(f, "arm_length", "follower.arm_length", probs)
+            if arm is not None and not arm > 0:
+                probs.add("follower.arm_length", f"must be > 0 (got {arm})")
         if t == "roller":
             r = length(f, "radius", "follower.radius", probs)
             if r is not None and not r > 0:
                 probs.add("follower.radius", f"must be > 0 (got {r})")
+            # The roller must enter every concave arc: an arc is concave where the contour,
+            # running with phi, turns clockwise round the arc's centre (found from two points
+            # of its own r(phi) just inside the window).
+            for k, seg in enumerate(doc.get("contour") or []):
+                if r is None or not isinstance(seg, dict) or seg.get("type") != "arc":
+                    continue
+                try:
+                    p0, p1 = seg["phi_start"], seg["phi_end"]
+                    a0, a1 = p0 + 1e-4 * (p1 - p0), p0 + 2e-4 * (p1 - p0)
+                    arc = {"type": "arc", "c": seg["center"], "R": seg["radius"],
+                           "branch": seg.get("branch", "outer")}
+                    ra, rb = r_at(arc, a0), r_at(arc, a1)
+                    xa = (ra * math.cos(math.radians(a0)), ra * math.sin(math.radians(a0)))
+                    xb = (rb * math.cos(math.radians(a1)), rb * math.sin(math.radians(a1)))
+                    c = seg["center"]
+                    cross = (xa[0] - c[0]) * (xb[1] - xa[1]) - (xa[1] - c[1]) * (xb[0] - xa[0])
+                except (KeyError, TypeError, ValueError, IndexError):
+                    continue
+                if cross < 0 and r >= seg["radius"]:
+                    probs.add("follower.radius",
+                              f"not smaller than the concave arc contour[{k}] (R {seg['radius']})")
     s = doc.get("sampling")
     if s is not None:
         n = s.get("samples_per_turn")
