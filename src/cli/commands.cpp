@@ -19,6 +19,8 @@
 #include "export/sample_csv.h"
 #include "export/svg.h"
 #include "fillet/fillet.h"
+#include "follower/follower.h"
+#include "follower/follower_analysis.h"
 #include "io/atomic_file.h"
 #include "io/path_csv.h"
 #include "io/project_json.h"
@@ -78,6 +80,89 @@ Json stateJson(const KinematicState& s) {
                 {"j_r", m.jR},
                 {"j_phi", m.jPhi},
                 {"j", m.j}};
+}
+
+const char* followerTypeName(FollowerType type) {
+    switch (type) {
+        case FollowerType::Knife:
+            return "knife";
+        case FollowerType::Roller:
+            return "roller";
+        case FollowerType::Flat:
+            return "flat";
+    }
+    return "";
+}
+
+/// The project's follower placed on its contour, or the first reason it cannot be (exit 3).
+FollowerModel buildFollower(const Loaded& loaded) {
+    auto model =
+        FollowerModel::build(loaded.contour, loaded.project.follower.value_or(FollowerSpec{}));
+    if (!model.ok()) {
+        const Diagnostic& d = model.errors().front();
+        throw CliError{kNotComputable, d.location, d.message};
+    }
+    return std::move(model).value();
+}
+
+/// A radius of curvature: null where the curve is straight (an infinite radius).
+Json radiusJson(double rho) { return std::isfinite(rho) ? Json(rho) : Json(nullptr); }
+
+/// cli.md's `follower` object of `state`.
+Json followerJson(const FollowerModel& model, const FollowerState& f) {
+    return Json{{"type", followerTypeName(model.spec().type)},
+                {"motion", "translating"},
+                {"s", f.s},
+                {"lift", f.s - model.minS()},
+                {"v", f.v},
+                {"a", f.a},
+                {"j", f.j},
+                {"center", {f.center.x(), f.center.y()}},
+                {"contact", {f.contact.x(), f.contact.y()}},
+                {"pressure_angle_deg", radToDeg(f.pressureAngle)},
+                {"rho_profile", radiusJson(f.rhoProfile)},
+                {"rho_pitch", radiusJson(f.rhoPitch)}};
+}
+
+/// cli.md's `follower` object of `analyze`: the design checks of math.md §7.
+Json followerAnalysisJson(const Loaded& loaded) {
+    const FollowerModel model = buildFollower(loaded);
+    const FollowerAnalysis a = analyzeFollower(model, loaded.omega, loaded.contour.phiBegin());
+    const auto one = [](const FollowerExtremum& e) {
+        return Json{{"value", radiusJson(e.value)}, {"phi_deg", radToDeg(e.phi)}};
+    };
+    const auto angle = [](const FollowerExtremum& e) {
+        return Json{{"value_deg", radToDeg(e.value)}, {"phi_deg", radToDeg(e.phi)}};
+    };
+    Json exceeded = Json::array();
+    for (const AngleRange& r : a.pressureExceeded) {
+        exceeded.push_back({{"from_deg", radToDeg(r.from)}, {"to_deg", radToDeg(r.to)}});
+    }
+    Json undercut = Json::array();
+    for (const NonContact& c : a.undercut) {
+        undercut.push_back({{"phi_deg", radToDeg(c.phi)},
+                            {"from", {c.from.x(), c.from.y()}},
+                            {"to", {c.to.x(), c.to.y()}},
+                            {"profile_from_deg", radToDeg(std::atan2(c.from.y(), c.from.x()))},
+                            {"profile_to_deg", radToDeg(std::atan2(c.to.y(), c.to.x()))}});
+    }
+    Json f{{"type", followerTypeName(model.spec().type)},
+           {"motion", "translating"},
+           {"s", {{"min", one(a.sMin)}, {"max", one(a.sMax)}}},
+           {"lift", a.sMax.value - a.sMin.value},
+           {"v", {{"min", one(a.vMin)}, {"max", one(a.vMax)}}},
+           {"a", {{"min", one(a.aMin)}, {"max", one(a.aMax)}}},
+           {"j", {{"min", one(a.jMin)}, {"max", one(a.jMax)}}},
+           {"pressure_angle",
+            {{"rise", angle(a.pressureRise)},
+             {"return", angle(a.pressureReturn)},
+             {"limit_deg", radToDeg(a.limitRad)},
+             {"exceeded", std::move(exceeded)}}},
+           {"rho_profile_min", one(a.rhoProfileMin)},
+           {"rho_pitch_min", one(a.rhoPitchMin)},
+           {"undercut", std::move(undercut)}};
+    if (model.spec().type == FollowerType::Flat) f["face_width"] = a.faceWidth;
+    return f;
 }
 
 /// No command prints a non-finite number with exit 0: a result that is not a finite number is
@@ -150,15 +235,24 @@ int runState(const Arguments& args, std::ostream& out) {
                            formatNumber(turnsAt(loaded.project.motion, t)) +
                            " turns): beyond that a double no longer resolves the cam angle"};
     }
-    printJson(out, stateJson(stateAt(loaded.contour, loaded.project.motion, t)));
+    Json state = stateJson(stateAt(loaded.contour, loaded.project.motion, t));
+    // The follower (math.md §7), at the same exactly reduced angle; the seed's knife edge on
+    // the radial line when the project names none.
+    const FollowerModel follower = buildFollower(loaded);
+    const double turns = turnsAt(loaded.project.motion, t);
+    const double reduced = kTwoPi * (turns - std::floor(turns));
+    state["follower"] = followerJson(follower, follower.at(reduced, loaded.omega));
+    printJson(out, state);
     return kOk;
 }
 
 namespace {
 
-/// One turn at n instants as CSV (the `sample` columns), to `outPath` (atomically) or `out`.
+/// One turn at n instants as CSV (the `sample` columns, then the follower's when one is given),
+/// to `outPath` (atomically) or `out`.
 void writeSampleCsv(const Loaded& loaded, long long n, std::ostream& out,
-                    const std::optional<std::string>& outPath) {
+                    const std::optional<std::string>& outPath,
+                    const FollowerModel* follower = nullptr) {
     std::optional<AtomicFileWriter> file;
     if (outPath) {
         file.emplace(*outPath);
@@ -171,6 +265,12 @@ void writeSampleCsv(const Loaded& loaded, long long n, std::ostream& out,
     requireFiniteColumns(turn);
 
     std::string chunk(kSampleCsvHeader);
+    if (follower) {
+        chunk.pop_back();
+        chunk += ',';
+        chunk += kFollowerCsvColumns;
+        chunk += '\n';
+    }
     auto flush = [&] {
         if (file) {
             file->write(chunk);
@@ -181,6 +281,11 @@ void writeSampleCsv(const Loaded& loaded, long long n, std::ostream& out,
     };
     for (std::size_t k = 0; k < turn.size(); ++k) {
         appendSampleCsvRow(chunk, turn, k);
+        if (follower) {
+            chunk.pop_back();
+            appendFollowerCsvColumns(chunk, *follower, turn.phi[k], loaded.omega);
+            chunk += '\n';
+        }
         if (chunk.size() > (1u << 20)) flush();
         // A failed stdout (full disk, closed) is reported by main; a failed --out file below.
         if (!out || (file && !file->ok())) break;
@@ -242,7 +347,8 @@ int runAnalyze(const Arguments& args, std::ostream& out) {
     const Json result{{"omega_rad_s", loaded.omega},
                       {"units", {{"length", "mm"}, {"angle", "deg"}, {"time", "s"}}},
                       {"joints", std::move(joints)},
-                      {"extremes", std::move(extremes)}};
+                      {"extremes", std::move(extremes)},
+                      {"follower", followerAnalysisJson(loaded)}};
     printJson(out, result);
     return kOk;
 }
@@ -580,7 +686,8 @@ int runExport(const Arguments& args, std::ostream& out) {
         if (const auto text = args.option("--points")) {
             n = parseCount("--points", *text, 1, kMaxSamplesPerTurn);
         }
-        writeSampleCsv(loaded, n, out, outPath);
+        const FollowerModel follower = buildFollower(loaded);
+        writeSampleCsv(loaded, n, out, outPath, &follower);
         return kOk;
     }
     Result<std::string> text = std::string();
@@ -643,6 +750,7 @@ int runExport(const Arguments& args, std::ostream& out) {
         options.name = loaded.project.name.empty()
                            ? std::filesystem::path(input).stem().stem().string()
                            : loaded.project.name;
+        options.follower = loaded.project.follower.value_or(FollowerSpec{});
         text = camTableText(loaded.contour, options);
     }
     if (!text.ok()) exportFailed(input, text.errors());

@@ -52,8 +52,9 @@ TEST(CliState, PrintsOneJsonObjectWithEveryField) {
     std::vector<std::string> keys;
     for (const auto& [k, v] : s.items()) keys.push_back(k);
     std::sort(keys.begin(), keys.end());
-    std::vector<std::string> expected{"t",   "phi_deg", "segment", "r",   "v_r",   "v_phi", "v",
-                                      "a_r", "a_phi",   "a",       "j_r", "j_phi", "j"};
+    std::vector<std::string> expected{"t",     "phi_deg", "segment", "r",       "v_r",
+                                      "v_phi", "v",       "a_r",     "a_phi",   "a",
+                                      "j_r",   "j_phi",   "j",       "follower"};
     std::sort(expected.begin(), expected.end());
     EXPECT_EQ(keys, expected);
     EXPECT_DOUBLE_EQ(s.at("phi_deg").get<double>(), 45.0);

@@ -51,7 +51,11 @@ Result<std::string> exportText(const Project& project, const ExportRequest& requ
             const std::size_t points =
                 request.csvPoints > 0 ? request.csvPoints
                                       : static_cast<std::size_t>(project.samplesPerTurnOrDefault());
-            return sampleCsv(contour.value(), project.motion.omegaRadS(), points);
+            auto follower =
+                FollowerModel::build(contour.value(), project.follower.value_or(FollowerSpec{}));
+            if (!follower.ok()) return follower.errors();
+            return sampleCsv(contour.value(), project.motion.omegaRadS(), points,
+                             &follower.value());
         }
         case ExportFormat::Dxf:
             return dxfDocument(contour.value(), request.dxf);
@@ -59,8 +63,11 @@ Result<std::string> exportText(const Project& project, const ExportRequest& requ
             return svgDocument(contour.value(), request.svg);
         case ExportFormat::Gcode:
             return gcodeProgram(contour.value(), request.gcode);
-        case ExportFormat::CamTable:
-            return camTableText(contour.value(), request.camTable);
+        case ExportFormat::CamTable: {
+            CamTableOptions options = request.camTable;
+            options.follower = project.follower.value_or(FollowerSpec{});
+            return camTableText(contour.value(), options);
+        }
         case ExportFormat::Plot:
             break;
     }

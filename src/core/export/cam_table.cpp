@@ -4,26 +4,20 @@
 #include <cmath>
 #include <initializer_list>
 
-#include "analysis/analysis.h"
 #include "common/angles.h"
 #include "export/number_text.h"
+#include "follower/follower.h"
 
 namespace cam {
 
-std::vector<CamKnot> camKnots(const Contour& contour, std::size_t points) {
-    // The smallest r of the turn, refined between grid points (analysis.h); ω does not matter.
-    const ContourAnalysis analysis = analyzeContour(contour, 1.0);
-    double minR = 0.0;
-    for (const QuantityExtremes& e : analysis.extremes) {
-        if (e.quantity == Quantity::R) minR = e.min.value;
-    }
+std::vector<CamKnot> camKnots(const FollowerModel& model, std::size_t points) {
     constexpr double perDeg = kPi / 180.0;
     std::vector<CamKnot> knots(points);
     for (std::size_t i = 0; i < points; ++i) {
         // 360·i/N exactly for the row, and the angle from it.
         const double deg = 360.0 * static_cast<double>(i) / static_cast<double>(points);
-        const PolarDerivatives d = contour.evaluate(degToRad(deg));
-        knots[i] = {deg, d.r - minR, d.dr * perDeg, d.d2r * perDeg * perDeg};
+        const FollowerState f = model.at(degToRad(deg), 1.0);
+        knots[i] = {deg, f.s - model.minS(), f.sPhi[1] * perDeg, f.sPhi[2] * perDeg * perDeg};
     }
     return knots;
 }
@@ -44,7 +38,7 @@ std::string csvTable(const std::vector<CamKnot>& knots, const CamTableOptions& o
     const auto n = static_cast<double>(knots.size());
     std::string out = "# camwright cam table";
     if (!options.name.empty()) out += " of " + options.name;
-    out += ": master angle -> knife-edge lift r(phi) - min r\n";
+    out += ": master angle -> follower lift s(phi) - min s\n";
     out += "# master_start_deg=0\n# master_step_deg=";
     appendExact(out, 360.0 / n);
     out += "\n# points=" + std::to_string(knots.size()) + "\n# periodic=true\n# slave=lift_mm\n";
@@ -110,7 +104,7 @@ std::string codesysTable(const std::vector<CamKnot>& knots, const CamTableOption
     std::string out = "(* Camwright electronic cam";
     if (!options.name.empty()) out += ": " + commentText(options.name);
     out +=
-        " *)\n(* master: cam angle in degrees, 0 .. 360, periodic; slave: knife-edge lift in mm\n"
+        " *)\n(* master: cam angle in degrees, 0 .. 360, periodic; slave: follower lift in mm\n"
         "   (r(phi) - min r); dV in mm/deg, dA in mm/deg^2. Knots for SMC_CAMXYVA, interpolated\n"
         "   by fifth-order polynomials (byType 3). The knot at 360 deg repeats the one at 0. *)\n";
     out += "VAR_GLOBAL\n";
@@ -138,7 +132,9 @@ Result<std::string> camTableText(const Contour& contour, const CamTableOptions& 
                                             std::to_string(kMaxCamTablePoints) + " points, not " +
                                             std::to_string(n)}};
     }
-    const std::vector<CamKnot> knots = camKnots(contour, options.points);
+    auto model = FollowerModel::build(contour, options.follower);
+    if (!model.ok()) return model.errors();
+    const std::vector<CamKnot> knots = camKnots(model.value(), options.points);
     return options.dialect == CamTableDialect::Csv ? csvTable(knots, options)
                                                    : codesysTable(knots, options);
 }

@@ -8,6 +8,7 @@
 
 #include "common/diagnostic.h"
 #include "contour/contour.h"
+#include "follower/follower.h"
 
 namespace cam {
 
@@ -23,7 +24,8 @@ enum class CamTableDialect {
 struct CamTableOptions {
     std::size_t points = kDefaultCamTablePoints;
     CamTableDialect dialect = CamTableDialect::Csv;
-    std::string name;  ///< the project's name (a comment in CSV, the variables' names in ST)
+    std::string name;       ///< the project's name (a comment in CSV, the variables' names in ST)
+    FollowerSpec follower;  ///< whose lift the table holds (the project's; a knife by default)
 };
 
 /// @brief One knot of the table: master angle (deg), lift (mm) and its first two derivatives
@@ -36,9 +38,9 @@ struct CamKnot {
 };
 
 /// @brief The knots at master angles 360·i/N, i = 0 … N−1 (periodic: 360 is not repeated). The
-/// lift is that of the knife edge on the ray at the master angle: r(φ) − min r over the turn
-/// (math.md §7 with e = 0). At a joint the knot takes the segment that begins there.
-[[nodiscard]] std::vector<CamKnot> camKnots(const Contour& contour, std::size_t points);
+/// lift is the follower's (math.md §7): s(φ) − min s over the turn, with its derivatives per
+/// degree; for the default knife edge on the radial line r(φ) − min r.
+[[nodiscard]] std::vector<CamKnot> camKnots(const FollowerModel& follower, std::size_t points);
 
 /// @brief The table in the dialect's text. CSV: comment lines `# master_start_deg=0`,
 /// `# master_step_deg=…`, `# points=N`, `# periodic=true`, `# slave=lift_mm`, then
@@ -48,7 +50,8 @@ struct CamKnot {
 /// [xStart, xEnd] needs) and `<name> : MC_CAM_REF` with byType := 3 (XYVA polynomials),
 /// byVarType := 6 (LREAL), nElements := N + 1, xStart := 0, xEnd := 360, pce := ADR(knots).
 /// `name` is the project's name made an IEC identifier.
-/// Errors: a point count outside [4, 1e6], located `--points`.
+/// Errors: a point count outside [4, 1e6], located `--points`; a follower that cannot be placed
+/// (located `follower.…`).
 [[nodiscard]] Result<std::string> camTableText(const Contour& contour,
                                                const CamTableOptions& options);
 

@@ -47,14 +47,38 @@ void appendSampleCsvRow(std::string& out, const SampledTurn& turn, std::size_t k
     out += '\n';
 }
 
-Result<std::string> sampleCsv(const Contour& contour, double omega, std::size_t points) {
+void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower, double phi,
+                              double omega) {
+    const FollowerState f = follower.at(phi, omega);
+    for (const double v : {f.s, f.s - follower.minS(), f.v, f.a, f.j, radToDeg(f.pressureAngle),
+                           f.rhoProfile, f.rhoPitch}) {
+        out += ',';
+        if (std::isfinite(v)) appendExact(out, v);  // an empty cell: straight, infinite radius
+    }
+}
+
+Result<std::string> sampleCsv(const Contour& contour, double omega, std::size_t points,
+                              const FollowerModel* follower) {
     if (points < 1) return Diagnostics{{"points", "must be at least 1 (got 0)"}};
     SampledTurn turn;
     sampleTurn(contour, omega, points, turn);
     if (auto problem = firstNonFiniteSample(turn)) return Diagnostics{std::move(*problem)};
     std::string text(kSampleCsvHeader);
-    text.reserve(text.size() + turn.size() * 300);
-    for (std::size_t k = 0; k < turn.size(); ++k) appendSampleCsvRow(text, turn, k);
+    if (follower) {
+        text.pop_back();  // the line end
+        text += ',';
+        text += kFollowerCsvColumns;
+        text += '\n';
+    }
+    text.reserve(text.size() + turn.size() * (follower ? 460 : 300));
+    for (std::size_t k = 0; k < turn.size(); ++k) {
+        appendSampleCsvRow(text, turn, k);
+        if (follower) {
+            text.pop_back();
+            appendFollowerCsvColumns(text, *follower, turn.phi[k], omega);
+            text += '\n';
+        }
+    }
     return text;
 }
 

@@ -9,6 +9,7 @@
 
 #include "common/diagnostic.h"
 #include "contour/contour.h"
+#include "follower/follower.h"
 #include "kinematics/kinematics.h"
 
 namespace cam {
@@ -17,6 +18,17 @@ namespace cam {
 inline constexpr std::string_view kSampleCsvHeader =
     "t,phi_deg,segment,r,x,y,v_r,v_phi,v,a_r,a_phi,a,j_r,j_phi,j\n";
 
+/// @brief The follower's columns that `export --format csv` adds after the `sample` columns
+/// (exports.md): s and lift (mm), its velocity, acceleration and jerk along its line (mm/s,
+/// mm/s², mm/s³), the signed pressure angle (deg) and the radii of curvature (mm; an empty cell
+/// on a straight stretch, whose radius is infinite).
+inline constexpr std::string_view kFollowerCsvColumns =
+    "s,lift,follower_v,follower_a,follower_j,pressure_angle_deg,rho_profile,rho_pitch";
+
+/// @brief Appends "," and the follower's columns at cam angle φ (no line end).
+void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower, double phi,
+                              double omega);
+
 /// @brief The first sample holding a number that is not finite, located "sample K, COLUMN";
 /// none when every value is finite (a turn too fast or too big for a double).
 [[nodiscard]] std::optional<Diagnostic> firstNonFiniteSample(const SampledTurn& turn);
@@ -24,9 +36,11 @@ inline constexpr std::string_view kSampleCsvHeader =
 /// @brief Appends sample k as one line: %.17g in the C locale, the segment as an integer.
 void appendSampleCsvRow(std::string& out, const SampledTurn& turn, std::size_t k);
 
-/// @brief One turn at `points` instants t_k = k·T/points, header included. Errors: a point
-/// count below 1, a value that is not finite.
+/// @brief One turn at `points` instants t_k = k·T/points, header included; with a follower
+/// its columns follow the `sample` ones. Errors: a point count below 1, a value that is not
+/// finite.
 [[nodiscard]] Result<std::string> sampleCsv(const Contour& contour, double omega,
-                                            std::size_t points);
+                                            std::size_t points,
+                                            const FollowerModel* follower = nullptr);
 
 }  // namespace cam

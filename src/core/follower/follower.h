@@ -31,9 +31,11 @@ struct FollowerState {
     Eigen::Vector2d contact{0.0, 0.0};  ///< the touching point of the profile
     Eigen::Vector2d normal{1.0, 0.0};   ///< the contact normal, out of the cam
     double pressureAngle = 0.0;         ///< rad; positive while the follower rises
-    double rhoProfile = 0.0;            ///< mm at the contact point, positive where convex
-    double rhoPitch = 0.0;              ///< mm at the centre (the profile's for knife and flat)
-    std::size_t segment = 0;            ///< the contour segment touched (its end: the joint)
+    /// mm at the contact point, positive where convex; +∞ on a straight stretch.
+    double rhoProfile = 0.0;
+    /// mm at the centre (the profile's for knife and flat); +∞ on a straight stretch.
+    double rhoPitch = 0.0;
+    std::size_t segment = 0;  ///< the contour segment touched (its end: the joint)
 };
 
 /// @brief A follower on one contour, ready to be evaluated at any angle.

@@ -1,0 +1,186 @@
+// camwright-cli state's `follower` object (cli.md, math.md §7): against the 50-digit contact
+// reference (tests/reference/follower_reference.py: followers placed by their contact condition,
+// derivatives by mpmath.diff) on cams with rollers, offsets, knives and flat faces; the knife on
+// the radial line against the polar state of the same command; refusals.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "test_support.h"
+
+namespace cam {
+namespace {
+
+using test::relClose;
+using Json = nlohmann::json;
+
+Json followerAt(const std::string& project, double t) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", t);
+    const auto run = test::runCli({"state", project, "--t", text});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    return Json::parse(run.out);
+}
+
+TEST(CliFollowerReference, StateAgreesWithTheContactReferenceToOneBillionth) {
+    namespace fs = std::filesystem;
+    int cams = 0, states = 0;
+    for (const auto& entry : fs::directory_iterator(test::dataPath("reference/followers"))) {
+        const std::string path = entry.path().string();
+        if (!path.ends_with(".expected.json")) continue;
+        const std::string project = path.substr(0, path.size() - 14) + ".cam.json";
+        const Json expected = Json::parse(test::readFile(path));
+        ++cams;
+        for (const Json& e : expected) {
+            const double t = e.at("t");
+            SCOPED_TRACE(entry.path().filename().string() + " t=" + std::to_string(t));
+            const Json state = followerAt(project, t);
+            const Json& f = state.at("follower");
+            const double s = e.at("s");
+            // Positions to 1e-9 of the cam's size; derivatives to 1e-9 of their own size, with a
+            // floor of 1e-9 of s·ω^k for values that are zero.
+            EXPECT_TRUE(relClose(f.at("s"), s, 1e-9)) << "s";
+            EXPECT_TRUE(relClose(f.at("center")[0], e.at("center_x"), 1e-9, s)) << "center x";
+            EXPECT_TRUE(relClose(f.at("center")[1], e.at("center_y"), 1e-9, s)) << "center y";
+            EXPECT_TRUE(relClose(f.at("contact")[0], e.at("contact_x"), 1e-9, s)) << "contact x";
+            EXPECT_TRUE(relClose(f.at("contact")[1], e.at("contact_y"), 1e-9, s)) << "contact y";
+            // Zeros of v, a, j get an absolute floor of 1e-12 of their size plus 1e-9.
+            EXPECT_TRUE(relClose(f.at("v"), e.at("v"), 1e-9,
+                                 1e-3 * std::abs(e.at("v").get<double>()) + 1.0))
+                << "v";
+            EXPECT_TRUE(relClose(f.at("a"), e.at("a"), 1e-9,
+                                 1e-3 * std::abs(e.at("a").get<double>()) + 1.0))
+                << "a";
+            EXPECT_TRUE(relClose(f.at("j"), e.at("j"), 1e-9,
+                                 1e-3 * std::abs(e.at("j").get<double>()) + 1.0))
+                << "j";
+            EXPECT_NEAR(f.at("pressure_angle_deg"), e.at("pressure_angle_deg"), 1e-9)
+                << "pressure angle";
+            ++states;
+        }
+    }
+    EXPECT_GE(cams, 4);
+    EXPECT_GE(states, 35);
+}
+
+TEST(CliFollowerCamTable, PositionsAreTheFollowersLiftAtTheMasterAngles) {
+    // The roller with offset on the six-lobe cam: every reference instant falls on a knot of a
+    // 3600-point table (0.1° steps). Positions differ by what s differs by in the reference; the
+    // velocity per degree is v/ω·π/180.
+    const std::string base = test::dataPath("reference/followers/six-lobe-roller-offset");
+    const Json expected = Json::parse(test::readFile(base + ".expected.json"));
+    test::TempDir dir;
+    const std::string out = dir.file("table.csv");
+    const auto run = test::runCli(
+        {"export", base + ".cam.json", "--format", "camtable", "--points", "3600", "--out", out});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    std::vector<std::array<double, 4>> rows;
+    std::istringstream in(test::readFile(out));
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#' || line[0] == 'm') continue;
+        std::array<double, 4> row{};
+        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &row[0], &row[1], &row[2], &row[3]),
+                  4)
+            << line;
+        rows.push_back(row);
+    }
+    ASSERT_EQ(rows.size(), 3600u);
+    double stroke = 0.0;
+    for (const auto& r : rows) stroke = std::max(stroke, r[1]);
+    const double omega = 2.0 * M_PI / 0.4, perDeg = M_PI / 180.0;
+    const auto knot = [&](const Json& e) {
+        const double tenth = e.at("phi_deg").get<double>() * 10.0;
+        EXPECT_NEAR(tenth, std::round(tenth), 1e-6);
+        return static_cast<std::size_t>(std::lround(tenth)) % 3600;
+    };
+    const Json& first = expected.front();
+    for (const Json& e : expected) {
+        SCOPED_TRACE("phi " + std::to_string(e.at("phi_deg").get<double>()));
+        const auto& row = rows[knot(e)];
+        EXPECT_NEAR(row[1] - rows[knot(first)][1],
+                    e.at("s").get<double>() - first.at("s").get<double>(), 1e-9 * stroke);
+        EXPECT_TRUE(relClose(row[2], e.at("v").get<double>() / omega * perDeg, 1e-9, 1e-3));
+        EXPECT_GE(row[1], -1e-12);
+    }
+}
+
+TEST(CliFollowerCsv, TheFollowersColumnsAreTheReferenceAtTheirInstants) {
+    // Every reference instant of the six-lobe roller is a row of a 3600-row turn (T = 0.4 s).
+    const std::string base = test::dataPath("reference/followers/six-lobe-roller-offset");
+    const Json expected = Json::parse(test::readFile(base + ".expected.json"));
+    test::TempDir dir;
+    const std::string out = dir.file("turn.csv");
+    const auto run = test::runCli(
+        {"export", base + ".cam.json", "--format", "csv", "--points", "3600", "--out", out});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    std::vector<std::vector<double>> rows;
+    std::istringstream in(test::readFile(out));
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line)) {
+        std::vector<double> row;
+        std::istringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+        ASSERT_EQ(row.size(), 23u) << line;
+        rows.push_back(row);
+    }
+    ASSERT_EQ(rows.size(), 3600u);
+    for (const Json& e : expected) {
+        const double t = e.at("t");
+        const auto k = static_cast<std::size_t>(std::lround(t / 0.4 * 3600));
+        ASSERT_NEAR(rows[k][0], t, 1e-15);
+        const double s = e.at("s");
+        EXPECT_TRUE(relClose(rows[k][15], s, 1e-9)) << t;
+        EXPECT_TRUE(relClose(rows[k][17], e.at("v"), 1e-9, 1.0)) << t;
+        EXPECT_NEAR(rows[k][20], e.at("pressure_angle_deg").get<double>(), 1e-8) << t;
+        EXPECT_GE(rows[k][16], -1e-12);  // the lift
+    }
+}
+
+TEST(CliFollower, AKnifeOnTheRadialLineIsThePolarState) {
+    const std::string example = test::examplePath("six-lobe-arc-cam.cam.json");
+    // The lowest r of the six-lobe cam, from `analyze`, is where the lift is zero.
+    const auto analyze = test::runCli({"analyze", example});
+    ASSERT_EQ(analyze.exitCode, 0) << analyze.err;
+    const double minR = Json::parse(analyze.out).at("extremes").at("r").at("min").at("value");
+    for (double t : {0.0, 0.013, 0.1, 0.2345, 0.39}) {
+        const Json s = followerAt(example, t);
+        const Json& f = s.at("follower");
+        EXPECT_EQ(f.at("type"), "knife");
+        EXPECT_EQ(f.at("motion"), "translating");
+        EXPECT_TRUE(relClose(f.at("s"), s.at("r"), 1e-14));
+        EXPECT_TRUE(relClose(f.at("v"), s.at("v_r"), 1e-12, 1.0));
+        EXPECT_TRUE(relClose(f.at("lift"), s.at("r").get<double>() - minR, 1e-9, 1.0));
+        EXPECT_GE(f.at("lift").get<double>(), -1e-12);
+    }
+}
+
+TEST(CliFollower, WhatCannotBeComputedIsRefusedWithItsPlace) {
+    test::TempDir dir;
+    auto project = Json::parse(test::readFile(test::examplePath("six-lobe-arc-cam.cam.json")));
+    // A roller wider than the cam's concave arcs (radius 4.84 mm): an invalid project.
+    project["follower"] = {{"type", "roller"}, {"radius", 5.0}};
+    std::string path = test::writeTempFile(dir.file("wide.cam.json"), project.dump());
+    auto run = test::runCli({"state", path, "--t", "0.1"});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("follower.radius"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("contour[0]"), std::string::npos) << run.err;
+    // An oscillating arm: valid, not computed by this version.
+    project["follower"] = {{"type", "roller"},
+                           {"radius", 2.0},
+                           {"motion", "oscillating"},
+                           {"pivot", {60.0, 0.0}},
+                           {"arm_length", 50.0}};
+    path = test::writeTempFile(dir.file("arm.cam.json"), project.dump());
+    run = test::runCli({"state", path, "--t", "0.1"});
+    EXPECT_EQ(run.exitCode, 3);
+    EXPECT_NE(run.err.find("follower.motion"), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace cam
