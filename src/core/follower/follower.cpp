@@ -49,6 +49,33 @@ JetVec polynomialDerivative(const std::array<Eigen::Vector2d, 4>& k, const Jet& 
     return polynomial(d, t);
 }
 
+/// Calls onRoot(τ) for every sign change of g over [lo, hi]: 48 intervals scanned, each change
+/// bisected to the last bit.
+template <class G, class OnRoot>
+void forEachRoot(const G& g, double lo, double hi, const OnRoot& onRoot) {
+    constexpr int kIntervals = 48;
+    double t0 = lo, g0 = g(t0);
+    for (int i = 1; i <= kIntervals; ++i) {
+        const double t1 = lo + (hi - lo) * i / kIntervals;
+        const double g1 = g(t1);
+        if ((g0 <= 0.0) != (g1 <= 0.0) || g1 == 0.0) {
+            double a = t0, b = t1, ga = g0;
+            for (int it = 0; it < 200 && b - a > 1e-16; ++it) {
+                const double mid = 0.5 * (a + b), gm = g(mid);
+                if ((gm <= 0.0) == (ga <= 0.0)) {
+                    a = mid;
+                    ga = gm;
+                } else {
+                    b = mid;
+                }
+            }
+            onRoot(0.5 * (a + b));
+        }
+        t0 = t1;
+        g0 = g1;
+    }
+}
+
 }  // namespace
 
 struct FollowerModel::Candidate {
@@ -267,44 +294,24 @@ void FollowerModel::crossings(double phi, std::vector<Candidate>& out) const {
                     }
                     return c.dot(nn) - e;
                 };
-                constexpr int kIntervals = 48;
-                const double width = piece.tHigh - piece.tLow;
-                double t0 = piece.tLow, g0 = g(t0);
-                for (int i = 1; i <= kIntervals; ++i) {
-                    const double t1 = piece.tLow + width * i / kIntervals;
-                    const double g1 = g(t1);
-                    if ((g0 <= 0.0) != (g1 <= 0.0) || g1 == 0.0) {
-                        double lo = t0, hi = t1, glo = g0;
-                        for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
-                            const double mid = 0.5 * (lo + hi), gm = g(mid);
-                            if ((gm <= 0.0) == (glo <= 0.0)) {
-                                lo = mid;
-                                glo = gm;
-                            } else {
-                                hi = mid;
-                            }
-                        }
-                        const double root = 0.5 * (lo + hi);
-                        // The φ-jet of τ by Newton steps on jets: each step makes one more
-                        // coefficient exact.
-                        const Jet cu = cosJet(phi), su = sinJet(phi);
-                        const JetVec uj{cu, su}, nj{-su, cu};
-                        const JetVec ct = pitch(Jet::variable(root));
-                        const double gt = ct.x.c[1] * nn.x() + ct.y.c[1] * nn.y();
-                        if (gt == 0.0) break;
-                        Jet t = Jet::constant(root);
-                        for (int it = 0; it < 4; ++it) {
-                            t = t - (dot(pitch(t), nj) - e) * (1.0 / gt);
-                        }
-                        Candidate c;
-                        c.s = dot(pitch(t), uj);
-                        c.segment = piece.segment;
-                        c.found = true;
-                        out.push_back(c);
+                forEachRoot(g, piece.tLow, piece.tHigh, [&](double root) {
+                    // The φ-jet of τ by Newton steps on jets: each step makes one more
+                    // coefficient exact.
+                    const Jet cu = cosJet(phi), su = sinJet(phi);
+                    const JetVec uj{cu, su}, nj{-su, cu};
+                    const JetVec ct = pitch(Jet::variable(root));
+                    const double gt = ct.x.c[1] * nn.x() + ct.y.c[1] * nn.y();
+                    if (gt == 0.0) return;
+                    Jet t = Jet::constant(root);
+                    for (int it = 0; it < 4; ++it) {
+                        t = t - (dot(pitch(t), nj) - e) * (1.0 / gt);
                     }
-                    t0 = t1;
-                    g0 = g1;
-                }
+                    Candidate c;
+                    c.s = dot(pitch(t), uj);
+                    c.segment = piece.segment;
+                    c.found = true;
+                    out.push_back(c);
+                });
                 break;
             }
             case Piece::Kind::Vertex:
@@ -345,48 +352,28 @@ void FollowerModel::supports(double phi, std::vector<Candidate>& out) const {
                     const JetVec d = polynomialDerivative(piece.coeff, Jet::constant(t));
                     return d.x.value() * u.x() + d.y.value() * u.y();
                 };
-                constexpr int kIntervals = 48;
-                const double width = piece.tHigh - piece.tLow;
-                double t0 = piece.tLow, g0 = g(t0);
-                for (int i = 1; i <= kIntervals; ++i) {
-                    const double t1 = piece.tLow + width * i / kIntervals;
-                    const double g1 = g(t1);
-                    if ((g0 <= 0.0) != (g1 <= 0.0)) {
-                        double lo = t0, hi = t1, glo = g0;
-                        for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
-                            const double mid = 0.5 * (lo + hi), gm = g(mid);
-                            if ((gm <= 0.0) == (glo <= 0.0)) {
-                                lo = mid;
-                                glo = gm;
-                            } else {
-                                hi = mid;
-                            }
+                forEachRoot(g, piece.tLow, piece.tHigh, [&](double root) {
+                    const JetVec d = polynomialDerivative(piece.coeff, Jet::variable(root));
+                    const Eigen::Vector2d tangent(d.x.value(), d.y.value());
+                    const Eigen::Vector2d out_(piece.orientation * tangent.y(),
+                                               -piece.orientation * tangent.x());
+                    if (out_.dot(u) > 0.0) {
+                        const double gt = d.x.c[1] * u.x() + d.y.c[1] * u.y();
+                        const Jet cu = cosJet(phi), su = sinJet(phi);
+                        const JetVec uj{cu, su};
+                        Jet t = Jet::constant(root);
+                        for (int it = 0; it < 4; ++it) {
+                            t = t - dot(polynomialDerivative(piece.coeff, t), uj) * (1.0 / gt);
                         }
-                        const double root = 0.5 * (lo + hi);
-                        const JetVec d = polynomialDerivative(piece.coeff, Jet::variable(root));
-                        const Eigen::Vector2d tangent(d.x.value(), d.y.value());
-                        const Eigen::Vector2d out_(piece.orientation * tangent.y(),
-                                                   -piece.orientation * tangent.x());
-                        if (out_.dot(u) > 0.0) {
-                            const double gt = d.x.c[1] * u.x() + d.y.c[1] * u.y();
-                            const Jet cu = cosJet(phi), su = sinJet(phi);
-                            const JetVec uj{cu, su};
-                            Jet t = Jet::constant(root);
-                            for (int it = 0; it < 4; ++it) {
-                                t = t - dot(polynomialDerivative(piece.coeff, t), uj) * (1.0 / gt);
-                            }
-                            const JetVec p = polynomial(piece.coeff, Jet::constant(root));
-                            Candidate c;
-                            c.s = dot(polynomial(piece.coeff, t), uj);
-                            c.contact = Eigen::Vector2d(p.x.value(), p.y.value());
-                            c.segment = piece.segment;
-                            c.found = true;
-                            out.push_back(c);
-                        }
+                        const JetVec p = polynomial(piece.coeff, Jet::constant(root));
+                        Candidate c;
+                        c.s = dot(polynomial(piece.coeff, t), uj);
+                        c.contact = Eigen::Vector2d(p.x.value(), p.y.value());
+                        c.segment = piece.segment;
+                        c.found = true;
+                        out.push_back(c);
                     }
-                    t0 = t1;
-                    g0 = g1;
-                }
+                });
                 break;
             }
             case Piece::Kind::Line:
