@@ -48,6 +48,14 @@ QString exportAndWait(MainWindow& window, const ExportRequest& request) {
     return finished.front().at(1).toString();
 }
 
+/// Opens the example in a shown 1200×800 window and waits for its plots.
+bool showExample(MainWindow& window) {
+    if (!window.loadFile(kExample).isEmpty()) return false;
+    window.resize(1200, 800);
+    window.show();
+    return window.waitForCurrentResult(20000);
+}
+
 /// Closes the message box an export failure opens (it does not block the event loop).
 void closeProblemBox(MainWindow& window) {
     for (auto* box : window.findChildren<QMessageBox*>("exportProblemBox")) box->close();
@@ -205,10 +213,7 @@ TEST(ExportInWindow, ALongExportRunsOffTheGuiThread) {
 
 TEST(ExportInWindow, APlotPictureFromTheWindow) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
-    window.resize(1200, 800);
-    window.show();
-    ASSERT_TRUE(window.waitForCurrentResult(20000));
+    ASSERT_TRUE(showExample(window));
     test::TempDir dir;
     ExportRequest request;
     request.format = ExportFormat::Plot;
@@ -237,10 +242,7 @@ void whenShown(std::function<bool()> answer) {
 
 TEST(ExportInWindow, RightClickOnAPlotExportsIt) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
-    window.resize(1200, 800);
-    window.show();
-    ASSERT_TRUE(window.waitForCurrentResult(20000));
+    ASSERT_TRUE(showExample(window));
     test::TempDir dir;
     const QString path = QString::fromStdString(dir.file("jerk.svg"));
     QCustomPlot* plot = window.plotWidget(PlotKind::Jerk);
