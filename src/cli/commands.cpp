@@ -40,7 +40,14 @@ struct Loaded {
     Project project;
     Contour contour;
     double omega;
+    /// The project's follower placed on the contour (a radial knife when it names none).
+    FollowerModel follower;
 };
+
+/// The project's follower placed on its contour, or its problems ("follower.pivot", …).
+Result<FollowerModel> placeFollower(const Project& project, const Contour& contour) {
+    return FollowerModel::build(contour, project.follower.value_or(FollowerSpec{}));
+}
 
 /// Loads and compiles PROJECT or throws its first problem (exit 2); the rest go to stderr via
 /// `validate`, which is the command for seeing them all.
@@ -62,7 +69,15 @@ Loaded load(const std::string& path) {
         throw CliError{kInvalidInput, path + ": " + d.location, d.message};
     }
     const double omega = project.value().motion.omegaRadS();
-    return {std::move(project).value(), std::move(contour).value(), omega};
+    // A follower that cannot ride this cam (a pivot inside it, an arm that cannot reach it)
+    // makes the project invalid, as a roller too wide for a concave arc does.
+    auto follower = placeFollower(project.value(), contour.value());
+    if (!follower.ok()) {
+        const Diagnostic& d = follower.errors().front();
+        throw CliError{kInvalidInput, path + ": " + d.location, d.message};
+    }
+    return {std::move(project).value(), std::move(contour).value(), omega,
+            std::move(follower).value()};
 }
 
 Json stateJson(const KinematicState& s) {
@@ -94,39 +109,39 @@ const char* followerTypeName(FollowerType type) {
     return "";
 }
 
-/// The project's follower placed on its contour, or the first reason it cannot be (exit 3).
-FollowerModel buildFollower(const Loaded& loaded) {
-    auto model =
-        FollowerModel::build(loaded.contour, loaded.project.follower.value_or(FollowerSpec{}));
-    if (!model.ok()) {
-        const Diagnostic& d = model.errors().front();
-        throw CliError{kNotComputable, d.location, d.message};
-    }
-    return std::move(model).value();
-}
 
 /// A radius of curvature: null where the curve is straight (an infinite radius).
 Json radiusJson(double rho) { return std::isfinite(rho) ? Json(rho) : Json(nullptr); }
 
-/// cli.md's `follower` object of `state`.
+const char* motionName(const FollowerModel& model) {
+    return model.oscillating() ? "oscillating" : "translating";
+}
+
+/// cli.md's `follower` object of `state`; a swinging arm gives psi_deg, omega_arm, alpha_arm
+/// and jerk_arm (rad/s…) in place of s, v, a, j, and its lift in degrees.
 Json followerJson(const FollowerModel& model, const FollowerState& f) {
-    return Json{{"type", followerTypeName(model.spec().type)},
-                {"motion", "translating"},
-                {"s", f.s},
-                {"lift", f.s - model.minS()},
-                {"v", f.v},
-                {"a", f.a},
-                {"j", f.j},
-                {"center", {f.center.x(), f.center.y()}},
+    Json json{{"type", followerTypeName(model.spec().type)}, {"motion", motionName(model)}};
+    if (model.oscillating()) {
+        json.update(Json{{"psi_deg", radToDeg(f.s)},
+                         {"lift", model.lift(f)},
+                         {"omega_arm", f.v},
+                         {"alpha_arm", f.a},
+                         {"jerk_arm", f.j}});
+    } else {
+        json.update(
+            Json{{"s", f.s}, {"lift", model.lift(f)}, {"v", f.v}, {"a", f.a}, {"j", f.j}});
+    }
+    json.update(Json{{"center", {f.center.x(), f.center.y()}},
                 {"contact", {f.contact.x(), f.contact.y()}},
                 {"pressure_angle_deg", radToDeg(f.pressureAngle)},
-                {"rho_profile", radiusJson(f.rhoProfile)},
-                {"rho_pitch", radiusJson(f.rhoPitch)}};
+                     {"rho_profile", radiusJson(f.rhoProfile)},
+                     {"rho_pitch", radiusJson(f.rhoPitch)}});
+    return json;
 }
 
 /// cli.md's `follower` object of `analyze`: the design checks of math.md §7.
 Json followerAnalysisJson(const Loaded& loaded) {
-    const FollowerModel model = buildFollower(loaded);
+    const FollowerModel& model = loaded.follower;
     const FollowerAnalysis a = analyzeFollower(model, loaded.omega, loaded.contour.phiBegin());
     const auto one = [](const FollowerExtremum& e) {
         return Json{{"value", radiusJson(e.value)}, {"phi_deg", radToDeg(e.phi)}};
@@ -146,21 +161,36 @@ Json followerAnalysisJson(const Loaded& loaded) {
                             {"profile_from_deg", radToDeg(std::atan2(c.from.y(), c.from.x()))},
                             {"profile_to_deg", radToDeg(std::atan2(c.to.y(), c.to.x()))}});
     }
-    Json f{{"type", followerTypeName(model.spec().type)},
-           {"motion", "translating"},
-           {"s", {{"min", one(a.sMin)}, {"max", one(a.sMax)}}},
-           {"lift", a.sMax.value - a.sMin.value},
-           {"v", {{"min", one(a.vMin)}, {"max", one(a.vMax)}}},
-           {"a", {{"min", one(a.aMin)}, {"max", one(a.aMax)}}},
-           {"j", {{"min", one(a.jMin)}, {"max", one(a.jMax)}}},
-           {"pressure_angle",
+    const bool arm = model.oscillating();
+    const auto range = [&](const FollowerExtremum& lo, const FollowerExtremum& hi) {
+        return Json{{"min", one(lo)}, {"max", one(hi)}};
+    };
+    const auto degrees = [](FollowerExtremum e) {
+        e.value = radToDeg(e.value);
+        return e;
+    };
+    Json f{{"type", followerTypeName(model.spec().type)}, {"motion", motionName(model)}};
+    if (arm) {
+        f["psi_deg"] = range(degrees(a.sMin), degrees(a.sMax));
+        f["lift"] = radToDeg(a.sMax.value - a.sMin.value);
+        f["omega_arm"] = range(a.vMin, a.vMax);
+        f["alpha_arm"] = range(a.aMin, a.aMax);
+        f["jerk_arm"] = range(a.jMin, a.jMax);
+    } else {
+        f["s"] = range(a.sMin, a.sMax);
+        f["lift"] = a.sMax.value - a.sMin.value;
+        f["v"] = range(a.vMin, a.vMax);
+        f["a"] = range(a.aMin, a.aMax);
+        f["j"] = range(a.jMin, a.jMax);
+    }
+    f.update(Json{{"pressure_angle",
             {{"rise", angle(a.pressureRise)},
              {"return", angle(a.pressureReturn)},
              {"limit_deg", radToDeg(a.limitRad)},
              {"exceeded", std::move(exceeded)}}},
-           {"rho_profile_min", one(a.rhoProfileMin)},
-           {"rho_pitch_min", one(a.rhoPitchMin)},
-           {"undercut", std::move(undercut)}};
+                  {"rho_profile_min", one(a.rhoProfileMin)},
+                  {"rho_pitch_min", one(a.rhoPitchMin)},
+                  {"undercut", std::move(undercut)}});
     if (model.spec().type == FollowerType::Flat) f["face_width"] = a.faceWidth;
     return f;
 }
@@ -219,6 +249,18 @@ int runValidate(const Arguments& args, std::ostream& out, std::ostream& err) {
         err << lines;
         return kInvalidInput;
     }
+    // The follower must be able to ride the cam (Contour::build cannot fail after validation).
+    const auto contour = Contour::build(project.value());
+    const auto follower =
+        contour.ok() ? placeFollower(project.value(), contour.value()) : contour.errors();
+    if (!follower.ok()) {
+        std::string lines;
+        for (const Diagnostic& d : follower.errors()) {
+            lines += "camwright-cli: " + path + ": " + d.location + ": " + d.message + '\n';
+        }
+        err << lines;
+        return kInvalidInput;
+    }
     out << "valid: " << project.value().contour.size() << " segments\n";
     return kOk;
 }
@@ -238,7 +280,7 @@ int runState(const Arguments& args, std::ostream& out) {
     Json state = stateJson(stateAt(loaded.contour, loaded.project.motion, t));
     // The follower (math.md §7), at the same exactly reduced angle; the seed's knife edge on
     // the radial line when the project names none.
-    const FollowerModel follower = buildFollower(loaded);
+    const FollowerModel& follower = loaded.follower;
     const double turns = turnsAt(loaded.project.motion, t);
     const double reduced = kTwoPi * (turns - std::floor(turns));
     state["follower"] = followerJson(follower, follower.at(reduced, loaded.omega));
@@ -268,7 +310,7 @@ void writeSampleCsv(const Loaded& loaded, long long n, std::ostream& out,
     if (follower) {
         chunk.pop_back();
         chunk += ',';
-        chunk += kFollowerCsvColumns;
+        chunk += followerCsvColumns(*follower);
         chunk += '\n';
     }
     auto flush = [&] {
@@ -686,8 +728,7 @@ int runExport(const Arguments& args, std::ostream& out) {
         if (const auto text = args.option("--points")) {
             n = parseCount("--points", *text, 1, kMaxSamplesPerTurn);
         }
-        const FollowerModel follower = buildFollower(loaded);
-        writeSampleCsv(loaded, n, out, outPath, &follower);
+        writeSampleCsv(loaded, n, out, outPath, &loaded.follower);
         return kOk;
     }
     Result<std::string> text = std::string();

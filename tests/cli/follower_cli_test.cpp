@@ -41,31 +41,40 @@ TEST(CliFollowerReference, StateAgreesWithTheContactReferenceToOneBillionth) {
             SCOPED_TRACE(entry.path().filename().string() + " t=" + std::to_string(t));
             const Json state = followerAt(project, t);
             const Json& f = state.at("follower");
-            const double s = e.at("s");
             // Positions to 1e-9 of the cam's size; derivatives to 1e-9 of their own size, with a
             // floor of 1e-9 of s·ω^k for values that are zero.
-            EXPECT_TRUE(relClose(f.at("s"), s, 1e-9)) << "s";
-            EXPECT_TRUE(relClose(f.at("center")[0], e.at("center_x"), 1e-9, s)) << "center x";
-            EXPECT_TRUE(relClose(f.at("center")[1], e.at("center_y"), 1e-9, s)) << "center y";
-            EXPECT_TRUE(relClose(f.at("contact")[0], e.at("contact_x"), 1e-9, s)) << "contact x";
-            EXPECT_TRUE(relClose(f.at("contact")[1], e.at("contact_y"), 1e-9, s)) << "contact y";
-            // Zeros of v, a, j get an absolute floor of 1e-12 of their size plus 1e-9.
-            EXPECT_TRUE(relClose(f.at("v"), e.at("v"), 1e-9,
-                                 1e-3 * std::abs(e.at("v").get<double>()) + 1.0))
-                << "v";
-            EXPECT_TRUE(relClose(f.at("a"), e.at("a"), 1e-9,
-                                 1e-3 * std::abs(e.at("a").get<double>()) + 1.0))
-                << "a";
-            EXPECT_TRUE(relClose(f.at("j"), e.at("j"), 1e-9,
-                                 1e-3 * std::abs(e.at("j").get<double>()) + 1.0))
-                << "j";
+            const bool arm = e.contains("psi_deg");
+            EXPECT_EQ(f.at("motion"), arm ? "oscillating" : "translating");
+            const double size = std::hypot(e.at("center_x").get<double>(),
+                                           e.at("center_y").get<double>());
+            EXPECT_TRUE(relClose(f.at("center")[0], e.at("center_x"), 1e-9, size)) << "center x";
+            EXPECT_TRUE(relClose(f.at("center")[1], e.at("center_y"), 1e-9, size)) << "center y";
+            EXPECT_TRUE(relClose(f.at("contact")[0], e.at("contact_x"), 1e-9, size))
+                << "contact x";
+            EXPECT_TRUE(relClose(f.at("contact")[1], e.at("contact_y"), 1e-9, size))
+                << "contact y";
+            // ψ to 1e-9 rad (a 1e-9 mm move of a tip 1 mm out); its rates like s's.
+            const std::array<const char*, 4> names =
+                arm ? std::array{"psi_deg", "omega_arm", "alpha_arm", "jerk_arm"}
+                    : std::array{"s", "v", "a", "j"};
+            if (arm) {
+                EXPECT_NEAR(f.at("psi_deg"), e.at("psi_deg"), 1e-9 * 180.0 / M_PI) << "psi";
+            } else {
+                EXPECT_TRUE(relClose(f.at("s"), e.at("s"), 1e-9)) << "s";
+            }
+            // Zeros of the rates get an absolute floor of 1e-12 of their size plus 1e-9.
+            for (std::size_t k = 1; k < 4; ++k) {
+                const double want = e.at(names[k]);
+                EXPECT_TRUE(relClose(f.at(names[k]), want, 1e-9, 1e-3 * std::abs(want) + 1.0))
+                    << names[k];
+            }
             EXPECT_NEAR(f.at("pressure_angle_deg"), e.at("pressure_angle_deg"), 1e-9)
                 << "pressure angle";
             ++states;
         }
     }
-    EXPECT_GE(cams, 4);
-    EXPECT_GE(states, 35);
+    EXPECT_GE(cams, 8);
+    EXPECT_GE(states, 68);
 }
 
 TEST(CliFollowerCamTable, PositionsAreTheFollowersLiftAtTheMasterAngles) {
@@ -142,6 +151,75 @@ TEST(CliFollowerCsv, TheFollowersColumnsAreTheReferenceAtTheirInstants) {
     }
 }
 
+TEST(CliFollowerArm, TheCamTableAndTheCsvHoldTheArmsAngleInDegrees) {
+    // The swinging roller on the pear cam (T = 0.25 s, arm "ccw": the lift grows with ψ). A
+    // 3600-point table has a knot every 0.1°; reference instants that fall on one are checked.
+    const std::string base = test::dataPath("reference/followers/pear-tangent-arm-roller");
+    const Json expected = Json::parse(test::readFile(base + ".expected.json"));
+    test::TempDir dir;
+    const std::string table = dir.file("table.csv"), turn = dir.file("turn.csv");
+    auto run = test::runCli(
+        {"export", base + ".cam.json", "--format", "camtable", "--points", "3600", "--out", table});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::string text = test::readFile(table);
+    EXPECT_NE(text.find("# slave=lift_deg\n"), std::string::npos);
+    std::vector<std::array<double, 4>> rows;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#' || line[0] == 'm') continue;
+        std::array<double, 4> row{};
+        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &row[0], &row[1], &row[2], &row[3]),
+                  4);
+        rows.push_back(row);
+    }
+    ASSERT_EQ(rows.size(), 3600u);
+    const double omega = 2.0 * M_PI / 0.25;
+    int checked = 0;
+    const Json* first = nullptr;
+    std::size_t firstKnot = 0;
+    for (const Json& e : expected) {
+        const double tenth = e.at("phi_deg").get<double>() * 10.0;
+        if (std::abs(tenth - std::round(tenth)) > 1e-6) continue;
+        const auto knot = static_cast<std::size_t>(std::lround(tenth)) % 3600;
+        if (!first) {
+            first = &e;
+            firstKnot = knot;
+        }
+        SCOPED_TRACE("phi " + std::to_string(e.at("phi_deg").get<double>()));
+        // Positions differ by what ψ differs by; the rate per master degree is ψ' (deg/deg).
+        EXPECT_NEAR(rows[knot][1] - rows[firstKnot][1],
+                    e.at("psi_deg").get<double>() - first->at("psi_deg").get<double>(), 1e-9);
+        EXPECT_TRUE(relClose(rows[knot][2], e.at("omega_arm").get<double>() / omega, 1e-9, 1e-3));
+        EXPECT_GE(rows[knot][1], -1e-12);
+        ++checked;
+    }
+    EXPECT_GE(checked, 5);
+    // The CSV: ψ in degrees and the arm's rates under their own names.
+    run = test::runCli(
+        {"export", base + ".cam.json", "--format", "csv", "--points", "1000", "--out", turn});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::string csv = test::readFile(turn);
+    EXPECT_EQ(csv.substr(0, csv.find('\n')),
+              "t,phi_deg,segment,r,x,y,v_r,v_phi,v,a_r,a_phi,a,j_r,j_phi,j,psi_deg,lift_deg,"
+              "omega_arm,alpha_arm,jerk_arm,pressure_angle_deg,rho_profile,rho_pitch");
+    // t = 0.04 s is row 160 of 1000 (T = 0.25 s).
+    std::istringstream lines(csv);
+    std::string line;
+    for (int k = 0; k <= 160 + 1; ++k) std::getline(lines, line);
+    std::vector<double> row;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');)
+        row.push_back(cell.empty() ? NAN : std::stod(cell));
+    if (line.back() == ',') row.push_back(NAN);  // the contact is on a line: both radii empty
+    ASSERT_EQ(row.size(), 23u);
+    EXPECT_TRUE(std::isnan(row[21]) && std::isnan(row[22]));
+    const Json& at004 = expected.at(1);
+    ASSERT_NEAR(row[0], at004.at("t").get<double>(), 1e-15);
+    EXPECT_NEAR(row[15], at004.at("psi_deg").get<double>(), 1e-9);
+    EXPECT_TRUE(relClose(row[17], at004.at("omega_arm"), 1e-9, 1e-3));
+    EXPECT_NEAR(row[20], at004.at("pressure_angle_deg").get<double>(), 1e-8);
+}
+
 TEST(CliFollower, AKnifeOnTheRadialLineIsThePolarState) {
     const std::string example = test::examplePath("six-lobe-arc-cam.cam.json");
     // The lowest r of the six-lobe cam, from `analyze`, is where the lift is zero.
@@ -170,16 +248,40 @@ TEST(CliFollower, WhatCannotBeComputedIsRefusedWithItsPlace) {
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_NE(run.err.find("follower.radius"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find("contour[0]"), std::string::npos) << run.err;
-    // An oscillating arm: valid, not computed by this version.
-    project["follower"] = {{"type", "roller"},
-                           {"radius", 2.0},
-                           {"motion", "oscillating"},
-                           {"pivot", {60.0, 0.0}},
-                           {"arm_length", 50.0}};
-    path = test::writeTempFile(dir.file("arm.cam.json"), project.dump());
-    run = test::runCli({"state", path, "--t", "0.1"});
-    EXPECT_EQ(run.exitCode, 3);
-    EXPECT_NE(run.err.find("follower.motion"), std::string::npos) << run.err;
+    // Swinging arms that cannot ride the cam (its profile reaches 29 mm from the centre): a
+    // pivot inside it, an arm too short to reach it, one so long it passes beyond it. Every
+    // command and `validate` name the field and the angle.
+    const auto refused = [&](const Json& follower, const std::string& field,
+                             const std::string& words) {
+        project["follower"] = follower;
+        const std::string file = test::writeTempFile(dir.file("arm.cam.json"), project.dump());
+        for (const auto& args : {std::vector<std::string>{"state", file, "--t", "0.1"},
+                                 std::vector<std::string>{"analyze", file},
+                                 std::vector<std::string>{"validate", file}}) {
+            const auto result = test::runCli(args);
+            EXPECT_EQ(result.exitCode, 2) << args[0] << ": " << result.err;
+            EXPECT_NE(result.err.find(file + ": " + field), std::string::npos) << result.err;
+            EXPECT_NE(result.err.find(words), std::string::npos) << result.err;
+        }
+    };
+    const Json arm{{"type", "roller"}, {"radius", 2.0}, {"motion", "oscillating"}};
+    Json inside = arm;
+    inside["pivot"] = {20.0, 15.0};  // 25 mm from the centre
+    inside["arm_length"] = 10.0;
+    refused(inside, "follower.pivot", "inside the cam");
+    Json shortArm = arm;
+    shortArm["pivot"] = {60.0, 0.0};
+    shortArm["arm_length"] = 20.0;  // the roller's centre reaches 20 mm, the cam is 31 mm away
+    refused(shortArm, "follower.arm_length", "too short");
+    Json longArm = shortArm;
+    longArm["arm_length"] = 95.0;
+    refused(longArm, "follower.arm_length", "too long");
+    // Nothing is refused that can ride: the same arm at 45 mm.
+    Json fits = shortArm;
+    fits["arm_length"] = 45.0;
+    project["follower"] = fits;
+    path = test::writeTempFile(dir.file("fits.cam.json"), project.dump());
+    EXPECT_EQ(test::runCli({"validate", path}).exitCode, 0);
 }
 
 }  // namespace

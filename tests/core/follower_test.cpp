@@ -8,6 +8,7 @@
 
 #include "common/angles.h"
 #include "contour/contour.h"
+#include "core/follower_geometry.h"
 #include "core/test_projects.h"
 #include "follower/follower.h"
 #include "follower/follower_analysis.h"
@@ -17,15 +18,14 @@
 namespace cam {
 namespace {
 
+using test::derivative;
+using test::distanceToProfile;
+using test::load;
+using test::normalOf;
+using test::profilePoint;
 using test::relClose;
-
-Contour load(const std::string& path) {
-    auto p = loadProjectFile(path);
-    EXPECT_TRUE(p.ok()) << path;
-    return Contour::build(p.value()).value();
-}
-
-Contour sixLobe() { return load(test::examplePath("six-lobe-arc-cam.cam.json")); }
+using test::sixLobe;
+using test::unit;
 
 FollowerModel model(const Contour& contour, FollowerType type, double offset, double radius) {
     FollowerSpec spec;
@@ -35,47 +35,6 @@ FollowerModel model(const Contour& contour, FollowerType type, double offset, do
     auto m = FollowerModel::build(contour, spec);
     EXPECT_TRUE(m.ok());
     return std::move(m).value();
-}
-
-Eigen::Vector2d unit(double phi) { return {std::cos(phi), std::sin(phi)}; }
-Eigen::Vector2d normalOf(double phi) { return {-std::sin(phi), std::cos(phi)}; }
-
-/// The profile point on the ray at φ: r(φ)·u, through the contour's polar formulas.
-Eigen::Vector2d profilePoint(const Contour& contour, double phi) {
-    return contour.evaluate(phi).r * unit(phi);
-}
-
-/// The distance from x to the profile: the nearest of 5 000 points on it, refined by golden
-/// sections along the polar angle within two samples either side.
-double distanceToProfile(const Contour& contour, const Eigen::Vector2d& x) {
-    constexpr int n = 5000;
-    double best = 1e300, bestPhi = 0.0;
-    for (int i = 0; i < n; ++i) {
-        const double phi = contour.phiBegin() + kTwoPi * i / n;
-        const double d = (profilePoint(contour, phi) - x).norm();
-        if (d < best) {
-            best = d;
-            bestPhi = phi;
-        }
-    }
-    double lo = bestPhi - 2 * kTwoPi / n, hi = bestPhi + 2 * kTwoPi / n;
-    const auto f = [&](double phi) { return (profilePoint(contour, phi) - x).norm(); };
-    constexpr double g = 0.6180339887498949;
-    for (int it = 0; it < 100; ++it) {
-        const double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
-        if (f(a) < f(b)) {
-            hi = b;
-        } else {
-            lo = a;
-        }
-    }
-    return std::min(best, f(0.5 * (lo + hi)));
-}
-
-/// Central differences of order 4: f'(x) with error O(h⁴).
-template <class F>
-double derivative(F f, double x, double h) {
-    return (f(x - 2 * h) - 8 * f(x - h) + 8 * f(x + h) - f(x + 2 * h)) / (12 * h);
 }
 
 TEST(FollowerOnACircle, KnifeWithOffsetIsTheOuterCrossingOfItsLine) {

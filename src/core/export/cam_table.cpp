@@ -16,8 +16,8 @@ std::vector<CamKnot> camKnots(const FollowerModel& model, std::size_t points) {
     for (std::size_t i = 0; i < points; ++i) {
         // 360·i/N exactly for the row, and the angle from it.
         const double deg = 360.0 * static_cast<double>(i) / static_cast<double>(points);
-        const FollowerState f = model.at(degToRad(deg), 1.0);
-        knots[i] = {deg, f.s - model.minS(), f.sPhi[1] * perDeg, f.sPhi[2] * perDeg * perDeg};
+        const std::array<double, 4> lift = model.liftPhi(model.at(degToRad(deg), 1.0));
+        knots[i] = {deg, lift[0], lift[1] * perDeg, lift[2] * perDeg * perDeg};
     }
     return knots;
 }
@@ -38,10 +38,13 @@ std::string csvTable(const std::vector<CamKnot>& knots, const CamTableOptions& o
     const auto n = static_cast<double>(knots.size());
     std::string out = "# camwright cam table";
     if (!options.name.empty()) out += " of " + options.name;
-    out += ": master angle -> follower lift s(phi) - min s\n";
+    const bool arm = options.follower.motion == FollowerMotion::Oscillating;
+    out += arm ? ": master angle -> arm angle swung away from the cam (deg)\n"
+               : ": master angle -> follower lift s(phi) - min s\n";
     out += "# master_start_deg=0\n# master_step_deg=";
     appendExact(out, 360.0 / n);
-    out += "\n# points=" + std::to_string(knots.size()) + "\n# periodic=true\n# slave=lift_mm\n";
+    out += "\n# points=" + std::to_string(knots.size()) + "\n# periodic=true\n# slave=";
+    out += arm ? "lift_deg\n" : "lift_mm\n";
     out += "master_deg,position,velocity_per_deg,acceleration_per_deg2\n";
     for (const CamKnot& k : knots)
         appendRow(out, {k.masterDeg, k.position, k.velocity, k.acceleration});
@@ -103,9 +106,14 @@ std::string codesysTable(const std::vector<CamKnot>& knots, const CamTableOption
     const std::size_t n = knots.size();
     std::string out = "(* Camwright electronic cam";
     if (!options.name.empty()) out += ": " + commentText(options.name);
+    out += options.follower.motion == FollowerMotion::Oscillating
+               ? " *)\n(* master: cam angle in degrees, 0 .. 360, periodic; slave: the arm's angle\n"
+                 "   swung away from the cam, in deg; dV in deg/deg, dA in deg/deg^2. Knots for\n"
+                 "   SMC_CAMXYVA, interpolated\n"
+               : " *)\n(* master: cam angle in degrees, 0 .. 360, periodic; slave: follower lift "
+                 "in mm\n   (s(phi) - min s); dV in mm/deg, dA in mm/deg^2. Knots for SMC_CAMXYVA, "
+                 "interpolated\n";
     out +=
-        " *)\n(* master: cam angle in degrees, 0 .. 360, periodic; slave: follower lift in mm\n"
-        "   (r(phi) - min r); dV in mm/deg, dA in mm/deg^2. Knots for SMC_CAMXYVA, interpolated\n"
         "   by fifth-order polynomials (byType 3). The knot at 360 deg repeats the one at 0. *)\n";
     out += "VAR_GLOBAL\n";
     out += "    " + id + "_knots : ARRAY[0.." + std::to_string(n) + "] OF SMC_CAMXYVA := [\n";

@@ -47,10 +47,15 @@ void appendSampleCsvRow(std::string& out, const SampledTurn& turn, std::size_t k
     out += '\n';
 }
 
+std::string_view followerCsvColumns(const FollowerModel& follower) {
+    return follower.oscillating() ? kArmCsvColumns : kFollowerCsvColumns;
+}
+
 void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower, double phi,
                               double omega) {
     const FollowerState f = follower.at(phi, omega);
-    for (const double v : {f.s, f.s - follower.minS(), f.v, f.a, f.j, radToDeg(f.pressureAngle),
+    const double q = follower.oscillating() ? radToDeg(f.s) : f.s;
+    for (const double v : {q, follower.lift(f), f.v, f.a, f.j, radToDeg(f.pressureAngle),
                            f.rhoProfile, f.rhoPitch}) {
         out += ',';
         if (std::isfinite(v)) appendExact(out, v);  // an empty cell: straight, infinite radius
@@ -67,7 +72,7 @@ Result<std::string> sampleCsv(const Contour& contour, double omega, std::size_t 
     if (follower) {
         text.pop_back();  // the line end
         text += ',';
-        text += kFollowerCsvColumns;
+        text += followerCsvColumns(*follower);
         text += '\n';
     }
     text.reserve(text.size() + turn.size() * (follower ? 460 : 300));

@@ -24,6 +24,13 @@ inline constexpr std::string_view kSampleCsvHeader =
 /// on a straight stretch, whose radius is infinite).
 inline constexpr std::string_view kFollowerCsvColumns =
     "s,lift,follower_v,follower_a,follower_j,pressure_angle_deg,rho_profile,rho_pitch";
+/// @brief The same for a swinging arm: ψ and lift in degrees, the arm's angular speed,
+/// acceleration and jerk (rad/s, rad/s², rad/s³).
+inline constexpr std::string_view kArmCsvColumns =
+    "psi_deg,lift_deg,omega_arm,alpha_arm,jerk_arm,pressure_angle_deg,rho_profile,rho_pitch";
+
+/// @brief The columns for this follower: kFollowerCsvColumns or kArmCsvColumns.
+[[nodiscard]] std::string_view followerCsvColumns(const FollowerModel& follower);
 
 /// @brief Appends "," and the follower's columns at cam angle φ (no line end).
 void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower, double phi,

@@ -5,108 +5,43 @@
 #include <limits>
 
 #include "common/angles.h"
+#include "common/tolerances.h"
+#include "follower/follower_candidate.h"
 #include "follower/jet.h"
+#include "follower/piece_geometry.h"
 #include "geometry/bezier.h"
 
 namespace cam {
-namespace {
 
-/// How far outside its span a crossing may fall and still count (rad, or parameter fraction):
-/// joints meet at rounding distance, and an extended piece sticks out only by its square.
-constexpr double kSpanSlack = 1e-9;
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() * b.y() - a.y() * b.x();
-}
-
-/// The angle from `start` to `angle` in the direction of `sweep`, in [0, 2π).
-double angleIntoSweep(double angle, double start, double sweep) {
-    double d = sweep >= 0.0 ? angle - start : start - angle;
-    d = std::fmod(d, kTwoPi);
-    if (d < 0.0) d += kTwoPi;
-    return d;
-}
-
-bool inSpan(double angle, double start, double sweep) {
-    if (std::abs(sweep) >= kTwoPi) return true;
-    const double d = angleIntoSweep(angle, start, sweep);
-    return d <= std::abs(sweep) + kSpanSlack || d >= kTwoPi - kSpanSlack;
-}
-
-/// p(τ) of a cubic in power basis, with a jet τ.
-JetVec polynomial(const std::array<Eigen::Vector2d, 4>& k, const Jet& t) {
-    Jet x = Jet::constant(k[3].x()), y = Jet::constant(k[3].y());
-    for (int i = 2; i >= 0; --i) {
-        x = x * t + k[static_cast<std::size_t>(i)].x();
-        y = y * t + k[static_cast<std::size_t>(i)].y();
-    }
-    return {x, y};
-}
-
-/// p'(τ) of a cubic in power basis, with a jet τ.
-JetVec polynomialDerivative(const std::array<Eigen::Vector2d, 4>& k, const Jet& t) {
-    const std::array<Eigen::Vector2d, 4> d{k[1], 2.0 * k[2], 3.0 * k[3], Eigen::Vector2d::Zero()};
-    return polynomial(d, t);
-}
-
-/// Calls onRoot(τ) for every sign change of g over [lo, hi]: 48 intervals scanned, each change
-/// bisected to the last bit.
-template <class G, class OnRoot>
-void forEachRoot(const G& g, double lo, double hi, const OnRoot& onRoot) {
-    constexpr int kIntervals = 48;
-    double t0 = lo, g0 = g(t0);
-    for (int i = 1; i <= kIntervals; ++i) {
-        const double t1 = lo + (hi - lo) * i / kIntervals;
-        const double g1 = g(t1);
-        if ((g0 <= 0.0) != (g1 <= 0.0) || g1 == 0.0) {
-            double a = t0, b = t1, ga = g0;
-            for (int it = 0; it < 200 && b - a > 1e-16; ++it) {
-                const double mid = 0.5 * (a + b), gm = g(mid);
-                if ((gm <= 0.0) == (ga <= 0.0)) {
-                    a = mid;
-                    ga = gm;
-                } else {
-                    b = mid;
-                }
-            }
-            onRoot(0.5 * (a + b));
-        }
-        t0 = t1;
-        g0 = g1;
-    }
-}
-
-}  // namespace
-
-struct FollowerModel::Candidate {
-    Jet s;
-    Eigen::Vector2d contact{0.0, 0.0};  ///< flat face: the support point
-    std::size_t segment = 0;
-    bool found = false;
-};
+using follower_detail::angleIntoSweep;
+using follower_detail::cross;
+using follower_detail::forEachRoot;
+using follower_detail::inSpanDirection;
+using follower_detail::polynomial;
+using follower_detail::polynomialDerivative;
+using follower_detail::splinePitch;
 
 Result<FollowerModel> FollowerModel::build(const Contour& contour, const FollowerSpec& spec) {
-    if (spec.motion == FollowerMotion::Oscillating) {
-        return Diagnostics{{"follower.motion",
-                            "an oscillating follower is not computed by this version yet; "
-                            "use \"translating\""}};
-    }
     FollowerModel model;
     model.m_spec = spec;
+    model.m_pivotDirection = std::atan2(-spec.pivot.y(), -spec.pivot.x());
     model.m_phiBegin = contour.phiBegin();
     const double rho = spec.type == FollowerType::Roller ? spec.radius : 0.0;
     const std::size_t n = contour.size();
     Diagnostics errors;
-    std::vector<Eigen::Vector2d> ends(n);
+    std::vector<Eigen::Vector2d> ends(n), startTravel(n), endTravel(n);
+    const double tangentTolerance = degToRad(kTangentToleranceDeg);
     for (std::size_t k = 0; k < n; ++k) {
         const ContourSegment& seg = contour.segment(k);
         const double p0 = seg.phiStart, p1 = seg.phiEnd;
         const PolarDerivatives d0 = seg.evaluate(p0), d1 = seg.evaluate(p1);
         const Eigen::Vector2d u0(std::cos(p0), std::sin(p0)), n0(-u0.y(), u0.x());
-        const Eigen::Vector2d u1(std::cos(p1), std::sin(p1));
+        const Eigen::Vector2d u1(std::cos(p1), std::sin(p1)), n1(-u1.y(), u1.x());
         const Eigen::Vector2d a = d0.r * u0, b = d1.r * u1;
         const Eigen::Vector2d travel = d0.dr * u0 + d0.r * n0;  // dP/dφ at the start
         ends[k] = b;
+        startTravel[k] = travel;
+        endTravel[k] = d1.dr * u1 + d1.r * n1;
         Piece piece;
         piece.segment = k;
         switch (seg.type) {
@@ -125,6 +60,7 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
                     continue;
                 }
                 piece.radius = piece.convex ? R + rho : R - rho;
+                piece.slack += tangentTolerance;
                 piece.start = std::atan2(a.y() - c.y(), a.x() - c.x());
                 const double end = std::atan2(b.y() - c.y(), b.x() - c.x());
                 if (p1 - p0 >= kTwoPi - 1e-12) {
@@ -134,6 +70,9 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
                         angleIntoSweep(end, piece.start, piece.convex ? 1.0 : -1.0);
                     piece.sweep = piece.convex ? sweep : -sweep;
                 }
+                piece.from = Eigen::Vector2d(std::cos(piece.start), std::sin(piece.start));
+                piece.to = Eigen::Vector2d(std::cos(piece.start + piece.sweep),
+                                           std::sin(piece.start + piece.sweep));
                 break;
             }
             case SegmentType::Line: {
@@ -142,6 +81,7 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
                 piece.m = Eigen::Vector2d(dir.y(), -dir.x());  // right of the travel: outside
                 piece.q0 = a + rho * piece.m;
                 piece.q1 = b + rho * piece.m;
+                piece.slack += rho * tangentTolerance / (b - a).norm();
                 break;
             }
             default: {
@@ -166,17 +106,23 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
                 piece.tLow = std::min(ta, tb);
                 piece.tHigh = std::max(ta, tb);
                 piece.orientation = ta <= tb ? 1.0 : -1.0;
+                piece.slack = 1e-6;  // τ: about 1e-5 mm on a 10 mm spline
                 break;
             }
         }
         model.m_pieces.push_back(piece);
     }
     if (!errors.empty()) return errors;
-    // Corners: a roller rolls round each joint on a circle of its radius; a flat face may rest
-    // on a joint. (A circle round a smooth joint lies inside the pitch curve: never the
-    // outermost crossing, so it changes nothing there.)
+    // Corners: a roller rolls round each convex corner on a circle of its radius; a flat face
+    // may rest on one. A joint tangent within kTangentToleranceDeg is no corner (its circle
+    // would only touch the pitch curve, and win a tie at one angle with the wrong curvature);
+    // the neighbours' slack closes the gap its small break leaves. A concave corner's circle
+    // lies inside the pitch curve.
     for (std::size_t k = 0; k < n; ++k) {
         if (spec.type == FollowerType::Knife) break;
+        const Eigen::Vector2d in = endTravel[k].normalized();
+        const Eigen::Vector2d out = startTravel[(k + 1) % n].normalized();
+        if (std::atan2(cross(in, out), in.dot(out)) <= tangentTolerance) continue;
         Piece corner;
         corner.segment = k;
         corner.center = ends[k];
@@ -186,15 +132,22 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
             corner.sweep = kTwoPi;
         } else {
             corner.kind = Piece::Kind::Vertex;
+            corner.start = std::atan2(-in.x(), in.y());  // the tangent turned clockwise
+            corner.sweep = std::atan2(cross(in, out), in.dot(out));
         }
         model.m_pieces.push_back(corner);
+    }
+    model.buildIndex();
+    if (model.oscillating()) {
+        Diagnostics armErrors = model.checkArm(contour);
+        if (!armErrors.empty()) return armErrors;
     }
 
     // The smallest s: every local minimum of a fine sampling, refined by golden sections.
     constexpr int kSamples = 2048;
     const double h = kTwoPi / kSamples;
     std::vector<double> s(kSamples);
-    for (int i = 0; i < kSamples; ++i) s[i] = model.best(model.m_phiBegin + i * h).s.value();
+    for (int i = 0; i < kSamples; ++i) s[i] = model.best(model.m_phiBegin + i * h).rank;
     double minimum = std::numeric_limits<double>::infinity();
     for (int i = 0; i < kSamples; ++i) {
         const double prev = s[(i + kSamples - 1) % kSamples], next = s[(i + 1) % kSamples];
@@ -202,33 +155,165 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
         double lo = model.m_phiBegin + (i - 1) * h, hi = model.m_phiBegin + (i + 1) * h;
         constexpr double g = 0.6180339887498949;
         double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-        double f1 = model.best(x1).s.value(), f2 = model.best(x2).s.value();
+        double f1 = model.best(x1).rank, f2 = model.best(x2).rank;
         for (int it = 0; it < 80 && hi - lo > 1e-15; ++it) {
             if (f1 <= f2) {
                 hi = x2;
                 x2 = x1;
                 f2 = f1;
                 x1 = hi - g * (hi - lo);
-                f1 = model.best(x1).s.value();
+                f1 = model.best(x1).rank;
             } else {
                 lo = x1;
                 x1 = x2;
                 f1 = f2;
                 x2 = lo + g * (hi - lo);
-                f2 = model.best(x2).s.value();
+                f2 = model.best(x2).rank;
             }
         }
         minimum = std::min({minimum, s[i], f1, f2});
     }
-    model.m_minS = minimum;
+    model.m_minRank = minimum;
     return model;
 }
 
-void FollowerModel::crossings(double phi, std::vector<Candidate>& out) const {
+std::vector<std::pair<double, double>> FollowerModel::reach(const Piece& piece) const {
+    const double whole = kTwoPi + 1.0;  // wider than a turn: every bin
+    if (piece.kind == Piece::Kind::Vertex) return {{piece.start, piece.start + piece.sweep}};
+    // Points along the piece (its pitch curve) or, for the flat face, its outward normals.
+    constexpr int kSamples = 33;
+    std::array<Eigen::Vector2d, kSamples> points, normals;
+    for (int i = 0; i < kSamples; ++i) {
+        const double f = static_cast<double>(i) / (kSamples - 1);
+        auto& p = points[static_cast<std::size_t>(i)];
+        auto& m = normals[static_cast<std::size_t>(i)];
+        switch (piece.kind) {
+            case Piece::Kind::Circle: {
+                const double angle = piece.start + f * piece.sweep;
+                m = Eigen::Vector2d(std::cos(angle), std::sin(angle));
+                p = piece.center + piece.radius * m;
+                if (!piece.convex) m = -m;
+                break;
+            }
+            case Piece::Kind::Line:
+                p = piece.q0 + f * (piece.q1 - piece.q0);
+                m = piece.m;
+                break;
+            default: {
+                const double t = piece.tLow + f * (piece.tHigh - piece.tLow);
+                const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
+                p = splinePitch(piece.coeff, piece.orientation * rho, t);
+                const Eigen::Vector2d d = (3.0 * piece.coeff[3] * t + 2.0 * piece.coeff[2]) * t +
+                                          piece.coeff[1];
+                m = piece.orientation * Eigen::Vector2d(d.y(), -d.x());
+                break;
+            }
+        }
+    }
+    // The cam angles at which each sample is touched: up to two branches (a swinging arm meets
+    // a point on either side); a sample out of reach leaves its branch.
+    std::array<std::vector<double>, 2> branches;
+    const double e = m_spec.offset, L = m_spec.armLength, a = m_spec.pivot.norm();
+    const double pivotAngle = std::atan2(m_spec.pivot.y(), m_spec.pivot.x());
+    for (int i = 0; i < kSamples; ++i) {
+        const Eigen::Vector2d& p = points[static_cast<std::size_t>(i)];
+        const double r = p.norm(), angle = std::atan2(p.y(), p.x());
+        if (m_spec.type == FollowerType::Flat) {
+            const Eigen::Vector2d& m = normals[static_cast<std::size_t>(i)];
+            branches[0].push_back(std::atan2(m.y(), m.x()));
+        } else if (!oscillating()) {
+            if (!(r > std::abs(e) * (1.0 + 1e-9))) return {{0.0, whole}};
+            branches[0].push_back(angle - std::asin(e / r));
+        } else {
+            // In the follower frame the point sits at angle α with |α·r − A| = L.
+            const double k = (r * r + a * a - L * L) / (2.0 * r * a);
+            if (!(std::abs(k) <= 1.0)) continue;
+            const double spread = std::acos(k);
+            branches[0].push_back(angle - (pivotAngle + spread));
+            branches[1].push_back(angle - (pivotAngle - spread));
+        }
+    }
+    std::vector<std::pair<double, double>> ranges;
+    for (const auto& phis : branches) {
+        if (phis.empty()) continue;
+        // Unwrap, and widen by the largest step between samples (the curve between two samples
+        // strays about that far at most).
+        double lo = phis[0], hi = phis[0], previous = phis[0], step = 0.0;
+        for (std::size_t i = 1; i < phis.size(); ++i) {
+            const double next = previous + std::remainder(phis[i] - previous, kTwoPi);
+            step = std::max(step, std::abs(next - previous));
+            lo = std::min(lo, next);
+            hi = std::max(hi, next);
+            previous = next;
+        }
+        const double margin = step + 1e-9 + piece.slack;
+        ranges.emplace_back(lo - margin, hi + margin);
+    }
+    if (oscillating() && branches[0].size() < kSamples) {
+        // Part of the piece is out of the arm's reach: where reach ends, the branches meet, so
+        // the gap between them belongs to the piece too.
+        std::vector<std::pair<double, double>> joined;
+        if (!ranges.empty()) {
+            double lo = ranges[0].first, hi = ranges[0].second;
+            for (const auto& [l, h] : ranges) {
+                const double shift = std::round((lo - l) / kTwoPi) * kTwoPi;
+                lo = std::min(lo, l + shift);
+                hi = std::max(hi, h + shift);
+            }
+            joined.emplace_back(lo, hi);
+        }
+        return joined;
+    }
+    return ranges;
+}
+
+void FollowerModel::buildIndex() {
+    const std::size_t bins = std::clamp<std::size_t>(2 * m_pieces.size(), 64, 1 << 16);
+    m_binWidth = kTwoPi / static_cast<double>(bins);
+    std::vector<std::vector<std::uint32_t>> lists(bins);
+    for (std::size_t index = 0; index < m_pieces.size(); ++index) {
+        for (const auto& [lo, hi] : reach(m_pieces[index])) {
+            if (hi - lo >= kTwoPi) {
+                for (auto& list : lists) list.push_back(static_cast<std::uint32_t>(index));
+                continue;
+            }
+            const auto first = static_cast<long long>(std::floor((lo - m_phiBegin) / m_binWidth));
+            const auto last = static_cast<long long>(std::floor((hi - m_phiBegin) / m_binWidth));
+            for (long long b = first; b <= last; ++b) {
+                const auto bin = static_cast<std::size_t>(((b % static_cast<long long>(bins)) +
+                                                           static_cast<long long>(bins)) %
+                                                          static_cast<long long>(bins));
+                auto& list = lists[bin];
+                if (list.empty() || list.back() != index) {
+                    list.push_back(static_cast<std::uint32_t>(index));
+                }
+            }
+        }
+    }
+    m_binOffsets.assign(1, 0);
+    m_binPieces.clear();
+    for (const auto& list : lists) {
+        m_binPieces.insert(m_binPieces.end(), list.begin(), list.end());
+        m_binOffsets.push_back(static_cast<std::uint32_t>(m_binPieces.size()));
+    }
+}
+
+std::span<const std::uint32_t> FollowerModel::piecesAt(double phi) const {
+    if (m_binOffsets.size() < 2) return {};
+    const std::size_t bins = m_binOffsets.size() - 1;
+    double into = std::fmod(phi - m_phiBegin, kTwoPi);
+    if (into < 0.0) into += kTwoPi;
+    const std::size_t bin = std::min(bins - 1, static_cast<std::size_t>(into / m_binWidth));
+    return {m_binPieces.data() + m_binOffsets[bin], m_binOffsets[bin + 1] - m_binOffsets[bin]};
+}
+
+void FollowerModel::crossings(double phi, const Eigen::Vector2d& u,
+                              std::vector<Candidate>& out) const {
     const double e = m_spec.offset;
     const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
-    const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), nn(-u.y(), u.x());
-    for (const Piece& piece : m_pieces) {
+    const Eigen::Vector2d nn(-u.y(), u.x());
+    for (const std::uint32_t index : piecesAt(phi)) {
+        const Piece& piece = m_pieces[index];
         switch (piece.kind) {
             case Piece::Kind::Circle: {
                 // (s − a)² + (e − b)² = Rp², a = c·u, b = c·n; a' = b, b' = −a.
@@ -244,7 +329,10 @@ void FollowerModel::crossings(double phi, std::vector<Candidate>& out) const {
                 for (double sigma : {1.0, -1.0}) {
                     const double s = a + sigma * q;
                     const Eigen::Vector2d x = e * nn + s * u - piece.center;
-                    if (!inSpan(std::atan2(x.y(), x.x()), piece.start, piece.sweep)) continue;
+                    if (!inSpanDirection(x, piece.from, piece.to, piece.sweep, piece.radius,
+                                         piece.slack)) {
+                        continue;
+                    }
                     Candidate c;
                     c.s = {{s, b + sigma * q1, (-a + sigma * q2) / 2.0, (-b + sigma * q3) / 6.0}};
                     c.segment = piece.segment;
@@ -266,7 +354,7 @@ void FollowerModel::crossings(double phi, std::vector<Candidate>& out) const {
                 const Eigen::Vector2d x = e * nn + s * u;
                 const Eigen::Vector2d d = piece.q1 - piece.q0;
                 const double lambda = (x - piece.q0).dot(d) / d.squaredNorm();
-                if (lambda < -kSpanSlack || lambda > 1.0 + kSpanSlack) break;
+                if (lambda < -piece.slack || lambda > 1.0 + piece.slack) break;
                 Candidate c;
                 c.s = {{s, s1, s2 / 2.0, s3 / 6.0}};
                 c.segment = piece.segment;
@@ -276,25 +364,14 @@ void FollowerModel::crossings(double phi, std::vector<Candidate>& out) const {
             }
             case Piece::Kind::Spline: {
                 // C(τ) = p(τ) + ρ·m(τ) on the line: g(τ) = C(τ)·n − e = 0.
+                const double offset = piece.orientation * rho;
                 const auto pitch = [&](const Jet& t) {
-                    const JetVec p = polynomial(piece.coeff, t);
-                    if (rho == 0.0) return p;
-                    const JetVec d = polynomialDerivative(piece.coeff, t);
-                    const Jet len = sqrt(dot(d, d));
-                    const Jet k = Jet::constant(piece.orientation * rho) / len;
-                    return p + JetVec{d.y * k, -(d.x * k)};
+                    return splinePitch(piece.coeff, offset, t);
                 };
-                // The scan in plain doubles: the same point as pitch(), four times cheaper.
-                const auto& k = piece.coeff;
                 const auto g = [&](double t) {
-                    Eigen::Vector2d c = ((k[3] * t + k[2]) * t + k[1]) * t + k[0];
-                    if (rho != 0.0) {
-                        const Eigen::Vector2d d = (3.0 * k[3] * t + 2.0 * k[2]) * t + k[1];
-                        c += (piece.orientation * rho / d.norm()) * Eigen::Vector2d(d.y(), -d.x());
-                    }
-                    return c.dot(nn) - e;
+                    return splinePitch(piece.coeff, offset, t).dot(nn) - e;
                 };
-                forEachRoot(g, piece.tLow, piece.tHigh, [&](double root) {
+                forEachRoot(g, piece.tLow - piece.slack, piece.tHigh + piece.slack, [&](double root) {
                     // The φ-jet of τ by Newton steps on jets: each step makes one more
                     // coefficient exact.
                     const Jet cu = cosJet(phi), su = sinJet(phi);
@@ -320,12 +397,17 @@ void FollowerModel::crossings(double phi, std::vector<Candidate>& out) const {
     }
 }
 
-void FollowerModel::supports(double phi, std::vector<Candidate>& out) const {
-    const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), nn(-u.y(), u.x());
-    for (const Piece& piece : m_pieces) {
+void FollowerModel::supports(double phi, const Eigen::Vector2d& u,
+                             std::vector<Candidate>& out) const {
+    const Eigen::Vector2d nn(-u.y(), u.x());
+    for (const std::uint32_t index : piecesAt(phi)) {
+        const Piece& piece = m_pieces[index];
         switch (piece.kind) {
             case Piece::Kind::Circle: {
-                if (!piece.convex || !inSpan(phi, piece.start, piece.sweep)) break;
+                if (!piece.convex ||
+                    !inSpanDirection(u, piece.from, piece.to, piece.sweep, 1.0, piece.slack)) {
+                    break;
+                }
                 // h = c·u + R, h' = c·n, h'' = −c·u, h''' = −c·n.
                 const double a = piece.center.dot(u), b = piece.center.dot(nn);
                 Candidate c;
@@ -352,7 +434,7 @@ void FollowerModel::supports(double phi, std::vector<Candidate>& out) const {
                     const JetVec d = polynomialDerivative(piece.coeff, Jet::constant(t));
                     return d.x.value() * u.x() + d.y.value() * u.y();
                 };
-                forEachRoot(g, piece.tLow, piece.tHigh, [&](double root) {
+                forEachRoot(g, piece.tLow - piece.slack, piece.tHigh + piece.slack, [&](double root) {
                     const JetVec d = polynomialDerivative(piece.coeff, Jet::variable(root));
                     const Eigen::Vector2d tangent(d.x.value(), d.y.value());
                     const Eigen::Vector2d out_(piece.orientation * tangent.y(),
@@ -383,23 +465,39 @@ void FollowerModel::supports(double phi, std::vector<Candidate>& out) const {
 }
 
 FollowerModel::Candidate FollowerModel::best(double phi) const {
+    return best(phi, Eigen::Vector2d(std::cos(phi), std::sin(phi)));
+}
+
+FollowerModel::Candidate FollowerModel::best(double phi, const Eigen::Vector2d& u) const {
     thread_local std::vector<Candidate> candidates;
     candidates.clear();
-    if (m_spec.type == FollowerType::Flat) {
-        supports(phi, candidates);
+    if (oscillating()) {
+        armContacts(phi, candidates);
+    } else if (m_spec.type == FollowerType::Flat) {
+        supports(phi, u, candidates);
     } else {
-        crossings(phi, candidates);
+        crossings(phi, u, candidates);
     }
     Candidate top;
-    top.s = Jet::constant(-std::numeric_limits<double>::infinity());
-    for (const Candidate& c : candidates) {
-        if (c.s.value() > top.s.value()) top = c;
+    top.rank = -std::numeric_limits<double>::infinity();
+    for (Candidate& c : candidates) {
+        if (!oscillating()) c.rank = c.s.value();
+        if (c.rank > top.rank) top = c;
     }
     return top;
 }
 
+std::array<double, 4> FollowerModel::liftPhi(const FollowerState& state) const {
+    const double sign = awaySign(), unit = oscillating() ? 180.0 / kPi : 1.0;
+    const double q = oscillating() ? sign * (state.s - m_pivotDirection) : state.s;
+    return {(q - m_minRank) * unit, sign * unit * state.sPhi[1], sign * unit * state.sPhi[2],
+            sign * unit * state.sPhi[3]};
+}
+
 FollowerState FollowerModel::at(double phi, double omega) const {
-    const Candidate c = best(phi);
+    const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), nn(-u.y(), u.x());
+    const Candidate c = best(phi, u);
+    if (oscillating()) return armState(phi, omega, c);
     FollowerState st;
     st.phi = phi;
     for (int k = 0; k < 4; ++k) st.sPhi[static_cast<std::size_t>(k)] = c.s.derivative(k);
@@ -409,7 +507,6 @@ FollowerState FollowerModel::at(double phi, double omega) const {
     st.a = omega * omega * s2;
     st.j = omega * omega * omega * st.sPhi[3];
     st.segment = c.segment;
-    const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), nn(-u.y(), u.x());
     const double e = m_spec.offset;
     st.center = e * nn + s * u;
     if (m_spec.type == FollowerType::Flat) {

@@ -31,7 +31,7 @@ FollowerExtremum refine(const std::function<double(double)>& f, double phi, doub
             f2 = sign * f(x2);
         }
     }
-    FollowerExtremum e{sign * f(phi), phi};
+    FollowerExtremum e{f(phi), phi};
     for (const auto& [x, fx] : {std::pair{x1, f1}, std::pair{x2, f2}}) {
         if (fx < sign * e.value) e = {sign * fx, x};
     }
@@ -56,7 +56,9 @@ FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega, doubl
         }
         const auto f = [&](double phi) { return q(model.at(phi, omega)); };
         FollowerExtremum e = refine(f, phiBegin + best * h, h, max);
+        // Reported within the turn, with the value at exactly the angle reported.
         e.phi = phiBegin + std::fmod(e.phi - phiBegin + 2 * kTwoPi, kTwoPi);
+        e.value = f(e.phi);
         return e;
     };
     FollowerAnalysis a;

@@ -86,12 +86,25 @@ inline Jet sinJet(double phi0) {
     return {{s, c, -s / 2.0, -c / 6.0}};
 }
 
+/// @brief d/dx of the series (its last coefficient is unknown at this order and left 0).
+inline Jet derivativeOf(const Jet& a) { return {{a.c[1], 2.0 * a.c[2], 3.0 * a.c[3], 0.0}}; }
+
 /// @brief A plane vector of jets.
 struct JetVec {
     Jet x, y;
     friend JetVec operator+(const JetVec& a, const JetVec& b) { return {a.x + b.x, a.y + b.y}; }
+    friend JetVec operator-(const JetVec& a, const JetVec& b) { return {a.x - b.x, a.y - b.y}; }
     friend JetVec operator*(const JetVec& a, const Jet& s) { return {a.x * s, a.y * s}; }
     friend Jet dot(const JetVec& a, const JetVec& b) { return a.x * b.x + a.y * b.y; }
+    /// The vector turned a quarter counter-clockwise.
+    friend JetVec perp(const JetVec& a) { return {-a.y, a.x}; }
 };
+
+/// @brief The polar angle of a (a ≠ 0): atan2 at the base point, and the rest integrated from
+/// θ' = (x·y' − y·x') / (x² + y²).
+inline Jet angleOf(const JetVec& a) {
+    const Jet rate = (a.x * derivativeOf(a.y) - a.y * derivativeOf(a.x)) / dot(a, a);
+    return {{std::atan2(a.y.c[0], a.x.c[0]), rate.c[0], rate.c[1] / 2.0, rate.c[2] / 3.0}};
+}
 
 }  // namespace cam

@@ -1,0 +1,59 @@
+// The follower over one full turn of the six-lobe cam (issue "Followers", point 7): a roller of
+// 2 mm with 3 mm offset; s, v, a, j, the pressure angle and both radii of curvature at n equal
+// angle steps into arrays. Compare with BM_KinematicsTurn of the same run (target: within 2×).
+
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <vector>
+
+#include "common/angles.h"
+#include "contour/contour.h"
+#include "follower/follower.h"
+#include "io/project_json.h"
+
+namespace {
+
+struct FollowerTurn {
+    std::vector<double> s, v, a, j, pressureAngle, rhoProfile, rhoPitch;
+    void resize(std::size_t n) {
+        for (auto* column : {&s, &v, &a, &j, &pressureAngle, &rhoProfile, &rhoPitch})
+            column->resize(n);
+    }
+};
+
+void BM_FollowerTurn(benchmark::State& state) {
+    auto project =
+        cam::loadProjectFile(std::string(CAMWRIGHT_EXAMPLES) + "/six-lobe-arc-cam.cam.json");
+    if (!project.ok()) std::abort();
+    const double omega = project.value().motion.omegaRadS();
+    const cam::Contour contour = cam::Contour::build(project.value()).value();
+    cam::FollowerSpec spec;
+    spec.type = cam::FollowerType::Roller;
+    spec.radius = 2.0;
+    spec.offset = 3.0;
+    const cam::FollowerModel model = cam::FollowerModel::build(contour, spec).value();
+    const auto n = static_cast<std::size_t>(state.range(0));
+    FollowerTurn turn;
+    turn.resize(n);
+    const double step = cam::kTwoPi / static_cast<double>(n);
+    for (auto _ : state) {
+        for (std::size_t k = 0; k < n; ++k) {
+            const cam::FollowerState f =
+                model.at(contour.phiBegin() + step * static_cast<double>(k), omega);
+            turn.s[k] = f.s;
+            turn.v[k] = f.v;
+            turn.a[k] = f.a;
+            turn.j[k] = f.j;
+            turn.pressureAngle[k] = f.pressureAngle;
+            turn.rhoProfile[k] = f.rhoProfile;
+            turn.rhoPitch[k] = f.rhoPitch;
+        }
+        benchmark::DoNotOptimize(turn.rhoPitch.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(n));
+}
+BENCHMARK(BM_FollowerTurn)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
