@@ -239,7 +239,7 @@
 <context>
     <name>PlotKind</name>
     <message>
-        <location filename="../../src/app/export/plot_picture.cpp" line="+103" />
+        <location filename="../../src/app/export/plot_picture.cpp" line="+101" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
@@ -295,6 +295,11 @@
         <location line="+5" />
         <source>Change samples per turn</source>
         <translation>Abtastpunkte je Umdrehung ändern</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Change follower</source>
+        <translation>Stößel ändern</translation>
     </message>
     <message>
         <location line="+5" />
@@ -485,7 +490,7 @@
         <translation>Mausrad: zoomen · Ziehen: verschieben · Griff ziehen: Mittelpunkt verschieben oder Radius des ausgewählten Bogens ändern</translation>
     </message>
     <message>
-        <location line="+33" />
+        <location line="+67" />
         <source>centres</source>
         <translation>Mittelpunkte</translation>
     </message>
@@ -495,7 +500,7 @@
         <translation>Übergänge</translation>
     </message>
     <message>
-        <location line="+258" />
+        <location line="+321" />
         <location line="+8" />
         <source>Shape segment %1</source>
         <translation>Segment %1 formen</translation>
@@ -514,18 +519,18 @@
 <context>
     <name>cam::ExportDialog</name>
     <message>
-        <location filename="../../src/app/export/export_dialog.cpp" line="+51" />
-        <location line="+207" />
+        <location filename="../../src/app/export/export_dialog.cpp" line="+52" />
+        <location line="+244" />
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location line="-198" />
+        <location line="-235" />
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+16" />
         <source>Instants over one turn, equally spaced in time</source>
         <translation>Zeitpunkte über eine Umdrehung, zeitlich gleichabständig</translation>
     </message>
@@ -685,12 +690,12 @@
         <translation>&amp;Art:</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+11" />
         <source>Si&amp;ze (px, pt):</source>
         <translation>&amp;Größe (px, pt):</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+16" />
         <source>&amp;Browse…</source>
         <translation>&amp;Durchsuchen…</translation>
     </message>
@@ -700,17 +705,17 @@
         <translation>Dat&amp;ei:</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+11" />
         <source>&amp;Export</source>
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location line="+92" />
+        <location line="+122" />
         <source>Name the file to write.</source>
         <translation>Geben Sie die zu schreibende Datei an.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>The folder %1 does not exist.</source>
         <translation>Den Ordner %1 gibt es nicht.</translation>
     </message>
@@ -723,6 +728,237 @@
         <location line="+2" />
         <source>No plot can be drawn yet.</source>
         <translation>Noch kann kein Diagramm gezeichnet werden.</translation>
+    </message>
+</context>
+<context>
+    <name>cam::FollowerPanel</name>
+    <message>
+        <location filename="../../src/app/views/follower_panel.cpp" line="+44" />
+        <source>Knife edge</source>
+        <translation>Spitze (Messerkante)</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Roller</source>
+        <translation>Rolle</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Flat face</source>
+        <translation>Flachstößel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>What touches the cam (math.md §7)</source>
+        <translation>Was die Kurvenscheibe berührt (math.md §7)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Translating</source>
+        <translation>Geradgeführt</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Swinging arm</source>
+        <translation>Schwinghebel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>A follower sliding on a line, or swinging on an arm about a pivot</source>
+        <translation>Ein Stößel, der auf einer Geraden gleitet oder auf einem Hebel um einen Drehpunkt schwingt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Radius of the roller</source>
+        <translation>Radius der Rolle</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Offset e of the follower's line from the cam centre, along n</source>
+        <translation>Versatz e der Stößelgeraden vom Scheibenmittelpunkt, entlang n</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Pivot of the arm, x (in the cam's frame at 0°)</source>
+        <translation>Drehpunkt des Hebels, x (im Scheibensystem bei 0°)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Pivot of the arm, y (in the cam's frame at 0°)</source>
+        <translation>Drehpunkt des Hebels, y (im Scheibensystem bei 0°)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>From the pivot to the roller centre or the tip</source>
+        <translation>Vom Drehpunkt bis zur Rollenmitte oder Spitze</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Counter-clockwise</source>
+        <translation>Gegen den Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Clockwise</source>
+        <translation>Im Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The side of the line pivot → cam centre the arm lies on</source>
+        <translation>Die Seite der Linie Drehpunkt → Scheibenmitte, auf der der Hebel liegt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Largest pressure angle allowed (default: 30° translating, 45° swinging)</source>
+        <translation>Größter zulässiger Übertragungs-/Druckwinkel (Vorgabe: 30° geradgeführt, 45° schwingend)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>default</source>
+        <translation>Vorgabe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Motion</source>
+        <translation>Bewegung</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Roller radius</source>
+        <translation>Rollenradius</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Offset</source>
+        <translation>Versatz</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Pivot x</source>
+        <translation>Drehpunkt x</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Pivot y</source>
+        <translation>Drehpunkt y</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Arm length</source>
+        <translation>Hebellänge</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Arm side</source>
+        <translation>Hebelseite</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Pressure-angle limit</source>
+        <translation>Grenze Druckwinkel</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Design checks (click one to go there):</source>
+        <translation>Auslegungsprüfungen (Klick springt zur Stelle):</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The follower over the turn: click a line to put the cursor there</source>
+        <translation>Der Stößel über eine Umdrehung: Klick auf eine Zeile setzt den Cursor dorthin</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Pressure angle over the turn; dashed: the limit; red: beyond</source>
+        <translation>Druckwinkel über eine Umdrehung; gestrichelt: die Grenze; rot: darüber</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Pressure angle [°]</source>
+        <translation>Druckwinkel [°]</translation>
+    </message>
+    <message>
+        <location line="+136" />
+        <source>φ [°]</source>
+        <translation>φ [°]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>No design checks: the contour cannot be computed.</source>
+        <translation>Keine Auslegungsprüfung: die Kontur lässt sich nicht berechnen.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The follower cannot ride this cam: %1</source>
+        <translation>Der Stößel kann diese Scheibe nicht abtasten: %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The follower cannot ride this cam.</source>
+        <translation>Der Stößel kann diese Scheibe nicht abtasten.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The seed's knife edge on the radial line: choose a follower to check it.</source>
+        <translation>Die Spitze der Vorlage auf der radialen Geraden: wählen Sie einen Stößel, um ihn zu prüfen.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Largest pressure angle on rise: %1 at %2 (limit %3)</source>
+        <translation>Größter Druckwinkel im Hub: %1 bei %2 (Grenze %3)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Largest pressure angle on return: %1 at %2 (limit %3)</source>
+        <translation>Größter Druckwinkel im Rückhub: %1 bei %2 (Grenze %3)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Pressure angle beyond the limit from %1 to %2</source>
+        <translation>Druckwinkel über der Grenze von %1 bis %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The follower cannot reach the profile at %1: it jumps from (%2, %3) to (%4, %5)</source>
+        <translation>Der Stößel erreicht das Profil bei %1 nicht: er springt von (%2, %3) nach (%4, %5)</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Smallest radius of curvature of the profile: %1 at %2</source>
+        <translation>Kleinster Krümmungsradius des Profils: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Smallest radius of curvature of the pitch curve: %1 at %2</source>
+        <translation>Kleinster Krümmungsradius der Rollenmittelpunktsbahn: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Face width needed: %1</source>
+        <translation>Nötige Tellerbreite: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Every check passes.</source>
+        <translation>Alle Prüfungen bestanden.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1" />
+        <source>%n check(s) fail.</source>
+        <translation>
+            <numerusform>%n Prüfung nicht bestanden.</numerusform>
+            <numerusform>%n Prüfungen nicht bestanden.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1027,17 +1263,32 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+78" />
+        <location filename="../../src/app/mainwindow.cpp" line="+80" />
         <source>computing…</source>
         <translation>wird berechnet…</translation>
     </message>
     <message>
-        <location line="+73" />
+        <location line="+78" />
         <source>Machining limits and times (Ctrl+M)</source>
         <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+8" />
+        <source>Follower</source>
+        <translation>Stößel</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>The follower and its design checks (Ctrl+L)</source>
+        <translation>Der Stößel und seine Auslegungsprüfungen (Strg+L)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Cursor at %1°</source>
+        <translation>Cursor bei %1°</translation>
+    </message>
+    <message>
+        <location line="+33" />
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
@@ -1109,7 +1360,7 @@
         <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+67" />
+        <location line="+70" />
         <source>not computed: %1</source>
         <translation>nicht berechnet: %1</translation>
     </message>
@@ -1129,7 +1380,7 @@
         <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
     </message>
     <message>
-        <location line="+45" />
+        <location line="+46" />
         <source>Valid · 1 segment</source>
         <translation>Gültig · 1 Segment</translation>
     </message>
@@ -1154,12 +1405,12 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-198" />
+        <location line="-202" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow_exports.cpp" line="+47" />
+        <location filename="../../src/app/mainwindow_exports.cpp" line="+48" />
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
@@ -1219,7 +1470,7 @@
         <translation>Diagramm exportieren</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+24" />
         <source>%1 plot</source>
         <translation>Diagramm „%1“</translation>
     </message>
@@ -1231,17 +1482,17 @@
 %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>Exporting %1 to %2…</source>
         <translation>Exportiere %1 nach %2…</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+21" />
         <source>Exported %1 to %2 (%3)</source>
         <translation>%1 nach %2 exportiert (%3)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+3" />
         <source>Export failed: %1</source>
         <translation>Export fehlgeschlagen: %1</translation>
     </message>
@@ -1368,7 +1619,7 @@ T = %3 s</translation>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+89" />
+        <location line="+96" />
         <source>… and %1 more</source>
         <translation>… und %1 weitere</translation>
     </message>
@@ -1752,7 +2003,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <translation>Bildformat für --export-plot: png, pdf oder svg (Vorgabe: die Endung von --out).</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>The file --export-plot writes.</source>
         <translation>Die Datei, die --export-plot schreibt.</translation>
     </message>

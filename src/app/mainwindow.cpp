@@ -2,6 +2,7 @@
 
 #include <QCloseEvent>
 #include <QDir>
+#include <QDockWidget>
 #include <QEventLoop>
 #include <QHeaderView>
 #include <QLabel>
@@ -24,6 +25,7 @@
 #include "models/segment_table_model.h"
 #include "ui_mainwindow.h"
 #include "views/contour_view.h"
+#include "views/follower_panel.h"
 #include "views/joints_panel.h"
 #include "views/kinematics_plots.h"
 #include "views/machining_panel.h"
@@ -83,6 +85,10 @@ MainWindow::MainWindow(QWidget* parent)
         updateStatus();
     });
     connect(m_document, &ProjectDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    // A project that names its follower opens with the follower shown.
+    connect(m_document, &ProjectDocument::contourReset, this, [this] {
+        if (m_document->project().follower) m_followerDock->show();
+    });
     connect(m_document, &ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
     // The views' containers are made in the worker, next to the computation.
     m_engine->setPlotDataPreparer(std::make_shared<QcpPlotDataPreparer>());
@@ -103,6 +109,7 @@ MainWindow::MainWindow(QWidget* parent)
     restoreGeometry(settings.value("window/geometry").toByteArray());
     m_ui->machiningDock->hide();  // until the user opens it (the saved layout may show it)
     m_ui->pathStudyDock->hide();
+    m_followerDock->hide();  // until opened, or a project with a follower is loaded
     restoreState(settings.value("window/state").toByteArray());
     m_ui->actionAxisTime->setChecked(settings.value("view/timeAxis", false).toBool());
     m_document->reset(ContourEdits::newProject(), {});
@@ -155,9 +162,47 @@ void MainWindow::setUpDocks() {
     connect(m_ui->machiningDock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible && !m_engine->latestTiming()) requestCompute();
     });
+    // The follower and its design checks, tabbed with the machining dock.
+    m_followerDock = new QDockWidget(tr("Follower"), this);
+    m_followerDock->setObjectName("followerDock");
+    m_follower = new FollowerPanel(m_document, m_followerDock);
+    m_follower->setObjectName("followerPanel");
+    m_followerDock->setWidget(m_follower);
+    addDockWidget(Qt::RightDockWidgetArea, m_followerDock);
+    QAction* follower = m_followerDock->toggleViewAction();
+    follower->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    follower->setToolTip(tr("The follower and its design checks (Ctrl+L)"));
+    m_ui->mainToolBar->addAction(follower);
+    connect(m_follower, &FollowerPanel::anglePicked, this, [this](double phi) {
+        if (!m_shown) return;
+        setCursorTime(phi / m_shown->omega);
+        statusBar()->showMessage(tr("Cursor at %1°").arg(QLocale().toString(radToDeg(phi), 'f', 2)),
+                                 4000);
+    });
+    // The pressure-angle plot shares the kinematics plots' x axis: panning or zooming either
+    // moves the other.
+    QCustomPlot* pressure = m_follower->pressurePlot();
+    QCustomPlot* velocity = m_plots->plot(0);
+    connect(velocity->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), pressure,
+            [pressure](const QCPRange& r) {
+                if (pressure->xAxis->range() == r) return;
+                pressure->xAxis->setRange(r);
+                pressure->replot(QCustomPlot::rpQueuedReplot);
+            });
+    connect(pressure->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), velocity,
+            [velocity](const QCPRange& r) {
+                if (velocity->xAxis->range() != r) velocity->xAxis->setRange(r);
+            });
+    connect(pressure, &QCustomPlot::mouseMove, this, [this, pressure](QMouseEvent* e) {
+        const auto& r = m_shown;
+        if (!r) return;
+        const double x = pressure->xAxis->pixelToCoord(e->position().x());
+        setCursorTime(r->axis == PlotAxis::Angle ? degToRad(x) / r->omega : x);
+    });
     resizeDocks({m_ui->motionDock, m_ui->readoutDock}, {140, 400}, Qt::Vertical);
     for (QDockWidget* dock : {m_ui->segmentsDock, m_ui->jointsDock, m_ui->motionDock,
-                              m_ui->readoutDock, m_ui->machiningDock, m_ui->pathStudyDock}) {
+                              m_ui->readoutDock, m_ui->machiningDock, m_ui->pathStudyDock,
+                              m_followerDock}) {
         m_ui->menuView->addAction(dock->toggleViewAction());
     }
 }
@@ -313,6 +358,9 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
     m_plots->setResult(result);
     m_joints->setResult(result);
     m_pathStudy->setResult(result);
+    m_follower->setResult(result);
+    // The pressure-angle plot shows what the kinematics plots show (their zoom included).
+    m_follower->pressurePlot()->xAxis->setRange(m_plots->plot(0)->xAxis->range());
     if (!result->ok()) {
         const QString first = QString::fromStdString(result->errors.front().text());
         // The problems themselves are in the validation label beside it.
@@ -353,6 +401,7 @@ void MainWindow::setCursorTime(double t) {
     m_readout->setState(s);
     m_contour->setCursorAngle(s.phi);
     m_plots->setCursorX(r->axis == PlotAxis::Angle ? radToDeg(s.phi) : t);
+    m_follower->setCursorX(r->axis == PlotAxis::Angle ? radToDeg(s.phi) : t);
 }
 
 bool MainWindow::waitForCurrentResult(int timeoutMs) {

@@ -24,6 +24,7 @@ class ContourView;
 class KinematicsPlots;
 class JointsPanel;
 class PathStudyPanel;
+class FollowerPanel;
 class MachiningPanel;
 class MotionPanel;
 class ProjectDocument;
@@ -50,6 +51,9 @@ public:
     [[nodiscard]] KinematicsPlots* plots() const { return m_plots; }
     [[nodiscard]] ContourView* contourView() const { return m_contour; }
     [[nodiscard]] StateReadout* readout() const { return m_readout; }
+    [[nodiscard]] FollowerPanel* followerPanel() const { return m_follower; }
+    /// @brief The cursor's instant (s, within the turn).
+    [[nodiscard]] double cursorTime() const { return m_cursorT; }
     [[nodiscard]] MachiningPanel* machiningPanel() const { return m_machining; }
     [[nodiscard]] JointsPanel* jointsPanel() const { return m_joints; }
     [[nodiscard]] PathStudyPanel* pathStudyPanel() const { return m_pathStudy; }
@@ -130,6 +134,8 @@ private:
     StateReadout* m_readout;
     MotionPanel* m_motion;
     MachiningPanel* m_machining;
+    FollowerPanel* m_follower;
+    QDockWidget* m_followerDock;
     JointsPanel* m_joints;
     PathStudyPanel* m_pathStudy;
     QLabel* m_validationLabel;

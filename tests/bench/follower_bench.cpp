@@ -10,6 +10,7 @@
 #include "common/angles.h"
 #include "contour/contour.h"
 #include "follower/follower.h"
+#include "follower/follower_analysis.h"
 #include "io/project_json.h"
 
 namespace {
@@ -32,6 +33,12 @@ void BM_FollowerTurn(benchmark::State& state) {
     spec.type = cam::FollowerType::Roller;
     spec.radius = 2.0;
     spec.offset = 3.0;
+    if (state.range(1) == 1) {  // the same roller on a swinging arm
+        spec.offset = 0.0;
+        spec.motion = cam::FollowerMotion::Oscillating;
+        spec.pivot = {60.0, 0.0};
+        spec.armLength = 50.0;
+    }
     const cam::FollowerModel model = cam::FollowerModel::build(contour, spec).value();
     const auto n = static_cast<std::size_t>(state.range(0));
     FollowerTurn turn;
@@ -54,6 +61,43 @@ void BM_FollowerTurn(benchmark::State& state) {
     }
     state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(n));
 }
-BENCHMARK(BM_FollowerTurn)->Arg(1000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FollowerTurn)
+    ->ArgNames({"", "arm"})
+    ->Args({1000, 0})
+    ->Args({100000, 0})
+    ->Args({1000000, 0})
+    ->Args({100000, 1})
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+namespace {
+
+// The design checks of one turn (analyzeFollower at its default 7200 samples, every extreme
+// refined): what the app's engine adds to a computation when the project has a follower.
+// Arg 0: the translating roller of BM_FollowerTurn; 1: a roller of 2 mm on a swinging arm.
+void BM_FollowerChecks(benchmark::State& state) {
+    auto project =
+        cam::loadProjectFile(std::string(CAMWRIGHT_EXAMPLES) + "/six-lobe-arc-cam.cam.json");
+    if (!project.ok()) std::abort();
+    const double omega = project.value().motion.omegaRadS();
+    const cam::Contour contour = cam::Contour::build(project.value()).value();
+    cam::FollowerSpec spec;
+    spec.type = cam::FollowerType::Roller;
+    spec.radius = 2.0;
+    spec.offset = 3.0;
+    if (state.range(0) == 1) {
+        spec.offset = 0.0;
+        spec.motion = cam::FollowerMotion::Oscillating;
+        spec.pivot = {60.0, 0.0};
+        spec.armLength = 50.0;
+    }
+    for (auto _ : state) {
+        const cam::FollowerModel model = cam::FollowerModel::build(contour, spec).value();
+        const cam::FollowerAnalysis checks = cam::analyzeFollower(model, omega, contour.phiBegin());
+        benchmark::DoNotOptimize(checks.pressureRise.value);
+    }
+}
+BENCHMARK(BM_FollowerChecks)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -15,6 +15,7 @@ enum class MergeId : int {
     EditEditedField = 1,  ///< repeated edits of one cell (spin-box steps, a drag)
     EditMotion = 2,
     EditMachining = 3,
+    EditFollower = 4,
 };
 
 /// @brief Which part of a segment an edit touched; edits of the same part of the same row merge.
@@ -161,6 +162,14 @@ class SetMachining
                              &ProjectDocument::applyMachining, MergeId::EditMachining> {
 public:
     SetMachining(ProjectDocument* document, std::optional<MachiningSpec> after, int gesture = 0);
+};
+
+/// @brief Sets, changes or removes the follower (none: the seed's radial knife edge).
+class SetFollower
+    : public SetProjectValue<std::optional<FollowerSpec>, &Project::follower,
+                             &ProjectDocument::applyFollower, MergeId::EditFollower> {
+public:
+    SetFollower(ProjectDocument* document, std::optional<FollowerSpec> after, int gesture = 0);
 };
 
 }  // namespace cam

@@ -37,6 +37,7 @@ void ProjectDocument::reset(Project project, QString filePath, Diagnostics diagn
     emit contourReset();
     emit motionChanged();
     emit machiningChanged();
+    emit followerChanged();
     emit changed();
 }
 
@@ -100,6 +101,12 @@ void ProjectDocument::applySamplesPerTurn(const std::optional<std::int64_t>& sam
 void ProjectDocument::applyMachining(const std::optional<MachiningSpec>& machining) {
     m_project.machining = machining;
     emit machiningChanged();
+    afterChange();
+}
+
+void ProjectDocument::applyFollower(const std::optional<FollowerSpec>& follower) {
+    m_project.follower = follower;
+    emit followerChanged();
     afterChange();
 }
 

@@ -48,6 +48,7 @@ public:
     void applyMotion(const MotionSpec& motion);
     void applySamplesPerTurn(const std::optional<std::int64_t>& samples);
     void applyMachining(const std::optional<MachiningSpec>& machining);
+    void applyFollower(const std::optional<FollowerSpec>& follower);
 
 signals:
     // Structural changes come in pairs, as a Qt model needs them: "about to" while the contour
@@ -64,6 +65,7 @@ signals:
     void contourReset();
     void motionChanged();
     void machiningChanged();
+    void followerChanged();
     /// Any change at all, after the specific signal: recompute, revalidate, redraw.
     void changed();
     void filePathChanged(const QString& path);

@@ -71,6 +71,29 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     }
     if (!splines.empty()) result->pathStudy = studyPath(splines, 100);
     if (cancel.load()) return nullptr;
+    if (request.project->follower) {
+        auto follower = FollowerModel::build(*result->contour, *request.project->follower);
+        if (follower.ok()) {
+            auto model = std::make_shared<const FollowerModel>(std::move(follower).value());
+            if (cancel.load()) return nullptr;
+            result->followerChecks =
+                analyzeFollower(*model, result->omega, result->contour->phiBegin());
+            constexpr std::size_t n = ComputeResult::kFollowerCurvePoints;
+            result->followerX.resize(n + 1);
+            result->followerPressureDeg.resize(n + 1);
+            for (std::size_t k = 0; k <= n; ++k) {
+                const double t = result->period * static_cast<double>(k) / n;
+                const double phi = result->omega * t;
+                result->followerX[k] = request.axis == PlotAxis::Angle ? radToDeg(phi) : t;
+                result->followerPressureDeg[k] =
+                    radToDeg(model->at(phi, result->omega).pressureAngle);
+            }
+            result->follower = std::move(model);
+        } else {
+            result->followerErrors = follower.errors();
+        }
+        if (cancel.load()) return nullptr;
+    }
     if (preparer) {
         result->prepared = preparer->prepare(*result, cancel);
         if (cancel.load()) return nullptr;

@@ -15,6 +15,8 @@
 #include "analysis/analysis.h"
 #include "common/diagnostic.h"
 #include "contour/contour.h"
+#include "follower/follower.h"
+#include "follower/follower_analysis.h"
 #include "engine/plot_levels.h"
 #include "kinematics/kinematics.h"
 #include "project/project.h"
@@ -62,6 +64,15 @@ struct ComputeResult {
     double computeMs = 0.0;
     /// The path study of the contour's spline segments, in contour order (empty: none).
     PathStudy pathStudy;
+    /// The project's follower on the contour (null when the project names none, or when it
+    /// cannot ride this contour: then followerErrors says why), and its design checks.
+    std::shared_ptr<const FollowerModel> follower;
+    Diagnostics followerErrors;
+    FollowerAnalysis followerChecks;
+    /// The pressure angle (deg) over the turn at kFollowerCurvePoints + 1 equal time steps, on
+    /// the plots' x axis (degrees or seconds, as `curves`).
+    std::vector<double> followerX, followerPressureDeg;
+    static constexpr std::size_t kFollowerCurvePoints = 3600;
     /// What the views' preparer made of this result (null without a preparer).
     PreparedPlotDataPtr prepared;
 

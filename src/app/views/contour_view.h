@@ -72,7 +72,18 @@ private:
     QCPCurve* m_controlPolygon = nullptr;  ///< P0–P1–P2–P3 of the selected spline
     QCPItemLine* m_ray = nullptr;
     QCPItemTracer* m_rayPoint = nullptr;
-    QCPLayer* m_cursorLayer = nullptr;  ///< buffered: the ray and its point alone
+    QCPLayer* m_cursorLayer = nullptr;  ///< buffered: the ray, its point and the follower
+    /// The follower at the cursor angle (math.md §7): its line of motion or arm and pivot, the
+    /// roller or the face, the contact point and the contact normal.
+    struct FollowerItems {
+        QCPItemLine* guide = nullptr;  ///< the line of motion, or the arm
+        QCPItemTracer* pivot = nullptr;
+        QCPItemEllipse* roller = nullptr;
+        QCPItemLine* face = nullptr;
+        QCPItemTracer* contact = nullptr;
+        QCPItemLine* normal = nullptr;
+    } m_followerItems;
+    void placeFollower(double phi);
     StaleLabel* m_staleLabel = nullptr;
     int m_selected = -1;
     Handle m_dragging = Handle::None;

@@ -117,6 +117,7 @@ private:
     void crossings(double phi, const Eigen::Vector2d& u, std::vector<Candidate>& out) const;
     void supports(double phi, const Eigen::Vector2d& u, std::vector<Candidate>& out) const;
     void armContacts(double phi, std::vector<Candidate>& out) const;  // follower_arm.cpp
+    [[nodiscard]] double armRank(const Piece& piece, double phi) const;
     [[nodiscard]] Candidate best(double phi) const;
     [[nodiscard]] Candidate best(double phi, const Eigen::Vector2d& u) const;
     [[nodiscard]] FollowerState armState(double phi, double omega, const Candidate& c) const;

@@ -123,8 +123,14 @@ FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega, doubl
     // Jumps of the contact point: a gap that does not shrink when the step is halved.
     double scale = 0.0;
     for (const FollowerState& s : st) scale = std::max(scale, s.contact.norm());
+    const auto step = [&](int i) { return (at(i + 1).contact - at(i).contact).norm(); };
     for (int i = 0; i < n; ++i) {
-        if ((at(i + 1).contact - at(i).contact).norm() < 1e-3 * scale + 1e-12) continue;
+        // A jump stands out from the steps either side of it (the contact point may run fast
+        // round a small concave arc, but evenly); only those are bisected.
+        const double gap = step(i);
+        if (gap < 1e-3 * scale + 1e-12 || gap < 4.0 * std::max(step(i - 1), step(i + 1))) {
+            continue;
+        }
         double lo = phiBegin + i * h, hi = lo + h;
         FollowerState sl = at(i), sh = at(i + 1);
         for (int it = 0; it < 60; ++it) {

@@ -20,7 +20,94 @@ using follower_detail::forEachRoot;
 using follower_detail::inSpanDirection;
 using follower_detail::splinePitch;
 
+namespace {
+
+/// θ of an arm's end at x: its angle from the line pivot → cam centre in (−π, π], growing as
+/// the arm swings away from the cam (σ), and ψ = β + σθ in the follower frame.
+double armTheta(const Eigen::Vector2d& x, const Eigen::Vector2d& pivot, double phi, double sigma,
+                double beta) {
+    const double psi = std::atan2(x.y() - pivot.y(), x.x() - pivot.x()) - phi;
+    double theta = std::remainder(sigma * (psi - beta), kTwoPi);
+    if (theta <= -kPi) theta += kTwoPi;
+    return theta;
+}
+
+}  // namespace
+
+double FollowerModel::armRank(const Piece& piece, double phi) const {
+    // The same intersections as armContacts, in plain doubles: only to find the piece whose
+    // contact comes first; its jets are made for that piece alone.
+    const double L = m_spec.armLength;
+    const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
+    const double sigma = awaySign();
+    const double c = std::cos(phi), s = std::sin(phi);
+    const Eigen::Vector2d& A = m_spec.pivot;
+    const Eigen::Vector2d pivot(c * A.x() - s * A.y(), s * A.x() + c * A.y());
+    double best = -std::numeric_limits<double>::infinity();
+    const auto consider = [&](const Eigen::Vector2d& x) {
+        best = std::max(best, armTheta(x, pivot, phi, sigma, m_pivotDirection));
+    };
+    switch (piece.kind) {
+        case Piece::Kind::Circle: {
+            const Eigen::Vector2d d = piece.center - pivot;
+            const double d2 = d.squaredNorm();
+            if (!(d2 > 0.0)) break;
+            const double dn = std::sqrt(d2), R = piece.radius;
+            const double a = (d2 + (L * L - R * R)) / (2.0 * dn);
+            const double h2 = L * L - a * a;
+            if (!(h2 > 0.0)) break;
+            const Eigen::Vector2d along = d * (a / dn), across = Eigen::Vector2d(-d.y(), d.x()) *
+                                                                (std::sqrt(h2) / dn);
+            for (double side : {1.0, -1.0}) {
+                const Eigen::Vector2d x = pivot + along + side * across;
+                if (inSpanDirection(x - piece.center, piece.from, piece.to, piece.sweep,
+                                    piece.radius, piece.slack)) {
+                    consider(x);
+                }
+            }
+            break;
+        }
+        case Piece::Kind::Line: {
+            const Eigen::Vector2d span = piece.q1 - piece.q0;
+            const double length = span.norm();
+            const Eigen::Vector2d dir = span / length, w = pivot - piece.q0;
+            const double foot = w.dot(dir), h2 = L * L - (w.squaredNorm() - foot * foot);
+            if (!(h2 > 0.0)) break;
+            for (double side : {1.0, -1.0}) {
+                const double t = foot + side * std::sqrt(h2);
+                const double lambda = t / length;
+                if (lambda < -piece.slack || lambda > 1.0 + piece.slack) continue;
+                consider(piece.q0 + t * dir);
+            }
+            break;
+        }
+        case Piece::Kind::Spline: {
+            const double offset = piece.orientation * rho;
+            const auto g = [&](double t) {
+                return (splinePitch(piece.coeff, offset, t) - pivot).squaredNorm() - L * L;
+            };
+            forEachRoot(g, piece.tLow - piece.slack, piece.tHigh + piece.slack,
+                        [&](double root) { consider(splinePitch(piece.coeff, offset, root)); });
+            break;
+        }
+        case Piece::Kind::Vertex:
+            break;
+    }
+    return best;
+}
+
 void FollowerModel::armContacts(double phi, std::vector<Candidate>& out) const {
+    // The piece touched first, found in doubles; then its contacts with their jets.
+    std::uint32_t first = 0;
+    double firstRank = -std::numeric_limits<double>::infinity();
+    for (const std::uint32_t index : piecesAt(phi)) {
+        const double rank = armRank(m_pieces[index], phi);
+        if (rank > firstRank) {
+            firstRank = rank;
+            first = index;
+        }
+    }
+    if (!(firstRank > -std::numeric_limits<double>::infinity())) return;
     const double L = m_spec.armLength;
     const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
     const double sigma = awaySign();
@@ -46,8 +133,8 @@ void FollowerModel::armContacts(double phi, std::vector<Candidate>& out) const {
         c.found = true;
         out.push_back(c);
     };
-    for (const std::uint32_t index : piecesAt(phi)) {
-        const Piece& piece = m_pieces[index];
+    {
+        const Piece& piece = m_pieces[first];
         switch (piece.kind) {
             case Piece::Kind::Circle: {
                 // Two circles: along d = c − A by a = (L² − R² + |d|²)/(2|d|), across by

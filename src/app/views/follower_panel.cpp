@@ -1,0 +1,310 @@
+#include "views/follower_panel.h"
+
+#include <qcustomplot.h>
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "common/angles.h"
+#include "document/commands.h"
+#include "models/delegates.h"
+#include "widgets/number_spin_box.h"
+
+namespace cam {
+namespace {
+
+NumberSpinBox* spinBox(QWidget* parent, const char* name, const QString& suffix,
+                       const QString& tip, double minimum) {
+    auto* s = new NumberSpinBox(parent);
+    s->setObjectName(name);
+    s->setSuffix(suffix);
+    s->setToolTip(tip);
+    s->setMinimum(minimum);
+    s->setMaximum(1e6);
+    return s;
+}
+
+QString degrees(double rad) { return QLocale().toString(radToDeg(rad), 'f', 2) + "°"; }
+QString millimetres(double mm) {
+    return std::isfinite(mm) ? QLocale().toString(mm, 'g', 6) + " mm" : QStringLiteral("∞");
+}
+
+}  // namespace
+
+FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
+    : QWidget(parent), m_document(document) {
+    auto* layout = new QVBoxLayout(this);
+    auto* form = new QFormLayout;
+    m_type = new QComboBox(this);
+    m_type->setObjectName("followerTypeComboBox");
+    m_type->addItems({tr("Knife edge"), tr("Roller"), tr("Flat face")});
+    m_type->setToolTip(tr("What touches the cam (math.md §7)"));
+    m_motion = new QComboBox(this);
+    m_motion->setObjectName("followerMotionComboBox");
+    m_motion->addItems({tr("Translating"), tr("Swinging arm")});
+    m_motion->setToolTip(tr("A follower sliding on a line, or swinging on an arm about a pivot"));
+    m_radius = spinBox(this, "followerRadiusSpinBox", " mm", tr("Radius of the roller"), 0.001);
+    m_radius->setSingleStep(0.5);
+    m_offset = spinBox(this, "followerOffsetSpinBox", " mm",
+                       tr("Offset e of the follower's line from the cam centre, along n"), -1e6);
+    m_offset->setSingleStep(0.5);
+    m_pivotX = spinBox(this, "pivotXSpinBox", " mm",
+                       tr("Pivot of the arm, x (in the cam's frame at 0°)"), -1e6);
+    m_pivotY = spinBox(this, "pivotYSpinBox", " mm",
+                       tr("Pivot of the arm, y (in the cam's frame at 0°)"), -1e6);
+    m_armLength = spinBox(this, "armLengthSpinBox", " mm",
+                          tr("From the pivot to the roller centre or the tip"), 0.001);
+    m_side = new QComboBox(this);
+    m_side->setObjectName("armSideComboBox");
+    m_side->addItems({tr("Counter-clockwise"), tr("Clockwise")});
+    m_side->setToolTip(tr("The side of the line pivot → cam centre the arm lies on"));
+    m_limit = spinBox(this, "pressureLimitSpinBox", "°",
+                      tr("Largest pressure angle allowed (default: 30° translating, 45° "
+                         "swinging)"),
+                      0.0);
+    m_limit->setMaximum(89.0);
+    m_limit->setSpecialValueText(tr("default"));
+    form->addRow(tr("Type"), m_type);
+    form->addRow(tr("Motion"), m_motion);
+    form->addRow(tr("Roller radius"), m_radius);
+    form->addRow(tr("Offset"), m_offset);
+    form->addRow(tr("Pivot x"), m_pivotX);
+    form->addRow(tr("Pivot y"), m_pivotY);
+    form->addRow(tr("Arm length"), m_armLength);
+    form->addRow(tr("Arm side"), m_side);
+    form->addRow(tr("Pressure-angle limit"), m_limit);
+    layout->addLayout(form);
+
+    layout->addWidget(new QLabel(tr("Design checks (click one to go there):"), this));
+    m_checks = new QListWidget(this);
+    m_checks->setObjectName("designChecksList");
+    m_checks->setToolTip(tr("The follower over the turn: click a line to put the cursor there"));
+    m_checks->setWordWrap(true);
+    m_checks->setIconSize(QSize(14, 14));
+    m_checks->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    layout->addWidget(m_checks, 1);
+    m_summary = new QLabel(this);
+    m_summary->setObjectName("designChecksSummary");
+    m_summary->setWordWrap(true);
+    layout->addWidget(m_summary);
+
+    m_pressurePlot = new QCustomPlot(this);
+    m_pressurePlot->setObjectName("pressureAnglePlot");
+    m_pressurePlot->setMinimumHeight(160);
+    m_pressurePlot->setToolTip(tr("Pressure angle over the turn; dashed: the limit; red: beyond"));
+    m_pressurePlot->yAxis->setLabel(tr("Pressure angle [°]"));
+    m_pressurePlot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    m_pressurePlot->axisRect()->setRangeDrag(Qt::Horizontal);
+    m_pressurePlot->axisRect()->setRangeZoom(Qt::Horizontal);
+    QCPGraph* angle = m_pressurePlot->addGraph();
+    angle->setPen(QPen(QColor(20, 90, 160), 1.3));
+    QCPGraph* beyond = m_pressurePlot->addGraph();
+    beyond->setPen(QPen(QColor(200, 30, 30), 2.5));
+    for (auto& line : m_limitLines) {
+        line = new QCPItemStraightLine(m_pressurePlot);
+        line->setPen(QPen(QColor(200, 30, 30), 1, Qt::DashLine));
+    }
+    m_cursor = new QCPItemStraightLine(m_pressurePlot);
+    m_cursor->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
+    m_cursor->point1->setCoords(0, 0);
+    m_cursor->point2->setCoords(0, 1);
+    layout->addWidget(m_pressurePlot, 1);
+
+    connect(m_checks, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
+        const QVariant phi = item->data(Qt::UserRole);
+        if (phi.isValid()) emit anglePicked(phi.toDouble());
+    });
+    connect(m_checks, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
+        const QVariant phi = item->data(Qt::UserRole);
+        if (phi.isValid()) emit anglePicked(phi.toDouble());
+    });
+    const auto choice = [this](QComboBox* box, std::function<void(FollowerSpec&, int)> set) {
+        connect(box, &QComboBox::currentIndexChanged, this, [this, set](int index) {
+            if (m_refreshing) return;
+            m_gesture = 0;
+            edit([&](FollowerSpec& f) { set(f, index); });
+        });
+    };
+    choice(m_type, [](FollowerSpec& f, int i) {
+        f.type = static_cast<FollowerType>(i);
+        if (f.type == FollowerType::Roller && !(f.radius > 0.0)) f.radius = 5.0;
+        if (f.type == FollowerType::Flat) f.motion = FollowerMotion::Translating;
+    });
+    choice(m_motion, [](FollowerSpec& f, int i) {
+        f.motion = static_cast<FollowerMotion>(i);
+        if (f.motion == FollowerMotion::Oscillating) {
+            if (f.type == FollowerType::Flat) f.type = FollowerType::Roller;
+            if (f.type == FollowerType::Roller && !(f.radius > 0.0)) f.radius = 5.0;
+        }
+    });
+    choice(m_side, [](FollowerSpec& f, int i) { f.arm = static_cast<ArmSide>(i); });
+    const auto number = [this](NumberSpinBox* box, std::function<void(FollowerSpec&, double)> set) {
+        connect(box, &QDoubleSpinBox::valueChanged, this, [this, set](double v) {
+            if (m_refreshing) return;
+            if (m_gesture == 0) m_gesture = nextGestureId();
+            edit([&](FollowerSpec& f) { set(f, v); });
+        });
+        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { m_gesture = 0; });
+    };
+    number(m_radius, [](FollowerSpec& f, double v) { f.radius = v; });
+    number(m_offset, [](FollowerSpec& f, double v) { f.offset = v; });
+    number(m_pivotX, [](FollowerSpec& f, double v) { f.pivot.x() = v; });
+    number(m_pivotY, [](FollowerSpec& f, double v) { f.pivot.y() = v; });
+    number(m_armLength, [](FollowerSpec& f, double v) { f.armLength = v; });
+    number(m_limit, [](FollowerSpec& f, double v) {
+        f.maxPressureAngleDeg = v > 0.0 ? std::optional<double>(v) : std::nullopt;
+    });
+    connect(document, &ProjectDocument::followerChanged, this, &FollowerPanel::refresh);
+    refresh();
+}
+
+void FollowerPanel::edit(const std::function<void(FollowerSpec&)>& change) {
+    const std::optional<FollowerSpec>& before = m_document->project().follower;
+    FollowerSpec spec = before.value_or(FollowerSpec{});
+    if (!before) {
+        // A first swinging arm needs a pivot and an arm: one beside the cam, reaching it.
+        spec.pivot = {m_pivotX->value(), m_pivotY->value()};
+        spec.armLength = m_armLength->value();
+    }
+    change(spec);
+    if (before && spec == *before) return;
+    m_document->undoStack()->push(new SetFollower(m_document, spec, m_gesture));
+}
+
+void FollowerPanel::refresh() {
+    m_refreshing = true;
+    const FollowerSpec f = m_document->project().follower.value_or(FollowerSpec{});
+    m_type->setCurrentIndex(static_cast<int>(f.type));
+    m_motion->setCurrentIndex(static_cast<int>(f.motion));
+    const bool arm = f.motion == FollowerMotion::Oscillating;
+    m_radius->setValue(f.type == FollowerType::Roller ? f.radius : m_radius->value());
+    m_offset->setValue(f.offset);
+    if (arm || m_document->project().follower) {
+        if (f.armLength > 0.0) {
+            m_pivotX->setValue(f.pivot.x());
+            m_pivotY->setValue(f.pivot.y());
+            m_armLength->setValue(f.armLength);
+        }
+    }
+    if (!(m_armLength->value() > 0.001)) {
+        // Defaults for a first arm: a pivot well outside a cam of the usual size.
+        m_pivotX->setValue(60.0);
+        m_pivotY->setValue(0.0);
+        m_armLength->setValue(50.0);
+    }
+    m_side->setCurrentIndex(static_cast<int>(f.arm));
+    m_limit->setValue(f.maxPressureAngleDeg.value_or(0.0));
+    m_radius->setEnabled(f.type == FollowerType::Roller);
+    m_offset->setEnabled(!arm);
+    m_pivotX->setEnabled(arm);
+    m_pivotY->setEnabled(arm);
+    m_armLength->setEnabled(arm);
+    m_side->setEnabled(arm);
+    m_refreshing = false;
+}
+
+void FollowerPanel::setCursorX(double x) {
+    m_cursor->point1->setCoords(x, 0);
+    m_cursor->point2->setCoords(x, 1);
+    m_pressurePlot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void FollowerPanel::setResult(const ComputeResultPtr& result) {
+    m_checks->clear();
+    const bool curve = result && result->ok() && result->follower;
+    m_pressurePlot->setVisible(curve);
+    if (curve) {
+        const QVector<double> x(result->followerX.begin(), result->followerX.end());
+        const QVector<double> y(result->followerPressureDeg.begin(),
+                                result->followerPressureDeg.end());
+        const double limit = radToDeg(result->followerChecks.limitRad);
+        QVector<double> beyond(y.size());
+        for (qsizetype k = 0; k < y.size(); ++k) {
+            beyond[k] = std::abs(y[k]) > limit ? y[k] : std::numeric_limits<double>::quiet_NaN();
+        }
+        m_pressurePlot->graph(0)->setData(x, y, true);
+        m_pressurePlot->graph(1)->setData(x, beyond, true);
+        m_limitLines[0]->point1->setCoords(0, limit);
+        m_limitLines[0]->point2->setCoords(1, limit);
+        m_limitLines[1]->point1->setCoords(0, -limit);
+        m_limitLines[1]->point2->setCoords(1, -limit);
+        m_pressurePlot->xAxis->setLabel(result->axis == PlotAxis::Angle ? tr("φ [°]")
+                                                                        : tr("t [s]"));
+        double top = limit;
+        for (double v : y) top = std::max(top, std::abs(v));
+        m_pressurePlot->yAxis->setRange(-1.1 * top, 1.1 * top);
+        m_pressurePlot->replot(QCustomPlot::rpQueuedReplot);
+    }
+    m_problems = 0;
+    const auto add = [this](const QString& text, std::optional<double> phi, bool problem) {
+        auto* item = new QListWidgetItem(text, m_checks);
+        item->setToolTip(text);
+        if (phi) item->setData(Qt::UserRole, *phi);
+        if (problem) {
+            item->setForeground(QColor(180, 0, 0));
+            item->setIcon(style()->standardIcon(QStyle::SP_MessageBoxWarning));
+            ++m_problems;
+        }
+    };
+    if (!result || !result->ok()) {
+        m_summary->setText(tr("No design checks: the contour cannot be computed."));
+        return;
+    }
+    if (!result->followerErrors.empty()) {
+        for (const Diagnostic& d : result->followerErrors) {
+            add(tr("The follower cannot ride this cam: %1")
+                    .arg(QString::fromStdString(d.text())),
+                std::nullopt, true);
+        }
+        m_summary->setText(tr("The follower cannot ride this cam."));
+        return;
+    }
+    if (!result->follower) {
+        m_summary->setText(
+            tr("The seed's knife edge on the radial line: choose a follower to check it."));
+        return;
+    }
+    const FollowerAnalysis& a = result->followerChecks;
+    const double limit = a.limitRad;
+    add(tr("Largest pressure angle on rise: %1 at %2 (limit %3)")
+            .arg(degrees(a.pressureRise.value), degrees(a.pressureRise.phi), degrees(limit)),
+        a.pressureRise.phi, a.pressureRise.value > limit);
+    add(tr("Largest pressure angle on return: %1 at %2 (limit %3)")
+            .arg(degrees(a.pressureReturn.value), degrees(a.pressureReturn.phi), degrees(limit)),
+        a.pressureReturn.phi, -a.pressureReturn.value > limit);
+    for (const AngleRange& r : a.pressureExceeded) {
+        add(tr("Pressure angle beyond the limit from %1 to %2").arg(degrees(r.from), degrees(r.to)),
+            r.from, true);
+    }
+    for (const NonContact& c : a.undercut) {
+        add(tr("The follower cannot reach the profile at %1: it jumps from (%2, %3) to (%4, %5)")
+                .arg(degrees(c.phi), QLocale().toString(c.from.x(), 'f', 3),
+                     QLocale().toString(c.from.y(), 'f', 3), QLocale().toString(c.to.x(), 'f', 3),
+                     QLocale().toString(c.to.y(), 'f', 3)),
+            c.phi, true);
+    }
+    const bool flat = result->follower->spec().type == FollowerType::Flat;
+    add(tr("Smallest radius of curvature of the profile: %1 at %2")
+            .arg(millimetres(a.rhoProfileMin.value), degrees(a.rhoProfileMin.phi)),
+        a.rhoProfileMin.phi, flat && a.rhoProfileMin.value <= 0.0);
+    if (result->follower->spec().type == FollowerType::Roller) {
+        add(tr("Smallest radius of curvature of the pitch curve: %1 at %2")
+                .arg(millimetres(a.rhoPitchMin.value), degrees(a.rhoPitchMin.phi)),
+            a.rhoPitchMin.phi, false);
+    }
+    if (flat) add(tr("Face width needed: %1").arg(millimetres(a.faceWidth)), std::nullopt, false);
+    m_summary->setText(m_problems == 0 ? tr("Every check passes.")
+                                       : tr("%n check(s) fail.", nullptr, m_problems));
+}
+
+QStringList FollowerPanel::checkLines() const {
+    QStringList lines;
+    for (int i = 0; i < m_checks->count(); ++i) lines << m_checks->item(i)->text();
+    return lines;
+}
+
+}  // namespace cam

@@ -1,0 +1,70 @@
+#pragma once
+/// @file
+/// @brief The follower (type, motion, radius, offset, pivot, arm, pressure-angle limit; every
+/// edit an undo command) and its design checks over the turn (math.md §7): the largest pressure
+/// angles against the limit, the ranges beyond it, the smallest radii of curvature, the flat
+/// face's width and every stretch the follower cannot reach. Clicking a check goes to its angle.
+
+#include <QWidget>
+#include <array>
+#include <functional>
+
+#include "engine/compute_result.h"
+
+class QComboBox;
+class QCPItemStraightLine;
+class QCustomPlot;
+class QLabel;
+class QListWidget;
+
+namespace cam {
+
+class NumberSpinBox;
+class ProjectDocument;
+
+class FollowerPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit FollowerPanel(ProjectDocument* document, QWidget* parent = nullptr);
+
+    /// @brief Shows the design checks of a result (the last one computed).
+    void setResult(const ComputeResultPtr& result);
+    /// @brief The checks as shown, one line each (for tests and copying).
+    [[nodiscard]] QStringList checkLines() const;
+    /// @brief How many checks fail (beyond the limit, cannot reach, cannot ride).
+    [[nodiscard]] int problemCount() const { return m_problems; }
+    /// @brief The pressure angle over the turn, on the kinematics plots' x axis, with the limit
+    /// drawn and the stretches beyond it in red.
+    [[nodiscard]] QCustomPlot* pressurePlot() const { return m_pressurePlot; }
+    /// @brief Moves the plot's cursor line to x (degrees or seconds).
+    void setCursorX(double x);
+
+signals:
+    /// A check was clicked: go to this cam angle (rad).
+    void anglePicked(double phi);
+
+private:
+    void refresh();
+    void edit(const std::function<void(FollowerSpec&)>& change);
+
+    ProjectDocument* m_document;
+    QComboBox* m_type;
+    QComboBox* m_motion;
+    NumberSpinBox* m_radius;
+    NumberSpinBox* m_offset;
+    NumberSpinBox* m_pivotX;
+    NumberSpinBox* m_pivotY;
+    NumberSpinBox* m_armLength;
+    QComboBox* m_side;
+    NumberSpinBox* m_limit;
+    QListWidget* m_checks;
+    QLabel* m_summary;
+    QCustomPlot* m_pressurePlot;
+    std::array<QCPItemStraightLine*, 2> m_limitLines{};
+    QCPItemStraightLine* m_cursor;
+    int m_problems = 0;
+    int m_gesture = 0;
+    bool m_refreshing = false;
+};
+
+}  // namespace cam

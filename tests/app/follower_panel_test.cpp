@@ -1,0 +1,165 @@
+// The Follower dock: its edits are undo commands that the engine computes in the worker; the
+// design checks it lists are the core's analysis of the same project, and a click on one puts
+// the cursor at its angle; the contour view draws the follower there.
+
+#include <gtest/gtest.h>
+
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QListWidget>
+#include <QTest>
+#include <qcustomplot.h>
+
+#include "app_test_support.h"
+#include "common/angles.h"
+#include "document/project_document.h"
+#include "engine/compute_engine.h"
+#include "follower/follower_analysis.h"
+#include "mainwindow.h"
+#include "views/kinematics_plots.h"
+#include "views/follower_panel.h"
+
+namespace cam {
+namespace {
+
+const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json"));
+
+bool waitForResult(MainWindow& w) { return w.waitForCurrentResult(20000); }
+
+template <class T>
+T* child(const MainWindow& w, const char* name) {
+    T* widget = w.followerPanel()->findChild<T*>(name);
+    EXPECT_NE(widget, nullptr) << name;
+    return widget;
+}
+
+TEST(FollowerPanel, ChoosingARollerIsOneUndoableEditComputedInTheWorker) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.show();
+    window.findChild<QDockWidget*>("followerDock")->show();
+    ASSERT_TRUE(waitForResult(window));
+    EXPECT_FALSE(window.document()->project().follower.has_value());
+    EXPECT_EQ(window.engine()->latestResult()->follower, nullptr);
+
+    child<QComboBox>(window, "followerTypeComboBox")->setCurrentIndex(1);  // Roller
+    ASSERT_TRUE(window.document()->project().follower.has_value());
+    EXPECT_EQ(window.document()->project().follower->type, FollowerType::Roller);
+    EXPECT_EQ(window.document()->project().follower->radius, 5.0);
+    // The roller of 5 mm does not fit the cam's concave arcs (4.84 mm): the project says so.
+    ASSERT_TRUE(waitForResult(window));
+    EXPECT_FALSE(window.engine()->latestResult()->ok());
+    auto* radius = child<QDoubleSpinBox>(window, "followerRadiusSpinBox");
+    radius->setValue(2.0);
+    radius->setValue(2.5);  // one spin-box session: merged with the step before
+    emit radius->editingFinished();
+    EXPECT_EQ(window.document()->project().follower->radius, 2.5);
+    ASSERT_TRUE(waitForResult(window));
+    const ComputeResultPtr result = window.engine()->latestResult();
+    ASSERT_TRUE(result->ok());
+    ASSERT_NE(result->follower, nullptr);
+    EXPECT_EQ(result->follower->spec().radius, 2.5);
+
+    // Undo: the radius back to 5 (the two steps were one edit), then no follower at all.
+    window.document()->undoStack()->undo();
+    EXPECT_EQ(window.document()->project().follower->radius, 5.0);
+    EXPECT_EQ(radius->value(), 5.0);
+    window.document()->undoStack()->undo();
+    EXPECT_FALSE(window.document()->project().follower.has_value());
+    EXPECT_EQ(child<QComboBox>(window, "followerTypeComboBox")->currentIndex(), 0);
+    window.document()->undoStack()->redo();
+    window.document()->undoStack()->redo();
+    EXPECT_EQ(window.document()->project().follower->radius, 2.5);
+}
+
+TEST(FollowerPanel, TheChecksAreTheCoresAndAClickGoesToTheirAngle) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.show();
+    window.findChild<QDockWidget*>("followerDock")->show();
+    ASSERT_TRUE(waitForResult(window));
+    // A swinging roller, set field by field as a user would.
+    child<QComboBox>(window, "followerMotionComboBox")->setCurrentIndex(1);
+    auto* radius = child<QDoubleSpinBox>(window, "followerRadiusSpinBox");
+    radius->setValue(2.0);
+    emit radius->editingFinished();
+    const auto spec = window.document()->project().follower;
+    ASSERT_TRUE(spec.has_value());
+    EXPECT_EQ(spec->motion, FollowerMotion::Oscillating);
+    EXPECT_EQ(spec->pivot, Eigen::Vector2d(60.0, 0.0));  // the panel's first arm
+    EXPECT_EQ(spec->armLength, 50.0);
+    ASSERT_TRUE(waitForResult(window));
+    const ComputeResultPtr result = window.engine()->latestResult();
+    ASSERT_TRUE(result->ok());
+    ASSERT_TRUE(result->followerErrors.empty());
+
+    // The same analysis, made here from the file's contour and the spec.
+    const Contour contour = Contour::build(*result->project).value();
+    const FollowerModel model = FollowerModel::build(contour, *spec).value();
+    const FollowerAnalysis a = analyzeFollower(model, result->omega, contour.phiBegin());
+    const QStringList lines = window.followerPanel()->checkLines();
+    ASSERT_FALSE(lines.isEmpty());
+    EXPECT_TRUE(lines[0].contains(QLocale().toString(radToDeg(a.pressureRise.value), 'f', 2)))
+        << lines[0].toStdString();
+    // 45° is the swinging arm's default limit; it is exceeded in 12 ranges on this cam.
+    EXPECT_TRUE(lines[0].contains("45.00°")) << lines[0].toStdString();
+    EXPECT_EQ(lines.filter("beyond the limit").size(),
+              static_cast<qsizetype>(a.pressureExceeded.size()));
+    EXPECT_EQ(window.followerPanel()->problemCount(),
+              static_cast<int>(a.pressureExceeded.size()) + 2);
+
+    // The pressure-angle plot: the core's angle at every point, the limit as two lines, red
+    // exactly where it is beyond.
+    QCustomPlot* plot = window.followerPanel()->pressurePlot();
+    ASSERT_TRUE(plot->isVisible());
+    const auto angles = plot->graph(0)->data();
+    const auto beyond = plot->graph(1)->data();
+    ASSERT_EQ(angles->size(), static_cast<int>(ComputeResult::kFollowerCurvePoints + 1));
+    int red = 0;
+    for (int k = 0; k < angles->size(); k += 7) {
+        const double t = result->period * k / ComputeResult::kFollowerCurvePoints;
+        const double alpha = radToDeg(model.at(result->omega * t, result->omega).pressureAngle);
+        EXPECT_NEAR(angles->at(k)->key, radToDeg(result->omega * t), 1e-9);
+        EXPECT_NEAR(angles->at(k)->value, alpha, 1e-12);
+        EXPECT_EQ(std::isnan(beyond->at(k)->value), std::abs(alpha) <= 45.0) << k;
+        red += std::isnan(beyond->at(k)->value) ? 0 : 1;
+    }
+    EXPECT_GT(red, 10);
+    // It shares the kinematics plots' x axis.
+    window.plots()->plot(0)->xAxis->setRange(100.0, 140.0);
+    EXPECT_EQ(plot->xAxis->range().lower, 100.0);
+    EXPECT_EQ(plot->xAxis->range().upper, 140.0);
+
+    // Click the third line (the first range beyond the limit): the cursor goes to its start.
+    auto* list = child<QListWidget>(window, "designChecksList");
+    QListWidgetItem* item = list->item(2);
+    ASSERT_NE(item, nullptr);
+    const QRect rect = list->visualItemRect(item);
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, rect.center());
+    const double phi = item->data(Qt::UserRole).toDouble();
+    EXPECT_NEAR(phi, a.pressureExceeded.front().from, 1e-12);
+    const double expected = std::fmod(phi / result->omega + result->period, result->period);
+    EXPECT_NEAR(window.cursorTime(), expected, 1e-12);
+}
+
+TEST(FollowerPanel, AnArmThatCannotReachTheCamIsListedNotHidden) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.show();
+    child<QComboBox>(window, "followerMotionComboBox")->setCurrentIndex(1);
+    auto* length = child<QDoubleSpinBox>(window, "armLengthSpinBox");
+    length->setValue(20.0);  // from a pivot 60 mm out the cam is at least 31 mm away
+    emit length->editingFinished();
+    ASSERT_TRUE(waitForResult(window));
+    const QStringList lines = window.followerPanel()->checkLines();
+    ASSERT_EQ(lines.size(), 1);
+    EXPECT_TRUE(lines[0].contains("follower.arm_length")) << lines[0].toStdString();
+    EXPECT_TRUE(lines[0].contains("too short")) << lines[0].toStdString();
+    EXPECT_EQ(window.followerPanel()->problemCount(), 1);
+    // The kinematics are still shown: only the follower cannot be placed.
+    EXPECT_TRUE(window.engine()->latestResult()->ok());
+}
+
+}  // namespace
+}  // namespace cam
