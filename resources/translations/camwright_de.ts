@@ -773,7 +773,7 @@
         <translation>Radius der Rolle</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Offset e of the follower's line from the cam centre, along n</source>
         <translation>Versatz e der Stößelgeraden vom Scheibenmittelpunkt, entlang n</translation>
     </message>
@@ -883,7 +883,7 @@
         <translation>Druckwinkel [°]</translation>
     </message>
     <message>
-        <location line="+136" />
+        <location line="+146" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -893,7 +893,12 @@
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+19" />
+        <source>No design checks: %1</source>
+        <translation>Keine Auslegungsprüfung: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>No design checks: the contour cannot be computed.</source>
         <translation>Keine Auslegungsprüfung: die Kontur lässt sich nicht berechnen.</translation>
     </message>
@@ -1263,12 +1268,33 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+80" />
+        <location filename="../../src/app/mainwindow.cpp" line="+82" />
         <source>computing…</source>
         <translation>wird berechnet…</translation>
     </message>
     <message>
-        <location line="+78" />
+        <location line="+41" />
+        <location line="+31" />
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <location line="-27" />
+        <source>Turn the cam with the follower riding it (F5)</source>
+        <translation>Die Scheibe drehen, der Stößel fährt mit (F5)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Play at this fraction of the cam's real speed</source>
+        <translation>Mit diesem Bruchteil der wirklichen Drehzahl abspielen</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <location line="+50" />
         <source>Machining limits and times (Ctrl+M)</source>
         <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
     </message>

@@ -1,6 +1,7 @@
 #include "mainwindow.h"
 
 #include <QCloseEvent>
+#include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QEventLoop>
@@ -62,6 +63,7 @@ MainWindow::MainWindow(QWidget* parent)
     setUpDocks();
     setUpActions();
     setUpExports();
+    setUpPlay();
 
     m_validationLabel = new QLabel(this);
     m_validationLabel->setObjectName("validationLabel");
@@ -116,6 +118,50 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() = default;
+
+void MainWindow::setUpPlay() {
+    m_playAction = new QAction(tr("Play"), this);
+    m_playAction->setObjectName("actionPlay");
+    m_playAction->setCheckable(true);
+    m_playAction->setShortcut(QKeySequence(Qt::Key_F5));
+    m_playAction->setToolTip(tr("Turn the cam with the follower riding it (F5)"));
+    m_playSpeed = new QComboBox(this);
+    m_playSpeed->setObjectName("playSpeedComboBox");
+    m_playSpeed->setToolTip(tr("Play at this fraction of the cam's real speed"));
+    for (double factor : {0.01, 0.05, 0.1, 0.25, 0.5, 1.0}) {
+        m_playSpeed->addItem(QStringLiteral("%1×").arg(QLocale().toString(factor)), factor);
+    }
+    QSettings settings;
+    const int index = m_playSpeed->findData(settings.value("view/playSpeed", 0.05).toDouble());
+    m_playSpeed->setCurrentIndex(index >= 0 ? index : 1);
+    connect(m_playSpeed, &QComboBox::currentIndexChanged, this,
+            [this] { QSettings().setValue("view/playSpeed", playSpeedFactor()); });
+    m_ui->mainToolBar->addSeparator();
+    m_ui->mainToolBar->addAction(m_playAction);
+    m_ui->mainToolBar->addWidget(m_playSpeed);
+    m_ui->menuView->addSeparator();
+    m_ui->menuView->addAction(m_playAction);
+    m_playTimer = new QTimer(this);
+    m_playTimer->setInterval(16);  // about 60 frames a second
+    connect(m_playTimer, &QTimer::timeout, this, [this] {
+        const double elapsed = static_cast<double>(m_playClock.nsecsElapsed()) / 1e9;
+        m_playClock.restart();
+        // The cursor's time runs at the chosen fraction of real time; a frame only moves the
+        // markers (one state and one follower position at the cursor).
+        setCursorTime(m_cursorT + elapsed * playSpeedFactor());
+    });
+    connect(m_playAction, &QAction::toggled, this, [this](bool on) {
+        m_playAction->setText(on ? tr("Pause") : tr("Play"));
+        if (on) {
+            m_playClock.start();
+            m_playTimer->start();
+        } else {
+            m_playTimer->stop();
+        }
+    });
+}
+
+double MainWindow::playSpeedFactor() const { return m_playSpeed->currentData().toDouble(); }
 
 void MainWindow::setUpDocks() {
     QTableView* table = m_ui->segmentTable;

@@ -2,6 +2,7 @@
 /// @file
 /// @brief The main window: actions, docks and wiring. Views draw; the engine computes.
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QTimer>
 #include <memory>
@@ -10,6 +11,7 @@
 #include "export/export_request.h"
 
 class QCustomPlot;
+class QComboBox;
 class QLabel;
 
 namespace Ui {
@@ -54,6 +56,9 @@ public:
     [[nodiscard]] FollowerPanel* followerPanel() const { return m_follower; }
     /// @brief The cursor's instant (s, within the turn).
     [[nodiscard]] double cursorTime() const { return m_cursorT; }
+    [[nodiscard]] QAction* playAction() const { return m_playAction; }
+    /// @brief The fraction of the real speed Play turns the cam at.
+    [[nodiscard]] double playSpeedFactor() const;
     [[nodiscard]] MachiningPanel* machiningPanel() const { return m_machining; }
     [[nodiscard]] JointsPanel* jointsPanel() const { return m_joints; }
     [[nodiscard]] PathStudyPanel* pathStudyPanel() const { return m_pathStudy; }
@@ -143,6 +148,13 @@ private:
     /// Fires when a request has waited kBusyAfterMs without its result: the label then says
     /// "computing…" instead of describing a result of the project as it was.
     QTimer* m_busyTimer;
+    /// Play: turns the cam at a fraction of its real speed, the cursor (and the follower on
+    /// the contour) moving with it; only markers move, nothing is computed.
+    QAction* m_playAction = nullptr;
+    QComboBox* m_playSpeed = nullptr;
+    QTimer* m_playTimer = nullptr;
+    QElapsedTimer m_playClock;
+    void setUpPlay();
     double m_cursorT = 0.0;
     ComputeResultPtr m_shown;  ///< the last result that could be computed: what the views draw
 };

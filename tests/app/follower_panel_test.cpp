@@ -7,7 +7,9 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QListWidget>
+#include <QElapsedTimer>
 #include <QTest>
 #include <qcustomplot.h>
 
@@ -46,11 +48,19 @@ TEST(FollowerPanel, ChoosingARollerIsOneUndoableEditComputedInTheWorker) {
     child<QComboBox>(window, "followerTypeComboBox")->setCurrentIndex(1);  // Roller
     ASSERT_TRUE(window.document()->project().follower.has_value());
     EXPECT_EQ(window.document()->project().follower->type, FollowerType::Roller);
-    EXPECT_EQ(window.document()->project().follower->radius, 5.0);
-    // The roller of 5 mm does not fit the cam's concave arcs (4.84 mm): the project says so.
+    // A first roller fits the cam: under half its smallest arc (4.84 mm).
+    EXPECT_EQ(window.document()->project().follower->radius, 2.4);
+    ASSERT_TRUE(waitForResult(window));
+    EXPECT_TRUE(window.engine()->latestResult()->ok());
+    // One of 5 mm does not fit the concave arcs: the project says so, and the panel why.
+    auto* radius = child<QDoubleSpinBox>(window, "followerRadiusSpinBox");
+    radius->setValue(5.0);
+    emit radius->editingFinished();
     ASSERT_TRUE(waitForResult(window));
     EXPECT_FALSE(window.engine()->latestResult()->ok());
-    auto* radius = child<QDoubleSpinBox>(window, "followerRadiusSpinBox");
+    EXPECT_TRUE(window.followerPanel()->findChild<QLabel*>("designChecksSummary")
+                    ->text()
+                    .contains("follower.radius"));
     radius->setValue(2.0);
     radius->setValue(2.5);  // one spin-box session: merged with the step before
     emit radius->editingFinished();
@@ -61,15 +71,16 @@ TEST(FollowerPanel, ChoosingARollerIsOneUndoableEditComputedInTheWorker) {
     ASSERT_NE(result->follower, nullptr);
     EXPECT_EQ(result->follower->spec().radius, 2.5);
 
-    // Undo: the radius back to 5 (the two steps were one edit), then no follower at all.
+    // Undo: the radius back to 5 (the two steps were one edit), to 2.4, then no follower.
     window.document()->undoStack()->undo();
     EXPECT_EQ(window.document()->project().follower->radius, 5.0);
     EXPECT_EQ(radius->value(), 5.0);
     window.document()->undoStack()->undo();
+    EXPECT_EQ(window.document()->project().follower->radius, 2.4);
+    window.document()->undoStack()->undo();
     EXPECT_FALSE(window.document()->project().follower.has_value());
     EXPECT_EQ(child<QComboBox>(window, "followerTypeComboBox")->currentIndex(), 0);
-    window.document()->undoStack()->redo();
-    window.document()->undoStack()->redo();
+    for (int i = 0; i < 3; ++i) window.document()->undoStack()->redo();
     EXPECT_EQ(window.document()->project().follower->radius, 2.5);
 }
 
@@ -159,6 +170,40 @@ TEST(FollowerPanel, AnArmThatCannotReachTheCamIsListedNotHidden) {
     EXPECT_EQ(window.followerPanel()->problemCount(), 1);
     // The kinematics are still shown: only the follower cannot be placed.
     EXPECT_TRUE(window.engine()->latestResult()->ok());
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(Play, TheCursorTurnsAtTheChosenFractionOfTheRealSpeedAndStopsOnPause) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.show();
+    ASSERT_TRUE(waitForResult(window));
+    auto* speed = window.findChild<QComboBox*>("playSpeedComboBox");
+    ASSERT_NE(speed, nullptr);
+    speed->setCurrentIndex(speed->findData(0.1));
+    EXPECT_EQ(window.playSpeedFactor(), 0.1);
+    const double start = window.cursorTime();
+    QElapsedTimer clock;
+    clock.start();
+    window.playAction()->trigger();
+    EXPECT_EQ(window.playAction()->text(), "Pause");
+    QTest::qWait(400);
+    window.playAction()->trigger();  // pause
+    const double wall = static_cast<double>(clock.nsecsElapsed()) / 1e9;
+    const double moved = window.cursorTime() - start;  // T = 0.4 s: no wrap within 4 s of play
+    // At a tenth of the speed the cursor's time ran a tenth of the wall time (the frames that
+    // came: at least half of it on a busy machine), never more.
+    EXPECT_GT(moved, 0.5 * 0.1 * 0.4);
+    EXPECT_LE(moved, 0.1 * wall + 1e-9);
+    EXPECT_EQ(window.playAction()->text(), "Play");
+    const double paused = window.cursorTime();
+    QTest::qWait(100);
+    EXPECT_EQ(window.cursorTime(), paused);
 }
 
 }  // namespace

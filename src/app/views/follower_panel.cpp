@@ -49,6 +49,7 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     m_motion->setToolTip(tr("A follower sliding on a line, or swinging on an arm about a pivot"));
     m_radius = spinBox(this, "followerRadiusSpinBox", " mm", tr("Radius of the roller"), 0.001);
     m_radius->setSingleStep(0.5);
+    m_radius->setValue(5.0);
     m_offset = spinBox(this, "followerOffsetSpinBox", " mm",
                        tr("Offset e of the follower's line from the cam centre, along n"), -1e6);
     m_offset->setSingleStep(0.5);
@@ -129,16 +130,26 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
             edit([&](FollowerSpec& f) { set(f, index); });
         });
     };
-    choice(m_type, [](FollowerSpec& f, int i) {
+    // A first roller fits the cam: 5 mm, or less than half its smallest arc.
+    const auto fittingRadius = [this] {
+        double radius = 5.0;
+        for (const SegmentSpec& segment : m_document->project().contour) {
+            if (const Arc* arc = segment.as<Arc>()) {
+                radius = std::min(radius, std::floor(arc->radius * 5.0) / 10.0);
+            }
+        }
+        return std::max(radius, 0.1);
+    };
+    choice(m_type, [fittingRadius](FollowerSpec& f, int i) {
         f.type = static_cast<FollowerType>(i);
-        if (f.type == FollowerType::Roller && !(f.radius > 0.0)) f.radius = 5.0;
+        if (f.type == FollowerType::Roller && !(f.radius > 0.0)) f.radius = fittingRadius();
         if (f.type == FollowerType::Flat) f.motion = FollowerMotion::Translating;
     });
-    choice(m_motion, [](FollowerSpec& f, int i) {
+    choice(m_motion, [fittingRadius](FollowerSpec& f, int i) {
         f.motion = static_cast<FollowerMotion>(i);
         if (f.motion == FollowerMotion::Oscillating) {
             if (f.type == FollowerType::Flat) f.type = FollowerType::Roller;
-            if (f.type == FollowerType::Roller && !(f.radius > 0.0)) f.radius = 5.0;
+            if (f.type == FollowerType::Roller && !(f.radius > 0.0)) f.radius = fittingRadius();
         }
     });
     choice(m_side, [](FollowerSpec& f, int i) { f.arm = static_cast<ArmSide>(i); });
@@ -251,7 +262,10 @@ void FollowerPanel::setResult(const ComputeResultPtr& result) {
         }
     };
     if (!result || !result->ok()) {
-        m_summary->setText(tr("No design checks: the contour cannot be computed."));
+        m_summary->setText(result && !result->errors.empty()
+                               ? tr("No design checks: %1")
+                                     .arg(QString::fromStdString(result->errors.front().text()))
+                               : tr("No design checks: the contour cannot be computed."));
         return;
     }
     if (!result->followerErrors.empty()) {
