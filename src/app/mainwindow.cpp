@@ -246,9 +246,9 @@ void MainWindow::setUpDocks() {
         setCursorTime(r->axis == PlotAxis::Angle ? degToRad(x) / r->omega : x);
     });
     resizeDocks({m_ui->motionDock, m_ui->readoutDock}, {140, 400}, Qt::Vertical);
-    for (QDockWidget* dock : {m_ui->segmentsDock, m_ui->jointsDock, m_ui->motionDock,
-                              m_ui->readoutDock, m_ui->machiningDock, m_ui->pathStudyDock,
-                              m_followerDock}) {
+    for (QDockWidget* dock :
+         {m_ui->segmentsDock, m_ui->jointsDock, m_ui->motionDock, m_ui->readoutDock,
+          m_ui->machiningDock, m_ui->pathStudyDock, m_followerDock}) {
         m_ui->menuView->addAction(dock->toggleViewAction());
     }
 }

@@ -109,7 +109,6 @@ const char* followerTypeName(FollowerType type) {
     return "";
 }
 
-
 /// A radius of curvature: null where the curve is straight (an infinite radius).
 Json radiusJson(double rho) { return std::isfinite(rho) ? Json(rho) : Json(nullptr); }
 
@@ -128,12 +127,11 @@ Json followerJson(const FollowerModel& model, const FollowerState& f) {
                          {"alpha_arm", f.a},
                          {"jerk_arm", f.j}});
     } else {
-        json.update(
-            Json{{"s", f.s}, {"lift", model.lift(f)}, {"v", f.v}, {"a", f.a}, {"j", f.j}});
+        json.update(Json{{"s", f.s}, {"lift", model.lift(f)}, {"v", f.v}, {"a", f.a}, {"j", f.j}});
     }
     json.update(Json{{"center", {f.center.x(), f.center.y()}},
-                {"contact", {f.contact.x(), f.contact.y()}},
-                {"pressure_angle_deg", radToDeg(f.pressureAngle)},
+                     {"contact", {f.contact.x(), f.contact.y()}},
+                     {"pressure_angle_deg", radToDeg(f.pressureAngle)},
                      {"rho_profile", radiusJson(f.rhoProfile)},
                      {"rho_pitch", radiusJson(f.rhoPitch)}});
     return json;
@@ -184,10 +182,10 @@ Json followerAnalysisJson(const Loaded& loaded) {
         f["j"] = range(a.jMin, a.jMax);
     }
     f.update(Json{{"pressure_angle",
-            {{"rise", angle(a.pressureRise)},
-             {"return", angle(a.pressureReturn)},
-             {"limit_deg", radToDeg(a.limitRad)},
-             {"exceeded", std::move(exceeded)}}},
+                   {{"rise", angle(a.pressureRise)},
+                    {"return", angle(a.pressureReturn)},
+                    {"limit_deg", radToDeg(a.limitRad)},
+                    {"exceeded", std::move(exceeded)}}},
                   {"rho_profile_min", one(a.rhoProfileMin)},
                   {"rho_pitch_min", one(a.rhoPitchMin)},
                   {"undercut", std::move(undercut)}});

@@ -4,14 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <qcustomplot.h>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QListWidget>
-#include <QElapsedTimer>
 #include <QTest>
-#include <qcustomplot.h>
 
 #include "app_test_support.h"
 #include "common/angles.h"
@@ -19,8 +19,8 @@
 #include "engine/compute_engine.h"
 #include "follower/follower_analysis.h"
 #include "mainwindow.h"
-#include "views/kinematics_plots.h"
 #include "views/follower_panel.h"
+#include "views/kinematics_plots.h"
 
 namespace cam {
 namespace {
@@ -58,7 +58,8 @@ TEST(FollowerPanel, ChoosingARollerIsOneUndoableEditComputedInTheWorker) {
     emit radius->editingFinished();
     ASSERT_TRUE(waitForResult(window));
     EXPECT_FALSE(window.engine()->latestResult()->ok());
-    EXPECT_TRUE(window.followerPanel()->findChild<QLabel*>("designChecksSummary")
+    EXPECT_TRUE(window.followerPanel()
+                    ->findChild<QLabel*>("designChecksSummary")
                     ->text()
                     .contains("follower.radius"));
     radius->setValue(2.0);

@@ -23,23 +23,36 @@ struct FollowerTurn {
     }
 };
 
-void BM_FollowerTurn(benchmark::State& state) {
+/// The six-lobe example with a roller of 2 mm: offset 3 mm on a line, or (arm) on a swinging
+/// arm from a pivot 60 mm out, 50 mm long.
+struct RollerCam {
+    cam::Contour contour;
+    double omega = 0.0;
+    cam::FollowerSpec spec;
+};
+
+RollerCam rollerCam(bool arm) {
     auto project =
         cam::loadProjectFile(std::string(CAMWRIGHT_EXAMPLES) + "/six-lobe-arc-cam.cam.json");
     if (!project.ok()) std::abort();
-    const double omega = project.value().motion.omegaRadS();
-    const cam::Contour contour = cam::Contour::build(project.value()).value();
     cam::FollowerSpec spec;
     spec.type = cam::FollowerType::Roller;
     spec.radius = 2.0;
     spec.offset = 3.0;
-    if (state.range(1) == 1) {  // the same roller on a swinging arm
+    if (arm) {
         spec.offset = 0.0;
         spec.motion = cam::FollowerMotion::Oscillating;
         spec.pivot = {60.0, 0.0};
         spec.armLength = 50.0;
     }
-    const cam::FollowerModel model = cam::FollowerModel::build(contour, spec).value();
+    return {cam::Contour::build(project.value()).value(), project.value().motion.omegaRadS(), spec};
+}
+
+void BM_FollowerTurn(benchmark::State& state) {
+    const RollerCam setup = rollerCam(state.range(1) == 1);
+    const cam::Contour& contour = setup.contour;
+    const double omega = setup.omega;
+    const cam::FollowerModel model = cam::FollowerModel::build(contour, setup.spec).value();
     const auto n = static_cast<std::size_t>(state.range(0));
     FollowerTurn turn;
     turn.resize(n);
@@ -69,29 +82,14 @@ BENCHMARK(BM_FollowerTurn)
     ->Args({100000, 1})
     ->Unit(benchmark::kMillisecond);
 
-}  // namespace
-
-namespace {
-
 // The design checks of one turn (analyzeFollower at its default 7200 samples, every extreme
 // refined): what the app's engine adds to a computation when the project has a follower.
-// Arg 0: the translating roller of BM_FollowerTurn; 1: a roller of 2 mm on a swinging arm.
+// Arg 0: the translating roller of BM_FollowerTurn; 1: the same roller on its swinging arm.
 void BM_FollowerChecks(benchmark::State& state) {
-    auto project =
-        cam::loadProjectFile(std::string(CAMWRIGHT_EXAMPLES) + "/six-lobe-arc-cam.cam.json");
-    if (!project.ok()) std::abort();
-    const double omega = project.value().motion.omegaRadS();
-    const cam::Contour contour = cam::Contour::build(project.value()).value();
-    cam::FollowerSpec spec;
-    spec.type = cam::FollowerType::Roller;
-    spec.radius = 2.0;
-    spec.offset = 3.0;
-    if (state.range(0) == 1) {
-        spec.offset = 0.0;
-        spec.motion = cam::FollowerMotion::Oscillating;
-        spec.pivot = {60.0, 0.0};
-        spec.armLength = 50.0;
-    }
+    const RollerCam setup = rollerCam(state.range(0) == 1);
+    const cam::Contour& contour = setup.contour;
+    const cam::FollowerSpec& spec = setup.spec;
+    const double omega = setup.omega;
     for (auto _ : state) {
         const cam::FollowerModel model = cam::FollowerModel::build(contour, spec).value();
         const cam::FollowerAnalysis checks = cam::analyzeFollower(model, omega, contour.phiBegin());

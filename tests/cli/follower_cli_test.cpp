@@ -27,6 +27,21 @@ Json followerAt(const std::string& project, double t) {
     return Json::parse(run.out);
 }
 
+/// The rows of a cam table in the CSV dialect: master_deg, position, velocity, acceleration.
+std::vector<std::array<double, 4>> camTableRows(const std::string& text) {
+    std::vector<std::array<double, 4>> rows;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#' || line[0] == 'm') continue;
+        std::array<double, 4> row{};
+        EXPECT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &row[0], &row[1], &row[2], &row[3]),
+                  4)
+            << line;
+        rows.push_back(row);
+    }
+    return rows;
+}
+
 TEST(CliFollowerReference, StateAgreesWithTheContactReferenceToOneBillionth) {
     namespace fs = std::filesystem;
     int cams = 0, states = 0;
@@ -45,14 +60,12 @@ TEST(CliFollowerReference, StateAgreesWithTheContactReferenceToOneBillionth) {
             // floor of 1e-9 of s·ω^k for values that are zero.
             const bool arm = e.contains("psi_deg");
             EXPECT_EQ(f.at("motion"), arm ? "oscillating" : "translating");
-            const double size = std::hypot(e.at("center_x").get<double>(),
-                                           e.at("center_y").get<double>());
+            const double size =
+                std::hypot(e.at("center_x").get<double>(), e.at("center_y").get<double>());
             EXPECT_TRUE(relClose(f.at("center")[0], e.at("center_x"), 1e-9, size)) << "center x";
             EXPECT_TRUE(relClose(f.at("center")[1], e.at("center_y"), 1e-9, size)) << "center y";
-            EXPECT_TRUE(relClose(f.at("contact")[0], e.at("contact_x"), 1e-9, size))
-                << "contact x";
-            EXPECT_TRUE(relClose(f.at("contact")[1], e.at("contact_y"), 1e-9, size))
-                << "contact y";
+            EXPECT_TRUE(relClose(f.at("contact")[0], e.at("contact_x"), 1e-9, size)) << "contact x";
+            EXPECT_TRUE(relClose(f.at("contact")[1], e.at("contact_y"), 1e-9, size)) << "contact y";
             // ψ to 1e-9 rad (a 1e-9 mm move of a tip 1 mm out); its rates like s's.
             const std::array<const char*, 4> names =
                 arm ? std::array{"psi_deg", "omega_arm", "alpha_arm", "jerk_arm"}
@@ -88,16 +101,7 @@ TEST(CliFollowerCamTable, PositionsAreTheFollowersLiftAtTheMasterAngles) {
     const auto run = test::runCli(
         {"export", base + ".cam.json", "--format", "camtable", "--points", "3600", "--out", out});
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    std::vector<std::array<double, 4>> rows;
-    std::istringstream in(test::readFile(out));
-    for (std::string line; std::getline(in, line);) {
-        if (line.empty() || line[0] == '#' || line[0] == 'm') continue;
-        std::array<double, 4> row{};
-        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &row[0], &row[1], &row[2], &row[3]),
-                  4)
-            << line;
-        rows.push_back(row);
-    }
+    const std::vector<std::array<double, 4>> rows = camTableRows(test::readFile(out));
     ASSERT_EQ(rows.size(), 3600u);
     double stroke = 0.0;
     for (const auto& r : rows) stroke = std::max(stroke, r[1]);
@@ -163,15 +167,7 @@ TEST(CliFollowerArm, TheCamTableAndTheCsvHoldTheArmsAngleInDegrees) {
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const std::string text = test::readFile(table);
     EXPECT_NE(text.find("# slave=lift_deg\n"), std::string::npos);
-    std::vector<std::array<double, 4>> rows;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        if (line.empty() || line[0] == '#' || line[0] == 'm') continue;
-        std::array<double, 4> row{};
-        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &row[0], &row[1], &row[2], &row[3]),
-                  4);
-        rows.push_back(row);
-    }
+    const std::vector<std::array<double, 4>> rows = camTableRows(text);
     ASSERT_EQ(rows.size(), 3600u);
     const double omega = 2.0 * M_PI / 0.25;
     int checked = 0;

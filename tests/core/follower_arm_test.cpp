@@ -32,8 +32,9 @@ FollowerSpec armSpec(FollowerType type, double radius, Eigen::Vector2d pivot, do
 
 FollowerModel armModel(const Contour& contour, const FollowerSpec& spec) {
     auto m = FollowerModel::build(contour, spec);
-    EXPECT_TRUE(m.ok()) << (m.ok() ? "" : m.errors().front().location + ": " +
-                                              m.errors().front().message);
+    EXPECT_TRUE(m.ok()) << (m.ok()
+                                ? ""
+                                : m.errors().front().location + ": " + m.errors().front().message);
     return std::move(m).value();
 }
 
@@ -106,11 +107,11 @@ TEST(FollowerArm, OnAnEccentricDiscItIsTheClosedFormOfTwoCircles) {
                 EXPECT_TRUE(relClose(st.rhoProfile, R, 1e-9));
                 // The tip is where the arm says.
                 const double big = phi + st.s;
-                EXPECT_NEAR((pivot + spec.armLength * Eigen::Vector2d(std::cos(big),
-                                                                      std::sin(big)) -
-                             st.center)
-                                .norm(),
-                            0.0, 1e-12);
+                EXPECT_NEAR(
+                    (pivot + spec.armLength * Eigen::Vector2d(std::cos(big), std::sin(big)) -
+                     st.center)
+                        .norm(),
+                    0.0, 1e-12);
                 // Derivatives against differences of the closed form; times ω, ω², ω³.
                 EXPECT_NEAR(st.sPhi[1], psi1(phi), 1e-9);
                 EXPECT_NEAR(st.sPhi[2], psi2(phi), 1e-6);
@@ -120,8 +121,7 @@ TEST(FollowerArm, OnAnEccentricDiscItIsTheClosedFormOfTwoCircles) {
                 EXPECT_TRUE(relClose(st.j, omega * omega * omega * st.sPhi[3], 1e-15));
                 // |α| is the angle between the normal and the way the tip moves away from the
                 // cam (across the arm).
-                const Eigen::Vector2d away =
-                    sigma * Eigen::Vector2d(-std::sin(big), std::cos(big));
+                const Eigen::Vector2d away = sigma * Eigen::Vector2d(-std::sin(big), std::cos(big));
                 EXPECT_NEAR(std::abs(st.pressureAngle), std::acos(nu.dot(away)), 1e-9);
                 // The lift's rates are ψ's, turned to degrees, growing away from the cam.
                 const auto lift = m.liftPhi(st);
@@ -157,8 +157,7 @@ TEST(FollowerArm, OnAnEccentricDiscItIsTheClosedFormOfTwoCircles) {
 
 /// A swinging roller (or knife, ρ = 0) on `contour`: the centre ρ from the profile and L from
 /// the turned pivot, the contact on the profile; ψ's derivatives against differences.
-void checkArm(const Contour& contour, const FollowerSpec& spec, const char* name,
-              int angles = 90) {
+void checkArm(const Contour& contour, const FollowerSpec& spec, const char* name, int angles = 90) {
     const FollowerModel m = armModel(contour, spec);
     const auto psi = [&](double phi) { return m.at(phi, 1.0).s; };
     const auto psi1 = [&](double phi) { return m.at(phi, 1.0).sPhi[1]; };
@@ -194,8 +193,7 @@ TEST(FollowerArm, KeepsItsLengthAndItsRadiusOnTheSixLobeCam) {
 
 TEST(FollowerArm, KeepsItsLengthAndItsRadiusOnSplineCams) {
     checkArm(load(test::dataPath("reference/spline-mix.cam.json")),
-             armSpec(FollowerType::Roller, 1.5, {10.0, 40.0}, 33.0, ArmSide::Cw), "spline-mix",
-             36);
+             armSpec(FollowerType::Roller, 1.5, {10.0, 40.0}, 33.0, ArmSide::Cw), "spline-mix", 36);
 }
 
 TEST(FollowerArm, APivotInsideTheCamOrAnArmThatCannotReachItIsRefusedWithItsPlace) {

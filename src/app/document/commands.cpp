@@ -73,8 +73,7 @@ SetSamplesPerTurn::SetSamplesPerTurn(ProjectDocument* document, std::optional<st
     : SetProjectValue(document, after,
                       QCoreApplication::translate("cam::Commands", "Change samples per turn"), 0) {}
 
-SetFollower::SetFollower(ProjectDocument* document, std::optional<FollowerSpec> after,
-                         int gesture)
+SetFollower::SetFollower(ProjectDocument* document, std::optional<FollowerSpec> after, int gesture)
     : SetProjectValue(document, std::move(after),
                       QCoreApplication::translate("cam::Commands", "Change follower"), gesture) {}
 

@@ -165,9 +165,8 @@ public:
 };
 
 /// @brief Sets, changes or removes the follower (none: the seed's radial knife edge).
-class SetFollower
-    : public SetProjectValue<std::optional<FollowerSpec>, &Project::follower,
-                             &ProjectDocument::applyFollower, MergeId::EditFollower> {
+class SetFollower : public SetProjectValue<std::optional<FollowerSpec>, &Project::follower,
+                                           &ProjectDocument::applyFollower, MergeId::EditFollower> {
 public:
     SetFollower(ProjectDocument* document, std::optional<FollowerSpec> after, int gesture = 0);
 };

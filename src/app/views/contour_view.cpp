@@ -73,12 +73,10 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
         f.normal = new QCPItemLine(this);
         f.normal->setPen(QPen(QColor(200, 40, 40), 1.2));
         f.normal->setHead(QCPLineEnding::esSpikeArrow);
-        for (QCPAbstractItem* item : {static_cast<QCPAbstractItem*>(f.guide),
-                                      static_cast<QCPAbstractItem*>(f.pivot),
-                                      static_cast<QCPAbstractItem*>(f.roller),
-                                      static_cast<QCPAbstractItem*>(f.face),
-                                      static_cast<QCPAbstractItem*>(f.contact),
-                                      static_cast<QCPAbstractItem*>(f.normal)}) {
+        for (QCPAbstractItem* item :
+             {static_cast<QCPAbstractItem*>(f.guide), static_cast<QCPAbstractItem*>(f.pivot),
+              static_cast<QCPAbstractItem*>(f.roller), static_cast<QCPAbstractItem*>(f.face),
+              static_cast<QCPAbstractItem*>(f.contact), static_cast<QCPAbstractItem*>(f.normal)}) {
             item->setLayer(m_cursorLayer);
             item->setVisible(false);
             item->setSelectable(false);

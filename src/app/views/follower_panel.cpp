@@ -17,8 +17,8 @@
 namespace cam {
 namespace {
 
-NumberSpinBox* spinBox(QWidget* parent, const char* name, const QString& suffix,
-                       const QString& tip, double minimum) {
+NumberSpinBox* spinBox(QWidget* parent, const char* name, const QString& suffix, const QString& tip,
+                       double minimum) {
     auto* s = new NumberSpinBox(parent);
     s->setObjectName(name);
     s->setSuffix(suffix);
@@ -270,8 +270,7 @@ void FollowerPanel::setResult(const ComputeResultPtr& result) {
     }
     if (!result->followerErrors.empty()) {
         for (const Diagnostic& d : result->followerErrors) {
-            add(tr("The follower cannot ride this cam: %1")
-                    .arg(QString::fromStdString(d.text())),
+            add(tr("The follower cannot ride this cam: %1").arg(QString::fromStdString(d.text())),
                 std::nullopt, true);
         }
         m_summary->setText(tr("The follower cannot ride this cam."));

@@ -106,13 +106,14 @@ std::string codesysTable(const std::vector<CamKnot>& knots, const CamTableOption
     const std::size_t n = knots.size();
     std::string out = "(* Camwright electronic cam";
     if (!options.name.empty()) out += ": " + commentText(options.name);
-    out += options.follower.motion == FollowerMotion::Oscillating
-               ? " *)\n(* master: cam angle in degrees, 0 .. 360, periodic; slave: the arm's angle\n"
-                 "   swung away from the cam, in deg; dV in deg/deg, dA in deg/deg^2. Knots for\n"
-                 "   SMC_CAMXYVA, interpolated\n"
-               : " *)\n(* master: cam angle in degrees, 0 .. 360, periodic; slave: follower lift "
-                 "in mm\n   (s(phi) - min s); dV in mm/deg, dA in mm/deg^2. Knots for SMC_CAMXYVA, "
-                 "interpolated\n";
+    out +=
+        options.follower.motion == FollowerMotion::Oscillating
+            ? " *)\n(* master: cam angle in degrees, 0 .. 360, periodic; slave: the arm's angle\n"
+              "   swung away from the cam, in deg; dV in deg/deg, dA in deg/deg^2. Knots for\n"
+              "   SMC_CAMXYVA, interpolated\n"
+            : " *)\n(* master: cam angle in degrees, 0 .. 360, periodic; slave: follower lift "
+              "in mm\n   (s(phi) - min s); dV in mm/deg, dA in mm/deg^2. Knots for SMC_CAMXYVA, "
+              "interpolated\n";
     out +=
         "   by fifth-order polynomials (byType 3). The knot at 360 deg repeats the one at 0. *)\n";
     out += "VAR_GLOBAL\n";

@@ -203,8 +203,8 @@ std::vector<std::pair<double, double>> FollowerModel::reach(const Piece& piece) 
                 const double t = piece.tLow + f * (piece.tHigh - piece.tLow);
                 const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
                 p = splinePitch(piece.coeff, piece.orientation * rho, t);
-                const Eigen::Vector2d d = (3.0 * piece.coeff[3] * t + 2.0 * piece.coeff[2]) * t +
-                                          piece.coeff[1];
+                const Eigen::Vector2d d =
+                    (3.0 * piece.coeff[3] * t + 2.0 * piece.coeff[2]) * t + piece.coeff[1];
                 m = piece.orientation * Eigen::Vector2d(d.y(), -d.x());
                 break;
             }
@@ -280,9 +280,9 @@ void FollowerModel::buildIndex() {
             const auto first = static_cast<long long>(std::floor((lo - m_phiBegin) / m_binWidth));
             const auto last = static_cast<long long>(std::floor((hi - m_phiBegin) / m_binWidth));
             for (long long b = first; b <= last; ++b) {
-                const auto bin = static_cast<std::size_t>(((b % static_cast<long long>(bins)) +
-                                                           static_cast<long long>(bins)) %
-                                                          static_cast<long long>(bins));
+                const auto bin = static_cast<std::size_t>(
+                    ((b % static_cast<long long>(bins)) + static_cast<long long>(bins)) %
+                    static_cast<long long>(bins));
                 auto& list = lists[bin];
                 if (list.empty() || list.back() != index) {
                     list.push_back(static_cast<std::uint32_t>(index));
@@ -371,24 +371,25 @@ void FollowerModel::crossings(double phi, const Eigen::Vector2d& u,
                 const auto g = [&](double t) {
                     return splinePitch(piece.coeff, offset, t).dot(nn) - e;
                 };
-                forEachRoot(g, piece.tLow - piece.slack, piece.tHigh + piece.slack, [&](double root) {
-                    // The φ-jet of τ by Newton steps on jets: each step makes one more
-                    // coefficient exact.
-                    const Jet cu = cosJet(phi), su = sinJet(phi);
-                    const JetVec uj{cu, su}, nj{-su, cu};
-                    const JetVec ct = pitch(Jet::variable(root));
-                    const double gt = ct.x.c[1] * nn.x() + ct.y.c[1] * nn.y();
-                    if (gt == 0.0) return;
-                    Jet t = Jet::constant(root);
-                    for (int it = 0; it < 4; ++it) {
-                        t = t - (dot(pitch(t), nj) - e) * (1.0 / gt);
-                    }
-                    Candidate c;
-                    c.s = dot(pitch(t), uj);
-                    c.segment = piece.segment;
-                    c.found = true;
-                    out.push_back(c);
-                });
+                forEachRoot(g, piece.tLow - piece.slack, piece.tHigh + piece.slack,
+                            [&](double root) {
+                                // The φ-jet of τ by Newton steps on jets: each step makes one more
+                                // coefficient exact.
+                                const Jet cu = cosJet(phi), su = sinJet(phi);
+                                const JetVec uj{cu, su}, nj{-su, cu};
+                                const JetVec ct = pitch(Jet::variable(root));
+                                const double gt = ct.x.c[1] * nn.x() + ct.y.c[1] * nn.y();
+                                if (gt == 0.0) return;
+                                Jet t = Jet::constant(root);
+                                for (int it = 0; it < 4; ++it) {
+                                    t = t - (dot(pitch(t), nj) - e) * (1.0 / gt);
+                                }
+                                Candidate c;
+                                c.s = dot(pitch(t), uj);
+                                c.segment = piece.segment;
+                                c.found = true;
+                                out.push_back(c);
+                            });
                 break;
             }
             case Piece::Kind::Vertex:
@@ -434,28 +435,29 @@ void FollowerModel::supports(double phi, const Eigen::Vector2d& u,
                     const JetVec d = polynomialDerivative(piece.coeff, Jet::constant(t));
                     return d.x.value() * u.x() + d.y.value() * u.y();
                 };
-                forEachRoot(g, piece.tLow - piece.slack, piece.tHigh + piece.slack, [&](double root) {
-                    const JetVec d = polynomialDerivative(piece.coeff, Jet::variable(root));
-                    const Eigen::Vector2d tangent(d.x.value(), d.y.value());
-                    const Eigen::Vector2d out_(piece.orientation * tangent.y(),
-                                               -piece.orientation * tangent.x());
-                    if (out_.dot(u) > 0.0) {
-                        const double gt = d.x.c[1] * u.x() + d.y.c[1] * u.y();
-                        const Jet cu = cosJet(phi), su = sinJet(phi);
-                        const JetVec uj{cu, su};
-                        Jet t = Jet::constant(root);
-                        for (int it = 0; it < 4; ++it) {
-                            t = t - dot(polynomialDerivative(piece.coeff, t), uj) * (1.0 / gt);
+                forEachRoot(
+                    g, piece.tLow - piece.slack, piece.tHigh + piece.slack, [&](double root) {
+                        const JetVec d = polynomialDerivative(piece.coeff, Jet::variable(root));
+                        const Eigen::Vector2d tangent(d.x.value(), d.y.value());
+                        const Eigen::Vector2d out_(piece.orientation * tangent.y(),
+                                                   -piece.orientation * tangent.x());
+                        if (out_.dot(u) > 0.0) {
+                            const double gt = d.x.c[1] * u.x() + d.y.c[1] * u.y();
+                            const Jet cu = cosJet(phi), su = sinJet(phi);
+                            const JetVec uj{cu, su};
+                            Jet t = Jet::constant(root);
+                            for (int it = 0; it < 4; ++it) {
+                                t = t - dot(polynomialDerivative(piece.coeff, t), uj) * (1.0 / gt);
+                            }
+                            const JetVec p = polynomial(piece.coeff, Jet::constant(root));
+                            Candidate c;
+                            c.s = dot(polynomial(piece.coeff, t), uj);
+                            c.contact = Eigen::Vector2d(p.x.value(), p.y.value());
+                            c.segment = piece.segment;
+                            c.found = true;
+                            out.push_back(c);
                         }
-                        const JetVec p = polynomial(piece.coeff, Jet::constant(root));
-                        Candidate c;
-                        c.s = dot(polynomial(piece.coeff, t), uj);
-                        c.contact = Eigen::Vector2d(p.x.value(), p.y.value());
-                        c.segment = piece.segment;
-                        c.found = true;
-                        out.push_back(c);
-                    }
-                });
+                    });
                 break;
             }
             case Piece::Kind::Line:

@@ -63,9 +63,7 @@ public:
     /// the angle swung away from the cam from its closest position, in degrees.
     [[nodiscard]] std::array<double, 4> liftPhi(const FollowerState& state) const;
     [[nodiscard]] double lift(const FollowerState& state) const { return liftPhi(state)[0]; }
-    [[nodiscard]] bool oscillating() const {
-        return m_spec.motion == FollowerMotion::Oscillating;
-    }
+    [[nodiscard]] bool oscillating() const { return m_spec.motion == FollowerMotion::Oscillating; }
     /// @brief +1 when the arm swings away from the cam with growing ψ ("ccw"), −1 ("cw");
     /// +1 on a translating line.
     [[nodiscard]] double awaySign() const {

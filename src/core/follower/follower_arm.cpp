@@ -56,8 +56,8 @@ double FollowerModel::armRank(const Piece& piece, double phi) const {
             const double a = (d2 + (L * L - R * R)) / (2.0 * dn);
             const double h2 = L * L - a * a;
             if (!(h2 > 0.0)) break;
-            const Eigen::Vector2d along = d * (a / dn), across = Eigen::Vector2d(-d.y(), d.x()) *
-                                                                (std::sqrt(h2) / dn);
+            const Eigen::Vector2d along = d * (a / dn),
+                                  across = Eigen::Vector2d(-d.y(), d.x()) * (std::sqrt(h2) / dn);
             for (double side : {1.0, -1.0}) {
                 const Eigen::Vector2d x = pivot + along + side * across;
                 if (inSpanDirection(x - piece.center, piece.from, piece.to, piece.sweep,
@@ -186,18 +186,19 @@ void FollowerModel::armContacts(double phi, std::vector<Candidate>& out) const {
                 const auto g = [&](double t) {
                     return (splinePitch(piece.coeff, offset, t) - pivotNow).squaredNorm() - L * L;
                 };
-                forEachRoot(g, piece.tLow - piece.slack, piece.tHigh + piece.slack, [&](double root) {
-                    const JetVec ct = splinePitch(piece.coeff, offset, Jet::variable(root));
-                    const Eigen::Vector2d c0(ct.x.c[0], ct.y.c[0]), c1(ct.x.c[1], ct.y.c[1]);
-                    const double gt = 2.0 * (c0 - pivotNow).dot(c1);
-                    if (gt == 0.0) return;
-                    Jet t = Jet::constant(root);
-                    for (int it = 0; it < 4; ++it) {
-                        const JetVec r = splinePitch(piece.coeff, offset, t) - pivot;
-                        t = t - (dot(r, r) - L * L) * (1.0 / gt);
-                    }
-                    add(splinePitch(piece.coeff, offset, t), piece.segment);
-                });
+                forEachRoot(
+                    g, piece.tLow - piece.slack, piece.tHigh + piece.slack, [&](double root) {
+                        const JetVec ct = splinePitch(piece.coeff, offset, Jet::variable(root));
+                        const Eigen::Vector2d c0(ct.x.c[0], ct.y.c[0]), c1(ct.x.c[1], ct.y.c[1]);
+                        const double gt = 2.0 * (c0 - pivotNow).dot(c1);
+                        if (gt == 0.0) return;
+                        Jet t = Jet::constant(root);
+                        for (int it = 0; it < 4; ++it) {
+                            const JetVec r = splinePitch(piece.coeff, offset, t) - pivot;
+                            t = t - (dot(r, r) - L * L) * (1.0 / gt);
+                        }
+                        add(splinePitch(piece.coeff, offset, t), piece.segment);
+                    });
                 break;
             }
             case Piece::Kind::Vertex:
@@ -276,11 +277,11 @@ Diagnostics FollowerModel::checkArm(const Contour& contour) const {
         }
     }
     if (!(pivotRadius > rFar)) {
-        return {{"follower.pivot",
-                 "is inside the cam: the pivot turns on a circle of radius " +
-                     formatNumber(pivotRadius) + " mm round the cam centre, but the profile " +
-                     "reaches " + formatNumber(rFar) + " mm at " +
-                     formatNumber(radToDeg(phiFar)) + "°; move it farther out"}};
+        return {{"follower.pivot", "is inside the cam: the pivot turns on a circle of radius " +
+                                       formatNumber(pivotRadius) +
+                                       " mm round the cam centre, but the profile " + "reaches " +
+                                       formatNumber(rFar) + " mm at " +
+                                       formatNumber(radToDeg(phiFar)) + "°; move it farther out"}};
     }
     const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
     const double L = m_spec.armLength;
@@ -300,20 +301,18 @@ Diagnostics FollowerModel::checkArm(const Contour& contour) const {
         const std::string where = "at " + formatNumber(radToDeg(phi)) + "°";
         const std::string what = rho > 0.0 ? "the roller" : "the tip";
         if (L + rho <= nearest) {
-            return {{"follower.arm_length",
-                     "is too short: " + where + " the cam is " + formatNumber(nearest) +
-                         " mm from the pivot, and " + what + " reaches only " +
-                         formatNumber(L + rho) + " mm"}};
+            return {{"follower.arm_length", "is too short: " + where + " the cam is " +
+                                                formatNumber(nearest) + " mm from the pivot, and " +
+                                                what + " reaches only " + formatNumber(L + rho) +
+                                                " mm"}};
         }
         if (L - rho >= farthest) {
-            return {{"follower.arm_length",
-                     "is too long: " + where + " " + what +
-                         " passes beyond the whole cam (at most " + formatNumber(farthest) +
-                         " mm from the pivot)"}};
+            return {{"follower.arm_length", "is too long: " + where + " " + what +
+                                                " passes beyond the whole cam (at most " +
+                                                formatNumber(farthest) + " mm from the pivot)"}};
         }
-        return {{"follower.arm_length",
-                 "does not let " + what + " touch the cam " + where +
-                     " (no contact on the chosen side of the arm)"}};
+        return {{"follower.arm_length", "does not let " + what + " touch the cam " + where +
+                                            " (no contact on the chosen side of the arm)"}};
     }
     return {};
 }
