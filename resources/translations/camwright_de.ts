@@ -239,7 +239,7 @@
 <context>
     <name>PlotKind</name>
     <message>
-        <location filename="../../src/app/export/plot_picture.cpp" line="+101" />
+        <location filename="../../src/app/export/plot_picture.cpp" line="+103" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
@@ -267,6 +267,11 @@
         <location line="+2" />
         <source>Axis accelerations</source>
         <translation>Achsbeschleunigungen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Pressure angle</source>
+        <translation>Druckwinkel</translation>
     </message>
 </context>
 <context>
@@ -297,7 +302,7 @@
         <translation>Abtastpunkte je Umdrehung ändern</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+4" />
         <source>Change follower</source>
         <translation>Stößel ändern</translation>
     </message>
@@ -490,7 +495,7 @@
         <translation>Mausrad: zoomen · Ziehen: verschieben · Griff ziehen: Mittelpunkt verschieben oder Radius des ausgewählten Bogens ändern</translation>
     </message>
     <message>
-        <location line="+67" />
+        <location line="+65" />
         <source>centres</source>
         <translation>Mittelpunkte</translation>
     </message>
@@ -883,7 +888,7 @@
         <translation>Druckwinkel [°]</translation>
     </message>
     <message>
-        <location line="+146" />
+        <location line="+148" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -908,7 +913,7 @@
         <translation>Der Stößel kann diese Scheibe nicht abtasten: %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+3" />
         <source>The follower cannot ride this cam.</source>
         <translation>Der Stößel kann diese Scheibe nicht abtasten.</translation>
     </message>
@@ -1436,7 +1441,7 @@
         <translation>Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow_exports.cpp" line="+48" />
+        <location filename="../../src/app/mainwindow_exports.cpp" line="+49" />
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
@@ -1451,12 +1456,17 @@
         <translation>Diagramm exportieren…</translation>
     </message>
     <message>
-        <location line="+58" />
+        <location line="+64" />
         <source>Nothing has been computed yet.</source>
         <translation>Es wurde noch nichts berechnet.</translation>
     </message>
     <message>
         <location line="+2" />
+        <source>The project has no follower that rides its cam: there is no pressure-angle plot.</source>
+        <translation>Das Projekt hat keinen Stößel, der seine Scheibe abtastet: es gibt kein Druckwinkel-Diagramm.</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>The project has no machining section: there is no %1 plot.</source>
         <translation>Das Projekt hat keinen Bearbeitungsabschnitt: es gibt kein Diagramm „%1“.</translation>
     </message>

@@ -20,6 +20,7 @@
 #include "mainwindow.h"
 #include "ui_mainwindow.h"
 #include "views/contour_view.h"
+#include "views/follower_panel.h"
 #include "views/kinematics_plots.h"
 #include "views/machining_panel.h"
 
@@ -98,6 +99,8 @@ QCustomPlot* MainWindow::plotWidget(PlotKind kind) const {
             return m_machining->feedPlot();
         case PlotKind::AxisAcceleration:
             return m_machining->accelerationPlot();
+        case PlotKind::PressureAngle:
+            return m_follower->pressurePlot();
     }
     return nullptr;
 }
@@ -111,7 +114,11 @@ std::vector<PlotKind> MainWindow::drawablePlots() const {
                            m_document->project().machining.has_value() &&
                            m_engine->latestTiming() != nullptr;
     for (PlotKind kind : kPlotKinds) {
-        if (!isMachiningPlot(kind) || machining) kinds.push_back(kind);
+        if (kind == PlotKind::PressureAngle) {
+            if (m_shown->follower) kinds.push_back(kind);
+        } else if (!isMachiningPlot(kind) || machining) {
+            kinds.push_back(kind);
+        }
     }
     return kinds;
 }
@@ -122,6 +129,9 @@ QByteArray MainWindow::plotPicture(PlotKind kind, PictureFormat format, QSize si
     if (std::find(drawable.begin(), drawable.end(), kind) == drawable.end()) {
         if (problem) {
             *problem = !m_shown ? tr("Nothing has been computed yet.")
+                       : kind == PlotKind::PressureAngle
+                           ? tr("The project has no follower that rides its cam: there is no "
+                                "pressure-angle plot.")
                        : !m_document->project().machining
                            ? tr("The project has no machining section: there is no %1 plot.")
                                  .arg(plotKindTitle(kind))

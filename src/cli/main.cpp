@@ -35,7 +35,7 @@ commands:
          [--tolerance MM] [--points N] [--dialect csv|codesys] [--tool-radius MM]
          [--polyline] [--spline-entities] [--centres]
          [--depth MM] [--step-down MM] [--compensation]
-         [--plot contour|velocity|acceleration|jerk|feed|axis-acceleration] [--size WxH]
+         [--plot contour|velocity|acceleration|jerk|feed|axis-acceleration|pressure-angle] [--size WxH]
                                         the profile for CAD (dxf: LINE/ARC on layer CONTOUR,
                                         TOOLPATH with --tool-radius, CENTRES; svg: 1:1 in mm),
                                         G-code milling it from outside (gcode: the tool-centre

@@ -174,6 +174,24 @@ TEST(PlotPictureMachining, FeedAndAxisAccelerationNeedAMachiningSection) {
     }
 }
 
+TEST(PlotPictureFollower, ThePressureAngleNeedsAFollowerAndShowsTheLimitCrossed) {
+    test::TempDir dir;
+    const std::string out = dir.file("pressure.png");
+    auto r = test::runCli(
+        {"export", kExample, "--format", "png", "--plot", "pressure-angle", "--out", out});
+    EXPECT_EQ(r.exitCode, 3);
+    EXPECT_NE(r.err.find("no follower"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+    // A swinging knife beyond its 45° limit in five ranges: the curve blue, those red.
+    const std::string arm = test::dataPath("reference/followers/five-lobe-arm-knife.cam.json");
+    r = test::runCli({"export", arm, "--format", "png", "--plot", "pressure-angle", "--out", out});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const QImage image(QString::fromStdString(out));
+    ASSERT_FALSE(image.isNull());
+    EXPECT_GT(pixelsNear(image, QColor(20, 90, 160)), 300);
+    EXPECT_GT(pixelsNear(image, QColor(200, 30, 30)), 50);
+}
+
 TEST(PlotPictureArguments, EveryBadArgumentIsNamedAndNoFileIsLeft) {
     test::TempDir dir;
     const std::string out = dir.file("keep.png");

@@ -78,6 +78,8 @@ QString plotKindName(PlotKind kind) {
             return "feed";
         case PlotKind::AxisAcceleration:
             return "axis-acceleration";
+        case PlotKind::PressureAngle:
+            return "pressure-angle";
     }
     return {};
 }
@@ -109,6 +111,8 @@ QString plotKindTitle(PlotKind kind) {
             return QCoreApplication::translate("PlotKind", "Feed along the path");
         case PlotKind::AxisAcceleration:
             return QCoreApplication::translate("PlotKind", "Axis accelerations");
+        case PlotKind::PressureAngle:
+            return QCoreApplication::translate("PlotKind", "Pressure angle");
     }
     return {};
 }

@@ -24,15 +24,16 @@ enum class PlotKind {
     Jerk,              ///< "jerk"
     Feed,              ///< "feed": the machining panel's feed along the path
     AxisAcceleration,  ///< "axis-acceleration": the machining panel's axis accelerations
+    PressureAngle,     ///< "pressure-angle": the follower panel's, with the limit
 };
-inline constexpr PlotKind kPlotKinds[] = {PlotKind::Contour,      PlotKind::Velocity,
-                                          PlotKind::Acceleration, PlotKind::Jerk,
-                                          PlotKind::Feed,         PlotKind::AxisAcceleration};
+inline constexpr PlotKind kPlotKinds[] = {
+    PlotKind::Contour, PlotKind::Velocity,         PlotKind::Acceleration, PlotKind::Jerk,
+    PlotKind::Feed,    PlotKind::AxisAcceleration, PlotKind::PressureAngle};
 /// @brief "contour", "velocity", …: the name on the command line and in file names.
 [[nodiscard]] QString plotKindName(PlotKind kind);
 /// @brief The kind of that name; none for any other.
 [[nodiscard]] std::optional<PlotKind> plotKindNamed(const QString& name);
-/// @brief "contour, velocity, acceleration, jerk, feed, axis-acceleration".
+/// @brief "contour, velocity, acceleration, jerk, feed, axis-acceleration, pressure-angle".
 [[nodiscard]] QString plotKindNames();
 /// @brief The plot's title as the user reads it (translated): "Velocity".
 [[nodiscard]] QString plotKindTitle(PlotKind kind);

@@ -237,8 +237,10 @@ void FollowerPanel::setResult(const ComputeResultPtr& result) {
         for (qsizetype k = 0; k < y.size(); ++k) {
             beyond[k] = std::abs(y[k]) > limit ? y[k] : std::numeric_limits<double>::quiet_NaN();
         }
-        m_pressurePlot->graph(0)->setData(x, y, true);
-        m_pressurePlot->graph(1)->setData(x, beyond, true);
+        // Sorted by time: over angle a cam turning clockwise runs from 0 down to −360°.
+        const bool ascending = x.size() < 2 || x.front() <= x.back();
+        m_pressurePlot->graph(0)->setData(x, y, ascending);
+        m_pressurePlot->graph(1)->setData(x, beyond, ascending);
         m_limitLines[0]->point1->setCoords(0, limit);
         m_limitLines[0]->point2->setCoords(1, limit);
         m_limitLines[1]->point1->setCoords(0, -limit);
