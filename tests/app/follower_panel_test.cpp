@@ -19,6 +19,7 @@
 #include "engine/compute_engine.h"
 #include "follower/follower_analysis.h"
 #include "mainwindow.h"
+#include "views/contour_view.h"
 #include "views/follower_panel.h"
 #include "views/kinematics_plots.h"
 
@@ -205,6 +206,51 @@ TEST(Play, TheCursorTurnsAtTheChosenFractionOfTheRealSpeedAndStopsOnPause) {
     const double paused = window.cursorTime();
     QTest::qWait(100);
     EXPECT_EQ(window.cursorTime(), paused);
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(FollowerInContourView, TheArmRollerContactAndNormalAreDrawnWhereTheCoreSays) {
+    const QString arm = QString::fromStdString(
+        test::dataPath("reference/followers/pear-tangent-arm-roller.cam.json"));
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(arm).isEmpty());
+    window.show();
+    ASSERT_TRUE(waitForResult(window));
+    const ComputeResultPtr result = window.engine()->latestResult();
+    ASSERT_TRUE(result->ok());
+    ASSERT_NE(result->follower, nullptr);
+    const FollowerSpec& spec = *result->project->follower;
+    for (const double deg : {10.0, 123.4, 271.0}) {
+        const double phi = degToRad(deg);
+        window.contourView()->setCursorAngle(phi);
+        const ContourView::FollowerMarkers m = window.contourView()->followerMarkers();
+        ASSERT_TRUE(m.shown);
+        ASSERT_TRUE(m.pivotShown);
+        // The pivot turned by φ; the roller L from it and ρ from the contact, which lies on the
+        // profile along the normal (plane geometry, not the follower's own numbers).
+        const Eigen::Vector2d pivot(
+            std::cos(phi) * spec.pivot.x() - std::sin(phi) * spec.pivot.y(),
+            std::sin(phi) * spec.pivot.x() + std::cos(phi) * spec.pivot.y());
+        const Eigen::Vector2d center(m.center.x(), m.center.y()),
+            contact(m.contact.x(), m.contact.y());
+        EXPECT_NEAR((Eigen::Vector2d(m.pivot.x(), m.pivot.y()) - pivot).norm(), 0.0, 1e-9) << deg;
+        EXPECT_NEAR((center - pivot).norm(), spec.armLength, 1e-9) << deg;
+        EXPECT_NEAR(m.rollerRadius, spec.radius, 1e-12);
+        EXPECT_NEAR((center - contact).norm(), spec.radius, 1e-9) << deg;
+        const Eigen::Vector2d tip(m.normalTip.x(), m.normalTip.y());
+        const Eigen::Vector2d a = (tip - contact).normalized(), b = (center - contact).normalized();
+        EXPECT_NEAR((a - b).norm(), 0.0, 1e-9) << deg;  // the normal points through the centre
+    }
+    // A project without a follower draws none.
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(waitForResult(window));
+    window.contourView()->setCursorAngle(0.3);
+    EXPECT_FALSE(window.contourView()->followerMarkers().shown);
 }
 
 }  // namespace

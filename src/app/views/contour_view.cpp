@@ -261,6 +261,24 @@ void ContourView::setCursorAngle(double phi) {
     m_cursorLayer->replot();
 }
 
+ContourView::FollowerMarkers ContourView::followerMarkers() const {
+    const FollowerItems& items = m_followerItems;
+    FollowerMarkers m;
+    m.shown = items.contact->visible();
+    m.pivotShown = items.pivot->visible();
+    m.pivot = items.pivot->position->coords();
+    m.contact = items.contact->position->coords();
+    m.normalTip = items.normal->end->coords();
+    if (items.roller->visible()) {
+        const QPointF a = items.roller->topLeft->coords(), b = items.roller->bottomRight->coords();
+        m.center = (a + b) / 2.0;
+        m.rollerRadius = (b.x() - a.x()) / 2.0;
+    } else {
+        m.center = items.guide->end->coords();
+    }
+    return m;
+}
+
 void ContourView::placeFollower(double phi) {
     FollowerItems& items = m_followerItems;
     const FollowerModel* model = m_result ? m_result->follower.get() : nullptr;

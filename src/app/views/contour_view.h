@@ -34,6 +34,14 @@ public:
     /// @brief Keeps equal scales at the current viewport: refits while the user has not zoomed
     /// or panned, else widens one axis (what a resize does; a picture at another size too).
     void fitToViewport();
+    /// @brief Where the follower is drawn now (mm, the cam frame): for tests and pictures.
+    struct FollowerMarkers {
+        bool shown = false;
+        bool pivotShown = false;
+        QPointF pivot, center, contact, normalTip;
+        double rollerRadius = 0.0;  ///< 0 unless a roller is drawn
+    };
+    [[nodiscard]] FollowerMarkers followerMarkers() const;
     /// @brief Why the contour shown is out of date; empty when it is the current project's.
     [[nodiscard]] QString staleReason() const;
 
