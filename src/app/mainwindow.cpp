@@ -101,11 +101,7 @@ MainWindow::MainWindow(QWidget* parent)
         if (!r) return;
         setCursorTime(phi / r->omega);  // the instant the ray points there (reduced below)
     });
-    connect(m_plots, &KinematicsPlots::cursorMoved, this, [this](double x) {
-        const auto& r = m_shown;
-        if (!r) return;
-        setCursorTime(r->axis == PlotAxis::Angle ? degToRad(x) / r->omega : x);
-    });
+    connect(m_plots, &KinematicsPlots::cursorMoved, this, &MainWindow::setCursorAtPlotX);
 
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
@@ -240,10 +236,7 @@ void MainWindow::setUpDocks() {
                 if (velocity->xAxis->range() != r) velocity->xAxis->setRange(r);
             });
     connect(pressure, &QCustomPlot::mouseMove, this, [this, pressure](QMouseEvent* e) {
-        const auto& r = m_shown;
-        if (!r) return;
-        const double x = pressure->xAxis->pixelToCoord(e->position().x());
-        setCursorTime(r->axis == PlotAxis::Angle ? degToRad(x) / r->omega : x);
+        setCursorAtPlotX(pressure->xAxis->pixelToCoord(e->position().x()));
     });
     resizeDocks({m_ui->motionDock, m_ui->readoutDock}, {140, 400}, Qt::Vertical);
     for (QDockWidget* dock :
@@ -426,6 +419,12 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
             .arg(QLocale().toString(static_cast<qlonglong>(result->sampleCount)),
                  QLocale().toString(result->computeMs, 'f', 1)));
     emit resultShown(result);
+}
+
+void MainWindow::setCursorAtPlotX(double x) {
+    const auto& r = m_shown;
+    if (!r) return;
+    setCursorTime(r->axis == PlotAxis::Angle ? degToRad(x) / r->omega : x);
 }
 
 void MainWindow::setCursorTime(double t) {

@@ -77,6 +77,8 @@ public:
 
     /// @brief Puts the cursor at time t (s): readout, follower ray and plot cursors.
     void setCursorTime(double t);
+    /// @brief Puts the cursor at x of the plots' shared axis (degrees or seconds).
+    void setCursorAtPlotX(double x);
 
     /// @brief The widget that draws this plot.
     [[nodiscard]] QCustomPlot* plotWidget(PlotKind kind) const;

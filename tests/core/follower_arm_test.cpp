@@ -75,9 +75,7 @@ double discPsi(const Eigen::Vector2d& c, double R, const FollowerSpec& spec, dou
 TEST(FollowerArm, OnAnEccentricDiscItIsTheClosedFormOfTwoCircles) {
     const Eigen::Vector2d c(7.0, -3.0);
     const double R = 20.0;
-    Project p;
-    p.contour.push_back(SegmentSpec{Arc{c, R, Branch::Outer}, 0.0, 360.0});
-    const Contour contour = Contour::build(p).value();
+    const Contour contour = test::disc(c, R);
     for (const ArmSide side : {ArmSide::Ccw, ArmSide::Cw}) {
         for (const FollowerType type : {FollowerType::Roller, FollowerType::Knife}) {
             const double rho = type == FollowerType::Roller ? 3.0 : 0.0;

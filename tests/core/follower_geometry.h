@@ -25,6 +25,13 @@ inline Contour load(const std::string& path) {
 
 inline Contour sixLobe() { return load(test::examplePath("six-lobe-arc-cam.cam.json")); }
 
+/// A disc: one whole circle of radius R about c (an eccentric circle when c is not 0).
+inline Contour disc(const Eigen::Vector2d& c, double R) {
+    Project p;
+    p.contour.push_back(SegmentSpec{Arc{c, R, Branch::Outer}, 0.0, 360.0});
+    return Contour::build(p).value();
+}
+
 inline Eigen::Vector2d unit(double phi) { return {std::cos(phi), std::sin(phi)}; }
 inline Eigen::Vector2d normalOf(double phi) { return {-std::sin(phi), std::cos(phi)}; }
 

@@ -41,9 +41,7 @@ TEST(FollowerOnACircle, KnifeWithOffsetIsTheOuterCrossingOfItsLine) {
     // A circle of radius 20 about (8, 3): s(φ) = c·u + √(R² − (e − c·n)²).
     const Eigen::Vector2d c(8.0, 3.0);
     const double R = 20.0, e = 5.0;
-    Project p;
-    p.contour.push_back(SegmentSpec{Arc{c, R, Branch::Outer}, 0.0, 360.0});
-    const Contour contour = Contour::build(p).value();
+    const Contour contour = test::disc(c, R);
     const FollowerModel m = model(contour, FollowerType::Knife, e, 0.0);
     for (double deg = 0.0; deg < 360.0; deg += 7.3) {
         const double phi = degToRad(deg);
@@ -67,9 +65,7 @@ TEST(FollowerOnACircle, KnifeWithOffsetIsTheOuterCrossingOfItsLine) {
 TEST(FollowerOnACircle, RollerRidesTheCircleOfRadiusRPlusRho) {
     const Eigen::Vector2d c(-6.0, 4.0);
     const double R = 25.0, rho = 4.0, e = -7.0;
-    Project p;
-    p.contour.push_back(SegmentSpec{Arc{c, R, Branch::Outer}, 0.0, 360.0});
-    const Contour contour = Contour::build(p).value();
+    const Contour contour = test::disc(c, R);
     const FollowerModel m = model(contour, FollowerType::Roller, e, rho);
     for (double deg = 0.5; deg < 360.0; deg += 11.1) {
         const double phi = degToRad(deg);
@@ -92,9 +88,7 @@ TEST(FollowerOnACircle, RollerRidesTheCircleOfRadiusRPlusRho) {
 TEST(FollowerOnACircle, FlatFaceRestsOnTheSupportFunction) {
     const Eigen::Vector2d c(5.0, -2.0);
     const double R = 18.0;
-    Project p;
-    p.contour.push_back(SegmentSpec{Arc{c, R, Branch::Outer}, 0.0, 360.0});
-    const Contour contour = Contour::build(p).value();
+    const Contour contour = test::disc(c, R);
     const FollowerModel m = model(contour, FollowerType::Flat, 3.0, 0.0);
     for (double deg = 0.0; deg < 360.0; deg += 13.0) {
         const double phi = degToRad(deg);

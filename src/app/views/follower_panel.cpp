@@ -115,14 +115,13 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     m_cursor->point2->setCoords(0, 1);
     layout->addWidget(m_pressurePlot, 1);
 
-    connect(m_checks, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
+    // A click, or Enter on the current line, goes to the check's angle.
+    const auto pick = [this](QListWidgetItem* item) {
         const QVariant phi = item->data(Qt::UserRole);
         if (phi.isValid()) emit anglePicked(phi.toDouble());
-    });
-    connect(m_checks, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
-        const QVariant phi = item->data(Qt::UserRole);
-        if (phi.isValid()) emit anglePicked(phi.toDouble());
-    });
+    };
+    connect(m_checks, &QListWidget::itemClicked, this, pick);
+    connect(m_checks, &QListWidget::itemActivated, this, pick);
     const auto choice = [this](QComboBox* box, std::function<void(FollowerSpec&, int)> set) {
         connect(box, &QComboBox::currentIndexChanged, this, [this, set](int index) {
             if (m_refreshing) return;

@@ -139,8 +139,8 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
     }
     model.buildIndex();
     if (model.oscillating()) {
-        Diagnostics armErrors = model.checkArm(contour);
-        if (!armErrors.empty()) return armErrors;
+        Diagnostics pivotErrors = model.checkPivot(contour);
+        if (!pivotErrors.empty()) return pivotErrors;
     }
 
     // The smallest s: every local minimum of a fine sampling, refined by golden sections.
@@ -148,6 +148,12 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
     const double h = kTwoPi / kSamples;
     std::vector<double> s(kSamples);
     for (int i = 0; i < kSamples; ++i) s[i] = model.best(model.m_phiBegin + i * h).rank;
+    // An arm that finds no contact at a sample cannot ride the cam (a line always finds one).
+    for (int i = 0; i < kSamples && model.oscillating(); ++i) {
+        if (!(s[i] > -std::numeric_limits<double>::infinity())) {
+            return model.armUnreachable(contour, model.m_phiBegin + i * h);
+        }
+    }
     double minimum = std::numeric_limits<double>::infinity();
     for (int i = 0; i < kSamples; ++i) {
         const double prev = s[(i + kSamples - 1) % kSamples], next = s[(i + 1) % kSamples];

@@ -119,7 +119,9 @@ private:
     [[nodiscard]] Candidate best(double phi) const;
     [[nodiscard]] Candidate best(double phi, const Eigen::Vector2d& u) const;
     [[nodiscard]] FollowerState armState(double phi, double omega, const Candidate& c) const;
-    [[nodiscard]] Diagnostics checkArm(const Contour& contour) const;  // follower_arm.cpp
+    /// follower_arm.cpp: a pivot that comes inside the cam; why the arm finds no contact at φ.
+    [[nodiscard]] Diagnostics checkPivot(const Contour& contour) const;
+    [[nodiscard]] Diagnostics armUnreachable(const Contour& contour, double phi) const;
 
     FollowerSpec m_spec;
     std::vector<Piece> m_pieces;

@@ -252,69 +252,77 @@ FollowerState FollowerModel::armState(double phi, double omega, const Candidate&
     return st;
 }
 
-Diagnostics FollowerModel::checkArm(const Contour& contour) const {
-    constexpr int kSamples = 2048;
-    const double h = kTwoPi / kSamples;
+namespace {
+
+/// The profile point on the ray at φ.
+Eigen::Vector2d profileAt(const Contour& contour, double phi) {
+    const double r = contour.segment(contour.segmentAt(phi)).evaluate(phi).r;
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+constexpr int kProfileSamples = 2048;
+
+}  // namespace
+
+Diagnostics FollowerModel::checkPivot(const Contour& contour) const {
+    const double h = kTwoPi / kProfileSamples;
     const double pivotRadius = m_spec.pivot.norm();
-    const auto profileAt = [&](double phi) {
-        const double r = contour.segment(contour.segmentAt(phi)).evaluate(phi).r;
-        return Eigen::Vector2d(r * std::cos(phi), r * std::sin(phi));
-    };
     // The pivot turns on a circle of radius |A| round the cam centre: it must stay outside.
     int far = 0;
-    for (int i = 1; i < kSamples; ++i) {
-        if (profileAt(m_phiBegin + i * h).norm() > profileAt(m_phiBegin + far * h).norm()) far = i;
+    for (int i = 1; i < kProfileSamples; ++i) {
+        if (profileAt(contour, m_phiBegin + i * h).norm() >
+            profileAt(contour, m_phiBegin + far * h).norm()) {
+            far = i;
+        }
     }
-    double phiFar = m_phiBegin + far * h, rFar = profileAt(phiFar).norm();
+    double phiFar = m_phiBegin + far * h, rFar = profileAt(contour, phiFar).norm();
     for (int it = 0; it < 60; ++it) {  // climb to the top between the neighbouring samples
         const double step = h * std::pow(0.5, it);
         for (double candidate : {phiFar - step, phiFar + step}) {
-            const double r = profileAt(candidate).norm();
+            const double r = profileAt(contour, candidate).norm();
             if (r > rFar) {
                 rFar = r;
                 phiFar = candidate;
             }
         }
     }
-    if (!(pivotRadius > rFar)) {
-        return {{"follower.pivot", "is inside the cam: the pivot turns on a circle of radius " +
-                                       formatNumber(pivotRadius) +
-                                       " mm round the cam centre, but the profile " + "reaches " +
-                                       formatNumber(rFar) + " mm at " +
-                                       formatNumber(radToDeg(phiFar)) + "°; move it farther out"}};
-    }
+    if (pivotRadius > rFar) return {};
+    return {{"follower.pivot", "is inside the cam: the pivot turns on a circle of radius " +
+                                   formatNumber(pivotRadius) +
+                                   " mm round the cam centre, but the profile reaches " +
+                                   formatNumber(rFar) + " mm at " + formatNumber(radToDeg(phiFar)) +
+                                   "°; move it farther out"}};
+}
+
+Diagnostics FollowerModel::armUnreachable(const Contour& contour, double phi) const {
+    const double h = kTwoPi / kProfileSamples;
     const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
     const double L = m_spec.armLength;
-    for (int i = 0; i < kSamples; ++i) {
-        const double phi = m_phiBegin + i * h;
-        if (best(phi).found) continue;
-        // How near and how far the cam is from the pivot at this angle.
-        const Eigen::Vector2d pivot(
-            std::cos(phi) * m_spec.pivot.x() - std::sin(phi) * m_spec.pivot.y(),
-            std::sin(phi) * m_spec.pivot.x() + std::cos(phi) * m_spec.pivot.y());
-        double nearest = std::numeric_limits<double>::infinity(), farthest = 0.0;
-        for (int k = 0; k < kSamples; ++k) {
-            const double distance = (profileAt(m_phiBegin + k * h) - pivot).norm();
-            nearest = std::min(nearest, distance);
-            farthest = std::max(farthest, distance);
-        }
-        const std::string where = "at " + formatNumber(radToDeg(phi)) + "°";
-        const std::string what = rho > 0.0 ? "the roller" : "the tip";
-        if (L + rho <= nearest) {
-            return {{"follower.arm_length", "is too short: " + where + " the cam is " +
-                                                formatNumber(nearest) + " mm from the pivot, and " +
-                                                what + " reaches only " + formatNumber(L + rho) +
-                                                " mm"}};
-        }
-        if (L - rho >= farthest) {
-            return {{"follower.arm_length", "is too long: " + where + " " + what +
-                                                " passes beyond the whole cam (at most " +
-                                                formatNumber(farthest) + " mm from the pivot)"}};
-        }
-        return {{"follower.arm_length", "does not let " + what + " touch the cam " + where +
-                                            " (no contact on the chosen side of the arm)"}};
+    // How near and how far the cam is from the pivot at this angle.
+    const Eigen::Vector2d pivot(
+        std::cos(phi) * m_spec.pivot.x() - std::sin(phi) * m_spec.pivot.y(),
+        std::sin(phi) * m_spec.pivot.x() + std::cos(phi) * m_spec.pivot.y());
+    double nearest = std::numeric_limits<double>::infinity(), farthest = 0.0;
+    for (int k = 0; k < kProfileSamples; ++k) {
+        const double distance = (profileAt(contour, m_phiBegin + k * h) - pivot).norm();
+        nearest = std::min(nearest, distance);
+        farthest = std::max(farthest, distance);
     }
-    return {};
+    const std::string where = "at " + formatNumber(radToDeg(phi)) + "°";
+    const std::string what = rho > 0.0 ? "the roller" : "the tip";
+    if (L + rho <= nearest) {
+        return {{"follower.arm_length", "is too short: " + where + " the cam is " +
+                                            formatNumber(nearest) + " mm from the pivot, and " +
+                                            what + " reaches only " + formatNumber(L + rho) +
+                                            " mm"}};
+    }
+    if (L - rho >= farthest) {
+        return {{"follower.arm_length", "is too long: " + where + " " + what +
+                                            " passes beyond the whole cam (at most " +
+                                            formatNumber(farthest) + " mm from the pivot)"}};
+    }
+    return {{"follower.arm_length", "does not let " + what + " touch the cam " + where +
+                                        " (no contact on the chosen side of the arm)"}};
 }
 
 }  // namespace cam
