@@ -304,8 +304,10 @@ void writeSampleCsv(const Loaded& loaded, long long n, std::ostream& out,
     sampleTurn(loaded.contour, loaded.omega, static_cast<std::size_t>(n), turn);
     requireFiniteColumns(turn);
 
+    FollowerTurn followerTurn;
     std::string chunk(kSampleCsvHeader);
     if (follower) {
+        sampleFollowerTurn(*follower, loaded.omega, static_cast<std::size_t>(n), followerTurn);
         chunk.pop_back();
         chunk += ',';
         chunk += followerCsvColumns(*follower);
@@ -323,7 +325,7 @@ void writeSampleCsv(const Loaded& loaded, long long n, std::ostream& out,
         appendSampleCsvRow(chunk, turn, k);
         if (follower) {
             chunk.pop_back();
-            appendFollowerCsvColumns(chunk, *follower, turn.phi[k], loaded.omega);
+            appendFollowerCsvColumns(chunk, *follower, followerTurn, k);
             chunk += '\n';
         }
         if (chunk.size() > (1u << 20)) flush();

@@ -134,7 +134,9 @@ TEST(FollowerPanel, TheChecksAreTheCoresAndAClickGoesToTheirAngle) {
         const double t = result->period * k / ComputeResult::kFollowerCurvePoints;
         const double alpha = radToDeg(model.at(result->omega * t, result->omega).pressureAngle);
         EXPECT_NEAR(angles->at(k)->key, radToDeg(result->omega * t), 1e-9);
-        EXPECT_NEAR(angles->at(k)->value, alpha, 1e-12);
+        // The engine samples the turn in one go (sampleFollowerTurn: φ_k = ω·(k·T/n), cos/sin
+        // by the block table), so the angle agrees with at() to rounding, not to the last bit.
+        EXPECT_NEAR(angles->at(k)->value, alpha, 1e-9);
         EXPECT_EQ(std::isnan(beyond->at(k)->value), std::abs(alpha) <= 45.0) << k;
         red += std::isnan(beyond->at(k)->value) ? 0 : 1;
     }

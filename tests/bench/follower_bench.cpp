@@ -1,6 +1,7 @@
 // The follower over one full turn of the six-lobe cam (issue "Followers", point 7): a roller of
 // 2 mm with 3 mm offset; s, v, a, j, the pressure angle and both radii of curvature at n equal
-// angle steps into arrays. Compare with BM_KinematicsTurn of the same run (target: within 2×).
+// time steps into arrays (sampleFollowerTurn). Compare with BM_KinematicsTurn of the same run
+// (target: within 2×).
 
 #include <benchmark/benchmark.h>
 
@@ -11,17 +12,10 @@
 #include "contour/contour.h"
 #include "follower/follower.h"
 #include "follower/follower_analysis.h"
+#include "follower/follower_turn.h"
 #include "io/project_json.h"
 
 namespace {
-
-struct FollowerTurn {
-    std::vector<double> s, v, a, j, pressureAngle, rhoProfile, rhoPitch;
-    void resize(std::size_t n) {
-        for (auto* column : {&s, &v, &a, &j, &pressureAngle, &rhoProfile, &rhoPitch})
-            column->resize(n);
-    }
-};
 
 /// The six-lobe example with a roller of 2 mm: offset 3 mm on a line, or (arm) on a swinging
 /// arm from a pivot 60 mm out, 50 mm long.
@@ -50,25 +44,12 @@ RollerCam rollerCam(bool arm) {
 
 void BM_FollowerTurn(benchmark::State& state) {
     const RollerCam setup = rollerCam(state.range(1) == 1);
-    const cam::Contour& contour = setup.contour;
-    const double omega = setup.omega;
-    const cam::FollowerModel model = cam::FollowerModel::build(contour, setup.spec).value();
+    const cam::FollowerModel model = cam::FollowerModel::build(setup.contour, setup.spec).value();
     const auto n = static_cast<std::size_t>(state.range(0));
-    FollowerTurn turn;
-    turn.resize(n);
-    const double step = cam::kTwoPi / static_cast<double>(n);
+    cam::FollowerTurn turn;
+    cam::sampleFollowerTurn(model, setup.omega, n, turn);  // first touch outside the timing
     for (auto _ : state) {
-        for (std::size_t k = 0; k < n; ++k) {
-            const cam::FollowerState f =
-                model.at(contour.phiBegin() + step * static_cast<double>(k), omega);
-            turn.s[k] = f.s;
-            turn.v[k] = f.v;
-            turn.a[k] = f.a;
-            turn.j[k] = f.j;
-            turn.pressureAngle[k] = f.pressureAngle;
-            turn.rhoProfile[k] = f.rhoProfile;
-            turn.rhoPitch[k] = f.rhoPitch;
-        }
+        cam::sampleFollowerTurn(model, setup.omega, n, turn);
         benchmark::DoNotOptimize(turn.rhoPitch.data());
         benchmark::ClobberMemory();
     }
@@ -81,6 +62,26 @@ BENCHMARK(BM_FollowerTurn)
     ->Args({1000000, 0})
     ->Args({100000, 1})
     ->Unit(benchmark::kMillisecond);
+
+// FollowerModel::at() one angle at a time (what the CLI's state, the contour view's marker and
+// the design checks' refinement call): the cost of one exact evaluation without the batch.
+void BM_FollowerAt(benchmark::State& state) {
+    const RollerCam setup = rollerCam(false);
+    const cam::Contour& contour = setup.contour;
+    const cam::FollowerModel model = cam::FollowerModel::build(contour, setup.spec).value();
+    const auto n = static_cast<std::size_t>(state.range(0));
+    std::vector<double> s(n);
+    const double step = cam::kTwoPi / static_cast<double>(n);
+    for (auto _ : state) {
+        for (std::size_t k = 0; k < n; ++k) {
+            s[k] = model.at(contour.phiBegin() + step * static_cast<double>(k), setup.omega).s;
+        }
+        benchmark::DoNotOptimize(s.data());
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(n));
+}
+BENCHMARK(BM_FollowerAt)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 // The design checks of one turn (analyzeFollower at its default 7200 samples, every extreme
 // refined): what the app's engine adds to a computation when the project has a follower.

@@ -6,6 +6,7 @@
 
 #include "common/angles.h"
 #include "engine/plot_data_preparer.h"
+#include "follower/follower_turn.h"
 #include "timing/timing_job.h"
 
 namespace cam {
@@ -79,14 +80,16 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
             result->followerChecks =
                 analyzeFollower(*model, result->omega, result->contour->phiBegin());
             constexpr std::size_t n = ComputeResult::kFollowerCurvePoints;
+            FollowerTurn turn;
+            if (!sampleFollowerTurn(*model, result->omega, n, turn, &cancel)) return nullptr;
             result->followerX.resize(n + 1);
             result->followerPressureDeg.resize(n + 1);
             for (std::size_t k = 0; k <= n; ++k) {
                 const double t = result->period * static_cast<double>(k) / n;
                 const double phi = result->omega * t;
                 result->followerX[k] = request.axis == PlotAxis::Angle ? radToDeg(phi) : t;
-                result->followerPressureDeg[k] =
-                    radToDeg(model->at(phi, result->omega).pressureAngle);
+                // The turn's end closes the curve: the angle of its start, one turn on.
+                result->followerPressureDeg[k] = radToDeg(turn.pressureAngle[k % n]);
             }
             result->follower = std::move(model);
         } else {

@@ -51,12 +51,12 @@ std::string_view followerCsvColumns(const FollowerModel& follower) {
     return follower.oscillating() ? kArmCsvColumns : kFollowerCsvColumns;
 }
 
-void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower, double phi,
-                              double omega) {
-    const FollowerState f = follower.at(phi, omega);
-    const double q = follower.oscillating() ? radToDeg(f.s) : f.s;
-    for (const double v : {q, follower.lift(f), f.v, f.a, f.j, radToDeg(f.pressureAngle),
-                           f.rhoProfile, f.rhoPitch}) {
+void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower,
+                              const FollowerTurn& turn, std::size_t k) {
+    const double s = turn.s[k];
+    const double q = follower.oscillating() ? radToDeg(s) : s;
+    for (const double v : {q, follower.liftOf(s), turn.v[k], turn.a[k], turn.j[k],
+                           radToDeg(turn.pressureAngle[k]), turn.rhoProfile[k], turn.rhoPitch[k]}) {
         out += ',';
         if (std::isfinite(v)) appendExact(out, v);  // an empty cell: straight, infinite radius
     }
@@ -69,7 +69,9 @@ Result<std::string> sampleCsv(const Contour& contour, double omega, std::size_t 
     sampleTurn(contour, omega, points, turn);
     if (auto problem = firstNonFiniteSample(turn)) return Diagnostics{std::move(*problem)};
     std::string text(kSampleCsvHeader);
+    FollowerTurn followerTurn;
     if (follower) {
+        sampleFollowerTurn(*follower, omega, points, followerTurn);
         text.pop_back();  // the line end
         text += ',';
         text += followerCsvColumns(*follower);
@@ -80,7 +82,7 @@ Result<std::string> sampleCsv(const Contour& contour, double omega, std::size_t 
         appendSampleCsvRow(text, turn, k);
         if (follower) {
             text.pop_back();
-            appendFollowerCsvColumns(text, *follower, turn.phi[k], omega);
+            appendFollowerCsvColumns(text, *follower, followerTurn, k);
             text += '\n';
         }
     }

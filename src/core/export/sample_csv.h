@@ -10,6 +10,7 @@
 #include "common/diagnostic.h"
 #include "contour/contour.h"
 #include "follower/follower.h"
+#include "follower/follower_turn.h"
 #include "kinematics/kinematics.h"
 
 namespace cam {
@@ -32,9 +33,9 @@ inline constexpr std::string_view kArmCsvColumns =
 /// @brief The columns for this follower: kFollowerCsvColumns or kArmCsvColumns.
 [[nodiscard]] std::string_view followerCsvColumns(const FollowerModel& follower);
 
-/// @brief Appends "," and the follower's columns at cam angle φ (no line end).
-void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower, double phi,
-                              double omega);
+/// @brief Appends "," and the follower's columns of sample k of `turn` (no line end).
+void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower,
+                              const FollowerTurn& turn, std::size_t k);
 
 /// @brief The first sample holding a number that is not finite, located "sample K, COLUMN";
 /// none when every value is finite (a turn too fast or too big for a double).

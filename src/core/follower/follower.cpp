@@ -495,10 +495,14 @@ FollowerModel::Candidate FollowerModel::best(double phi, const Eigen::Vector2d& 
     return top;
 }
 
+double FollowerModel::liftOf(double q) const {
+    if (!oscillating()) return q - m_minRank;
+    return (awaySign() * (q - m_pivotDirection) - m_minRank) * (180.0 / kPi);
+}
+
 std::array<double, 4> FollowerModel::liftPhi(const FollowerState& state) const {
     const double sign = awaySign(), unit = oscillating() ? 180.0 / kPi : 1.0;
-    const double q = oscillating() ? sign * (state.s - m_pivotDirection) : state.s;
-    return {(q - m_minRank) * unit, sign * unit * state.sPhi[1], sign * unit * state.sPhi[2],
+    return {liftOf(state.s), sign * unit * state.sPhi[1], sign * unit * state.sPhi[2],
             sign * unit * state.sPhi[3]};
 }
 

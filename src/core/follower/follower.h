@@ -62,7 +62,9 @@ public:
     /// @brief The lift and its φ-derivatives (per rad): s − min s in mm, or on a swinging arm
     /// the angle swung away from the cam from its closest position, in degrees.
     [[nodiscard]] std::array<double, 4> liftPhi(const FollowerState& state) const;
-    [[nodiscard]] double lift(const FollowerState& state) const { return liftPhi(state)[0]; }
+    [[nodiscard]] double lift(const FollowerState& state) const { return liftOf(state.s); }
+    /// @brief The lift at the follower's coordinate q (FollowerState::s).
+    [[nodiscard]] double liftOf(double q) const;
     [[nodiscard]] bool oscillating() const { return m_spec.motion == FollowerMotion::Oscillating; }
     /// @brief +1 when the arm swings away from the cam with growing ψ ("ccw"), −1 ("cw");
     /// +1 on a translating line.
@@ -102,6 +104,7 @@ public:
     };
 
 private:
+    friend class FollowerTurnSampler;  // follower_turn.cpp: the batch path walks the pieces
     struct Candidate;
     /// The pieces that can hold the contact at φ: a bin of the turn (see buildIndex).
     [[nodiscard]] std::span<const std::uint32_t> piecesAt(double phi) const;

@@ -4,6 +4,8 @@
 #include <array>
 
 #include "common/angles.h"
+#include "common/simd.h"
+#include "common/turn_angles.h"
 
 namespace cam {
 
@@ -53,11 +55,8 @@ void SampledTurn::resize(std::size_t n) {
 
 namespace {
 
-// cos/sin of k·dphi come from a block table: cos(b·B·dphi + j·dphi) by the angle-sum rule
-// with both parts computed by std::cos/sin. Unlike a running recurrence this has no
-// loop-carried dependency (so it vectorises) and no error growth (a few ulp, always).
-constexpr std::size_t kBlockBits = 10;
-constexpr std::size_t kBlock = std::size_t{1} << kBlockBits;
+constexpr std::size_t kBlockBits = TurnAngles::kBlockBits;
+constexpr std::size_t kBlock = TurnAngles::kBlock;
 static_assert(kBlock == kSampleBlock);
 
 struct Outputs {
@@ -114,45 +113,28 @@ void runPiece(const Evaluate evaluate, const Outputs o, const double* __restrict
 }
 
 template <class Evaluate>
-void runSegment(const Evaluate& evaluate, const Outputs& o, const std::vector<double>& ct,
-                const std::vector<double>& st, const std::vector<double>& cb,
-                const std::vector<double>& sb, std::size_t k0, std::size_t k1, double omega,
-                double dt, std::int32_t seg) {
-    const std::size_t firstBlock = o.first >> kBlockBits;  // cb/sb start at this block
+void runSegment(const Evaluate& evaluate, const Outputs& o, const TurnAngles& angles,
+                std::size_t k0, std::size_t k1, double omega, double dt, std::int32_t seg) {
     for (std::size_t k = k0; k < k1;) {
-        const std::size_t block = k >> kBlockBits;
-        const std::size_t blockEnd = (block + 1) << kBlockBits;
-        const std::size_t end = std::min(k1, blockEnd);
-        runPiece(evaluate, o, ct.data(), st.data(), cb[block - firstBlock], sb[block - firstBlock],
-                 k, end - k, omega, dt, seg);
+        const std::size_t end = std::min(k1, TurnAngles::blockEnd(k));
+        runPiece(evaluate, o, angles.ct.data(), angles.st.data(), angles.blockCos(k),
+                 angles.blockSin(k), k, end - k, omega, dt, seg);
         k = end;
     }
 }
 
-// The loops above are compiled once per instruction set and the best one for the running CPU
-// is chosen at load time (GCC function multiversioning), so a package built for any x86-64
-// still uses AVX2/AVX-512 where the machine has them. See the README for the figures.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define CAMWRIGHT_MULTIVERSION \
-    __attribute__((flatten, target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define CAMWRIGHT_MULTIVERSION
-#endif
-
+// The loops above are compiled once per instruction set (common/simd.h); see the README for
+// the figures.
 CAMWRIGHT_MULTIVERSION
-void runArcSegment(const Arc::Kernel& kernel, const Outputs& o, const std::vector<double>& ct,
-                   const std::vector<double>& st, const std::vector<double>& cb,
-                   const std::vector<double>& sb, std::size_t k0, std::size_t k1, double omega,
-                   double dt, std::int32_t seg) {
-    runSegment(kernel, o, ct, st, cb, sb, k0, k1, omega, dt, seg);
+void runArcSegment(const Arc::Kernel& kernel, const Outputs& o, const TurnAngles& angles,
+                   std::size_t k0, std::size_t k1, double omega, double dt, std::int32_t seg) {
+    runSegment(kernel, o, angles, k0, k1, omega, dt, seg);
 }
 
 CAMWRIGHT_MULTIVERSION
-void runLineSegment(const Line::Kernel& kernel, const Outputs& o, const std::vector<double>& ct,
-                    const std::vector<double>& st, const std::vector<double>& cb,
-                    const std::vector<double>& sb, std::size_t k0, std::size_t k1, double omega,
-                    double dt, std::int32_t seg) {
-    runSegment(kernel, o, ct, st, cb, sb, k0, k1, omega, dt, seg);
+void runLineSegment(const Line::Kernel& kernel, const Outputs& o, const TurnAngles& angles,
+                    std::size_t k0, std::size_t k1, double omega, double dt, std::int32_t seg) {
+    runSegment(kernel, o, angles, k0, k1, omega, dt, seg);
 }
 
 }  // namespace
@@ -172,18 +154,7 @@ bool sampleTurnRange(const Contour& contour, double omega, std::size_t n, std::s
 
     // The block table covers the blocks of [first, last) only; cos/sin of sample k depend on k
     // alone, so a chunk's values equal those of the whole turn.
-    const std::size_t firstBlock = first >> kBlockBits;
-    const std::size_t blocks = count == 0 ? 0 : ((last - 1) >> kBlockBits) - firstBlock + 1;
-    std::vector<double> ct(kBlock), st(kBlock), cb(blocks), sb(blocks);
-    for (std::size_t j = 0; j < kBlock; ++j) {
-        ct[j] = std::cos(static_cast<double>(j) * dphi);
-        st[j] = std::sin(static_cast<double>(j) * dphi);
-    }
-    for (std::size_t b = 0; b < blocks; ++b) {
-        const double angle = omega * (static_cast<double>((firstBlock + b) * kBlock) * dt);
-        cb[b] = std::cos(angle);
-        sb[b] = std::sin(angle);
-    }
+    const TurnAngles angles(omega, dt, first, count);
 
     const Outputs o{out.t.data(),    out.phi.data(),  out.r.data(),       out.x.data(),
                     out.y.data(),    out.vR.data(),   out.vPhi.data(),    out.v.data(),
@@ -209,13 +180,13 @@ bool sampleTurnRange(const Contour& contour, double omega, std::size_t n, std::s
 
         const auto segIndex = static_cast<std::int32_t>(seg);
         if (s.type == SegmentType::Arc) {
-            runArcSegment(s.arcKernel, o, ct, st, cb, sb, k, end, omega, dt, segIndex);
+            runArcSegment(s.arcKernel, o, angles, k, end, omega, dt, segIndex);
         } else if (s.type == SegmentType::Line) {
-            runLineSegment(s.lineKernel, o, ct, st, cb, sb, k, end, omega, dt, segIndex);
+            runLineSegment(s.lineKernel, o, angles, k, end, omega, dt, segIndex);
         } else {
             // Splines solve a cubic per sample: no vectorised kernel, the plain loop.
             const auto spline = [&s](double c, double sn) { return s.evaluate(c, sn); };
-            runSegment(spline, o, ct, st, cb, sb, k, end, omega, dt, segIndex);
+            runSegment(spline, o, angles, k, end, omega, dt, segIndex);
         }
         k = end;
     }
