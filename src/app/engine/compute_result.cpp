@@ -1,6 +1,9 @@
 #include "engine/compute_result.h"
 
 #include <QElapsedTimer>
+#include <QFuture>
+#include <QScopeGuard>
+#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
 
@@ -37,6 +40,40 @@ void buildOutlines(ComputeResult& r) {
     }
 }
 
+/// The follower on the contour: placed, its design checks and its pressure-angle curve.
+struct FollowerPart {
+    std::shared_ptr<const FollowerModel> model;
+    Diagnostics errors;
+    FollowerAnalysis checks;
+    std::vector<double> x, pressureDeg;
+};
+
+FollowerPart computeFollower(const Contour* contour, const FollowerSpec& spec, double omega,
+                             double period, PlotAxis axis, const std::atomic<bool>* cancel) {
+    FollowerPart part;
+    auto follower = FollowerModel::build(*contour, spec);
+    if (!follower.ok()) {
+        part.errors = follower.errors();
+        return part;
+    }
+    auto model = std::make_shared<const FollowerModel>(std::move(follower).value());
+    if (cancel->load()) return part;
+    part.checks = analyzeFollower(*model, omega, contour->phiBegin());
+    constexpr std::size_t n = ComputeResult::kFollowerCurvePoints;
+    FollowerTurn turn;
+    if (!sampleFollowerTurn(*model, omega, n, turn, cancel)) return part;
+    part.x.resize(n + 1);
+    part.pressureDeg.resize(n + 1);
+    for (std::size_t k = 0; k <= n; ++k) {
+        const double t = period * static_cast<double>(k) / n;
+        part.x[k] = axis == PlotAxis::Angle ? radToDeg(omega * t) : t;
+        // The turn's end closes the curve: the angle of its start, one turn on.
+        part.pressureDeg[k] = radToDeg(turn.pressureAngle[k % n]);
+    }
+    part.model = std::move(model);
+    return part;
+}
+
 }  // namespace
 
 ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic<bool>& cancel,
@@ -58,6 +95,17 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     result->contour = std::move(contour).value();
     result->omega = request.project->motion.omegaRadS();
     result->period = kTwoPi / std::abs(result->omega);
+    // The follower needs only the contour: on the pool's other core while this thread samples
+    // the turn (a swinging arm's design checks cost about as much as the kinematics).
+    QFuture<FollowerPart> follower;
+    if (request.project->follower) {
+        follower = QtConcurrent::run(computeFollower, &*result->contour, *request.project->follower,
+                                     result->omega, result->period, request.axis, &cancel);
+    }
+    // Every early return below waits for it: it reads the contour this result owns.
+    const auto waitForFollower = qScopeGuard([&] {
+        if (follower.isValid()) follower.waitForFinished();
+    });
     result->sampleCount = static_cast<std::size_t>(request.project->samplesPerTurnOrDefault());
     if (!buildPlotCurves(*result->contour, result->omega, result->sampleCount, request.axis,
                          result->curves, cancel)) {
@@ -72,30 +120,15 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     }
     if (!splines.empty()) result->pathStudy = studyPath(splines, 100);
     if (cancel.load()) return nullptr;
-    if (request.project->follower) {
-        auto follower = FollowerModel::build(*result->contour, *request.project->follower);
-        if (follower.ok()) {
-            auto model = std::make_shared<const FollowerModel>(std::move(follower).value());
-            if (cancel.load()) return nullptr;
-            result->followerChecks =
-                analyzeFollower(*model, result->omega, result->contour->phiBegin());
-            constexpr std::size_t n = ComputeResult::kFollowerCurvePoints;
-            FollowerTurn turn;
-            if (!sampleFollowerTurn(*model, result->omega, n, turn, &cancel)) return nullptr;
-            result->followerX.resize(n + 1);
-            result->followerPressureDeg.resize(n + 1);
-            for (std::size_t k = 0; k <= n; ++k) {
-                const double t = result->period * static_cast<double>(k) / n;
-                const double phi = result->omega * t;
-                result->followerX[k] = request.axis == PlotAxis::Angle ? radToDeg(phi) : t;
-                // The turn's end closes the curve: the angle of its start, one turn on.
-                result->followerPressureDeg[k] = radToDeg(turn.pressureAngle[k % n]);
-            }
-            result->follower = std::move(model);
-        } else {
-            result->followerErrors = follower.errors();
-        }
+    if (follower.isValid()) {
+        // The follower was computed beside all of the above; it has finished or stops soon.
+        FollowerPart part = follower.result();
         if (cancel.load()) return nullptr;
+        result->follower = std::move(part.model);
+        result->followerErrors = std::move(part.errors);
+        result->followerChecks = std::move(part.checks);
+        result->followerX = std::move(part.x);
+        result->followerPressureDeg = std::move(part.pressureDeg);
     }
     if (preparer) {
         result->prepared = preparer->prepare(*result, cancel);
