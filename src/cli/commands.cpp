@@ -12,6 +12,7 @@
 #include "cli/plot_pictures.h"
 #include "common/angles.h"
 #include "contour/contour.h"
+#include "design/synthesis.h"
 #include "export/cam_table.h"
 #include "export/dxf.h"
 #include "export/gcode.h"
@@ -25,6 +26,7 @@
 #include "io/path_csv.h"
 #include "io/project_json.h"
 #include "kinematics/kinematics.h"
+#include "project/validate.h"
 #include "spline/biarc.h"
 #include "spline/teach_in.h"
 #include "timing/machining_time.h"
@@ -796,6 +798,68 @@ int runExport(const Arguments& args, std::ostream& out) {
     }
     if (!text.ok()) exportFailed(input, text.errors());
     writeExport(*outPath, text.value());
+    return kOk;
+}
+
+int runSynthesize(const Arguments& args, std::ostream& out) {
+    const std::string& path = args.positional.front();
+    const auto outPath = args.option("--out");
+    if (!outPath) throw CliError{kUsage, "--out", "is required (the file for the new project)"};
+    if (const auto output = args.option("--output"); output && *output != "arcs") {
+        throw CliError{kInvalidInput, "--output",
+                       *output == "bezier"
+                           ? std::string("\"bezier\" is not available yet: this version "
+                                         "synthesises arc tables only (--output arcs)")
+                           : "must be \"arcs\" (got \"" + *output + "\")"};
+    }
+    std::optional<double> tolerance;
+    if (const auto text = args.option("--tolerance")) {
+        tolerance = parsePositive("--tolerance", *text, "mm");
+    }
+    // A design whose contour was never synthesised is valid with an empty contour
+    // (project-format.md): everything else is checked as for any command.
+    auto loaded = loadProjectStructure(path);
+    if (!loaded.ok()) {
+        const Diagnostic& d = loaded.errors().front();
+        throw CliError{kInvalidInput, d.location == path ? path : path + ": " + d.location,
+                       d.message};
+    }
+    Project project = std::move(loaded).value();
+    if (!project.design) {
+        throw CliError{kInvalidInput, path + ": design",
+                       "the project has no design to synthesise a contour from"};
+    }
+    for (const Diagnostic& d : validateProject(project)) {
+        if (d.severity != Severity::Error) continue;
+        if (project.contour.empty() && d.location == "contour") continue;
+        throw CliError{kInvalidInput, path + ": " + d.location, d.message};
+    }
+    const auto made = synthesize(project, tolerance);
+    if (!made.ok()) {
+        const Diagnostic& d = made.errors().front();
+        throw CliError{kNotComputable, path + ": " + d.location, d.message};
+    }
+    const SynthesisReport& r = made.value().report;
+    project.contour = made.value().contour;
+    if (tolerance) project.design->tolerance = *tolerance;
+    const bool swinging =
+        project.follower && project.follower->motion == FollowerMotion::Oscillating;
+    Json notes = Json::array();
+    for (const Diagnostic& d : r.notes) notes.push_back(d.text());
+    const Json report{{"segments", r.segments},
+                      {"max_deviation_mm", r.maxDeviationMm},
+                      {swinging ? "max_lift_error_deg" : "max_lift_error_mm", r.maxLiftError},
+                      {"max_velocity_error", r.maxVelocityError},
+                      {"max_acceleration_error", r.maxAccelerationError},
+                      {"velocity_unit", swinging ? "deg/s" : "mm/s"},
+                      {"acceleration_unit", swinging ? "deg/s^2" : "mm/s^2"},
+                      {"tolerance_mm", tolerance.value_or(project.design->tolerance)},
+                      {"notes", notes},
+                      {"out", *outPath}};
+    requireFinite(report, "");
+    const Diagnostics written = writeFileAtomically(*outPath, serializeProject(project));
+    if (!written.empty()) throw CliError{kInvalidInput, *outPath, written.front().message};
+    printJson(out, report);
     return kOk;
 }
 

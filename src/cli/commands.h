@@ -15,5 +15,7 @@ int runAnalyze(const Arguments& args, std::ostream& out);
 int runTiming(const Arguments& args, std::ostream& out);
 int runFillet(const Arguments& args, std::ostream& out);
 int runExport(const Arguments& args, std::ostream& out);
+/// @brief `synthesize`: the design → an arc table (math.md §8), written to --out; a report.
+int runSynthesize(const Arguments& args, std::ostream& out);
 
 }  // namespace cam::cli

@@ -30,6 +30,10 @@ commands:
   fillet PROJECT --joint K (--radius R | --speed V --accel A --vae E) --out NEW
                                         round the corner between contour[K-1] and contour[K]
                                         by a tangent arc (radius given or V²/(vae·A))
+  synthesize PROJECT --out NEW [--tolerance MM] [--output arcs]
+                                        the contour made from the project's design (motion
+                                        laws) for its follower: tangent arcs within the
+                                        tolerance; a report of what the arcs cost the motion
 
   export PROJECT --format csv|dxf|svg|png|pdf|gcode|camtable --out FILE
          [--tolerance MM] [--points N] [--dialect csv|codesys] [--tool-radius MM]
@@ -73,6 +77,7 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
          {"--detail"},
          0},
         {"fillet", 1, {"--joint", "--radius", "--speed", "--accel", "--vae", "--out"}, {}},
+        {"synthesize", 1, {"--out", "--tolerance", "--output"}, {}},
         {"export",
          1,
          {"--format", "--out", "--tolerance", "--points", "--dialect", "--tool-radius", "--depth",
@@ -87,6 +92,7 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
         if (parsed.command == "analyze") return runAnalyze(parsed, out);
         if (parsed.command == "timing") return runTiming(parsed, out);
         if (parsed.command == "fillet") return runFillet(parsed, out);
+        if (parsed.command == "synthesize") return runSynthesize(parsed, out);
         if (parsed.command == "export") return runExport(parsed, out);
         return kUsage;
     } catch (const CliError& e) {

@@ -309,3 +309,108 @@ TEST(SyntaxLocations, ANulByteIsAnErrorAtItsOffsetNotTheEndOfTheFile) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+/// kMinimal with a design (math.md §8's cycloidal cam, a poly5 return) in the given units.
+std::string withDesign(const std::string& units, const std::string& follower) {
+    std::string text = kMinimal;
+    text.insert(text.rfind('}'), R"(,
+  "units": )" + units + follower + R"(,
+  "design": { "base_radius": 40, "tolerance": 0.01, "segments": [
+    { "law": "cycloidal", "to_deg": 120, "lift": 10 },
+    { "law": "dwell", "to_deg": 180 },
+    { "law": "poly5", "to_deg": 300, "lift": 0, "v0": 0, "a0": 0, "v1": -0.01, "a1": 0.002 },
+    { "law": "harmonic", "to_deg": 330, "lift": 2 },
+    { "law": "modified-sine", "to_deg": 360, "lift": 0 } ] })");
+    return text;
+}
+
+TEST(ProjectJsonDesign, ReadsEveryFieldAndWritesItBackAsTyped) {
+    const auto p = parseProject(withDesign(R"({ "length": "mm" })", ""));
+    ASSERT_TRUE(p.ok()) << p.errors().front().text();
+    ASSERT_TRUE(p.value().design);
+    const DesignSpec& d = *p.value().design;
+    EXPECT_EQ(d.baseRadius, 40.0);
+    EXPECT_EQ(d.tolerance, 0.01);
+    ASSERT_EQ(d.segments.size(), 5u);
+    EXPECT_EQ(d.segments[0].law, MotionLawType::Cycloidal);
+    EXPECT_EQ(d.segments[0].toDeg, 120.0);
+    EXPECT_EQ(d.segments[0].lift, 10.0);
+    // A dwell keeps the lift it starts with.
+    EXPECT_EQ(d.segments[1].law, MotionLawType::Dwell);
+    EXPECT_EQ(d.segments[1].lift, 10.0);
+    EXPECT_EQ(d.segments[2].law, MotionLawType::Poly5);
+    EXPECT_EQ(d.segments[2].v1, -0.01);
+    EXPECT_EQ(d.segments[2].a1, 0.002);
+    EXPECT_EQ(d.segments[3].law, MotionLawType::Harmonic);
+    EXPECT_EQ(d.segments[4].law, MotionLawType::ModifiedSine);
+    const std::string out = serializeProject(p.value());
+    const auto again = parseProject(out);
+    ASSERT_TRUE(again.ok()) << out;
+    EXPECT_EQ(again.value(), p.value());
+    EXPECT_EQ(serializeProject(again.value()), out);
+    EXPECT_NE(out.find(R"("law": "modified-sine")"), std::string::npos) << out;
+}
+
+TEST(ProjectJsonDesign, LengthsFollowTheFileUnitsAndAnArmsLiftIsInDegrees) {
+    // In metres the base radius, tolerance, lifts and poly5 slopes are lengths.
+    const auto m = parseProject(withDesign(R"({ "length": "m" })", ""));
+    ASSERT_TRUE(m.ok()) << m.errors().front().text();
+    EXPECT_DOUBLE_EQ(m.value().design->baseRadius, 40000.0);
+    EXPECT_DOUBLE_EQ(m.value().design->tolerance, 10.0);
+    EXPECT_DOUBLE_EQ(m.value().design->segments[0].lift, 10000.0);
+    EXPECT_DOUBLE_EQ(m.value().design->segments[2].v1, -10.0);
+    // On a swinging arm a lift is the angle swung, in degrees whatever the length unit.
+    const auto arm = parseProject(withDesign(
+        R"({ "length": "m" }, "follower": { "type": "roller", "radius": 0.002, "motion": )"
+        R"("oscillating", "pivot": [0.06, 0], "arm_length": 0.05 })",
+        ""));
+    ASSERT_TRUE(arm.ok()) << arm.errors().front().text();
+    EXPECT_DOUBLE_EQ(arm.value().design->baseRadius, 40000.0);
+    EXPECT_DOUBLE_EQ(arm.value().design->segments[0].lift, 10.0);
+    EXPECT_DOUBLE_EQ(arm.value().design->segments[2].v1, -0.01);
+    const std::string out = serializeProject(arm.value());
+    EXPECT_EQ(parseProject(out).value(), arm.value());
+    EXPECT_NE(out.find(R"("lift": 10.0)"), std::string::npos) << out;
+}
+
+TEST(ProjectJsonDesign, EveryProblemIsNamedWithItsPlace) {
+    const std::string good = withDesign(R"({ "length": "mm" })", "");
+    const std::pair<std::string, std::string> cases[][2] = {
+        {{R"("law": "harmonic")", R"("law": "sinus")"}, {"design.segments[3].law", "sinus"}},
+        {{R"("base_radius": 40)", R"("base_radius": -4)"}, {"design.base_radius", "-4"}},
+        {{R"("to_deg": 330)", R"("to_deg": 290)"}, {"design.segments[3].to_deg", "300"}},
+        {{R"("to_deg": 360)", R"("to_deg": 350)"}, {"design.segments[4].to_deg", "360"}},
+        {{R"("law": "dwell", "to_deg": 180)", R"("law": "dwell", "to_deg": 180, "lift": 9)"},
+         {"design.segments[1].lift", "dwell"}},
+        {{R"("law": "modified-sine", "to_deg": 360, "lift": 0)",
+          R"("law": "modified-sine", "to_deg": 360, "lift": 1)"},
+         {"design.segments[4].lift", "0"}},
+        {{R"("law": "cycloidal", "to_deg": 120, "lift": 10)",
+          R"("law": "cycloidal", "to_deg": 120, "lift": 10, "v0": 1)"},
+         {"design.segments[0].v0", "unknown key"}},
+        {{R"("tolerance": 0.01)", R"("tolerance": 0.01, "tolerances": 1)"},
+         {"design.tolerances", "unknown key"}},
+    };
+    for (const auto& [edit, expected] : cases) {
+        const std::string text = withReplaced(good, edit.first, edit.second);
+        const auto p = parseProject(text);
+        ASSERT_FALSE(p.ok()) << edit.second;
+        bool found = false;
+        for (const Diagnostic& d : p.errors()) {
+            if (d.location == expected.first &&
+                d.message.find(expected.second) != std::string::npos)
+                found = true;
+        }
+        std::string all;
+        for (const Diagnostic& d : p.errors()) all += d.text() + "\n";
+        EXPECT_TRUE(found) << edit.second << " → expected " << expected.first << " (\""
+                           << expected.second << "\"), got:\n"
+                           << all;
+    }
+}
+
+}  // namespace
+}  // namespace cam

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "common/angles.h"
+#include "design/motion_law.h"
 #include "project/validate.h"
 
 namespace cam {
@@ -307,6 +308,69 @@ void readMachining(Reader& rd, const Json& root, const UnitsSpec& units, Project
     p.machining = spec;
 }
 
+/// "\"dwell\", \"harmonic\", …" for messages.
+std::string knownLawNames() {
+    std::string out;
+    for (int k = 0; k <= static_cast<int>(MotionLawType::Poly5); ++k) {
+        if (!out.empty()) out += ", ";
+        out += '"';
+        out += lawName(static_cast<MotionLawType>(k));
+        out += '"';
+    }
+    return out;
+}
+
+void readDesign(Reader& rd, const Json& root, const UnitsSpec& units, Project& p) {
+    const Json* d = rd.field(root, "", "design", false);
+    if (!d || !rd.object(*d, "design")) return;
+    rd.onlyKeys(*d, "design", {"base_radius", "segments", "tolerance"});
+    DesignSpec spec;
+    const double mm = units.lengthFactor();
+    // Lifts are lengths on a translating follower, degrees swung on an arm.
+    const bool swinging = p.follower && p.follower->motion == FollowerMotion::Oscillating;
+    const double liftUnit = swinging ? 1.0 : mm;
+    if (const auto v = rd.number(*d, "design", "base_radius", true)) spec.baseRadius = *v * mm;
+    if (const auto v = rd.number(*d, "design", "tolerance", false)) spec.tolerance = *v * mm;
+    if (const Json* list = rd.field(*d, "design", "segments", true)) {
+        if (!list->is_array()) {
+            rd.error("design.segments",
+                     std::string("must be an array of segments (got ") + typeName(*list) + ")");
+        } else {
+            for (std::size_t k = 0; k < list->size(); ++k) {
+                const Json& j = (*list)[k];
+                const std::string at = "design.segments[" + std::to_string(k) + "]";
+                if (!rd.object(j, at)) continue;
+                DesignSegmentSpec s;
+                if (const auto name = rd.string(j, at, "law", true)) {
+                    if (const auto law = lawFromName(*name)) {
+                        s.law = *law;
+                    } else {
+                        rd.error(at + ".law", "unknown law \"" + *name + "\" (expected one of " +
+                                                  knownLawNames() + ")");
+                    }
+                }
+                if (s.law == MotionLawType::Poly5) {
+                    rd.onlyKeys(j, at, {"law", "to_deg", "lift", "v0", "a0", "v1", "a1"});
+                } else {
+                    rd.onlyKeys(j, at, {"law", "to_deg", "lift"});
+                }
+                if (const auto v = rd.number(j, at, "to_deg", true)) s.toDeg = *v;
+                if (const auto v = rd.number(j, at, "lift", s.law != MotionLawType::Dwell)) {
+                    s.lift = *v * liftUnit;
+                } else if (s.law == MotionLawType::Dwell) {
+                    s.lift = spec.segments.empty() ? 0.0 : spec.segments.back().lift;
+                }
+                for (auto [key, value] : {std::pair{"v0", &s.v0}, std::pair{"a0", &s.a0},
+                                          std::pair{"v1", &s.v1}, std::pair{"a1", &s.a1}}) {
+                    if (const auto v = rd.number(j, at, key, false)) *value = *v * liftUnit;
+                }
+                spec.segments.push_back(s);
+            }
+        }
+    }
+    p.design = spec;
+}
+
 }  // namespace
 
 Result<Project> readProject(const Json& root) {
@@ -374,10 +438,11 @@ Result<Project> readProject(const Json& root) {
     readFollower(rd, root, units, p);
     readSampling(rd, root, p);
     readMachining(rd, root, units, p);
+    readDesign(rd, root, units, p);
 
-    static const std::set<std::string> known{"format",   "version",  "name",
-                                             "units",    "motion",   "contour",
-                                             "follower", "sampling", "machining"};
+    static const std::set<std::string> known{"format",    "version", "name",     "units",
+                                             "motion",    "contour", "follower", "sampling",
+                                             "machining", "design"};
     for (const auto& [key, value] : root.items()) {
         if (!known.contains(key)) p.extraKeys.emplace_back(key, value.dump());
     }

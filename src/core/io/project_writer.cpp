@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "design/motion_law.h"
 #include "io/json_syntax.h"
 #include "io/project_reader.h"
 
@@ -106,6 +107,28 @@ std::string serializeProject(const Project& p) {
         j["step"] = length(m.step);
         root["machining"] = std::move(j);
     }
+    if (p.design) {
+        const DesignSpec& d = *p.design;
+        const bool swinging = p.follower && p.follower->motion == FollowerMotion::Oscillating;
+        const auto lift = [&](double v) { return swinging ? v : length(v); };
+        Json segments = Json::array();
+        for (const DesignSegmentSpec& s : d.segments) {
+            Json j;
+            j["law"] = std::string(lawName(s.law));
+            j["to_deg"] = s.toDeg;
+            j["lift"] = lift(s.lift);
+            if (s.law == MotionLawType::Poly5) {
+                j["v0"] = lift(s.v0);
+                j["a0"] = lift(s.a0);
+                j["v1"] = lift(s.v1);
+                j["a1"] = lift(s.a1);
+            }
+            segments.push_back(std::move(j));
+        }
+        root["design"] = {{"base_radius", length(d.baseRadius)},
+                          {"segments", std::move(segments)},
+                          {"tolerance", length(d.tolerance)}};
+    }
     for (const auto& [key, text] : p.extraKeys) root[key] = Json::parse(text);
     return root.dump(2) + "\n";
 }
@@ -149,6 +172,19 @@ Diagnostics nonFiniteValues(const Project& p) {
     if (p.follower) {
         check(p.follower->offset, Diagnostic{"follower.offset", {}});
         check(p.follower->radius, Diagnostic{"follower.radius", {}});
+    }
+    if (p.design) {
+        check(p.design->baseRadius, Diagnostic{"design.base_radius", {}});
+        check(p.design->tolerance, Diagnostic{"design.tolerance", {}});
+        for (std::size_t k = 0; k < p.design->segments.size(); ++k) {
+            const DesignSegmentSpec& s = p.design->segments[k];
+            const std::string at = "design.segments[" + std::to_string(k) + "].";
+            for (auto [key, v] :
+                 {std::pair{"to_deg", s.toDeg}, std::pair{"lift", s.lift}, std::pair{"v0", s.v0},
+                  std::pair{"a0", s.a0}, std::pair{"v1", s.v1}, std::pair{"a1", s.a1}}) {
+                check(v, Diagnostic{at + key, {}});
+            }
+        }
     }
     if (p.machining) {
         const MachiningSpec& m = *p.machining;

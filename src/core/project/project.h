@@ -168,6 +168,44 @@ inline constexpr double kMinMachineLimit = 1e-6;
 inline constexpr double kMaxAccelMmS2 = 1e12;
 inline constexpr double kMaxSpeedMmS = 1e9;
 
+/// @brief The laws a design segment can follow (math.md §8, VDI 2143).
+enum class MotionLawType {
+    Dwell,
+    Harmonic,
+    Cycloidal,
+    ModifiedTrapezoid,
+    ModifiedSine,
+    Poly345,
+    Poly4567,
+    Poly5,
+};
+
+/// @brief One stretch of the follower's motion: from where the previous segment ends (the
+/// first from 0°) to `toDeg`, from the previous segment's lift (the first from 0) to `lift`.
+struct DesignSegmentSpec {
+    MotionLawType law = MotionLawType::Dwell;
+    double toDeg = 0.0;
+    /// The lift at toDeg: mm above the base circle (translating), or degrees swung away from
+    /// the cam (oscillating). A dwell keeps the lift it starts with.
+    double lift = 0.0;
+    /// poly5 only: d(lift)/dφ and d²(lift)/dφ² at the start and the end, per degree of cam
+    /// angle (mm/°, mm/°²; °/° on a swinging arm).
+    double v0 = 0.0, a0 = 0.0, v1 = 0.0, a1 = 0.0;
+    friend bool operator==(const DesignSegmentSpec&, const DesignSegmentSpec&) = default;
+};
+
+inline constexpr double kDefaultDesignToleranceMm = 0.001;
+
+/// @brief The motion the contour is synthesised from (math.md §8).
+struct DesignSpec {
+    /// mm: the base circle of the profile, which the follower touches at lift 0 (for a roller
+    /// the pitch curve's smallest radius is baseRadius + its radius).
+    double baseRadius = 0.0;
+    std::vector<DesignSegmentSpec> segments;
+    double tolerance = kDefaultDesignToleranceMm;  ///< mm, the arc table's largest deviation
+    friend bool operator==(const DesignSpec&, const DesignSpec&) = default;
+};
+
 /// @brief The whole document.
 struct Project {
     std::string name;
@@ -177,6 +215,7 @@ struct Project {
     std::optional<FollowerSpec> follower;
     std::optional<std::int64_t> samplesPerTurn;
     std::optional<MachiningSpec> machining;
+    std::optional<DesignSpec> design;
     /// Unknown top-level keys, kept verbatim (key, compact JSON text) for forward compatibility.
     std::vector<std::pair<std::string, std::string>> extraKeys;
 

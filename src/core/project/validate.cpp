@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "design/motion_design.h"
 #include "geometry/planar.h"
 
 namespace cam {
@@ -40,6 +41,7 @@ public:
         checkFollower();
         checkSampling();
         checkMachining();
+        checkDesign();
         return std::move(m_out);
     }
 
@@ -441,6 +443,18 @@ private:
         checkRange("machining.feed_max", m.feedMax, kMinMachineLimit, kMaxSpeedMmS, " mm/s");
         checkRange("machining.tool_radius", m.toolRadius, 0.0, kMaxLengthMm, " mm");
         checkPositiveLength("machining.step", m.step);
+    }
+
+    /// The motion it describes (design/motion_design.h finds every problem with its place);
+    /// lengths within the file's range.
+    void checkDesign() {
+        if (!m_project.design) return;
+        const DesignSpec& d = *m_project.design;
+        // Not finite or not positive: MotionDesign says so; here only the upper bound.
+        if (std::isfinite(d.baseRadius)) checkLength("design.base_radius", d.baseRadius);
+        if (std::isfinite(d.tolerance)) checkLength("design.tolerance", d.tolerance);
+        const Result<MotionDesign> motion = MotionDesign::build(d);
+        for (const Diagnostic& problem : motion.errors()) m_out.push_back(problem);
     }
 
     const Project& m_project;

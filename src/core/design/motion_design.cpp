@@ -1,0 +1,157 @@
+#include "design/motion_design.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/angles.h"
+
+namespace cam {
+namespace {
+
+std::string segmentPlace(std::size_t k) { return "design.segments[" + std::to_string(k) + "]"; }
+
+}  // namespace
+
+Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
+    Diagnostics errors;
+    const auto error = [&](std::string location, std::string message) {
+        errors.emplace_back(std::move(location), std::move(message));
+    };
+    const auto positive = [&](const char* location, double value) {
+        if (!std::isfinite(value) || !(value > 0.0)) {
+            error(location, "must be > 0 (got " + formatNumber(value) + ")");
+        }
+    };
+    positive("design.base_radius", spec.baseRadius);
+    positive("design.tolerance", spec.tolerance);
+    if (spec.segments.empty()) error("design.segments", "must have at least one segment");
+    double startDeg = 0.0, startLift = 0.0;
+    MotionDesign design(spec);
+    for (std::size_t k = 0; k < spec.segments.size(); ++k) {
+        const DesignSegmentSpec& s = spec.segments[k];
+        const std::string at = segmentPlace(k);
+        bool finite = true;
+        for (auto [key, v] :
+             {std::pair{".to_deg", s.toDeg}, std::pair{".lift", s.lift}, std::pair{".v0", s.v0},
+              std::pair{".a0", s.a0}, std::pair{".v1", s.v1}, std::pair{".a1", s.a1}}) {
+            if (!std::isfinite(v)) {
+                error(at + key, "must be a finite number (got " + formatNumber(v) + ")");
+                finite = false;
+            }
+        }
+        if (!finite) continue;
+        if (!(s.toDeg > startDeg)) {
+            error(at + ".to_deg", "must be after " + formatNumber(startDeg) +
+                                      "°, where this segment starts (got " + formatNumber(s.toDeg) +
+                                      "°)");
+        } else if (s.toDeg > 360.0) {
+            error(at + ".to_deg", "must be at most 360° (got " + formatNumber(s.toDeg) + "°)");
+        }
+        if (s.law == MotionLawType::Dwell && s.lift != startLift) {
+            error(at + ".lift", "a dwell keeps the lift it starts with (" +
+                                    formatNumber(startLift) + "), got " + formatNumber(s.lift));
+        } else if (s.law != MotionLawType::Dwell && s.law != MotionLawType::Poly5 &&
+                   s.lift == startLift) {
+            error(at + ".lift", "must differ from the lift it starts with (" +
+                                    formatNumber(startLift) + ") for " +
+                                    std::string(lawName(s.law)) +
+                                    "; a stretch without motion "
+                                    "is a dwell");
+        }
+        design.m_startRad.push_back(degToRad(startDeg));
+        design.m_endRad.push_back(degToRad(s.toDeg));
+        design.m_startLift.push_back(startLift);
+        startDeg = s.toDeg;
+        startLift = s.lift;
+    }
+    if (!spec.segments.empty()) {
+        const std::string last = segmentPlace(spec.segments.size() - 1);
+        if (std::isfinite(spec.segments.back().toDeg) && spec.segments.back().toDeg != 360.0) {
+            error(last + ".to_deg", "the last segment must end at 360° (got " +
+                                        formatNumber(spec.segments.back().toDeg) + "°)");
+        }
+        if (std::isfinite(startLift) && startLift != 0.0) {
+            error(last + ".lift",
+                  "the motion must return to the start: the last lift must be "
+                  "0 (got " +
+                      formatNumber(startLift) + ")");
+        }
+    }
+    if (!errors.empty()) return errors;
+    // Where velocity or acceleration jump, the turn's end joining its start.
+    const std::size_t n = spec.segments.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t next = (k + 1) % n;
+        const std::array<double, 4> left = design.inSegment(k, design.m_endRad[k]);
+        const std::array<double, 4> right = design.inSegment(next, design.m_startRad[next]);
+        const double stroke = std::max({std::abs(left[0]), 1.0});
+        const double perDeg = kPi / 180.0;
+        std::string message;
+        if (std::abs(left[1] - right[1]) > 1e-9 * stroke) {
+            message += "the velocity jumps from " + formatNumber(left[1] * perDeg) + " to " +
+                       formatNumber(right[1] * perDeg) + " per degree";
+        }
+        if (std::abs(left[2] - right[2]) > 1e-9 * stroke) {
+            if (!message.empty()) message += "; ";
+            message += "the acceleration jumps from " + formatNumber(left[2] * perDeg * perDeg) +
+                       " to " + formatNumber(right[2] * perDeg * perDeg) + " per degree²";
+        }
+        if (!message.empty()) {
+            design.m_jumps.emplace_back(segmentPlace(k) + "/" + segmentPlace(next), message,
+                                        Severity::Info);
+        }
+    }
+    return design;
+}
+
+std::array<double, 4> MotionDesign::inSegment(std::size_t k, double phi) const {
+    const DesignSegmentSpec& s = m_spec.segments[k];
+    const double h = m_endRad[k] - m_startRad[k], y0 = m_startLift[k], d = s.lift - y0;
+    const double x = (phi - m_startRad[k]) / h;
+    if (s.law == MotionLawType::Dwell) return {y0, 0.0, 0.0, 0.0};
+    if (s.law == MotionLawType::Poly5) {
+        // The file's slopes are per degree; the polynomial works per radian.
+        const double perRad = 180.0 / kPi;
+        const Poly5Law law(h, y0, s.lift, s.v0 * perRad, s.a0 * perRad * perRad, s.v1 * perRad,
+                           s.a1 * perRad * perRad);
+        const LawPoint p = law.at(std::clamp(x, 0.0, 1.0));
+        return {p.y, p.v, p.a, p.j};
+    }
+    const LawPoint p = normalisedLaw(s.law, x);
+    return {y0 + d * p.y, d * p.v / h, d * p.a / (h * h), d * p.j / (h * h * h)};
+}
+
+std::size_t MotionDesign::segmentAt(double phi) const {
+    double into = std::fmod(phi, kTwoPi);
+    if (into < 0.0) into += kTwoPi;
+    const auto it = std::upper_bound(m_endRad.begin(), m_endRad.end(), into);
+    return std::min<std::size_t>(static_cast<std::size_t>(it - m_endRad.begin()),
+                                 m_endRad.size() - 1);
+}
+
+std::array<double, 4> MotionDesign::liftAt(double phi) const {
+    double into = std::fmod(phi, kTwoPi);
+    if (into < 0.0) into += kTwoPi;
+    return inSegment(segmentAt(into), into);
+}
+
+LawCoefficients MotionDesign::coefficients(std::size_t k) const {
+    const DesignSegmentSpec& s = m_spec.segments[k];
+    if (s.law != MotionLawType::Poly5) return lawCoefficients(s.law);
+    // Sampled finely, normalised by the stretch: y' · h/Δ, y'' · h²/Δ, y''' · h³/Δ.
+    const double h = m_endRad[k] - m_startRad[k], d = s.lift - m_startLift[k];
+    const double scale = d != 0.0 ? 1.0 / std::abs(d) : 1.0;
+    LawCoefficients c;
+    constexpr int kSamples = 20000;
+    for (int i = 0; i <= kSamples; ++i) {
+        const std::array<double, 4> l =
+            inSegment(k, m_startRad[k] + h * static_cast<double>(i) / kSamples);
+        c.cv = std::max(c.cv, std::abs(l[1]) * h * scale);
+        c.ca = std::max(c.ca, std::abs(l[2]) * h * h * scale);
+        c.cj = std::max(c.cj, std::abs(l[3]) * h * h * h * scale);
+    }
+    return c;
+}
+
+}  // namespace cam

@@ -1,0 +1,152 @@
+// camwright-cli synthesize (cli.md, math.md §8): a design with an empty contour → an arc table
+// that validates, exports to a DXF of true arcs (read back by ezdxf) and to G-code LinuxCNC's
+// rs274 accepts; the report's numbers; every refusal with its place and exit code, the old
+// file left whole.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "test_support.h"
+
+namespace cam {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+std::string designProject(const std::string& follower, const std::string& rise = "10",
+                          const std::string& base = "40") {
+    return R"({
+  "format": "camwright", "version": 1, "name": "design",
+  "motion": { "rpm": 60 },
+  "contour": [],
+  "follower": )" +
+           follower + R"(,
+  "design": { "base_radius": )" +
+           base + R"(, "tolerance": 0.001, "segments": [
+    { "law": "cycloidal", "to_deg": 120, "lift": )" +
+           rise + R"( },
+    { "law": "dwell", "to_deg": 180 },
+    { "law": "modified-sine", "to_deg": 300, "lift": 0 },
+    { "law": "dwell", "to_deg": 360 } ] }
+})";
+}
+
+/// The rise over 0–60° instead of 0–120°.
+std::string steepRise(std::string project) {
+    const auto at = project.find(R"("to_deg": 120)");
+    return project.replace(at, 13, R"("to_deg": 60)");
+}
+
+const char* const kRoller = R"({ "type": "roller", "radius": 8, "offset": 2 })";
+
+TEST(CliSynthesize, ADesignBecomesArcsThatExportAndMill) {
+    test::TempDir dir;
+    const std::string in = dir.file("design.cam.json"), made = dir.file("made.cam.json");
+    test::writeFileWithMode(in, designProject(kRoller), 0644);
+    const auto r = test::runCli({"synthesize", in, "--out", made});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Json report = Json::parse(r.out);
+    const std::size_t segments = report.at("segments").get<std::size_t>();
+    EXPECT_GT(segments, 10u);
+    EXPECT_LE(report.at("max_deviation_mm").get<double>(), 0.001);
+    // The follower on the arcs is off the law by about the tolerance, not far more or less.
+    EXPECT_LT(report.at("max_lift_error_mm").get<double>(), 0.0011);
+    EXPECT_GT(report.at("max_lift_error_mm").get<double>(), 0.0003);
+    EXPECT_GT(report.at("max_acceleration_error").get<double>(), 0.0);
+    EXPECT_EQ(report.at("out"), made);
+    // The new project: valid, its contour those arcs, the design kept.
+    const auto valid = test::runCli({"validate", made});
+    EXPECT_EQ(valid.exitCode, 0) << valid.err;
+    const Json project = Json::parse(test::readFile(made));
+    EXPECT_EQ(project.at("contour").size(), segments);
+    for (const Json& s : project.at("contour")) EXPECT_EQ(s.at("type"), "arc");
+    EXPECT_EQ(project.at("design").at("segments").size(), 4u);
+    // A DXF of true arcs, one ARC entity per segment (ezdxf reads it back).
+    const std::string dxf = dir.file("made.dxf");
+    ASSERT_EQ(test::runCli({"export", made, "--format", "dxf", "--out", dxf}).exitCode, 0);
+    const auto counted = test::run("/usr/bin/python3",
+                                   {"-c",
+                                    "import ezdxf,sys; d=ezdxf.readfile(sys.argv[1]); "
+                                    "print(sum(1 for e in d.modelspace() if e.dxftype()=='ARC'), "
+                                    "sum(1 for e in d.modelspace()))",
+                                    dxf});
+    ASSERT_EQ(counted.exitCode, 0) << counted.err;
+    EXPECT_EQ(counted.out, std::to_string(segments) + " " + std::to_string(segments) + "\n");
+    // G-code that LinuxCNC's own interpreter accepts.
+    const std::string rs274 = std::string(CAMWRIGHT_SOURCE_DIR) + "/../shared/tools/rs274";
+    if (!fs::exists(rs274)) GTEST_SKIP() << "rs274 missing: " << rs274;
+    const std::string ngc = dir.file("made.ngc"), canon = dir.file("canon.txt");
+    ASSERT_EQ(
+        test::runCli({"export", made, "--format", "gcode", "--tool-radius", "3", "--out", ngc})
+            .exitCode,
+        0);
+    const std::string lock = (fs::temp_directory_path() / "camwright-rs274.lock").string();
+    const auto milled = test::run("/usr/bin/flock", {lock, rs274, ngc, canon}, 120);
+    EXPECT_EQ(milled.exitCode, 0) << milled.err;
+    EXPECT_NE(test::readFile(canon).find("ARC_FEED"), std::string::npos);
+}
+
+TEST(CliSynthesize, TheToleranceOptionIsUsedAndKept) {
+    test::TempDir dir;
+    const std::string in = dir.file("design.cam.json"), made = dir.file("made.cam.json");
+    test::writeFileWithMode(in, designProject(R"({ "type": "knife" })"), 0644);
+    const auto coarse = test::runCli({"synthesize", in, "--out", made, "--tolerance", "0.05"});
+    ASSERT_EQ(coarse.exitCode, 0) << coarse.err;
+    const auto fine = test::runCli({"synthesize", in, "--out", made});
+    ASSERT_EQ(fine.exitCode, 0) << fine.err;
+    EXPECT_LT(Json::parse(coarse.out).at("segments").get<int>(),
+              Json::parse(fine.out).at("segments").get<int>());
+    EXPECT_GT(Json::parse(coarse.out).at("max_deviation_mm").get<double>(), 0.01);
+    ASSERT_EQ(test::runCli({"synthesize", in, "--out", made, "--tolerance", "0.05"}).exitCode, 0);
+    EXPECT_EQ(Json::parse(test::readFile(made)).at("design").at("tolerance"), 0.05);
+}
+
+TEST(CliSynthesize, WhatCannotBeMadeIsNamedAndTheOldFileStays) {
+    test::TempDir dir;
+    const std::string made = dir.file("made.cam.json");
+    struct Case {
+        std::string project;
+        std::vector<std::string> options;
+        int exit;
+        std::string says;
+    };
+    const Case cases[] = {
+        // Undercut: a 16 mm roller on a steep 30 mm rise over a 10 mm base circle.
+        {steepRise(designProject(R"({ "type": "roller", "radius": 16 })", "30", "10")),
+         {},
+         3,
+         "follower.radius: undercut"},
+        // The line misses the base circle.
+        {designProject(R"({ "type": "knife", "offset": 45 })"), {}, 3, "design.base_radius"},
+        {designProject(kRoller, "0"), {}, 2, "design.segments[0].lift"},
+        {designProject(kRoller), {"--tolerance", "-1"}, 2, "--tolerance"},
+        {designProject(kRoller), {"--output", "bezier"}, 2, "--output"},
+        {designProject(kRoller), {"--output", "nurbs"}, 2, "--output"},
+        {R"({"format": "camwright", "version": 1, "motion": {"rpm": 60}, "contour": []})",
+         {},
+         2,
+         "design"},
+    };
+    for (const Case& c : cases) {
+        const std::string in = dir.file("in.cam.json");
+        test::writeFileWithMode(in, c.project, 0644);
+        test::writeFileWithMode(made, "old contents", 0644);
+        std::vector<std::string> args{"synthesize", in, "--out", made};
+        args.insert(args.end(), c.options.begin(), c.options.end());
+        const auto r = test::runCli(args);
+        EXPECT_EQ(r.exitCode, c.exit) << c.says << ": " << r.err;
+        EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
+        EXPECT_TRUE(test::readFile(made) == "old contents") << c.says;
+        EXPECT_TRUE(r.out.empty()) << r.out;
+    }
+    const auto usage = test::runCli({"synthesize", dir.file("in.cam.json")});
+    EXPECT_EQ(usage.exitCode, 1);
+    EXPECT_NE(usage.err.find("--out"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cam

@@ -1,0 +1,233 @@
+// Design from motion (math.md §8): the arc table synthesised for each follower, checked without
+// the synthesis's own arithmetic — the profile point the motion asks for written out here from
+// s(φ) (knife and roller on a line, flat face, swinging arm), its distance to the contour by
+// brute force through the contour's r(φ), G1 at every joint from the arcs' centres, and the
+// follower placed on the contour by contact (FollowerModel) following the law.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "common/angles.h"
+#include "contour/contour.h"
+#include "core/follower_geometry.h"
+#include "design/arc_fit.h"
+#include "design/exact_profile.h"
+#include "design/motion_design.h"
+#include "design/synthesis.h"
+#include "follower/follower.h"
+#include "test_support.h"
+
+namespace cam {
+namespace {
+
+using test::distanceToProfile;
+using test::normalOf;
+using test::unit;
+
+/// math.md §8's cam: Rb 40 mm, cycloidal rise of 10 mm over 0–120°, dwell to 180°, cycloidal
+/// return over 180–300°, dwell to 360°.
+Project cycloidalCam(const FollowerSpec& follower = {}) {
+    Project p;
+    p.motion = {SpeedUnit::Rpm, 60.0};
+    DesignSpec d;
+    d.baseRadius = 40.0;
+    d.segments = {{MotionLawType::Cycloidal, 120.0, 10.0},
+                  {MotionLawType::Dwell, 180.0, 10.0},
+                  {MotionLawType::Cycloidal, 300.0, 0.0},
+                  {MotionLawType::Dwell, 360.0, 0.0}};
+    p.design = d;
+    p.follower = follower;
+    return p;
+}
+
+/// The lift of that cam written out by hand.
+double cycloidalLift(double phi) {
+    const double deg = radToDeg(phi);
+    const auto rise = [](double x) { return x - std::sin(kTwoPi * x) / kTwoPi; };
+    if (deg < 120.0) return 10.0 * rise(deg / 120.0);
+    if (deg < 180.0) return 10.0;
+    if (deg < 300.0) return 10.0 * (1.0 - rise((deg - 180.0) / 120.0));
+    return 0.0;
+}
+
+/// The tangent direction of a contour segment's curve at its point x (arc: across the radius,
+/// in the direction of rising polar angle).
+Eigen::Vector2d tangentAt(const SegmentSpec& s, const Eigen::Vector2d& x) {
+    if (const Arc* arc = s.as<Arc>()) {
+        Eigen::Vector2d t(-(x - arc->center).y(), (x - arc->center).x());
+        t.normalize();
+        // Oriented with the polar angle: x × t > 0 along a profile round the origin.
+        return x.x() * t.y() - x.y() * t.x() >= 0.0 ? t : Eigen::Vector2d(-t);
+    }
+    const Line& line = *s.as<Line>();
+    return (line.to - line.from).normalized();
+}
+
+Contour build(const Project& p, const std::vector<SegmentSpec>& contour) {
+    Project made = p;
+    made.contour = contour;
+    auto c = Contour::build(made);
+    EXPECT_TRUE(c.ok()) << (c.ok() ? "" : c.errors().front().text());
+    return std::move(c).value();
+}
+
+/// Every joint tangent: the two arcs' tangents at the joint point agree to 1e-9 rad.
+void expectG1(const Contour& contour, const std::vector<SegmentSpec>& segments) {
+    for (std::size_t k = 0; k < segments.size(); ++k) {
+        const SegmentSpec& a = segments[k];
+        const SegmentSpec& b = segments[(k + 1) % segments.size()];
+        const double phi = degToRad(a.phiEndDeg);
+        const Eigen::Vector2d x = test::profilePoint(contour, phi);
+        const Eigen::Vector2d ta = tangentAt(a, x), tb = tangentAt(b, x);
+        EXPECT_LT(std::abs(std::atan2(ta.x() * tb.y() - ta.y() * tb.x(), ta.dot(tb))), 1e-9)
+            << "joint after segment " << k;
+    }
+}
+
+TEST(Synthesis, TheCycloidalCamTakesFewerArcsThanGreedyBiarcs) {
+    // math.md §8: greedy longest biarcs need 16 / 28 / 44 / 88 arcs.
+    const double tolerances[] = {0.1, 0.01, 0.001, 0.0001};
+    const std::size_t greedy[] = {16, 28, 44, 88};
+    for (int i = 0; i < 4; ++i) {
+        const Project p = cycloidalCam();
+        const auto s = synthesize(p, tolerances[i]);
+        ASSERT_TRUE(s.ok()) << s.errors().front().text();
+        const std::vector<SegmentSpec>& segments = s.value().contour;
+        EXPECT_LT(segments.size(), greedy[i]) << tolerances[i];
+        EXPECT_EQ(s.value().report.segments, segments.size());
+        RecordProperty("arcs_at_" + std::to_string(tolerances[i]),
+                       static_cast<int>(segments.size()));
+        const Contour contour = build(p, segments);
+        expectG1(contour, segments);
+        // The exact profile of a radial knife is (Rb + s(φ))·u(φ), written out by hand: every
+        // point of it within the tolerance of the contour, and every point of the contour
+        // within the tolerance of it (r at the same polar angle, which bounds the distance).
+        for (int k = 0; k < 1500; ++k) {
+            const double phi = kTwoPi * (k + 0.37) / 1500.0;
+            const Eigen::Vector2d exact = (40.0 + cycloidalLift(phi)) * unit(phi);
+            EXPECT_LE(distanceToProfile(contour, exact), tolerances[i] * (1.0 + 1e-6))
+                << tolerances[i] << " at " << radToDeg(phi) << "°";
+        }
+        double worstRadial = 0.0;
+        for (int k = 0; k < 20000; ++k) {
+            const double phi = kTwoPi * (k + 0.5) / 20000.0;
+            worstRadial = std::max(worstRadial,
+                                   std::abs(contour.evaluate(phi).r - 40.0 - cycloidalLift(phi)));
+        }
+        // The radial gap exceeds the normal one by 1/cos of the pressure angle (≤ 12.1° here).
+        EXPECT_LE(worstRadial, tolerances[i] / std::cos(degToRad(12.2)) * (1.0 + 1e-6));
+        EXPECT_GT(worstRadial, 0.3 * tolerances[i]);  // the tolerance is used, not wasted
+    }
+}
+
+/// The follower placed on the synthesised contour by contact follows the design within the
+/// tolerance (over the cosine of its pressure angle), and the report says so.
+void expectFollowsTheLaw(const FollowerSpec& follower, double tolerance, double liftUnit,
+                         const std::function<double(double)>& expected) {
+    Project p = cycloidalCam(follower);
+    const auto s = synthesize(p, tolerance);
+    ASSERT_TRUE(s.ok()) << s.errors().front().text();
+    const Contour contour = build(p, s.value().contour);
+    expectG1(contour, s.value().contour);
+    const FollowerModel model = FollowerModel::build(contour, follower).value();
+    double worst = 0.0, worstAlpha = 0.0;
+    for (int k = 0; k < 3000; ++k) {
+        const double phi = kTwoPi * (k + 0.5) / 3000.0;
+        const FollowerState st = model.at(phi, 1.0);
+        worst = std::max(worst, std::abs(expected(phi) - st.s) * liftUnit);
+        worstAlpha = std::max(worstAlpha, std::abs(st.pressureAngle));
+    }
+    EXPECT_LE(worst, tolerance / std::cos(worstAlpha) * 1.05);
+    EXPECT_GT(worst, 0.2 * tolerance);
+    EXPECT_NEAR(s.value().report.maxLiftError, worst, 0.2 * tolerance);
+    EXPECT_LE(s.value().report.maxDeviationMm, tolerance);
+    EXPECT_GT(s.value().report.maxAccelerationError, 0.0);
+}
+
+TEST(Synthesis, AnOffsetRollerFollowsTheLaw) {
+    FollowerSpec roller;
+    roller.type = FollowerType::Roller;
+    roller.radius = 8.0;
+    roller.offset = 5.0;
+    // The roller centre on its line: s = √((Rb + ρ)² − e²) + lift.
+    const double s0 = std::sqrt(48.0 * 48.0 - 25.0);
+    expectFollowsTheLaw(roller, 0.001, 1.0, [&](double phi) { return s0 + cycloidalLift(phi); });
+}
+
+TEST(Synthesis, AFlatFaceFollowsTheLaw) {
+    FollowerSpec flat;
+    flat.type = FollowerType::Flat;
+    expectFollowsTheLaw(flat, 0.001, 1.0, [](double phi) { return 40.0 + cycloidalLift(phi); });
+}
+
+TEST(Synthesis, ASwingingRollerFollowsTheLawInDegrees) {
+    FollowerSpec arm;
+    arm.type = FollowerType::Roller;
+    arm.radius = 6.0;
+    arm.motion = FollowerMotion::Oscillating;
+    arm.pivot = {70.0, 30.0};
+    arm.armLength = 60.0;
+    // A lift of 10° swung. At lift 0 the roller centre is Rb + ρ = 46 from the centre: the arm
+    // is turned by θ0 from the line pivot → centre, cos θ0 = (a² + L² − 46²)/(2aL); ψ = β + θ.
+    const double a = arm.pivot.norm(), L = 60.0;
+    const double theta0 = std::acos((a * a + L * L - 46.0 * 46.0) / (2.0 * a * L));
+    const double beta = std::atan2(-30.0, -70.0);
+    expectFollowsTheLaw(arm, 0.001, 180.0 / kPi,
+                        [&](double phi) { return beta + theta0 + degToRad(cycloidalLift(phi)); });
+}
+
+TEST(Synthesis, UndercutIsRefusedWithItsAngles) {
+    // A steep, high rise on a small base circle: near the top of the rise the pitch curve bends
+    // tighter than a roller of 16 mm.
+    FollowerSpec roller;
+    roller.type = FollowerType::Roller;
+    roller.radius = 16.0;
+    Project p = cycloidalCam(roller);
+    p.design->baseRadius = 10.0;
+    p.design->segments[0] = {MotionLawType::Cycloidal, 60.0, 30.0};
+    p.design->segments[1].lift = 30.0;
+    const auto s = synthesize(p, 0.01);
+    ASSERT_FALSE(s.ok());
+    const Diagnostic& d = s.errors().front();
+    EXPECT_EQ(d.location, "follower.radius");
+    EXPECT_NE(d.message.find("undercut"), std::string::npos) << d.message;
+    // The pitch curve's radius, by hand: C = (Rb + ρ + s)·u, radius (r² + r'²)^{3/2} /
+    // (r² + 2r'² − r r''); the roller does not fit where it is below 16 mm.
+    const MotionDesign m = MotionDesign::build(*p.design).value();
+    double from = 1e9, to = -1e9;
+    for (int k = 0; k < 36000; ++k) {
+        const double phi = kTwoPi * k / 36000.0;
+        const auto l = m.liftAt(phi);
+        const double r = 26.0 + l[0], r1 = l[1], r2 = l[2];
+        const double rho = std::pow(r * r + r1 * r1, 1.5) / (r * r + 2 * r1 * r1 - r * r2);
+        if (rho > 0.0 && rho < 16.0) {
+            from = std::min(from, radToDeg(phi));
+            to = std::max(to, radToDeg(phi));
+        }
+    }
+    ASSERT_LT(from, to);
+    // "… from A° to B°": the range found by sampling, to a sample step.
+    const auto at = d.message.find(" from ");
+    ASSERT_NE(at, std::string::npos) << d.message;
+    const double a = std::stod(d.message.substr(at + 6));
+    const double b = std::stod(d.message.substr(d.message.find(" to ", at) + 4));
+    EXPECT_NEAR(a, from, 0.011) << d.message;
+    EXPECT_NEAR(b, to, 0.011) << d.message;
+}
+
+TEST(Synthesis, WhatCannotBeMadeIsNamed) {
+    Project none = cycloidalCam();
+    none.design.reset();
+    EXPECT_EQ(synthesize(none).errors().front().location, "design");
+    FollowerSpec far;
+    far.offset = 45.0;  // the knife's line misses the base circle of 40 mm
+    EXPECT_EQ(synthesize(cycloidalCam(far)).errors().front().location, "design.base_radius");
+    Project bad = cycloidalCam();
+    bad.design->segments[3].toDeg = 350.0;
+    EXPECT_EQ(synthesize(bad).errors().front().location, "design.segments[3].to_deg");
+}
+
+}  // namespace
+}  // namespace cam
