@@ -74,10 +74,11 @@ struct Samples {
 
 /// The largest distance from samples i … j (indices mod n, j > i) to the two arcs.
 double deviation(const Samples& s, std::size_t i, std::size_t j,
-                 const std::array<FittedArc, 2>& arcs, double giveUpAbove) {
+                 const std::array<FittedArc, 2>& arcs, double giveUpAbove,
+                 std::size_t stride = 1) {
     const std::size_t n = s.size() - 1;  // the last sample repeats the first
     double worst = 0.0;
-    for (std::size_t k = i + 1; k < j; ++k) {
+    for (std::size_t k = i + 1; k < j; k += stride) {
         const Eigen::Vector2d& x = s.point[k % n];
         const double d = std::min(distanceToArc(arcs[0], x), distanceToArc(arcs[1], x));
         worst = std::max(worst, d);
@@ -88,7 +89,7 @@ double deviation(const Samples& s, std::size_t i, std::size_t j,
 
 /// The smallest deviation of a biarc from sample i to sample j over its free junction.
 double bestBiarc(const Samples& s, std::size_t i, std::size_t j, double tolerance,
-                 std::array<FittedArc, 2>& best) {
+                 std::array<FittedArc, 2>& best, std::size_t stride) {
     const std::size_t n = s.size() - 1;
     const Eigen::Vector2d &a = s.point[i % n], &ta = s.tangent[i % n];
     const Eigen::Vector2d &b = s.point[j % n], &tb = s.tangent[j % n];
@@ -97,7 +98,8 @@ double bestBiarc(const Samples& s, std::size_t i, std::size_t j, double toleranc
     std::array<FittedArc, 2> trial;
     const auto value = [&](double logLambda) {
         if (!biarc(a, ta, b, tb, chord * std::exp(logLambda), trial)) return kInfinity;
-        const double d = deviation(s, i, j, trial, std::min(bestValue, 4.0 * tolerance));
+        const double d =
+            deviation(s, i, j, trial, std::min(bestValue, 4.0 * tolerance), stride);
         if (d < bestValue) {
             bestValue = d;
             best = trial;
@@ -106,24 +108,27 @@ double bestBiarc(const Samples& s, std::size_t i, std::size_t j, double toleranc
     };
     // The leg α as a fraction λ of the chord, on a log scale: a coarse scan, then golden
     // sections round the best of it (the deviation need not be unimodal over all λ).
+    // The scan starts in the middle (the legs of a symmetric biarc) and stops at the first
+    // biarc within the tolerance: the greedy search only asks whether one exists.
     constexpr int kScan = 9;
     constexpr double lo = -3.0, hi = 0.7;
-    int bestIndex = 0;
+    int bestIndex = kScan / 2;
     double bestScan = kInfinity;
-    for (int k = 0; k < kScan; ++k) {
+    for (int step = 0; step < kScan; ++step) {
+        const int k = kScan / 2 + (step % 2 == 0 ? step / 2 : -(step + 1) / 2);
         const double v = value(lo + (hi - lo) * k / (kScan - 1));
         if (v < bestScan) {
             bestScan = v;
             bestIndex = k;
         }
+        if (bestValue <= tolerance) return bestValue;
     }
-    if (bestValue <= 0.25 * tolerance) return bestValue;  // good enough: no refinement
     double left = lo + (hi - lo) * std::max(bestIndex - 1, 0) / (kScan - 1);
     double right = lo + (hi - lo) * std::min(bestIndex + 1, kScan - 1) / (kScan - 1);
     constexpr double g = 0.6180339887498949;
     double x1 = right - g * (right - left), x2 = left + g * (right - left);
     double f1 = value(x1), f2 = value(x2);
-    for (int it = 0; it < 24 && bestValue > tolerance * 0.5; ++it) {
+    for (int it = 0; it < 24 && bestValue > tolerance; ++it) {
         if (f1 <= f2) {
             right = x2;
             x2 = x1;
@@ -191,14 +196,21 @@ Result<ArcFit> fitArcs(const std::function<CurveSample(double)>& curve, double t
         // fits, then bisect between the last that fitted and the first that did not.
         std::size_t good = i + 1, bad = n + 1;
         std::array<FittedArc, 2> goodPair;
-        if (!(bestBiarc(s, i, good, tolerance, goodPair) <= tolerance)) {
+        if (!(bestBiarc(s, i, good, tolerance, goodPair, 1) <= tolerance)) {
             return Diagnostics{{"design.tolerance",
                                 "cannot be met: no biarc joins two neighbouring points of the "
                                 "profile's sampling within it (the profile has a corner or a "
                                 "cusp there, or the tolerance is too small)"}};
         }
+        // The search looks at every fourth sample; a biarc is taken only when every sample of
+        // its stretch is within the tolerance too.
+        constexpr std::size_t kStride = 4;
+        const auto fits = [&](std::size_t j) {
+            return bestBiarc(s, i, j, tolerance, pair, kStride) <= tolerance &&
+                   deviation(s, i, j, pair, tolerance) <= tolerance;
+        };
         for (std::size_t span = 2; i + span <= n; span *= 2) {
-            if (bestBiarc(s, i, i + span, tolerance, pair) <= tolerance) {
+            if (fits(i + span)) {
                 good = i + span;
                 goodPair = pair;
             } else {
@@ -206,14 +218,14 @@ Result<ArcFit> fitArcs(const std::function<CurveSample(double)>& curve, double t
                 break;
             }
         }
-        if (bad > n && good < n && bestBiarc(s, i, n, tolerance, pair) <= tolerance) {
+        if (bad > n && good < n && fits(n)) {
             good = n;
             goodPair = pair;
         }
         bad = std::min(bad, n + 1);
         while (bad - good > 1 && good < n) {
             const std::size_t mid = good + (bad - good) / 2;
-            if (bestBiarc(s, i, mid, tolerance, pair) <= tolerance) {
+            if (fits(mid)) {
                 good = mid;
                 goodPair = pair;
             } else {

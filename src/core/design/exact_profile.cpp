@@ -150,31 +150,34 @@ std::vector<ProfileProblem> ExactProfile::problems(bool strictPressureAngle, int
     const double limit = degToRad(m_follower.maxPressureAngleOrDefault());
     // Undercut: the profile folds where its tangent turns back, (1 − ρκ) < 0 for a roller
     // (pitch radius below the roller's), h + h'' < 0 for a flat face, never for a knife.
-    const auto folds = [&](double phi) {
-        const ProfilePoint p = at(phi);
+    const auto folds = [&](const ProfilePoint& p) {
         if (m_follower.type == FollowerType::Flat) return p.rho < 0.0;
         if (m_follower.type == FollowerType::Knife) return false;
         return p.rho + rho > 0.0 && p.rho < 0.0;
     };
-    const auto steep = [&](double phi) { return std::abs(at(phi).pressureAngle) > limit; };
-    const auto ranges = [&](const std::function<bool(double)>& bad, const std::string& location,
-                            const std::string& what, Severity severity) {
+    const auto steep = [&](const ProfilePoint& p) { return std::abs(p.pressureAngle) > limit; };
+    std::vector<ProfilePoint> sampled(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) sampled[static_cast<std::size_t>(i)] = at(i * h);
+    const auto ranges = [&](const std::function<bool(const ProfilePoint&)>& bad,
+                            const std::string& location, const std::string& what,
+                            Severity severity) {
         // Stretches of bad samples, their ends bisected to 1e-12 rad.
         const auto edge = [&](double good, double badPhi) {
             for (int it = 0; it < 60 && std::abs(badPhi - good) > 1e-12; ++it) {
                 const double mid = 0.5 * (good + badPhi);
-                (bad(mid) ? badPhi : good) = mid;
+                (bad(at(mid)) ? badPhi : good) = mid;
             }
             return badPhi;
         };
+        const auto badAt = [&](int i) { return bad(sampled[static_cast<std::size_t>(i)]); };
         int i = 0;
         while (i < n) {
-            if (!bad(i * h)) {
+            if (!badAt(i)) {
                 ++i;
                 continue;
             }
             int j = i;
-            while (j + 1 < n && bad((j + 1) * h)) ++j;
+            while (j + 1 < n && badAt(j + 1)) ++j;
             const double from = i == 0 ? 0.0 : edge((i - 1) * h, i * h);
             const double to = j == n - 1 ? kTwoPi : edge((j + 1) * h, j * h);
             out.push_back({from, to,

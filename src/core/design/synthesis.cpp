@@ -9,6 +9,7 @@
 #include "design/exact_profile.h"
 #include "design/motion_design.h"
 #include "follower/follower.h"
+#include "follower/follower_turn.h"
 
 namespace cam {
 namespace {
@@ -108,19 +109,20 @@ Result<Synthesis> synthesize(const Project& project, std::optional<double> toler
     const double omega = project.motion.omegaRadS();
     const bool swinging = follower.motion == FollowerMotion::Oscillating;
     const double unit = swinging ? 180.0 / kPi : 1.0;
-    constexpr int kAngles = 7200;
-    for (int i = 0; i < kAngles; ++i) {
-        // Half a step off the grid of whole tenths, so that no angle sits on a joint of the
-        // design, where its own acceleration jumps.
-        const double phi = kTwoPi * (i + 0.5) / kAngles;
-        const FollowerState st = placed.value().at(phi, omega);
+    // 7201 angles: none of them a whole degree, where a design's own acceleration may jump.
+    constexpr std::size_t kAngles = 7201;
+    FollowerTurn turn;
+    if (!sampleFollowerTurn(placed.value(), omega, kAngles, turn, cancel)) return Diagnostics{};
+    const double dt = kTwoPi / std::abs(omega) / static_cast<double>(kAngles);
+    for (std::size_t k = 0; k < kAngles; ++k) {
+        const double phi = omega * (static_cast<double>(k) * dt);
         const std::array<double, 4> q = profile.followerCoordinate(phi);
         SynthesisReport& r = result.report;
-        r.maxLiftError = std::max(r.maxLiftError, std::abs(st.s - q[0]) * unit);
+        r.maxLiftError = std::max(r.maxLiftError, std::abs(turn.s[k] - q[0]) * unit);
         r.maxVelocityError =
-            std::max(r.maxVelocityError, std::abs(omega) * std::abs(st.sPhi[1] - q[1]) * unit);
+            std::max(r.maxVelocityError, std::abs(turn.v[k] - omega * q[1]) * unit);
         r.maxAccelerationError =
-            std::max(r.maxAccelerationError, omega * omega * std::abs(st.sPhi[2] - q[2]) * unit);
+            std::max(r.maxAccelerationError, std::abs(turn.a[k] - omega * omega * q[2]) * unit);
     }
     result.report.checkedAngles = kAngles;
     return result;
