@@ -11,6 +11,7 @@
 #include "common/angles.h"
 #include "design/motion_design.h"
 #include "design/motion_law.h"
+#include "core/test_projects.h"
 #include "test_support.h"
 
 namespace cam {
@@ -151,17 +152,7 @@ TEST(MotionLaw, Poly5MeetsItsBoundaryValues) {
     }
 }
 
-DesignSpec cycloidalCam() {
-    // math.md §8: Rb 40 mm, cycloidal rise of 10 mm over 0–120°, dwell to 180°, cycloidal
-    // return over 180–300°, dwell to 360°.
-    DesignSpec d;
-    d.baseRadius = 40.0;
-    d.segments = {{MotionLawType::Cycloidal, 120.0, 10.0},
-                  {MotionLawType::Dwell, 180.0, 10.0},
-                  {MotionLawType::Cycloidal, 300.0, 0.0},
-                  {MotionLawType::Dwell, 360.0, 0.0}};
-    return d;
-}
+DesignSpec cycloidalCam() { return test::cycloidalDesign(); }
 
 TEST(MotionDesign, TheCycloidalCamOfMathMd) {
     const auto design = MotionDesign::build(cycloidalCam());

@@ -17,6 +17,7 @@
 #include "design/motion_design.h"
 #include "design/synthesis.h"
 #include "follower/follower.h"
+#include "core/test_projects.h"
 #include "test_support.h"
 
 namespace cam {
@@ -26,18 +27,11 @@ using test::distanceToProfile;
 using test::normalOf;
 using test::unit;
 
-/// math.md §8's cam: Rb 40 mm, cycloidal rise of 10 mm over 0–120°, dwell to 180°, cycloidal
-/// return over 180–300°, dwell to 360°.
+/// math.md §8's cycloidal cam (test::cycloidalDesign) at 60 rpm with `follower`.
 Project cycloidalCam(const FollowerSpec& follower = {}) {
     Project p;
     p.motion = {SpeedUnit::Rpm, 60.0};
-    DesignSpec d;
-    d.baseRadius = 40.0;
-    d.segments = {{MotionLawType::Cycloidal, 120.0, 10.0},
-                  {MotionLawType::Dwell, 180.0, 10.0},
-                  {MotionLawType::Cycloidal, 300.0, 0.0},
-                  {MotionLawType::Dwell, 360.0, 0.0}};
-    p.design = d;
+    p.design = test::cycloidalDesign();
     p.follower = follower;
     return p;
 }

@@ -19,4 +19,16 @@ inline Project splitCircle(double e, double radius, std::vector<double> boundari
     return p;
 }
 
+/// math.md §8's cam: base radius 40 mm, cycloidal rise of 10 mm over 0–120°, dwell to 180°,
+/// cycloidal return over 180–300°, dwell to 360°.
+inline DesignSpec cycloidalDesign() {
+    DesignSpec d;
+    d.baseRadius = 40.0;
+    d.segments = {{MotionLawType::Cycloidal, 120.0, 10.0},
+                  {MotionLawType::Dwell, 180.0, 10.0},
+                  {MotionLawType::Cycloidal, 300.0, 0.0},
+                  {MotionLawType::Dwell, 360.0, 0.0}};
+    return d;
+}
+
 }  // namespace cam::test
