@@ -47,5 +47,16 @@ TEST(ValidFiles, ReferenceCamsAndExamplesLoad) {
     EXPECT_GE(count, 7);
 }
 
+TEST(ValidFiles, TheCorpusControlsLoad) {
+    for (const char* name : {"valid-base.cam.json", "valid-bom.cam.json", "valid-design.cam.json"}) {
+        const auto p = loadProjectFile(test::dataPath(std::string("invalid/") + name));
+        EXPECT_TRUE(p.ok()) << name << ": " << (p.ok() ? "" : p.errors().front().text());
+    }
+    const auto design = loadProjectFile(test::dataPath("invalid/valid-design.cam.json"));
+    ASSERT_TRUE(design.ok());
+    ASSERT_TRUE(design.value().design);
+    EXPECT_EQ(design.value().design->segments[2].law, MotionLawType::Poly5);
+}
+
 }  // namespace
 }  // namespace cam

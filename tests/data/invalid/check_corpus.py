@@ -395,6 +395,72 @@ def validate(doc, probs):
         v = length(mc, "tool_radius", "machining.tool_radius", probs, required=False)
         if v is not None and v < 0:
             probs.add("machining.tool_radius", f"must be >= 0 (got {v})")
+    if "design" in doc:
+        check_design(doc["design"], probs)
+
+
+LAWS = ["dwell", "harmonic", "cycloidal", "modified-trapezoid", "modified-sine", "poly345",
+        "poly4567", "poly5"]
+
+
+def check_design(d, probs):
+    """project-format.md's `design` row and math.md §8: segments contiguous from 0° to 360°,
+    each from the previous lift (0 first) to its own; a dwell keeps it, other laws change it,
+    the last returns to 0; only poly5 takes boundary values."""
+    if not isinstance(d, dict):
+        probs.add("design", "must be an object")
+        return
+    for key in d:
+        if key not in ("base_radius", "segments", "tolerance"):
+            probs.add(f"design.{key}", "unknown key")
+    rb = length(d, "base_radius", "design.base_radius", probs)
+    if rb is not None and not rb > 0:
+        probs.add("design.base_radius", f"must be > 0 (got {rb})")
+    if "tolerance" in d:
+        tol = length(d, "tolerance", "design.tolerance", probs)
+        if tol is not None and not tol > 0:
+            probs.add("design.tolerance", f"must be > 0 (got {tol})")
+    segs = d.get("segments")
+    if not isinstance(segs, list):
+        probs.add("design.segments", "missing or not an array")
+        return
+    if not segs:
+        probs.add("design.segments", "must have at least one segment")
+        return
+    start_deg, start_lift = 0.0, 0.0
+    for k, s in enumerate(segs):
+        at = f"design.segments[{k}]"
+        if not isinstance(s, dict):
+            probs.add(at, "must be an object")
+            continue
+        law = string(s, "law", f"{at}.law", probs, LAWS)
+        allowed = {"law", "to_deg", "lift"} | ({"v0", "a0", "v1", "a1"} if law == "poly5" else set())
+        for key in s:
+            if key not in allowed:
+                probs.add(f"{at}.{key}", "unknown key")
+        for key in ("v0", "a0", "v1", "a1"):
+            if key in s and key in allowed:
+                number(s, key, f"{at}.{key}", probs)
+        to = number(s, "to_deg", f"{at}.to_deg", probs)
+        lift = number(s, "lift", f"{at}.lift", probs, required=law != "dwell")
+        if lift is None and law == "dwell" and "lift" not in s:
+            lift = start_lift
+        if to is not None and not to > start_deg:
+            probs.add(f"{at}.to_deg", f"must be after {start_deg}° (got {to})")
+        if lift is not None:
+            if law == "dwell" and lift != start_lift:
+                probs.add(f"{at}.lift", f"a dwell keeps the lift {start_lift} (got {lift})")
+            if law not in (None, "dwell", "poly5") and lift == start_lift:
+                probs.add(f"{at}.lift", f"{law} must change the lift {start_lift}")
+        if to is not None:
+            start_deg = to
+        if lift is not None:
+            start_lift = lift
+    last = f"design.segments[{len(segs) - 1}]"
+    if start_deg != 360:
+        probs.add(f"{last}.to_deg", f"the last segment must end at 360° (got {start_deg})")
+    if start_lift != 0:
+        probs.add(f"{last}.lift", f"the motion must return to lift 0 (got {start_lift})")
 
 
 def check_file(path):
@@ -411,7 +477,7 @@ def check_file(path):
 def main():
     verbose = "-v" in sys.argv
     failures = 0
-    for name in ("valid-base.cam.json", "valid-bom.cam.json"):
+    for name in ("valid-base.cam.json", "valid-bom.cam.json", "valid-design.cam.json"):
         probs, _ = check_file(os.path.join(HERE, name))
         print(f"{'ok ' if not probs else 'BAD'} {name}: valid control" +
               ("" if not probs else f" -> {probs}"))
