@@ -311,6 +311,11 @@
         <source>Change machining limits</source>
         <translation>Bearbeitungsgrenzen ändern</translation>
     </message>
+    <message>
+        <location line="+9" />
+        <source>Synthesize contour</source>
+        <translation>Kontur synthetisieren</translation>
+    </message>
 </context>
 <context>
     <name>cam::ComputeWorker</name>
@@ -505,7 +510,7 @@
         <translation>Übergänge</translation>
     </message>
     <message>
-        <location line="+321" />
+        <location line="+347" />
         <location line="+8" />
         <source>Shape segment %1</source>
         <translation>Segment %1 formen</translation>
@@ -519,6 +524,144 @@
         <location line="+3" />
         <source>Change radius of segment %1</source>
         <translation>Radius von Segment %1 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>cam::DesignTableModel</name>
+    <message>
+        <location filename="../../src/app/models/design_table_model.cpp" line="+61" />
+        <source>Dwell</source>
+        <translation>Rast</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Harmonic</source>
+        <translation>Harmonisch (Kosinus)</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Cycloidal</source>
+        <translation>Zykloide</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Modified trapezoid</source>
+        <translation>Modifiziertes Beschleunigungstrapez</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Modified sine</source>
+        <translation>Modifizierte Sinuslinie</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Poly 3-4-5</source>
+        <translation>Polynom 3-4-5</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Poly 4-5-6-7</source>
+        <translation>Polynom 4-5-6-7</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Poly 5 (boundary values)</source>
+        <translation>Polynom 5 (Randwerte)</translation>
+    </message>
+    <message>
+        <location line="+74" />
+        <source>How the follower moves over this segment (VDI 2143)</source>
+        <translation>Wie sich der Stößel über diesen Abschnitt bewegt (VDI 2143)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Where the segment starts: the previous segment's end</source>
+        <translation>Wo der Abschnitt beginnt: das Ende des vorigen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Cam angle where the segment ends (the last ends at 360°)</source>
+        <translation>Kurvenwinkel am Ende des Abschnitts (der letzte endet bei 360°)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The arm's swing at the segment's end, degrees away from the cam (the last returns to 0)</source>
+        <translation>Ausschlag des Hebels am Ende des Abschnitts, in Grad von der Kurve weg (der letzte kehrt auf 0 zurück)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The follower's lift above the base circle at the segment's end (the last returns to 0)</source>
+        <translation>Hub des Stößels über dem Grundkreis am Ende des Abschnitts (der letzte kehrt auf 0 zurück)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Largest velocity as a multiple of lift ÷ duration</source>
+        <translation>Größte Geschwindigkeit als Vielfaches von Hub ÷ Dauer</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Largest acceleration as a multiple of lift ÷ duration²</source>
+        <translation>Größte Beschleunigung als Vielfaches von Hub ÷ Dauer²</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Largest jerk as a multiple of lift ÷ duration³</source>
+        <translation>Größter Ruck als Vielfaches von Hub ÷ Dauer³</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Poly 5: the lift's slope (v) or curvature (a) per degree of cam angle at the start (0) or the end (1)</source>
+        <translation>Polynom 5: Steigung (v) oder Krümmung (a) des Hubs je Grad Kurvenwinkel am Anfang (0) oder Ende (1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Only for Poly 5</source>
+        <translation>Nur für Polynom 5</translation>
+    </message>
+    <message>
+        <location line="+64" />
+        <source>Law</source>
+        <translation>Bewegungsgesetz</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>From [°]</source>
+        <translation>Von [°]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>To [°]</source>
+        <translation>Bis [°]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Lift [%1]</source>
+        <translation>Hub [%1]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>v0 [%1/°]</source>
+        <translation>v0 [%1/°]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a0 [%1/°²]</source>
+        <translation>a0 [%1/°²]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>v1 [%1/°]</source>
+        <translation>v1 [%1/°]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a1 [%1/°²]</source>
+        <translation>a1 [%1/°²]</translation>
+    </message>
+    <message>
+        <location line="+62" />
+        <source>Edit %1 of design segment %2</source>
+        <translation>%1 von Bewegungsabschnitt %2 ändern</translation>
     </message>
 </context>
 <context>
@@ -888,7 +1031,7 @@
         <translation>Druckwinkel [°]</translation>
     </message>
     <message>
-        <location line="+148" />
+        <location line="+147" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -1032,7 +1175,7 @@
 <context>
     <name>cam::KinematicsPlots</name>
     <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="+17" />
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="+25" />
         <source>Velocity [mm/s]</source>
         <translation>Geschwindigkeit [mm/s]</translation>
     </message>
@@ -1092,7 +1235,17 @@
         <translation>|j|</translation>
     </message>
     <message>
-        <location line="+104" />
+        <location line="+22" />
+        <source>law</source>
+        <translation>Gesetz</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>follower</source>
+        <translation>Stößel</translation>
+    </message>
+    <message>
+        <location line="+100" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -1273,12 +1426,12 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+82" />
+        <location filename="../../src/app/mainwindow.cpp" line="+87" />
         <source>computing…</source>
         <translation>wird berechnet…</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+54" />
         <location line="+31" />
         <source>Play</source>
         <translation>Abspielen</translation>
@@ -1299,7 +1452,71 @@
         <translation>Pause</translation>
     </message>
     <message>
-        <location line="+50" />
+        <location line="+11" />
+        <source>Motion Design</source>
+        <translation>Bewegungsentwurf</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Design the contour from the follower's motion (Ctrl+D)</source>
+        <translation>Die Kontur aus der Bewegung des Stößels entwerfen (Strg+D)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>S&amp;ynthesize Contour</source>
+        <translation>Kontur s&amp;ynthetisieren</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Replace the contour by tangent arcs fitted to the design's exact profile within its tolerance (F6; one undo step)</source>
+        <translation>Die Kontur durch tangentiale Bögen ersetzen, die das exakte Profil des Entwurfs innerhalb seiner Toleranz annähern (F6; ein Rückgängig-Schritt)</translation>
+    </message>
+    <message>
+        <location line="+26" />
+        <source>Synthesizing the contour…</source>
+        <translation>Kontur wird synthetisiert …</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Synthesizing the contour from the design…</source>
+        <translation>Die Kontur wird aus dem Entwurf synthetisiert …</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <location line="+37" />
+        <source>Synthesize</source>
+        <translation>Synthetisieren</translation>
+    </message>
+    <message>
+        <location line="-12" />
+        <source>Synthesis cancelled: the contour is unchanged.</source>
+        <translation>Synthese abgebrochen: die Kontur ist unverändert.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The design, follower or speed changed while synthesizing: press Synthesize again.</source>
+        <translation>Entwurf, Stößel oder Drehzahl haben sich während der Synthese geändert: bitte erneut synthetisieren.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The contour cannot be made from this design:
+%1</source>
+        <translation>Aus diesem Entwurf lässt sich keine Kontur erzeugen:
+%1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+15" />
+        <source>Synthesized %n segment(s) within %1 mm in %2 ms</source>
+        <translation>
+            <numerusform>%n Abschnitt innerhalb %1 mm in %2 ms synthetisiert</numerusform><numerusform>%n Abschnitte innerhalb %1 mm in %2 ms synthetisiert</numerusform></translation>
+    </message>
+    <message>
+        <location line="+49" />
         <source>Machining limits and times (Ctrl+M)</source>
         <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
     </message>
@@ -1319,7 +1536,7 @@
         <translation>Cursor bei %1°</translation>
     </message>
     <message>
-        <location line="+33" />
+        <location line="+30" />
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
@@ -1391,9 +1608,14 @@
         <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+70" />
+        <location line="+71" />
         <source>not computed: %1</source>
         <translation>nicht berechnet: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>no contour yet</source>
+        <translation>noch keine Kontur</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1406,12 +1628,17 @@
         <translation>Berechnung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+12" />
         <source>%1 samples computed in %2 ms</source>
         <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
     </message>
     <message>
-        <location line="+46" />
+        <location line="+53" />
+        <source>Valid · no contour yet: Synthesize (F6) makes it</source>
+        <translation>Gültig · noch keine Kontur: Synthetisieren (F6) erzeugt sie</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Valid · 1 segment</source>
         <translation>Gültig · 1 Segment</translation>
     </message>
@@ -1436,7 +1663,7 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-202" />
+        <location line="-219" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -1512,6 +1739,11 @@
     </message>
     <message>
         <location line="+18" />
+        <source>The project has no contour yet: Synthesize (F6) makes it from the design.</source>
+        <translation>Das Projekt hat noch keine Kontur: Synthetisieren (F6) erzeugt sie aus dem Entwurf.</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>The project has problems; correct them first:
 %1</source>
         <translation>Das Projekt hat Fehler; beheben Sie sie zuerst:
@@ -1541,6 +1773,182 @@
         <location line="+1" />
         <source>%1 was not written.</source>
         <translation>%1 wurde nicht geschrieben.</translation>
+    </message>
+</context>
+<context>
+    <name>cam::MotionDesignPanel</name>
+    <message>
+        <location filename="../../src/app/views/motion_design_panel.cpp" line="+48" />
+        <source>New Design</source>
+        <translation>Neuer Entwurf</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Start from a cycloidal dwell–rise–dwell–return motion (math.md §8) and edit it</source>
+        <translation>Mit einer Zykloiden-Bewegung Rast–Hub–Rast–Rückhub beginnen (math.md §8) und sie bearbeiten</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Remove Design</source>
+        <translation>Entwurf entfernen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Remove the motion design from the project (the contour stays)</source>
+        <translation>Den Bewegungsentwurf aus dem Projekt entfernen (die Kontur bleibt)</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Radius of the base circle the follower touches at lift 0</source>
+        <translation>Radius des Grundkreises, den der Stößel bei Hub 0 berührt</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Largest distance of the arc table from the exact profile</source>
+        <translation>Größter Abstand der Bogentabelle vom exakten Profil</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Base radius</source>
+        <translation>Grundkreisradius</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tolerance</source>
+        <translation>Toleranz</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>Split</source>
+        <translation>Teilen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Split the selected segment at its middle: the second half dwells</source>
+        <translation>Den gewählten Abschnitt in der Mitte teilen: die zweite Hälfte ist eine Rast</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Delete the selected segment: the one before it takes over its stretch and lift</source>
+        <translation>Den gewählten Abschnitt löschen: der vorige übernimmt seinen Bereich und Hub</translation>
+    </message>
+    <message>
+        <location line="+31" />
+        <location line="+17" />
+        <source>law</source>
+        <translation>Gesetz</translation>
+    </message>
+    <message>
+        <location line="-15" />
+        <location line="+18" />
+        <source>follower on the contour</source>
+        <translation>Stößel auf der Kontur</translation>
+    </message>
+    <message>
+        <location line="+28" />
+        <source>Remove design</source>
+        <translation>Entwurf entfernen</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Change base radius</source>
+        <translation>Grundkreisradius ändern</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Change tolerance</source>
+        <translation>Toleranz ändern</translation>
+    </message>
+    <message>
+        <location line="+37" />
+        <source>New design</source>
+        <translation>Neuer Entwurf</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>Split design segment %1</source>
+        <translation>Bewegungsabschnitt %1 teilen</translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>Delete design segment %1</source>
+        <translation>Bewegungsabschnitt %1 löschen</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>This project has no motion design. New Design starts one: lay out the follower's motion, then Synthesize makes the contour from it.</source>
+        <translation>Dieses Projekt hat keinen Bewegungsentwurf. „Neuer Entwurf“ legt einen an: die Bewegung des Stößels festlegen, dann erzeugt Synthetisieren daraus die Kontur.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+9" />
+        <source>Last synthesis: %n segment(s), at most %1 mm from the exact profile. The follower on them against the law (%2 angles): lift %3%4, velocity %5%6, acceleration %7%8 (the arcs are only tangent-continuous: the acceleration jumps at their joints).</source>
+        <translation>
+            <numerusform>Letzte Synthese: %n Abschnitt, höchstens %1 mm vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3%4, Geschwindigkeit %5%6, Beschleunigung %7%8 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform><numerusform>Letzte Synthese: %n Abschnitte, höchstens %1 mm vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3%4, Geschwindigkeit %5%6, Beschleunigung %7%8 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform></translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>The design cannot be made: %1</source>
+        <translation>Der Entwurf ist nicht herstellbar: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The design cannot be drawn at this speed.</source>
+        <translation>Der Entwurf lässt sich bei dieser Drehzahl nicht zeichnen.</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Lift [%1]</source>
+        <translation>Hub [%1]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>v [%1/s]</source>
+        <translation>v [%1/s]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a [%1/s²]</source>
+        <translation>a [%1/s²]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>j [%1/s³]</source>
+        <translation>j [%1/s³]</translation>
+    </message>
+    <message>
+        <location line="+30" />
+        <source>φ [°]</source>
+        <translation>φ [°]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>The follower on the contour as it is, against the law (%1 samples): lift %2 %3, velocity %4 %3/s, acceleration %5 %3/s².</source>
+        <translation>Der Stößel auf der jetzigen Kontur gegenüber dem Gesetz (%1 Stützstellen): Hub %2 %3, Geschwindigkeit %4 %3/s, Beschleunigung %5 %3/s².</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The follower cannot ride the contour: %1</source>
+        <translation>Der Stößel kann die Kontur nicht abfahren: %1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>No contour yet: Synthesize makes it from this design.</source>
+        <translation>Noch keine Kontur: Synthetisieren erzeugt sie aus diesem Entwurf.</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Synthesize fits the exact profile with tangent arcs within the tolerance and replaces the contour (one undo step).</source>
+        <translation>Synthetisieren nähert das exakte Profil innerhalb der Toleranz durch tangentiale Bögen an und ersetzt die Kontur (ein Rückgängig-Schritt).</translation>
     </message>
 </context>
 <context>
@@ -1655,7 +2063,7 @@ T = %3 s</translation>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+96" />
+        <location line="+113" />
         <source>… and %1 more</source>
         <translation>… und %1 weitere</translation>
     </message>
@@ -1926,7 +2334,12 @@ Möchten Sie die Datei ersetzen?</translation>
 <context>
     <name>cam::StaleLabel</name>
     <message>
-        <location filename="../../src/app/views/stale_label.h" line="+28" />
+        <location filename="../../src/app/views/stale_label.h" line="+22" />
+        <source>No contour yet: Synthesize (F6, in the Motion Design dock) makes it from the design.</source>
+        <translation>Noch keine Kontur: Synthetisieren (F6, im Fenster Bewegungsentwurf) erzeugt sie aus dem Entwurf.</translation>
+    </message>
+    <message>
+        <location line="+11" />
         <source>Not computed: %1%2
 Grey: the last computed state, out of date.</source>
         <translation>Nicht berechnet: %1%2

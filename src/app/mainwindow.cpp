@@ -9,6 +9,8 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QProgressDialog>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
 #include <QTableView>
@@ -20,6 +22,7 @@
 #include "document/commands.h"
 #include "document/contour_edits.h"
 #include "engine/compute_engine.h"
+#include "engine/synthesis_runner.h"
 #include "files/project_files.h"
 #include "fillet/fillet.h"
 #include "models/delegates.h"
@@ -30,6 +33,7 @@
 #include "views/joints_panel.h"
 #include "views/kinematics_plots.h"
 #include "views/machining_panel.h"
+#include "views/motion_design_panel.h"
 #include "views/motion_panel.h"
 #include "views/path_study_panel.h"
 #include "views/plot_data.h"
@@ -64,6 +68,7 @@ MainWindow::MainWindow(QWidget* parent)
     setUpActions();
     setUpExports();
     setUpPlay();
+    setUpDesign();
 
     m_validationLabel = new QLabel(this);
     m_validationLabel->setObjectName("validationLabel");
@@ -91,6 +96,19 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_document, &ProjectDocument::contourReset, this, [this] {
         if (m_document->project().follower) m_followerDock->show();
     });
+    // A project with a design opens with it shown.
+    connect(m_document, &ProjectDocument::filePathChanged, this, [this] {
+        if (!m_document->project().design) return;
+        m_designDock->show();
+        // In front of the follower's tab, once the follower dock has been shown too, and wide
+        // enough for the segment table.
+        QTimer::singleShot(0, this, [this] {
+            m_designDock->raise();
+            if (m_designDock->width() < 400 && !m_designDock->isFloating()) {
+                resizeDocks({m_designDock}, {400}, Qt::Horizontal);
+            }
+        });
+    });
     connect(m_document, &ProjectDocument::filePathChanged, this, &MainWindow::updateTitle);
     // The views' containers are made in the worker, next to the computation.
     m_engine->setPlotDataPreparer(std::make_shared<QcpPlotDataPreparer>());
@@ -108,6 +126,10 @@ MainWindow::MainWindow(QWidget* parent)
     m_ui->machiningDock->hide();  // until the user opens it (the saved layout may show it)
     m_ui->pathStudyDock->hide();
     m_followerDock->hide();  // until opened, or a project with a follower is loaded
+    m_designDock->hide();    // until opened, or a project with a design is loaded
+    // Tabbed with the follower (both hidden here: tabified while shown, the two made the
+    // hidden window grow to the height of both).
+    tabifyDockWidget(m_followerDock, m_designDock);
     restoreState(settings.value("window/state").toByteArray());
     m_ui->actionAxisTime->setChecked(settings.value("view/timeAxis", false).toBool());
     m_document->reset(ContourEdits::newProject(), {});
@@ -155,6 +177,118 @@ void MainWindow::setUpPlay() {
             m_playTimer->stop();
         }
     });
+}
+
+void MainWindow::setUpDesign() {
+    m_designDock = new QDockWidget(tr("Motion Design"), this);
+    m_designDock->setObjectName("motionDesignDock");
+    m_design = new MotionDesignPanel(m_document, m_designDock);
+    m_design->setObjectName("motionDesignPanel");
+    // The dock scrolls rather than making the window taller than a small screen.
+    auto* scroll = new QScrollArea(m_designDock);
+    scroll->setObjectName("motionDesignScrollArea");
+    scroll->setWidget(m_design);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setFrameShape(QFrame::NoFrame);
+    m_designDock->setWidget(scroll);
+    addDockWidget(Qt::RightDockWidgetArea, m_designDock);
+    QAction* toggle = m_designDock->toggleViewAction();
+    toggle->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_D));
+    toggle->setToolTip(tr("Design the contour from the follower's motion (Ctrl+D)"));
+    m_ui->mainToolBar->addAction(toggle);
+    m_ui->menuView->addAction(toggle);
+
+    m_synthesizeAction = new QAction(tr("S&ynthesize Contour"), this);
+    m_synthesizeAction->setObjectName("actionSynthesize");
+    m_synthesizeAction->setShortcut(QKeySequence(Qt::Key_F6));
+    m_synthesizeAction->setToolTip(
+        tr("Replace the contour by tangent arcs fitted to the design's exact profile within "
+           "its tolerance (F6; one undo step)"));
+    m_ui->menuEdit->addSeparator();
+    m_ui->menuEdit->addAction(m_synthesizeAction);
+    m_design->setSynthesizeAction(m_synthesizeAction);
+    const auto enable = [this] {
+        m_synthesizeAction->setEnabled(m_document->project().design.has_value() &&
+                                       !m_synthesis->isRunning());
+    };
+    m_synthesis = new SynthesisRunner(this);
+    connect(m_document, &ProjectDocument::designChanged, this, enable);
+    connect(m_synthesizeAction, &QAction::triggered, this, [this] {
+        m_synthesisInteractive = true;
+        synthesize();
+    });
+    connect(m_synthesis, &SynthesisRunner::finished, this, &MainWindow::finishSynthesis);
+    connect(m_synthesis, &SynthesisRunner::finished, this, enable);
+    enable();
+}
+
+bool MainWindow::synthesize() {
+    const auto& design = m_document->project().design;
+    if (!design || m_synthesis->isRunning()) return false;
+    m_synthesisClock.start();
+    m_synthesis->start(m_document->project(), design->tolerance);
+    m_synthesizeAction->setEnabled(false);
+    statusBar()->showMessage(tr("Synthesizing the contour…"));
+    // Most designs take milliseconds; a fine tolerance or a swinging arm may take longer, and
+    // then a busy dialog offers Cancel.
+    m_synthesisProgress = new QProgressDialog(tr("Synthesizing the contour from the design…"),
+                                              tr("Cancel"), 0, 0, this);
+    m_synthesisProgress->setObjectName("synthesisProgress");
+    m_synthesisProgress->setWindowTitle(tr("Synthesize"));
+    m_synthesisProgress->setWindowModality(Qt::WindowModal);
+    m_synthesisProgress->setMinimumDuration(300);
+    m_synthesisProgress->setAutoClose(false);
+    m_synthesisProgress->setAutoReset(false);
+    connect(m_synthesisProgress, &QProgressDialog::canceled, this, &MainWindow::cancelSynthesis);
+    m_synthesisProgress->setValue(0);
+    return true;
+}
+
+void MainWindow::cancelSynthesis() { m_synthesis->cancel(); }
+
+void MainWindow::finishSynthesis(const std::shared_ptr<const Result<Synthesis>>& result,
+                                 bool cancelled) {
+    const bool interactive = std::exchange(m_synthesisInteractive, false);
+    if (m_synthesisProgress) {
+        m_synthesisProgress->disconnect(this);
+        m_synthesisProgress->reset();
+        m_synthesisProgress->deleteLater();
+        m_synthesisProgress = nullptr;
+    }
+    QString problem;
+    const Project& from = m_synthesis->startedFrom();
+    const Project& now = m_document->project();
+    if (cancelled) {
+        problem = tr("Synthesis cancelled: the contour is unchanged.");
+    } else if (from.design != now.design || from.follower != now.follower ||
+               from.motion != now.motion) {
+        // Made for a design that is no longer the project's: never applied.
+        problem = tr("The design, follower or speed changed while synthesizing: press "
+                     "Synthesize again.");
+    } else if (!result->ok()) {
+        problem = tr("The contour cannot be made from this design:\n%1")
+                      .arg(diagnosticsText(result->errors()));
+    }
+    if (!problem.isEmpty()) {
+        statusBar()->showMessage(problem.section('\n', 0, 0), 8000);
+        if (interactive && !cancelled) QMessageBox::warning(this, tr("Synthesize"), problem);
+        emit synthesisFinished(problem);
+        return;
+    }
+    const Synthesis& made = result->value();
+    m_document->undoStack()->push(
+        new SynthesizeContour(m_document, made.contour, from.design->tolerance));
+    const bool swinging = now.follower && now.follower->motion == FollowerMotion::Oscillating;
+    m_design->setReport(made.report, swinging);
+    statusBar()->showMessage(
+        tr("Synthesized %n segment(s) within %1 mm in %2 ms", nullptr,
+           static_cast<int>(made.report.segments))
+            .arg(QLocale().toString(made.report.maxDeviationMm, 'g', 3),
+                 QLocale().toString(static_cast<double>(m_synthesisClock.nsecsElapsed()) / 1e6,
+                                    'f', 0)),
+        8000);
+    emit synthesisFinished({});
 }
 
 double MainWindow::playSpeedFactor() const { return m_playSpeed->currentData().toDouble(); }
@@ -398,16 +532,22 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
     m_joints->setResult(result);
     m_pathStudy->setResult(result);
     m_follower->setResult(result);
+    m_design->setResult(result);
     // The pressure-angle plot shows what the kinematics plots show (their zoom included).
     m_follower->pressurePlot()->xAxis->setRange(m_plots->plot(0)->xAxis->range());
     if (!result->ok()) {
         const QString first = QString::fromStdString(result->errors.front().text());
         // The problems themselves are in the validation label beside it.
         m_computeLabel->setText(result->failed ? tr("not computed: %1").arg(first)
-                                               : tr("not computed: the project has problems"));
+                                : m_document->awaitsSynthesis()
+                                    ? tr("no contour yet")
+                                    : tr("not computed: the project has problems"));
         m_computeLabel->setStyleSheet("color: #b00020;");
         if (result->failed) statusBar()->showMessage(tr("Computation failed: %1").arg(first));
         m_readout->clear();  // no state of the project as it is
+        // A design without a contour yet: the views drew nothing, and nothing of an earlier
+        // project may be exported as this one's.
+        if (result->awaitsContour()) m_shown.reset();
         emit resultShown(result);
         return;
     }
@@ -447,6 +587,7 @@ void MainWindow::setCursorTime(double t) {
     m_contour->setCursorAngle(s.phi);
     m_plots->setCursorX(r->axis == PlotAxis::Angle ? radToDeg(s.phi) : t);
     m_follower->setCursorX(r->axis == PlotAxis::Angle ? radToDeg(s.phi) : t);
+    m_design->setCursorX(r->axis == PlotAxis::Angle ? radToDeg(s.phi) : t);
 }
 
 bool MainWindow::waitForCurrentResult(int timeoutMs) {
@@ -466,7 +607,11 @@ bool MainWindow::waitForCurrentResult(int timeoutMs) {
 void MainWindow::updateStatus() {
     const Diagnostics& d = m_document->diagnostics();
     const int n = static_cast<int>(m_document->project().contour.size());
-    if (d.empty()) {
+    if (d.empty() && m_document->awaitsSynthesis()) {
+        m_validationLabel->setText(tr("Valid · no contour yet: Synthesize (F6) makes it"));
+        m_validationLabel->setToolTip({});
+        m_validationLabel->setStyleSheet({});
+    } else if (d.empty()) {
         m_validationLabel->setText(n == 1 ? tr("Valid · 1 segment")
                                           : tr("Valid · %1 segments").arg(n));
         m_validationLabel->setToolTip({});

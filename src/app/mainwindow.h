@@ -7,12 +7,14 @@
 #include <QTimer>
 #include <memory>
 
+#include "design/synthesis.h"
 #include "engine/compute_result.h"
 #include "export/export_request.h"
 
 class QCustomPlot;
 class QComboBox;
 class QLabel;
+class QProgressDialog;
 
 namespace Ui {
 class MainWindow;
@@ -29,6 +31,8 @@ class PathStudyPanel;
 class FollowerPanel;
 class MachiningPanel;
 class MotionPanel;
+class MotionDesignPanel;
+class SynthesisRunner;
 class ProjectDocument;
 class ProjectFiles;
 struct EditOutcome;
@@ -62,6 +66,15 @@ public:
     [[nodiscard]] MachiningPanel* machiningPanel() const { return m_machining; }
     [[nodiscard]] JointsPanel* jointsPanel() const { return m_joints; }
     [[nodiscard]] PathStudyPanel* pathStudyPanel() const { return m_pathStudy; }
+    [[nodiscard]] MotionDesignPanel* motionDesignPanel() const { return m_design; }
+    [[nodiscard]] QAction* synthesizeAction() const { return m_synthesizeAction; }
+
+    /// @brief Starts synthesising the contour from the design in a worker (Synthesize, F6);
+    /// false when there is no design or a synthesis is running. Its end is reported by
+    /// synthesisFinished(); progress with Cancel shows when it takes long.
+    bool synthesize();
+    /// @brief Cancels a running synthesis.
+    void cancelSynthesis();
 
     /// @brief Replaces arc `row` by Bézier pieces within `maxErrorMm` (one undo step); returns
     /// the problem, or empty on success (the achieved error goes to the status bar).
@@ -104,6 +117,8 @@ public:
 signals:
     /// The plots show this result (emitted after they were updated).
     void resultShown(const cam::ComputeResultPtr& result);
+    /// A synthesis ended: `problem` is empty when the contour was replaced (one undo step).
+    void synthesisFinished(const QString& problem);
     /// An export ended: `problem` is empty when `path` was written.
     void exportFinished(const QString& path, const QString& problem);
 
@@ -157,6 +172,15 @@ private:
     QTimer* m_playTimer = nullptr;
     QElapsedTimer m_playClock;
     void setUpPlay();
+    void setUpDesign();
+    void finishSynthesis(const std::shared_ptr<const Result<Synthesis>>& result, bool cancelled);
+    MotionDesignPanel* m_design = nullptr;
+    QDockWidget* m_designDock = nullptr;
+    QAction* m_synthesizeAction = nullptr;
+    SynthesisRunner* m_synthesis = nullptr;
+    QProgressDialog* m_synthesisProgress = nullptr;
+    QElapsedTimer m_synthesisClock;
+    bool m_synthesisInteractive = false;
     double m_cursorT = 0.0;
     ComputeResultPtr m_shown;  ///< the last result that could be computed: what the views draw
 };

@@ -210,6 +210,12 @@ void MainWindow::exportFile(const ExportRequest& request) {
         finishExport(request.path, what, outcome.bytes, outcome.problem);
         return;
     }
+    if (m_document->awaitsSynthesis()) {
+        finishExport(request.path, what, 0,
+                     tr("The project has no contour yet: Synthesize (F6) makes it from the "
+                        "design."));
+        return;
+    }
     if (hasErrors(m_document->diagnostics())) {
         finishExport(request.path, what, 0,
                      tr("The project has problems; correct them first:\n%1")

@@ -249,6 +249,11 @@ int runValidate(const Arguments& args, std::ostream& out, std::ostream& err) {
         err << lines;
         return kInvalidInput;
     }
+    if (project.value().contour.empty()) {
+        // Valid (project-format.md): a design whose contour was never synthesised.
+        out << "valid: a design, no contour yet (camwright-cli synthesize makes it)\n";
+        return kOk;
+    }
     // The follower must be able to ride the cam (Contour::build cannot fail after validation).
     const auto contour = Contour::build(project.value());
     const auto follower =
@@ -817,7 +822,8 @@ int runSynthesize(const Arguments& args, std::ostream& out) {
         tolerance = parsePositive("--tolerance", *text, "mm");
     }
     // A design whose contour was never synthesised is valid with an empty contour
-    // (project-format.md): everything else is checked as for any command.
+    // (project-format.md), but not a contour to compute: the project is checked here, not by
+    // load().
     auto loaded = loadProjectStructure(path);
     if (!loaded.ok()) {
         const Diagnostic& d = loaded.errors().front();
@@ -831,7 +837,6 @@ int runSynthesize(const Arguments& args, std::ostream& out) {
     }
     for (const Diagnostic& d : validateProject(project)) {
         if (d.severity != Severity::Error) continue;
-        if (project.contour.empty() && d.location == "contour") continue;
         throw CliError{kInvalidInput, path + ": " + d.location, d.message};
     }
     const auto made = synthesize(project, tolerance);

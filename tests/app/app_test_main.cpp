@@ -11,6 +11,19 @@
 #include <QStyleFactory>
 #include <QTemporaryDir>
 
+namespace {
+
+/// Every test starts with the default window layout: a test that closes its window saves the
+/// layout (closeEvent), and a later window would otherwise open with that test's docks.
+class FreshLayout : public ::testing::EmptyTestEventListener {
+    void OnTestStart(const ::testing::TestInfo&) override {
+        QSettings settings;
+        settings.remove("window");
+    }
+};
+
+}  // namespace
+
 int main(int argc, char** argv) {
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QLocale::setDefault(QLocale::c());
@@ -25,5 +38,6 @@ int main(int argc, char** argv) {
     QApplication::setOrganizationName("CamwrightTests");
     QApplication::setApplicationName("camwright-tests");
     ::testing::InitGoogleTest(&argc, argv);
+    ::testing::UnitTest::GetInstance()->listeners().Append(new FreshLayout);
     return RUN_ALL_TESTS();
 }

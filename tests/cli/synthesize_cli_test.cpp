@@ -148,5 +148,34 @@ TEST(CliSynthesize, WhatCannotBeMadeIsNamedAndTheOldFileStays) {
     EXPECT_NE(usage.err.find("--out"), std::string::npos);
 }
 
+TEST(CliSynthesize, ADesignWithoutAContourIsValidButHasNothingToComputeYet) {
+    // project-format.md: a design whose contour was never synthesised is valid.
+    test::TempDir dir;
+    const std::string in = dir.file("design.cam.json");
+    test::writeFileWithMode(in, designProject(kRoller), 0644);
+    const auto valid = test::runCli({"validate", in});
+    EXPECT_EQ(valid.exitCode, 0) << valid.err;
+    EXPECT_NE(valid.out.find("no contour yet"), std::string::npos) << valid.out;
+    // Every command that computes the contour says there is none, where, and how to make it.
+    for (const std::vector<std::string>& command :
+         {std::vector<std::string>{"analyze", in},
+          std::vector<std::string>{"export", in, "--format", "dxf", "--out",
+                                   dir.file("out.dxf")}}) {
+        const auto r = test::runCli(command);
+        EXPECT_EQ(r.exitCode, 2) << command.front() << ": " << r.err;
+        EXPECT_NE(r.err.find(in + ": contour: is empty"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("synthesize"), std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir.file("out.dxf")));
+    // Without a design an empty contour stays a problem.
+    test::writeFileWithMode(
+        in, R"({"format": "camwright", "version": 1, "motion": {"rpm": 60}, "contour": []})",
+        0644);
+    const auto invalid = test::runCli({"validate", in});
+    EXPECT_EQ(invalid.exitCode, 2);
+    EXPECT_NE(invalid.err.find("contour: must have at least one segment"), std::string::npos)
+        << invalid.err;
+}
+
 }  // namespace
 }  // namespace cam

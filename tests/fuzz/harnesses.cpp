@@ -301,6 +301,13 @@ void fuzzProject(const std::uint8_t* data, std::size_t size) {
         return;
     }
     const auto contour = Contour::build(project.value());
+    if (project.value().contour.empty()) {
+        // A design never synthesised loads (project-format.md) and says it has no contour yet.
+        FUZZ_CHECK(project.value().design.has_value(), "an empty contour loaded without a design");
+        FUZZ_CHECK(!contour.ok() && contour.errors().front().location == "contour",
+                   "a design without a contour does not say so");
+        return;
+    }
     FUZZ_CHECK(contour.ok(), "a loaded project does not compile");
     const double omega = project.value().motion.omegaRadS();
     FUZZ_CHECK(std::isfinite(omega) && omega != 0.0,

@@ -83,4 +83,22 @@ SetMachining::SetMachining(ProjectDocument* document, std::optional<MachiningSpe
                       QCoreApplication::translate("cam::Commands", "Change machining limits"),
                       gesture) {}
 
+SetDesign::SetDesign(ProjectDocument* document, std::optional<DesignSpec> after,
+                     const QString& text, int gesture)
+    : SetProjectValue(document, std::move(after), text, gesture) {}
+
+SynthesizeContour::SynthesizeContour(ProjectDocument* document, std::vector<SegmentSpec> contour,
+                                     double tolerance)
+    : QUndoCommand(QCoreApplication::translate("cam::Commands", "Synthesize contour")),
+      m_document(document),
+      m_contourBefore(document->project().contour),
+      m_contourAfter(std::move(contour)),
+      m_designBefore(document->project().design),
+      m_designAfter(document->project().design) {
+    if (m_designAfter) m_designAfter->tolerance = tolerance;
+}
+
+void SynthesizeContour::undo() { m_document->applyContourAndDesign(m_contourBefore, m_designBefore); }
+void SynthesizeContour::redo() { m_document->applyContourAndDesign(m_contourAfter, m_designAfter); }
+
 }  // namespace cam

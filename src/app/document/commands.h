@@ -16,6 +16,7 @@ enum class MergeId : int {
     EditMotion = 2,
     EditMachining = 3,
     EditFollower = 4,
+    EditDesign = 5,
 };
 
 /// @brief Which part of a segment an edit touched; edits of the same part of the same row merge.
@@ -169,6 +170,33 @@ class SetFollower : public SetProjectValue<std::optional<FollowerSpec>, &Project
                                            &ProjectDocument::applyFollower, MergeId::EditFollower> {
 public:
     SetFollower(ProjectDocument* document, std::optional<FollowerSpec> after, int gesture = 0);
+};
+
+}  // namespace cam
+
+namespace cam {
+
+/// @brief Sets, changes or removes the motion design (Motion Design dock).
+class SetDesign : public SetProjectValue<std::optional<DesignSpec>, &Project::design,
+                                         &ProjectDocument::applyDesign, MergeId::EditDesign> {
+public:
+    SetDesign(ProjectDocument* document, std::optional<DesignSpec> after, const QString& text,
+              int gesture = 0);
+};
+
+/// @brief Synthesize: the arc table made from the design replaces the contour, and the design
+/// keeps the tolerance it was made with; one undo step for both.
+class SynthesizeContour : public QUndoCommand {
+public:
+    SynthesizeContour(ProjectDocument* document, std::vector<SegmentSpec> contour,
+                      double tolerance);
+    void undo() override;
+    void redo() override;
+
+private:
+    ProjectDocument* m_document;
+    std::vector<SegmentSpec> m_contourBefore, m_contourAfter;
+    std::optional<DesignSpec> m_designBefore, m_designAfter;
 };
 
 }  // namespace cam

@@ -38,6 +38,7 @@ void ProjectDocument::reset(Project project, QString filePath, Diagnostics diagn
     emit motionChanged();
     emit machiningChanged();
     emit followerChanged();
+    emit designChanged();
     emit changed();
 }
 
@@ -107,6 +108,22 @@ void ProjectDocument::applyMachining(const std::optional<MachiningSpec>& machini
 void ProjectDocument::applyFollower(const std::optional<FollowerSpec>& follower) {
     m_project.follower = follower;
     emit followerChanged();
+    afterChange();
+}
+
+void ProjectDocument::applyDesign(const std::optional<DesignSpec>& design) {
+    m_project.design = design;
+    emit designChanged();
+    afterChange();
+}
+
+void ProjectDocument::applyContourAndDesign(const std::vector<SegmentSpec>& contour,
+                                            const std::optional<DesignSpec>& design) {
+    emit contourAboutToBeReset();
+    m_project.contour = contour;
+    m_project.design = design;
+    emit contourReset();
+    emit designChanged();
     afterChange();
 }
 

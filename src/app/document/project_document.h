@@ -49,6 +49,16 @@ public:
     void applySamplesPerTurn(const std::optional<std::int64_t>& samples);
     void applyMachining(const std::optional<MachiningSpec>& machining);
     void applyFollower(const std::optional<FollowerSpec>& follower);
+    void applyDesign(const std::optional<DesignSpec>& design);
+    /// @brief Synthesize: the contour and the design (its tolerance) in one step.
+    void applyContourAndDesign(const std::vector<SegmentSpec>& contour,
+                               const std::optional<DesignSpec>& design);
+
+    /// @brief A design whose contour was never synthesised (project-format.md: valid, its
+    /// contour empty): nothing to compute or export until Synthesize.
+    [[nodiscard]] bool awaitsSynthesis() const {
+        return m_project.contour.empty() && m_project.design.has_value();
+    }
 
 signals:
     // Structural changes come in pairs, as a Qt model needs them: "about to" while the contour
@@ -66,6 +76,7 @@ signals:
     void motionChanged();
     void machiningChanged();
     void followerChanged();
+    void designChanged();
     /// Any change at all, after the specific signal: recompute, revalidate, redraw.
     void changed();
     void filePathChanged(const QString& path);

@@ -8,6 +8,8 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "design/exact_profile.h"
+#include "design/motion_design.h"
 #include "engine/plot_data_preparer.h"
 #include "follower/follower_turn.h"
 #include "timing/timing_job.h"
@@ -74,6 +76,110 @@ FollowerPart computeFollower(const Contour* contour, const FollowerSpec& spec, d
     return part;
 }
 
+/// The turning speed, when the project gives one a computation can use.
+std::optional<double> usableOmega(const MotionSpec& motion) {
+    if (!std::isfinite(motion.value) || motion.value == 0.0) return std::nullopt;
+    const double omega = motion.omegaRadS();
+    if (!(std::abs(omega) >= kOmegaRadSRange.lo && std::abs(omega) <= kOmegaRadSRange.hi)) {
+        return std::nullopt;
+    }
+    return omega;
+}
+
+/// x of sample k of n over the turn (t_k = k·T/n), as the plots show it.
+double plotX(std::size_t k, std::size_t n, double omega, double period, PlotAxis axis) {
+    const double t = period * static_cast<double>(k) / static_cast<double>(n);
+    return axis == PlotAxis::Angle ? radToDeg(omega * t) : t;
+}
+
+/// The design's law over the turn; the follower on `contour` against it when there is one.
+std::shared_ptr<DesignCurves> computeDesign(const Project& project, const Contour* contour,
+                                            double omega, double period, PlotAxis axis,
+                                            const std::atomic<bool>& cancel) {
+    auto out = std::make_shared<DesignCurves>();
+    auto motion = MotionDesign::build(*project.design);
+    if (!motion.ok()) {
+        out->errors = motion.errors();
+        return out;
+    }
+    const MotionDesign& design = motion.value();
+    const FollowerSpec follower = project.follower.value_or(FollowerSpec{});
+    out->swinging = follower.motion == FollowerMotion::Oscillating;
+    out->notes = design.jumps();
+    for (std::size_t k = 0; k < project.design->segments.size(); ++k) {
+        out->coefficients.push_back(design.coefficients(k));
+        const double phi = degToRad(project.design->segments[k].toDeg);
+        out->jointsX.push_back(axis == PlotAxis::Angle ? radToDeg(omega > 0 ? phi : -phi)
+                                                       : phi / std::abs(omega));
+    }
+    constexpr std::size_t n = ComputeResult::kFollowerCurvePoints;
+    out->x.resize(n + 1);
+    for (auto& curve : out->law) curve.resize(n + 1);
+    for (std::size_t k = 0; k <= n; ++k) {
+        out->x[k] = plotX(k, n, omega, period, axis);
+        const double phi = omega * period * static_cast<double>(k % n) / static_cast<double>(n);
+        const std::array<double, 4> q = design.liftAt(phi);
+        // d/dt = ω d/dφ: the lift's unit (mm or °) per second.
+        out->law[0][k] = q[0];
+        out->law[1][k] = omega * q[1];
+        out->law[2][k] = omega * omega * q[2];
+        out->law[3][k] = omega * omega * omega * q[3];
+    }
+    const auto measure = [&out] {
+        for (std::size_t d = 0; d < 4; ++d) {
+            double lo = out->law[d].front(), hi = lo;
+            // The follower's jerk on an arc table spikes at every joint (its acceleration
+            // jumps there): the jerk's range is the law's.
+            for (const auto* curve : {&out->law[d], d < 3 ? &out->onContour[d] : &out->law[d]}) {
+                for (double v : *curve) {
+                    lo = std::min(lo, v);
+                    hi = std::max(hi, v);
+                }
+            }
+            out->yRanges[d] = {lo, hi};
+        }
+    };
+    measure();
+    auto exact = ExactProfile::build(design, follower);
+    if (!exact.ok()) {
+        out->errors = exact.errors();
+        return out;
+    }
+    if (cancel.load()) return nullptr;
+    for (const ProfileProblem& problem : exact.value().problems(false)) {
+        out->notes.push_back(problem.what);
+    }
+    if (!contour || cancel.load()) return out;
+    auto placed = FollowerModel::build(*contour, follower);
+    if (!placed.ok()) {
+        out->onContourErrors = placed.errors();
+        return out;
+    }
+    FollowerTurn turn;
+    if (!sampleFollowerTurn(placed.value(), omega, n, turn, &cancel)) return nullptr;
+    // The follower's coordinate (mm, or the arm's angle in rad) against the one the design
+    // asks for, turned into the lift's unit and sense.
+    const double unit =
+        out->swinging ? (follower.arm == ArmSide::Cw ? -1.0 : 1.0) * 180.0 / kPi : 1.0;
+    for (auto& curve : out->onContour) curve.resize(n + 1);
+    for (std::size_t k = 0; k <= n; ++k) {
+        const std::size_t i = k % n;
+        const double phi = omega * period * static_cast<double>(i) / static_cast<double>(n);
+        const std::array<double, 4> q = exact.value().followerCoordinate(phi);
+        const double w[4] = {1.0, omega, omega * omega, omega * omega * omega};
+        const double actual[4] = {turn.s[i], turn.v[i], turn.a[i], turn.j[i]};
+        for (std::size_t d = 0; d < 4; ++d) {
+            out->onContour[d][k] = out->law[d][k] + unit * (actual[d] - w[d] * q[d]);
+            if (d < 3) {
+                out->maxError[d] =
+                    std::max(out->maxError[d], std::abs(out->onContour[d][k] - out->law[d][k]));
+            }
+        }
+    }
+    measure();
+    return out;
+}
+
 }  // namespace
 
 ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic<bool>& cancel,
@@ -86,9 +192,31 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     result->axis = request.axis;
     // Joints that do not meet are drawn (r jumps there) rather than blanking the plots while
     // the designer edits; the document still reports them and refuses to save.
-    auto contour = Contour::build(*request.project, ValidationOptions{.checkJoints = false});
+    const Project& project = *request.project;
+    if (project.contour.empty() && project.design) {
+        // A design waiting for its first synthesis: its law is drawn, nothing else.
+        result->errors = {Diagnostic{"contour", kNoContourYet}};
+        if (const auto omega = usableOmega(project.motion)) {
+            auto design = computeDesign(project, nullptr, *omega, kTwoPi / std::abs(*omega),
+                                        request.axis, cancel);
+            if (!design) return nullptr;
+            result->design = std::move(design);
+            if (preparer) result->prepared = preparer->prepare(*result, cancel);
+        }
+        result->computeMs = static_cast<double>(timer.nsecsElapsed()) / 1e6;
+        return result;
+    }
+    auto contour = Contour::build(project, ValidationOptions{.checkJoints = false});
     if (!contour.ok()) {
         result->errors = contour.errors();
+        const auto omega = usableOmega(project.motion);
+        if (project.design && omega) {
+            auto design = computeDesign(project, nullptr, *omega, kTwoPi / std::abs(*omega),
+                                        request.axis, cancel);
+            if (!design) return nullptr;
+            result->design = std::move(design);
+            if (preparer) result->prepared = preparer->prepare(*result, cancel);
+        }
         result->computeMs = static_cast<double>(timer.nsecsElapsed()) / 1e6;
         return result;
     }
@@ -120,6 +248,12 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     }
     if (!splines.empty()) result->pathStudy = studyPath(splines, 100);
     if (cancel.load()) return nullptr;
+    if (project.design) {
+        auto design = computeDesign(project, &*result->contour, result->omega, result->period,
+                                    request.axis, cancel);
+        if (!design) return nullptr;
+        result->design = std::move(design);
+    }
     if (follower.isValid()) {
         // The follower was computed beside all of the above; it has finished or stops soon.
         FollowerPart part = follower.result();

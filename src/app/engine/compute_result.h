@@ -15,6 +15,7 @@
 #include "analysis/analysis.h"
 #include "common/diagnostic.h"
 #include "contour/contour.h"
+#include "design/motion_law.h"
 #include "engine/plot_levels.h"
 #include "follower/follower.h"
 #include "follower/follower_analysis.h"
@@ -41,6 +42,35 @@ struct ComputeRequest {
     PlotAxis axis = PlotAxis::Angle;
     bool timing = false;  ///< also compute the machining times (when the panel is shown)
     TimingMethod plotMethod = TimingMethod::Optimal;
+};
+
+/// @brief The project's motion design over the turn (math.md §8), on the plots' x axis: the
+/// law, and the follower placed by contact on the contour as it is (after Synthesize: what the
+/// arcs cost the motion).
+struct DesignCurves {
+    /// Why the design cannot be drawn (then nothing below is filled): its own problems, or a
+    /// base circle the follower cannot reach.
+    Diagnostics errors;
+    /// Velocity or acceleration jumps at joints; undercut and pressure angles beyond the limit
+    /// of the exact profile with this follower (undercut is an error: Synthesize refuses it).
+    Diagnostics notes;
+    std::vector<LawCoefficients> coefficients;  ///< per design segment
+    bool swinging = false;  ///< lifts in degrees (a swinging arm), else mm
+    /// The design's segment ends (to_deg) on the plots' x axis.
+    std::vector<double> jointsX;
+    /// kFollowerCurvePoints + 1 equal time steps, as followerX.
+    std::vector<double> x;
+    /// Lift (mm or °), velocity, acceleration, jerk (per s, s², s³) at the project's speed.
+    std::array<std::vector<double>, 4> law;
+    /// The same for the follower on the contour (empty without a contour it can ride).
+    std::array<std::vector<double>, 4> onContour;
+    /// Per quantity, the smallest and largest value of law and onContour together (jerk: the
+    /// law's only).
+    std::array<PlotRange, 4> yRanges{};
+    /// The largest |onContour − law| of lift, velocity and acceleration over those samples.
+    std::array<double, 3> maxError{};
+    /// Why onContour is empty while there is a contour (the follower cannot ride it).
+    Diagnostics onContourErrors;
 };
 
 /// @brief One finished computation. Never modified after it leaves the worker.
@@ -73,13 +103,26 @@ struct ComputeResult {
     /// the plots' x axis (degrees or seconds, as `curves`).
     std::vector<double> followerX, followerPressureDeg;
     static constexpr std::size_t kFollowerCurvePoints = 3600;
+    /// The motion design's curves (null when the project has no design). Computed also when
+    /// the contour is not (a design waiting for its first synthesis).
+    std::shared_ptr<const DesignCurves> design;
     /// What the views' preparer made of this result (null without a preparer).
     PreparedPlotDataPtr prepared;
 
     [[nodiscard]] bool ok() const { return errors.empty() && contour.has_value(); }
+    /// @brief A design whose contour was never synthesised: nothing to draw but the design.
+    [[nodiscard]] bool awaitsContour() const;
 };
 
 using ComputeResultPtr = std::shared_ptr<const ComputeResult>;
+
+/// @brief The error of a result for a design whose contour was never synthesised.
+inline constexpr const char* kNoContourYet =
+    "no contour yet: press Synthesize in the Motion Design dock to make it from the design";
+
+inline bool ComputeResult::awaitsContour() const {
+    return errors.size() == 1 && errors.front().message == kNoContourYet;
+}
 
 /// @brief The machining times of one request: computed after its kinematics, reported apart so
 /// the plots never wait for them.

@@ -35,8 +35,12 @@ QWidget* NumberDelegate::createEditor(QWidget* parent, const QStyleOptionViewIte
     spin->setFrame(false);
     const int c = index.column();
     const bool angle = c == SegmentTableModel::PhiStart || c == SegmentTableModel::PhiEnd;
-    spin->setSuffix(angle ? QStringLiteral(" °") : QStringLiteral(" mm"));
-    spin->setSingleStep(angle ? 0.5 : 0.1);
+    const QVariant suffix = index.data(kEditorSuffixRole);
+    const QVariant step = index.data(kEditorStepRole);
+    spin->setSuffix(suffix.isValid() ? suffix.toString()
+                    : angle          ? QStringLiteral(" °")
+                                     : QStringLiteral(" mm"));
+    spin->setSingleStep(step.isValid() ? step.toDouble() : angle ? 0.5 : 0.1);
     spin->setProperty(kGesture, nextGestureId());
     spin->setProperty(kIndex, QVariant::fromValue(QPersistentModelIndex(index)));
     // Steps (arrows, wheel) are live: they reach the model, and the gesture id merges them.

@@ -6,6 +6,11 @@
 
 namespace cam {
 
+/// A model other than SegmentTableModel tells NumberDelegate a cell's unit (" mm", " °") and
+/// step with these roles; without them the segment table's columns decide.
+inline constexpr int kEditorSuffixRole = Qt::UserRole + 3;
+inline constexpr int kEditorStepRole = Qt::UserRole + 4;
+
 /// @brief Edits a number in a NumberSpinBox with its unit, as in any spreadsheet: typed text is
 /// taken on Enter or Tab (so "12.5" is 12.5, never 12 on the way), arrow and wheel steps update
 /// the plots live, and all of one session is one undo step. Opening an editor and leaving it

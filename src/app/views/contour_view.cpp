@@ -137,6 +137,14 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
 
 void ContourView::setResult(const ComputeResultPtr& result) {
     if (!result) return;
+    if (result->awaitsContour()) {
+        // Nothing to draw yet; an earlier project's contour would only mislead.
+        for (QCPCurve* curve : m_colourCurves) curve->data()->clear();
+        m_centers->data()->clear();
+        m_joints->data()->clear();
+        setStale(staleText(*result));
+        return;
+    }
     if (!result->ok()) {
         // The last contour stays for orientation, greyed and labelled as out of date.
         setStale(staleText(*result));

@@ -9,6 +9,14 @@
 #include "views/stale_label.h"
 
 namespace cam {
+namespace {
+
+/// The law: dashed; the follower riding the contour: solid.
+QPen designPen(int which) {
+    return which == 0 ? QPen(QColor(0, 130, 60), 1.6, Qt::DashLine) : QPen(QColor(230, 120, 0), 1.2);
+}
+
+}  // namespace
 
 KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
@@ -37,6 +45,14 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
             // cluster at a NaN break and then lose that pixel's extremes.)
             g->setAdaptiveSampling(false);
         }
+        // The motion design's law (dashed) and the follower on the contour, after the
+        // kinematics' own curves: drawn while the project has a translating design.
+        QCPGraph* law = plot->addGraph();
+        law->setName(tr("law"));
+        law->setPen(designPen(0));
+        QCPGraph* follower = plot->addGraph();
+        follower->setName(tr("follower"));
+        follower->setPen(designPen(1));
         // The legend gets a narrow column of its own beside the plot: it never hides a curve.
         plot->legend->setVisible(true);
         plot->legend->setFont(QFont(font().family(), 8));
@@ -104,6 +120,19 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
 
 void KinematicsPlots::setResult(const ComputeResultPtr& result) {
     if (!result) return;
+    if (result->awaitsContour()) {
+        // Nothing to draw yet; an earlier project's curves would only mislead.
+        for (QCustomPlot* plot : m_plots) {
+            for (int c = 0; c < plot->graphCount(); ++c) plot->graph(c)->data()->clear();
+        }
+        for (QCPItemStraightLine* m : m_jointMarkers) m->parentPlot()->removeItem(m);
+        m_jointMarkers.clear();
+        m_result.reset();
+        m_data.reset();
+        m_level = static_cast<std::size_t>(-1);
+        setStale(staleText(*result));
+        return;
+    }
     if (!result->ok()) {
         setStale(staleText(*result));
         return;
@@ -131,8 +160,33 @@ void KinematicsPlots::setResult(const ComputeResultPtr& result) {
         for (QCustomPlot* p : m_plots) p->xAxis->setRange(x.lower, x.upper);
     }
     chooseResolution(true);  // always the new result's data, also when the level stays
+    showDesign();
     fitY();
 }
+
+void KinematicsPlots::showDesign() {
+    // In mm only: an arm's lift is an angle, shown in the Motion Design dock.
+    const auto& design = m_result->design;
+    const bool shown = design && !design->swinging && m_data && m_data->designLaw[1];
+    for (std::size_t p = 0; p < 3; ++p) {
+        QCustomPlot* plot = m_plots[p];
+        for (int which = 0; which < 2; ++which) {
+            QCPGraph* graph = plot->graph(kCurvesPerPlot + which);
+            const auto& data = which == 0 ? m_data->designLaw : m_data->designOnContour;
+            const bool has = shown && data[p + 1];
+            if (has) {
+                graph->setData(data[p + 1]);
+                graph->addToLegend();
+            } else {
+                graph->data()->clear();
+                graph->removeFromLegend();
+            }
+        }
+        plot->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+bool KinematicsPlots::showsDesign() const { return m_plots[0]->graph(kCurvesPerPlot)->dataCount() > 0; }
 
 QString KinematicsPlots::staleReason() const { return m_staleLabel->reason(); }
 
@@ -142,7 +196,9 @@ void KinematicsPlots::setStale(const QString& reason) {
     for (QCustomPlot* plot : m_plots) {
         for (int c = 0; c < plot->graphCount(); ++c) {
             QPen pen = plot->graph(c)->pen();
-            pen.setColor(stale ? staleColor() : componentColor(c));
+            pen.setColor(stale                  ? staleColor()
+                         : c < kCurvesPerPlot ? componentColor(c)
+                                              : designPen(c - kCurvesPerPlot).color());
             plot->graph(c)->setPen(pen);
         }
         plot->replot(QCustomPlot::rpQueuedReplot);
@@ -182,6 +238,10 @@ void KinematicsPlots::fitY() {
     for (std::size_t p = 0; p < 3; ++p) {
         const PlotRange& y = m_result->curves.yRanges[p];
         QCPRange range(y.lower, y.upper);
+        if (showsDesign()) {
+            const PlotRange& d = m_result->design->yRanges[p + 1];
+            range.expand(QCPRange(d.lower, d.upper));
+        }
         if (!(range.size() > 0.0)) range = QCPRange(range.lower - 1.0, range.upper + 1.0);
         m_plots[p]->yAxis->setRange(range);
         m_plots[p]->yAxis->scaleRange(1.08);

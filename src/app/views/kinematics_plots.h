@@ -35,6 +35,10 @@ public:
     [[nodiscard]] QString staleReason() const;
     /// @brief The level of the result's curves the graphs draw now.
     [[nodiscard]] std::size_t shownLevel() const { return m_level; }
+    /// @brief Whether the plots overlay a motion design's law and the follower on the contour
+    /// (graphs kCurvesPerPlot and kCurvesPerPlot + 1 of each plot).
+    [[nodiscard]] bool showsDesign() const;
+    static constexpr int kCurvesPerPlot = 3;
 
 signals:
     /// The mouse points at x (degrees or seconds, as the axis shows).
@@ -48,6 +52,7 @@ private:
     /// Draws the coarsest level whose buckets are at most a pixel wide at the current zoom.
     void chooseResolution(bool force = false);
     void fitY();
+    void showDesign();
     void setStale(const QString& reason);
 
     std::array<QCustomPlot*, 3> m_plots{};

@@ -12,6 +12,17 @@ QSharedPointer<QCPGraphDataContainer> containerOf(const std::vector<PlotPoint>& 
     return container;
 }
 
+/// y over x, sorted by x (a cam turning clockwise has x from 0 down to −360°).
+QSharedPointer<QCPGraphDataContainer> containerOf(const std::vector<double>& x,
+                                                  const std::vector<double>& y) {
+    QVector<QCPGraphData> data;
+    data.reserve(static_cast<qsizetype>(x.size()));
+    for (std::size_t k = 0; k < x.size() && k < y.size(); ++k) data.emplaceBack(x[k], y[k]);
+    auto container = QSharedPointer<QCPGraphDataContainer>::create();
+    container->set(data, x.size() < 2 || x.front() <= x.back());
+    return container;
+}
+
 }  // namespace
 
 std::shared_ptr<const KinematicsPlotData> makeKinematicsPlotData(const ComputeResult& result,
@@ -21,6 +32,14 @@ std::shared_ptr<const KinematicsPlotData> makeKinematicsPlotData(const ComputeRe
         if (cancel && cancel->load(std::memory_order_relaxed)) return nullptr;
         auto& containers = data->levels.emplace_back();
         for (std::size_t c = 0; c < kCurveCount; ++c) containers[c] = containerOf(level.curves[c]);
+    }
+    if (const auto& design = result.design; design && !design->x.empty()) {
+        for (std::size_t d = 0; d < 4; ++d) {
+            data->designLaw[d] = containerOf(design->x, design->law[d]);
+            if (!design->onContour[d].empty()) {
+                data->designOnContour[d] = containerOf(design->x, design->onContour[d]);
+            }
+        }
     }
     return data;
 }

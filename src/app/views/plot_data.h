@@ -16,6 +16,9 @@ namespace cam {
 /// for curve as in ComputeResult::curves.
 struct KinematicsPlotData : PreparedPlotData {
     std::vector<std::array<QSharedPointer<QCPGraphDataContainer>, kCurveCount>> levels;
+    /// The motion design (ComputeResult::design): lift, velocity, acceleration and jerk of the
+    /// law and of the follower on the contour (null where the result has none).
+    std::array<QSharedPointer<QCPGraphDataContainer>, 4> designLaw, designOnContour;
 };
 
 /// @brief Feed and per-axis accelerations of a machining-time outcome.

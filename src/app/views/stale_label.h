@@ -18,6 +18,11 @@ inline QColor staleColor() { return {190, 190, 190}; }
 /// @brief Why a result could not be computed, as the views say it (the first problem; the
 /// status bar's tooltip lists all).
 inline QString staleText(const ComputeResult& result) {
+    if (result.awaitsContour()) {
+        return QCoreApplication::translate("cam::StaleLabel",
+                                           "No contour yet: Synthesize (F6, in the Motion Design "
+                                           "dock) makes it from the design.");
+    }
     const QString first = result.errors.empty()
                               ? QStringLiteral("?")
                               : QString::fromStdString(result.errors.front().text());

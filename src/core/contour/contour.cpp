@@ -15,6 +15,11 @@ PolarDerivatives ContourSegment::evaluate(double phi) const {
 Result<Contour> Contour::build(const Project& project, ValidationOptions options) {
     Diagnostics errors = validateProject(project, options);
     if (hasErrors(errors)) return errors;
+    if (project.contour.empty()) {
+        // Valid only as a design waiting for its synthesis: nothing to compute yet.
+        return Diagnostics{{"contour", "is empty: the design's contour was never synthesised "
+                                       "(camwright-cli synthesize makes it)"}};
+    }
 
     Contour contour;
     contour.m_segments.reserve(project.contour.size());

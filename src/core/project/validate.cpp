@@ -139,7 +139,8 @@ private:
     void checkContour() {
         const auto& segments = m_project.contour;
         if (segments.empty()) {
-            error("contour", "must have at least one segment");
+            // A design whose contour was never synthesised is valid (project-format.md).
+            if (!m_project.design) error("contour", "must have at least one segment");
             return;
         }
         bool allShapesValid = true;

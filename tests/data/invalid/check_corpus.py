@@ -271,7 +271,8 @@ def validate(doc, probs):
 
     c = doc.get("contour")
     segs = []
-    if not isinstance(c, list) or not c:
+    # A design whose contour was never synthesised is valid with an empty contour.
+    if not isinstance(c, list) or (not c and not isinstance(doc.get("design"), dict)):
         probs.add("contour", "missing, not an array or empty")
         c = []
     for k, s in enumerate(c):

@@ -1,0 +1,401 @@
+#include "views/motion_design_panel.h"
+
+#include <qcustomplot.h>
+
+#include <QAction>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QTableView>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "document/commands.h"
+#include "models/delegates.h"
+#include "models/design_table_model.h"
+#include "views/plot_data.h"
+#include "widgets/number_spin_box.h"
+
+namespace cam {
+namespace {
+
+NumberSpinBox* lengthBox(QWidget* parent, const char* name, const QString& tip) {
+    auto* s = new NumberSpinBox(parent);
+    s->setObjectName(name);
+    s->setSuffix(QStringLiteral(" mm"));
+    s->setToolTip(tip);
+    s->setMinimum(1e-6);
+    s->setMaximum(1e6);
+    s->setMinimumWidth(80);
+    return s;
+}
+
+QString number(double v) { return QLocale().toString(v, 'g', 3); }
+
+/// The law: dashed; the follower riding the contour: solid (as on the kinematics plots).
+const QPen kLawPen(QColor(0, 130, 60), 1.6, Qt::DashLine);
+const QPen kFollowerPen(QColor(230, 120, 0), 1.2);
+
+}  // namespace
+
+MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
+    : QWidget(parent), m_document(document), m_model(new DesignTableModel(document, this)) {
+    auto* layout = new QVBoxLayout(this);
+    auto* top = new QHBoxLayout;
+    m_newDesign = new QPushButton(tr("New Design"), this);
+    m_newDesign->setObjectName("newDesignButton");
+    m_newDesign->setToolTip(
+        tr("Start from a cycloidal dwell–rise–dwell–return motion (math.md §8) and edit it"));
+    m_removeDesign = new QPushButton(tr("Remove Design"), this);
+    m_removeDesign->setObjectName("removeDesignButton");
+    m_removeDesign->setToolTip(tr("Remove the motion design from the project (the contour stays)"));
+    top->addWidget(m_newDesign);
+    top->addWidget(m_removeDesign);
+    top->addStretch(1);
+    layout->addLayout(top);
+
+    auto* form = new QFormLayout;
+    m_baseRadius = lengthBox(this, "baseRadiusSpinBox",
+                             tr("Radius of the base circle the follower touches at lift 0"));
+    m_baseRadius->setSingleStep(1.0);
+    m_tolerance = lengthBox(this, "toleranceSpinBox",
+                            tr("Largest distance of the arc table from the exact profile"));
+    m_tolerance->setSingleStep(0.001);
+    form->addRow(tr("Base radius"), m_baseRadius);
+    form->addRow(tr("Tolerance"), m_tolerance);
+    layout->addLayout(form);
+
+    m_table = new QTableView(this);
+    m_table->setObjectName("designTable");
+    m_table->setModel(m_model);
+    auto* numbers = new NumberDelegate(m_table);
+    auto* choices = new ChoiceDelegate(m_table);
+    for (int c = 0; c < DesignTableModel::ColumnCount; ++c) {
+        m_table->setItemDelegateForColumn(
+            c, c == DesignTableModel::Law ? static_cast<QAbstractItemDelegate*>(choices) : numbers);
+    }
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
+    m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                             QAbstractItemView::AnyKeyPressed);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectItems);
+    m_table->setMinimumSize(120, 100);
+    layout->addWidget(m_table, 1);
+
+    auto* rows = new QHBoxLayout;
+    m_split = new QPushButton(tr("Split"), this);
+    m_split->setObjectName("splitDesignSegmentButton");
+    m_split->setToolTip(tr("Split the selected segment at its middle: the second half dwells"));
+    m_delete = new QPushButton(tr("Delete"), this);
+    m_delete->setObjectName("deleteDesignSegmentButton");
+    m_delete->setToolTip(
+        tr("Delete the selected segment: the one before it takes over its stretch and lift"));
+    m_synthesize = new QToolButton(this);
+    m_synthesize->setObjectName("synthesizeButton");
+    m_synthesize->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    rows->addWidget(m_split);
+    rows->addWidget(m_delete);
+    rows->addStretch(1);
+    layout->addLayout(rows);
+    m_synthesize->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    layout->addWidget(m_synthesize);
+
+    m_report = new QLabel(this);
+    m_report->setObjectName("synthesisReportLabel");
+    m_report->setWordWrap(true);
+    m_report->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_report);
+    m_notes = new QLabel(this);
+    m_notes->setObjectName("designNotesLabel");
+    m_notes->setWordWrap(true);
+    m_notes->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_notes);
+
+    m_plotArea = new QWidget(this);
+    auto* plots = new QVBoxLayout(m_plotArea);
+    plots->setContentsMargins(0, 0, 0, 0);
+    plots->setSpacing(0);
+    // The key above the plots, where it hides no curve.
+    auto* key = new QLabel(m_plotArea);
+    key->setObjectName("designPlotKey");
+    key->setText(QStringLiteral("<span style='color:%1'>╌╌ %2</span>&nbsp;&nbsp;&nbsp;"
+                                "<span style='color:%3'>── %4</span>")
+                     .arg(kLawPen.color().name(), tr("law").toHtmlEscaped(),
+                          kFollowerPen.color().name(),
+                          tr("follower on the contour").toHtmlEscaped()));
+    plots->addWidget(key);
+    const char* names[] = {"designLiftPlot", "designVelocityPlot", "designAccelerationPlot",
+                           "designJerkPlot"};
+    auto* group = new QCPMarginGroup(nullptr);
+    for (std::size_t p = 0; p < 4; ++p) {
+        auto* plot = new QCustomPlot(m_plotArea);
+        plot->setObjectName(names[p]);
+        plot->setMinimumHeight(70);
+        plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+        plot->axisRect()->setRangeDrag(Qt::Horizontal);
+        plot->axisRect()->setRangeZoom(Qt::Horizontal);
+        plot->yAxis->setNumberFormat("gb");
+        plot->xAxis->setTickLabels(p == 3);
+        QCPGraph* law = plot->addGraph();
+        law->setName(tr("law"));
+        law->setPen(kLawPen);
+        QCPGraph* follower = plot->addGraph();
+        follower->setName(tr("follower on the contour"));
+        follower->setPen(kFollowerPen);
+        auto* cursor = new QCPItemStraightLine(plot);
+        cursor->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
+        cursor->point1->setCoords(0, 0);
+        cursor->point2->setCoords(0, 1);
+        m_cursors[p] = cursor;
+        plot->axisRect()->setMarginGroup(QCP::msLeft | QCP::msRight, group);
+        m_plots[p] = plot;
+        plots->addWidget(plot, 1);
+    }
+    group->setParent(m_plots[0]);
+    for (QCustomPlot* a : m_plots) {
+        for (QCustomPlot* b : m_plots) {
+            if (a == b) continue;
+            connect(a->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), b,
+                    [b](const QCPRange& r) {
+                        if (b->xAxis->range() != r) {
+                            b->xAxis->setRange(r);
+                            b->replot(QCustomPlot::rpQueuedReplot);
+                        }
+                    });
+        }
+    }
+    layout->addWidget(m_plotArea, 2);
+
+    connect(m_newDesign, &QPushButton::clicked, this, &MotionDesignPanel::newDesign);
+    connect(m_removeDesign, &QPushButton::clicked, this, [this] {
+        m_document->undoStack()->push(new SetDesign(m_document, std::nullopt, tr("Remove design")));
+    });
+    connect(m_split, &QPushButton::clicked, this, [this] { splitSegment(currentRow()); });
+    connect(m_delete, &QPushButton::clicked, this, [this] { deleteSegment(currentRow()); });
+    const auto number = [this](NumberSpinBox* box, std::function<void(DesignSpec&, double)> set,
+                               QString text) {
+        connect(box, &QDoubleSpinBox::valueChanged, this, [this, set, text](double v) {
+            if (m_refreshing || !m_document->project().design) return;
+            if (m_gesture == 0) m_gesture = nextGestureId();
+            editDesign([&](DesignSpec& d) { set(d, v); }, text, m_gesture);
+        });
+        connect(box, &QDoubleSpinBox::editingFinished, this, [this] { m_gesture = 0; });
+    };
+    number(m_baseRadius, [](DesignSpec& d, double v) { d.baseRadius = v; },
+           tr("Change base radius"));
+    number(m_tolerance, [](DesignSpec& d, double v) { d.tolerance = v; }, tr("Change tolerance"));
+    connect(m_document, &ProjectDocument::designChanged, this, &MotionDesignPanel::refresh);
+    connect(m_document, &ProjectDocument::followerChanged, this, &MotionDesignPanel::refresh);
+    refresh();
+}
+
+void MotionDesignPanel::setSynthesizeAction(QAction* action) {
+    m_synthesize->setDefaultAction(action);
+}
+
+int MotionDesignPanel::currentRow() const {
+    const QModelIndex current = m_table->currentIndex();
+    return current.isValid() ? current.row() : -1;
+}
+
+void MotionDesignPanel::editDesign(const std::function<void(DesignSpec&)>& change,
+                                   const QString& text, int gesture) {
+    DesignSpec design = *m_document->project().design;
+    change(design);
+    if (design == *m_document->project().design) return;
+    m_document->undoStack()->push(new SetDesign(m_document, design, text, gesture));
+}
+
+void MotionDesignPanel::newDesign() {
+    if (m_document->project().design) return;
+    DesignSpec d;
+    d.baseRadius = 40.0;
+    using L = MotionLawType;
+    d.segments = {{L::Cycloidal, 120.0, 10.0},
+                  {L::Dwell, 180.0, 10.0},
+                  {L::Cycloidal, 300.0, 0.0},
+                  {L::Dwell, 360.0, 0.0}};
+    if (const auto& f = m_document->project().follower;
+        f && f->motion == FollowerMotion::Oscillating) {
+        // An arm swings by degrees: 10° suits the default arm of 50 mm.
+        for (auto& s : d.segments) s.lift = s.lift > 0.0 ? 10.0 : 0.0;
+    }
+    m_document->undoStack()->push(new SetDesign(m_document, d, tr("New design")));
+    m_table->setCurrentIndex(m_model->index(0, DesignTableModel::Law));
+}
+
+void MotionDesignPanel::splitSegment(int row) {
+    const auto& design = m_document->project().design;
+    if (!design || row < 0 || row >= static_cast<int>(design->segments.size())) return;
+    editDesign(
+        [row](DesignSpec& d) {
+            const auto k = static_cast<std::size_t>(row);
+            const double from = k == 0 ? 0.0 : d.segments[k - 1].toDeg;
+            DesignSegmentSpec dwell{MotionLawType::Dwell, d.segments[k].toDeg,
+                                    d.segments[k].lift};
+            d.segments[k].toDeg = (from + d.segments[k].toDeg) / 2.0;
+            d.segments.insert(d.segments.begin() + row + 1, dwell);
+        },
+        tr("Split design segment %1").arg(row), 0);
+    m_table->setCurrentIndex(m_model->index(row + 1, DesignTableModel::Law));
+}
+
+void MotionDesignPanel::deleteSegment(int row) {
+    const auto& design = m_document->project().design;
+    if (!design || row < 0 || row >= static_cast<int>(design->segments.size()) ||
+        design->segments.size() < 2) {
+        return;
+    }
+    editDesign(
+        [row](DesignSpec& d) {
+            const auto k = static_cast<std::size_t>(row);
+            const DesignSegmentSpec gone = d.segments[k];
+            if (k > 0) {
+                d.segments[k - 1].toDeg = gone.toDeg;
+                d.segments[k - 1].lift = gone.lift;
+            }
+            // The first segment's stretch goes to the next, which then starts at 0°.
+            d.segments.erase(d.segments.begin() + row);
+        },
+        tr("Delete design segment %1").arg(row), 0);
+}
+
+void MotionDesignPanel::refresh() {
+    m_refreshing = true;
+    const auto& design = m_document->project().design;
+    m_newDesign->setVisible(!design);
+    m_removeDesign->setVisible(design.has_value());
+    for (QWidget* w : std::initializer_list<QWidget*>{m_baseRadius, m_tolerance, m_table, m_split,
+                                                      m_delete, m_synthesize}) {
+        w->setEnabled(design.has_value());
+    }
+    if (design) {
+        m_baseRadius->setValue(design->baseRadius);
+        m_tolerance->setValue(design->tolerance);
+    }
+    m_refreshing = false;
+    if (!design) {
+        m_plotArea->hide();
+        m_notes->clear();
+        m_report->setText(tr("This project has no motion design. New Design starts one: lay out "
+                             "the follower's motion, then Synthesize makes the contour from it."));
+    }
+}
+
+void MotionDesignPanel::setReport(const SynthesisReport& report, bool swinging) {
+    const QString lift = swinging ? QStringLiteral("°") : QStringLiteral(" mm");
+    const QString speed = swinging ? QStringLiteral(" °/s") : QStringLiteral(" mm/s");
+    const QString accel = swinging ? QStringLiteral(" °/s²") : QStringLiteral(" mm/s²");
+    m_reportText = tr("Last synthesis: %n segment(s), at most %1 mm from the exact profile. The "
+                      "follower on them against the law (%2 angles): lift %3%4, velocity %5%6, "
+                      "acceleration %7%8 (the arcs are only tangent-continuous: the "
+                      "acceleration jumps at their joints).",
+                      nullptr, static_cast<int>(report.segments))
+                       .arg(number(report.maxDeviationMm))
+                       .arg(static_cast<qulonglong>(report.checkedAngles))
+                       .arg(number(report.maxLiftError), lift, number(report.maxVelocityError),
+                            speed, number(report.maxAccelerationError), accel);
+    m_report->setText(m_reportText);
+}
+
+QString MotionDesignPanel::reportText() const { return m_report->text(); }
+QString MotionDesignPanel::notesText() const { return m_notes->text(); }
+
+void MotionDesignPanel::setCursorX(double x) {
+    if (!m_plotArea->isVisible()) return;
+    for (std::size_t p = 0; p < 4; ++p) {
+        m_cursors[p]->point1->setCoords(x, 0);
+        m_cursors[p]->point2->setCoords(x, 1);
+        m_plots[p]->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+void MotionDesignPanel::setResult(const ComputeResultPtr& result) {
+    if (!result || !m_document->project().design) return;
+    const auto& design = result->design;
+    if (!design || !design->errors.empty()) {
+        // The design cannot be drawn as it is: its problems are marked in the table.
+        m_plotArea->setVisible(false);
+        m_notes->setText(design ? tr("The design cannot be made: %1")
+                                      .arg(QString::fromStdString(design->errors.front().text()))
+                                : tr("The design cannot be drawn at this speed."));
+        m_notes->setStyleSheet("color: #b00020;");
+        return;
+    }
+    m_model->setCoefficients(design->coefficients);
+    m_plotArea->setVisible(true);
+    const auto data = std::dynamic_pointer_cast<const KinematicsPlotData>(result->prepared);
+    const bool swinging = design->swinging;
+    const QString unit = swinging ? QStringLiteral("°") : QStringLiteral("mm");
+    const QString titles[] = {tr("Lift [%1]").arg(unit), tr("v [%1/s]").arg(unit),
+                              tr("a [%1/s²]").arg(unit), tr("j [%1/s³]").arg(unit)};
+    for (QCPItemStraightLine* j : m_joints) j->parentPlot()->removeItem(j);
+    m_joints.clear();
+    for (std::size_t p = 0; p < 4; ++p) {
+        QCustomPlot* plot = m_plots[p];
+        plot->yAxis->setLabel(titles[p]);
+        if (data && data->designLaw[p]) {
+            plot->graph(0)->setData(data->designLaw[p]);
+        } else {
+            plot->graph(0)->data()->clear();
+        }
+        if (data && data->designOnContour[p]) {
+            plot->graph(1)->setData(data->designOnContour[p]);
+        } else {
+            plot->graph(1)->data()->clear();
+        }
+        for (double x : design->jointsX) {
+            auto* line = new QCPItemStraightLine(plot);
+            line->setPen(QPen(QColor(120, 120, 120, 120), 1, Qt::DotLine));
+            line->point1->setCoords(x, 0);
+            line->point2->setCoords(x, 1);
+            m_joints.push_back(line);
+        }
+        QCPRange y(design->yRanges[p].lower, design->yRanges[p].upper);
+        if (!(y.size() > 0.0)) y = QCPRange(y.lower - 1.0, y.upper + 1.0);
+        plot->yAxis->setRange(y);
+        plot->yAxis->scaleRange(1.1);
+        if (!m_fitted || plot->xAxis->range().size() == 0.0) {
+            plot->xAxis->setRange(design->x.front(), design->x.back());
+        }
+        plot->xAxis->setLabel(p == 3 ? (result->axis == PlotAxis::Angle ? tr("φ [°]") : tr("t [s]"))
+                                     : QString());
+        plot->replot(QCustomPlot::rpQueuedReplot);
+    }
+    m_fitted = true;
+    if (const QCPRange x(design->x.front(), design->x.back());
+        m_plots[0]->xAxis->range().lower < std::min(x.lower, x.upper) - 1e-9 ||
+        m_plots[0]->xAxis->range().upper > std::max(x.lower, x.upper) + 1e-9) {
+        // Another axis (time ↔ angle) or another sense of rotation: shown whole.
+        for (QCustomPlot* plot : m_plots) plot->xAxis->setRange(x);
+    }
+    QStringList lines;
+    if (!design->onContour[0].empty()) {
+        lines << tr("The follower on the contour as it is, against the law (%1 samples): lift "
+                    "%2 %3, velocity %4 %3/s, acceleration %5 %3/s².")
+                     .arg(design->x.size() - 1)
+                     .arg(number(design->maxError[0]), unit, number(design->maxError[1]),
+                          number(design->maxError[2]));
+    } else if (!design->onContourErrors.empty()) {
+        lines << tr("The follower cannot ride the contour: %1")
+                     .arg(QString::fromStdString(design->onContourErrors.front().text()));
+    } else if (!result->ok()) {
+        lines << tr("No contour yet: Synthesize makes it from this design.");
+    }
+    bool problem = false;
+    for (const Diagnostic& d : design->notes) {
+        lines << QString::fromStdString(d.text());
+        problem = problem || d.severity == Severity::Error;
+    }
+    m_notes->setText(lines.join('\n'));
+    m_notes->setStyleSheet(problem ? "color: #b00020;" : "");
+    if (m_reportText.isEmpty()) {
+        m_report->setText(tr("Synthesize fits the exact profile with tangent arcs within the "
+                             "tolerance and replaces the contour (one undo step)."));
+    }
+}
+
+}  // namespace cam

@@ -1,0 +1,88 @@
+#pragma once
+/// @file
+/// @brief The Motion Design dock (math.md §8): the design's segments (law, end angle, lift,
+/// poly5's boundary values; every edit an undo command) with each law's Cv, Ca, Cj; base radius
+/// and tolerance; the law's lift, velocity, acceleration and jerk over the turn with the
+/// follower on the contour drawn over it; and what the last synthesis reported.
+
+#include <QWidget>
+#include <array>
+#include <functional>
+
+#include "design/synthesis.h"
+#include "engine/compute_result.h"
+
+class QAction;
+class QCPItemStraightLine;
+class QCustomPlot;
+class QLabel;
+class QPushButton;
+class QTableView;
+class QToolButton;
+
+namespace cam {
+
+class DesignTableModel;
+class NumberSpinBox;
+class ProjectDocument;
+
+class MotionDesignPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit MotionDesignPanel(ProjectDocument* document, QWidget* parent = nullptr);
+
+    /// @brief The button under the table triggers this action (the main window's Synthesize).
+    void setSynthesizeAction(QAction* action);
+    /// @brief Draws the design's curves of a result (the newest, computable or not).
+    void setResult(const ComputeResultPtr& result);
+    /// @brief What the last synthesis reported (segments, deviation, the price of arcs).
+    void setReport(const SynthesisReport& report, bool swinging);
+    /// @brief Moves the plots' cursor line to x (degrees or seconds).
+    void setCursorX(double x);
+
+    [[nodiscard]] DesignTableModel* model() const { return m_model; }
+    [[nodiscard]] QTableView* table() const { return m_table; }
+    /// Lift, velocity, acceleration, jerk.
+    [[nodiscard]] QCustomPlot* plot(int i) const { return m_plots[static_cast<std::size_t>(i)]; }
+    [[nodiscard]] QString reportText() const;
+    [[nodiscard]] QString notesText() const;
+
+    /// @brief Starts a design: the cycloidal dwell–rise–dwell–return of math.md §8 (one undo
+    /// step); replaces nothing when there is one.
+    void newDesign();
+    /// @brief Splits segment `row` at its middle angle: the first half keeps the law and the
+    /// end lift, the second half dwells there (one undo step).
+    void splitSegment(int row);
+    /// @brief Deletes segment `row`; the segment before it (the next for the first) takes over
+    /// its stretch and end lift (one undo step). The last segment cannot be deleted.
+    void deleteSegment(int row);
+
+private:
+    void refresh();
+    void editDesign(const std::function<void(DesignSpec&)>& change, const QString& text,
+                    int gesture);
+    [[nodiscard]] int currentRow() const;
+
+    ProjectDocument* m_document;
+    DesignTableModel* m_model;
+    QPushButton* m_newDesign;
+    QPushButton* m_removeDesign;
+    NumberSpinBox* m_baseRadius;
+    NumberSpinBox* m_tolerance;
+    QTableView* m_table;
+    QPushButton* m_split;
+    QPushButton* m_delete;
+    QToolButton* m_synthesize;
+    QLabel* m_report;
+    QLabel* m_notes;
+    QWidget* m_plotArea;
+    std::array<QCustomPlot*, 4> m_plots{};
+    std::array<QCPItemStraightLine*, 4> m_cursors{};
+    std::vector<QCPItemStraightLine*> m_joints;
+    QString m_reportText;
+    int m_gesture = 0;
+    bool m_refreshing = false;
+    bool m_fitted = false;
+};
+
+}  // namespace cam

@@ -1,0 +1,361 @@
+// The Motion Design dock (math.md §8): a design without a contour opens and draws its law;
+// every edit of the segment table, base radius and tolerance is an undo step; Synthesize runs
+// in a worker, replaces the contour in one undo step (or says why not and changes nothing),
+// and can be cancelled; the kinematics plots then draw the law over the follower on the arcs.
+// The law's numbers are checked against the closed form of the cycloid, written out here.
+
+#include <gtest/gtest.h>
+
+#include <qcustomplot.h>
+#include <QAction>
+#include <QDockWidget>
+#include <QLabel>
+#include <QSignalSpy>
+#include <QTableView>
+#include <cmath>
+
+#include "app_test_support.h"
+#include "common/angles.h"
+#include "contour/contour.h"
+#include "document/commands.h"
+#include "document/project_document.h"
+#include "engine/compute_engine.h"
+#include "follower/follower.h"
+#include "mainwindow.h"
+#include "models/design_table_model.h"
+#include "models/segment_table_model.h"
+#include "views/kinematics_plots.h"
+#include "views/motion_design_panel.h"
+
+namespace cam {
+namespace {
+
+const QString kDesignOnly =
+    QString::fromStdString(test::dataPath("app/design-roller-no-contour.cam.json"));
+constexpr double kPi_ = 3.14159265358979323846;
+
+/// The cycloidal rise of h over beta (rad) at phi (math.md §8, VDI 2143), and its first and
+/// second derivatives by phi: h(x − sin 2πx / 2π), x = phi/beta.
+struct Cycloid {
+    double h, beta;
+    [[nodiscard]] double s(double phi) const {
+        const double x = phi / beta;
+        return h * (x - std::sin(2 * kPi_ * x) / (2 * kPi_));
+    }
+    [[nodiscard]] double ds(double phi) const {
+        return h / beta * (1 - std::cos(2 * kPi_ * phi / beta));
+    }
+    [[nodiscard]] double dds(double phi) const {
+        return 2 * kPi_ * h / (beta * beta) * std::sin(2 * kPi_ * phi / beta);
+    }
+};
+
+/// The example design's lift at phi (deg): cycloidal rise 0–120°, dwell, cycloidal return
+/// 180–300°, dwell; 10 mm.
+double liftDeg(double deg) {
+    const Cycloid rise{10.0, degToRad(120.0)};
+    if (deg <= 120.0) return rise.s(degToRad(deg));
+    if (deg <= 180.0) return 10.0;
+    if (deg <= 300.0) return 10.0 - rise.s(degToRad(deg - 180.0));
+    return 0.0;
+}
+
+/// The graph's value at the sample nearest x.
+double valueAt(const QCPGraph* graph, double x) {
+    auto it = graph->data()->findBegin(x, true);
+    double best = it->value, distance = std::abs(it->key - x);
+    for (int k = 0; k < 2 && it != graph->data()->constEnd(); ++k, ++it) {
+        if (std::abs(it->key - x) < distance) {
+            distance = std::abs(it->key - x);
+            best = it->value;
+        }
+    }
+    EXPECT_LT(distance, 0.06) << "no sample near " << x;
+    return best;
+}
+
+bool waitForResult(MainWindow& w) { return w.waitForCurrentResult(test::kSanitized ? 60000 : 20000); }
+
+/// Runs Synthesize and waits for its end; the problem (empty: the contour was replaced).
+QString synthesizeAndWait(MainWindow& w) {
+    QSignalSpy finished(&w, &MainWindow::synthesisFinished);
+    if (!w.synthesize()) return QStringLiteral("not started");
+    if (!finished.wait(test::kSanitized ? 120000 : 30000)) return QStringLiteral("no end");
+    return finished.front().front().toString();
+}
+
+TEST(MotionDesign, ADesignWithoutAContourOpensAndDrawsItsLaw) {
+    MainWindow window;
+    window.resize(1400, 860);
+    window.show();
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ASSERT_TRUE(waitForResult(window));
+    ProjectDocument* doc = window.document();
+    EXPECT_TRUE(doc->isValid()) << diagnosticsText(doc->diagnostics()).toStdString();
+    EXPECT_TRUE(doc->awaitsSynthesis());
+    const ComputeResultPtr& result = window.engine()->latestResult();
+    ASSERT_TRUE(result);
+    EXPECT_TRUE(result->awaitsContour());
+    // The views draw nothing of an earlier project and say what to do.
+    EXPECT_NE(window.plots()->staleReason().indexOf("No contour yet"), -1)
+        << window.plots()->staleReason().toStdString();
+    for (int p = 0; p < 3; ++p) {
+        for (int g = 0; g < window.plots()->plot(p)->graphCount(); ++g) {
+            EXPECT_EQ(window.plots()->plot(p)->graph(g)->dataCount(), 0) << p << " " << g;
+        }
+    }
+    EXPECT_FALSE(window.shownResult());
+    EXPECT_NE(window.findChild<QLabel*>("validationLabel")->text().indexOf("no contour yet"), -1);
+    EXPECT_TRUE(window.synthesizeAction()->isEnabled());
+    // The dock is shown, and its lift is the cycloid's (1 rpm-free: 60 rpm, ω = 2π/s).
+    EXPECT_TRUE(window.findChild<QDockWidget*>("motionDesignDock")->isVisible());
+    MotionDesignPanel* panel = window.motionDesignPanel();
+    const QCPGraph* lift = panel->plot(0)->graph(0);
+    ASSERT_EQ(lift->dataCount(), 3601);
+    EXPECT_EQ(panel->plot(0)->graph(1)->dataCount(), 0);  // no contour to ride yet
+    const double omega = kTwoPi;
+    const Cycloid rise{10.0, degToRad(120.0)};
+    for (double deg : {0.0, 17.3, 45.0, 60.0, 100.1, 150.0, 200.0, 250.5, 330.0}) {
+        EXPECT_NEAR(valueAt(lift, deg), liftDeg(deg), 1e-12) << deg;
+    }
+    // Velocity and acceleration at the project's speed: ω s', ω² s''.
+    for (double deg : {10.0, 30.0, 60.0, 90.0}) {
+        EXPECT_NEAR(valueAt(panel->plot(1)->graph(0), deg), omega * rise.ds(degToRad(deg)),
+                    1e-9)
+            << deg;
+        EXPECT_NEAR(valueAt(panel->plot(2)->graph(0), deg),
+                    omega * omega * rise.dds(degToRad(deg)), 1e-8)
+            << deg;
+    }
+    // Cv, Ca, Cj of the cycloid (math.md §8's table: 2, 2π, 4π²) in the table.
+    DesignTableModel* model = panel->model();
+    ASSERT_EQ(model->rowCount(), 4);
+    EXPECT_NEAR(model->index(0, DesignTableModel::Cv).data(Qt::EditRole).toDouble(), 2.0, 1e-9);
+    EXPECT_NEAR(model->index(0, DesignTableModel::Ca).data(Qt::EditRole).toDouble(), 2 * kPi_,
+                1e-6);
+    EXPECT_NEAR(model->index(0, DesignTableModel::Cj).data(Qt::EditRole).toDouble(),
+                4 * kPi_ * kPi_, 1e-4);
+    EXPECT_FALSE(model->index(1, DesignTableModel::Cv).data(Qt::EditRole).isValid());  // dwell
+    // Nothing of a contour can be exported, and it says why.
+    QSignalSpy exported(&window, &MainWindow::exportFinished);
+    test::TempDir dir;
+    ExportRequest request;
+    request.format = ExportFormat::Dxf;
+    request.path = QString::fromStdString(dir.file("none.dxf"));
+    window.exportFile(request);
+    ASSERT_EQ(exported.size(), 1);
+    EXPECT_NE(exported.front().at(1).toString().indexOf("no contour yet"), -1);
+    EXPECT_FALSE(std::filesystem::exists(dir.file("none.dxf")));
+}
+
+TEST(MotionDesign, SynthesizeReplacesTheContourInOneUndoStepAndThePlotsShowTheLaw) {
+    MainWindow window;
+    window.resize(1400, 860);
+    window.show();
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ASSERT_TRUE(waitForResult(window));
+    ProjectDocument* doc = window.document();
+    const int steps = doc->undoStack()->count();
+    ASSERT_EQ(synthesizeAndWait(window), QString());
+    EXPECT_EQ(doc->undoStack()->count(), steps + 1);
+    const Project made = doc->project();
+    ASSERT_GT(made.contour.size(), 10u);
+    EXPECT_TRUE(doc->isValid()) << diagnosticsText(doc->diagnostics()).toStdString();
+    EXPECT_FALSE(doc->awaitsSynthesis());
+    ASSERT_TRUE(waitForResult(window));
+    ASSERT_TRUE(window.shownResult());
+    // The kinematics plots draw the law (dashed) and the follower on the arcs.
+    EXPECT_TRUE(window.plots()->showsDesign());
+    // The follower placed by contact on the new contour, by the core here, follows the closed
+    // form within the tolerance (0.001 mm, over cos of a pressure angle below 11°).
+    auto contour = Contour::build(made);
+    ASSERT_TRUE(contour.ok());
+    auto follower = FollowerModel::build(contour.value(), *made.follower);
+    ASSERT_TRUE(follower.ok());
+    const double omega = made.motion.omegaRadS();
+    double worst = 0.0;
+    for (int k = 0; k < 720; ++k) {
+        const double deg = 0.5 * k + 0.123;
+        const FollowerState st = follower.value().at(degToRad(deg), omega);
+        // s is the roller centre's distance from the cam centre: base + roller + lift.
+        worst = std::max(worst, std::abs(st.s - (40.0 + 8.0 + liftDeg(deg))));
+    }
+    EXPECT_LT(worst, 0.00102);
+    EXPECT_GT(worst, 1e-5);  // arcs, not the exact profile
+    // The dock's follower curve is that follower: its lift within the same bound of the law.
+    const QCPGraph* onContour = window.motionDesignPanel()->plot(0)->graph(1);
+    ASSERT_EQ(onContour->dataCount(), 3601);
+    for (double deg : {5.0, 60.0, 150.0, 240.0, 330.0}) {
+        EXPECT_NEAR(valueAt(onContour, deg), liftDeg(deg), 0.00102) << deg;
+    }
+    EXPECT_NE(window.motionDesignPanel()->reportText().indexOf("Last synthesis"), -1);
+    // One undo step takes the whole contour back, one redo brings it again.
+    doc->undoStack()->undo();
+    EXPECT_TRUE(doc->project().contour.empty());
+    EXPECT_TRUE(doc->awaitsSynthesis());
+    doc->undoStack()->redo();
+    EXPECT_EQ(doc->project().contour, made.contour);
+}
+
+TEST(MotionDesign, EditingTheSegmentTableIsUndoableAndMarksTheCellsItBreaks) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ProjectDocument* doc = window.document();
+    DesignTableModel* model = window.motionDesignPanel()->model();
+    const DesignSpec before = *doc->project().design;
+    // Typing 12.5 as the first segment's lift: the dwell after it now starts at 12.5, not 10.
+    ASSERT_TRUE(model->setData(model->index(0, DesignTableModel::Lift), 12.5, Qt::EditRole));
+    EXPECT_EQ(doc->project().design->segments[0].lift, 12.5);
+    EXPECT_FALSE(doc->isValid());
+    EXPECT_FALSE(model->problemsAt(1, DesignTableModel::Lift).isEmpty());
+    EXPECT_EQ(model->index(1, DesignTableModel::Lift).data(Qt::BackgroundRole).value<QColor>(),
+              QColor(255, 205, 205));
+    doc->undoStack()->undo();
+    EXPECT_EQ(*doc->project().design, before);
+    EXPECT_TRUE(doc->isValid());
+    EXPECT_TRUE(model->problemsAt(1, DesignTableModel::Lift).isEmpty());
+    // A law: harmonic's Cv is π/2; poly5 opens its boundary values for editing.
+    ASSERT_TRUE(model->setData(model->index(0, DesignTableModel::Law),
+                               static_cast<int>(MotionLawType::Harmonic), Qt::EditRole));
+    EXPECT_EQ(doc->project().design->segments[0].law, MotionLawType::Harmonic);
+    EXPECT_NEAR(model->index(0, DesignTableModel::Cv).data(Qt::EditRole).toDouble(), kPi_ / 2,
+                1e-9);
+    EXPECT_FALSE(model->flags(model->index(0, DesignTableModel::V0)) & Qt::ItemIsEditable);
+    ASSERT_TRUE(model->setData(model->index(0, DesignTableModel::Law),
+                               static_cast<int>(MotionLawType::Poly5), Qt::EditRole));
+    EXPECT_TRUE(model->flags(model->index(0, DesignTableModel::V1)) & Qt::ItemIsEditable);
+    // Steps of one gesture (a spin-box session) are one undo step.
+    const int steps = doc->undoStack()->count();
+    for (double v : {0.01, 0.02, 0.03}) {
+        ASSERT_TRUE(model->setData(model->index(0, DesignTableModel::V1), QVariantList{v, 777},
+                                   SegmentTableModel::MergingEditRole));
+    }
+    EXPECT_EQ(doc->undoStack()->count(), steps + 1);
+    EXPECT_EQ(doc->project().design->segments[0].v1, 0.03);
+    // A value that is no number is refused and leaves no step.
+    EXPECT_FALSE(model->setData(model->index(0, DesignTableModel::ToDeg),
+                                std::numeric_limits<double>::quiet_NaN(), Qt::EditRole));
+    EXPECT_EQ(doc->undoStack()->count(), steps + 1);
+    // Read-only columns stay so.
+    EXPECT_FALSE(model->setData(model->index(0, DesignTableModel::FromDeg), 5.0, Qt::EditRole));
+    EXPECT_FALSE(model->setData(model->index(0, DesignTableModel::Cv), 5.0, Qt::EditRole));
+    while (doc->undoStack()->canUndo()) doc->undoStack()->undo();
+    EXPECT_EQ(*doc->project().design, before);
+}
+
+TEST(MotionDesign, NewSplitDeleteAndRemoveAreUndoSteps) {
+    MainWindow window;
+    ProjectDocument* doc = window.document();
+    MotionDesignPanel* panel = window.motionDesignPanel();
+    ASSERT_FALSE(doc->project().design);
+    EXPECT_FALSE(window.synthesizeAction()->isEnabled());
+    panel->newDesign();
+    ASSERT_TRUE(doc->project().design);
+    EXPECT_TRUE(window.synthesizeAction()->isEnabled());
+    const DesignSpec fresh = *doc->project().design;
+    EXPECT_TRUE(doc->isValid()) << diagnosticsText(doc->diagnostics()).toStdString();
+    EXPECT_EQ(fresh.segments.size(), 4u);
+    panel->splitSegment(0);
+    const auto& split = doc->project().design->segments;
+    ASSERT_EQ(split.size(), 5u);
+    EXPECT_EQ(split[0].toDeg, 60.0);
+    EXPECT_EQ(split[1].law, MotionLawType::Dwell);
+    EXPECT_EQ(split[1].toDeg, 120.0);
+    EXPECT_EQ(split[1].lift, 10.0);
+    EXPECT_TRUE(doc->isValid()) << diagnosticsText(doc->diagnostics()).toStdString();
+    panel->deleteSegment(1);  // the rise takes its stretch back
+    EXPECT_EQ(*doc->project().design, fresh);
+    EXPECT_EQ(doc->undoStack()->count(), 3);
+    doc->undoStack()->undo();
+    EXPECT_EQ(doc->project().design->segments.size(), 5u);
+    doc->undoStack()->undo();
+    EXPECT_EQ(*doc->project().design, fresh);
+    panel->deleteSegment(99);  // no such row: nothing happens
+    EXPECT_EQ(doc->undoStack()->index(), 1);
+    auto* remove = panel->findChild<QPushButton*>("removeDesignButton");
+    ASSERT_NE(remove, nullptr);
+    remove->click();
+    EXPECT_FALSE(doc->project().design);
+    EXPECT_FALSE(window.synthesizeAction()->isEnabled());
+    doc->undoStack()->undo();
+    EXPECT_EQ(*doc->project().design, fresh);
+}
+
+TEST(MotionDesign, ADesignThatCannotBeMadeIsRefusedAndChangesNothing) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ProjectDocument* doc = window.document();
+    // A 16 mm roller on a 30 mm rise over 60° from a 10 mm base circle: the pitch curve turns
+    // tighter than the roller (undercut).
+    FollowerSpec big = *doc->project().follower;
+    big.radius = 16.0;
+    doc->undoStack()->push(new SetFollower(doc, big));
+    DesignSpec steep = *doc->project().design;
+    steep.baseRadius = 10.0;
+    steep.segments[0].toDeg = 60.0;
+    steep.segments[0].lift = steep.segments[1].lift = 30.0;
+    doc->undoStack()->push(new SetDesign(doc, steep, "steep"));
+    ASSERT_TRUE(doc->isValid()) << diagnosticsText(doc->diagnostics()).toStdString();
+    // The dock says so before anyone presses Synthesize.
+    ASSERT_TRUE(waitForResult(window));
+    EXPECT_NE(window.motionDesignPanel()->notesText().indexOf("undercut"), -1)
+        << window.motionDesignPanel()->notesText().toStdString();
+    const Project before = doc->project();
+    const int steps = doc->undoStack()->count();
+    const QString problem = synthesizeAndWait(window);
+    EXPECT_NE(problem.indexOf("undercut"), -1) << problem.toStdString();
+    EXPECT_EQ(doc->project().contour, before.contour);
+    EXPECT_EQ(doc->undoStack()->count(), steps);
+}
+
+TEST(MotionDesign, ACancelledOrOutdatedSynthesisChangesNothing) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ProjectDocument* doc = window.document();
+    {
+        QSignalSpy finished(&window, &MainWindow::synthesisFinished);
+        ASSERT_TRUE(window.synthesize());
+        EXPECT_FALSE(window.synthesize());  // one at a time
+        window.cancelSynthesis();
+        ASSERT_TRUE(finished.wait(30000));
+        const QString problem = finished.front().front().toString();
+        // Cancelled, or done before the flag was read: then it replaced the contour.
+        if (problem.isEmpty()) {
+            doc->undoStack()->undo();
+        } else {
+            EXPECT_NE(problem.indexOf("cancelled"), -1) << problem.toStdString();
+        }
+        EXPECT_TRUE(doc->project().contour.empty());
+    }
+    {
+        // The design changes while the worker fits the old one: its arcs are never applied.
+        QSignalSpy finished(&window, &MainWindow::synthesisFinished);
+        ASSERT_TRUE(window.synthesize());
+        DesignSpec changed = *doc->project().design;
+        changed.baseRadius = 45.0;
+        doc->undoStack()->push(new SetDesign(doc, changed, "test"));
+        ASSERT_TRUE(finished.wait(30000));
+        EXPECT_NE(finished.front().front().toString().indexOf("changed"), -1);
+        EXPECT_TRUE(doc->project().contour.empty());
+    }
+    // And afterwards it works.
+    EXPECT_EQ(synthesizeAndWait(window), QString());
+    EXPECT_FALSE(doc->project().contour.empty());
+}
+
+TEST(MotionDesign, TheLawFollowsTheTimeAxis) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    window.findChild<QAction*>("actionAxisTime")->setChecked(true);
+    ASSERT_TRUE(waitForResult(window));
+    const QCPGraph* lift = window.motionDesignPanel()->plot(0)->graph(0);
+    ASSERT_EQ(lift->dataCount(), 3601);
+    // 60 rpm: one turn a second; 0.25 s is 90°.
+    EXPECT_NEAR((lift->data()->constEnd() - 1)->key, 1.0, 1e-12);
+    EXPECT_NEAR(valueAt(lift, 0.25), liftDeg(90.0), 1e-12);
+    window.findChild<QAction*>("actionAxisTime")->setChecked(false);
+    ASSERT_TRUE(waitForResult(window));
+}
+
+}  // namespace
+}  // namespace cam
