@@ -510,7 +510,7 @@
         <translation>Übergänge</translation>
     </message>
     <message>
-        <location line="+347" />
+        <location line="+355" />
         <location line="+8" />
         <source>Shape segment %1</source>
         <translation>Segment %1 formen</translation>
@@ -1509,11 +1509,18 @@
         <translation>Aus diesem Entwurf lässt sich keine Kontur erzeugen:
 %1</translation>
     </message>
+    <message>
+        <location line="+14" />
+        <source>Synthesized: the contour already is this design's.</source>
+        <translation>Synthetisiert: die Kontur ist bereits die dieses Entwurfs.</translation>
+    </message>
     <message numerus="yes">
-        <location line="+15" />
+        <location line="+7" />
         <source>Synthesized %n segment(s) within %1 mm in %2 ms</source>
         <translation>
-            <numerusform>%n Abschnitt innerhalb %1 mm in %2 ms synthetisiert</numerusform><numerusform>%n Abschnitte innerhalb %1 mm in %2 ms synthetisiert</numerusform></translation>
+            <numerusform>%n Abschnitt innerhalb %1 mm in %2 ms synthetisiert</numerusform>
+            <numerusform>%n Abschnitte innerhalb %1 mm in %2 ms synthetisiert</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+49" />
@@ -1888,7 +1895,9 @@
         <location line="+9" />
         <source>Last synthesis: %n segment(s), at most %1 mm from the exact profile. The follower on them against the law (%2 angles): lift %3%4, velocity %5%6, acceleration %7%8 (the arcs are only tangent-continuous: the acceleration jumps at their joints).</source>
         <translation>
-            <numerusform>Letzte Synthese: %n Abschnitt, höchstens %1 mm vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3%4, Geschwindigkeit %5%6, Beschleunigung %7%8 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform><numerusform>Letzte Synthese: %n Abschnitte, höchstens %1 mm vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3%4, Geschwindigkeit %5%6, Beschleunigung %7%8 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform></translation>
+            <numerusform>Letzte Synthese: %n Abschnitt, höchstens %1 mm vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3%4, Geschwindigkeit %5%6, Beschleunigung %7%8 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform>
+            <numerusform>Letzte Synthese: %n Abschnitte, höchstens %1 mm vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3%4, Geschwindigkeit %5%6, Beschleunigung %7%8 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+30" />

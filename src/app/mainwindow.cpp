@@ -277,10 +277,16 @@ void MainWindow::finishSynthesis(const std::shared_ptr<const Result<Synthesis>>&
         return;
     }
     const Synthesis& made = result->value();
-    m_document->undoStack()->push(
-        new SynthesizeContour(m_document, made.contour, from.design->tolerance));
     const bool swinging = now.follower && now.follower->motion == FollowerMotion::Oscillating;
     m_design->setReport(made.report, swinging);
+    if (made.contour == now.contour) {
+        // The same arcs again: nothing to undo.
+        statusBar()->showMessage(tr("Synthesized: the contour already is this design's."), 6000);
+        emit synthesisFinished({});
+        return;
+    }
+    m_document->undoStack()->push(
+        new SynthesizeContour(m_document, made.contour, from.design->tolerance));
     statusBar()->showMessage(
         tr("Synthesized %n segment(s) within %1 mm in %2 ms", nullptr,
            static_cast<int>(made.report.segments))

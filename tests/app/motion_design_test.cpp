@@ -189,6 +189,9 @@ TEST(MotionDesign, SynthesizeReplacesTheContourInOneUndoStepAndThePlotsShowTheLa
         EXPECT_NEAR(valueAt(onContour, deg), liftDeg(deg), 0.00102) << deg;
     }
     EXPECT_NE(window.motionDesignPanel()->reportText().indexOf("Last synthesis"), -1);
+    // The same design again gives the same arcs: no second undo step.
+    ASSERT_EQ(synthesizeAndWait(window), QString());
+    EXPECT_EQ(doc->undoStack()->count(), steps + 1);
     // One undo step takes the whole contour back, one redo brings it again.
     doc->undoStack()->undo();
     EXPECT_TRUE(doc->project().contour.empty());

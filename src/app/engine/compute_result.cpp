@@ -206,7 +206,8 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
         result->computeMs = static_cast<double>(timer.nsecsElapsed()) / 1e6;
         return result;
     }
-    auto contour = Contour::build(project, ValidationOptions{.checkJoints = false});
+    auto contour =
+        Contour::build(project, ValidationOptions{.checkJoints = false, .checkDesign = false});
     if (!contour.ok()) {
         result->errors = contour.errors();
         const auto omega = usableOmega(project.motion);

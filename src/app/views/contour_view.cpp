@@ -195,6 +195,14 @@ void ContourView::setResult(const ComputeResultPtr& result) {
         bottom = std::min(bottom, -reach);
         top = std::max(top, reach);
     }
+    if (any && result->follower && result->follower->spec().type == FollowerType::Roller) {
+        // The roller rides outside the contour, up to its diameter beyond it: keep it in view.
+        const double reach = 2.0 * result->follower->spec().radius;
+        left -= reach;
+        right += reach;
+        bottom -= reach;
+        top += reach;
+    }
     m_xBounds = QCPRange(left, right);
     m_yBounds = QCPRange(bottom, top);
     for (int c = 0; c < kSegmentColorCount; ++c) {

@@ -41,7 +41,7 @@ public:
         checkFollower();
         checkSampling();
         checkMachining();
-        checkDesign();
+        if (m_options.checkDesign) checkDesign();
         return std::move(m_out);
     }
 

@@ -12,6 +12,9 @@ struct ValidationOptions {
     /// Check that neighbouring segments meet (C0). The editor's engine turns this off so that a
     /// contour with an opened joint is still drawn (its r jumps there) while it is being edited.
     bool checkJoints = true;
+    /// Check the motion design. The editor's engine turns this off: the contour's kinematics
+    /// do not depend on a design being edited (the design's own problems go to its dock).
+    bool checkDesign = true;
 };
 
 /// @brief All problems of the document; empty when it is valid.
