@@ -1785,7 +1785,7 @@
 <context>
     <name>cam::MotionDesignPanel</name>
     <message>
-        <location filename="../../src/app/views/motion_design_panel.cpp" line="+48" />
+        <location filename="../../src/app/views/motion_design_panel.cpp" line="+49" />
         <source>New Design</source>
         <translation>Neuer Entwurf</translation>
     </message>
@@ -1816,6 +1816,16 @@
     </message>
     <message>
         <location line="+2" />
+        <source>Refuse pressure angles beyond the limit</source>
+        <translation>Druckwinkel über der Grenze ablehnen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Synthesize refuses a design whose pressure angle exceeds the follower's limit (otherwise it is only reported)</source>
+        <translation>Synthetisieren lehnt einen Entwurf ab, dessen Druckwinkel die Grenze des Stößels überschreitet (sonst wird er nur gemeldet)</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Base radius</source>
         <translation>Grundkreisradius</translation>
     </message>
@@ -1825,7 +1835,7 @@
         <translation>Toleranz</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+22" />
         <source>Split</source>
         <translation>Teilen</translation>
     </message>
@@ -1872,7 +1882,12 @@
         <translation>Toleranz ändern</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+4" />
+        <source>Change pressure-angle strictness</source>
+        <translation>Strenge beim Druckwinkel ändern</translation>
+    </message>
+    <message>
+        <location line="+38" />
         <source>New design</source>
         <translation>Neuer Entwurf</translation>
     </message>
@@ -1887,7 +1902,7 @@
         <translation>Bewegungsabschnitt %1 löschen</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+21" />
         <source>This project has no motion design. New Design starts one: lay out the follower's motion, then Synthesize makes the contour from it.</source>
         <translation>Dieses Projekt hat keinen Bewegungsentwurf. „Neuer Entwurf“ legt einen an: die Bewegung des Stößels festlegen, dann erzeugt Synthetisieren daraus die Kontur.</translation>
     </message>

@@ -148,6 +148,28 @@ TEST(CliSynthesize, WhatCannotBeMadeIsNamedAndTheOldFileStays) {
     EXPECT_NE(usage.err.find("--out"), std::string::npos);
 }
 
+TEST(CliSynthesize, AStrictDesignRefusesAPressureAngleBeyondTheLimit) {
+    // The 10 mm cycloidal rise over 60° on a 40 mm base circle with a knife: at 30° the lift
+    // is 5 mm and its slope 2·10/(π/3) = 19.1 mm/rad, so tan α = 19.1/45 and α = 23°, beyond a
+    // 20° limit. Reported as a note by default, refused when strict.
+    test::TempDir dir;
+    const std::string in = dir.file("design.cam.json"), made = dir.file("made.cam.json");
+    const char* knife = R"({ "type": "knife", "max_pressure_angle_deg": 20 })";
+    std::string project = steepRise(designProject(knife));
+    test::writeFileWithMode(in, project, 0644);
+    const auto lenient = test::runCli({"synthesize", in, "--out", made});
+    ASSERT_EQ(lenient.exitCode, 0) << lenient.err;
+    EXPECT_NE(lenient.out.find("pressure angle"), std::string::npos) << lenient.out;
+    project.replace(project.find(R"("tolerance": 0.001)"), 18,
+                    R"("tolerance": 0.001, "strict_pressure_angle": true)");
+    test::writeFileWithMode(in, project, 0644);
+    test::writeFileWithMode(made, "old contents", 0644);
+    const auto strict = test::runCli({"synthesize", in, "--out", made});
+    EXPECT_EQ(strict.exitCode, 3) << strict.err;
+    EXPECT_NE(strict.err.find("pressure angle"), std::string::npos) << strict.err;
+    EXPECT_EQ(test::readFile(made), "old contents");
+}
+
 TEST(CliSynthesize, ADesignWithoutAContourIsValidButHasNothingToComputeYet) {
     // project-format.md: a design whose contour was never synthesised is valid.
     test::TempDir dir;

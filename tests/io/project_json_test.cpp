@@ -352,6 +352,14 @@ TEST(ProjectJsonDesign, ReadsEveryFieldAndWritesItBackAsTyped) {
     EXPECT_EQ(again.value(), p.value());
     EXPECT_EQ(serializeProject(again.value()), out);
     EXPECT_NE(out.find(R"("law": "modified-sine")"), std::string::npos) << out;
+    // Strictness is written only when asked for, and read back.
+    EXPECT_FALSE(d.strictPressureAngle);
+    EXPECT_EQ(out.find("strict_pressure_angle"), std::string::npos) << out;
+    Project strict = p.value();
+    strict.design->strictPressureAngle = true;
+    const std::string strictOut = serializeProject(strict);
+    EXPECT_NE(strictOut.find(R"("strict_pressure_angle": true)"), std::string::npos);
+    EXPECT_EQ(parseProject(strictOut).value(), strict);
 }
 
 TEST(ProjectJsonDesign, LengthsFollowTheFileUnitsAndAnArmsLiftIsInDegrees) {

@@ -146,7 +146,8 @@ std::shared_ptr<DesignCurves> computeDesign(const Project& project, const Contou
         return out;
     }
     if (cancel.load()) return nullptr;
-    for (const ProfileProblem& problem : exact.value().problems(false)) {
+    for (const ProfileProblem& problem :
+         exact.value().problems(project.design->strictPressureAngle)) {
         out->notes.push_back(problem.what);
     }
     if (!contour || cancel.load()) return out;

@@ -3,6 +3,7 @@
 #include <qcustomplot.h>
 
 #include <QAction>
+#include <QCheckBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -64,8 +65,13 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
     m_tolerance = lengthBox(this, "toleranceSpinBox",
                             tr("Largest distance of the arc table from the exact profile"));
     m_tolerance->setSingleStep(0.001);
+    m_strict = new QCheckBox(tr("Refuse pressure angles beyond the limit"), this);
+    m_strict->setObjectName("strictPressureAngleCheckBox");
+    m_strict->setToolTip(tr("Synthesize refuses a design whose pressure angle exceeds the "
+                            "follower's limit (otherwise it is only reported)"));
     form->addRow(tr("Base radius"), m_baseRadius);
     form->addRow(tr("Tolerance"), m_tolerance);
+    form->addRow(QString(), m_strict);
     layout->addLayout(form);
 
     m_table = new QTableView(this);
@@ -187,6 +193,11 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
     number(m_baseRadius, [](DesignSpec& d, double v) { d.baseRadius = v; },
            tr("Change base radius"));
     number(m_tolerance, [](DesignSpec& d, double v) { d.tolerance = v; }, tr("Change tolerance"));
+    connect(m_strict, &QCheckBox::toggled, this, [this](bool on) {
+        if (m_refreshing || !m_document->project().design) return;
+        editDesign([on](DesignSpec& d) { d.strictPressureAngle = on; },
+                   tr("Change pressure-angle strictness"), 0);
+    });
     connect(m_document, &ProjectDocument::designChanged, this, &MotionDesignPanel::refresh);
     connect(m_document, &ProjectDocument::followerChanged, this, &MotionDesignPanel::refresh);
     refresh();
@@ -268,13 +279,14 @@ void MotionDesignPanel::refresh() {
     const auto& design = m_document->project().design;
     m_newDesign->setVisible(!design);
     m_removeDesign->setVisible(design.has_value());
-    for (QWidget* w : std::initializer_list<QWidget*>{m_baseRadius, m_tolerance, m_table, m_split,
-                                                      m_delete, m_synthesize}) {
+    for (QWidget* w : std::initializer_list<QWidget*>{m_baseRadius, m_tolerance, m_strict, m_table,
+                                                      m_split, m_delete, m_synthesize}) {
         w->setEnabled(design.has_value());
     }
     if (design) {
         m_baseRadius->setValue(design->baseRadius);
         m_tolerance->setValue(design->tolerance);
+        m_strict->setChecked(design->strictPressureAngle);
     }
     m_refreshing = false;
     if (!design) {

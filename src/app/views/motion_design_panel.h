@@ -13,6 +13,7 @@
 #include "engine/compute_result.h"
 
 class QAction;
+class QCheckBox;
 class QCPItemStraightLine;
 class QCustomPlot;
 class QLabel;
@@ -69,6 +70,7 @@ private:
     QPushButton* m_removeDesign;
     NumberSpinBox* m_baseRadius;
     NumberSpinBox* m_tolerance;
+    QCheckBox* m_strict;
     QTableView* m_table;
     QPushButton* m_split;
     QPushButton* m_delete;

@@ -74,7 +74,8 @@ Result<Synthesis> synthesize(const Project& project, std::optional<double> toler
     Synthesis result;
     result.report.notes = motion.value().jumps();
     Diagnostics refusals;
-    for (const ProfileProblem& problem : profile.problems(strictPressureAngle)) {
+    const bool strict = strictPressureAngle || spec.strictPressureAngle;
+    for (const ProfileProblem& problem : profile.problems(strict)) {
         if (problem.what.severity == Severity::Error) {
             refusals.push_back(problem.what);
         } else {

@@ -34,7 +34,8 @@ struct Synthesis {
 /// @brief The arc table for `project`'s design and follower (a knife on the radial line when it
 /// names none) within `tolerance` (the design's when not given). Errors, located: no design,
 /// an invalid design, a base circle the follower cannot reach, undercut (with its angles), a
-/// pressure angle beyond the limit when `strictPressureAngle`. Empty errors: cancelled.
+/// pressure angle beyond the limit when `strictPressureAngle` or the design asks for it
+/// (DesignSpec::strictPressureAngle). Empty errors: cancelled.
 [[nodiscard]] Result<Synthesis> synthesize(const Project& project,
                                            std::optional<double> tolerance = std::nullopt,
                                            bool strictPressureAngle = false,

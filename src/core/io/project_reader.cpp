@@ -55,6 +55,17 @@ public:
         return j ? number(*j, join(at, key)) : std::nullopt;
     }
 
+    std::optional<bool> boolean(const Json& obj, const std::string& at, const char* key,
+                                bool required) {
+        const Json* j = field(obj, at, key, required);
+        if (!j) return std::nullopt;
+        if (!j->is_boolean()) {
+            error(join(at, key), std::string("must be true or false (got ") + typeName(*j) + ")");
+            return std::nullopt;
+        }
+        return j->get<bool>();
+    }
+
     std::optional<std::string> string(const Json& obj, const std::string& at, const char* key,
                                       bool required) {
         const Json* j = field(obj, at, key, required);
@@ -323,7 +334,7 @@ std::string knownLawNames() {
 void readDesign(Reader& rd, const Json& root, const UnitsSpec& units, Project& p) {
     const Json* d = rd.field(root, "", "design", false);
     if (!d || !rd.object(*d, "design")) return;
-    rd.onlyKeys(*d, "design", {"base_radius", "segments", "tolerance"});
+    rd.onlyKeys(*d, "design", {"base_radius", "segments", "tolerance", "strict_pressure_angle"});
     DesignSpec spec;
     const double mm = units.lengthFactor();
     // Lifts are lengths on a translating follower, degrees swung on an arm.
@@ -331,6 +342,9 @@ void readDesign(Reader& rd, const Json& root, const UnitsSpec& units, Project& p
     const double liftUnit = swinging ? 1.0 : mm;
     if (const auto v = rd.number(*d, "design", "base_radius", true)) spec.baseRadius = *v * mm;
     if (const auto v = rd.number(*d, "design", "tolerance", false)) spec.tolerance = *v * mm;
+    if (const auto v = rd.boolean(*d, "design", "strict_pressure_angle", false)) {
+        spec.strictPressureAngle = *v;
+    }
     if (const Json* list = rd.field(*d, "design", "segments", true)) {
         if (!list->is_array()) {
             rd.error("design.segments",

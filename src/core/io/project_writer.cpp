@@ -128,6 +128,7 @@ std::string serializeProject(const Project& p) {
         root["design"] = {{"base_radius", length(d.baseRadius)},
                           {"segments", std::move(segments)},
                           {"tolerance", length(d.tolerance)}};
+        if (d.strictPressureAngle) root["design"]["strict_pressure_angle"] = true;
     }
     for (const auto& [key, text] : p.extraKeys) root[key] = Json::parse(text);
     return root.dump(2) + "\n";

@@ -203,6 +203,9 @@ struct DesignSpec {
     double baseRadius = 0.0;
     std::vector<DesignSegmentSpec> segments;
     double tolerance = kDefaultDesignToleranceMm;  ///< mm, the arc table's largest deviation
+    /// Refuse to synthesise where the pressure angle exceeds the follower's limit (file key
+    /// `strict_pressure_angle`, default false: then it is only reported).
+    bool strictPressureAngle = false;
     friend bool operator==(const DesignSpec&, const DesignSpec&) = default;
 };
 

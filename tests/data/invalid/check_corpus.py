@@ -412,8 +412,10 @@ def check_design(d, probs):
         probs.add("design", "must be an object")
         return
     for key in d:
-        if key not in ("base_radius", "segments", "tolerance"):
+        if key not in ("base_radius", "segments", "tolerance", "strict_pressure_angle"):
             probs.add(f"design.{key}", "unknown key")
+    if "strict_pressure_angle" in d and not isinstance(d["strict_pressure_angle"], bool):
+        probs.add("design.strict_pressure_angle", "must be true or false")
     rb = length(d, "base_radius", "design.base_radius", probs)
     if rb is not None and not rb > 0:
         probs.add("design.base_radius", f"must be > 0 (got {rb})")
