@@ -4,6 +4,7 @@
 //   camwright --export-plot NAME [--format png|pdf|svg] --out FILE [--size WxH] PROJECT
 
 #include <QApplication>
+#include <QIcon>
 #include <QCommandLineParser>
 #include <QLibraryInfo>
 #include <QLocale>
@@ -64,6 +65,11 @@ int main(int argc, char** argv) {
     QApplication::setApplicationName("Camwright");
     QApplication::setOrganizationName("Camwright");
     QApplication::setApplicationVersion(CAMWRIGHT_VERSION);
+    // The desktop entry (packaging/linux) and the icon share this id.
+    QGuiApplication::setDesktopFileName(QStringLiteral("org.camwright.Camwright"));
+    QApplication::setWindowIcon(QIcon::fromTheme(
+        QStringLiteral("org.camwright.Camwright"),
+        QIcon(QStringLiteral(":/icons/org.camwright.Camwright.svg"))));
 
     QTranslator qtTranslator, appTranslator;
     if (qtTranslator.load(QLocale(), "qtbase", "_",
