@@ -20,6 +20,8 @@ packages=(
     libboost-python1.74.0 poppler-utils librsvg2-bin
     # headless rendering needs real fonts
     fonts-dejavu-core
+    # a real X display and input for the crash-recovery test (app_tests CrashRecovery.*)
+    xvfb xdotool
     # the DEB package and Debian's checks of it (packaging.DebPackage)
     dpkg-dev file lintian desktop-file-utils appstream
 )

@@ -1426,7 +1426,12 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+87" />
+        <location filename="../../src/app/mainwindow.cpp" line="+72" />
+        <source>The recovery copy could not be written: %1</source>
+        <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <location line="+26" />
         <source>computing…</source>
         <translation>wird berechnet…</translation>
     </message>
@@ -1615,7 +1620,66 @@
         <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
     </message>
     <message>
-        <location line="+71" />
+        <location line="+19" />
+        <location line="+42" />
+        <source>an untitled project</source>
+        <translation>einem unbenannten Projekt</translation>
+    </message>
+    <message>
+        <location line="-40" />
+        <location line="+21" />
+        <source>Recover Unsaved Changes</source>
+        <translation>Ungesicherte Änderungen wiederherstellen</translation>
+    </message>
+    <message>
+        <location line="-20" />
+        <source>Camwright did not close properly. Unsaved changes to %1, autosaved %2, can be restored.</source>
+        <translation>Camwright wurde nicht ordnungsgemäß beendet. Ungesicherte Änderungen an %1, automatisch gesichert %2, können wiederhergestellt werden.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Restore</source>
+        <translation>Wiederherstellen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Discard</source>
+        <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Later</source>
+        <translation>Später</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Later keeps the copy and asks again at the next start.</source>
+        <translation>„Später“ behält die Kopie und fragt beim nächsten Start erneut.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The recovery copy was discarded.</source>
+        <translation>Die Wiederherstellungskopie wurde verworfen.</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>The recovery copy %1 cannot be read:
+%2</source>
+        <translation>Die Wiederherstellungskopie %1 ist nicht lesbar:
+%2</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Restored the unsaved changes of %1: save them to keep them.</source>
+        <translation>Ungesicherte Änderungen an %1 wiederhergestellt: speichern, um sie zu behalten.</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>%1 is no recovery copy of a session that ended.</source>
+        <translation>%1 ist keine Wiederherstellungskopie einer beendeten Sitzung.</translation>
+    </message>
+    <message>
+        <location line="+61" />
         <source>not computed: %1</source>
         <translation>nicht berechnet: %1</translation>
     </message>
@@ -1670,7 +1734,7 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-219" />
+        <location line="-275" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -2446,7 +2510,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../../src/app/main.cpp" line="+79" />
+        <location filename="../../src/app/main.cpp" line="+86" />
         <source>Design and inspect cam contours.</source>
         <translation>Kurvenkonturen entwerfen und prüfen.</translation>
     </message>
@@ -2479,6 +2543,11 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <location line="+5" />
         <source>The file --export-plot writes.</source>
         <translation>Die Datei, die --export-plot schreibt.</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Seconds between recovery copies of unsaved changes (default 30, or the settings' autosave/intervalS).</source>
+        <translation>Sekunden zwischen Wiederherstellungskopien ungesicherter Änderungen (Vorgabe 30 oder autosave/intervalS der Einstellungen).</translation>
     </message>
 </context>
 </TS>

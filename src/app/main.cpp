@@ -15,6 +15,7 @@
 #include <cstring>
 
 #include "mainwindow.h"
+#include "files/autosave.h"
 #include "screenshot.h"
 
 namespace {
@@ -111,7 +112,14 @@ int main(int argc, char** argv) {
     parser.addOption(sizeOption);
     parser.addOption(exportPlotOption);
     parser.addOption(formatOption);
+    const QCommandLineOption autosaveOption(
+        "autosave-interval",
+        QApplication::translate("main",
+                                "Seconds between recovery copies of unsaved changes (default 30, "
+                                "or the settings' autosave/intervalS)."),
+        "SECONDS");
     parser.addOption(outOption);
+    parser.addOption(autosaveOption);
     parser.process(app);
 
     cam::MainWindow window;
@@ -126,7 +134,22 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "camwright: --export-plot: give the PROJECT to draw\n");
         return 1;
     }
-    if (!files.isEmpty()) {
+    if (parser.isSet(autosaveOption)) {
+        bool ok = false;
+        const double seconds = parser.value(autosaveOption).toDouble(&ok);
+        if (!ok || !(seconds >= 0.01 && seconds <= 86400.0)) {
+            std::fprintf(stderr,
+                         "camwright: --autosave-interval: expected seconds between 0.01 and "
+                         "86400 (got \"%s\")\n",
+                         qPrintable(parser.value(autosaveOption)));
+            return 1;
+        }
+        window.autosave()->setIntervalMs(static_cast<int>(seconds * 1000.0));
+    }
+    // After a crash the unsaved changes come first; a restored project replaces the one asked
+    // for on the command line (which stays one File → Open away).
+    const bool restored = !headless && window.offerRecovery();
+    if (!files.isEmpty() && !restored) {
         const QString problem = window.loadFile(files.front());
         if (!problem.isEmpty()) {
             if (headless) {

@@ -3,6 +3,7 @@
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDir>
+#include <QFile>
 #include <QDockWidget>
 #include <QEventLoop>
 #include <QHeaderView>
@@ -10,6 +11,7 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QProgressDialog>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
@@ -23,7 +25,9 @@
 #include "document/contour_edits.h"
 #include "engine/compute_engine.h"
 #include "engine/synthesis_runner.h"
+#include "files/autosave.h"
 #include "files/project_files.h"
+#include "io/project_json.h"
 #include "fillet/fillet.h"
 #include "models/delegates.h"
 #include "models/segment_table_model.h"
@@ -62,6 +66,13 @@ MainWindow::MainWindow(QWidget* parent)
     setCentralWidget(splitter);
 
     m_files = new ProjectFiles(m_document, this, m_ui->menuRecent, m_ui->menuExamples);
+    m_autosave = new Autosave(m_document, {}, this);
+    connect(m_autosave, &Autosave::written, this, [this](const QString&, const QString& problem) {
+        if (!problem.isEmpty()) {
+            statusBar()->showMessage(tr("The recovery copy could not be written: %1").arg(problem),
+                                     8000);
+        }
+    });
     connect(m_files, &ProjectFiles::message, this,
             [this](const QString& text, int ms) { statusBar()->showMessage(text, ms); });
     setUpDocks();
@@ -486,6 +497,62 @@ void MainWindow::setUpActions() {
 }
 
 QString MainWindow::loadFile(const QString& path) { return m_files->load(path); }
+
+bool MainWindow::offerRecovery() {
+    const std::vector<Autosave::Orphan> orphans = m_autosave->orphans();
+    if (orphans.empty()) return false;
+    const Autosave::Orphan& newest = orphans.front();
+    const QString name = newest.original.isEmpty()
+                             ? tr("an untitled project")
+                             : QDir::toNativeSeparators(newest.original);
+    QMessageBox box(QMessageBox::Question, tr("Recover Unsaved Changes"),
+                    tr("Camwright did not close properly. Unsaved changes to %1, autosaved %2, "
+                       "can be restored.")
+                        .arg(name, QLocale().toString(newest.saved.toLocalTime(),
+                                                      QLocale::ShortFormat)),
+                    QMessageBox::NoButton, this);
+    box.setObjectName("recoveryBox");
+    QPushButton* restore = box.addButton(tr("Restore"), QMessageBox::AcceptRole);
+    QPushButton* discard = box.addButton(tr("Discard"), QMessageBox::DestructiveRole);
+    box.addButton(tr("Later"), QMessageBox::RejectRole);
+    box.setDefaultButton(restore);
+    box.setInformativeText(tr("Later keeps the copy and asks again at the next start."));
+    box.exec();
+    if (box.clickedButton() == discard) {
+        Autosave::discard(newest);
+        statusBar()->showMessage(tr("The recovery copy was discarded."), 6000);
+        return false;
+    }
+    if (box.clickedButton() != restore) return false;
+    const QString problem = restoreRecovery(newest.project);
+    if (!problem.isEmpty()) {
+        QMessageBox::warning(this, tr("Recover Unsaved Changes"), problem);
+        return false;
+    }
+    return true;
+}
+
+QString MainWindow::restoreRecovery(const QString& recoveryCopy) {
+    auto loaded = loadProjectStructure(QFile::encodeName(recoveryCopy).toStdString());
+    if (!loaded.ok()) {
+        return tr("The recovery copy %1 cannot be read:\n%2")
+            .arg(QDir::toNativeSeparators(recoveryCopy), diagnosticsText(loaded.errors()));
+    }
+    for (const Autosave::Orphan& o : m_autosave->orphans()) {
+        if (o.project != recoveryCopy) continue;
+        m_document->reset(std::move(loaded).value(), o.original);
+        m_document->markUnsaved();
+        Autosave::discard(o);  // this session's own copy takes over
+        statusBar()->showMessage(tr("Restored the unsaved changes of %1: save them to keep them.")
+                                     .arg(o.original.isEmpty()
+                                              ? tr("an untitled project")
+                                              : QDir::toNativeSeparators(o.original)),
+                                 10000);
+        return {};
+    }
+    return tr("%1 is no recovery copy of a session that ended.")
+        .arg(QDir::toNativeSeparators(recoveryCopy));
+}
 
 QString MainWindow::saveFile(const QString& path) { return m_files->save(path); }
 

@@ -33,6 +33,7 @@ class MachiningPanel;
 class MotionPanel;
 class MotionDesignPanel;
 class SynthesisRunner;
+class Autosave;
 class ProjectDocument;
 class ProjectFiles;
 struct EditOutcome;
@@ -68,6 +69,13 @@ public:
     [[nodiscard]] PathStudyPanel* pathStudyPanel() const { return m_pathStudy; }
     [[nodiscard]] MotionDesignPanel* motionDesignPanel() const { return m_design; }
     [[nodiscard]] QAction* synthesizeAction() const { return m_synthesizeAction; }
+
+    [[nodiscard]] Autosave* autosave() const { return m_autosave; }
+    /// @brief After a crash: offers to restore the newest recovery copy a dead session left
+    /// (Restore, Discard, or keep it for later). True when a project was restored.
+    bool offerRecovery();
+    /// @brief Opens a recovery copy as the project it was (its file, unsaved) and removes it.
+    QString restoreRecovery(const QString& recoveryCopy);
 
     /// @brief Starts synthesising the contour from the design in a worker (Synthesize, F6);
     /// false when there is no design or a synthesis is running. Its end is reported by
@@ -174,6 +182,7 @@ private:
     void setUpPlay();
     void setUpDesign();
     void finishSynthesis(const std::shared_ptr<const Result<Synthesis>>& result, bool cancelled);
+    Autosave* m_autosave = nullptr;
     MotionDesignPanel* m_design = nullptr;
     QDockWidget* m_designDock = nullptr;
     QAction* m_synthesizeAction = nullptr;

@@ -38,6 +38,8 @@ public:
     void reset(Project project, QString filePath, Diagnostics diagnostics);
     /// @brief After a successful save: remembers the path and marks the state clean.
     void markSaved(const QString& filePath);
+    /// @brief Marks the state as unsaved (a project restored from a recovery copy).
+    void markUnsaved() { m_undoStack.resetClean(); }
 
     // Mutators for undo commands. Each emits exactly the signal that describes it.
     void applySegment(int row, const SegmentSpec& segment);
