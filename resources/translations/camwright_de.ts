@@ -1426,12 +1426,12 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+72" />
+        <location filename="../../src/app/mainwindow.cpp" line="+76" />
         <source>The recovery copy could not be written: %1</source>
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+27" />
         <source>computing…</source>
         <translation>wird berechnet…</translation>
     </message>
@@ -1553,12 +1553,12 @@
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+25" />
         <source>Approximate Arc by &amp;Béziers…</source>
         <translation>Bogen durch &amp;Béziers annähern …</translation>
     </message>
@@ -1615,12 +1615,27 @@
         <translation>Über Camwright</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Design and inspect cam contours: exact polar kinematics of the follower.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;Camwright %1&lt;/b&gt;&lt;p&gt;Kurvenkonturen entwerfen und prüfen: exakte polare Kinematik des Stößels.&lt;/p&gt;&lt;p&gt;GPL-3.0-or-later.&lt;/p&gt;</translation>
+        <location line="+2" />
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>&amp;Tastenkürzel</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Every shortcut of the window</source>
+        <translation>Alle Tastenkürzel des Fensters</translation>
     </message>
     <message>
         <location line="+19" />
+        <source>&lt;h3&gt;Camwright %1&lt;/h3&gt;&lt;p&gt;Design and inspect cam contours: exact polar kinematics of the follower, design from motion laws, machining time, exports for CAD, CNC and servo drives.&lt;/p&gt;&lt;p&gt;License: GPL-3.0-or-later.&lt;/p&gt;&lt;p&gt;Built with&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (LGPL-3.0)&lt;/li&gt;&lt;li&gt;QCustomPlot %3 (GPL-3.0)&lt;/li&gt;&lt;li&gt;Eigen %4 (MPL-2.0)&lt;/li&gt;&lt;li&gt;JSON for Modern C++ (nlohmann-json) %5 (MIT)&lt;/li&gt;&lt;/ul&gt;</source>
+        <translation>&lt;h3&gt;Camwright %1&lt;/h3&gt;&lt;p&gt;Kurvenscheiben entwerfen und prüfen: exakte Polarkinematik des Stößels, Entwurf aus Bewegungsgesetzen, Bearbeitungszeit, Export für CAD, CNC und Servoantriebe.&lt;/p&gt;&lt;p&gt;Lizenz: GPL-3.0-or-later.&lt;/p&gt;&lt;p&gt;Erstellt mit&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (LGPL-3.0)&lt;/li&gt;&lt;li&gt;QCustomPlot %3 (GPL-3.0)&lt;/li&gt;&lt;li&gt;Eigen %4 (MPL-2.0)&lt;/li&gt;&lt;li&gt;JSON for Modern C++ (nlohmann-json) %5 (MIT)&lt;/li&gt;&lt;/ul&gt;</translation>
+    </message>
+    <message>
+        <location line="+59" />
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+11" />
         <location line="+42" />
         <source>an untitled project</source>
         <translation>einem unbenannten Projekt</translation>
@@ -1734,7 +1749,7 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-275" />
+        <location line="-348" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -2417,6 +2432,54 @@ Möchten Sie die Datei ersetzen?</translation>
         <location line="+84" />
         <source>Edit %1 of segment %2</source>
         <translation>%1 von Segment %2 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>cam::ShortcutsDialog</name>
+    <message>
+        <location filename="../../src/app/dialogs/shortcuts_dialog.cpp" line="+16" />
+        <source>Keyboard Shortcuts</source>
+        <translation>Tastenkürzel</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Edit a cell: type, Enter or Tab to take it</source>
+        <translation>Zelle bearbeiten: tippen, Eingabe oder Tab übernimmt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Cancel a cell's edit</source>
+        <translation>Bearbeitung einer Zelle abbrechen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Step a value live</source>
+        <translation>Wert schrittweise ändern</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Up, Down, Page Up, Page Down, wheel</source>
+        <translation>Auf, Ab, Bild auf, Bild ab, Mausrad</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Zoom a plot or the contour</source>
+        <translation>Diagramm oder Kontur zoomen</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Mouse wheel</source>
+        <translation>Mausrad</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Action</source>
+        <translation>Aktion</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Keys</source>
+        <translation>Tasten</translation>
     </message>
 </context>
 <context>

@@ -17,10 +17,13 @@
 #include <QSplitter>
 #include <QTableView>
 #include <QTimer>
+#include <Eigen/Core>
 #include <cmath>
+#include <qcustomplot.h>
 
 #include "common/angles.h"
 #include "dialogs/contour_dialogs.h"
+#include "dialogs/shortcuts_dialog.h"
 #include "document/commands.h"
 #include "document/contour_edits.h"
 #include "engine/compute_engine.h"
@@ -42,6 +45,7 @@
 #include "views/path_study_panel.h"
 #include "views/plot_data.h"
 #include "views/state_readout.h"
+#include "widgets/icons.h"
 
 namespace cam {
 
@@ -80,6 +84,7 @@ MainWindow::MainWindow(QWidget* parent)
     setUpExports();
     setUpPlay();
     setUpDesign();
+    setUpIcons();
 
     m_validationLabel = new QLabel(this);
     m_validationLabel->setObjectName("validationLabel");
@@ -400,8 +405,10 @@ void MainWindow::setUpDocks() {
 void MainWindow::setUpActions() {
     QUndoStack* stack = m_document->undoStack();
     QAction* undo = stack->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName("actionUndo");
     undo->setShortcut(QKeySequence::Undo);
     QAction* redo = stack->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName("actionRedo");
     redo->setShortcut(QKeySequence::Redo);
     QAction* first = m_ui->menuEdit->actions().value(0);
     m_ui->menuEdit->insertAction(first, undo);
@@ -483,16 +490,92 @@ void MainWindow::setUpActions() {
         m_plots->resetZoom();
     });
     connect(m_ui->actionAbout, &QAction::triggered, this, [this] {
-        QMessageBox::about(this, tr("About Camwright"),
-                           tr("<b>Camwright %1</b><p>Design and inspect cam contours: exact polar "
-                              "kinematics of the follower.</p><p>GPL-3.0-or-later.</p>")
-                               .arg(QCoreApplication::applicationVersion()));
+        QMessageBox::about(this, tr("About Camwright"), aboutText());
+    });
+    auto* shortcuts = new QAction(tr("&Keyboard Shortcuts"), this);
+    shortcuts->setObjectName("actionKeyboardShortcuts");
+    shortcuts->setToolTip(tr("Every shortcut of the window"));
+    m_ui->menuHelp->insertAction(m_ui->actionAbout, shortcuts);
+    connect(shortcuts, &QAction::triggered, this, [this] {
+        ShortcutsDialog dialog(this);
+        dialog.exec();
     });
     // Segment actions work on the table, so they do not steal Delete/Insert from other widgets.
     for (QAction* a : {m_ui->actionInsertSegment, m_ui->actionDeleteSegment, m_ui->actionMoveUp,
                        m_ui->actionMoveDown}) {
         a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
         m_ui->segmentTable->addAction(a);
+    }
+}
+
+QString MainWindow::aboutText() const {
+    const QString eigen = QStringLiteral("%1.%2.%3")
+                              .arg(EIGEN_WORLD_VERSION)
+                              .arg(EIGEN_MAJOR_VERSION)
+                              .arg(EIGEN_MINOR_VERSION);
+    return tr("<h3>Camwright %1</h3><p>Design and inspect cam contours: exact polar kinematics "
+              "of the follower, design from motion laws, machining time, exports for CAD, CNC "
+              "and servo drives.</p><p>License: GPL-3.0-or-later.</p>"
+              "<p>Built with</p><ul><li>Qt %2 (LGPL-3.0)</li><li>QCustomPlot %3 (GPL-3.0)</li>"
+              "<li>Eigen %4 (MPL-2.0)</li><li>JSON for Modern C++ (nlohmann-json) %5 (MIT)</li>"
+              "</ul>")
+        .arg(QCoreApplication::applicationVersion(), QString::fromLatin1(qVersion()),
+             QStringLiteral(QCUSTOMPLOT_VERSION_STR), eigen,
+             QString::fromStdString(jsonLibraryVersion()));
+}
+
+void MainWindow::setUpIcons() {
+    // Toolbar icons smaller than Fusion's 24 px: the bar stays as low as the text-only one
+    // was, and a 900×600 window still fits.
+    m_ui->mainToolBar->setIconSize(QSize(18, 18));
+    const auto set = [](QAction* action, const char* icon) { action->setIcon(actionIcon(icon)); };
+    set(m_ui->actionNew, "document-new");
+    set(m_ui->actionOpen, "document-open");
+    set(m_ui->actionSave, "document-save");
+    set(m_ui->actionSaveAs, "document-save-as");
+    set(m_ui->actionQuit, "application-exit");
+    set(m_ui->actionInsertSegment, "list-add");
+    set(m_ui->actionDeleteSegment, "list-remove");
+    set(m_ui->actionMoveUp, "go-up");
+    set(m_ui->actionMoveDown, "go-down");
+    set(m_ui->actionFitWindows, "camwright-fit-windows");
+    set(m_ui->actionAxisTime, "camwright-time-axis");
+    set(m_ui->actionResetZoom, "zoom-fit-best");
+    set(m_ui->actionAbout, "help-about");
+    m_ui->menuRecent->setIcon(actionIcon("document-open-recent"));
+    m_ui->menuExamples->setIcon(actionIcon("folder"));
+    const std::pair<const char*, const char*> named[] = {
+        {"actionUndo", "edit-undo"},
+        {"actionRedo", "edit-redo"},
+        {"actionExport", "document-export"},
+        {"actionApproximateArc", "camwright-approximate-arc"},
+        {"actionContourThroughPoints", "camwright-through-points"},
+        {"actionRoundCorner", "camwright-round-corner"},
+        {"actionSynthesize", "camwright-synthesize"},
+        {"actionKeyboardShortcuts", "preferences-desktop-keyboard"},
+        {"actionPlay", "media-playback-start"},
+    };
+    for (const auto& [object, icon] : named) {
+        if (auto* action = findChild<QAction*>(object)) set(action, icon);
+    }
+    const std::pair<QDockWidget*, const char*> docks[] = {
+        {m_ui->segmentsDock, "camwright-segments"}, {m_ui->jointsDock, "camwright-joints"},
+        {m_ui->motionDock, "camwright-motion"},     {m_ui->readoutDock, "camwright-readout"},
+        {m_ui->machiningDock, "camwright-machining"}, {m_ui->pathStudyDock, "camwright-path-study"},
+        {m_followerDock, "camwright-follower"},     {m_designDock, "camwright-motion-design"},
+    };
+    for (const auto& [dock, icon] : docks) set(dock->toggleViewAction(), icon);
+    connect(m_playAction, &QAction::toggled, this, [this](bool on) {
+        m_playAction->setIcon(actionIcon(on ? "media-playback-pause" : "media-playback-start"));
+    });
+    // Every action's tooltip names its shortcut, in the desktop's words ("Strg+S" in German).
+    for (QAction* action : findChildren<QAction*>()) {
+        if (action->shortcut().isEmpty()) continue;
+        const QString keys = action->shortcut().toString(QKeySequence::NativeText);
+        QString tip = action->toolTip();
+        // Qt's default tooltip is the text without its '&': give it a sentence of its own.
+        if (tip.contains(QLatin1Char('(') + keys + QLatin1Char(')'))) continue;
+        action->setToolTip(tr("%1 (%2)").arg(tip, keys));
     }
 }
 

@@ -45,6 +45,9 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
+    /// @brief Help → About: version, license, the libraries and their versions.
+    [[nodiscard]] QString aboutText() const;
+
     /// @brief Opens a project without asking anything (ProjectFiles::load): a project with
     /// geometric problems opens with them listed; a file that is no project is refused with
     /// the located problems and the open document stays untouched.
@@ -181,6 +184,8 @@ private:
     QElapsedTimer m_playClock;
     void setUpPlay();
     void setUpDesign();
+    /// Icons of every action and dock toggle; every tooltip names its shortcut.
+    void setUpIcons();
     void finishSynthesis(const std::shared_ptr<const Result<Synthesis>>& result, bool cancelled);
     Autosave* m_autosave = nullptr;
     MotionDesignPanel* m_design = nullptr;

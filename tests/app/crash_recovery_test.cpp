@@ -66,10 +66,17 @@ public:
             m_server.start("Xvfb", {QStringLiteral(":%1").arg(n), "-screen", "0",
                                     "1600x1000x24", "-nolisten", "tcp"});
             if (!m_server.waitForStarted(5000)) return;
-            if (waitFor([n] { return QFile::exists(QStringLiteral("/tmp/.X11-unix/X%1").arg(n)); },
-                        10000)) {
-                m_name = QStringLiteral(":%1").arg(n);
-            }
+            // Up when a client can ask it something (its socket appears before it listens).
+            const QString name = QStringLiteral(":%1").arg(n);
+            const auto answers = [&name] {
+                QProcess probe;
+                QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+                env.insert("DISPLAY", name);
+                probe.setProcessEnvironment(env);
+                probe.start("xdotool", {"getdisplaygeometry"});
+                return probe.waitForFinished(5000) && probe.exitCode() == 0;
+            };
+            if (waitFor(answers, 30000)) m_name = name;
             return;
         }
     }
@@ -110,6 +117,7 @@ protected:
         env.insert("LC_ALL", "C.UTF-8");
         app.setProcessEnvironment(env);
         app.setProcessChannelMode(QProcess::MergedChannels);
+        app.setStandardOutputFile(m_home.filePath("app.log"), QIODevice::Append);
         app.start(QStringLiteral(CAMWRIGHT_APP), QStringList{"--autosave-interval", "0.2"} + args);
         ASSERT_TRUE(app.waitForStarted(10000));
     }
@@ -125,7 +133,10 @@ protected:
         return QString::fromUtf8(p.readAllStandardOutput()).trimmed();
     }
 
-    bool waitForWindow(const QString& title, int timeoutMs = 20000) {
+    /// What the application printed (all its runs).
+    [[nodiscard]] std::string appLog() const { return readAll(m_home.filePath("app.log")).toStdString(); }
+
+    bool waitForWindow(const QString& title, int timeoutMs = 60000) {
         const bool found = waitFor(
             [&] { return !xdotool({"search", "--name", title}).isEmpty(); }, timeoutMs);
         if (!found) {
@@ -152,8 +163,8 @@ TEST_F(CrashRecovery, AKilledSessionsEditComesBackOnTheNextStart) {
     {
         QProcess app;
         start(app, {m_project});
-        ASSERT_TRUE(waitForWindow("cam.cam.json")) << app.readAll().toStdString();
-        QThread::msleep(1500);  // laid out and computed
+        ASSERT_TRUE(waitForWindow("cam.cam.json")) << appLog();
+        QThread::msleep(2000);  // laid out and computed
         // The window opens at 1400×860 in the top-left corner (no window manager); row 0's
         // "Centre x" cell of the Segments dock is at (121, 647). Type 26.5 into it.
         xdotool({"mousemove", "121", "647", "click", "--repeat", "2", "1"});
@@ -179,13 +190,23 @@ TEST_F(CrashRecovery, AKilledSessionsEditComesBackOnTheNextStart) {
     {
         QProcess app;
         start(app, {});
-        ASSERT_TRUE(waitForWindow("Recover Unsaved Changes")) << app.readAll().toStdString();
-        const QString box = xdotool({"search", "--name", "Recover Unsaved Changes"})
-                                .split('\n')
-                                .front();
-        xdotool({"mousemove", "--window", box, "20", "20"});
-        xdotool({"key", "Return"});  // Restore, the default button
-        ASSERT_TRUE(waitForWindow("cam.cam.json"));
+        ASSERT_TRUE(waitForWindow("Recover Unsaved Changes")) << appLog();
+        // Return answers Restore, the default button, once the box takes input (on a busy
+        // machine it may not yet when it first appears: then press again).
+        bool restored = false;
+        for (int attempt = 0; attempt < 10 && !restored; ++attempt) {
+            const QString box = xdotool({"search", "--name", "Recover Unsaved Changes"})
+                                    .split('\n')
+                                    .front();
+            if (!box.isEmpty()) {
+                QThread::msleep(300);
+                xdotool({"mousemove", "--window", box, "20", "20"});
+                xdotool({"key", "Return"});
+            }
+            restored = waitFor(
+                [&] { return !xdotool({"search", "--name", "cam.cam.json"}).isEmpty(); }, 2000);
+        }
+        ASSERT_TRUE(restored) << appLog();
         QThread::msleep(1000);
         // The restored project is the file's, unsaved: Ctrl+S writes the edit into it.
         xdotool({"mousemove", "300", "849", "click", "1"});  // the status bar: activates the window

@@ -41,4 +41,7 @@ inline constexpr std::uint64_t kMaxProjectFileBytes = 64ull << 20;
 /// - otherwise the reason from the system (`cannot open: Permission denied`).
 [[nodiscard]] Result<std::string> readTextFile(const std::string& path);
 
+/// @brief The JSON library's version ("3.11.2"), for Help → About.
+[[nodiscard]] std::string jsonLibraryVersion();
+
 }  // namespace cam

@@ -204,3 +204,13 @@ Diagnostics nonFiniteValues(const Project& p) {
 }
 
 }  // namespace cam
+
+namespace cam {
+
+std::string jsonLibraryVersion() {
+    return std::to_string(NLOHMANN_JSON_VERSION_MAJOR) + "." +
+           std::to_string(NLOHMANN_JSON_VERSION_MINOR) + "." +
+           std::to_string(NLOHMANN_JSON_VERSION_PATCH);
+}
+
+}  // namespace cam
