@@ -8,6 +8,7 @@
 
 #include <qcustomplot.h>
 #include <QAction>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
 #include <QSignalSpy>
@@ -244,6 +245,27 @@ TEST(MotionDesign, EditingTheSegmentTableIsUndoableAndMarksTheCellsItBreaks) {
     EXPECT_FALSE(model->setData(model->index(0, DesignTableModel::Cv), 5.0, Qt::EditRole));
     while (doc->undoStack()->canUndo()) doc->undoStack()->undo();
     EXPECT_EQ(*doc->project().design, before);
+}
+
+TEST(MotionDesign, TheLawEditorShowsTheLongestLawWhole) {
+    MainWindow window;
+    window.resize(1400, 860);
+    window.show();
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    QTableView* table = window.motionDesignPanel()->table();
+    const QModelIndex law = table->model()->index(0, DesignTableModel::Law);
+    table->setCurrentIndex(law);
+    table->edit(law);
+    QCoreApplication::processEvents();
+    auto* combo = table->findChild<QComboBox*>();
+    ASSERT_NE(combo, nullptr);
+    // The column fits "Cycloidal"; the editor fits the longest name of the list.
+    int longest = 0;
+    for (const QString& name : DesignTableModel::lawNames()) {
+        longest = std::max(longest, combo->fontMetrics().horizontalAdvance(name));
+    }
+    EXPECT_LT(table->columnWidth(DesignTableModel::Law), longest);
+    EXPECT_GT(combo->width(), longest);
 }
 
 TEST(MotionDesign, NewSplitDeleteAndRemoveAreUndoSteps) {

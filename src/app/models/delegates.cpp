@@ -1,6 +1,7 @@
 #include "models/delegates.h"
 
 #include <QComboBox>
+#include <algorithm>
 #include <QPersistentModelIndex>
 
 #include "models/segment_table_model.h"
@@ -96,6 +97,13 @@ void ChoiceDelegate::setEditorData(QWidget* editor, const QModelIndex& index) co
     auto* combo = static_cast<QComboBox*>(editor);
     const QSignalBlocker block(combo);
     combo->setCurrentIndex(index.data(Qt::EditRole).toInt());
+}
+
+void ChoiceDelegate::updateEditorGeometry(QWidget* editor, const QStyleOptionViewItem& option,
+                                          const QModelIndex&) const {
+    QRect rect = option.rect;
+    rect.setWidth(std::max(rect.width(), editor->sizeHint().width()));
+    editor->setGeometry(rect);
 }
 
 void ChoiceDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,

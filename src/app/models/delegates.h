@@ -41,6 +41,10 @@ public:
     void setEditorData(QWidget* editor, const QModelIndex& index) const override;
     void setModelData(QWidget* editor, QAbstractItemModel* model,
                       const QModelIndex& index) const override;
+    /// The editor is as wide as its longest choice, also when the column is narrower (it then
+    /// lies over the next cell while open): a choice is never cut off.
+    void updateEditorGeometry(QWidget* editor, const QStyleOptionViewItem& option,
+                              const QModelIndex& index) const override;
 };
 
 /// @brief A fresh id for one editing gesture (a spin-box session, a drag): see EditSegment.
