@@ -21,7 +21,13 @@ namespace cam::test {
 
 /// True in a build with AddressSanitizer (the debug preset): code runs several times slower and
 /// cannot run under an address-space limit, which timing bounds and memory tests must allow for.
-#if defined(__SANITIZE_ADDRESS__)
+/// GCC says so with __SANITIZE_ADDRESS__, clang only through __has_feature.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CAMWRIGHT_TEST_ASAN 1
+#endif
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(CAMWRIGHT_TEST_ASAN)
 inline constexpr bool kSanitized = true;
 #else
 inline constexpr bool kSanitized = false;

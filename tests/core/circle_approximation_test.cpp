@@ -71,5 +71,16 @@ TEST(CircleApproximation, ReplacesAContourArcKeepingItsJoints) {
     EXPECT_FALSE(approximateArcSegment(p.contour, 3, 0.0).ok());
 }
 
+TEST(CircleApproximation, AnArcItsWindowMissesIsRefusedAtThatEnd) {
+    // Lobe 1 (centre (18.1, 10.4), window 9.7°..50.3°) shrunk to 1 mm: the ray at 9.7° passes
+    // the circle, the one at 50.3° too. At e144d2b the sweep became NaN and was cast to int.
+    Project p = loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json")).value();
+    p.contour[1].as<Arc>()->radius = 1.0;
+    const auto refused = approximateArcSegment(p.contour, 1, 1e-3);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.errors().front().text(),
+              "contour[1].phi_start: the ray at the window's start does not meet the arc");
+}
+
 }  // namespace
 }  // namespace cam

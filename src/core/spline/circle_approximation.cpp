@@ -55,6 +55,19 @@ Result<std::vector<SegmentSpec>> approximateArcSegment(const std::vector<Segment
     // The arc's piece inside the window, about its own centre, in the direction of travel.
     const Eigen::Vector2d p0 = pointOnSegment(s, s.phiStartDeg) - arc->center;
     const Eigen::Vector2d p1 = pointOnSegment(s, s.phiEndDeg) - arc->center;
+    // An arc its window's rays miss (the contour is invalid there) has no piece to replace.
+    // (Where a ray misses, r(φ) is the foot of the perpendicular: finite, but not on the arc.)
+    const auto meets = [&](double phiDeg, const Eigen::Vector2d& p) {
+        return arc->discriminant(degToRad(phiDeg)) >= 0.0 && p.allFinite();
+    };
+    if (!meets(s.phiStartDeg, p0)) {
+        return Diagnostics{Diagnostic::at({k, SegmentPart::PhiStart},
+                                          "the ray at the window's start does not meet the arc")};
+    }
+    if (!meets(s.phiEndDeg, p1)) {
+        return Diagnostics{Diagnostic::at({k, SegmentPart::PhiEnd},
+                                          "the ray at the window's end does not meet the arc")};
+    }
     // Direction of travel about the arc's centre: that of the contour's tangent dP/dφ.
     const double phi0 = degToRad(s.phiStartDeg);
     const PolarDerivatives d0 = arc->evaluate(phi0);
