@@ -54,31 +54,37 @@ double firstCentreX(const QString& path) {
         std::numeric_limits<double>::quiet_NaN());
 }
 
-/// An X server of our own on a free display, gone with this object.
+/// An X server of our own on a free display, gone with this object. The server picks the
+/// display itself and says which (-displayfd): two tests starting at once (ctest -j2) cannot
+/// both take the one that looked free, as they could when the test chose it.
 class VirtualDisplay {
 public:
     VirtualDisplay() {
-        for (int n = 90; n < 140; ++n) {
-            if (QFile::exists(QStringLiteral("/tmp/.X11-unix/X%1").arg(n)) ||
-                QFile::exists(QStringLiteral("/tmp/.X%1-lock").arg(n))) {
-                continue;
-            }
-            m_server.start("Xvfb", {QStringLiteral(":%1").arg(n), "-screen", "0",
-                                    "1600x1000x24", "-nolisten", "tcp"});
-            if (!m_server.waitForStarted(5000)) return;
-            // Up when a client can ask it something (its socket appears before it listens).
-            const QString name = QStringLiteral(":%1").arg(n);
-            const auto answers = [&name] {
-                QProcess probe;
-                QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-                env.insert("DISPLAY", name);
-                probe.setProcessEnvironment(env);
-                probe.start("xdotool", {"getdisplaygeometry"});
-                return probe.waitForFinished(5000) && probe.exitCode() == 0;
-            };
-            if (waitFor(answers, 30000)) m_name = name;
-            return;
-        }
+        m_server.start("Xvfb", {"-displayfd", "1", "-screen", "0", "1600x1000x24", "-nolisten",
+                                "tcp"});
+        if (!m_server.waitForStarted(5000)) return;
+        QByteArray said;
+        const bool told = waitFor(
+            [&] {
+                m_server.waitForReadyRead(100);
+                said += m_server.readAllStandardOutput();
+                return said.contains('\n');
+            },
+            30000);
+        bool isNumber = false;
+        const int n = said.trimmed().toInt(&isNumber);
+        if (!told || !isNumber) return;
+        // Up when a client can ask it something.
+        const QString name = QStringLiteral(":%1").arg(n);
+        const auto answers = [&name] {
+            QProcess probe;
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            env.insert("DISPLAY", name);
+            probe.setProcessEnvironment(env);
+            probe.start("xdotool", {"getdisplaygeometry"});
+            return probe.waitForFinished(5000) && probe.exitCode() == 0;
+        };
+        if (waitFor(answers, 30000)) m_name = name;
     }
     ~VirtualDisplay() {
         m_server.terminate();
