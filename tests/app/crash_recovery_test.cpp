@@ -56,23 +56,26 @@ double firstCentreX(const QString& path) {
 
 /// An X server of our own on a free display, gone with this object. The server picks the
 /// display itself and says which (-displayfd): two tests starting at once (ctest -j2) cannot
-/// both take the one that looked free, as they could when the test chose it.
+/// both take the one that looked free, as they could when the test chose it. What it prints
+/// goes to files (a pipe nobody reads while the test sleeps could fill and stall it).
 class VirtualDisplay {
 public:
-    VirtualDisplay() {
+    explicit VirtualDisplay(const QString& folder) : m_log(folder + "/xvfb.log") {
+        const QString said = folder + "/xvfb.display";
+        m_server.setStandardOutputFile(said);
+        m_server.setStandardErrorFile(m_log);
         m_server.start("Xvfb", {"-displayfd", "1", "-screen", "0", "1600x1000x24", "-nolisten",
-                                "tcp"});
+                                "tcp", "-noreset"});
         if (!m_server.waitForStarted(5000)) return;
-        QByteArray said;
         const bool told = waitFor(
             [&] {
-                m_server.waitForReadyRead(100);
-                said += m_server.readAllStandardOutput();
-                return said.contains('\n');
+                QFile f(said);
+                return f.open(QIODevice::ReadOnly) && f.readAll().contains('\n');
             },
             30000);
+        QFile f(said);
         bool isNumber = false;
-        const int n = said.trimmed().toInt(&isNumber);
+        const int n = f.open(QIODevice::ReadOnly) ? f.readAll().trimmed().toInt(&isNumber) : -1;
         if (!told || !isNumber) return;
         // Up when a client can ask it something.
         const QString name = QStringLiteral(":%1").arg(n);
@@ -86,6 +89,13 @@ public:
         };
         if (waitFor(answers, 30000)) m_name = name;
     }
+    /// What the server said, and whether it still runs: for a failure's message.
+    [[nodiscard]] std::string state() const {
+        QFile f(m_log);
+        const QString log = f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : "";
+        return (m_server.state() == QProcess::Running ? "Xvfb runs; " : "Xvfb has ended; ") +
+               log.right(2000).toStdString();
+    }
     ~VirtualDisplay() {
         m_server.terminate();
         m_server.waitForFinished(5000);
@@ -93,6 +103,7 @@ public:
     [[nodiscard]] const QString& name() const { return m_name; }
 
 private:
+    QString m_log;
     QProcess m_server;
     QString m_name;
 };
@@ -151,7 +162,8 @@ protected:
         if (!found) {
             ADD_FAILURE() << "no window \"" << title.toStdString() << "\" on "
                           << m_display.name().toStdString() << "; windows: "
-                          << xdotool({"search", "--name", "."}).toStdString();
+                          << xdotool({"search", "--name", "."}).toStdString() << "; "
+                          << m_display.state();
         }
         return found;
     }
@@ -161,7 +173,7 @@ protected:
     }
 
     QTemporaryDir m_home;
-    VirtualDisplay m_display;
+    VirtualDisplay m_display{m_home.path()};
     QString m_project, m_recovery;
 };
 
