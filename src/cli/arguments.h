@@ -24,6 +24,8 @@ struct Arguments {
     std::vector<std::string> positional;
     std::map<std::string, std::string> options;
     std::vector<std::string> flags;
+    /// `COMMAND --help` (or -h): nothing else is checked, the command's help is wanted.
+    bool help = false;
 
     [[nodiscard]] bool hasFlag(const std::string& name) const;
     [[nodiscard]] std::optional<std::string> option(const std::string& name) const;
@@ -38,9 +40,16 @@ struct CommandSyntax {
     std::size_t minPositionals = 1;    ///< at least this many
 };
 
-/// @brief Splits argv by the syntax of its command. Throws CliError (exit 1) on bad usage.
+/// @brief Splits argv by the syntax of its command. Throws CliError (exit 1) on bad usage; an
+/// unknown command or option names the nearest known one when a typo is plausible.
 Arguments parseArguments(const std::vector<std::string>& args,
                          const std::vector<CommandSyntax>& commands);
+
+/// @brief The one candidate a typo most plausibly meant: within an edit distance (insertions,
+/// deletions, substitutions and swaps of neighbours) of a third of its length, at least 1 and
+/// at most 2, or the only candidate `given` begins; none when two are equally near.
+[[nodiscard]] std::optional<std::string> nearestName(const std::string& given,
+                                                     const std::vector<std::string>& candidates);
 
 /// @brief A finite double, the whole text. Throws CliError (exit 2) naming `option`.
 double parseFiniteNumber(const std::string& option, const std::string& text, const char* what);

@@ -446,18 +446,18 @@ double parsePositive(const std::string& option, const std::string& text, const c
 }  // namespace
 
 int runTiming(const Arguments& args, std::ostream& out) {
-    const auto methodText = args.option("--method");
-    if (!methodText) throw CliError{kUsage, "--method", "is required: seed, exact-stop or optimal"};
+    // The fastest motion within the limits unless another method is asked for.
+    const std::string methodText = args.option("--method").value_or("optimal");
     TimingMethod method;
-    if (*methodText == "seed") {
+    if (methodText == "seed") {
         method = TimingMethod::Seed;
-    } else if (*methodText == "exact-stop") {
+    } else if (methodText == "exact-stop") {
         method = TimingMethod::ExactStop;
-    } else if (*methodText == "optimal") {
+    } else if (methodText == "optimal") {
         method = TimingMethod::Optimal;
     } else {
         throw CliError{kUsage, "--method",
-                       "must be seed, exact-stop or optimal (got \"" + *methodText + "\")"};
+                       "must be seed, exact-stop or optimal (got \"" + methodText + "\")"};
     }
     const auto pathFile = args.option("--path");
     if (pathFile.has_value() == !args.positional.empty()) {

@@ -9,83 +9,41 @@
 
 #include "cli/arguments.h"
 #include "cli/commands.h"
+#include "cli/help.h"
 #include "cli/output.h"
 #include "io/atomic_file.h"
 
 namespace {
 
-constexpr const char* kUsageText = R"(usage: camwright-cli COMMAND PROJECT [options]
-
-commands:
-  validate PROJECT                      list every problem of a project (exit 2 if any)
-  state PROJECT --t SECONDS             the follower's state at one instant, as JSON
-  sample PROJECT [--samples N] [--out FILE.csv]
-                                        one turn sampled at N instants, as CSV
-  analyze PROJECT                       joints (continuity, jumps) and extremes, as JSON
-  timing (PROJECT | --path POINTS.csv) --method seed|exact-stop|optimal
-         [--accel AX,AY[,AZ]] [--vmax VX,VY[,VZ]] [--feed F] [--step L] [--detail]
-         [--spline chord|circumcircle|oval]   (the points are teach-in knots of a spline)
-                                        machining time of the contour (offset by the tool
-                                        radius) or of a point list (x,y,z[,bulge] per line)
-  fillet PROJECT --joint K (--radius R | --speed V --accel A --vae E) --out NEW
-                                        round the corner between contour[K-1] and contour[K]
-                                        by a tangent arc (radius given or V²/(vae·A))
-  synthesize PROJECT --out NEW [--tolerance MM] [--output arcs]
-                                        the contour made from the project's design (motion
-                                        laws) for its follower: tangent arcs within the
-                                        tolerance; a report of what the arcs cost the motion
-
-  export PROJECT --format csv|dxf|svg|png|pdf|gcode|camtable --out FILE
-         [--tolerance MM] [--points N] [--dialect csv|codesys] [--tool-radius MM]
-         [--polyline] [--spline-entities] [--centres]
-         [--depth MM] [--step-down MM] [--compensation]
-         [--plot contour|velocity|acceleration|jerk|feed|axis-acceleration|pressure-angle] [--size WxH]
-                                        the profile for CAD (dxf: LINE/ARC on layer CONTOUR,
-                                        TOOLPATH with --tool-radius, CENTRES; svg: 1:1 in mm),
-                                        G-code milling it from outside (gcode: the tool-centre
-                                        path, or the contour with G41/G42 by --compensation;
-                                        tool radius from the project unless given, depth
-                                        default 5 mm, passes of --step-down), the sampled turn
-                                        (csv) or a servo cam table (camtable); png, pdf and
-                                        svg --plot: a plot as the app draws it (by the app
-                                        camwright beside this program; default contour,
-                                        1200x800 px for png, A4 landscape for pdf and svg)
-
-units: mm, s, degrees; v in mm/s, a in mm/s², j in mm/s³.
-exit codes: 0 ok, 1 usage error, 2 invalid input (or results that cannot be written),
-            3 not computable.
-)";
-
 int run(const std::vector<std::string>& args, std::ostream& out) {
     using namespace cam::cli;
-    if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
-        out << kUsageText;
+    if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+        out << overviewHelp();
         return kOk;
     }
     if (!args.empty() && args[0] == "--version") {
         out << "camwright-cli " << CAMWRIGHT_VERSION << "\n";
         return kOk;
     }
-    const std::vector<CommandSyntax> commands{
-        {"validate", 1, {}, {}},
-        {"state", 1, {"--t"}, {}},
-        {"sample", 1, {"--samples", "--out"}, {}},
-        {"analyze", 1, {}, {}},
-        {"timing",
-         1,
-         {"--method", "--path", "--accel", "--vmax", "--feed", "--step", "--spline"},
-         {"--detail"},
-         0},
-        {"fillet", 1, {"--joint", "--radius", "--speed", "--accel", "--vae", "--out"}, {}},
-        {"synthesize", 1, {"--out", "--tolerance", "--output"}, {}},
-        {"export",
-         1,
-         {"--format", "--out", "--tolerance", "--points", "--dialect", "--tool-radius", "--depth",
-          "--step-down", "--plot", "--size"},
-         {"--polyline", "--spline-entities", "--centres", "--compensation"}},
-    };
+    std::vector<CommandSyntax> commands;
+    for (const CommandHelp& c : commandTable()) commands.push_back(c.syntax());
     try {
+        // `help` alone is the overview, `help COMMAND` that command's page.
+        if (!args.empty() && args[0] == "help") {
+            if (args.size() == 1) {
+                out << overviewHelp();
+                return kOk;
+            }
+            const Arguments asked = parseArguments({args[1], "--help"}, commands);
+            if (args.size() > 2) throw CliError{kUsage, "help", "takes one command"};
+            out << commandHelp(*findCommand(asked.command));
+            return kOk;
+        }
         const Arguments parsed = parseArguments(args, commands);
+        if (parsed.help) {
+            out << commandHelp(*findCommand(parsed.command));
+            return kOk;
+        }
         if (parsed.command == "validate") return runValidate(parsed, out, std::cerr);
         if (parsed.command == "state") return runState(parsed, out);
         if (parsed.command == "sample") return runSample(parsed, out);
@@ -98,7 +56,11 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
     } catch (const CliError& e) {
         out.flush();
         std::cerr << "camwright-cli: " << e.location << ": " << e.message << "\n";
-        if (e.code == kUsage) std::cerr << "(run 'camwright-cli --help' for usage)\n";
+        if (e.code == kUsage) {
+            const bool known = !args.empty() && findCommand(args[0]) != nullptr;
+            std::cerr << "(run 'camwright-cli " << (known ? args[0] + " " : std::string())
+                      << "--help' for usage)\n";
+        }
         return e.code;
     } catch (const std::exception& e) {
         out.flush();

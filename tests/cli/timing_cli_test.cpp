@@ -95,6 +95,17 @@ TEST(CliTiming, DetailAddsUpAndSpeedsMatchAtTheJoints) {
                 1e-6);
 }
 
+TEST(CliTiming, TheMethodIsOptimalUnlessAnotherIsAskedFor) {
+    std::string text = test::readFile(test::examplePath("six-lobe-arc-cam.cam.json"));
+    text.insert(text.rfind('}'), R"(, "machining": {"axis_accel": [500, 500, 200], "feed_max": 100,
+        "tool_radius": 2.0, "step": 1.0})");
+    const std::string project = writeTemp("six-lobe-default.cam.json", text);
+    const auto byDefault = timing({"timing", project});
+    EXPECT_EQ(byDefault.at("method"), "optimal");
+    EXPECT_EQ(byDefault, timing({"timing", project, "--method", "optimal"}));
+    EXPECT_NE(byDefault.at("time_s"), timing({"timing", project, "--method", "exact-stop"}).at("time_s"));
+}
+
 TEST(CliTiming, ProjectMachiningSectionAndOverrides) {
     std::string text = test::readFile(test::examplePath("six-lobe-arc-cam.cam.json"));
     text.insert(text.rfind('}'), R"(, "machining": {"axis_accel": [500, 500, 200], "feed_max": 100,
@@ -152,7 +163,7 @@ TEST(CliTiming, BadInputGetsTheDocumentedExitCodeAndLocation) {
         std::string where;
     };
     const std::vector<Case> cases{
-        {{"timing", "--path", csv, "--accel", "1,1,1"}, 1, "--method"},
+        {{"timing", "--path", csv, "--method", "", "--accel", "1,1,1"}, 1, "--method"},
         {{"timing", "--path", csv, "--method", "fastest", "--accel", "1,1,1"}, 1, "--method"},
         {{"timing", "--method", "seed", "--accel", "1,1,1"}, 1, "PROJECT or --path"},
         {{"timing", example, "--path", csv, "--method", "seed"}, 1, "PROJECT or --path"},
