@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -81,6 +83,48 @@ TEST(CliSample, WritesTheDocumentedHeaderAndNRowsOverOneTurn) {
     const auto row = csvRow(l[2]);
     EXPECT_NEAR(row[3], st.at("r").get<double>(), 1e-13 * row[3]);
     EXPECT_NEAR(row[9], st.at("a_r").get<double>(), 1e-11 * std::abs(row[9]));
+}
+
+/// Significant digits of a number's text: those of its mantissa without leading and trailing
+/// zeros ("0.5" 1, "10" 1, "120.25" 5).
+int significantDigits(const std::string& cell) {
+    std::string digits;
+    for (const char c : cell.substr(0, cell.find_first_of("eE"))) {
+        if (c >= '0' && c <= '9' && !(digits.empty() && c == '0')) digits += c;
+    }
+    while (!digits.empty() && digits.back() == '0') digits.pop_back();
+    return static_cast<int>(digits.size());
+}
+
+TEST(CliSample, EveryNumberIsExactShortestAndNeverMinusZero) {
+    const auto r = test::runCli({"sample", kExample, "--samples", "720"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto rows = lines(r.out);
+    ASSERT_EQ(rows.size(), 721u);
+    int shortCells = 0;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        std::istringstream in(rows[i]);
+        for (std::string cell; std::getline(in, cell, ',');) {
+            ASSERT_FALSE(cell.empty()) << rows[i];
+            char* end = nullptr;
+            const double v = std::strtod(cell.c_str(), &end);
+            ASSERT_EQ(*end, '\0') << cell;
+            EXPECT_FALSE(cell.front() == '-' && v == 0.0) << "row " << i << ": " << cell;
+            // Shortest: one significant digit fewer no longer reads back to the same double.
+            const int n = significantDigits(cell);
+            if (n > 1) {
+                char fewer[400];  // %g of a double: at most ~330 characters
+                std::snprintf(fewer, sizeof fewer, "%.*g", n - 1, v);
+                EXPECT_NE(std::strtod(fewer, nullptr), v) << "row " << i << ": " << cell;
+            }
+            shortCells += n <= 6;
+        }
+    }
+    // t = k/720 of the turn and φ = k/2 degrees: the angles are short (0.5, 1, 1.5, …).
+    EXPECT_EQ(rows[1].substr(0, 4), "0,0,");
+    EXPECT_EQ(csvRow(rows[2])[1], 0.5);
+    EXPECT_NE(rows[2].find(",0.5,"), std::string::npos) << rows[2];
+    EXPECT_GE(shortCells, 720);
 }
 
 TEST(CliSample, DefaultsToTheProjectSamplingAndWritesFilesAtomically) {

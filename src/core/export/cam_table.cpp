@@ -78,7 +78,8 @@ std::string commentText(std::string text) {
     return text;
 }
 
-/// An LREAL literal of IEC 61131-3: 17 digits, always with a decimal point ("45.0", "1.0e-05").
+/// An LREAL literal of IEC 61131-3: exact and shortest, always with a decimal point ("45.0",
+/// "1.0e-05").
 void appendReal(std::string& out, double value) {
     std::string text;
     appendExact(text, value);

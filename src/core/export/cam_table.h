@@ -44,7 +44,8 @@ struct CamKnot {
 
 /// @brief The table in the dialect's text. CSV: comment lines `# master_start_deg=0`,
 /// `# master_step_deg=…`, `# points=N`, `# periodic=true`, `# slave=lift_mm`, then
-/// `master_deg,position,velocity_per_deg,acceleration_per_deg2` and one row per knot, %.17g.
+/// `master_deg,position,velocity_per_deg,acceleration_per_deg2` and one row per knot, each number
+/// the shortest text that reads back exactly (appendExact).
 /// CODESYS: a VAR_GLOBAL block with `<name>_knots : ARRAY[0..N] OF SMC_CAMXYVA` (dX master deg,
 /// dY lift mm, dV mm/deg, dA mm/deg²; the knot at 360° repeats the first, as a cam over
 /// [xStart, xEnd] needs) and `<name> : MC_CAM_REF` with byType := 3 (XYVA polynomials),

@@ -28,7 +28,7 @@ struct DxfOptions {
     std::optional<double> toolRadiusMm;
 };
 
-/// @brief The DXF text (CRLF-free, "\n" line ends, C locale, 17 significant digits). Every
+/// @brief The DXF text (CRLF-free, "\n" line ends, C locale, numbers exact and shortest). Every
 /// LINE/ARC of layer CONTOUR is one line or arc segment of the contour, exact to rounding; a
 /// one-segment contour (a full circle) is a CIRCLE. Errors: a tolerance or tool radius out of
 /// range (located `--tolerance`, `--tool-radius`), a tool path that cannot be made (located

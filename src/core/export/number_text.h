@@ -7,11 +7,13 @@
 
 namespace cam {
 
-/// @brief Appends `value` with 17 significant digits (%.17g): it reads back to the same double.
+/// @brief Appends the shortest text that reads back to exactly `value` (0.1, not
+/// 0.10000000000000001; 1e-05 where that is shorter than 0.00001), and 0 for -0: a sign on a
+/// zero only says from which side round-off came.
 inline void appendExact(std::string& out, double value) {
+    if (value == 0.0) value = 0.0;  // -0 → 0
     char buffer[32];
-    const auto result =
-        std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 17);
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
     out.append(buffer, result.ptr);
 }
 

@@ -41,7 +41,8 @@ void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower,
 /// none when every value is finite (a turn too fast or too big for a double).
 [[nodiscard]] std::optional<Diagnostic> firstNonFiniteSample(const SampledTurn& turn);
 
-/// @brief Appends sample k as one line: %.17g in the C locale, the segment as an integer.
+/// @brief Appends sample k as one line: each number the shortest text that reads back exactly,
+/// in the C locale, never -0; the segment as an integer.
 void appendSampleCsvRow(std::string& out, const SampledTurn& turn, std::size_t k);
 
 /// @brief One turn at `points` instants t_k = k·T/points, header included; with a follower
