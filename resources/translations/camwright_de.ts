@@ -107,6 +107,16 @@
     </message>
     <message>
         <location line="+4" />
+        <source>&amp;Close</source>
+        <translation>S&amp;chließen</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Close the project (asks about unsaved changes); a new one takes its place</source>
+        <translation>Projekt schließen (fragt nach ungespeicherten Änderungen); ein neues tritt an seine Stelle</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>&amp;New</source>
         <translation>&amp;Neu</translation>
     </message>
@@ -1558,7 +1568,12 @@
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+15" />
+        <source>Closed %1</source>
+        <translation>%1 geschlossen</translation>
+    </message>
+    <message>
+        <location line="+16" />
         <source>Approximate Arc by &amp;Béziers…</source>
         <translation>Bogen durch &amp;Béziers annähern …</translation>
     </message>
@@ -1630,7 +1645,7 @@
         <translation>&lt;h3&gt;Camwright %1&lt;/h3&gt;&lt;p&gt;Kurvenscheiben entwerfen und prüfen: exakte Polarkinematik des Stößels, Entwurf aus Bewegungsgesetzen, Bearbeitungszeit, Export für CAD, CNC und Servoantriebe.&lt;/p&gt;&lt;p&gt;Lizenz: GPL-3.0-or-later.&lt;/p&gt;&lt;p&gt;Erstellt mit&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (LGPL-3.0)&lt;/li&gt;&lt;li&gt;QCustomPlot %3 (GPL-3.0)&lt;/li&gt;&lt;li&gt;Eigen %4 (MPL-2.0)&lt;/li&gt;&lt;li&gt;JSON for Modern C++ (nlohmann-json) %5 (MIT)&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
     <message>
-        <location line="+59" />
+        <location line="+63" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -1749,7 +1764,7 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-348" />
+        <location line="-352" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -2174,7 +2189,7 @@ T = %3 s</translation>
 <context>
     <name>cam::ProjectFiles</name>
     <message>
-        <location filename="../../src/app/files/project_files.cpp" line="+62" />
+        <location filename="../../src/app/files/project_files.cpp" line="+64" />
         <source>%1 cannot be opened: another file is being opened</source>
         <translation>%1 kann nicht geöffnet werden: Es wird gerade eine andere Datei geöffnet</translation>
     </message>
@@ -2293,6 +2308,31 @@ Möchten Sie die Datei ersetzen?</translation>
         <location line="+13" />
         <source>Open Example</source>
         <translation>Beispiel öffnen</translation>
+    </message>
+    <message>
+        <location line="+25" />
+        <source>Open Recent</source>
+        <translation>Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 no longer exists; it has been removed from the recent files.</source>
+        <translation>%1 existiert nicht mehr und wurde aus der Liste der zuletzt geöffneten Dateien entfernt.</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Recent files cleared</source>
+        <translation>Liste der zuletzt geöffneten Dateien geleert</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>&amp;Clear Menu</source>
+        <translation>Menü &amp;leeren</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Forget the recent files (the files stay where they are)</source>
+        <translation>Die Liste der zuletzt geöffneten Dateien leeren (die Dateien selbst bleiben, wo sie sind)</translation>
     </message>
 </context>
 <context>

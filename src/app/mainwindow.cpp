@@ -418,6 +418,12 @@ void MainWindow::setUpActions() {
     connect(m_ui->actionNew, &QAction::triggered, this, [this] {
         if (m_files->maybeSave()) m_document->reset(ContourEdits::newProject(), {});
     });
+    connect(m_ui->actionClose, &QAction::triggered, this, [this] {
+        const QString name = m_document->displayName();
+        if (!m_files->maybeSave()) return;
+        m_document->reset(ContourEdits::newProject(), {});
+        statusBar()->showMessage(tr("Closed %1").arg(name), 4000);
+    });
     connect(m_ui->actionOpen, &QAction::triggered, this, [this] { m_files->open(); });
     connect(m_ui->actionSave, &QAction::triggered, this, [this] { m_files->save(); });
     connect(m_ui->actionSaveAs, &QAction::triggered, this, [this] { m_files->saveAs(); });
@@ -533,6 +539,7 @@ void MainWindow::setUpIcons() {
     set(m_ui->actionOpen, "document-open");
     set(m_ui->actionSave, "document-save");
     set(m_ui->actionSaveAs, "document-save-as");
+    set(m_ui->actionClose, "document-close");
     set(m_ui->actionQuit, "application-exit");
     set(m_ui->actionInsertSegment, "list-add");
     set(m_ui->actionDeleteSegment, "list-remove");

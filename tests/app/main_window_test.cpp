@@ -14,6 +14,7 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -450,6 +451,65 @@ TEST(MainWindow, DroppingAProjectOpensItAndRecentFilesRememberIt) {
     EXPECT_EQ(recent->actions().front()->text(),
               QDir::toNativeSeparators(QFileInfo(kExample).absoluteFilePath()));
     delete mime;
+}
+
+TEST(MainWindow, CloseAsksAboutUnsavedChangesAndLeavesANewProject) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    window.document()->undoStack()->push(new SetMotion(window.document(), {SpeedUnit::Rpm, 100.0}));
+    auto* close = window.findChild<QAction*>("actionClose");
+    ASSERT_NE(close, nullptr);
+    EXPECT_EQ(close->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_W));
+    QString asked;
+    answerNextMessageBox(QMessageBox::Cancel, &asked);
+    close->trigger();
+    EXPECT_TRUE(asked.contains("unsaved changes")) << asked.toStdString();
+    EXPECT_EQ(window.document()->project().contour.size(), 13u);  // nothing lost
+    EXPECT_EQ(window.document()->project().motion.unit, SpeedUnit::Rpm);
+    answerNextMessageBox(QMessageBox::Discard);
+    close->trigger();
+    EXPECT_TRUE(window.document()->filePath().isEmpty());
+    EXPECT_FALSE(window.document()->isModified());
+    EXPECT_EQ(window.document()->project().contour.size(), 2u);  // the new-project circle
+    EXPECT_TRUE(window.statusBar()->currentMessage().startsWith("Closed "))
+        << window.statusBar()->currentMessage().toStdString();
+}
+
+TEST(MainWindow, ARecentFileThatIsGoneIsRemovedWithOneMessage) {
+    QTemporaryDir dir;
+    const QString gone = dir.filePath("gone.cam.json");
+    const QString kept = QFileInfo(kExample).absoluteFilePath();
+    QSettings().setValue("files/recent", QStringList{gone, kept});
+    MainWindow window;
+    auto* recent = window.findChild<QMenu*>("menuRecent");
+    ASSERT_NE(recent, nullptr);
+    ASSERT_EQ(recent->actions().size(), 4);  // two files, a separator, Clear Menu
+    EXPECT_EQ(recent->actions().front()->text(), QDir::toNativeSeparators(gone));
+    QString told;
+    answerNextMessageBox(QMessageBox::Ok, &told);
+    recent->actions().front()->trigger();
+    EXPECT_TRUE(told.contains("gone.cam.json") && told.contains("no longer exists"))
+        << told.toStdString();
+    EXPECT_EQ(QSettings().value("files/recent").toStringList(), QStringList{kept});
+    EXPECT_EQ(recent->actions().front()->text(), QDir::toNativeSeparators(kept));
+    EXPECT_EQ(window.document()->project().contour.size(), 2u);  // nothing else happened
+    // The one left opens.
+    recent->actions().front()->trigger();
+    EXPECT_EQ(window.document()->filePath(), kept);
+}
+
+TEST(MainWindow, ClearMenuForgetsTheRecentFiles) {
+    QSettings().setValue("files/recent", QStringList{QFileInfo(kExample).absoluteFilePath()});
+    MainWindow window;
+    auto* clear = window.findChild<QAction*>("actionClearRecent");
+    ASSERT_NE(clear, nullptr);
+    EXPECT_FALSE(clear->icon().isNull());
+    clear->trigger();
+    EXPECT_TRUE(QSettings().value("files/recent").toStringList().isEmpty());
+    auto* recent = window.findChild<QMenu*>("menuRecent");
+    EXPECT_TRUE(recent->actions().isEmpty());
+    EXPECT_FALSE(recent->isEnabled());
+    EXPECT_TRUE(QFileInfo::exists(kExample));  // only the list is forgotten
 }
 
 TEST(MainWindow, ExamplesOpenAsUntitledCopies) {

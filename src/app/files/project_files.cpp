@@ -1,5 +1,6 @@
 #include "files/project_files.h"
 
+#include <QAction>
 #include <QDir>
 #include <QEventLoop>
 #include <QFile>
@@ -19,6 +20,7 @@
 #include "document/project_document.h"
 #include "io/atomic_file.h"
 #include "io/project_json.h"
+#include "widgets/icons.h"
 #include "project/validate.h"
 
 namespace cam {
@@ -251,11 +253,46 @@ void ProjectFiles::addRecentFile(const QString& path) {
     rebuildRecentMenu();
 }
 
+void ProjectFiles::openRecent(const QString& path) {
+    if (!QFileInfo::exists(path)) {
+        // Moved or deleted since: it goes from the list, and the user is told once, here.
+        QSettings settings;
+        QStringList files = settings.value("files/recent").toStringList();
+        files.removeAll(path);
+        settings.setValue("files/recent", files);
+        rebuildRecentMenu();
+        QMessageBox box(QMessageBox::Information, tr("Open Recent"),
+                        tr("%1 no longer exists; it has been removed from the recent files.")
+                            .arg(QDir::toNativeSeparators(path)),
+                        QMessageBox::Ok, m_window);
+        box.setObjectName("recentFileGoneBox");
+        box.exec();
+        return;
+    }
+    open(path);
+}
+
+void ProjectFiles::clearRecentFiles() {
+    QSettings().remove("files/recent");
+    rebuildRecentMenu();
+    emit message(tr("Recent files cleared"), 4000);
+}
+
 void ProjectFiles::rebuildRecentMenu() {
     m_recentMenu->clear();
     const QStringList files = QSettings().value("files/recent").toStringList();
     for (const QString& f : files) {
-        m_recentMenu->addAction(QDir::toNativeSeparators(f), this, [this, f] { open(f); });
+        QAction* entry =
+            m_recentMenu->addAction(QDir::toNativeSeparators(f), this, [this, f] { openRecent(f); });
+        entry->setToolTip(QDir::toNativeSeparators(f));
+    }
+    if (!files.isEmpty()) {
+        m_recentMenu->addSeparator();
+        QAction* clear = m_recentMenu->addAction(actionIcon("edit-clear-history"),
+                                                 tr("&Clear Menu"), this,
+                                                 &ProjectFiles::clearRecentFiles);
+        clear->setObjectName("actionClearRecent");
+        clear->setToolTip(tr("Forget the recent files (the files stay where they are)"));
     }
     m_recentMenu->setEnabled(!files.isEmpty());
 }

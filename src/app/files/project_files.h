@@ -49,6 +49,11 @@ public:
     bool maybeSave();
     /// @brief Opens an example (a `:/examples` resource) as an untitled copy.
     void openExample(const QString& resourcePath);
+    /// @brief File → Open Recent → a file: opened, or, when it no longer exists, removed from
+    /// the list with a message saying so.
+    void openRecent(const QString& path);
+    /// @brief File → Open Recent → Clear Menu.
+    void clearRecentFiles();
 
 signals:
     /// A transient status-bar message.
