@@ -11,6 +11,8 @@ packages=(
     # libraries
     qt6-base-dev qt6-base-dev-tools qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     libqt6svg6 qt6-qpa-plugins libgl-dev
+    # Qt's own strings in German (dialog buttons, file dialogs, key names)
+    qt6-translations-l10n
     libqcustomplot-dev libqcustomplot2.1-qt6
     libeigen3-dev nlohmann-json3-dev
     # tests and benchmarks

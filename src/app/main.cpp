@@ -6,17 +6,16 @@
 #include <QApplication>
 #include <QIcon>
 #include <QCommandLineParser>
-#include <QLibraryInfo>
 #include <QLocale>
 #include <QMessageBox>
 #include <QTimer>
-#include <QTranslator>
 #include <cstdio>
 #include <cstring>
 
 #include "mainwindow.h"
 #include "files/autosave.h"
 #include "screenshot.h"
+#include "translations.h"
 
 namespace {
 
@@ -72,14 +71,7 @@ int main(int argc, char** argv) {
         QStringLiteral("org.camwright.Camwright"),
         QIcon(QStringLiteral(":/icons/org.camwright.Camwright.svg"))));
 
-    QTranslator qtTranslator, appTranslator;
-    if (qtTranslator.load(QLocale(), "qtbase", "_",
-                          QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
-        QApplication::installTranslator(&qtTranslator);
-    }
-    if (appTranslator.load(QLocale(), "camwright", "_", ":/i18n")) {
-        QApplication::installTranslator(&appTranslator);
-    }
+    const cam::Translations translations{QLocale()};
 
     QCommandLineParser parser;
     parser.setApplicationDescription(

@@ -8,6 +8,7 @@
 #include <qcustomplot.h>
 #include <QAbstractButton>
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFile>
@@ -16,17 +17,21 @@
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QRegularExpression>
 #include <QSet>
 #include <QTabBar>
 #include <QTableView>
+#include <QTimer>
 #include <QTranslator>
 #include <QXmlStreamReader>
 
 #include "app_test_support.h"
+#include "document/commands.h"
 #include "engine/compute_engine.h"
 #include "mainwindow.h"
 #include "models/segment_table_model.h"
+#include "translations.h"
 
 namespace cam {
 namespace {
@@ -175,6 +180,34 @@ TEST(GermanWindow, EveryVisibleStringIsATranslationTheFileKnows) {
     EXPECT_GT(checked, 150);
     EXPECT_TRUE(offending.isEmpty()) << "shown in the German window but not translated:\n  "
                                      << offending.join("\n  ").toStdString();
+}
+
+TEST(GermanWindow, QtsOwnButtonsAndKeyNamesAreGermanToo) {
+    // As main() installs them: Qt's translations (qt6-translations-l10n) and ours.
+    const Translations german(QLocale(QLocale::German, QLocale::Germany));
+    ASSERT_TRUE(german.appTranslated());
+    ASSERT_TRUE(german.qtTranslated()) << "Qt's German is missing: apt install qt6-translations-l10n";
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json")))
+                    .isEmpty());
+    window.document()->undoStack()->push(new SetMotion(window.document(), {SpeedUnit::Rpm, 90.0}));
+    // The unsaved-changes prompt of File → New: its buttons are Qt's.
+    QStringList buttons;
+    QTimer::singleShot(0, [&] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box) return;
+        for (QAbstractButton* b : box->buttons()) buttons << withoutAccelerators(b->text());
+        box->button(QMessageBox::Cancel)->click();
+    });
+    window.findChild<QAction*>("actionNew")->trigger();
+    buttons.sort();
+    EXPECT_EQ(buttons.join(", ").toStdString(), "Abbrechen, Speichern, Verwerfen");
+    EXPECT_EQ(window.document()->project().motion.value, 90.0);  // Cancel kept the edit
+    // Key names as a German keyboard labels them, in tooltips and the shortcuts list.
+    EXPECT_EQ(QKeySequence(QKeySequence::Save).toString(QKeySequence::NativeText), "Strg+S");
+    EXPECT_EQ(QKeySequence(Qt::Key_Delete).toString(QKeySequence::NativeText), "Entf");
+    EXPECT_TRUE(window.findChild<QAction*>("actionSave")->toolTip().contains("Strg+S"))
+        << window.findChild<QAction*>("actionSave")->toolTip().toStdString();
 }
 
 }  // namespace
