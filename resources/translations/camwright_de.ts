@@ -53,7 +53,7 @@
     <message>
         <location line="+1" />
         <source>&amp;Examples</source>
-        <translation>&amp;Beispiele</translation>
+        <translation>B&amp;eispiele</translation>
     </message>
     <message>
         <location line="+4" />
@@ -114,6 +114,16 @@
         <location line="+0" />
         <source>Close the project (asks about unsaved changes); a new one takes its place</source>
         <translation>Projekt schließen (fragt nach ungespeicherten Änderungen); ein neues tritt an seine Stelle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Project &amp;Name…</source>
+        <translation>Projektna&amp;me…</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Rename the project: its name is the title of exported pictures and SVG files, the G-code program's first comment and the cam table's name</source>
+        <translation>Projekt umbenennen: Der Name ist Titel exportierter Bilder und SVG-Dateien, erster Kommentar des G-Code-Programms und Name der Kurvenscheibentabelle</translation>
     </message>
     <message>
         <location line="+1" />
@@ -304,10 +314,15 @@
     <message>
         <location line="+19" />
         <source>Change speed</source>
-        <translation>Drehzahl ändern</translation>
+        <translation>Drehgeschwindigkeit ändern</translation>
     </message>
     <message>
         <location line="+5" />
+        <source>Rename project</source>
+        <translation>Projekt umbenennen</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Change samples per turn</source>
         <translation>Abtastpunkte je Umdrehung ändern</translation>
     </message>
@@ -1436,7 +1451,7 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+76" />
+        <location filename="../../src/app/mainwindow.cpp" line="+78" />
         <source>The recovery copy could not be written: %1</source>
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -1573,7 +1588,17 @@
         <translation>%1 geschlossen</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+5" />
+        <source>Project Name</source>
+        <translation>Projektname</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Name of the project:</source>
+        <translation>Name des Projekts:</translation>
+    </message>
+    <message>
+        <location line="+18" />
         <source>Approximate Arc by &amp;Béziers…</source>
         <translation>Bogen durch &amp;Béziers annähern …</translation>
     </message>
@@ -1645,7 +1670,7 @@
         <translation>&lt;h3&gt;Camwright %1&lt;/h3&gt;&lt;p&gt;Kurvenscheiben entwerfen und prüfen: exakte Polarkinematik des Stößels, Entwurf aus Bewegungsgesetzen, Bearbeitungszeit, Export für CAD, CNC und Servoantriebe.&lt;/p&gt;&lt;p&gt;Lizenz: GPL-3.0-or-later.&lt;/p&gt;&lt;p&gt;Erstellt mit&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (LGPL-3.0)&lt;/li&gt;&lt;li&gt;QCustomPlot %3 (GPL-3.0)&lt;/li&gt;&lt;li&gt;Eigen %4 (MPL-2.0)&lt;/li&gt;&lt;li&gt;JSON for Modern C++ (nlohmann-json) %5 (MIT)&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
     <message>
-        <location line="+63" />
+        <location line="+64" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -1709,7 +1734,12 @@
         <translation>%1 ist keine Wiederherstellungskopie einer beendeten Sitzung.</translation>
     </message>
     <message>
-        <location line="+61" />
+        <location line="+19" />
+        <source>Project renamed to “%1”</source>
+        <translation>Projekt in „%1“ umbenannt</translation>
+    </message>
+    <message>
+        <location line="+49" />
         <source>not computed: %1</source>
         <translation>nicht berechnet: %1</translation>
     </message>
@@ -1764,7 +1794,7 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-352" />
+        <location line="-360" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -2074,7 +2104,7 @@
     <message>
         <location filename="../../src/app/views/motion_panel.cpp" line="+22" />
         <source>Turning speed; a negative speed turns clockwise</source>
-        <translation>Drehzahl; negativ dreht im Uhrzeigersinn</translation>
+        <translation>Drehgeschwindigkeit; negativ dreht im Uhrzeigersinn</translation>
     </message>
     <message>
         <location line="+3" />
@@ -2092,6 +2122,11 @@
         <translation>Periode [s]</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>The speed's unit; changing it keeps the physical speed</source>
+        <translation>Einheit der Drehgeschwindigkeit; beim Wechsel bleibt die Drehgeschwindigkeit selbst erhalten</translation>
+    </message>
+    <message>
         <location line="+5" />
         <source>Samples per turn for the plots and exports</source>
         <translation>Abtastpunkte je Umdrehung für Diagramme und Exporte</translation>
@@ -2099,7 +2134,7 @@
     <message>
         <location line="+4" />
         <source>Speed</source>
-        <translation>Drehzahl</translation>
+        <translation>Drehgeschwindigkeit</translation>
     </message>
     <message>
         <location line="+1" />
@@ -2163,12 +2198,12 @@ T = %3 s</translation>
     </message>
     <message>
         <location line="+9" />
-        <location line="+22" />
+        <location line="+24" />
         <source>The contour has no Bézier or Hermite segment.</source>
         <translation>Die Kontur hat kein Bézier- oder Hermite-Segment.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+6" />
         <source>The contour's splines one after another over their parameter t (piece k runs from k to k + 1). Blue x, red y; lines analytic, circles the difference quotients (step h = %1); at the bottom their difference, solid for the first and dashed for the second derivative.</source>
         <translation>Die Splines der Kontur nacheinander über ihrem Parameter t (Stück k läuft von k bis k + 1). Blau x, rot y; Linien analytisch, Kreise die Differenzenquotienten (Schritt h = %1); unten ihre Differenz, durchgezogen für die erste und gestrichelt für die zweite Ableitung.</translation>
     </message>
@@ -2181,7 +2216,7 @@ T = %3 s</translation>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+113" />
+        <location line="+120" />
         <source>… and %1 more</source>
         <translation>… und %1 weitere</translation>
     </message>
@@ -2394,7 +2429,17 @@ Möchten Sie die Datei ersetzen?</translation>
         <translation>Die Griffe in der Konturansicht ziehen, um die Kurve zu formen.</translation>
     </message>
     <message>
-        <location line="+66" />
+        <location line="+65" />
+        <source>What the segment is: an arc of a circle, a line, or a cubic spline piece (Bézier or Hermite)</source>
+        <translation>Art des Segments: ein Kreisbogen, eine Strecke oder ein kubisches Spline-Stück (Bézier oder Hermite)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Which of the two points where the follower's ray meets the arc's circle the contour takes: outer, the one farther from the rotation centre (a lobe); inner, the nearer one (a notch, a concave flank)</source>
+        <translation>Welchen der beiden Punkte, in denen der Strahl des Stößels den Kreis des Bogens trifft, die Kontur nimmt: außen den vom Drehpunkt weiter entfernten (ein Nocken), innen den näheren (eine Kerbe, eine konkave Flanke)</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>Centre of the arc's circle, mm</source>
         <translation>Mittelpunkt des Kreises, mm</translation>
     </message>
@@ -2613,7 +2658,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../../src/app/main.cpp" line="+86" />
+        <location filename="../../src/app/main.cpp" line="+78" />
         <source>Design and inspect cam contours.</source>
         <translation>Kurvenkonturen entwerfen und prüfen.</translation>
     </message>

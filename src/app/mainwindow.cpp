@@ -7,7 +7,9 @@
 #include <QDockWidget>
 #include <QEventLoop>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QProgressDialog>
@@ -424,6 +426,13 @@ void MainWindow::setUpActions() {
         m_document->reset(ContourEdits::newProject(), {});
         statusBar()->showMessage(tr("Closed %1").arg(name), 4000);
     });
+    connect(m_ui->actionRenameProject, &QAction::triggered, this, [this] {
+        bool ok = false;
+        const QString name = QInputDialog::getText(
+            this, tr("Project Name"), tr("Name of the project:"), QLineEdit::Normal,
+            QString::fromStdString(m_document->project().name), &ok);
+        if (ok) renameProject(name);
+    });
     connect(m_ui->actionOpen, &QAction::triggered, this, [this] { m_files->open(); });
     connect(m_ui->actionSave, &QAction::triggered, this, [this] { m_files->save(); });
     connect(m_ui->actionSaveAs, &QAction::triggered, this, [this] { m_files->saveAs(); });
@@ -540,6 +549,7 @@ void MainWindow::setUpIcons() {
     set(m_ui->actionSave, "document-save");
     set(m_ui->actionSaveAs, "document-save-as");
     set(m_ui->actionClose, "document-close");
+    set(m_ui->actionRenameProject, "edit-rename");
     set(m_ui->actionQuit, "application-exit");
     set(m_ui->actionInsertSegment, "list-add");
     set(m_ui->actionDeleteSegment, "list-remove");
@@ -653,6 +663,13 @@ void MainWindow::report(const EditOutcome& outcome, const QString& title) {
     }
     if (!outcome.status.isEmpty()) statusBar()->showMessage(outcome.status, 6000);
     if (outcome.row >= 0) m_ui->segmentTable->selectRow(outcome.row);
+}
+
+void MainWindow::renameProject(const QString& name) {
+    const std::string trimmed = name.trimmed().toStdString();
+    if (trimmed == m_document->project().name) return;
+    m_document->undoStack()->push(new SetProjectName(m_document, trimmed));
+    statusBar()->showMessage(tr("Project renamed to “%1”").arg(name.trimmed()), 4000);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

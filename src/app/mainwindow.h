@@ -54,6 +54,9 @@ public:
     QString loadFile(const QString& path);
     /// @brief Saves to `path` atomically (ProjectFiles::save); returns the problem, or empty.
     QString saveFile(const QString& path);
+    /// @brief File → Project Name…: renames the project (trimmed) as one undo step; nothing
+    /// when the name is unchanged.
+    void renameProject(const QString& name);
 
     [[nodiscard]] ProjectDocument* document() const { return m_document; }
     [[nodiscard]] ComputeEngine* engine() const { return m_engine; }

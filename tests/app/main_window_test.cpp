@@ -8,6 +8,7 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QImage>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
@@ -27,6 +28,7 @@
 #include "app_test_support.h"
 #include "document/commands.h"
 #include "engine/compute_engine.h"
+#include "io/project_json.h"
 #include "mainwindow.h"
 #include "models/segment_table_model.h"
 #include "screenshot.h"
@@ -512,6 +514,38 @@ TEST(MainWindow, ClearMenuForgetsTheRecentFiles) {
     EXPECT_TRUE(QFileInfo::exists(kExample));  // only the list is forgotten
 }
 
+TEST(MainWindow, ProjectNameRenamesTheProjectAsOneUndoStep) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    const std::string before = window.document()->project().name;
+    auto* rename = window.findChild<QAction*>("actionRenameProject");
+    ASSERT_NE(rename, nullptr);
+    // File → Project Name… asks with the current name filled in; the user types a new one.
+    QString offered;
+    QTimer::singleShot(0, [&] {
+        auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
+        if (!dialog) return;
+        offered = dialog->textValue();
+        dialog->setTextValue("  Lobe cam 7 ");
+        dialog->accept();
+    });
+    rename->trigger();
+    EXPECT_EQ(offered.toStdString(), before);
+    EXPECT_EQ(window.document()->project().name, "Lobe cam 7");  // trimmed
+    EXPECT_TRUE(window.document()->isModified());
+    window.renameProject("Lobe cam 7");  // unchanged: no second step
+    EXPECT_EQ(window.document()->undoStack()->count(), 1);
+    EXPECT_EQ(window.document()->undoStack()->undoText(), "Rename project");
+    window.document()->undoStack()->undo();
+    EXPECT_EQ(window.document()->project().name, before);
+    window.document()->undoStack()->redo();
+    // Saved with the project.
+    QTemporaryDir dir;
+    ASSERT_TRUE(window.saveFile(dir.filePath("named.cam.json")).isEmpty());
+    EXPECT_EQ(loadProjectFile(dir.filePath("named.cam.json").toStdString()).value().name,
+              "Lobe cam 7");
+}
+
 TEST(MainWindow, ExamplesOpenAsUntitledCopies) {
     MainWindow window;
     auto* examples = window.findChild<QMenu*>("menuExamples");
@@ -666,6 +700,16 @@ TEST(PathStudyPanel, ShowsTheSplinesAnalyticAndByDifferenceQuotient) {
     }
     EXPECT_GT(worst, 0.0);
     EXPECT_LT(worst, 1e-2);
+    EXPECT_TRUE(first->isVisible());
+    // A contour of arcs only: the note says there is nothing to study, and no empty axes show.
+    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    QCoreApplication::processEvents();
+    for (int p = 0; p < 4; ++p) EXPECT_FALSE(window.pathStudyPanel()->plot(p)->isVisible()) << p;
+    const auto* note = window.pathStudyPanel()->findChild<QLabel*>();
+    ASSERT_NE(note, nullptr);
+    EXPECT_EQ(note->text(), "The contour has no Bézier or Hermite segment.");
+    EXPECT_TRUE(note->isVisible());
 }
 
 }  // namespace

@@ -43,6 +43,16 @@ TEST_F(SegmentTableModelTest, ShowsTheDocument) {
     EXPECT_FALSE(model.flags(cell(1, SegmentTableModel::FromX)) & Qt::ItemIsEditable);
 }
 
+TEST_F(SegmentTableModelTest, EveryColumnHeaderExplainsItsColumn) {
+    for (int c = 0; c < SegmentTableModel::ColumnCount; ++c) {
+        const QString tip = model.headerData(c, Qt::Horizontal, Qt::ToolTipRole).toString();
+        EXPECT_GE(tip.size(), 20) << c << ": \"" << tip.toStdString() << "\"";
+    }
+    const QString branch =
+        model.headerData(SegmentTableModel::Branch, Qt::Horizontal, Qt::ToolTipRole).toString();
+    EXPECT_TRUE(branch.contains("outer") && branch.contains("inner")) << branch.toStdString();
+}
+
 TEST_F(SegmentTableModelTest, EditUndoRedoOfARadius) {
     const double before = number(3, SegmentTableModel::Radius);
     ASSERT_TRUE(model.setData(cell(3, SegmentTableModel::Radius), 9.5, Qt::EditRole));

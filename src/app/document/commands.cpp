@@ -69,6 +69,10 @@ SetMotion::SetMotion(ProjectDocument* document, MotionSpec after, int gesture)
     : SetProjectValue(document, after, QCoreApplication::translate("cam::Commands", "Change speed"),
                       gesture) {}
 
+SetProjectName::SetProjectName(ProjectDocument* document, std::string after)
+    : SetProjectValue(document, std::move(after),
+                      QCoreApplication::translate("cam::Commands", "Rename project"), 0) {}
+
 SetSamplesPerTurn::SetSamplesPerTurn(ProjectDocument* document, std::optional<std::int64_t> after)
     : SetProjectValue(document, after,
                       QCoreApplication::translate("cam::Commands", "Change samples per turn"), 0) {}

@@ -149,6 +149,13 @@ public:
     SetMotion(ProjectDocument* document, MotionSpec after, int gesture = 0);
 };
 
+/// @brief Renames the project (its own name, which exports carry; not its file's).
+class SetProjectName : public SetProjectValue<std::string, &Project::name,
+                                              &ProjectDocument::applyName, MergeId::None> {
+public:
+    SetProjectName(ProjectDocument* document, std::string after);
+};
+
 /// @brief Sets the samples per turn (or goes back to the default).
 class SetSamplesPerTurn
     : public SetProjectValue<std::optional<std::int64_t>, &Project::samplesPerTurn,

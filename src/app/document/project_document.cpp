@@ -35,6 +35,7 @@ void ProjectDocument::reset(Project project, QString filePath, Diagnostics diagn
     m_undoStack.setClean();
     emit filePathChanged(m_filePath);
     emit contourReset();
+    emit nameChanged();
     emit motionChanged();
     emit machiningChanged();
     emit followerChanged();
@@ -90,6 +91,12 @@ void ProjectDocument::applyContour(const std::vector<SegmentSpec>& contour) {
 void ProjectDocument::applyMotion(const MotionSpec& motion) {
     m_project.motion = motion;
     emit motionChanged();
+    afterChange();
+}
+
+void ProjectDocument::applyName(const std::string& name) {
+    m_project.name = name;
+    emit nameChanged();
     afterChange();
 }
 

@@ -48,6 +48,7 @@ public:
     void applyMove(int from, int to);
     void applyContour(const std::vector<SegmentSpec>& contour);
     void applyMotion(const MotionSpec& motion);
+    void applyName(const std::string& name);
     void applySamplesPerTurn(const std::optional<std::int64_t>& samples);
     void applyMachining(const std::optional<MachiningSpec>& machining);
     void applyFollower(const std::optional<FollowerSpec>& follower);
@@ -76,6 +77,8 @@ signals:
     /// The whole contour changed (reset, fit windows): rebuild every view of it.
     void contourReset();
     void motionChanged();
+    /// The project's own name (not its file's).
+    void nameChanged();
     void machiningChanged();
     void followerChanged();
     void designChanged();

@@ -23,6 +23,7 @@ MotionPanel::MotionPanel(ProjectDocument* document, QWidget* parent)
     m_unit = new QComboBox(this);
     m_unit->setObjectName("speedUnitComboBox");
     m_unit->addItems({tr("rad/s"), tr("rpm"), tr("period [s]")});
+    m_unit->setToolTip(tr("The speed's unit; changing it keeps the physical speed"));
     m_samples = new QSpinBox(this);
     m_samples->setObjectName("samplesSpinBox");
     m_samples->setRange(static_cast<int>(kMinSamplesPerTurn), static_cast<int>(kMaxSamplesPerTurn));

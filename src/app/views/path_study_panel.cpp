@@ -65,11 +65,12 @@ void PathStudyPanel::fill() {
     m_stale = false;
     if (!m_result) return;
     const PathStudy& s = m_result->pathStudy;
+    // Without splines there is nothing to plot: the note alone says so, no empty axes.
+    for (QCustomPlot* p : m_plots) p->setVisible(!s.t.empty());
     if (s.t.empty()) {
         m_note->setText(tr("The contour has no Bézier or Hermite segment."));
         for (QCustomPlot* p : m_plots) {
             for (int g = 0; g < p->graphCount(); ++g) p->graph(g)->data()->clear();
-            p->replot(QCustomPlot::rpQueuedReplot);
         }
         return;
     }
