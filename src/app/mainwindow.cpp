@@ -48,6 +48,7 @@
 #include "views/plot_data.h"
 #include "views/state_readout.h"
 #include "widgets/icons.h"
+#include "widgets/number_format.h"
 
 namespace cam {
 
@@ -376,7 +377,7 @@ void MainWindow::setUpDocks() {
     connect(m_follower, &FollowerPanel::anglePicked, this, [this](double phi) {
         if (!m_shown) return;
         setCursorTime(phi / m_shown->omega);
-        statusBar()->showMessage(tr("Cursor at %1°").arg(QLocale().toString(radToDeg(phi), 'f', 2)),
+        statusBar()->showMessage(tr("Cursor at %1°").arg(formatFixed(radToDeg(phi), 2)),
                                  4000);
     });
     // The pressure-angle plot shares the kinematics plots' x axis: panning or zooming either
@@ -736,8 +737,8 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
     setCursorTime(m_cursorT);
     m_computeLabel->setText(
         tr("%1 samples computed in %2 ms")
-            .arg(QLocale().toString(static_cast<qlonglong>(result->sampleCount)),
-                 QLocale().toString(result->computeMs, 'f', 1)));
+            .arg(formatNumber(static_cast<double>(result->sampleCount), 15),
+                 formatFixed(result->computeMs, 1)));
     emit resultShown(result);
 }
 

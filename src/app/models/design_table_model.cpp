@@ -7,6 +7,7 @@
 #include "document/commands.h"
 #include "models/delegates.h"
 #include "models/segment_table_model.h"
+#include "widgets/number_format.h"
 
 namespace cam {
 namespace {
@@ -166,7 +167,7 @@ QVariant DesignTableModel::data(const QModelIndex& index, int role) const {
     if (role != Qt::DisplayRole && role != Qt::EditRole) return {};
     const bool edit = role == Qt::EditRole;
     const auto number = [&](double v) -> QVariant {
-        return edit ? QVariant(v) : QVariant(QLocale().toString(v, 'g', 10));
+        return edit ? QVariant(v) : QVariant(formatNumber(v, 10));
     };
     const auto coefficient = [&](double LawCoefficients::*field) -> QVariant {
         if (s.law == MotionLawType::Dwell) return {};
@@ -178,7 +179,7 @@ QVariant DesignTableModel::data(const QModelIndex& index, int role) const {
         } else {
             return {};
         }
-        return edit ? QVariant(value) : QVariant(QLocale().toString(value, 'f', 4));
+        return edit ? QVariant(value) : QVariant(formatFixed(value, 4));
     };
     switch (c) {
         case Law: {

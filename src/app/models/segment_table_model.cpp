@@ -7,6 +7,7 @@
 #include "common/angles.h"
 #include "contour/change_type.h"
 #include "project/validate.h"
+#include "widgets/number_format.h"
 
 namespace cam {
 namespace {
@@ -104,8 +105,8 @@ QVariant SegmentTableModel::data(const QModelIndex& index, int role) const {
             QStringList lines{tr("Drag the handles in the contour view to shape the curve.")};
             for (int i = 0; i < 4; ++i) {
                 lines << QStringLiteral("%1 = (%2, %3)")
-                             .arg(names[i], QLocale().toString(points[i].x(), 'g', 8),
-                                  QLocale().toString(points[i].y(), 'g', 8));
+                             .arg(names[i], formatNumber(points[i].x(), 8),
+                                  formatNumber(points[i].y(), 8));
             }
             return lines.join('\n');
         }
@@ -123,7 +124,7 @@ QVariant SegmentTableModel::data(const QModelIndex& index, int role) const {
     if (!isApplicable(index.row(), c)) return {};
     const bool edit = role == Qt::EditRole;
     auto number = [&](double v) -> QVariant {
-        return edit ? QVariant(v) : QVariant(QLocale().toString(v, 'g', 10));
+        return edit ? QVariant(v) : QVariant(formatNumber(v, 10));
     };
     const Arc* arc = s.as<Arc>();
     const Line* line = s.as<Line>();

@@ -13,6 +13,7 @@
 #include "document/commands.h"
 #include "models/delegates.h"
 #include "widgets/number_spin_box.h"
+#include "widgets/number_format.h"
 
 namespace cam {
 namespace {
@@ -28,9 +29,9 @@ NumberSpinBox* spinBox(QWidget* parent, const char* name, const QString& suffix,
     return s;
 }
 
-QString degrees(double rad) { return QLocale().toString(radToDeg(rad), 'f', 2) + "°"; }
+QString degrees(double rad) { return formatFixed(radToDeg(rad), 2) + "°"; }
 QString millimetres(double mm) {
-    return std::isfinite(mm) ? QLocale().toString(mm, 'g', 6) + " mm" : QStringLiteral("∞");
+    return std::isfinite(mm) ? formatNumber(mm, 6) + " mm" : QStringLiteral("∞");
 }
 
 }  // namespace
@@ -296,9 +297,9 @@ void FollowerPanel::setResult(const ComputeResultPtr& result) {
     }
     for (const NonContact& c : a.undercut) {
         add(tr("The follower cannot reach the profile at %1: it jumps from (%2, %3) to (%4, %5)")
-                .arg(degrees(c.phi), QLocale().toString(c.from.x(), 'f', 3),
-                     QLocale().toString(c.from.y(), 'f', 3), QLocale().toString(c.to.x(), 'f', 3),
-                     QLocale().toString(c.to.y(), 'f', 3)),
+                .arg(degrees(c.phi), formatFixed(c.from.x(), 3),
+                     formatFixed(c.from.y(), 3), formatFixed(c.to.x(), 3),
+                     formatFixed(c.to.y(), 3)),
             c.phi, true);
     }
     const bool flat = result->follower->spec().type == FollowerType::Flat;

@@ -4,6 +4,7 @@
 #include <QShowEvent>
 
 #include "common/angles.h"
+#include "widgets/number_format.h"
 
 namespace cam {
 
@@ -54,16 +55,15 @@ void JointsPanel::fill() {
     const auto& joints = m_result->analysis.joints;
     const bool first = rowCount() == 0;
     setRowCount(static_cast<int>(joints.size()));
-    const QLocale locale;
     for (int row = 0; row < rowCount(); ++row) {
         const JointAnalysis& j = joints[static_cast<std::size_t>(row)];
         const QString cells[] = {QStringLiteral("%1 | %2").arg(j.left).arg(j.right),
-                                 locale.toString(radToDeg(j.phi), 'f', 4),
+                                 formatFixed(radToDeg(j.phi), 4),
                                  continuityName(j.continuity),
                                  continuityName(j.geometric),
-                                 locale.toString(j.tangentBreakDeg, 'g', 4),
-                                 locale.toString(j.jumpAR, 'g', 5),
-                                 locale.toString(j.relativeD2, 'g', 3)};
+                                 formatNumber(j.tangentBreakDeg, 4),
+                                 formatNumber(j.jumpAR, 5),
+                                 formatNumber(j.relativeD2, 3)};
         for (int c = 0; c < 7; ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
             item->setTextAlignment(c < 4 ? Qt::Alignment(Qt::AlignCenter)

@@ -19,6 +19,7 @@
 #include "models/design_table_model.h"
 #include "views/plot_data.h"
 #include "widgets/number_spin_box.h"
+#include "widgets/number_format.h"
 
 namespace cam {
 namespace {
@@ -34,7 +35,7 @@ NumberSpinBox* lengthBox(QWidget* parent, const char* name, const QString& tip) 
     return s;
 }
 
-QString number(double v) { return QLocale().toString(v, 'g', 3); }
+QString number(double v) { return formatNumber(v, 3); }
 
 /// The law: dashed; the follower riding the contour: solid (as on the kinematics plots).
 const QPen kLawPen(QColor(0, 130, 60), 1.6, Qt::DashLine);

@@ -5,6 +5,7 @@
 #include <QLocale>
 
 #include "common/angles.h"
+#include "widgets/number_format.h"
 
 namespace cam {
 
@@ -28,9 +29,8 @@ StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
 }
 
 void StateReadout::setState(const KinematicState& s) {
-    const QLocale locale;
     auto num = [&](double v, const QString& unit) {
-        return locale.toString(v, 'g', 8) + QStringLiteral(" ") + unit;
+        return formatNumber(v, 8) + QStringLiteral(" ") + unit;
     };
     const PolarMotion& m = s.motion;
     // Where on the cam, 0 … 360°, whichever way it turns (s.phi = ω·t is negative clockwise).

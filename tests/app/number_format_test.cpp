@@ -1,0 +1,61 @@
+// How the window writes numbers: the user's decimal separator, no thousands separators, and
+// round-off of an exact zero as 0 — in the policy itself and where a user reads it.
+
+#include <gtest/gtest.h>
+
+#include <QLocale>
+
+#include "app_test_support.h"
+#include "mainwindow.h"
+#include "models/segment_table_model.h"
+#include "widgets/number_format.h"
+
+namespace cam {
+namespace {
+
+/// The default locale for one test, restored after it.
+struct DefaultLocale {
+    explicit DefaultLocale(const QLocale& locale) { QLocale::setDefault(locale); }
+    ~DefaultLocale() { QLocale::setDefault(QLocale::c()); }
+};
+
+TEST(NumberFormat, RoundOffIsZeroAndNoThousandsSeparators) {
+    const DefaultLocale english(QLocale(QLocale::English, QLocale::UnitedStates));
+    EXPECT_EQ(formatNumber(1.279561153e-15, 10), "0");
+    EXPECT_EQ(formatNumber(-3.151937812e-15, 10), "0");
+    EXPECT_EQ(formatNumber(-0.0, 10), "0");
+    EXPECT_EQ(formatNumber(-40298.521, 8), "-40298.521");  // en_US would group: -40,298.521
+    EXPECT_EQ(formatNumber(215.60000000000002, 10), "215.6");
+    EXPECT_EQ(formatNumber(2e-9, 3), "2E-09");  // above round-off: a value, shown as one
+    EXPECT_EQ(formatFixed(-0.0004, 3), "0.000");
+    EXPECT_EQ(formatFixed(-0.0006, 3), "-0.001");
+    EXPECT_EQ(formatFixed(12345.678, 2), "12345.68");
+}
+
+TEST(NumberFormat, GermanHasADecimalCommaAndStillNoGroups) {
+    const DefaultLocale german(QLocale(QLocale::German, QLocale::Germany));
+    EXPECT_EQ(formatNumber(-40298.521, 8), "-40298,521");  // de_DE would group: -40.298,521
+    EXPECT_EQ(formatNumber(1.279561153e-15, 10), "0");
+    EXPECT_EQ(formatFixed(-0.0004, 3), "0,000");
+    EXPECT_EQ(formatFixed(1234.5, 1), "1234,5");
+}
+
+TEST(NumberFormat, TheTableShowsRoundOffAsZeroButKeepsTheExactValue) {
+    const DefaultLocale english(QLocale(QLocale::English, QLocale::UnitedStates));
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json")))
+                    .isEmpty());
+    const SegmentTableModel* model = window.tableModel();
+    // Lobe 3's centre is on the y axis, lobe 6's on the x axis, as computed by the seed.
+    const QModelIndex x3 = model->index(3, SegmentTableModel::CenterX);
+    const QModelIndex y6 = model->index(6, SegmentTableModel::CenterY);
+    EXPECT_EQ(x3.data(Qt::DisplayRole).toString(), "0");
+    EXPECT_EQ(y6.data(Qt::DisplayRole).toString(), "0");
+    EXPECT_EQ(x3.data(Qt::EditRole).toDouble(), window.document()->project().contour[3].as<Arc>()->center.x());
+    EXPECT_NE(x3.data(Qt::EditRole).toDouble(), 0.0);  // only the display rounds
+    EXPECT_EQ(model->index(6, SegmentTableModel::CenterX).data(Qt::DisplayRole).toString(),
+              "-25.73752542");
+}
+
+}  // namespace
+}  // namespace cam
