@@ -4,16 +4,16 @@
 //   camwright --export-plot NAME [--format png|pdf|svg] --out FILE [--size WxH] PROJECT
 
 #include <QApplication>
-#include <QIcon>
 #include <QCommandLineParser>
+#include <QIcon>
 #include <QLocale>
 #include <QMessageBox>
 #include <QTimer>
 #include <cstdio>
 #include <cstring>
 
-#include "mainwindow.h"
 #include "files/autosave.h"
+#include "mainwindow.h"
 #include "screenshot.h"
 #include "translations.h"
 
@@ -67,9 +67,9 @@ int main(int argc, char** argv) {
     QApplication::setApplicationVersion(CAMWRIGHT_VERSION);
     // The desktop entry (packaging/linux) and the icon share this id.
     QGuiApplication::setDesktopFileName(QStringLiteral("org.camwright.Camwright"));
-    QApplication::setWindowIcon(QIcon::fromTheme(
-        QStringLiteral("org.camwright.Camwright"),
-        QIcon(QStringLiteral(":/icons/org.camwright.Camwright.svg"))));
+    QApplication::setWindowIcon(
+        QIcon::fromTheme(QStringLiteral("org.camwright.Camwright"),
+                         QIcon(QStringLiteral(":/icons/org.camwright.Camwright.svg"))));
 
     const cam::Translations translations{QLocale()};
 

@@ -1,11 +1,13 @@
 #include "mainwindow.h"
 
+#include <qcustomplot.h>
+#include <Eigen/Core>
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDir>
-#include <QFile>
 #include <QDockWidget>
 #include <QEventLoop>
+#include <QFile>
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QLabel>
@@ -19,9 +21,7 @@
 #include <QSplitter>
 #include <QTableView>
 #include <QTimer>
-#include <Eigen/Core>
 #include <cmath>
-#include <qcustomplot.h>
 
 #include "common/angles.h"
 #include "dialogs/contour_dialogs.h"
@@ -32,8 +32,8 @@
 #include "engine/synthesis_runner.h"
 #include "files/autosave.h"
 #include "files/project_files.h"
-#include "io/project_json.h"
 #include "fillet/fillet.h"
+#include "io/project_json.h"
 #include "models/delegates.h"
 #include "models/segment_table_model.h"
 #include "ui_mainwindow.h"
@@ -283,8 +283,9 @@ void MainWindow::finishSynthesis(const std::shared_ptr<const Result<Synthesis>>&
     } else if (from.design != now.design || from.follower != now.follower ||
                from.motion != now.motion) {
         // Made for a design that is no longer the project's: never applied.
-        problem = tr("The design, follower or speed changed while synthesizing: press "
-                     "Synthesize again.");
+        problem =
+            tr("The design, follower or speed changed while synthesizing: press "
+               "Synthesize again.");
     } else if (!result->ok()) {
         problem = tr("The contour cannot be made from this design:\n%1")
                       .arg(diagnosticsText(result->errors()));
@@ -310,8 +311,8 @@ void MainWindow::finishSynthesis(const std::shared_ptr<const Result<Synthesis>>&
         tr("Synthesized %n segment(s) within %1 mm in %2 ms", nullptr,
            static_cast<int>(made.report.segments))
             .arg(QLocale().toString(made.report.maxDeviationMm, 'g', 3),
-                 QLocale().toString(static_cast<double>(m_synthesisClock.nsecsElapsed()) / 1e6,
-                                    'f', 0)),
+                 QLocale().toString(static_cast<double>(m_synthesisClock.nsecsElapsed()) / 1e6, 'f',
+                                    0)),
         8000);
     emit synthesisFinished({});
 }
@@ -377,8 +378,7 @@ void MainWindow::setUpDocks() {
     connect(m_follower, &FollowerPanel::anglePicked, this, [this](double phi) {
         if (!m_shown) return;
         setCursorTime(phi / m_shown->omega);
-        statusBar()->showMessage(tr("Cursor at %1°").arg(formatFixed(radToDeg(phi), 2)),
-                                 4000);
+        statusBar()->showMessage(tr("Cursor at %1°").arg(formatFixed(radToDeg(phi), 2)), 4000);
     });
     // The pressure-angle plot shares the kinematics plots' x axis: panning or zooming either
     // moves the other.
@@ -505,9 +505,8 @@ void MainWindow::setUpActions() {
         m_contour->resetZoom();
         m_plots->resetZoom();
     });
-    connect(m_ui->actionAbout, &QAction::triggered, this, [this] {
-        QMessageBox::about(this, tr("About Camwright"), aboutText());
-    });
+    connect(m_ui->actionAbout, &QAction::triggered, this,
+            [this] { QMessageBox::about(this, tr("About Camwright"), aboutText()); });
     auto* shortcuts = new QAction(tr("&Keyboard Shortcuts"), this);
     shortcuts->setObjectName("actionKeyboardShortcuts");
     shortcuts->setToolTip(tr("Every shortcut of the window"));
@@ -577,10 +576,10 @@ void MainWindow::setUpIcons() {
         if (auto* action = findChild<QAction*>(object)) set(action, icon);
     }
     const std::pair<QDockWidget*, const char*> docks[] = {
-        {m_ui->segmentsDock, "camwright-segments"}, {m_ui->jointsDock, "camwright-joints"},
-        {m_ui->motionDock, "camwright-motion"},     {m_ui->readoutDock, "camwright-readout"},
+        {m_ui->segmentsDock, "camwright-segments"},   {m_ui->jointsDock, "camwright-joints"},
+        {m_ui->motionDock, "camwright-motion"},       {m_ui->readoutDock, "camwright-readout"},
         {m_ui->machiningDock, "camwright-machining"}, {m_ui->pathStudyDock, "camwright-path-study"},
-        {m_followerDock, "camwright-follower"},     {m_designDock, "camwright-motion-design"},
+        {m_followerDock, "camwright-follower"},       {m_designDock, "camwright-motion-design"},
     };
     for (const auto& [dock, icon] : docks) set(dock->toggleViewAction(), icon);
     connect(m_playAction, &QAction::toggled, this, [this](bool on) {
@@ -603,15 +602,14 @@ bool MainWindow::offerRecovery() {
     const std::vector<Autosave::Orphan> orphans = m_autosave->orphans();
     if (orphans.empty()) return false;
     const Autosave::Orphan& newest = orphans.front();
-    const QString name = newest.original.isEmpty()
-                             ? tr("an untitled project")
-                             : QDir::toNativeSeparators(newest.original);
-    QMessageBox box(QMessageBox::Question, tr("Recover Unsaved Changes"),
-                    tr("Camwright did not close properly. Unsaved changes to %1, autosaved %2, "
-                       "can be restored.")
-                        .arg(name, QLocale().toString(newest.saved.toLocalTime(),
-                                                      QLocale::ShortFormat)),
-                    QMessageBox::NoButton, this);
+    const QString name = newest.original.isEmpty() ? tr("an untitled project")
+                                                   : QDir::toNativeSeparators(newest.original);
+    QMessageBox box(
+        QMessageBox::Question, tr("Recover Unsaved Changes"),
+        tr("Camwright did not close properly. Unsaved changes to %1, autosaved %2, "
+           "can be restored.")
+            .arg(name, QLocale().toString(newest.saved.toLocalTime(), QLocale::ShortFormat)),
+        QMessageBox::NoButton, this);
     box.setObjectName("recoveryBox");
     QPushButton* restore = box.addButton(tr("Restore"), QMessageBox::AcceptRole);
     QPushButton* discard = box.addButton(tr("Discard"), QMessageBox::DestructiveRole);
@@ -644,11 +642,11 @@ QString MainWindow::restoreRecovery(const QString& recoveryCopy) {
         m_document->reset(std::move(loaded).value(), o.original);
         m_document->markUnsaved();
         Autosave::discard(o);  // this session's own copy takes over
-        statusBar()->showMessage(tr("Restored the unsaved changes of %1: save them to keep them.")
-                                     .arg(o.original.isEmpty()
-                                              ? tr("an untitled project")
-                                              : QDir::toNativeSeparators(o.original)),
-                                 10000);
+        statusBar()->showMessage(
+            tr("Restored the unsaved changes of %1: save them to keep them.")
+                .arg(o.original.isEmpty() ? tr("an untitled project")
+                                          : QDir::toNativeSeparators(o.original)),
+            10000);
         return {};
     }
     return tr("%1 is no recovery copy of a session that ended.")
@@ -735,10 +733,9 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
     m_shown = result;
     m_computeLabel->setStyleSheet({});
     setCursorTime(m_cursorT);
-    m_computeLabel->setText(
-        tr("%1 samples computed in %2 ms")
-            .arg(formatNumber(static_cast<double>(result->sampleCount), 15),
-                 formatFixed(result->computeMs, 1)));
+    m_computeLabel->setText(tr("%1 samples computed in %2 ms")
+                                .arg(formatNumber(static_cast<double>(result->sampleCount), 15),
+                                     formatFixed(result->computeMs, 1)));
     emit resultShown(result);
 }
 

@@ -251,9 +251,10 @@ const CommandHelp* findCommand(const std::string& name) {
 }
 
 std::string overviewHelp() {
-    std::string out = "usage: camwright-cli COMMAND PROJECT [options]\n"
-                      "       camwright-cli COMMAND --help    (the command's options)\n\n"
-                      "commands:\n";
+    std::string out =
+        "usage: camwright-cli COMMAND PROJECT [options]\n"
+        "       camwright-cli COMMAND --help    (the command's options)\n\n"
+        "commands:\n";
     for (const CommandHelp& c : commandTable()) {
         out += "  " + c.name + std::string(12 - c.name.size(), ' ') + c.summary + "\n";
     }

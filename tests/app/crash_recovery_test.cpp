@@ -117,8 +117,8 @@ protected:
         }
         ASSERT_TRUE(m_home.isValid());
         m_project = m_home.filePath("cam.cam.json");
-        ASSERT_TRUE(QFile::copy(QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json")),
-                                m_project));
+        ASSERT_TRUE(QFile::copy(
+            QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json")), m_project));
         QFile::setPermissions(m_project, QFile::ReadOwner | QFile::WriteOwner);
         m_recovery = m_home.filePath("data/Camwright/Camwright/recovery");
     }
@@ -154,16 +154,21 @@ protected:
     }
 
     /// What the application printed (all its runs).
-    [[nodiscard]] std::string appLog() const { return readAll(m_home.filePath("app.log")).toStdString(); }
+    [[nodiscard]] std::string appLog() const {
+        return readAll(m_home.filePath("app.log")).toStdString();
+    }
 
     bool waitForWindow(const QString& title, int timeoutMs = 60000) {
         const bool found = waitFor(
-            [&] { return !xdotool({"search", "--name", title}).isEmpty(); }, timeoutMs);
+            [&] {
+                return !xdotool({"search", "--name", title}).isEmpty();
+            },
+            timeoutMs);
         if (!found) {
             ADD_FAILURE() << "no window \"" << title.toStdString() << "\" on "
-                          << m_display.name().toStdString() << "; windows: "
-                          << xdotool({"search", "--name", "."}).toStdString() << "; "
-                          << m_display.state();
+                          << m_display.name().toStdString()
+                          << "; windows: " << xdotool({"search", "--name", "."}).toStdString()
+                          << "; " << m_display.state();
         }
         return found;
     }
@@ -216,16 +221,18 @@ TEST_F(CrashRecovery, AKilledSessionsEditComesBackOnTheNextStart) {
         // machine it may not yet when it first appears: then press again).
         bool restored = false;
         for (int attempt = 0; attempt < 10 && !restored; ++attempt) {
-            const QString box = xdotool({"search", "--name", "Recover Unsaved Changes"})
-                                    .split('\n')
-                                    .front();
+            const QString box =
+                xdotool({"search", "--name", "Recover Unsaved Changes"}).split('\n').front();
             if (!box.isEmpty()) {
                 QThread::msleep(300);
                 xdotool({"mousemove", "--window", box, "20", "20"});
                 xdotool({"key", "Return"});
             }
             restored = waitFor(
-                [&] { return !xdotool({"search", "--name", "cam.cam.json"}).isEmpty(); }, 2000);
+                [&] {
+                    return !xdotool({"search", "--name", "cam.cam.json"}).isEmpty();
+                },
+                2000);
         }
         ASSERT_TRUE(restored) << appLog();
         QThread::msleep(1000);

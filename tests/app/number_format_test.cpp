@@ -43,15 +43,17 @@ TEST(NumberFormat, GermanHasADecimalCommaAndStillNoGroups) {
 TEST(NumberFormat, TheTableShowsRoundOffAsZeroButKeepsTheExactValue) {
     const DefaultLocale english(QLocale(QLocale::English, QLocale::UnitedStates));
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json")))
-                    .isEmpty());
+    ASSERT_TRUE(
+        window.loadFile(QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json")))
+            .isEmpty());
     const SegmentTableModel* model = window.tableModel();
     // Lobe 3's centre is on the y axis, lobe 6's on the x axis, as computed by the seed.
     const QModelIndex x3 = model->index(3, SegmentTableModel::CenterX);
     const QModelIndex y6 = model->index(6, SegmentTableModel::CenterY);
     EXPECT_EQ(x3.data(Qt::DisplayRole).toString(), "0");
     EXPECT_EQ(y6.data(Qt::DisplayRole).toString(), "0");
-    EXPECT_EQ(x3.data(Qt::EditRole).toDouble(), window.document()->project().contour[3].as<Arc>()->center.x());
+    EXPECT_EQ(x3.data(Qt::EditRole).toDouble(),
+              window.document()->project().contour[3].as<Arc>()->center.x());
     EXPECT_NE(x3.data(Qt::EditRole).toDouble(), 0.0);  // only the display rounds
     EXPECT_EQ(model->index(6, SegmentTableModel::CenterX).data(Qt::DisplayRole).toString(),
               "-25.73752542");

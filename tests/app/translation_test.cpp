@@ -186,10 +186,12 @@ TEST(GermanWindow, QtsOwnButtonsAndKeyNamesAreGermanToo) {
     // As main() installs them: Qt's translations (qt6-translations-l10n) and ours.
     const Translations german(QLocale(QLocale::German, QLocale::Germany));
     ASSERT_TRUE(german.appTranslated());
-    ASSERT_TRUE(german.qtTranslated()) << "Qt's German is missing: apt install qt6-translations-l10n";
+    ASSERT_TRUE(german.qtTranslated())
+        << "Qt's German is missing: apt install qt6-translations-l10n";
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json")))
-                    .isEmpty());
+    ASSERT_TRUE(
+        window.loadFile(QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json")))
+            .isEmpty());
     window.document()->undoStack()->push(new SetMotion(window.document(), {SpeedUnit::Rpm, 90.0}));
     // The unsaved-changes prompt of File → New: its buttons are Qt's.
     QStringList buttons;

@@ -21,8 +21,9 @@ const std::vector<std::pair<std::string, std::vector<std::string>>> kSpecCommand
     {"sample", {"--samples", "--out"}},
     {"analyze", {}},
     {"timing", {"--path", "--method", "--accel", "--vmax", "--feed", "--step", "--detail"}},
-    {"export", {"--format", "--out", "--plot", "--tolerance", "--points", "--dialect",
-                "--tool-radius", "--depth"}},
+    {"export",
+     {"--format", "--out", "--plot", "--tolerance", "--points", "--dialect", "--tool-radius",
+      "--depth"}},
     {"synthesize", {"--out", "--tolerance", "--output"}},
     {"fillet", {"--joint", "--radius", "--speed", "--accel", "--vae", "--out"}},
 };
@@ -65,7 +66,8 @@ TEST(CliHelp, EveryCommandHasAPageNamingEveryOptionItAccepts) {
         // lack its value or PROJECT, but it is never an unknown option.
         for (const std::string& o : listed) {
             const auto tried = test::runCli({command, o});
-            EXPECT_EQ(tried.err.find("unknown option"), std::string::npos) << o << ": " << tried.err;
+            EXPECT_EQ(tried.err.find("unknown option"), std::string::npos)
+                << o << ": " << tried.err;
         }
         // A page for a terminal: no line over 80 columns.
         std::istringstream in(r.out);
@@ -116,17 +118,18 @@ TEST(CliHelp, ATypoIsAnsweredWithTheNearestName) {
         EXPECT_EQ(r.out, "");
     }
     // Nothing near: no guess.
-    for (const std::vector<std::string>& args :
-         {std::vector<std::string>{"frobnicate", example}, {"x", example},
-          {"state", example, "--time", "1"}, {"export", example, "--p", "1"}}) {
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"frobnicate", example},
+                                                 {"x", example},
+                                                 {"state", example, "--time", "1"},
+                                                 {"export", example, "--p", "1"}}) {
         const auto r = test::runCli(args);
         EXPECT_EQ(r.exitCode, 1);
         EXPECT_EQ(r.err.find("did you mean"), std::string::npos) << r.err;
     }
     // The hint after a usage error points to the command's own page.
-    EXPECT_NE(test::runCli({"export", example}).err.find(
-                  "(run 'camwright-cli export --help' for usage)"),
-              std::string::npos);
+    EXPECT_NE(
+        test::runCli({"export", example}).err.find("(run 'camwright-cli export --help' for usage)"),
+        std::string::npos);
 }
 
 TEST(CliHelp, TheManPageNamesEveryCommandAndOption) {

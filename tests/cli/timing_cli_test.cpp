@@ -103,7 +103,8 @@ TEST(CliTiming, TheMethodIsOptimalUnlessAnotherIsAskedFor) {
     const auto byDefault = timing({"timing", project});
     EXPECT_EQ(byDefault.at("method"), "optimal");
     EXPECT_EQ(byDefault, timing({"timing", project, "--method", "optimal"}));
-    EXPECT_NE(byDefault.at("time_s"), timing({"timing", project, "--method", "exact-stop"}).at("time_s"));
+    EXPECT_NE(byDefault.at("time_s"),
+              timing({"timing", project, "--method", "exact-stop"}).at("time_s"));
 }
 
 TEST(CliTiming, ProjectMachiningSectionAndOverrides) {

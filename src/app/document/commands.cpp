@@ -102,7 +102,9 @@ SynthesizeContour::SynthesizeContour(ProjectDocument* document, std::vector<Segm
     if (m_designAfter) m_designAfter->tolerance = tolerance;
 }
 
-void SynthesizeContour::undo() { m_document->applyContourAndDesign(m_contourBefore, m_designBefore); }
+void SynthesizeContour::undo() {
+    m_document->applyContourAndDesign(m_contourBefore, m_designBefore);
+}
 void SynthesizeContour::redo() { m_document->applyContourAndDesign(m_contourAfter, m_designAfter); }
 
 }  // namespace cam

@@ -20,8 +20,8 @@
 #include "document/project_document.h"
 #include "io/atomic_file.h"
 #include "io/project_json.h"
-#include "widgets/icons.h"
 #include "project/validate.h"
+#include "widgets/icons.h"
 
 namespace cam {
 namespace {
@@ -282,15 +282,15 @@ void ProjectFiles::rebuildRecentMenu() {
     m_recentMenu->clear();
     const QStringList files = QSettings().value("files/recent").toStringList();
     for (const QString& f : files) {
-        QAction* entry =
-            m_recentMenu->addAction(QDir::toNativeSeparators(f), this, [this, f] { openRecent(f); });
+        QAction* entry = m_recentMenu->addAction(QDir::toNativeSeparators(f), this,
+                                                 [this, f] { openRecent(f); });
         entry->setToolTip(QDir::toNativeSeparators(f));
     }
     if (!files.isEmpty()) {
         m_recentMenu->addSeparator();
-        QAction* clear = m_recentMenu->addAction(actionIcon("edit-clear-history"),
-                                                 tr("&Clear Menu"), this,
-                                                 &ProjectFiles::clearRecentFiles);
+        QAction* clear =
+            m_recentMenu->addAction(actionIcon("edit-clear-history"), tr("&Clear Menu"), this,
+                                    &ProjectFiles::clearRecentFiles);
         clear->setObjectName("actionClearRecent");
         clear->setToolTip(tr("Forget the recent files (the files stay where they are)"));
     }

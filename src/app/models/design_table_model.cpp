@@ -23,13 +23,11 @@ bool isPoly5Column(int c) {
 
 /// The column a diagnostic's field names ("to_deg" → ToDeg); -1 for the whole row.
 int columnOfField(const QString& field) {
-    static const QHash<QString, int> columns{{"law", DesignTableModel::Law},
-                                             {"to_deg", DesignTableModel::ToDeg},
-                                             {"lift", DesignTableModel::Lift},
-                                             {"v0", DesignTableModel::V0},
-                                             {"a0", DesignTableModel::A0},
-                                             {"v1", DesignTableModel::V1},
-                                             {"a1", DesignTableModel::A1}};
+    static const QHash<QString, int> columns{
+        {"law", DesignTableModel::Law},   {"to_deg", DesignTableModel::ToDeg},
+        {"lift", DesignTableModel::Lift}, {"v0", DesignTableModel::V0},
+        {"a0", DesignTableModel::A0},     {"v1", DesignTableModel::V1},
+        {"a1", DesignTableModel::A1}};
     return columns.value(field, -1);
 }
 
@@ -59,8 +57,9 @@ DesignTableModel::DesignTableModel(ProjectDocument* document, QObject* parent)
 }
 
 QStringList DesignTableModel::lawNames() {
-    return {tr("Dwell"),         tr("Harmonic"), tr("Cycloidal"), tr("Modified trapezoid"),
-            tr("Modified sine"), tr("Poly 3-4-5"), tr("Poly 4-5-6-7"), tr("Poly 5 (boundary values)")};
+    return {
+        tr("Dwell"),         tr("Harmonic"),   tr("Cycloidal"),    tr("Modified trapezoid"),
+        tr("Modified sine"), tr("Poly 3-4-5"), tr("Poly 4-5-6-7"), tr("Poly 5 (boundary values)")};
 }
 
 bool DesignTableModel::swinging() const {
@@ -284,7 +283,7 @@ bool DesignTableModel::setData(const QModelIndex& index, const QVariant& value, 
         const double number = v.toDouble(&ok);
         // A cell takes a finite number only; the editor never offers another.
         if (!ok || !std::isfinite(number)) return false;
-        double* field = c == ToDeg ? &s.toDeg
+        double* field = c == ToDeg  ? &s.toDeg
                         : c == Lift ? &s.lift
                         : c == V0   ? &s.v0
                         : c == A0   ? &s.a0

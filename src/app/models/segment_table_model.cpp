@@ -167,12 +167,14 @@ QVariant SegmentTableModel::headerData(int section, Qt::Orientation orientation,
     if (role == Qt::ToolTipRole) {
         switch (section) {
             case Type:
-                return tr("What the segment is: an arc of a circle, a line, or a cubic spline "
-                          "piece (Bézier or Hermite)");
+                return tr(
+                    "What the segment is: an arc of a circle, a line, or a cubic spline "
+                    "piece (Bézier or Hermite)");
             case Branch:
-                return tr("Which of the two points where the follower's ray meets the arc's "
-                          "circle the contour takes: outer, the one farther from the rotation "
-                          "centre (a lobe); inner, the nearer one (a notch, a concave flank)");
+                return tr(
+                    "Which of the two points where the follower's ray meets the arc's "
+                    "circle the contour takes: outer, the one farther from the rotation "
+                    "centre (a lobe); inner, the nearer one (a notch, a concave flank)");
             case CenterX:
             case CenterY:
                 return tr("Centre of the arc's circle, mm");

@@ -12,8 +12,8 @@
 #include "common/angles.h"
 #include "document/commands.h"
 #include "models/delegates.h"
-#include "widgets/number_spin_box.h"
 #include "widgets/number_format.h"
+#include "widgets/number_spin_box.h"
 
 namespace cam {
 namespace {
@@ -297,9 +297,8 @@ void FollowerPanel::setResult(const ComputeResultPtr& result) {
     }
     for (const NonContact& c : a.undercut) {
         add(tr("The follower cannot reach the profile at %1: it jumps from (%2, %3) to (%4, %5)")
-                .arg(degrees(c.phi), formatFixed(c.from.x(), 3),
-                     formatFixed(c.from.y(), 3), formatFixed(c.to.x(), 3),
-                     formatFixed(c.to.y(), 3)),
+                .arg(degrees(c.phi), formatFixed(c.from.x(), 3), formatFixed(c.from.y(), 3),
+                     formatFixed(c.to.x(), 3), formatFixed(c.to.y(), 3)),
             c.phi, true);
     }
     const bool flat = result->follower->spec().type == FollowerType::Flat;

@@ -18,8 +18,8 @@
 #include "models/delegates.h"
 #include "models/design_table_model.h"
 #include "views/plot_data.h"
-#include "widgets/number_spin_box.h"
 #include "widgets/number_format.h"
+#include "widgets/number_spin_box.h"
 
 namespace cam {
 namespace {
@@ -68,8 +68,9 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
     m_tolerance->setSingleStep(0.001);
     m_strict = new QCheckBox(tr("Refuse pressure angles beyond the limit"), this);
     m_strict->setObjectName("strictPressureAngleCheckBox");
-    m_strict->setToolTip(tr("Synthesize refuses a design whose pressure angle exceeds the "
-                            "follower's limit (otherwise it is only reported)"));
+    m_strict->setToolTip(
+        tr("Synthesize refuses a design whose pressure angle exceeds the "
+           "follower's limit (otherwise it is only reported)"));
     form->addRow(tr("Base radius"), m_baseRadius);
     form->addRow(tr("Tolerance"), m_tolerance);
     form->addRow(QString(), m_strict);
@@ -191,9 +192,10 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
         });
         connect(box, &QDoubleSpinBox::editingFinished, this, [this] { m_gesture = 0; });
     };
-    number(m_baseRadius, [](DesignSpec& d, double v) { d.baseRadius = v; },
-           tr("Change base radius"));
-    number(m_tolerance, [](DesignSpec& d, double v) { d.tolerance = v; }, tr("Change tolerance"));
+    number(
+        m_baseRadius, [](DesignSpec& d, double v) { d.baseRadius = v; }, tr("Change base radius"));
+    number(
+        m_tolerance, [](DesignSpec& d, double v) { d.tolerance = v; }, tr("Change tolerance"));
     connect(m_strict, &QCheckBox::toggled, this, [this](bool on) {
         if (m_refreshing || !m_document->project().design) return;
         editDesign([on](DesignSpec& d) { d.strictPressureAngle = on; },
@@ -246,8 +248,7 @@ void MotionDesignPanel::splitSegment(int row) {
         [row](DesignSpec& d) {
             const auto k = static_cast<std::size_t>(row);
             const double from = k == 0 ? 0.0 : d.segments[k - 1].toDeg;
-            DesignSegmentSpec dwell{MotionLawType::Dwell, d.segments[k].toDeg,
-                                    d.segments[k].lift};
+            DesignSegmentSpec dwell{MotionLawType::Dwell, d.segments[k].toDeg, d.segments[k].lift};
             d.segments[k].toDeg = (from + d.segments[k].toDeg) / 2.0;
             d.segments.insert(d.segments.begin() + row + 1, dwell);
         },
@@ -293,8 +294,9 @@ void MotionDesignPanel::refresh() {
     if (!design) {
         m_plotArea->hide();
         m_notes->clear();
-        m_report->setText(tr("This project has no motion design. New Design starts one: lay out "
-                             "the follower's motion, then Synthesize makes the contour from it."));
+        m_report->setText(
+            tr("This project has no motion design. New Design starts one: lay out "
+               "the follower's motion, then Synthesize makes the contour from it."));
     }
 }
 
@@ -406,8 +408,9 @@ void MotionDesignPanel::setResult(const ComputeResultPtr& result) {
     m_notes->setText(lines.join('\n'));
     m_notes->setStyleSheet(problem ? "color: #b00020;" : "");
     if (m_reportText.isEmpty()) {
-        m_report->setText(tr("Synthesize fits the exact profile with tangent arcs within the "
-                             "tolerance and replaces the contour (one undo step)."));
+        m_report->setText(
+            tr("Synthesize fits the exact profile with tangent arcs within the "
+               "tolerance and replaces the contour (one undo step)."));
     }
 }
 
