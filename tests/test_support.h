@@ -164,6 +164,18 @@ inline std::string writeTempFile(const std::string& name, const std::string& tex
     return p.string();
 }
 
+/// Writes `text` to `path` byte for byte.
+inline void writeText(const std::string& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+inline bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+/// The bundled six-lobe arc cam, the example most tests start from.
+inline const std::string kExample = examplePath("six-lobe-arc-cam.cam.json");
+
 inline RunResult runCli(const std::vector<std::string>& args) { return run(CAMWRIGHT_CLI, args); }
 
 }  // namespace cam::test

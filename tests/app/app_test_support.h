@@ -16,6 +16,9 @@ namespace cam::test {
 inline const Arc& arcOf(const SegmentSpec& s) { return std::get<Arc>(s.shape); }
 inline const Line& lineOf(const SegmentSpec& s) { return std::get<Line>(s.shape); }
 
+/// The bundled six-lobe arc cam's path.
+inline const QString kExampleFile = QString::fromStdString(kExample);
+
 inline Project loadExample() {
     auto p = loadProjectFile(examplePath("six-lobe-arc-cam.cam.json"));
     EXPECT_TRUE(p.ok());

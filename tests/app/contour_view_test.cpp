@@ -28,7 +28,7 @@
 namespace cam {
 namespace {
 
-const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json"));
+using test::kExampleFile;
 
 QPointF pixelOf(const ContourView* view, double x, double y) {
     return {view->xAxis->coordToPixel(x), view->yAxis->coordToPixel(y)};
@@ -56,7 +56,7 @@ TEST(ContourView, ManySegmentsAreDrawnByAFixedSetOfCurves) {
     // 10,000 segments took more than five minutes (QCPLegend::removeItem, one by one). Now the
     // segments share the ten colour curves, separated by gaps, and nothing enters a legend.
     MainWindow small;
-    ASSERT_TRUE(small.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(small.loadFile(kExampleFile).isEmpty());
     ASSERT_TRUE(small.waitForCurrentResult(10000));
     const int fixed = small.contourView()->plottableCount();
 
@@ -107,7 +107,7 @@ TEST(ContourView, ManySegmentsAreDrawnByAFixedSetOfCurves) {
 TEST(ContourView, EveryJointStaysMarkedWhenZoomedInOnIt) {
     const Project project = test::loadExample();
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.resize(1400, 860);
     window.show();
     ASSERT_TRUE(window.waitForCurrentResult(10000));
@@ -152,7 +152,7 @@ TEST(ContourView, EveryJointStaysMarkedWhenZoomedInOnIt) {
 
 TEST(ContourView, AProjectThatCannotBeComputedIsShownGreyedAndLabelled) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.resize(1400, 860);
     window.show();
     ASSERT_TRUE(window.waitForCurrentResult(10000));
@@ -236,7 +236,7 @@ TEST(ContourView, AProjectThatCannotBeComputedIsShownGreyedAndLabelled) {
 
 TEST(StateReadout, ReadsAnglesAndInstantsWithinOneTurnWhereverTheMouseIs) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.resize(1400, 860);
     window.show();
     for (const double omega : {15.0, -15.0}) {

@@ -34,7 +34,7 @@
 namespace cam {
 namespace {
 
-const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json"));
+using test::kExampleFile;
 const QString kMachining =
     QString::fromStdString(test::dataPath("app/six-lobe-machining.cam.json"));
 
@@ -50,7 +50,7 @@ QString exportAndWait(MainWindow& window, const ExportRequest& request) {
 
 /// Opens the example in a shown 1200×800 window and waits for its plots.
 bool showExample(MainWindow& window) {
-    if (!window.loadFile(kExample).isEmpty()) return false;
+    if (!window.loadFile(kExampleFile).isEmpty()) return false;
     window.resize(1200, 800);
     window.show();
     return window.waitForCurrentResult(20000);
@@ -148,7 +148,7 @@ TEST(ExportInWindow, EveryFormatWritesWhatTheCliWrites) {
 
 TEST(ExportInWindow, AFailureNamesTheProblemAndLosesNothing) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     test::TempDir dir;
     const std::string kept = dir.file("kept.ngc");
     {
@@ -190,7 +190,7 @@ TEST(ExportInWindow, AFailureNamesTheProblemAndLosesNothing) {
 
 TEST(ExportInWindow, ALongExportRunsOffTheGuiThread) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     test::TempDir dir;
     ExportRequest request;
     request.format = ExportFormat::Csv;

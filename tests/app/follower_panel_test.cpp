@@ -26,7 +26,7 @@
 namespace cam {
 namespace {
 
-const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json"));
+using test::kExampleFile;
 
 bool waitForResult(MainWindow& w) { return w.waitForCurrentResult(20000); }
 
@@ -39,7 +39,7 @@ T* child(const MainWindow& w, const char* name) {
 
 TEST(FollowerPanel, ChoosingARollerIsOneUndoableEditComputedInTheWorker) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.show();
     window.findChild<QDockWidget*>("followerDock")->show();
     ASSERT_TRUE(waitForResult(window));
@@ -88,7 +88,7 @@ TEST(FollowerPanel, ChoosingARollerIsOneUndoableEditComputedInTheWorker) {
 
 TEST(FollowerPanel, TheChecksAreTheCoresAndAClickGoesToTheirAngle) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.show();
     window.findChild<QDockWidget*>("followerDock")->show();
     ASSERT_TRUE(waitForResult(window));
@@ -160,7 +160,7 @@ TEST(FollowerPanel, TheChecksAreTheCoresAndAClickGoesToTheirAngle) {
 
 TEST(FollowerPanel, AnArmThatCannotReachTheCamIsListedNotHidden) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.show();
     child<QComboBox>(window, "followerMotionComboBox")->setCurrentIndex(1);
     auto* length = child<QDoubleSpinBox>(window, "armLengthSpinBox");
@@ -184,7 +184,7 @@ namespace {
 
 TEST(Play, TheCursorTurnsAtTheChosenFractionOfTheRealSpeedAndStopsOnPause) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.show();
     ASSERT_TRUE(waitForResult(window));
     auto* speed = window.findChild<QComboBox*>("playSpeedComboBox");
@@ -249,7 +249,7 @@ TEST(FollowerInContourView, TheArmRollerContactAndNormalAreDrawnWhereTheCoreSays
         EXPECT_NEAR((a - b).norm(), 0.0, 1e-9) << deg;  // the normal points through the centre
     }
     // A project without a follower draws none.
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     ASSERT_TRUE(waitForResult(window));
     window.contourView()->setCursorAngle(0.3);
     EXPECT_FALSE(window.contourView()->followerMarkers().shown);

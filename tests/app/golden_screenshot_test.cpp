@@ -22,7 +22,7 @@
 namespace cam {
 namespace {
 
-const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json"));
+using test::kExampleFile;
 const QString kGolden = QString::fromStdString(test::dataPath("app/six-lobe-window.png"));
 const QSize kSize(1400, 860);
 /// A pixel differs when a channel differs by more than this (anti-aliasing noise).
@@ -69,7 +69,7 @@ QRect statusBarRect(MainWindow& window) {
 
 TEST(GoldenScreenshot, TheSixLobeWindowMatchesTheGoldenImage) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     const QImage actual = renderScreenshot(window, kSize).convertToFormat(QImage::Format_RGB32);
     ASSERT_FALSE(actual.isNull());
     if (qEnvironmentVariableIsSet("CAMWRIGHT_UPDATE_GOLDEN")) {
@@ -95,7 +95,7 @@ TEST(GoldenScreenshot, HidingAnySingleCurveIsNoticed) {
     const QImage expected = QImage(kGolden).convertToFormat(QImage::Format_RGB32);
     ASSERT_FALSE(expected.isNull());
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     ASSERT_FALSE(renderScreenshot(window, kSize).isNull());
     std::vector<std::pair<std::string, QCPAbstractPlottable*>> curves;
     for (int p = 0; p < 3; ++p) {

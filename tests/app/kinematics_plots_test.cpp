@@ -26,7 +26,7 @@
 namespace cam {
 namespace {
 
-const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json"));
+using test::kExampleFile;
 
 /// The example's contour and speed, built from the file by the core alone.
 struct Reference {
@@ -43,7 +43,7 @@ std::vector<QCPGraphData> dataOf(const QCPGraph* graph) {
 TEST(KinematicsPlots, TimeAxisActionPlotsTheCurvesOverTime) {
     const Reference ref;  // period 0.4 s
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.resize(1400, 860);
     window.show();
     ASSERT_TRUE(window.waitForCurrentResult(10000));
@@ -126,7 +126,7 @@ TEST(KinematicsPlots, EveryLobeReachesItsPeakAtEveryWindowSize) {
     // width, from the samples themselves (3600) or from an envelope of them (100,000).
     const Reference ref;
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.show();
     for (const int samples : {3600, 100'000}) {
         window.document()->undoStack()->push(new SetSamplesPerTurn(window.document(), samples));
@@ -181,7 +181,7 @@ TEST(KinematicsPlots, LinesBreakOnlyWhereAQuantityJumpsAndExactlyAtTheJoint) {
     const Reference ref;
     const ContourAnalysis analysis = analyzeContour(ref.contour, ref.omega);
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.resize(1400, 860);
     window.show();
     // Every joint of this cam is C1, and a_r jumps at all but the one inside the first notch.
@@ -226,7 +226,7 @@ TEST(KinematicsPlots, LinesBreakOnlyWhereAQuantityJumpsAndExactlyAtTheJoint) {
 
 TEST(KinematicsPlots, ZoomingInDrawsFinerDataButNeverMoreThanAFewPointsPerPixel) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.resize(1400, 860);
     window.show();
     window.document()->undoStack()->push(new SetSamplesPerTurn(window.document(), 1'000'000));
@@ -264,7 +264,7 @@ TEST(KinematicsPlots, ZoomingInDrawsFinerDataButNeverMoreThanAFewPointsPerPixel)
 
 TEST(KinematicsPlots, CursorMovesRedrawOnlyTheCursorLayer) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.resize(1400, 860);
     window.show();
     ASSERT_TRUE(window.waitForCurrentResult(10000));

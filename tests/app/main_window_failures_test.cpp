@@ -22,7 +22,7 @@
 namespace cam {
 namespace {
 
-const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json"));
+using test::kExampleFile;
 
 /// Stands for a computation that runs out of memory in the worker.
 class OutOfMemory : public PlotDataPreparer {
@@ -35,7 +35,7 @@ public:
 
 TEST(MainWindow, AFailedComputationIsReportedAndTheAppCarriesOn) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.resize(1400, 860);
     window.show();
     ASSERT_TRUE(window.waitForCurrentResult(10000));

@@ -43,11 +43,11 @@
 namespace cam {
 namespace {
 
-const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json"));
+using test::kExampleFile;
 
 TEST(MainWindow, OpeningABadFileLeavesTheOpenDocumentUntouched) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.tableModel()->setData(window.tableModel()->index(1, SegmentTableModel::CenterX), 18.2,
                                  Qt::EditRole);
     const Project before = window.document()->project();
@@ -75,7 +75,7 @@ TEST(MainWindow, EditSaveReopen) {
     QTemporaryDir dir;
     const QString path = dir.filePath("edited.cam.json");
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     // Two edits that keep the contour valid: the notch piece becomes a line, the speed halves.
     ASSERT_TRUE(window.tableModel()->setData(window.tableModel()->index(0, SegmentTableModel::Type),
                                              1, Qt::EditRole));
@@ -110,7 +110,7 @@ TEST(MainWindow, SaveKeepsTheModeTheOwnerAndTheSymlinkOfTheFile) {
     const QString link = QString::fromStdString(dir.file("current.cam.json"));
 
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     const QString problem = window.saveFile(link);
     ASSERT_TRUE(problem.isEmpty()) << problem.toStdString();
     EXPECT_FALSE(window.document()->isModified());
@@ -133,7 +133,7 @@ TEST(MainWindow, SavingOverSomethingThatIsNotAFileIsRefusedAndLeavesItAlone) {
     const std::string pipe = dir.file("pipe.cam.json");
     ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.document()->undoStack()->push(new SetMotion(window.document(), {SpeedUnit::Rpm, 75.0}));
     const QString message = window.saveFile(QString::fromStdString(pipe));
     EXPECT_TRUE(message.contains("is a FIFO, not a regular file")) << message.toStdString();
@@ -146,7 +146,7 @@ TEST(MainWindow, ASaveThatFailsMidwayKeepsTheOldFileAndTheDocumentModified) {
     const test::TempDir dir;
     const std::string path = dir.file("cam.cam.json");
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     ASSERT_TRUE(window.saveFile(QString::fromStdString(path)).isEmpty());
     const std::string saved = test::readFile(path);
     ASSERT_GT(saved.size(), 1024u);
@@ -210,7 +210,7 @@ TEST(MainWindow, ANumberAFileCannotHoldIsNotSavedAndNothingIsWritten) {
     QTemporaryDir dir;
     const QString path = dir.filePath("bad.cam.json");
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     // No editor lets a NaN in; the document's own undo command is the only way to get one there.
     SegmentSpec s = window.document()->project().contour[2];
     std::get<Arc>(s.shape).radius = std::numeric_limits<double>::quiet_NaN();
@@ -225,7 +225,7 @@ TEST(MainWindow, ANumberAFileCannotHoldIsNotSavedAndNothingIsWritten) {
 
 TEST(MainWindow, FitWindowsActionRepairsDisturbedBoundariesInOneUndoStep) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     SegmentTableModel* model = window.tableModel();
     model->setData(model->index(1, SegmentTableModel::PhiEnd), 51.0, Qt::EditRole);
     model->setData(model->index(2, SegmentTableModel::PhiStart), 51.0, Qt::EditRole);
@@ -241,7 +241,7 @@ TEST(MainWindow, FitWindowsActionRepairsDisturbedBoundariesInOneUndoStep) {
 
 TEST(MainWindow, EditsReachThePlotsAndTheReadout) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     ASSERT_TRUE(window.waitForCurrentResult(10000));
     window.setCursorTime(0.05);
     EXPECT_TRUE(window.readout()->text().contains("r 26.218824"))
@@ -292,24 +292,26 @@ namespace cam {
 namespace {
 
 /// Drags in the contour view from `from` to `to` (mm) in `steps` mouse moves, as a user would.
+/// Drags from `from` to `to` (mm) in `steps` moves, with Alt held: no snapping, so the handle
+/// lands where the mouse is (Construction.* tests snapping).
 void dragInView(ContourView* view, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
                 int steps) {
     auto pixel = [view](const Eigen::Vector2d& p) {
         return QPointF(view->xAxis->coordToPixel(p.x()), view->yAxis->coordToPixel(p.y()));
     };
-    QTest::mousePress(view, Qt::LeftButton, {}, pixel(from).toPoint());
+    QTest::mousePress(view, Qt::LeftButton, Qt::AltModifier, pixel(from).toPoint());
     for (int i = 1; i <= steps; ++i) {
         const QPointF p = pixel(from + (to - from) * i / steps);
         QMouseEvent move(QEvent::MouseMove, p, view->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
-                         Qt::NoModifier);
+                         Qt::AltModifier);
         QCoreApplication::sendEvent(view, &move);
     }
-    QTest::mouseRelease(view, Qt::LeftButton, {}, pixel(to).toPoint());
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::AltModifier, pixel(to).toPoint());
 }
 
 TEST(ContourView, DraggingTheCentreHandleIsOneUndoStep) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.resize(1400, 860);
     window.show();
     ASSERT_TRUE(window.waitForCurrentResult(10000));
@@ -336,7 +338,7 @@ namespace {
 
 TEST(MainWindow, EditingARadiusRedrawsThePlotsEvenThoughTheJointsOpen) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     ASSERT_TRUE(window.waitForCurrentResult(10000));
     const auto before = window.engine()->latestResult();
     SegmentTableModel* model = window.tableModel();
@@ -371,7 +373,7 @@ TEST(ScreenshotCommand, WorksWithNoDisplayAndNoPlatformSet) {
     qunsetenv("DISPLAY");
     qunsetenv("WAYLAND_DISPLAY");
     const auto run = test::run(CAMWRIGHT_APP, {"--screenshot", png.toStdString(), "--size",
-                                               "900x600", kExample.toStdString()});
+                                               "900x600", kExampleFile.toStdString()});
     const auto bad = test::run(
         CAMWRIGHT_APP,
         {"--screenshot", png.toStdString(), test::dataPath("invalid/syntax-truncated.cam.json")});
@@ -420,7 +422,7 @@ void answerNextMessageBox(QMessageBox::StandardButton button, QString* text = nu
 
 TEST(MainWindow, UnsavedChangesPromptCancelKeepsAndDiscardDrops) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.document()->undoStack()->push(new SetMotion(window.document(), {SpeedUnit::Rpm, 100.0}));
     auto* newAction = window.findChild<QAction*>("actionNew");
     QString asked;
@@ -439,25 +441,25 @@ TEST(MainWindow, UnsavedChangesPromptCancelKeepsAndDiscardDrops) {
 TEST(MainWindow, DroppingAProjectOpensItAndRecentFilesRememberIt) {
     MainWindow window;
     auto* mime = new QMimeData;
-    mime->setUrls({QUrl::fromLocalFile(kExample)});
+    mime->setUrls({QUrl::fromLocalFile(kExampleFile)});
     QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, mime, Qt::LeftButton, Qt::NoModifier);
     QCoreApplication::sendEvent(&window, &enter);
     EXPECT_TRUE(enter.isAccepted());
     QDropEvent drop(QPointF(10, 10), Qt::CopyAction, mime, Qt::LeftButton, Qt::NoModifier);
     QCoreApplication::sendEvent(&window, &drop);
     EXPECT_EQ(window.document()->project().contour.size(), 13u);
-    EXPECT_EQ(window.document()->filePath(), QFileInfo(kExample).absoluteFilePath());
+    EXPECT_EQ(window.document()->filePath(), QFileInfo(kExampleFile).absoluteFilePath());
     auto* recent = window.findChild<QMenu*>("menuRecent");
     ASSERT_NE(recent, nullptr);
     ASSERT_FALSE(recent->actions().isEmpty());
     EXPECT_EQ(recent->actions().front()->text(),
-              QDir::toNativeSeparators(QFileInfo(kExample).absoluteFilePath()));
+              QDir::toNativeSeparators(QFileInfo(kExampleFile).absoluteFilePath()));
     delete mime;
 }
 
 TEST(MainWindow, CloseAsksAboutUnsavedChangesAndLeavesANewProject) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.document()->undoStack()->push(new SetMotion(window.document(), {SpeedUnit::Rpm, 100.0}));
     auto* close = window.findChild<QAction*>("actionClose");
     ASSERT_NE(close, nullptr);
@@ -480,7 +482,7 @@ TEST(MainWindow, CloseAsksAboutUnsavedChangesAndLeavesANewProject) {
 TEST(MainWindow, ARecentFileThatIsGoneIsRemovedWithOneMessage) {
     QTemporaryDir dir;
     const QString gone = dir.filePath("gone.cam.json");
-    const QString kept = QFileInfo(kExample).absoluteFilePath();
+    const QString kept = QFileInfo(kExampleFile).absoluteFilePath();
     QSettings().setValue("files/recent", QStringList{gone, kept});
     MainWindow window;
     auto* recent = window.findChild<QMenu*>("menuRecent");
@@ -501,7 +503,7 @@ TEST(MainWindow, ARecentFileThatIsGoneIsRemovedWithOneMessage) {
 }
 
 TEST(MainWindow, ClearMenuForgetsTheRecentFiles) {
-    QSettings().setValue("files/recent", QStringList{QFileInfo(kExample).absoluteFilePath()});
+    QSettings().setValue("files/recent", QStringList{QFileInfo(kExampleFile).absoluteFilePath()});
     MainWindow window;
     auto* clear = window.findChild<QAction*>("actionClearRecent");
     ASSERT_NE(clear, nullptr);
@@ -511,12 +513,12 @@ TEST(MainWindow, ClearMenuForgetsTheRecentFiles) {
     auto* recent = window.findChild<QMenu*>("menuRecent");
     EXPECT_TRUE(recent->actions().isEmpty());
     EXPECT_FALSE(recent->isEnabled());
-    EXPECT_TRUE(QFileInfo::exists(kExample));  // only the list is forgotten
+    EXPECT_TRUE(QFileInfo::exists(kExampleFile));  // only the list is forgotten
 }
 
 TEST(MainWindow, ProjectNameRenamesTheProjectAsOneUndoStep) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     const std::string before = window.document()->project().name;
     auto* rename = window.findChild<QAction*>("actionRenameProject");
     ASSERT_NE(rename, nullptr);
@@ -576,7 +578,7 @@ namespace {
 
 TEST(ContourView, DraggingABezierHandleShapesTheCurveInOneUndoStep) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.resize(1400, 860);
     window.show();
     SegmentTableModel* model = window.tableModel();
@@ -610,7 +612,7 @@ namespace {
 
 TEST(MainWindow, ApproximatingAnArcIsOneUndoStepAndKeepsTheCamValid) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     const Project before = window.document()->project();
     EXPECT_TRUE(window.approximateArc(1, 1e-5).isEmpty());
     const auto& contour = window.document()->project().contour;
@@ -660,7 +662,7 @@ namespace {
 
 TEST(JointsPanel, ListsEveryJointAndClickingOneGoesThere) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     window.show();
     ASSERT_TRUE(window.waitForCurrentResult(10000));
     JointsPanel* joints = window.jointsPanel();
@@ -702,7 +704,7 @@ TEST(PathStudyPanel, ShowsTheSplinesAnalyticAndByDifferenceQuotient) {
     EXPECT_LT(worst, 1e-2);
     EXPECT_TRUE(first->isVisible());
     // A contour of arcs only: the note says there is nothing to study, and no empty axes show.
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     ASSERT_TRUE(window.waitForCurrentResult(10000));
     QCoreApplication::processEvents();
     for (int p = 0; p < 4; ++p) EXPECT_FALSE(window.pathStudyPanel()->plot(p)->isVisible()) << p;
@@ -720,7 +722,7 @@ namespace {
 
 TEST(MainWindow, ContourThroughPointsIsOneUndoStepAndBadLinesAreNamed) {
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     const Project before = window.document()->project();
     const QString points = "20, 0\n14, 15\n-3, 22\n-18, 9\n-16, -12\n5, -19\n";
     EXPECT_TRUE(window.contourThroughPoints(points, 2, 1.0).isEmpty());

@@ -21,7 +21,7 @@ namespace cam {
 namespace {
 
 const char* const kPython = "/usr/bin/python3";
-const std::string kExample = test::examplePath("six-lobe-arc-cam.cam.json");
+using test::kExample;
 
 std::string checker() {
     return std::string(CAMWRIGHT_SOURCE_DIR) + "/tests/reference/check_picture.py";

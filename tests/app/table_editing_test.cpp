@@ -18,12 +18,12 @@
 namespace cam {
 namespace {
 
-const QString kExample = QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json"));
+using test::kExampleFile;
 
 class TableEditing : public ::testing::Test {
 protected:
     void SetUp() override {
-        ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+        ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
         window.resize(1400, 860);
         window.show();
         QApplication::setActiveWindow(&window);
@@ -144,7 +144,7 @@ TEST(TableEditingGerman, ACommaIsTheDecimalSeparator) {
     QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
     {
         MainWindow window;
-        ASSERT_TRUE(window.loadFile(kExample).isEmpty());
+        ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
         window.show();
         QApplication::setActiveWindow(&window);
         auto* table = window.findChild<QTableView*>("segmentTable");

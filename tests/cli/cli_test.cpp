@@ -13,7 +13,7 @@
 namespace cam {
 namespace {
 
-const std::string kExample = test::examplePath("six-lobe-arc-cam.cam.json");
+using test::kExample;
 
 std::vector<std::string> lines(const std::string& text) {
     std::vector<std::string> out;

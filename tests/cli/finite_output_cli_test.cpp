@@ -19,13 +19,9 @@ namespace {
 using test::runCli;
 using test::TempDir;
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
+using test::contains;
 
-void writeText(const std::string& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
+using test::writeText;
 
 /// A circle about (e, 0) split into two arcs, with the motion and radius given as JSON text.
 std::string splitCircleJson(const std::string& motion, const std::string& e,

@@ -35,19 +35,15 @@ using test::readFile;
 using test::RunResult;
 using test::TempDir;
 
-const std::string kExample = test::examplePath("six-lobe-arc-cam.cam.json");
+using test::kExample;
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
+using test::contains;
 
 std::size_t lineCount(const std::string& text) {
     return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
 }
 
-void writeText(const std::string& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
+using test::writeText;
 
 /// A square of four lines: fillet needs a real corner.
 std::string writeSquare(const TempDir& dir) {

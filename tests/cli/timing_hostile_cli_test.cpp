@@ -20,7 +20,7 @@
 namespace cam {
 namespace {
 
-std::string writeTemp(const std::string& name, const std::string& text) {
+std::string writeHostileTemp(const std::string& name, const std::string& text) {
     return test::writeTempFile("camwright_hostile_" + name, text);
 }
 
@@ -50,7 +50,7 @@ bool allFinite(const nlohmann::json& j) {
 // exit 2 naming the option, the range and the value. --accel 1e-320 (a denormal) used to print
 // "time_s": null with exit 0; --step 1e-12 hung the seed method.
 TEST(CliTimingHostile, OptionsOutsideTheirRangesAreRefused) {
-    const std::string line = writeTemp("line.csv", "0,0,0\n100,0,0\n");
+    const std::string line = writeHostileTemp("line.csv", "0,0,0\n100,0,0\n");
     struct Case {
         std::vector<std::string> options;
         std::string message;
@@ -84,7 +84,7 @@ TEST(CliTimingHostile, OptionsOutsideTheirRangesAreRefused) {
 // limit of 1e7 steps and the smallest step that would do (100 mm / 1e7 = 1e-5 mm); a project's
 // own step is named machining.step in its file. Both used to walk for minutes.
 TEST(CliTimingHostile, AStepTinyAgainstThePathIsRefusedAtOnce) {
-    const std::string line = writeTemp("line.csv", "0,0,0\n100,0,0\n");
+    const std::string line = writeHostileTemp("line.csv", "0,0,0\n100,0,0\n");
     const auto r = test::run(
         CAMWRIGHT_CLI,
         {"timing", "--path", line, "--method", "seed", "--accel", "500,500", "--step", "5e-6"},
@@ -99,7 +99,7 @@ TEST(CliTimingHostile, AStepTinyAgainstThePathIsRefusedAtOnce) {
     std::string text = test::readFile(test::examplePath("six-lobe-arc-cam.cam.json"));
     text.insert(text.rfind('}'), R"(, "machining": {"axis_accel": [500, 500, 200], "feed_max": 100,
         "tool_radius": 2.0, "step": 1e-6})");
-    const std::string project = writeTemp("tiny-step.cam.json", text);
+    const std::string project = writeHostileTemp("tiny-step.cam.json", text);
     const auto p = test::run(CAMWRIGHT_CLI, {"timing", project, "--method", "seed"},
                              test::kSanitized ? 60 : 10);
     EXPECT_EQ(p.signal, 0) << "killed: the seed walk did not end";
@@ -115,7 +115,7 @@ TEST(CliTimingHostile, AStepTinyAgainstThePathIsRefusedAtOnce) {
 // x with a = 500: 2·sqrt(10/500) s for exact stop and optimal. Bulge 1e300 (NaN before) and 1e9
 // on a 10 mm chord are circles of 2.5e300 and 2.5e9 mm: refused, exit 2, at the point.
 TEST(CliTimingHostile, ExtremeBulges) {
-    const std::string flat = writeTemp("flat.csv", "0,0,0,1e-300\n10,0,0\n");
+    const std::string flat = writeHostileTemp("flat.csv", "0,0,0,1e-300\n10,0,0\n");
     for (const char* method : {"exact-stop", "optimal"}) {
         const auto r =
             test::runCli({"timing", "--path", flat, "--method", method, "--accel", "500,500"});
@@ -127,7 +127,7 @@ TEST(CliTimingHostile, ExtremeBulges) {
     }
     for (const char* bulge : {"1e300", "1e9", "-1e9", "1.7e308"}) {
         const std::string huge =
-            writeTemp("huge.csv", std::string("0,0,0,") + bulge + "\n10,0,0\n");
+            writeHostileTemp("huge.csv", std::string("0,0,0,") + bulge + "\n10,0,0\n");
         const auto r = test::run(
             CAMWRIGHT_CLI, {"timing", "--path", huge, "--method", "seed", "--accel", "500,500"},
             test::kSanitized ? 60 : 10);
@@ -166,7 +166,7 @@ TEST_P(CliTimingHostilePath, NoOutputEverHoldsANonFiniteNumber) {
         {"--accel", "1e300,1"},
         {"--accel", "500,500", "--step", "1e-6"},
     };
-    const std::string csv = writeTemp("any" + std::to_string(c) + ".csv", kHostilePaths[c]);
+    const std::string csv = writeHostileTemp("any" + std::to_string(c) + ".csv", kHostilePaths[c]);
     int printed = 0;
     for (const auto& opts : options) {
         for (const char* method : {"seed", "exact-stop", "optimal"}) {
@@ -203,7 +203,7 @@ INSTANTIATE_TEST_SUITE_P(Paths, CliTimingHostilePath,
 // 2.8e-6, no flag and no warning.
 TEST(CliTimingHostile, TheIssuesArcsConvergeAndOptimalEqualsExactStop) {
     const int count = test::kSanitized ? 300 : 2000;
-    const std::string csv = writeTemp("issue-arcs.csv", arcsCsv(count, 0.5, false));
+    const std::string csv = writeHostileTemp("issue-arcs.csv", arcsCsv(count, 0.5, false));
     MachineLimits lim;
     lim.accel = {500, 500, kUnlimited};
     const double one = test::referenceTime(
@@ -232,7 +232,7 @@ TEST(CliTimingHostile, TheIssuesArcsConvergeAndOptimalEqualsExactStop) {
 // "converged": false with a warning that names the limit and the estimated error, exit 0.
 TEST(CliTimingHostile, ARefinementStoppedShortSaysSo) {
     if (test::kSanitized) GTEST_SKIP() << "34,000 arcs take minutes under the sanitizers";
-    const std::string csv = writeTemp("chain.csv", arcsCsv(34'000, 0.5, true));
+    const std::string csv = writeHostileTemp("chain.csv", arcsCsv(34'000, 0.5, true));
     const auto r = test::run(
         CAMWRIGHT_CLI, {"timing", "--path", csv, "--method", "optimal", "--accel", "500,500"}, 60);
     ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/angles.h"
+#include "core/contour_geometry.h"
 #include "fillet/fillet.h"
 #include "geometry/arc.h"
 #include "geometry/line.h"
@@ -22,50 +23,20 @@ namespace {
 
 using test::relClose;
 using Vec = Eigen::Vector2d;
-
-double polarDeg(const Vec& p) { return radToDeg(std::atan2(p.y(), p.x())); }
+using test::arc;
+using test::arcOf;
+using test::expectValid;
+using test::line;
+using test::lineOf;
+using test::pointOn;
+using test::polar;
+using test::polarDeg;
+using test::tangentOn;
+using test::validate;
 
 /// phi (deg) shifted by whole turns into [lo, lo + 360).
 double unwrapInto(double phi, double lo) {
     return lo + std::fmod(std::fmod(phi - lo, 360.0) + 360.0, 360.0);
-}
-
-const Arc& arcOf(const SegmentSpec& s) { return std::get<Arc>(s.shape); }
-const Line& lineOf(const SegmentSpec& s) { return std::get<Line>(s.shape); }
-
-SegmentSpec line(const Vec& from, const Vec& to, double nearDeg) {
-    SegmentSpec s{Line{from, to}};
-    std::tie(s.phiStartDeg, s.phiEndDeg) = lineWindowDeg(s, nearDeg);
-    return s;
-}
-
-SegmentSpec arc(const Vec& center, double radius, Branch branch, double startDeg, double endDeg) {
-    return SegmentSpec{Arc{center, radius, branch}, startDeg, endDeg};
-}
-
-PolarDerivatives polar(const SegmentSpec& s, double phiDeg) {
-    const double phi = degToRad(phiDeg);
-    return s.type() == SegmentType::Arc ? arcOf(s).evaluate(phi) : lineOf(s).evaluate(phi);
-}
-
-/// Where the follower ray at phi meets the segment.
-Vec pointOn(const SegmentSpec& s, double phiDeg) {
-    const double phi = degToRad(phiDeg);
-    return polar(s, phiDeg).r * Vec(std::cos(phi), std::sin(phi));
-}
-
-/// Unit tangent dp/dphi of the segment's polar curve p = r·u: r'·u + r·u'.
-Vec tangentOn(const SegmentSpec& s, double phiDeg) {
-    const double phi = degToRad(phiDeg);
-    const PolarDerivatives d = polar(s, phiDeg);
-    const Vec u(std::cos(phi), std::sin(phi)), u1(-std::sin(phi), std::cos(phi));
-    return (d.dr * u + d.r * u1).normalized();
-}
-
-Diagnostics validate(const std::vector<SegmentSpec>& contour) {
-    Project p;
-    p.contour = contour;
-    return validateProject(p);
 }
 
 double distanceToLine(const Vec& p, const SegmentSpec& l) {
@@ -196,19 +167,12 @@ void expectValidFillet(const std::vector<SegmentSpec>& before, std::size_t joint
     EXPECT_TRUE(ccw);
 }
 
-void expectValid(const std::vector<SegmentSpec>& contour) {
-    const Diagnostics d = validate(contour);
-    ASSERT_TRUE(d.empty()) << d.front().text();
-}
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
+using test::contains;
 
 // ---- contours built by hand ----
 
 /// The square |x|, |y| <= 10: four lines, windows -45 .. 315.
-std::vector<SegmentSpec> square() {
+std::vector<SegmentSpec> squareContour() {
     const Vec corners[] = {{10, -10}, {10, 10}, {-10, 10}, {-10, -10}};
     std::vector<SegmentSpec> c;
     double near = -45.0;
@@ -260,7 +224,7 @@ TEST(Fillet, MinimumSwitchRadiusIsSpeedSquaredOverErrorTimesAcceleration) {
 // ---- line–line ----
 
 TEST(Fillet, SquareCornerHasItsCentreOnTheBisectorAtRhoRootTwo) {
-    const auto sq = square();
+    const auto sq = squareContour();
     expectValid(sq);
     const double rho = 3.0;
     // joint 1: the corner (10, 10); joint 0: the corner (10, -10), between the last and first.
@@ -281,7 +245,7 @@ TEST(Fillet, SquareCornerHasItsCentreOnTheBisectorAtRhoRootTwo) {
 }
 
 TEST(Fillet, AllFourSquareCornersRoundOneAfterAnother) {
-    std::vector<SegmentSpec> c = square();
+    std::vector<SegmentSpec> c = squareContour();
     // Rounding a joint inserts at its index, so go from the last joint down; joint 0 appends.
     for (std::size_t joint : {3, 2, 1, 0}) {
         const auto f = filletJoint(c, joint, 4.0);
@@ -298,7 +262,7 @@ TEST(Fillet, AllFourSquareCornersRoundOneAfterAnother) {
 }
 
 TEST(Fillet, SquareRangeEndsWhereTheTangentPointReachesTheNextCorner) {
-    const auto sq = square();
+    const auto sq = squareContour();
     // At a right angle the tangent points are rho from the corner: the 20 mm side bounds rho.
     const auto range = filletRange(sq, 1);
     ASSERT_TRUE(range.ok()) << range.errors().front().text();
@@ -561,7 +525,7 @@ TEST(Fillet, RangeStartsAtTheSmallestRadiusEvenAboveAGap) {
 }
 
 TEST(Fillet, RefusesAnInvalidContourAndAMissingJoint) {
-    auto broken = square();
+    auto broken = squareContour();
     std::get<Line>(broken[1].shape).from = {10, 11};  // opens the joint at (10, 10)
     broken[1].phiStartDeg = lineWindowDeg(broken[1], 45.0).first;
     const auto f = filletJoint(broken, 2, 1.0);
@@ -569,7 +533,7 @@ TEST(Fillet, RefusesAnInvalidContourAndAMissingJoint) {
     EXPECT_EQ(f.errors().front().location, "contour[1]/contour[2]");
     EXPECT_GE(f.errors().size(), 2u);  // followed by what validation found
 
-    const auto missing = filletJoint(square(), 4, 1.0);
+    const auto missing = filletJoint(squareContour(), 4, 1.0);
     ASSERT_FALSE(missing.ok());
     EXPECT_EQ(missing.errors().front().location, "contour");
 }

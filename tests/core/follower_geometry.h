@@ -12,18 +12,11 @@
 
 #include "common/angles.h"
 #include "contour/contour.h"
+#include "core/test_projects.h"
 #include "io/project_json.h"
 #include "test_support.h"
 
 namespace cam::test {
-
-inline Contour load(const std::string& path) {
-    auto p = loadProjectFile(path);
-    EXPECT_TRUE(p.ok()) << path;
-    return Contour::build(p.value()).value();
-}
-
-inline Contour sixLobe() { return load(test::examplePath("six-lobe-arc-cam.cam.json")); }
 
 /// A disc: one whole circle of radius R about c (an eccentric circle when c is not 0).
 inline Contour disc(const Eigen::Vector2d& c, double R) {

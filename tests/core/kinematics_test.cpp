@@ -13,13 +13,9 @@
 namespace cam {
 namespace {
 
-using test::relClose;
+using test::sixLobe;
 
-Contour sixLobe() {
-    auto p = loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json"));
-    EXPECT_TRUE(p.ok());
-    return Contour::build(p.value()).value();
-}
+using test::relClose;
 
 TEST(Kinematics, PolarComponentsMatchFiniteDifferencesOfTheCartesianMotion) {
     // The follower point is P(t) = r(ωt)·(cos ωt, sin ωt). Differentiate P numerically in the

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "common/angles.h"
+#include "core/test_projects.h"
 #include "design/motion_design.h"
 #include "design/motion_law.h"
-#include "core/test_projects.h"
 #include "test_support.h"
 
 namespace cam {
@@ -152,10 +152,8 @@ TEST(MotionLaw, Poly5MeetsItsBoundaryValues) {
     }
 }
 
-DesignSpec cycloidalCam() { return test::cycloidalDesign(); }
-
 TEST(MotionDesign, TheCycloidalCamOfMathMd) {
-    const auto design = MotionDesign::build(cycloidalCam());
+    const auto design = MotionDesign::build(test::cycloidalDesign());
     ASSERT_TRUE(design.ok()) << design.errors().front().text();
     const MotionDesign& m = design.value();
     const double h = degToRad(120.0);
@@ -191,7 +189,7 @@ TEST(MotionDesign, TheCycloidalCamOfMathMd) {
 }
 
 TEST(MotionDesign, AHarmonicRiseBetweenDwellsJumpsInAcceleration) {
-    DesignSpec d = cycloidalCam();
+    DesignSpec d = test::cycloidalDesign();
     d.segments[0].law = MotionLawType::Harmonic;
     const auto m = MotionDesign::build(d);
     ASSERT_TRUE(m.ok());
@@ -230,7 +228,7 @@ TEST(MotionDesign, EveryProblemHasItsPlace) {
          "finite"},
     };
     for (const Case& c : cases) {
-        DesignSpec d = cycloidalCam();
+        DesignSpec d = test::cycloidalDesign();
         c.edit(d);
         const auto m = MotionDesign::build(d);
         ASSERT_FALSE(m.ok()) << c.location;
@@ -247,7 +245,7 @@ TEST(MotionDesign, EveryProblemHasItsPlace) {
 
 TEST(MotionDesign, Poly5SlopesArePerDegree) {
     // A poly5 return whose end slope is −0.01 mm/° and end acceleration 0.002 mm/°².
-    DesignSpec d = cycloidalCam();
+    DesignSpec d = test::cycloidalDesign();
     d.segments[2] = {MotionLawType::Poly5, 300.0, 0.0, 0.0, 0.0, -0.01, 0.002};
     const auto m = MotionDesign::build(d);
     ASSERT_TRUE(m.ok());

@@ -1,9 +1,33 @@
 #pragma once
 // Small projects built in code for the core tests.
 
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "common/diagnostic.h"
+#include "contour/contour.h"
+#include "io/project_json.h"
 #include "project/project.h"
+#include "test_support.h"
 
 namespace cam::test {
+
+/// The contour of a project file (the test fails when it does not load).
+inline Contour load(const std::string& path) {
+    auto p = loadProjectFile(path);
+    EXPECT_TRUE(p.ok()) << path;
+    return Contour::build(p.value()).value();
+}
+
+/// The bundled six-lobe arc cam's contour (r from 20.9 to 29 mm).
+inline Contour sixLobe() { return load(examplePath("six-lobe-arc-cam.cam.json")); }
+
+/// A result's errors; none when it succeeded.
+template <class T>
+Diagnostics errorsOf(const Result<T>& result) {
+    return result.ok() ? Diagnostics{} : result.errors();
+}
 
 /// One circle of radius R centred at (e, 0), origin inside, split into windows at the angles
 /// given (degrees, ascending, spanning 360): every segment is an arc of the same circle.

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "common/angles.h"
+#include "core/test_projects.h"
 #include "io/project_json.h"
 #include "test_support.h"
 #include "timing/machining_time.h"
@@ -22,6 +23,8 @@
 
 namespace cam {
 namespace {
+
+using test::errorsOf;
 
 using Clock = std::chrono::steady_clock;
 
@@ -64,11 +67,6 @@ CancelRun cancelWhileRunning(const std::function<Diagnostics(const std::atomic<b
     std::cout << "[ info ] cancelled " << run.cancelled << ", returned " << run.lateMs
               << " ms after the flag was set\n";
     return run;
-}
-
-template <class T>
-Diagnostics errorsOf(const Result<T>& result) {
-    return result.ok() ? Diagnostics{} : result.errors();
 }
 
 MachineLimits limits() {

@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/test_projects.h"
 #include "io/project_json.h"
 #include "test_support.h"
 #include "timing/machining_time.h"
@@ -27,6 +28,8 @@
 
 namespace cam {
 namespace {
+
+using test::errorsOf;
 
 using test::limitsOf;
 
@@ -41,11 +44,6 @@ std::string textOf(const Diagnostics& errors) {
     std::string all;
     for (const Diagnostic& d : errors) all += d.text() + "\n";
     return all;
-}
-
-template <class T>
-Diagnostics errorsOf(const Result<T>& result) {
-    return result.ok() ? Diagnostics{} : result.errors();
 }
 
 /// Runs `call` on a thread of its own and waits at most `seconds` for it: a call that hangs

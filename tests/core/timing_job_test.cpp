@@ -29,7 +29,7 @@ constexpr const char* kSquare = R"({
   "machining": {"axis_accel": [500, 500, 200], "feed_max": 100, "tool_radius": 1.5, "step": 1}
 })";
 
-Project square() {
+Project squareProject() {
     auto p = parseProject(kSquare);
     EXPECT_TRUE(p.ok()) << (p.ok() ? "" : p.errors().front().text());
     return p.value();
@@ -39,7 +39,7 @@ const std::vector<TimingMethod> kAll{TimingMethod::ExactStop, TimingMethod::Seed
                                      TimingMethod::Optimal};
 
 TEST(TimingJob, ContourToolPathMethodsAndProfile) {
-    const Project project = square();
+    const Project project = squareProject();
     const Contour contour = Contour::build(project).value();
     TimingJob job = timingJobFor(*project.machining, kAll);
     EXPECT_EQ(job.toolRadiusMm, 1.5);
@@ -83,7 +83,7 @@ TEST(TimingJob, ContourToolPathMethodsAndProfile) {
 
 TEST(TimingJob, AGivenPathIgnoresTheToolRadius) {
     // Two 20 mm lines at a right angle: both rest to rest, 0.4 s each (see above).
-    TimingJob job = timingJobFor(*square().machining, {TimingMethod::Optimal});
+    TimingJob job = timingJobFor(*squareProject().machining, {TimingMethod::Optimal});
     const ToolPath corner{
         {PathSegment::line({0, 0, 0}, {20, 0, 0}), PathSegment::line({20, 0, 0}, {20, 20, 0})}};
     const auto timed = timePath(corner, job);
@@ -100,16 +100,16 @@ TEST(TimingJob, ErrorsAreLocated) {
     ASSERT_FALSE(tooLarge.ok());
     EXPECT_EQ(tooLarge.errors().front().location, "contour[2]");
     // Limits that cannot be planned with: machiningTime's error.
-    TimingJob job = timingJobFor(*square().machining, kAll);
+    TimingJob job = timingJobFor(*squareProject().machining, kAll);
     job.limits.accel[1] = 0.0;
-    const auto noAccel = timeContour(Contour::build(square()).value(), job);
+    const auto noAccel = timeContour(Contour::build(squareProject()).value(), job);
     ASSERT_FALSE(noAccel.ok());
     EXPECT_EQ(noAccel.errors().front().location, "accel[1]");
 }
 
 TEST(TimingJob, APresetCancelFlagCancels) {
     const std::atomic<bool> cancel{true};
-    const Project project = square();
+    const Project project = squareProject();
     TimingJob job = timingJobFor(*project.machining, kAll);
     job.profileMethod = TimingMethod::Optimal;
     const auto timed = timeContour(Contour::build(project).value(), job, &cancel);

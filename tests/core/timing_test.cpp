@@ -124,7 +124,7 @@ double seedReferenceLine(const Vector3d& from, const Vector3d& to, const Machine
 // 1. Exact stop on lines against hand-worked closed forms
 // =============================================================================================
 
-struct LineCase {
+struct StraightMoveCase {
     const char* name;
     Vector3d from;
     Vector3d to;
@@ -132,7 +132,7 @@ struct LineCase {
     double expected;  ///< worked by hand in the comment above each case
 };
 
-std::vector<LineCase> lineCases() {
+std::vector<StraightMoveCase> lineCases() {
     return {
         // Along x, 100 mm: a_eff = a_x = 500, v = F = 100. v²/a = 10000/500 = 20 <= 100:
         // trapezoid, 100/100 + 100/500 = 1 + 0.2 = 1.2 s.
@@ -171,7 +171,7 @@ std::vector<LineCase> lineCases() {
 
 // Fact: the closed forms above, worked by hand (and the helper agrees with the hand values).
 TEST(TimingExactStop, LinesMatchHandWorkedClosedForms) {
-    for (const LineCase& c : lineCases()) {
+    for (const StraightMoveCase& c : lineCases()) {
         SCOPED_TRACE(c.name);
         EXPECT_TRUE(relClose(closedFormLine(c.from, c.to, c.limits), c.expected, 1e-12));
 
@@ -198,7 +198,7 @@ TEST(TimingExactStop, LinesMatchHandWorkedClosedForms) {
 
 // Fact: on a single straight line the time-optimal profile is the trapezoid/triangle.
 TEST(TimingOptimal, SingleLineEqualsClosedForm) {
-    for (const LineCase& c : lineCases()) {
+    for (const StraightMoveCase& c : lineCases()) {
         SCOPED_TRACE(c.name);
         const double t =
             timeOf(pathOf({PathSegment::line(c.from, c.to)}), c.limits, TimingMethod::Optimal);
@@ -448,7 +448,7 @@ TEST(TimingSeed, QuarterArcStepsByHandAndTheReferenceLoop) {
     EXPECT_TRUE(relClose(timeOf(path, limits, TimingMethod::Seed), test::seedReference(arc, limits),
                          1e-12));
     // The reference loop agrees with the line loop above (and so with the hand-worked lines).
-    for (const LineCase& c : lineCases()) {
+    for (const StraightMoveCase& c : lineCases()) {
         SCOPED_TRACE(c.name);
         EXPECT_TRUE(relClose(test::seedReference(RefPiece::line(c.from, c.to), c.limits),
                              seedReferenceLine(c.from, c.to, c.limits), 1e-12));
@@ -494,7 +494,7 @@ TEST(TimingReference, ReproducesAnalyticAndPublishedTimes) {
 
     // The reference on the lines of test 1 equals their closed forms (x is linear in s on a
     // line, so only the cell where the ramp meets the cruise is off, by O(h²)).
-    for (const LineCase& c : lineCases()) {
+    for (const StraightMoveCase& c : lineCases()) {
         SCOPED_TRACE(c.name);
         EXPECT_TRUE(relClose(referenceTime({RefPiece::line(c.from, c.to)}, c.limits, 1e-3),
                              c.expected, 1e-9));

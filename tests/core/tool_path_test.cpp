@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "common/angles.h"
+#include "core/test_projects.h"
 #include "io/project_json.h"
 #include "project/validate.h"
 #include "test_support.h"
@@ -16,10 +17,7 @@
 namespace cam {
 namespace {
 
-Contour sixLobe() {
-    return Contour::build(loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json")).value())
-        .value();
-}
+using test::sixLobe;
 
 /// Consecutive segments meet within `tolerance` (the contour's own joints may be 1e-6 apart).
 void expectClosedAndContinuous(const ToolPath& path, double tolerance = 1e-9) {

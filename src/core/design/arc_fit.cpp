@@ -6,15 +6,12 @@
 #include <limits>
 
 #include "common/angles.h"
+#include "geometry/planar.h"
 
 namespace cam {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() * b.y() - a.y() * b.x();
-}
 
 /// The arc from a with unit tangent ta to b (a straight piece when b lies on the tangent line).
 FittedArc arcFrom(const Eigen::Vector2d& a, const Eigen::Vector2d& ta, const Eigen::Vector2d& b) {
@@ -74,8 +71,7 @@ struct Samples {
 
 /// The largest distance from samples i … j (indices mod n, j > i) to the two arcs.
 double deviation(const Samples& s, std::size_t i, std::size_t j,
-                 const std::array<FittedArc, 2>& arcs, double giveUpAbove,
-                 std::size_t stride = 1) {
+                 const std::array<FittedArc, 2>& arcs, double giveUpAbove, std::size_t stride = 1) {
     const std::size_t n = s.size() - 1;  // the last sample repeats the first
     double worst = 0.0;
     for (std::size_t k = i + 1; k < j; k += stride) {
@@ -98,8 +94,7 @@ double bestBiarc(const Samples& s, std::size_t i, std::size_t j, double toleranc
     std::array<FittedArc, 2> trial;
     const auto value = [&](double logLambda) {
         if (!biarc(a, ta, b, tb, chord * std::exp(logLambda), trial)) return kInfinity;
-        const double d =
-            deviation(s, i, j, trial, std::min(bestValue, 4.0 * tolerance), stride);
+        const double d = deviation(s, i, j, trial, std::min(bestValue, 4.0 * tolerance), stride);
         if (d < bestValue) {
             bestValue = d;
             best = trial;

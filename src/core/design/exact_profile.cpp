@@ -7,6 +7,7 @@
 
 #include "common/angles.h"
 #include "follower/jet.h"
+#include "geometry/planar.h"
 
 namespace cam {
 namespace {
@@ -22,9 +23,6 @@ Jet liftJet(const MotionDesign& design, double phi, bool swinging) {
 Eigen::Vector2d value(const JetVec& v) { return {v.x.c[0], v.y.c[0]}; }
 Eigen::Vector2d derivative1(const JetVec& v) { return {v.x.c[1], v.y.c[1]}; }
 Eigen::Vector2d derivative2(const JetVec& v) { return {2.0 * v.x.c[2], 2.0 * v.y.c[2]}; }
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() * b.y() - a.y() * b.x();
-}
 
 }  // namespace
 

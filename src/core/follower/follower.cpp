@@ -14,7 +14,6 @@
 namespace cam {
 
 using follower_detail::angleIntoSweep;
-using follower_detail::cross;
 using follower_detail::forEachRoot;
 using follower_detail::inSpanDirection;
 using follower_detail::polynomial;

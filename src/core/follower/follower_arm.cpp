@@ -242,7 +242,7 @@ FollowerState FollowerModel::armState(double phi, double omega, const Candidate&
     const Eigen::Vector2d slide = c0.dot(across) >= 0.0 ? along : Eigen::Vector2d(-along);
     st.pressureAngle = std::atan2(st.normal.dot(slide), st.normal.dot(away));
     const double speed = c1.norm();
-    const double curvature = follower_detail::cross(c1, c2) / (speed * speed * speed);
+    const double curvature = cross(c1, c2) / (speed * speed * speed);
     if (std::abs(curvature) * std::max(c0.norm(), 1.0) <= 1e-12) {
         st.rhoPitch = st.rhoProfile = std::numeric_limits<double>::infinity();
         return st;

@@ -10,16 +10,13 @@
 
 #include "common/angles.h"
 #include "follower/jet.h"
+#include "geometry/planar.h"
 
 namespace cam::follower_detail {
 
 /// How far outside its span a crossing may fall and still count (rad, or parameter fraction):
 /// joints meet at rounding distance, and an extended piece sticks out only by its square.
 inline constexpr double kSpanSlack = 1e-9;
-
-inline double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() * b.y() - a.y() * b.x();
-}
 
 /// The angle from `start` to `angle` in the direction of `sweep`, in [0, 2π).
 inline double angleIntoSweep(double angle, double start, double sweep) {

@@ -6,7 +6,7 @@ namespace cam {
 namespace {
 
 /// Below this a direction component counts as zero: the axis does not move in this step.
-constexpr double kTiny = 1e-12;
+constexpr double kTinyComponent = 1e-12;
 
 }  // namespace
 
@@ -33,7 +33,7 @@ double seedStepSpeed(const Eigen::Vector3d& n, const Eigen::Vector3d& vPrev, dou
     for (int i = 0; i < 3; ++i) {
         const double a = lim.accel[i];
         if (std::isinf(a)) continue;
-        if (std::abs(n[i]) < kTiny) {
+        if (std::abs(n[i]) < kTinyComponent) {
             // No motion of this axis in this step: only stopping its previous speed counts.
             if (std::abs(vPrev[i]) > 0) x = std::min(x, a * step / std::abs(vPrev[i]));
             continue;
