@@ -421,7 +421,7 @@
 <context>
     <name>cam::ContourEdits</name>
     <message>
-        <location filename="../../src/app/document/contour_edits.cpp" line="+16" />
+        <location filename="../../src/app/document/contour_edits.cpp" line="+18" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
@@ -476,7 +476,37 @@
         <translation>Ecke mit einem Schaltbogen von %1 mm verrundet</translation>
     </message>
     <message>
+        <location line="+6" />
+        <source>Select the arc the tangent line starts from first.</source>
+        <translation>Zuerst den Bogen auswählen, an dem die Tangente beginnt.</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Tangent line to the next arc</source>
+        <translation>Tangente zum nächsten Bogen</translation>
+    </message>
+    <message>
         <location line="+4" />
+        <source>Tangent line from %1 to %2</source>
+        <translation>Tangente von %1 nach %2</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Select the segment the arc continues first.</source>
+        <translation>Zuerst das Segment auswählen, das der Bogen fortsetzt.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Tangent arc through a point</source>
+        <translation>Tangentenbogen durch einen Punkt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Tangent arc: centre (%1, %2), radius %3 mm</source>
+        <translation>Tangentenbogen: Mittelpunkt (%1, %2), Radius %3 mm</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>Select the arc to approximate first.</source>
         <translation>Zuerst den anzunähernden Bogen auswählen.</translation>
     </message>
@@ -510,7 +540,7 @@
 <context>
     <name>cam::ContourView</name>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="+21" />
+        <location filename="../../src/app/views/contour_view.cpp" line="+47" />
         <source>x [mm]</source>
         <translation>x [mm]</translation>
     </message>
@@ -521,11 +551,11 @@
     </message>
     <message>
         <location line="+10" />
-        <source>Wheel: zoom · drag: pan · drag a square/diamond handle: move the centre or change the radius of the selected arc</source>
-        <translation>Mausrad: zoomen · Ziehen: verschieben · Griff ziehen: Mittelpunkt verschieben oder Radius des ausgewählten Bogens ändern</translation>
+        <source>Wheel: zoom · drag: pan · drag a square/diamond handle: move the centre or change the radius of the selected arc. Dragged points snap to centres, joints and the grid; Shift keeps one axis, Alt does not snap.</source>
+        <translation>Mausrad: zoomen · Ziehen: verschieben · quadratischen/rautenförmigen Griff ziehen: Mittelpunkt verschieben oder Radius des gewählten Bogens ändern. Gezogene Punkte rasten an Mittelpunkten, Übergängen und am Raster ein; Umschalt hält eine Achse fest, Alt rastet nicht ein.</translation>
     </message>
     <message>
-        <location line="+65" />
+        <location line="+66" />
         <source>centres</source>
         <translation>Mittelpunkte</translation>
     </message>
@@ -535,7 +565,7 @@
         <translation>Übergänge</translation>
     </message>
     <message>
-        <location line="+355" />
+        <location line="+445" />
         <location line="+8" />
         <source>Shape segment %1</source>
         <translation>Segment %1 formen</translation>
@@ -546,9 +576,87 @@
         <translation>Mittelpunkt von Segment %1 verschieben</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+10" />
         <source>Change radius of segment %1</source>
         <translation>Radius von Segment %1 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>cam::ControlPointsPanel</name>
+    <message>
+        <location filename="../../src/app/views/control_points_panel.cpp" line="+96" />
+        <source>x [mm]</source>
+        <translation>x [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>y [mm]</source>
+        <translation>y [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Handle length [mm]</source>
+        <translation>Grifflänge [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Handle angle [°]</source>
+        <translation>Griffwinkel [°]</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>Length of the handle, mm (the angle stays)</source>
+        <translation>Länge des Griffs, mm (der Winkel bleibt)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Direction of the handle, degrees counter-clockwise from +x (the length stays)</source>
+        <translation>Richtung des Griffs, Grad gegen den Uhrzeigersinn ab +x (die Länge bleibt)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Start handle P0→P1</source>
+        <translation>Anfangsgriff P0→P1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>End handle P3→P2</source>
+        <translation>Endgriff P3→P2</translation>
+    </message>
+    <message>
+        <location line="+39" />
+        <source>Edit %1 of segment %2</source>
+        <translation>%1 von Segment %2 ändern</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>Segment %1 is not a spline: its values are in the Segments table. Select a Bézier or Hermite row to edit its control points.</source>
+        <translation>Segment %1 ist kein Spline: seine Werte stehen in der Segmenttabelle. Eine Bézier- oder Hermite-Zeile auswählen, um ihre Kontrollpunkte zu bearbeiten.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Select a Bézier or Hermite row to edit its control points.</source>
+        <translation>Eine Bézier- oder Hermite-Zeile auswählen, um ihre Kontrollpunkte zu bearbeiten.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Segment %1, Bézier: control points P0…P3. Moving an end point moves its handle with it.</source>
+        <translation>Segment %1, Bézier: Kontrollpunkte P0…P3. Ein verschobener Endpunkt nimmt seinen Griff mit.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Segment %1, Hermite: end points p0, p3 and end tangents t0, t1 (t0 = 3·(P1 − P0)). Moving an end point keeps its tangent.</source>
+        <translation>Segment %1, Hermite: Endpunkte p0, p3 und Endtangenten t0, t1 (t0 = 3·(P1 − P0)). Ein verschobener Endpunkt behält seine Tangente.</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>%1 %2: a component of the tangent vector, mm</source>
+        <translation>%1 %2: eine Komponente des Tangentenvektors, mm</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 %2, mm</source>
+        <translation>%1 %2, mm</translation>
     </message>
 </context>
 <context>
@@ -906,7 +1014,7 @@
 <context>
     <name>cam::FollowerPanel</name>
     <message>
-        <location filename="../../src/app/views/follower_panel.cpp" line="+44" />
+        <location filename="../../src/app/views/follower_panel.cpp" line="+45" />
         <source>Knife edge</source>
         <translation>Spitze (Messerkante)</translation>
     </message>
@@ -1111,7 +1219,7 @@
         <translation>Der Stößel erreicht das Profil bei %1 nicht: er springt von (%2, %3) nach (%4, %5)</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+6" />
         <source>Smallest radius of curvature of the profile: %1 at %2</source>
         <translation>Kleinster Krümmungsradius des Profils: %1 bei %2</translation>
     </message>
@@ -1142,7 +1250,7 @@
 <context>
     <name>cam::JointsPanel</name>
     <message>
-        <location filename="../../src/app/views/joints_panel.cpp" line="+13" />
+        <location filename="../../src/app/views/joints_panel.cpp" line="+14" />
         <source>Joint</source>
         <translation>Übergang</translation>
     </message>
@@ -1451,7 +1559,7 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+78" />
+        <location filename="../../src/app/mainwindow.cpp" line="+81" />
         <source>The recovery copy could not be written: %1</source>
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -1518,17 +1626,17 @@
     </message>
     <message>
         <location line="+2" />
-        <location line="+37" />
+        <location line="+38" />
         <source>Synthesize</source>
         <translation>Synthetisieren</translation>
     </message>
     <message>
-        <location line="-12" />
+        <location line="-13" />
         <source>Synthesis cancelled: the contour is unchanged.</source>
         <translation>Synthese abgebrochen: die Kontur ist unverändert.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>The design, follower or speed changed while synthesizing: press Synthesize again.</source>
         <translation>Entwurf, Stößel oder Drehzahl haben sich während der Synthese geändert: bitte erneut synthetisieren.</translation>
     </message>
@@ -1553,7 +1661,12 @@
         </translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+26" />
+        <source>Control Points</source>
+        <translation>Kontrollpunkte</translation>
+    </message>
+    <message>
+        <location line="+34" />
         <source>Machining limits and times (Ctrl+M)</source>
         <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
     </message>
@@ -1573,7 +1686,7 @@
         <translation>Cursor bei %1°</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+29" />
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
@@ -1624,8 +1737,8 @@
     </message>
     <message>
         <location line="+3" />
-        <source>&amp;Round Corner…</source>
-        <translation>Ecke &amp;verrunden …</translation>
+        <source>R&amp;ound Corner…</source>
+        <translation>E&amp;cke verrunden …</translation>
     </message>
     <message>
         <location line="+4" />
@@ -1645,7 +1758,53 @@
         <translation>Das Segment nach der zu verrundenden Ecke auswählen.</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+13" />
+        <source>Tangent &amp;Line to Next Arc</source>
+        <translation>&amp;Tangente zum nächsten Bogen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Join the selected arc to the next one by the line tangent to both; the windows follow from the tangent points</source>
+        <translation>Den gewählten Bogen mit dem nächsten durch die Gerade verbinden, die beide berührt; die Fenster ergeben sich aus den Berührpunkten</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Tangent Line</source>
+        <translation>Tangente</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Tangent &amp;Arc Through Point</source>
+        <translation>Tangentenbo&amp;gen durch Punkt</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Continue the selected segment by a tangent arc through a point you click in the contour view (Esc cancels)</source>
+        <translation>Das gewählte Segment durch einen tangentialen Bogen durch einen in der Konturansicht angeklickten Punkt fortsetzen (Esc bricht ab)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+14" />
+        <source>Tangent Arc</source>
+        <translation>Tangentenbogen</translation>
+    </message>
+    <message>
+        <location line="-13" />
+        <source>Select the segment the arc continues first.</source>
+        <translation>Zuerst das Segment auswählen, das der Bogen fortsetzt.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Click the point the tangent arc passes through (Esc cancels)</source>
+        <translation>Den Punkt anklicken, durch den der Tangentenbogen geht (Esc bricht ab)</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Tangent arc cancelled</source>
+        <translation>Tangentenbogen abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>Approximate Arc</source>
         <translation>Bogen annähern</translation>
     </message>
@@ -1655,7 +1814,7 @@
         <translation>Über Camwright</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>&amp;Keyboard Shortcuts</source>
         <translation>&amp;Tastenkürzel</translation>
     </message>
@@ -1670,29 +1829,29 @@
         <translation>&lt;h3&gt;Camwright %1&lt;/h3&gt;&lt;p&gt;Kurvenscheiben entwerfen und prüfen: exakte Polarkinematik des Stößels, Entwurf aus Bewegungsgesetzen, Bearbeitungszeit, Export für CAD, CNC und Servoantriebe.&lt;/p&gt;&lt;p&gt;Lizenz: GPL-3.0-or-later.&lt;/p&gt;&lt;p&gt;Erstellt mit&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (LGPL-3.0)&lt;/li&gt;&lt;li&gt;QCustomPlot %3 (GPL-3.0)&lt;/li&gt;&lt;li&gt;Eigen %4 (MPL-2.0)&lt;/li&gt;&lt;li&gt;JSON for Modern C++ (nlohmann-json) %5 (MIT)&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
     <message>
-        <location line="+64" />
+        <location line="+67" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+10" />
         <location line="+42" />
         <source>an untitled project</source>
         <translation>einem unbenannten Projekt</translation>
     </message>
     <message>
-        <location line="-40" />
-        <location line="+21" />
+        <location line="-39" />
+        <location line="+20" />
         <source>Recover Unsaved Changes</source>
         <translation>Ungesicherte Änderungen wiederherstellen</translation>
     </message>
     <message>
-        <location line="-20" />
+        <location line="-19" />
         <source>Camwright did not close properly. Unsaved changes to %1, autosaved %2, can be restored.</source>
         <translation>Camwright wurde nicht ordnungsgemäß beendet. Ungesicherte Änderungen an %1, automatisch gesichert %2, können wiederhergestellt werden.</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+5" />
         <source>Restore</source>
         <translation>Wiederherstellen</translation>
     </message>
@@ -1724,12 +1883,12 @@
 %2</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+9" />
         <source>Restored the unsaved changes of %1: save them to keep them.</source>
         <translation>Ungesicherte Änderungen an %1 wiederhergestellt: speichern, um sie zu behalten.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+6" />
         <source>%1 is no recovery copy of a session that ended.</source>
         <translation>%1 ist keine Wiederherstellungskopie einer beendeten Sitzung.</translation>
     </message>
@@ -1759,7 +1918,7 @@
         <translation>Berechnung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+11" />
         <source>%1 samples computed in %2 ms</source>
         <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
     </message>
@@ -1794,7 +1953,7 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-360" />
+        <location line="-400" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -1909,7 +2068,7 @@
 <context>
     <name>cam::MotionDesignPanel</name>
     <message>
-        <location filename="../../src/app/views/motion_design_panel.cpp" line="+49" />
+        <location filename="../../src/app/views/motion_design_panel.cpp" line="+50" />
         <source>New Design</source>
         <translation>Neuer Entwurf</translation>
     </message>
@@ -1944,7 +2103,7 @@
         <translation>Druckwinkel über der Grenze ablehnen</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>Synthesize refuses a design whose pressure angle exceeds the follower's limit (otherwise it is only reported)</source>
         <translation>Synthetisieren lehnt einen Entwurf ab, dessen Druckwinkel die Grenze des Stößels überschreitet (sonst wird er nur gemeldet)</translation>
     </message>
@@ -2001,7 +2160,7 @@
         <translation>Grundkreisradius ändern</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>Change tolerance</source>
         <translation>Toleranz ändern</translation>
     </message>
@@ -2016,7 +2175,7 @@
         <translation>Neuer Entwurf</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+15" />
         <source>Split design segment %1</source>
         <translation>Bewegungsabschnitt %1 teilen</translation>
     </message>
@@ -2026,7 +2185,7 @@
         <translation>Bewegungsabschnitt %1 löschen</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+22" />
         <source>This project has no motion design. New Design starts one: lay out the follower's motion, then Synthesize makes the contour from it.</source>
         <translation>Dieses Projekt hat keinen Bewegungsentwurf. „Neuer Entwurf“ legt einen an: die Bewegung des Stößels festlegen, dann erzeugt Synthetisieren daraus die Kontur.</translation>
     </message>
@@ -2094,7 +2253,7 @@
         <translation>Noch keine Kontur: Synthetisieren erzeugt sie aus diesem Entwurf.</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+11" />
         <source>Synthesize fits the exact profile with tangent arcs within the tolerance and replaces the contour (one undo step).</source>
         <translation>Synthetisieren nähert das exakte Profil innerhalb der Toleranz durch tangentiale Bögen an und ersetzt die Kontur (ein Rückgängig-Schritt).</translation>
     </message>
@@ -2373,43 +2532,43 @@ Möchten Sie die Datei ersetzen?</translation>
 <context>
     <name>cam::SegmentTableModel</name>
     <message>
-        <location filename="../../src/app/models/segment_table_model.cpp" line="+81" />
-        <location line="+51" />
+        <location filename="../../src/app/models/segment_table_model.cpp" line="+82" />
+        <location line="+53" />
         <source>Arc</source>
         <translation>Bogen</translation>
     </message>
     <message>
-        <location line="-51" />
-        <location line="+51" />
+        <location line="-53" />
+        <location line="+53" />
         <source>Line</source>
         <translation>Gerade</translation>
     </message>
     <message>
-        <location line="-51" />
-        <location line="+51" />
+        <location line="-53" />
+        <location line="+53" />
         <source>Bézier</source>
         <translation>Bézier</translation>
     </message>
     <message>
-        <location line="-51" />
-        <location line="+51" />
+        <location line="-53" />
+        <location line="+53" />
         <source>Hermite</source>
         <translation>Hermite</translation>
     </message>
     <message>
-        <location line="-50" />
-        <location line="+62" />
+        <location line="-52" />
+        <location line="+64" />
         <source>outer</source>
         <translation>außen</translation>
     </message>
     <message>
-        <location line="-62" />
-        <location line="+62" />
+        <location line="-64" />
+        <location line="+64" />
         <source>inner</source>
         <translation>innen</translation>
     </message>
     <message>
-        <location line="-55" />
+        <location line="-57" />
         <source>outer: far intersection of the ray with the circle; inner: near intersection</source>
         <translation>außen: ferner Schnittpunkt des Strahls mit dem Kreis (r_oben); innen: naher Schnittpunkt (r_unten)</translation>
     </message>
@@ -2424,22 +2583,22 @@ Möchten Sie die Datei ersetzen?</translation>
         <translation>Polares Fenster dieses Segments, Grad</translation>
     </message>
     <message>
-        <location line="+10" />
-        <source>Drag the handles in the contour view to shape the curve.</source>
-        <translation>Die Griffe in der Konturansicht ziehen, um die Kurve zu formen.</translation>
+        <location line="+11" />
+        <source>Drag the handles in the contour view to shape the curve, or type its control points in the Control Points tab.</source>
+        <translation>Die Griffe in der Konturansicht ziehen, um die Kurve zu formen, oder ihre Kontrollpunkte im Reiter Kontrollpunkte eingeben.</translation>
     </message>
     <message>
-        <location line="+65" />
+        <location line="+66" />
         <source>What the segment is: an arc of a circle, a line, or a cubic spline piece (Bézier or Hermite)</source>
         <translation>Art des Segments: ein Kreisbogen, eine Strecke oder ein kubisches Spline-Stück (Bézier oder Hermite)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Which of the two points where the follower's ray meets the arc's circle the contour takes: outer, the one farther from the rotation centre (a lobe); inner, the nearer one (a notch, a concave flank)</source>
         <translation>Welchen der beiden Punkte, in denen der Strahl des Stößels den Kreis des Bogens trifft, die Kontur nimmt: außen den vom Drehpunkt weiter entfernten (ein Nocken), innen den näheren (eine Kerbe, eine konkave Flanke)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>Centre of the arc's circle, mm</source>
         <translation>Mittelpunkt des Kreises, mm</translation>
     </message>
@@ -2585,7 +2744,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>cam::StateReadout</name>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="+14" />
+        <location filename="../../src/app/views/state_readout.cpp" line="+15" />
         <source>t</source>
         <translation>t</translation>
     </message>

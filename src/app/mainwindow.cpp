@@ -22,6 +22,7 @@
 #include <QTableView>
 #include <QTimer>
 #include <cmath>
+#include <utility>
 
 #include "common/angles.h"
 #include "dialogs/contour_dialogs.h"
@@ -38,6 +39,7 @@
 #include "models/segment_table_model.h"
 #include "ui_mainwindow.h"
 #include "views/contour_view.h"
+#include "views/control_points_panel.h"
 #include "views/follower_panel.h"
 #include "views/joints_panel.h"
 #include "views/kinematics_plots.h"
@@ -333,8 +335,18 @@ void MainWindow::setUpDocks() {
     table->verticalHeader()->setDefaultSectionSize(table->fontMetrics().height() + 6);
     table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                            QAbstractItemView::AnyKeyPressed);
+    // A spline's control points by value, tabbed with the table and the joints.
+    m_controlPointsDock = new QDockWidget(tr("Control Points"), this);
+    m_controlPointsDock->setObjectName("controlPointsDock");
+    m_controlPoints = new ControlPointsPanel(m_document, m_controlPointsDock);
+    m_controlPoints->setObjectName("controlPointsPanel");
+    m_controlPointsDock->setWidget(m_controlPoints);
+    addDockWidget(Qt::BottomDockWidgetArea, m_controlPointsDock);
     connect(table->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
-            [this](const QModelIndex& current) { m_contour->setSelectedSegment(current.row()); });
+            [this](const QModelIndex& current) {
+                m_contour->setSelectedSegment(current.row());
+                m_controlPoints->setRow(current.row());
+            });
 
     m_motion = new MotionPanel(m_document, m_ui->motionDock);
     m_ui->motionDock->setWidget(m_motion);
@@ -344,6 +356,7 @@ void MainWindow::setUpDocks() {
     m_joints = new JointsPanel(m_ui->jointsDock);
     m_ui->jointsDock->setWidget(m_joints);
     tabifyDockWidget(m_ui->segmentsDock, m_ui->jointsDock);
+    tabifyDockWidget(m_ui->jointsDock, m_controlPointsDock);
     m_ui->segmentsDock->raise();
     connect(m_joints, &JointsPanel::jointPicked, this, [this](int, int right, double phi) {
         if (!m_shown) return;
@@ -399,8 +412,8 @@ void MainWindow::setUpDocks() {
     });
     resizeDocks({m_ui->motionDock, m_ui->readoutDock}, {140, 400}, Qt::Vertical);
     for (QDockWidget* dock :
-         {m_ui->segmentsDock, m_ui->jointsDock, m_ui->motionDock, m_ui->readoutDock,
-          m_ui->machiningDock, m_ui->pathStudyDock, m_followerDock}) {
+         {m_ui->segmentsDock, m_ui->jointsDock, m_controlPointsDock, m_ui->motionDock,
+          m_ui->readoutDock, m_ui->machiningDock, m_ui->pathStudyDock, m_followerDock}) {
         m_ui->menuView->addAction(dock->toggleViewAction());
     }
 }
@@ -467,7 +480,7 @@ void MainWindow::setUpActions() {
                    tr("New Contour Through Points"));
         }
     });
-    auto* round = new QAction(tr("&Round Corner…"), this);
+    auto* round = new QAction(tr("R&ound Corner…"), this);
     round->setObjectName("actionRoundCorner");
     round->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
     round->setToolTip(
@@ -490,6 +503,46 @@ void MainWindow::setUpActions() {
         if (const auto rho = ContourDialogs::askSwitchArcRadius(this, range.value().maxRadius)) {
             report(ContourEdits::roundCorner(*m_document, joint, *rho), tr("Round Corner"));
         }
+    });
+    auto* tangentLine = new QAction(tr("Tangent &Line to Next Arc"), this);
+    tangentLine->setObjectName("actionTangentLine");
+    tangentLine->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
+    tangentLine->setToolTip(
+        tr("Join the selected arc to the next one by the line tangent to both; the windows "
+           "follow from the tangent points"));
+    m_ui->menuEdit->addAction(tangentLine);
+    connect(tangentLine, &QAction::triggered, this, [this] {
+        report(ContourEdits::tangentLineToNext(*m_document, selectedRow()), tr("Tangent Line"));
+    });
+    auto* tangentArc = new QAction(tr("Tangent &Arc Through Point"), this);
+    tangentArc->setObjectName("actionTangentArc");
+    tangentArc->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_A));
+    tangentArc->setToolTip(
+        tr("Continue the selected segment by a tangent arc through a point you click in the "
+           "contour view (Esc cancels)"));
+    m_ui->menuEdit->addAction(tangentArc);
+    connect(tangentArc, &QAction::triggered, this, [this] {
+        const int row = selectedRow();
+        if (row < 0) {
+            QMessageBox::information(this, tr("Tangent Arc"),
+                                     tr("Select the segment the arc continues first."));
+            return;
+        }
+        m_pickRow = row;
+        m_contour->beginPointPick();
+        statusBar()->showMessage(
+            tr("Click the point the tangent arc passes through (Esc cancels)"));
+    });
+    connect(m_contour, &ContourView::pointPicked, this, [this](const QPointF& p) {
+        const int row = std::exchange(m_pickRow, -1);
+        if (row < 0) return;
+        statusBar()->clearMessage();
+        report(ContourEdits::tangentArcThrough(*m_document, row, {p.x(), p.y()}),
+               tr("Tangent Arc"));
+    });
+    connect(m_contour, &ContourView::pickCancelled, this, [this] {
+        m_pickRow = -1;
+        statusBar()->showMessage(tr("Tangent arc cancelled"), 3000);
     });
     connect(approximate, &QAction::triggered, this, [this] {
         if (const auto error = ContourDialogs::askRadialError(this)) {
@@ -568,6 +621,8 @@ void MainWindow::setUpIcons() {
         {"actionApproximateArc", "camwright-approximate-arc"},
         {"actionContourThroughPoints", "camwright-through-points"},
         {"actionRoundCorner", "camwright-round-corner"},
+        {"actionTangentLine", "camwright-tangent-line"},
+        {"actionTangentArc", "camwright-tangent-arc"},
         {"actionSynthesize", "camwright-synthesize"},
         {"actionKeyboardShortcuts", "preferences-desktop-keyboard"},
         {"actionPlay", "media-playback-start"},
@@ -576,10 +631,15 @@ void MainWindow::setUpIcons() {
         if (auto* action = findChild<QAction*>(object)) set(action, icon);
     }
     const std::pair<QDockWidget*, const char*> docks[] = {
-        {m_ui->segmentsDock, "camwright-segments"},   {m_ui->jointsDock, "camwright-joints"},
-        {m_ui->motionDock, "camwright-motion"},       {m_ui->readoutDock, "camwright-readout"},
-        {m_ui->machiningDock, "camwright-machining"}, {m_ui->pathStudyDock, "camwright-path-study"},
-        {m_followerDock, "camwright-follower"},       {m_designDock, "camwright-motion-design"},
+        {m_ui->segmentsDock, "camwright-segments"},
+        {m_ui->jointsDock, "camwright-joints"},
+        {m_ui->motionDock, "camwright-motion"},
+        {m_ui->readoutDock, "camwright-readout"},
+        {m_ui->machiningDock, "camwright-machining"},
+        {m_ui->pathStudyDock, "camwright-path-study"},
+        {m_followerDock, "camwright-follower"},
+        {m_designDock, "camwright-motion-design"},
+        {m_controlPointsDock, "camwright-control-points"},
     };
     for (const auto& [dock, icon] : docks) set(dock->toggleViewAction(), icon);
     connect(m_playAction, &QAction::toggled, this, [this](bool on) {

@@ -28,6 +28,7 @@ class ContourView;
 class KinematicsPlots;
 class JointsPanel;
 class PathStudyPanel;
+class ControlPointsPanel;
 class FollowerPanel;
 class MachiningPanel;
 class MotionPanel;
@@ -65,6 +66,7 @@ public:
     [[nodiscard]] ContourView* contourView() const { return m_contour; }
     [[nodiscard]] StateReadout* readout() const { return m_readout; }
     [[nodiscard]] FollowerPanel* followerPanel() const { return m_follower; }
+    [[nodiscard]] ControlPointsPanel* controlPointsPanel() const { return m_controlPoints; }
     /// @brief The cursor's instant (s, within the turn).
     [[nodiscard]] double cursorTime() const { return m_cursorT; }
     [[nodiscard]] QAction* playAction() const { return m_playAction; }
@@ -173,6 +175,8 @@ private:
     FollowerPanel* m_follower;
     QDockWidget* m_followerDock;
     JointsPanel* m_joints;
+    ControlPointsPanel* m_controlPoints;
+    QDockWidget* m_controlPointsDock;
     PathStudyPanel* m_pathStudy;
     QLabel* m_validationLabel;
     QLabel* m_computeLabel;
@@ -182,6 +186,7 @@ private:
     /// Play: turns the cam at a fraction of its real speed, the cursor (and the follower on
     /// the contour) moving with it; only markers move, nothing is computed.
     QAction* m_playAction = nullptr;
+    int m_pickRow = -1;  ///< the row a tangent arc continues, while a point is being picked
     QComboBox* m_playSpeed = nullptr;
     QTimer* m_playTimer = nullptr;
     QElapsedTimer m_playClock;

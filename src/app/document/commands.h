@@ -35,6 +35,7 @@ enum class EditedField {
     PhiEnd,
     FirstHandleDrag,   ///< the contour view's first handle: an arc's centre, a spline's P1
     SecondHandleDrag,  ///< the second: an arc's radius, a spline's P2
+    ControlPoint,      ///< a spline's control point or handle typed in the Control Points dock
     Whole
 };
 

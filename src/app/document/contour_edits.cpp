@@ -2,12 +2,14 @@
 
 #include <QLocale>
 
+#include "construction/tangents.h"
 #include "contour/fit_windows.h"
 #include "document/commands.h"
 #include "document/project_document.h"
 #include "fillet/fillet.h"
 #include "io/number_rows.h"
 #include "spline/circle_approximation.h"
+#include "widgets/number_format.h"
 
 namespace cam {
 
@@ -82,6 +84,42 @@ EditOutcome ContourEdits::roundCorner(ProjectDocument& document, int joint, doub
         new ReplaceContour(&document, result.value().contour, tr("Round corner")));
     return EditOutcome::done(
         tr("Corner rounded with a %1 mm switch arc").arg(QLocale().toString(rho, 'g', 6)), joint);
+}
+
+EditOutcome ContourEdits::tangentLineToNext(ProjectDocument& document, int row) {
+    const auto& contour = document.project().contour;
+    if (row < 0 || row >= static_cast<int>(contour.size())) {
+        return EditOutcome::refused(tr("Select the arc the tangent line starts from first."));
+    }
+    const std::size_t joint = (static_cast<std::size_t>(row) + 1) % contour.size();
+    const auto result = tangentLineJoint(contour, joint);
+    if (!result.ok()) return EditOutcome::refused(diagnosticsText(result.errors()));
+    const TangentLineChoice& line = result.value().choices.front();
+    document.undoStack()->push(
+        new ReplaceContour(&document, line.contour, tr("Tangent line to the next arc")));
+    const auto point = [](const Eigen::Vector2d& p) {
+        return QStringLiteral("(%1, %2)").arg(formatNumber(p.x(), 6), formatNumber(p.y(), 6));
+    };
+    return EditOutcome::done(
+        tr("Tangent line from %1 to %2").arg(point(line.tangentPoint1), point(line.tangentPoint2)),
+        static_cast<int>(line.lineIndex));
+}
+
+EditOutcome ContourEdits::tangentArcThrough(ProjectDocument& document, int row,
+                                            const Eigen::Vector2d& point) {
+    const auto& contour = document.project().contour;
+    if (row < 0 || row >= static_cast<int>(contour.size())) {
+        return EditOutcome::refused(tr("Select the segment the arc continues first."));
+    }
+    const auto result = arcThroughPoint(contour, static_cast<std::size_t>(row), point);
+    if (!result.ok()) return EditOutcome::refused(diagnosticsText(result.errors()));
+    const ArcThroughPointResult& arc = result.value();
+    document.undoStack()->push(
+        new ReplaceContour(&document, arc.contour, tr("Tangent arc through a point")));
+    return EditOutcome::done(tr("Tangent arc: centre (%1, %2), radius %3 mm")
+                                 .arg(formatNumber(arc.center.x(), 6),
+                                      formatNumber(arc.center.y(), 6), formatNumber(arc.radius, 6)),
+                             static_cast<int>(arc.arcIndex));
 }
 
 EditOutcome ContourEdits::approximateArc(ProjectDocument& document, int row, double maxErrorMm) {

@@ -6,6 +6,8 @@
 #include <QCoreApplication>
 #include <QString>
 
+#include <Eigen/Core>
+
 #include "spline/teach_in.h"
 
 namespace cam {
@@ -43,6 +45,13 @@ public:
     /// @brief Rounds the corner at joint K (between rows K-1 and K) by a tangent arc of radius
     /// rho; the problem gives the feasible range when rho does not fit.
     static EditOutcome roundCorner(ProjectDocument& document, int joint, double rho);
+    /// @brief Joins arc `row` to the next arc (the first after the last) by the straight line
+    /// tangent to both, the windows written from the tangent points (construction/tangents.h).
+    /// Which of the common tangents follows from the two arcs' branches.
+    static EditOutcome tangentLineToNext(ProjectDocument& document, int row);
+    /// @brief Inserts after `row` the arc that continues it tangentially through `point` (mm).
+    static EditOutcome tangentArcThrough(ProjectDocument& document, int row,
+                                         const Eigen::Vector2d& point);
     /// @brief Replaces arc `row` by Bézier pieces within `maxErrorMm` radial error.
     static EditOutcome approximateArc(ProjectDocument& document, int row, double maxErrorMm);
     /// @brief Replaces the contour by a closed Bézier spline through the points ("x, y" per line,

@@ -102,7 +102,9 @@ QVariant SegmentTableModel::data(const QModelIndex& index, int role) const {
             const HermiteCurve h = HermiteCurve::of(b);
             const Eigen::Vector2d points[4] = {b.p[0], bezier ? b.p[1] : h.t0,
                                                bezier ? b.p[2] : h.p3, bezier ? b.p[3] : h.t1};
-            QStringList lines{tr("Drag the handles in the contour view to shape the curve.")};
+            QStringList lines{
+                tr("Drag the handles in the contour view to shape the curve, or type its "
+                   "control points in the Control Points tab.")};
             for (int i = 0; i < 4; ++i) {
                 lines << QStringLiteral("%1 = (%2, %3)")
                              .arg(names[i], formatNumber(points[i].x(), 8),

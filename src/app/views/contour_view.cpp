@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "document/commands.h"
 #include "models/delegates.h"
@@ -12,7 +13,32 @@
 namespace cam {
 namespace {
 constexpr double kHandlePickPixels = 9.0;
+
+/// The grid step as mantissa × 10^exponent, mantissa 1, 2 or 5.
+struct GridStep {
+    double mantissa = 1.0;
+    int exponent = 0;
+    [[nodiscard]] double value() const { return multiple(1.0); }
+    /// n steps, the double nearest the decimal n·mantissa·10^exponent (0.3, not
+    /// 0.30000000000000004).
+    [[nodiscard]] double multiple(double n) const {
+        const double scale = std::pow(10.0, std::abs(exponent));
+        return exponent >= 0 ? n * mantissa * scale : n * mantissa / scale;
+    }
+    [[nodiscard]] double round(double v) const { return multiple(std::round(v / value())); }
+};
+
+GridStep gridStepFor(double minimumMm) {
+    if (!(minimumMm > 0.0) || !std::isfinite(minimumMm)) return {};
+    const int exponent = static_cast<int>(std::floor(std::log10(minimumMm)));
+    for (double mantissa : {1.0, 2.0, 5.0}) {
+        const GridStep step{mantissa, exponent};
+        if (step.value() >= minimumMm) return step;
+    }
+    return {1.0, exponent + 1};
 }
+
+}  // namespace
 
 ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     : QCustomPlot(parent), m_document(document) {
@@ -30,7 +56,8 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
             qOverload<const QCPRange&>(&QCPAxis::setRange));
     setToolTip(
         tr("Wheel: zoom · drag: pan · drag a square/diamond handle: move the centre or "
-           "change the radius of the selected arc"));
+           "change the radius of the selected arc. Dragged points snap to centres, joints and "
+           "the grid; Shift keeps one axis, Alt does not snap."));
 
     // Centres and joints above the segments' curves (which come and go with the segments): a
     // marker never disappears under the line it marks. Above them the follower ray and its
@@ -125,6 +152,12 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     origin->setStyle(QCPItemTracer::tsPlus);
     origin->setSize(12);
     origin->setPen(QPen(Qt::black));
+
+    m_pickMarker = new QCPItemTracer(this);
+    m_pickMarker->setLayer(m_cursorLayer);
+    m_pickMarker->setStyle(QCPItemTracer::tsCrosshair);
+    m_pickMarker->setPen(QPen(QColor(0, 90, 200), 1, Qt::DotLine));
+    m_pickMarker->setVisible(false);
 
     m_staleLabel = new StaleLabel(this);
 
@@ -430,12 +463,95 @@ ContourView::Handle ContourView::handleAt(const QPointF& pixel) const {
     return Handle::None;
 }
 
+double ContourView::gridStep() const {
+    const double mmPerPixel = std::abs(xAxis->pixelToCoord(1.0) - xAxis->pixelToCoord(0.0));
+    return gridStepFor(kGridPixels * mmPerPixel).value();
+}
+
+Eigen::Vector2d ContourView::snap(const QPointF& pixel, Qt::KeyboardModifiers modifiers,
+                                  const Eigen::Vector2d* origin, int skipSegment) const {
+    Eigen::Vector2d p(xAxis->pixelToCoord(pixel.x()), yAxis->pixelToCoord(pixel.y()));
+    if (!(modifiers & Qt::AltModifier)) {
+        const double mmPerPixel = std::abs(xAxis->pixelToCoord(1.0) - xAxis->pixelToCoord(0.0));
+        // The nearest of the rotation centre, the arcs' centres and the joints, if close.
+        std::optional<Eigen::Vector2d> nearest;
+        double best = kSnapPixels * mmPerPixel;
+        const auto consider = [&](const Eigen::Vector2d& q) {
+            const double d = (q - p).norm();
+            if (std::isfinite(d) && d <= best) {
+                best = d;
+                nearest = q;
+            }
+        };
+        consider(Eigen::Vector2d::Zero());
+        const auto& contour = m_document->project().contour;
+        for (std::size_t k = 0; k < contour.size(); ++k) {
+            if (static_cast<int>(k) == skipSegment) continue;
+            if (const Arc* arc = contour[k].as<Arc>()) consider(arc->center);
+            consider(pointOnSegment(contour[k], contour[k].phiEndDeg));
+        }
+        if (nearest) {
+            p = *nearest;
+        } else {
+            const GridStep step = gridStepFor(kGridPixels * mmPerPixel);
+            p = {step.round(p.x()), step.round(p.y())};
+        }
+    }
+    if (origin && (modifiers & Qt::ShiftModifier)) {
+        // Keep the axis along which the mouse moved less.
+        const Eigen::Vector2d raw(xAxis->pixelToCoord(pixel.x()), yAxis->pixelToCoord(pixel.y()));
+        if (std::abs(raw.x() - origin->x()) >= std::abs(raw.y() - origin->y())) {
+            p.y() = origin->y();
+        } else {
+            p.x() = origin->x();
+        }
+    }
+    return p;
+}
+
+void ContourView::beginPointPick() {
+    m_picking = true;
+    setCursor(Qt::CrossCursor);
+    setFocus(Qt::OtherFocusReason);
+}
+
+void ContourView::cancelPointPick() {
+    if (!m_picking) return;
+    m_picking = false;
+    unsetCursor();
+    m_pickMarker->setVisible(false);
+    m_cursorLayer->replot();
+    emit pickCancelled();
+}
+
+void ContourView::keyPressEvent(QKeyEvent* event) {
+    if (m_picking && event->key() == Qt::Key_Escape) {
+        cancelPointPick();
+        event->accept();
+        return;
+    }
+    QCustomPlot::keyPressEvent(event);
+}
+
 void ContourView::mousePressEvent(QMouseEvent* event) {
+    if (m_picking && event->button() == Qt::LeftButton) {
+        const Eigen::Vector2d p = snap(event->position(), event->modifiers());
+        m_picking = false;
+        unsetCursor();
+        m_pickMarker->setVisible(false);
+        m_cursorLayer->replot();
+        event->accept();
+        emit pointPicked(QPointF(p.x(), p.y()));
+        return;
+    }
     if (event->button() == Qt::LeftButton) {
         m_dragging = handleAt(event->position());
         if (m_dragging != Handle::None) {
             m_gesture = nextGestureId();
             setInteraction(QCP::iRangeDrag, false);
+            const QCPGraph* handle = m_dragging == Handle::First ? m_firstHandle : m_secondHandle;
+            const auto it = handle->data()->constBegin();
+            m_dragOrigin = {it->key, it->value};
         }
     }
     QCustomPlot::mousePressEvent(event);
@@ -451,7 +567,8 @@ void ContourView::mouseMoveEvent(QMouseEvent* event) {
         const EditedField field =
             first ? EditedField::FirstHandleDrag : EditedField::SecondHandleDrag;
         QString text;
-        const Eigen::Vector2d at(x, y);
+        const Eigen::Vector2d at =
+            snap(event->position(), event->modifiers(), &m_dragOrigin, first ? m_selected : -1);
         if (CubicBezier* b = s.as<CubicBezier>()) {
             b->p[first ? 1 : 2] = at;  // P1 (square) or P2 (diamond)
             text = tr("Shape segment %1").arg(m_selected);
@@ -464,16 +581,29 @@ void ContourView::mouseMoveEvent(QMouseEvent* event) {
             }
             text = tr("Shape segment %1").arg(m_selected);
         } else if (Arc* arc = s.as<Arc>(); arc && first) {
-            arc->center = {x, y};
+            arc->center = at;
             text = tr("Move centre of segment %1").arg(m_selected);
         } else if (arc) {
-            arc->radius = std::max(1e-3, std::hypot(x - arc->center.x(), y - arc->center.y()));
+            // The radius itself snaps to the grid (Alt: not at all).
+            double radius = std::hypot(x - arc->center.x(), y - arc->center.y());
+            if (!(event->modifiers() & Qt::AltModifier)) {
+                radius = gridStepFor(kGridPixels *
+                                     std::abs(xAxis->pixelToCoord(1.0) - xAxis->pixelToCoord(0.0)))
+                             .round(radius);
+            }
+            arc->radius = std::max(1e-3, radius);
             text = tr("Change radius of segment %1").arg(m_selected);
         }
         m_document->undoStack()->push(
             new EditSegment(m_document, m_selected, s, field, text, m_gesture));
         event->accept();
         return;
+    }
+    if (m_picking) {
+        const Eigen::Vector2d p = snap(event->position(), event->modifiers());
+        m_pickMarker->position->setCoords(p.x(), p.y());
+        m_pickMarker->setVisible(true);
+        m_cursorLayer->replot();
     }
     if (x != 0.0 || y != 0.0) emit cursorAngleChanged(std::atan2(y, x));
     QCustomPlot::mouseMoveEvent(event);

@@ -1,10 +1,12 @@
 #pragma once
 /// @file
 /// @brief The contour in the cam's plane: segments coloured, centres and joints marked, the
-/// follower ray at the cursor angle; drag an arc's centre or radius handle to edit it.
+/// follower ray at the cursor angle; drag an arc's centre or radius handle to edit it, or pick
+/// a point for a construction. Dragged and picked points snap (see snap()).
 
 #include <qcustomplot.h>
 
+#include <Eigen/Core>
 #include <array>
 
 #include "engine/compute_result.h"
@@ -45,7 +47,29 @@ public:
     /// @brief Why the contour shown is out of date; empty when it is the current project's.
     [[nodiscard]] QString staleReason() const;
 
+    /// @brief Where a dragged or picked point at this pixel lands, mm. Without modifiers it
+    /// snaps to the rotation centre, an arc's centre or a joint within kSnapPixels, else to
+    /// the grid: the multiples of the smallest step of 1, 2 or 5 × 10^k mm that spans at
+    /// least kGridPixels on screen. Alt: no snapping. Shift with an `origin` (where a drag
+    /// began): only the axis the mouse moved farther along changes.
+    [[nodiscard]] Eigen::Vector2d snap(const QPointF& pixel, Qt::KeyboardModifiers modifiers,
+                                       const Eigen::Vector2d* origin = nullptr,
+                                       int skipSegment = -1) const;
+    /// @brief The grid step snap() uses at the current zoom, mm.
+    [[nodiscard]] double gridStep() const;
+    static constexpr double kSnapPixels = 10.0;
+    static constexpr double kGridPixels = 8.0;
+
+    /// @brief The next left click picks a point (snapped): pointPicked, or pickCancelled on
+    /// Escape. The mouse shows a cross where the point would land.
+    void beginPointPick();
+    [[nodiscard]] bool isPickingPoint() const { return m_picking; }
+    void cancelPointPick();
+
 signals:
+    /// A point was picked (mm) after beginPointPick.
+    void pointPicked(const QPointF& point);
+    void pickCancelled();
     /// The mouse points at this polar angle (rad).
     void cursorAngleChanged(double phi);
     void segmentPicked(int row);
@@ -54,6 +78,7 @@ protected:
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
 
 private:
@@ -96,6 +121,9 @@ private:
     int m_selected = -1;
     Handle m_dragging = Handle::None;
     int m_gesture = 0;
+    Eigen::Vector2d m_dragOrigin{0.0, 0.0};  ///< where the dragged handle was when it was taken
+    bool m_picking = false;
+    QCPItemTracer* m_pickMarker = nullptr;  ///< where a picked point would land
     double m_cursorPhi = 0.0;
     bool m_autoFit = true;  ///< refit on resize until the user zooms or pans
 };

@@ -1,0 +1,216 @@
+#include "views/control_points_panel.h"
+
+#include <QGridLayout>
+#include <QLabel>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "common/angles.h"
+#include "document/commands.h"
+#include "document/project_document.h"
+#include "models/delegates.h"
+#include "project/validate.h"
+#include "widgets/number_spin_box.h"
+
+namespace cam {
+namespace {
+
+/// End k's handle: P0→P1 (k = 0) or P3→P2 (k = 1), mm.
+Eigen::Vector2d handleOf(const SegmentSpec& s, int k) {
+    const CubicBezier b = bezierOf(s);
+    return k == 0 ? Eigen::Vector2d(b.p[1] - b.p[0]) : Eigen::Vector2d(b.p[2] - b.p[3]);
+}
+
+/// The direction of end k's handle; along the chord towards the other end when it has none.
+Eigen::Vector2d handleDirection(const SegmentSpec& s, int k) {
+    const Eigen::Vector2d h = handleOf(s, k);
+    if (h.norm() > 0.0) return h.normalized();
+    const CubicBezier b = bezierOf(s);
+    const Eigen::Vector2d chord =
+        k == 0 ? Eigen::Vector2d(b.p[3] - b.p[0]) : Eigen::Vector2d(b.p[0] - b.p[3]);
+    return chord.norm() > 0.0 ? chord.normalized() : Eigen::Vector2d(1.0, 0.0);
+}
+
+/// Sets end k's handle to `handle`: a Bézier's P1 or P2, a Hermite's t0 = 3·handle or
+/// t1 = −3·handle; the window follows the end points.
+SegmentSpec withHandle(const SegmentSpec& s, int k, const Eigen::Vector2d& handle) {
+    SegmentSpec r = s;
+    if (CubicBezier* b = r.as<CubicBezier>()) {
+        b->p[k == 0 ? 1 : 2] = b->p[k == 0 ? 0 : 3] + handle;
+    } else if (HermiteCurve* h = r.as<HermiteCurve>()) {
+        (k == 0 ? h->t0 : h->t1) = (k == 0 ? 3.0 : -3.0) * handle;
+    }
+    return r;
+}
+
+NumberSpinBox* editor(QWidget* parent, const QString& name, const QString& suffix,
+                      const QString& tip) {
+    auto* box = new NumberSpinBox(parent);
+    box->setObjectName(name);
+    box->setSuffix(suffix);
+    box->setToolTip(tip);
+    box->setRange(-kMaxLengthMm, kMaxLengthMm);
+    box->setSignificantDigits(10);
+    return box;
+}
+
+}  // namespace
+
+SegmentSpec ControlPointsPanel::withPoint(const SegmentSpec& s, int k, int axis, double v) {
+    SegmentSpec r = s;
+    if (CubicBezier* b = r.as<CubicBezier>()) {
+        if (k == 0 || k == 3) {
+            const int handle = k == 0 ? 1 : 2;
+            const double offset = b->p[handle][axis] - b->p[k][axis];
+            b->p[handle][axis] = v + offset;  // the handle moves with its end
+        }
+        b->p[k][axis] = v;
+    } else if (HermiteCurve* h = r.as<HermiteCurve>()) {
+        Eigen::Vector2d* fields[4] = {&h->p0, &h->t0, &h->p3, &h->t1};
+        (*fields[k])[axis] = v;
+    }
+    std::tie(r.phiStartDeg, r.phiEndDeg) = lineWindowDeg(r, r.phiStartDeg);
+    return r;
+}
+
+SegmentSpec ControlPointsPanel::withHandleLength(const SegmentSpec& s, int k, double length) {
+    return withHandle(s, k, length * handleDirection(s, k));
+}
+
+SegmentSpec ControlPointsPanel::withHandleAngle(const SegmentSpec& s, int k, double angleDeg) {
+    const double length = handleOf(s, k).norm();
+    const double a = degToRad(angleDeg);
+    return withHandle(s, k, length * Eigen::Vector2d(std::cos(a), std::sin(a)));
+}
+
+ControlPointsPanel::ControlPointsPanel(ProjectDocument* document, QWidget* parent)
+    : QWidget(parent), m_document(document) {
+    auto* layout = new QVBoxLayout(this);
+    m_title = new QLabel(this);
+    m_title->setObjectName("controlPointsTitle");
+    m_title->setWordWrap(true);
+    layout->addWidget(m_title);
+    m_editors = new QWidget(this);
+    auto* grid = new QGridLayout(m_editors);
+    grid->setContentsMargins(0, 0, 0, 0);
+    grid->addWidget(new QLabel(tr("x [mm]"), m_editors), 0, 1);
+    grid->addWidget(new QLabel(tr("y [mm]"), m_editors), 0, 2);
+    grid->addWidget(new QLabel(tr("Handle length [mm]"), m_editors), 0, 4);
+    grid->addWidget(new QLabel(tr("Handle angle [°]"), m_editors), 0, 5);
+    for (int k = 0; k < 4; ++k) {
+        m_pointNames[k] = new QLabel(m_editors);
+        grid->addWidget(m_pointNames[k], k + 1, 0);
+        for (int axis = 0; axis < 2; ++axis) {
+            NumberSpinBox* box = editor(
+                m_editors, QStringLiteral("controlPoint%1%2").arg(k).arg(axis ? 'y' : 'x'), {}, {});
+            m_points[k][axis] = box;
+            grid->addWidget(box, k + 1, axis + 1);
+            connect(box, &QDoubleSpinBox::valueChanged, this, [this, k, axis](double v) {
+                if (m_refreshing || m_row < 0) return;
+                const SegmentSpec& s = m_document->project().contour.at(std::size_t(m_row));
+                push(withPoint(s, k, axis, v),
+                     QStringLiteral("%1 %2").arg(m_pointNames[k]->text(), axis ? "y" : "x"));
+            });
+            connect(box, &QDoubleSpinBox::editingFinished, this, [this] { m_gesture = 0; });
+        }
+    }
+    grid->setColumnMinimumWidth(3, 12);
+    for (int k = 0; k < 2; ++k) {
+        // The start handle sits on the row of P1 (t0), the end handle on that of P2 (p3).
+        m_handleLength[k] = editor(m_editors, QStringLiteral("handleLength%1").arg(k), {},
+                                   tr("Length of the handle, mm (the angle stays)"));
+        m_handleLength[k]->setMinimum(0.0);
+        m_handleAngle[k] = editor(m_editors, QStringLiteral("handleAngle%1").arg(k), {},
+                                  tr("Direction of the handle, degrees counter-clockwise from +x "
+                                     "(the length stays)"));
+        m_handleAngle[k]->setRange(-360.0, 360.0);
+        m_handleNames[k] =
+            new QLabel(k == 0 ? tr("Start handle P0→P1") : tr("End handle P3→P2"), m_editors);
+        grid->addWidget(m_handleLength[k], k + 1, 4);
+        grid->addWidget(m_handleAngle[k], k + 1, 5);
+        grid->addWidget(m_handleNames[k], k + 1, 6);
+        connect(m_handleLength[k], &QDoubleSpinBox::valueChanged, this, [this, k](double v) {
+            if (m_refreshing || m_row < 0) return;
+            const SegmentSpec& s = m_document->project().contour.at(std::size_t(m_row));
+            push(withHandleLength(s, k, v), m_handleNames[k]->text());
+        });
+        connect(m_handleAngle[k], &QDoubleSpinBox::valueChanged, this, [this, k](double v) {
+            if (m_refreshing || m_row < 0) return;
+            const SegmentSpec& s = m_document->project().contour.at(std::size_t(m_row));
+            push(withHandleAngle(s, k, v), m_handleNames[k]->text());
+        });
+        for (NumberSpinBox* box : {m_handleLength[k], m_handleAngle[k]}) {
+            connect(box, &QDoubleSpinBox::editingFinished, this, [this] { m_gesture = 0; });
+        }
+    }
+    grid->setColumnStretch(7, 1);
+    layout->addWidget(m_editors);
+    layout->addStretch(1);
+    connect(document, &ProjectDocument::changed, this, &ControlPointsPanel::refresh);
+    refresh();
+}
+
+void ControlPointsPanel::setRow(int row) {
+    if (row == m_row) return;
+    m_row = row;
+    m_gesture = 0;
+    refresh();
+}
+
+void ControlPointsPanel::push(const SegmentSpec& after, const QString& what) {
+    const SegmentSpec& before = m_document->project().contour.at(std::size_t(m_row));
+    if (after == before) return;
+    if (m_gesture == 0) m_gesture = nextGestureId();
+    m_document->undoStack()->push(
+        new EditSegment(m_document, m_row, after, EditedField::ControlPoint,
+                        tr("Edit %1 of segment %2").arg(what).arg(m_row), m_gesture));
+}
+
+void ControlPointsPanel::refresh() {
+    const auto& contour = m_document->project().contour;
+    const bool valid = m_row >= 0 && std::size_t(m_row) < contour.size();
+    const SegmentSpec* s = valid ? &contour[std::size_t(m_row)] : nullptr;
+    if (!s || !isSpline(s->type())) {
+        m_title->setText(
+            valid ? tr("Segment %1 is not a spline: its values are in the Segments table. "
+                       "Select a Bézier or Hermite row to edit its control points.")
+                        .arg(m_row)
+                  : tr("Select a Bézier or Hermite row to edit its control points."));
+        m_editors->hide();
+        return;
+    }
+    const bool bezier = s->type() == SegmentType::Bezier;
+    m_title->setText(bezier ? tr("Segment %1, Bézier: control points P0…P3. Moving an end point "
+                                 "moves its handle with it.")
+                                  .arg(m_row)
+                            : tr("Segment %1, Hermite: end points p0, p3 and end tangents t0, "
+                                 "t1 (t0 = 3·(P1 − P0)). Moving an end point keeps its tangent.")
+                                  .arg(m_row));
+    const QStringList names =
+        bezier ? QStringList{"P0", "P1", "P2", "P3"} : QStringList{"p0", "t0", "p3", "t1"};
+    const HermiteCurve* h = s->as<HermiteCurve>();
+    const CubicBezier b = bezierOf(*s);
+    const Eigen::Vector2d values[4] = {b.p[0], h ? h->t0 : b.p[1], b.p[3], h ? h->t1 : b.p[2]};
+    m_refreshing = true;
+    for (int k = 0; k < 4; ++k) {
+        m_pointNames[k]->setText(names[k]);
+        const bool tangent = h && (k == 1 || k == 3);
+        for (int axis = 0; axis < 2; ++axis) {
+            NumberSpinBox* box = m_points[k][axis];
+            box->setValue(values[k][axis]);
+            box->setToolTip(tangent ? tr("%1 %2: a component of the tangent vector, mm")
+                                          .arg(names[k], axis ? "y" : "x")
+                                    : tr("%1 %2, mm").arg(names[k], axis ? "y" : "x"));
+        }
+    }
+    for (int k = 0; k < 2; ++k) {
+        const Eigen::Vector2d handle = handleOf(*s, k);
+        m_handleLength[k]->setValue(handle.norm());
+        m_handleAngle[k]->setValue(
+            handle.norm() > 0.0 ? radToDeg(std::atan2(handle.y(), handle.x())) : 0.0);
+    }
+    m_refreshing = false;
+    m_editors->show();
+}
+
+}  // namespace cam
