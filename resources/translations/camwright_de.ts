@@ -98,7 +98,7 @@
     <message>
         <location line="+5" />
         <source>Machining</source>
-        <translation>Bearbeitung</translation>
+        <translation>Zerspanung</translation>
     </message>
     <message>
         <location line="+5" />
@@ -486,12 +486,12 @@
         <translation>Tangente zum nächsten Bogen</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>Tangent line from %1 to %2</source>
         <translation>Tangente von %1 nach %2</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+8" />
         <source>Select the segment the arc continues first.</source>
         <translation>Zuerst das Segment auswählen, das der Bogen fortsetzt.</translation>
     </message>
@@ -506,7 +506,7 @@
         <translation>Tangentenbogen: Mittelpunkt (%1, %2), Radius %3 mm</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+7" />
         <source>Select the arc to approximate first.</source>
         <translation>Zuerst den anzunähernden Bogen auswählen.</translation>
     </message>
@@ -540,7 +540,7 @@
 <context>
     <name>cam::ContourView</name>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="+47" />
+        <location filename="../../src/app/views/contour_view.cpp" line="+48" />
         <source>x [mm]</source>
         <translation>x [mm]</translation>
     </message>
@@ -604,7 +604,7 @@
         <translation>Griffwinkel [°]</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+22" />
         <source>Length of the handle, mm (the angle stays)</source>
         <translation>Länge des Griffs, mm (der Winkel bleibt)</translation>
     </message>
@@ -614,22 +614,22 @@
         <translation>Richtung des Griffs, Grad gegen den Uhrzeigersinn ab +x (die Länge bleibt)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Start handle P0→P1</source>
         <translation>Anfangsgriff P0→P1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>End handle P3→P2</source>
         <translation>Endgriff P3→P2</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+38" />
         <source>Edit %1 of segment %2</source>
         <translation>%1 von Segment %2 ändern</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+9" />
         <source>Segment %1 is not a spline: its values are in the Segments table. Select a Bézier or Hermite row to edit its control points.</source>
         <translation>Segment %1 ist kein Spline: seine Werte stehen in der Segmenttabelle. Eine Bézier- oder Hermite-Zeile auswählen, um ihre Kontrollpunkte zu bearbeiten.</translation>
     </message>
@@ -1559,7 +1559,7 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+81" />
+        <location filename="../../src/app/mainwindow.cpp" line="+84" />
         <source>The recovery copy could not be written: %1</source>
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -1610,7 +1610,7 @@
         <translation>Die Kontur durch tangentiale Bögen ersetzen, die das exakte Profil des Entwurfs innerhalb seiner Toleranz annähern (F6; ein Rückgängig-Schritt)</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+27" />
         <source>Synthesizing the contour…</source>
         <translation>Kontur wird synthetisiert …</translation>
     </message>
@@ -1824,12 +1824,87 @@
         <translation>Alle Tastenkürzel des Fensters</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+6" />
+        <source>User &amp;Guide</source>
+        <translation>Benutzer&amp;handbuch</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>A short guide to Camwright, opened at the part you are working in: the table, construction, followers, exports, the command line</source>
+        <translation>Eine kurze Anleitung zu Camwright, geöffnet bei dem Teil, in dem Sie arbeiten: Tabelle, Konstruktion, Stößel, Exporte, Kommandozeile</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>What's &amp;This?</source>
+        <translation>&amp;Direkthilfe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Click a dock or view to learn what it is for</source>
+        <translation>Auf ein Dock oder eine Ansicht klicken, um zu erfahren, wofür es da ist</translation>
+    </message>
+    <message>
+        <location line="+16" />
         <source>&lt;h3&gt;Camwright %1&lt;/h3&gt;&lt;p&gt;Design and inspect cam contours: exact polar kinematics of the follower, design from motion laws, machining time, exports for CAD, CNC and servo drives.&lt;/p&gt;&lt;p&gt;License: GPL-3.0-or-later.&lt;/p&gt;&lt;p&gt;Built with&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (LGPL-3.0)&lt;/li&gt;&lt;li&gt;QCustomPlot %3 (GPL-3.0)&lt;/li&gt;&lt;li&gt;Eigen %4 (MPL-2.0)&lt;/li&gt;&lt;li&gt;JSON for Modern C++ (nlohmann-json) %5 (MIT)&lt;/li&gt;&lt;/ul&gt;</source>
         <translation>&lt;h3&gt;Camwright %1&lt;/h3&gt;&lt;p&gt;Kurvenscheiben entwerfen und prüfen: exakte Polarkinematik des Stößels, Entwurf aus Bewegungsgesetzen, Bearbeitungszeit, Export für CAD, CNC und Servoantriebe.&lt;/p&gt;&lt;p&gt;Lizenz: GPL-3.0-or-later.&lt;/p&gt;&lt;p&gt;Erstellt mit&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (LGPL-3.0)&lt;/li&gt;&lt;li&gt;QCustomPlot %3 (GPL-3.0)&lt;/li&gt;&lt;li&gt;Eigen %4 (MPL-2.0)&lt;/li&gt;&lt;li&gt;JSON for Modern C++ (nlohmann-json) %5 (MIT)&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
     <message>
-        <location line="+67" />
+        <location line="+14" />
+        <source>&lt;b&gt;Segments&lt;/b&gt;: the contour as a table, one row per arc, line or spline piece. Each owns a polar window [φ start, φ end) of the turn; together they cover one turn. Type into a cell and press Enter; Ins inserts, Del deletes. A red cell's tooltip names its problem. F1: the user guide's section on the table.</source>
+        <translation>&lt;b&gt;Segmente&lt;/b&gt;: die Kontur als Tabelle, eine Zeile je Bogen, Gerade oder Spline-Stück. Jedes besitzt ein Polarfenster [φ Anfang, φ Ende) der Umdrehung; zusammen decken sie eine Umdrehung ab. In eine Zelle tippen und Eingabe drücken; Einfg fügt ein, Entf löscht. Der Tooltip einer roten Zelle nennt ihr Problem. F1: der Abschnitt des Handbuchs über die Tabelle.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>&lt;b&gt;Joints&lt;/b&gt;: where neighbouring segments meet, with their continuity (position, tangent, curvature) and the jumps of velocity and acceleration. Click a joint to go to it.</source>
+        <translation>&lt;b&gt;Übergänge&lt;/b&gt;: wo benachbarte Segmente aufeinandertreffen, mit ihrer Stetigkeit (Lage, Tangente, Krümmung) und den Sprüngen von Geschwindigkeit und Beschleunigung. Ein Klick auf einen Übergang springt dorthin.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>&lt;b&gt;Control Points&lt;/b&gt;: the selected Bézier or Hermite row by value: every control point's x and y, and each end's handle as length and angle. Every edit is one undo step.</source>
+        <translation>&lt;b&gt;Kontrollpunkte&lt;/b&gt;: die gewählte Bézier- oder Hermite-Zeile in Zahlen: x und y jedes Kontrollpunkts und der Griff jedes Endes als Länge und Winkel. Jede Änderung ist ein Rückgängig-Schritt.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>&lt;b&gt;Motion&lt;/b&gt;: how fast the cam turns (a period, rpm or rad/s) and how many samples per turn the plots and exports use.</source>
+        <translation>&lt;b&gt;Bewegung&lt;/b&gt;: wie schnell sich die Scheibe dreht (Periode, U/min oder rad/s) und wie viele Abtastwerte je Umdrehung Diagramme und Exporte verwenden.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;b&gt;State at Cursor&lt;/b&gt;: the follower's values at the cursor's instant: angle, segment, r and the polar components of velocity, acceleration and jerk.</source>
+        <translation>&lt;b&gt;Zustand am Cursor&lt;/b&gt;: die Werte des Stößels im Augenblick des Cursors: Winkel, Segment, r und die Polarkomponenten von Geschwindigkeit, Beschleunigung und Ruck.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;b&gt;Machining&lt;/b&gt;: the axes' limits and the tool, and the time it takes to machine the contour with its feed profile.</source>
+        <translation>&lt;b&gt;Zerspanung&lt;/b&gt;: die Grenzen der Achsen und das Werkzeug sowie die Zeit, die das Fräsen der Kontur dauert, mit ihrem Vorschubverlauf.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;b&gt;Path Study&lt;/b&gt;: how evenly the spline segments are parametrised, and their curvature.</source>
+        <translation>&lt;b&gt;Bahnstudie&lt;/b&gt;: wie gleichmäßig die Spline-Segmente parametrisiert sind, und ihre Krümmung.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;b&gt;Follower&lt;/b&gt;: knife, roller or flat face, translating or on a swinging arm, and its checks: pressure angle, curvature, undercut, reach.</source>
+        <translation>&lt;b&gt;Stößel&lt;/b&gt;: Schneide, Rolle oder Flachstößel, geradegeführt oder am Schwinghebel, und seine Prüfungen: Druckwinkel, Krümmung, Unterschnitt, Erreichbarkeit.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;b&gt;Motion Design&lt;/b&gt;: the follower's motion as motion laws over the turn; Synthesize Contour (F6) makes the cam from it.</source>
+        <translation>&lt;b&gt;Bewegungsentwurf&lt;/b&gt;: die Bewegung des Stößels als Bewegungsgesetze über der Umdrehung; Kontur synthetisieren (F6) macht daraus die Scheibe.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;b&gt;Contour&lt;/b&gt;: the cam as seen from above. Drag a square or diamond handle to move a centre, a radius or a spline handle; dragged points snap to centres, joints and the grid (Shift keeps an axis, Alt places freely).</source>
+        <translation>&lt;b&gt;Kontur&lt;/b&gt;: die Scheibe von oben gesehen. Einen quadratischen oder rautenförmigen Griff ziehen, um einen Mittelpunkt, einen Radius oder einen Spline-Griff zu verschieben; gezogene Punkte rasten an Mittelpunkten, Übergängen und am Raster ein (Umschalt hält eine Achse fest, Alt platziert frei).</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>&lt;b&gt;Plots&lt;/b&gt;: velocity, acceleration and jerk over the angle or the time; the dashed line is the cursor.</source>
+        <translation>&lt;b&gt;Diagramme&lt;/b&gt;: Geschwindigkeit, Beschleunigung und Ruck über dem Winkel oder der Zeit; die gestrichelte Linie ist der Cursor.</translation>
+    </message>
+    <message>
+        <location line="+68" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -1953,7 +2028,7 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-400" />
+        <location line="-472" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -1990,7 +2065,7 @@
     <message>
         <location line="+2" />
         <source>The %1 plot is drawn only while the Machining panel is open (Ctrl+M).</source>
-        <translation>Das Diagramm „%1“ wird nur gezeichnet, während die Bearbeitungsleiste offen ist (Strg+M).</translation>
+        <translation>Das Diagramm „%1“ wird nur gezeichnet, während das Dock Zerspanung offen ist (Strg+M).</translation>
     </message>
     <message>
         <location line="+9" />
@@ -2812,6 +2887,19 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <location line="+11" />
         <source>State of the follower at the cursor: move the mouse over a plot</source>
         <translation>Zustand des Stößels am Cursor: Maus über ein Diagramm bewegen</translation>
+    </message>
+</context>
+<context>
+    <name>cam::UserGuide</name>
+    <message>
+        <location filename="../../src/app/dialogs/user_guide.cpp" line="+11" />
+        <source>Camwright User Guide</source>
+        <translation>Camwright-Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>user-guide.en.html</source>
+        <translation>user-guide.de.html</translation>
     </message>
 </context>
 <context>

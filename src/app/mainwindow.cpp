@@ -21,12 +21,14 @@
 #include <QSplitter>
 #include <QTableView>
 #include <QTimer>
+#include <QWhatsThis>
 #include <cmath>
 #include <utility>
 
 #include "common/angles.h"
 #include "dialogs/contour_dialogs.h"
 #include "dialogs/shortcuts_dialog.h"
+#include "dialogs/user_guide.h"
 #include "document/commands.h"
 #include "document/contour_edits.h"
 #include "engine/compute_engine.h"
@@ -65,6 +67,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     m_contour = new ContourView(m_document, this);
     m_plots = new KinematicsPlots(this);
+    m_plots->setObjectName("kinematicsPlots");
     auto* splitter = new QSplitter(Qt::Horizontal, this);
     splitter->setObjectName("mainSplitter");
     splitter->addWidget(m_contour);
@@ -242,6 +245,7 @@ void MainWindow::setUpDesign() {
     connect(m_synthesis, &SynthesisRunner::finished, this, &MainWindow::finishSynthesis);
     connect(m_synthesis, &SynthesisRunner::finished, this, enable);
     enable();
+    setUpWhatsThis();
 }
 
 bool MainWindow::synthesize() {
@@ -568,6 +572,28 @@ void MainWindow::setUpActions() {
         ShortcutsDialog dialog(this);
         dialog.exec();
     });
+    auto* guide = new QAction(tr("User &Guide"), this);
+    guide->setObjectName("actionUserGuide");
+    guide->setShortcut(QKeySequence::HelpContents);
+    guide->setToolTip(
+        tr("A short guide to Camwright, opened at the part you are working in: the table, "
+           "construction, followers, exports, the command line"));
+    m_ui->menuHelp->insertAction(shortcuts, guide);
+    connect(guide, &QAction::triggered, this, [this] {
+        QWidget* focus = QApplication::focusWidget();
+        if (m_guide && m_guide->isAncestorOf(focus)) {  // F1 in the guide: it stays where it is
+            m_guide->raise();
+            return;
+        }
+        if (!m_guide) m_guide = new UserGuide(this);
+        m_guide->showSection(UserGuide::sectionFor(focus));
+    });
+    QAction* whatsThis = QWhatsThis::createAction(this);
+    whatsThis->setObjectName("actionWhatsThis");
+    whatsThis->setText(tr("What's &This?"));
+    whatsThis->setToolTip(tr("Click a dock or view to learn what it is for"));
+    m_ui->menuHelp->insertAction(shortcuts, whatsThis);
+    m_ui->menuHelp->insertSeparator(shortcuts);
     // Segment actions work on the table, so they do not steal Delete/Insert from other widgets.
     for (QAction* a : {m_ui->actionInsertSegment, m_ui->actionDeleteSegment, m_ui->actionMoveUp,
                        m_ui->actionMoveDown}) {
@@ -592,6 +618,50 @@ QString MainWindow::aboutText() const {
              QString::fromStdString(jsonLibraryVersion()));
 }
 
+void MainWindow::setUpWhatsThis() {
+    const std::pair<QWidget*, QString> texts[] = {
+        {m_ui->segmentsDock,
+         tr("<b>Segments</b>: the contour as a table, one row per arc, line or spline piece. "
+            "Each owns a polar window [φ start, φ end) of the turn; together they cover one "
+            "turn. Type into a cell and press Enter; Ins inserts, Del deletes. A red cell's "
+            "tooltip names its problem. F1: the user guide's section on the table.")},
+        {m_ui->jointsDock,
+         tr("<b>Joints</b>: where neighbouring segments meet, with their continuity (position, "
+            "tangent, curvature) and the jumps of velocity and acceleration. Click a joint to "
+            "go to it.")},
+        {m_controlPointsDock,
+         tr("<b>Control Points</b>: the selected Bézier or Hermite row by value: every control "
+            "point's x and y, and each end's handle as length and angle. Every edit is one "
+            "undo step.")},
+        {m_ui->motionDock,
+         tr("<b>Motion</b>: how fast the cam turns (a period, rpm or rad/s) and how many "
+            "samples per turn the plots and exports use.")},
+        {m_ui->readoutDock,
+         tr("<b>State at Cursor</b>: the follower's values at the cursor's instant: angle, "
+            "segment, r and the polar components of velocity, acceleration and jerk.")},
+        {m_ui->machiningDock,
+         tr("<b>Machining</b>: the axes' limits and the tool, and the time it takes to machine "
+            "the contour with its feed profile.")},
+        {m_ui->pathStudyDock,
+         tr("<b>Path Study</b>: how evenly the spline segments are parametrised, and their "
+            "curvature.")},
+        {m_followerDock,
+         tr("<b>Follower</b>: knife, roller or flat face, translating or on a swinging arm, "
+            "and its checks: pressure angle, curvature, undercut, reach.")},
+        {m_designDock,
+         tr("<b>Motion Design</b>: the follower's motion as motion laws over the turn; "
+            "Synthesize Contour (F6) makes the cam from it.")},
+        {m_contour,
+         tr("<b>Contour</b>: the cam as seen from above. Drag a square or diamond handle to "
+            "move a centre, a radius or a spline handle; dragged points snap to centres, joints "
+            "and the grid (Shift keeps an axis, Alt places freely).")},
+        {m_plots,
+         tr("<b>Plots</b>: velocity, acceleration and jerk over the angle or the time; the "
+            "dashed line is the cursor.")},
+    };
+    for (const auto& [widget, text] : texts) widget->setWhatsThis(text);
+}
+
 void MainWindow::setUpIcons() {
     // Toolbar icons smaller than Fusion's 24 px: the bar stays as low as the text-only one
     // was, and a 900×600 window still fits.
@@ -612,6 +682,8 @@ void MainWindow::setUpIcons() {
     set(m_ui->actionAxisTime, "camwright-time-axis");
     set(m_ui->actionResetZoom, "zoom-fit-best");
     set(m_ui->actionAbout, "help-about");
+    if (auto* guide = findChild<QAction*>("actionUserGuide")) set(guide, "help-contents");
+    if (auto* whatsThis = findChild<QAction*>("actionWhatsThis")) set(whatsThis, "help-whatsthis");
     m_ui->menuRecent->setIcon(actionIcon("document-open-recent"));
     m_ui->menuExamples->setIcon(actionIcon("folder"));
     const std::pair<const char*, const char*> named[] = {

@@ -29,6 +29,7 @@ class KinematicsPlots;
 class JointsPanel;
 class PathStudyPanel;
 class ControlPointsPanel;
+class UserGuide;
 class FollowerPanel;
 class MachiningPanel;
 class MotionPanel;
@@ -67,6 +68,8 @@ public:
     [[nodiscard]] StateReadout* readout() const { return m_readout; }
     [[nodiscard]] FollowerPanel* followerPanel() const { return m_follower; }
     [[nodiscard]] ControlPointsPanel* controlPointsPanel() const { return m_controlPoints; }
+    /// @brief The user guide, once F1 has opened it (else null).
+    [[nodiscard]] UserGuide* userGuide() const { return m_guide; }
     /// @brief The cursor's instant (s, within the turn).
     [[nodiscard]] double cursorTime() const { return m_cursorT; }
     [[nodiscard]] QAction* playAction() const { return m_playAction; }
@@ -186,7 +189,9 @@ private:
     /// Play: turns the cam at a fraction of its real speed, the cursor (and the follower on
     /// the contour) moving with it; only markers move, nothing is computed.
     QAction* m_playAction = nullptr;
-    int m_pickRow = -1;  ///< the row a tangent arc continues, while a point is being picked
+    int m_pickRow = -1;
+    UserGuide* m_guide = nullptr;  ///< made when first asked for  ///< the row a tangent arc
+                                   ///< continues, while a point is being picked
     QComboBox* m_playSpeed = nullptr;
     QTimer* m_playTimer = nullptr;
     QElapsedTimer m_playClock;
@@ -194,6 +199,7 @@ private:
     void setUpDesign();
     /// Icons of every action and dock toggle; every tooltip names its shortcut.
     void setUpIcons();
+    void setUpWhatsThis();
     void finishSynthesis(const std::shared_ptr<const Result<Synthesis>>& result, bool cancelled);
     Autosave* m_autosave = nullptr;
     MotionDesignPanel* m_design = nullptr;

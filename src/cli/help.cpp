@@ -1,8 +1,8 @@
 #include "cli/help.h"
 
 #include <algorithm>
-#include <sstream>
 
+#include "common/diagnostic.h"
 #include "export/cam_table.h"
 #include "export/dxf.h"
 #include "export/gcode.h"
@@ -14,12 +14,6 @@ namespace cam::cli {
 namespace {
 
 constexpr std::size_t kWidth = 80;
-
-std::string number(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
 
 /// `text` broken into lines of at most kWidth columns (counted in UTF-8 characters), the first
 /// after `first` (already on the line), the others indented by `indent` spaces. Blank lines in
@@ -198,8 +192,9 @@ std::vector<CommandHelp> makeTable() {
           {"--out", "FILE", "the file to write (required); replaced whole or not at all"},
           {"--tolerance", "MM",
            "dxf, svg, gcode: how far arcs standing in for splines may deviate (default " +
-               number(kDefaultExportToleranceMm) + " mm for dxf, " + number(kSvgToleranceMm) +
-               " for svg, " + number(kDefaultGcodeToleranceMm) + " for gcode)"},
+               formatNumber(kDefaultExportToleranceMm) + " mm for dxf, " +
+               formatNumber(kSvgToleranceMm) + " for svg, " +
+               formatNumber(kDefaultGcodeToleranceMm) + " for gcode)"},
           {"--points", "N",
            "csv: instants per turn (default: the project's samples per turn); camtable: table "
            "rows, " +
@@ -213,7 +208,7 @@ std::vector<CommandHelp> makeTable() {
           {"--spline-entities", "", "dxf: spline segments as SPLINE entities"},
           {"--centres", "", "dxf: the arcs' centres as points on layer CENTRES"},
           {"--depth", "MM",
-           "gcode: the depth to cut to (default " + number(kDefaultGcodeDepthMm) + " mm)"},
+           "gcode: the depth to cut to (default " + formatNumber(kDefaultGcodeDepthMm) + " mm)"},
           {"--step-down", "MM", "gcode: cut in passes at most this deep"},
           {"--compensation", "",
            "gcode: program the contour itself with cutter compensation G41/G42 instead of the "

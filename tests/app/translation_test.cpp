@@ -212,5 +212,26 @@ TEST(GermanWindow, QtsOwnButtonsAndKeyNamesAreGermanToo) {
         << window.findChild<QAction*>("actionSave")->toolTip().toStdString();
 }
 
+// A dock must not read like a menu: "Bearbeitung" (machining) beside "Bearbeiten" (the Edit
+// menu) sent users to the wrong place. No menu of the menu bar shares the stem of its first word
+// (its first seven letters) with a dock's title.
+TEST(GermanWindow, NoDockIsNamedLikeAMenu) {
+    const Translations german(QLocale(QLocale::German, QLocale::Germany));
+    ASSERT_TRUE(german.appTranslated());
+    MainWindow window;
+    QStringList menus, docks;
+    for (QAction* menu : window.menuBar()->actions()) menus << withoutAccelerators(menu->text());
+    for (QDockWidget* dock : window.findChildren<QDockWidget*>()) docks << dock->windowTitle();
+    ASSERT_TRUE(menus.contains("Bearbeiten"));
+    const auto stem = [](const QString& title) {
+        return title.section(' ', 0, 0).left(7).toLower();
+    };
+    for (const QString& menu : menus) {
+        for (const QString& dock : docks) {
+            EXPECT_NE(stem(menu), stem(dock)) << menu.toStdString() << " / " << dock.toStdString();
+        }
+    }
+}
+
 }  // namespace
 }  // namespace cam

@@ -81,5 +81,30 @@ TEST(ResultValue, ReadingAnEmptyResultAbortsWithAMessage) {
     EXPECT_DEATH((void)empty.value(), "Result::value\\(\\) read without a value");
 }
 
+// Numbers in messages: at most ten significant digits, so round-off never shows
+// (215.60000000000002 reads 215.6), while what a user typed reads as typed; never "-0".
+TEST(MessageNumbers, HaveAtMostTenSignificantDigitsAndNoRoundOff) {
+    EXPECT_EQ(formatNumber(215.60000000000002), "215.6");
+    EXPECT_EQ(formatNumber(0.1 + 0.2), "0.3");
+    EXPECT_EQ(formatNumber(12.5), "12.5");
+    EXPECT_EQ(formatNumber(-2.0), "-2");
+    EXPECT_EQ(formatNumber(-0.0), "0");
+    EXPECT_EQ(formatNumber(1e-300), "1e-300");
+    EXPECT_EQ(formatNumber(4.840705970012345), "4.84070597");
+    EXPECT_EQ(formatNumber(std::numeric_limits<double>::quiet_NaN()), "NaN");
+    // A message the validation writes with a computed window: no 17-digit tail.
+    Project p;
+    p.contour = {SegmentSpec{Arc{{0.0, 0.0}, 20.0, Branch::Outer}, 0.0, 0.1 + 0.2},
+                 SegmentSpec{Arc{{0.0, 0.0}, 20.0, Branch::Outer}, 0.5, 360.0}};
+    const Diagnostics d = validateProject(p);
+    ASSERT_FALSE(d.empty());
+    bool named = false;
+    for (const Diagnostic& m : d) {
+        EXPECT_EQ(m.text().find("0.30000000000000004"), std::string::npos) << m.text();
+        named = named || m.text().find("0.3") != std::string::npos;
+    }
+    EXPECT_TRUE(named);
+}
+
 }  // namespace
 }  // namespace cam

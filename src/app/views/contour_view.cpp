@@ -43,6 +43,7 @@ GridStep gridStepFor(double minimumMm) {
 ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     : QCustomPlot(parent), m_document(document) {
     setObjectName("contourView");
+    setFocusPolicy(Qt::StrongFocus);  // Escape must reach it while a point is being picked
     setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     xAxis->setLabel(tr("x [mm]"));
     yAxis->setLabel(tr("y [mm]"));

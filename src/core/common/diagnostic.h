@@ -130,7 +130,12 @@ private:
     Diagnostics m_errors;
 };
 
-/// @brief Shortest text that reads back as the same double (for messages, not for files).
+/// @brief How many significant digits a number in a message has at most.
+inline constexpr int kMessageDigits = 10;
+
+/// @brief A number for a message (never for a file, which writes the exact value): at most
+/// kMessageDigits significant digits and no trailing zeros, so a typed 12.5 reads 12.5 and the
+/// round-off of a computed 215.6 (215.60000000000002) reads 215.6; never "-0".
 std::string formatNumber(double value);
 
 }  // namespace cam

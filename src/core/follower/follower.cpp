@@ -53,9 +53,9 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
                 if (!piece.convex && rho >= R) {
                     errors.push_back(
                         Diagnostic::at({k, SegmentPart::Radius},
-                                       "the roller radius " + std::to_string(rho) +
+                                       "the roller radius " + formatNumber(rho) +
                                            " mm is not smaller than this concave arc's radius " +
-                                           std::to_string(R) + " mm: the roller cannot follow it"));
+                                           formatNumber(R) + " mm: the roller cannot follow it"));
                     continue;
                 }
                 piece.radius = piece.convex ? R + rho : R - rho;

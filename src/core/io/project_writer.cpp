@@ -5,6 +5,7 @@
 
 #include "design/motion_law.h"
 #include "io/json_syntax.h"
+#include "io/project_json.h"
 #include "io/project_reader.h"
 
 namespace cam {
