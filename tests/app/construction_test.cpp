@@ -249,6 +249,21 @@ protected:
     ControlPointsPanel* panel = nullptr;
 };
 
+TEST_F(ControlPoints, EveryEditorShowsItsOwnPoint) {
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_EQ(panel->pointEditor(k, 0)->value(), bezier().p[k].x()) << "P" << k;
+        EXPECT_EQ(panel->pointEditor(k, 1)->value(), bezier().p[k].y()) << "P" << k;
+    }
+    window.tableModel()->setData(window.tableModel()->index(1, SegmentTableModel::Type), 3,
+                                 Qt::EditRole);
+    const HermiteCurve& h = std::get<HermiteCurve>(contour()[1].shape);
+    const Vec fields[4] = {h.p0, h.t0, h.p3, h.t1};
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_EQ(panel->pointEditor(k, 0)->value(), fields[k].x()) << "Hermite row " << k;
+        EXPECT_EQ(panel->pointEditor(k, 1)->value(), fields[k].y()) << "Hermite row " << k;
+    }
+}
+
 TEST_F(ControlPoints, AnInnerPointIsTypedExactlyAndUndone) {
     const Project before = window.document()->project();
     EXPECT_EQ(panel->pointEditor(1, 0)->value(), bezier().p[1].x());
@@ -270,6 +285,8 @@ TEST_F(ControlPoints, AnEndPointTakesItsHandleAlongAndTheWindowFollows) {
 }
 
 TEST_F(ControlPoints, AHandleIsSetByLengthAndAngle) {
+    typeInto(panel->pointEditor(3, 0), "1.5");  // P3's own row: P3 and its handle move
+    EXPECT_EQ(bezier().p[3].x(), 1.5);
     const Vec p3 = bezier().p[3];
     const Vec handle = bezier().p[2] - p3;
     typeInto(panel->handleLengthEditor(1), "7.5");

@@ -126,9 +126,9 @@ ControlPointsPanel::ControlPointsPanel(ProjectDocument* document, QWidget* paren
         m_handleAngle[k]->setRange(-360.0, 360.0);
         m_handleNames[k] =
             new QLabel(k == 0 ? tr("Start handle P0→P1") : tr("End handle P3→P2"), m_editors);
-        grid->addWidget(m_handleLength[k], k + 1, 4);
-        grid->addWidget(m_handleAngle[k], k + 1, 5);
-        grid->addWidget(m_handleNames[k], k + 1, 6);
+        grid->addWidget(m_handleLength[k], k + 2, 4);
+        grid->addWidget(m_handleAngle[k], k + 2, 5);
+        grid->addWidget(m_handleNames[k], k + 2, 6);
         connect(m_handleLength[k], &QDoubleSpinBox::valueChanged, this, [this, k](double v) {
             if (m_refreshing || m_row < 0) return;
             const SegmentSpec& s = m_document->project().contour.at(std::size_t(m_row));
@@ -190,7 +190,9 @@ void ControlPointsPanel::refresh() {
         bezier ? QStringList{"P0", "P1", "P2", "P3"} : QStringList{"p0", "t0", "p3", "t1"};
     const HermiteCurve* h = s->as<HermiteCurve>();
     const CubicBezier b = bezierOf(*s);
-    const Eigen::Vector2d values[4] = {b.p[0], h ? h->t0 : b.p[1], b.p[3], h ? h->t1 : b.p[2]};
+    // Row k edits point k of the kind's own list: a Bézier's P0…P3, a Hermite's p0, t0, p3, t1.
+    const Eigen::Vector2d values[4] = {b.p[0], h ? h->t0 : b.p[1], h ? h->p3 : b.p[2],
+                                       h ? h->t1 : b.p[3]};
     m_refreshing = true;
     for (int k = 0; k < 4; ++k) {
         m_pointNames[k]->setText(names[k]);
