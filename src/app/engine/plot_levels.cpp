@@ -145,39 +145,51 @@ struct CurveBuilder {
             hi = h;
             return;
         }
-        // The open bucket in locals: the loop runs over millions of samples.
-        Tag b = bucket;
-        PlotPoint mn = minP, mx = maxP;
-        Tag mnK = minK, mxK = maxK;
-        for (std::size_t i = 0; i < count; ++i) {
+        // Bucket by bucket: each bucket's part in this run is scanned in a tight loop (its
+        // smallest and largest value and where they are), then merged into the open bucket.
+        // The loop runs over millions of samples; a part holding an infinity or NaN (rare)
+        // goes sample by sample through add().
+        std::size_t i = 0;
+        while (i < count) {
             const Tag k = k0 + static_cast<Tag>(i);
-            const double y = ys[i];
-            if (!std::isfinite(y)) {  // rare: the general path
-                bucket = b, minP = mn, maxP = mx, minK = mnK, maxK = mxK, lo = l, hi = h;
-                add(k, k >> shift, xs[i], y);
-                b = bucket, mn = minP, mx = maxP, mnK = minK, mxK = maxK;
+            const Tag bk = k >> shift;
+            const std::size_t bucketEnd = (static_cast<std::size_t>(bk) + 1) << shift;
+            const std::size_t end = std::min(count, i + (bucketEnd - static_cast<std::size_t>(k)));
+            double mnY = ys[i], mxY = ys[i];
+            std::size_t mnI = i, mxI = i;
+            bool finite = std::isfinite(ys[i]);
+            for (std::size_t j = i + 1; j < end; ++j) {
+                const double y = ys[j];
+                finite = finite && std::isfinite(y);
+                if (y < mnY) mnY = y, mnI = j;
+                if (y > mxY) mxY = y, mxI = j;
+            }
+            if (!finite) {
+                lo = l, hi = h;
+                for (std::size_t j = i; j < end; ++j) {
+                    add(k0 + static_cast<Tag>(j), (k0 + static_cast<Tag>(j)) >> shift, xs[j],
+                        ys[j]);
+                }
+                l = lo, h = hi;
+                i = end;
                 continue;
             }
-            l = std::min(l, y);
-            h = std::max(h, y);
-            const Tag bk = k >> shift;
-            if (bk != b) {
-                if (b >= 0) {
-                    bucket = b, minP = mn, maxP = mx, minK = mnK, maxK = mxK;
-                    flush();
-                }
-                b = bk;
-                mn = mx = {xs[i], y};
-                mnK = mxK = k;
-            } else if (y < mn.y) {
-                mn = {xs[i], y};
-                mnK = k;
-            } else if (y > mx.y) {
-                mx = {xs[i], y};
-                mxK = k;
+            l = std::min(l, mnY);
+            h = std::max(h, mxY);
+            const PlotPoint mn{xs[mnI], mnY}, mx{xs[mxI], mxY};
+            const Tag mnK = k0 + static_cast<Tag>(mnI), mxK = k0 + static_cast<Tag>(mxI);
+            if (bk != bucket) {
+                flush();
+                bucket = bk;
+                minP = mn, minK = mnK;
+                maxP = mx, maxK = mxK;
+            } else {  // the open bucket goes on: the earlier sample wins a tie, as in add()
+                if (mnY < minP.y) minP = mn, minK = mnK;
+                if (mxY > maxP.y) maxP = mx, maxK = mxK;
             }
+            i = end;
         }
-        bucket = b, minP = mn, maxP = mx, minK = mnK, maxK = mxK, lo = l, hi = h;
+        lo = l, hi = h;
     }
     void exact(double x, double y) {
         flush();
