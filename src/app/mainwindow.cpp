@@ -119,6 +119,8 @@ MainWindow::MainWindow(QWidget* parent)
     // A project that names its follower opens with the follower shown.
     connect(m_document, &ProjectDocument::contourReset, this, [this] {
         if (m_document->project().follower) m_followerDock->show();
+        // Once the layout has settled: a short contour leaves the plots the rows it needs not.
+        QTimer::singleShot(0, this, &MainWindow::fitSegmentsDock);
     });
     // A project with a design opens with it shown.
     connect(m_document, &ProjectDocument::filePathChanged, this, [this] {
@@ -794,6 +796,34 @@ void MainWindow::report(const EditOutcome& outcome, const QString& title) {
     }
     if (!outcome.status.isEmpty()) statusBar()->showMessage(outcome.status, 6000);
     if (outcome.row >= 0) m_ui->segmentTable->selectRow(outcome.row);
+}
+
+void MainWindow::fitSegmentsDock() {
+    QDockWidget* dock = m_ui->segmentsDock;
+    QTableView* table = m_ui->segmentTable;
+    if (dock->isFloating() || !dock->isVisible() ||
+        dockWidgetArea(dock) != Qt::BottomDockWidgetArea) {
+        return;
+    }
+    layout()->activate();  // the docks' heights as laid out now, not as first constructed
+    // The height the layout gave the dock (or the user, after we last fitted it): the most it
+    // is ever fitted to.
+    if (m_segmentsDockFitted < 0 || dock->height() != m_segmentsDockFitted) {
+        m_segmentsDockRoom = dock->height();
+    }
+    const int rowHeight = table->verticalHeader()->defaultSectionSize();
+    const int rows = std::max(m_model->rowCount(), kMinSegmentRowsShown);
+    // resizeDocks sets the dock area, and the dock gets that less its tab bar: ask, measure
+    // what it got, ask once more for the difference.
+    const int wanted = std::min(dock->height() + rows * rowHeight + 2 - table->viewport()->height(),
+                                m_segmentsDockRoom);
+    int asked = wanted;
+    for (int pass = 0; pass < 2 && dock->height() != wanted; ++pass) {
+        resizeDocks({dock}, {asked}, Qt::Vertical);
+        layout()->activate();
+        asked += wanted - dock->height();
+    }
+    m_segmentsDockFitted = dock->height();
 }
 
 void MainWindow::renameProject(const QString& name) {

@@ -200,6 +200,13 @@ private:
     /// Icons of every action and dock toggle; every tooltip names its shortcut.
     void setUpIcons();
     void setUpWhatsThis();
+    /// @brief Sizes the Segments dock (and its tabs) to the contour's rows, at least
+    /// kMinSegmentRowsShown, when a project is opened or made: a short contour leaves the
+    /// plots the room it does not need; a long one gets back the height the dock had.
+    void fitSegmentsDock();
+    static constexpr int kMinSegmentRowsShown = 4;
+    int m_segmentsDockRoom = 0;     ///< the dock's height before fitting (layout or user)
+    int m_segmentsDockFitted = -1;  ///< its height after the last fit
     void finishSynthesis(const std::shared_ptr<const Result<Synthesis>>& result, bool cancelled);
     Autosave* m_autosave = nullptr;
     MotionDesignPanel* m_design = nullptr;

@@ -1,0 +1,65 @@
+// The docks keep the plots readable: the Segments dock takes the rows its contour has (a
+// two-row project leaves the rest to the plots, a long one gets the height back), and a
+// large Samples / turn does not widen the Motion dock.
+
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QDockWidget>
+#include <QHeaderView>
+#include <QSpinBox>
+#include <QTableView>
+
+#include "app_test_support.h"
+#include "document/commands.h"
+#include "mainwindow.h"
+
+namespace cam {
+namespace {
+
+TEST(DockLayout, TheSegmentsDockTakesTheRowsItsContourHas) {
+    MainWindow window;
+    window.resize(1400, 860);
+    window.show();
+    QApplication::processEvents();
+    auto* dock = window.findChild<QDockWidget*>("segmentsDock");
+    ASSERT_TRUE(window.loadFile(test::kExampleFile).isEmpty());
+    QApplication::processEvents();
+    QApplication::processEvents();
+    auto* table = window.findChild<QTableView*>("segmentTable");
+    const int rowHeight = table->verticalHeader()->defaultSectionSize();
+    const int longHeight = dock->height();
+    EXPECT_GE(table->viewport()->height(), 6 * rowHeight);  // 13 rows: most of them shown
+
+    window.findChild<QAction*>("actionNew")->trigger();  // two rows, unmodified: no prompt
+    ASSERT_EQ(window.document()->project().contour.size(), 2u);
+    QApplication::processEvents();
+    QApplication::processEvents();
+    // Room for four rows, not more: the plots get the rest.
+    EXPECT_LE(table->viewport()->height(), 5 * rowHeight);
+    EXPECT_GE(table->viewport()->height(), 4 * rowHeight);
+    EXPECT_LT(dock->height(), longHeight);
+
+    ASSERT_TRUE(window.loadFile(test::kExampleFile).isEmpty());
+    QApplication::processEvents();
+    QApplication::processEvents();
+    EXPECT_EQ(dock->height(), longHeight);  // the long contour gets its height back
+}
+
+TEST(DockLayout, TenMillionSamplesDoNotWidenTheMotionDock) {
+    MainWindow window;
+    window.resize(1400, 860);
+    window.show();
+    QApplication::processEvents();
+    auto* motion = window.findChild<QDockWidget*>("motionDock");
+    auto* samples = window.findChild<QSpinBox*>("samplesSpinBox");
+    ASSERT_NE(samples, nullptr);
+    const int width = motion->width();
+    samples->setValue(10'000'000);
+    QApplication::processEvents();
+    EXPECT_EQ(motion->width(), width);
+    EXPECT_EQ(samples->text(), "10000000");  // no group separators, as everywhere
+}
+
+}  // namespace
+}  // namespace cam
