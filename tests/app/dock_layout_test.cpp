@@ -5,14 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QHeaderView>
 #include <QSpinBox>
 #include <QTableView>
+#include <QTest>
 
 #include "app_test_support.h"
 #include "document/commands.h"
 #include "mainwindow.h"
+#include "models/segment_table_model.h"
 
 namespace cam {
 namespace {
@@ -59,6 +62,29 @@ TEST(DockLayout, TenMillionSamplesDoNotWidenTheMotionDock) {
     QApplication::processEvents();
     EXPECT_EQ(motion->width(), width);
     EXPECT_EQ(samples->text(), "10000000");  // no group separators, as everywhere
+}
+
+// The Type and Branch cells' combo editors show their longest choice whole, also where the
+// column, sized to the cells' text, is narrower than the editor needs.
+TEST(DockLayout, ComboEditorsAreNeverClipped) {
+    MainWindow window;
+    window.resize(1400, 860);
+    window.show();
+    ASSERT_TRUE(window.loadFile(test::kExampleFile).isEmpty());
+    QApplication::processEvents();
+    auto* table = window.findChild<QTableView*>("segmentTable");
+    for (int column : {SegmentTableModel::Type, SegmentTableModel::Branch}) {
+        const QModelIndex index = window.tableModel()->index(1, column);
+        table->setCurrentIndex(index);
+        table->edit(index);
+        QApplication::processEvents();
+        auto* combo = table->findChild<QComboBox*>();
+        ASSERT_NE(combo, nullptr) << column;
+        EXPECT_GE(combo->width(), combo->sizeHint().width()) << column;
+        table->closePersistentEditor(index);
+        QTest::keyClick(combo, Qt::Key_Escape);
+        QApplication::processEvents();
+    }
 }
 
 }  // namespace
