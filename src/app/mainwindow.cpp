@@ -153,9 +153,19 @@ MainWindow::MainWindow(QWidget* parent)
     m_ui->pathStudyDock->hide();
     m_followerDock->hide();  // until opened, or a project with a follower is loaded
     m_designDock->hide();    // until opened, or a project with a design is loaded
-    // Tabbed with the follower (both hidden here: tabified while shown, the two made the
-    // hidden window grow to the height of both).
+    // The right-hand docks are tabs of one group (tabified while hidden: tabified while shown,
+    // two made the hidden window grow to the height of both). Stacked, Machining, Path Study
+    // and Follower together asked for more height than the screen has, and the window grew
+    // past its bottom edge. Opening one brings its tab to the front.
     tabifyDockWidget(m_followerDock, m_designDock);
+    tabifyDockWidget(m_designDock, m_ui->machiningDock);
+    tabifyDockWidget(m_ui->machiningDock, m_ui->pathStudyDock);
+    for (QDockWidget* dock :
+         {m_followerDock, m_designDock, m_ui->machiningDock, m_ui->pathStudyDock}) {
+        connect(dock->toggleViewAction(), &QAction::toggled, dock, [dock](bool on) {
+            if (on) QTimer::singleShot(0, dock, [dock] { dock->raise(); });
+        });
+    }
     restoreState(settings.value("window/state").toByteArray());
     m_ui->actionAxisTime->setChecked(settings.value("view/timeAxis", false).toBool());
     m_document->reset(ContourEdits::newProject(), {});

@@ -15,6 +15,9 @@
 #include "app_test_support.h"
 #include "document/commands.h"
 #include "mainwindow.h"
+#include "views/kinematics_plots.h"
+
+#include <qcustomplot.h>
 #include "models/segment_table_model.h"
 
 namespace cam {
@@ -85,6 +88,32 @@ TEST(DockLayout, ComboEditorsAreNeverClipped) {
         QTest::keyClick(combo, Qt::Key_Escape);
         QApplication::processEvents();
     }
+}
+
+// Opening every right-hand dock (Follower, Motion Design, Machining, Path Study) neither grows
+// the window past its size (stacked, they asked for more height than the screen had, and the
+// window's bottom went off the screen) nor squeezes the plots: they are tabs of one group, the
+// one opened last in front.
+TEST(DockLayout, TheRightHandDocksAreTabsAndTheWindowKeepsItsSize) {
+    MainWindow window;
+    window.resize(1400, 860);
+    window.show();
+    ASSERT_TRUE(window.loadFile(test::kExampleFile).isEmpty());
+    QApplication::processEvents();
+    const int heightBefore = window.plots()->plot(0)->height();
+    for (const char* name :
+         {"followerDock", "motionDesignDock", "machiningDock", "pathStudyDock"}) {
+        auto* dock = window.findChild<QDockWidget*>(name);
+        ASSERT_NE(dock, nullptr) << name;
+        dock->toggleViewAction()->trigger();
+        QApplication::processEvents();
+        QApplication::processEvents();
+        EXPECT_TRUE(dock->isVisible()) << name;
+        EXPECT_FALSE(dock->visibleRegion().isEmpty()) << name << " is not the tab in front";
+        EXPECT_EQ(window.height(), 860) << name;
+        EXPECT_EQ(window.plots()->plot(0)->height(), heightBefore) << name;
+    }
+    EXPECT_EQ(window.tabifiedDockWidgets(window.findChild<QDockWidget*>("followerDock")).size(), 3);
 }
 
 }  // namespace
