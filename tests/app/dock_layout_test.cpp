@@ -23,10 +23,17 @@
 namespace cam {
 namespace {
 
-TEST(DockLayout, TheSegmentsDockTakesTheRowsItsContourHas) {
+/// The window at the size of the development screen, shown.
+class DockLayout : public ::testing::Test {
+protected:
+    void SetUp() override {
+        window.resize(1400, 860);
+        window.show();
+    }
     MainWindow window;
-    window.resize(1400, 860);
-    window.show();
+};
+
+TEST_F(DockLayout, TheSegmentsDockTakesTheRowsItsContourHas) {
     QApplication::processEvents();
     auto* dock = window.findChild<QDockWidget*>("segmentsDock");
     ASSERT_TRUE(window.loadFile(test::kExampleFile).isEmpty());
@@ -52,10 +59,7 @@ TEST(DockLayout, TheSegmentsDockTakesTheRowsItsContourHas) {
     EXPECT_EQ(dock->height(), longHeight);  // the long contour gets its height back
 }
 
-TEST(DockLayout, TenMillionSamplesDoNotWidenTheMotionDock) {
-    MainWindow window;
-    window.resize(1400, 860);
-    window.show();
+TEST_F(DockLayout, TenMillionSamplesDoNotWidenTheMotionDock) {
     QApplication::processEvents();
     auto* motion = window.findChild<QDockWidget*>("motionDock");
     auto* samples = window.findChild<QSpinBox*>("samplesSpinBox");
@@ -69,10 +73,7 @@ TEST(DockLayout, TenMillionSamplesDoNotWidenTheMotionDock) {
 
 // The Type and Branch cells' combo editors show their longest choice whole, also where the
 // column, sized to the cells' text, is narrower than the editor needs.
-TEST(DockLayout, ComboEditorsAreNeverClipped) {
-    MainWindow window;
-    window.resize(1400, 860);
-    window.show();
+TEST_F(DockLayout, ComboEditorsAreNeverClipped) {
     ASSERT_TRUE(window.loadFile(test::kExampleFile).isEmpty());
     QApplication::processEvents();
     auto* table = window.findChild<QTableView*>("segmentTable");
@@ -94,10 +95,7 @@ TEST(DockLayout, ComboEditorsAreNeverClipped) {
 // the window past its size (stacked, they asked for more height than the screen had, and the
 // window's bottom went off the screen) nor squeezes the plots: they are tabs of one group, the
 // one opened last in front.
-TEST(DockLayout, TheRightHandDocksAreTabsAndTheWindowKeepsItsSize) {
-    MainWindow window;
-    window.resize(1400, 860);
-    window.show();
+TEST_F(DockLayout, TheRightHandDocksAreTabsAndTheWindowKeepsItsSize) {
     ASSERT_TRUE(window.loadFile(test::kExampleFile).isEmpty());
     QApplication::processEvents();
     const int heightBefore = window.plots()->plot(0)->height();

@@ -485,11 +485,15 @@ Eigen::Vector2d ContourView::snap(const QPointF& pixel, Qt::KeyboardModifiers mo
             }
         };
         consider(Eigen::Vector2d::Zero());
+        // The centres from the document (current while dragging); the joints as the engine
+        // computed and drew them, so that a mouse move evaluates no segment on this thread.
         const auto& contour = m_document->project().contour;
         for (std::size_t k = 0; k < contour.size(); ++k) {
             if (static_cast<int>(k) == skipSegment) continue;
             if (const Arc* arc = contour[k].as<Arc>()) consider(arc->center);
-            consider(pointOnSegment(contour[k], contour[k].phiEndDeg));
+        }
+        for (auto it = m_joints->data()->constBegin(); it != m_joints->data()->constEnd(); ++it) {
+            consider({it->key, it->value});
         }
         if (nearest) {
             p = *nearest;

@@ -48,7 +48,8 @@ public:
     [[nodiscard]] QString staleReason() const;
 
     /// @brief Where a dragged or picked point at this pixel lands, mm. Without modifiers it
-    /// snaps to the rotation centre, an arc's centre or a joint within kSnapPixels, else to
+    /// snaps to the rotation centre, an arc's centre (but skipSegment's) or a joint as last
+    /// drawn within kSnapPixels, else to
     /// the grid: the multiples of the smallest step of 1, 2 or 5 × 10^k mm that spans at
     /// least kGridPixels on screen. Alt: no snapping. Shift with an `origin` (where a drag
     /// began): only the axis the mouse moved farther along changes.

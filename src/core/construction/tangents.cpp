@@ -22,8 +22,6 @@ using Vec = Eigen::Vector2d;
 /// Circles closer to touching than this (relative to their size) touch.
 constexpr double kTouchRel = 1e-12;
 
-double polarDeg(const Vec& p) { return radToDeg(std::atan2(p.y(), p.x())); }
-
 bool finite(const Vec& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
 
 bool isCircle(const Arc& arc) {
@@ -40,32 +38,6 @@ double arcSense(const Arc& arc) { return arc.branch == Branch::Outer ? 1.0 : -1.
 /// that ray, without its rounding near the tangent ray.
 bool onBranch(const Vec& p, const Vec& center, double sense) {
     return sense * p.dot(p - center) > 0.0;
-}
-
-/// Angle from direction a to direction b turning in `sense` (+1 ccw, -1 cw), in [0, 2π).
-double sweepRad(const Vec& a, const Vec& b, double sense) {
-    const double t = std::atan2(sense * cross(a, b), a.dot(b));
-    return t < 0.0 ? t + kTwoPi : t;
-}
-
-Vec rotate(const Vec& v, double angle) {
-    const double c = std::cos(angle), s = std::sin(angle);
-    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
-}
-
-/// Every point p = o + rho·e of the arc that leaves t1 turning `sense` by `sweep` lies on the
-/// branch `sense`: sense·p·(p − o) = sense·rho·(rho + o·e) > 0. o·e is a cosine in e, so its
-/// minimum over the swept directions is at an end or at e = −sense·ô, if that is swept.
-bool arcOnBranch(const Vec& o, double rho, const Vec& t1, double sweep, double sense) {
-    auto g = [&](const Vec& e) { return sense * (rho + o.dot(e)); };
-    const Vec e1 = (t1 - o) / rho;
-    const Vec e2 = rotate(e1, sense * sweep);
-    double worst = std::min(g(e1), g(e2));
-    if (o.norm() > 0.0) {
-        const Vec extreme = -sense * o.normalized();
-        if (sweepRad(e1, extreme, sense) < sweep) worst = std::min(worst, g(extreme));
-    }
-    return worst > 0.0;
 }
 
 /// Six significant digits: enough to tell the user which point is meant.
@@ -311,16 +283,7 @@ std::vector<CircleTangent> circleTangentLines(const Arc& a, const Arc& b) {
 Result<TangentLineChoices> tangentLineJoint(const std::vector<SegmentSpec>& contour,
                                             std::size_t joint) {
     const std::size_t n = contour.size();
-    if (n < 2) {
-        return Diagnostics{{"contour",
-                            "a tangent line needs a joint between two segments (the "
-                            "contour has " +
-                                std::to_string(n) + ")"}};
-    }
-    if (joint >= n) {
-        return Diagnostics{{"contour", "there is no joint " + std::to_string(joint) +
-                                           ": joints are numbered 0 .. " + std::to_string(n - 1)}};
-    }
+    if (auto problem = jointIndexProblem(n, joint, "tangent line")) return Diagnostics{*problem};
     Joint k;
     k.left = (joint + n - 1) % n;
     k.right = joint;
@@ -463,7 +426,7 @@ Result<ArcThroughPointResult> arcThroughPoint(const std::vector<SegmentSpec>& co
                     "the point");
     }
     const double sweep = sweepRad(t - center, p - center, sense);
-    if (!arcOnBranch(center, radius, t, sweep, sense)) {
+    if (!arcSweepOnBranch(center, radius, t, sweep, sense)) {
         return fail("the point lies behind the end point of " + segmentLocation(row) +
                     " as seen from the rotation centre: the arc along " + circle +
                     " would pass to its " + sideName(-sense) + " side and run back before " +

@@ -19,19 +19,6 @@ namespace {
 
 using Vec = Eigen::Vector2d;
 
-double polarDeg(const Vec& p) { return radToDeg(std::atan2(p.y(), p.x())); }
-
-/// Angle from direction a to direction b turning in `sense` (+1 ccw, -1 cw), in [0, 2π).
-double sweepRad(const Vec& a, const Vec& b, double sense) {
-    const double t = std::atan2(sense * cross(a, b), a.dot(b));
-    return t < 0.0 ? t + kTwoPi : t;
-}
-
-Vec rotate(const Vec& v, double angle) {
-    const double c = std::cos(angle), s = std::sin(angle);
-    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
-}
-
 /// As phi grows the ray's far intersection ("outer") moves counter-clockwise about the circle's
 /// centre and the near one clockwise, so the branch is the direction of travel.
 double arcSense(const Arc& arc) { return arc.branch == Branch::Outer ? 1.0 : -1.0; }
@@ -127,21 +114,6 @@ std::vector<Vec> intersect(const Offset& p, const Offset& q) {
     return {base + h * perp(e), base - h * perp(e)};
 }
 
-/// The ray angle grows along the fillet (so the ray meets it once) where
-/// side·(p·(p − o)) = side·rho·(rho + o·e) > 0 for p = o + rho·e: check both ends and the
-/// extreme of o·e if it lies inside the swept interval.
-bool polarMonotone(const Vec& o, double rho, const Vec& t1, double sweep, double side) {
-    auto g = [&](const Vec& e) { return side * (rho + o.dot(e)); };
-    const Vec e1 = (t1 - o) / rho;
-    const Vec e2 = rotate(e1, side * sweep);
-    double worst = std::min(g(e1), g(e2));
-    if (o.norm() > 0.0) {
-        const Vec extreme = -side * o.normalized();
-        if (sweepRad(e1, extreme, side) < sweep) worst = std::min(worst, g(extreme));
-    }
-    return worst > 0.0;
-}
-
 /// Is p where the ray at phi meets the segment (and not on the circle's other branch)?
 bool onSegment(const SegmentSpec& s, double phiDeg, const Vec& p) {
     return (pointOnSegment(s, phiDeg) - p).norm() <= 0.1 * kJointToleranceMm;
@@ -167,7 +139,7 @@ Candidate check(const Corner& k, const Offset& offA, const Offset& offB, const V
     // rounding of this corner. (An outer arc fails here only when it would pass the rotation
     // centre, cutting it off; an inner one cannot fail on a continuous family of radii.)
     const double sweep = sweepRad(c.t1 - o, c.t2 - o, k.side);
-    c.failure = polarMonotone(o, rho, c.t1, sweep, k.side) ? Failure::None : Failure::RayTwice;
+    c.failure = arcSweepOnBranch(o, rho, c.t1, sweep, k.side) ? Failure::None : Failure::RayTwice;
     return c;
 }
 
@@ -222,16 +194,7 @@ std::string rounded(double v) {
 
 Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t joint) {
     const std::size_t n = contour.size();
-    if (n < 2) {
-        const std::string count = std::to_string(n);
-        return Diagnostics{
-            {"contour",
-             "a fillet needs a joint between two segments (the contour has " + count + ")"}};
-    }
-    if (joint >= n) {
-        return Diagnostics{{"contour", "there is no joint " + std::to_string(joint) +
-                                           ": joints are numbered 0 .. " + std::to_string(n - 1)}};
-    }
+    if (auto problem = jointIndexProblem(n, joint, "fillet")) return Diagnostics{*problem};
     Corner k;
     k.left = (joint + n - 1) % n;
     k.right = joint;

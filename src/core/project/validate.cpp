@@ -475,6 +475,21 @@ std::pair<double, double> lineWindowDeg(const SegmentSpec& segment, double nearD
     return {start, start + sweep};
 }
 
+std::optional<Diagnostic> jointIndexProblem(std::size_t segmentCount, std::size_t joint,
+                                            const std::string& operation) {
+    if (segmentCount < 2) {
+        return Diagnostic{"contour", "a " + operation +
+                                         " needs a joint between two segments (the contour has " +
+                                         std::to_string(segmentCount) + ")"};
+    }
+    if (joint >= segmentCount) {
+        return Diagnostic{"contour", "there is no joint " + std::to_string(joint) +
+                                         ": joints are numbered 0 .. " +
+                                         std::to_string(segmentCount - 1)};
+    }
+    return std::nullopt;
+}
+
 Diagnostics validateProject(const Project& project, ValidationOptions options) {
     return Validator(project, options).run();
 }

@@ -2,6 +2,10 @@
 /// @file
 /// @brief Every rule of project-format.md, checked on the document, each problem located.
 
+#include <cstddef>
+#include <optional>
+#include <string>
+
 #include "common/diagnostic.h"
 #include "common/tolerances.h"
 #include "project/project.h"
@@ -23,5 +27,11 @@ struct ValidationOptions {
 /// @brief Polar window of a line from its end points, in degrees; the start is unwrapped to lie
 /// within 180° of `nearDeg` (the previous segment's end, or 0).
 [[nodiscard]] std::pair<double, double> lineWindowDeg(const SegmentSpec& line, double nearDeg);
+
+/// @brief Why joint K cannot be operated on by `operation` (e.g. "fillet"): the contour has
+/// fewer than two segments, or K is not one of its joints 0 .. n−1; none when it is one.
+[[nodiscard]] std::optional<Diagnostic> jointIndexProblem(std::size_t segmentCount,
+                                                          std::size_t joint,
+                                                          const std::string& operation);
 
 }  // namespace cam
