@@ -876,10 +876,19 @@ void MainWindow::requestCompute() {
 }
 
 void MainWindow::showResult(const ComputeResultPtr& result) {
+    if (m_shown && result->ok() && result->generation == m_shown->generation) {
+        // The same result with the finer plot levels (see ComputeWorker): only the plots,
+        // which draw them when zoomed in, take it.
+        m_shown = result;
+        m_plots->setResult(result);
+        emit resultShown(result);
+        return;
+    }
     m_busyTimer->stop();
     // The views keep what they drew from the last computable result and mark it out of date.
-    m_contour->setResult(result);
+    // The plots first: each view's redraw is queued, and they are drawn in this order.
     m_plots->setResult(result);
+    m_contour->setResult(result);
     m_joints->setResult(result);
     m_pathStudy->setResult(result);
     m_follower->setResult(result);
@@ -943,7 +952,8 @@ void MainWindow::setCursorTime(double t) {
 bool MainWindow::waitForCurrentResult(int timeoutMs) {
     const auto current = [this] {
         const auto& r = m_engine->latestResult();
-        return r && r->generation == m_engine->latestGeneration();
+        // A first picture is followed by its finer plot levels.
+        return r && r->generation == m_engine->latestGeneration() && !r->curves.partial;
     };
     if (current()) return true;
     QEventLoop loop;

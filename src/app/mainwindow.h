@@ -128,13 +128,15 @@ public:
     /// @brief Shows the Machining panel (its plots and times are computed only while shown).
     void showMachiningPanel();
 
-    /// @brief Runs the event loop until the plots show the result of the newest request.
+    /// @brief Runs the event loop until the plots show the result of the newest request, with
+    /// every plot level.
     bool waitForCurrentResult(int timeoutMs);
     /// @brief The last result that could be computed: what the views draw (null before one).
     [[nodiscard]] const ComputeResultPtr& shownResult() const { return m_shown; }
 
 signals:
-    /// The plots show this result (emitted after they were updated).
+    /// The plots show this result (emitted after they were updated); a first picture's result
+    /// is followed by the same one with its finer plot levels (PlotCurves::partial).
     void resultShown(const cam::ComputeResultPtr& result);
     /// A synthesis ended: `problem` is empty when the contour was replaced (one undo step).
     void synthesisFinished(const QString& problem);

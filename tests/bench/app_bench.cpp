@@ -6,6 +6,8 @@
 //                         GUI thread and its 99th percentile, measured by a 1 ms probe timer.
 //  BM_ComputeProject    — the worker's share of an edit: the whole computation of one request
 //                         including the views' plot containers (no GUI involved).
+//  BM_FirstPicture      — the same up to the first picture the window draws (the plot levels
+//                         a whole-turn view needs); counter refine_ms: the finer levels after.
 //  BM_ManySegments      — a split circle of 1,000 to 100,000 arcs: open until drawn, one
 //                         replot of the contour view, close (counters open_ms, replot_ms,
 //                         close_ms).
@@ -81,19 +83,21 @@ void BM_EditToRedraw(benchmark::State& state) {
     QObject::connect(pressure, &QCustomPlot::afterReplot, [&] { ++pressureReplots; });
     int k = 1;
     for (auto _ : state) {
+        // The replot counts when the result was handed to the views: counted inside the
+        // signal, since the queued replots may run in the same processEvents() call.
         bool shown = false;
-        auto c =
-            QObject::connect(window.get(), &cam::MainWindow::resultShown, [&] { shown = true; });
+        int replotsAtShow = -1, pressureAtShow = -1;
+        auto c = QObject::connect(window.get(), &cam::MainWindow::resultShown, [&] {
+            if (shown) return;  // the finer plot levels that follow the first picture
+            shown = true;
+            replotsAtShow = replots;
+            pressureAtShow = pressureReplots;
+        });
         QElapsedTimer timer;
         timer.start();
         editCell(*window, k++);
-        int replotsAtShow = -1, pressureAtShow = -1;
         while (true) {
             QCoreApplication::processEvents(QEventLoop::AllEvents);
-            if (shown && replotsAtShow < 0) {
-                replotsAtShow = replots;
-                pressureAtShow = pressureReplots;
-            }
             // Redrawn after the result arrived: the plots, and the pressure angle when shown.
             if (shown && replots > replotsAtShow &&
                 (!follower || !pressure->isVisible() || pressureReplots > pressureAtShow)) {
@@ -161,6 +165,40 @@ BENCHMARK(BM_StreamingEdits)
     ->Iterations(1)
     ->Repetitions(3)
     ->ReportAggregatesOnly(false);
+
+/// The worker's first picture of an edit (plot levels down to
+/// PlotCurves::kFirstPictureBuckets, every sample computed), and then its refinement.
+void BM_FirstPicture(benchmark::State& state) {
+    auto window = std::make_unique<cam::MainWindow>();
+    if (!window->loadFile(QStringLiteral(CAMWRIGHT_EXAMPLES "/six-lobe-arc-cam.cam.json"))
+             .isEmpty()) {
+        std::abort();
+    }
+    cam::Project p = window->document()->project();
+    p.samplesPerTurn = state.range(0);
+    const cam::ComputeRequest request{1,
+                                      std::make_shared<const cam::Project>(p),
+                                      cam::PlotAxis::Angle,
+                                      false,
+                                      cam::TimingMethod::Optimal,
+                                      cam::PlotCurves::kFirstPictureBuckets};
+    const cam::QcpPlotDataPreparer preparer;
+    const std::atomic<bool> cancel{false};
+    double refineMs = 0.0;
+    for (auto _ : state) {
+        auto result = cam::computeProject(request, cancel, &preparer);
+        benchmark::DoNotOptimize(result);
+        state.PauseTiming();
+        QElapsedTimer timer;
+        timer.start();
+        auto refined = cam::refineResult(*result, cancel, &preparer);
+        refineMs = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
+        benchmark::DoNotOptimize(refined);
+        state.ResumeTiming();
+    }
+    state.counters["refine_ms"] = refineMs;
+}
+BENCHMARK(BM_FirstPicture)->Arg(3600)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 
 void BM_ComputeProject(benchmark::State& state) {
     auto window = std::make_unique<cam::MainWindow>();

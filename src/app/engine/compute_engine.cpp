@@ -80,6 +80,20 @@ void ComputeWorker::run() {
         }
         if (!result || m_cancel.load()) continue;
         emit finished(result);
+        // The first picture is shown; the finer plot levels (for zooming in) follow, unless
+        // a newer request came meanwhile.
+        if (result->curves.partial) {
+            ComputeResultPtr refined;
+            try {
+                refined = refineResult(*result, m_cancel, preparer.get());
+            } catch (const std::exception& e) {
+                refined = failedResult(request, failureMessage(&e));
+            } catch (...) {
+                refined = failedResult(request, failureMessage(nullptr));
+            }
+            if (!refined || m_cancel.load()) continue;
+            emit finished(refined);
+        }
         if (request.timing && result->ok() && request.project->machining) {
             computeTimingOf(request, *result, preparer.get());
         }
@@ -147,8 +161,9 @@ void ComputeEngine::setPlotDataPreparer(std::shared_ptr<const PlotDataPreparer> 
 
 void ComputeEngine::request(const Project& project, PlotAxis axis, bool timing,
                             TimingMethod plotMethod) {
-    m_pending = ComputeRequest{++m_generation, std::make_shared<const Project>(project), axis,
-                               timing, plotMethod};
+    m_pending =
+        ComputeRequest{++m_generation, std::make_shared<const Project>(project), axis, timing,
+                       plotMethod,     PlotCurves::kFirstPictureBuckets};
     // Leading edge: a lone edit is computed at once. Edits that follow within the interval
     // are held and only the newest is submitted when it ends (trailing edge).
     if (!m_timer.isActive()) {

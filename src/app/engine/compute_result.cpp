@@ -238,7 +238,7 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     });
     result->sampleCount = static_cast<std::size_t>(request.project->samplesPerTurnOrDefault());
     if (!buildPlotCurves(*result->contour, result->omega, result->sampleCount, request.axis,
-                         result->curves, cancel)) {
+                         result->curves, cancel, request.firstPictureBuckets)) {
         return nullptr;
     }
     result->analysis = analyzeContour(*result->contour, result->omega, &cancel);
@@ -271,6 +271,24 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
         if (cancel.load()) return nullptr;
     }
     result->computeMs = static_cast<double>(timer.nsecsElapsed()) / 1e6;
+    return result;
+}
+
+ComputeResultPtr refineResult(const ComputeResult& first, const std::atomic<bool>& cancel,
+                              const PlotDataPreparer* preparer) {
+    if (!first.ok() || !first.curves.partial) return nullptr;
+    QElapsedTimer timer;
+    timer.start();
+    auto result = std::make_shared<ComputeResult>(first);
+    if (!buildPlotCurves(*result->contour, result->omega, result->sampleCount, result->axis,
+                         result->curves, cancel)) {
+        return nullptr;
+    }
+    if (preparer) {
+        result->prepared = preparer->prepare(*result, cancel);
+        if (cancel.load()) return nullptr;
+    }
+    result->computeMs = first.computeMs + static_cast<double>(timer.nsecsElapsed()) / 1e6;
     return result;
 }
 

@@ -42,6 +42,9 @@ struct ComputeRequest {
     PlotAxis axis = PlotAxis::Angle;
     bool timing = false;  ///< also compute the machining times (when the panel is shown)
     TimingMethod plotMethod = TimingMethod::Optimal;
+    /// With a value > 0, the plot levels stop at this many buckets (a first picture, see
+    /// buildPlotCurves); refineResult() adds the finer ones. 0: every level at once.
+    std::size_t firstPictureBuckets = 0;
 };
 
 /// @brief The project's motion design over the turn (math.md §8), on the plots' x axis: the
@@ -55,7 +58,7 @@ struct DesignCurves {
     /// of the exact profile with this follower (undercut is an error: Synthesize refuses it).
     Diagnostics notes;
     std::vector<LawCoefficients> coefficients;  ///< per design segment
-    bool swinging = false;  ///< lifts in degrees (a swinging arm), else mm
+    bool swinging = false;                      ///< lifts in degrees (a swinging arm), else mm
     /// The design's segment ends (to_deg) on the plots' x axis.
     std::vector<double> jointsX;
     /// kFollowerCurvePoints + 1 equal time steps, as followerX.
@@ -155,6 +158,11 @@ TimingOutcomePtr computeTiming(const ComputeRequest& request, const Contour& con
 /// thread, the worker's).
 ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic<bool>& cancel,
                                 const PlotDataPreparer* preparer = nullptr);
+
+/// @brief The first picture's result with every plot level (and the views' data for them):
+/// the same result otherwise. Null if cancelled, or if `first` has every level already.
+ComputeResultPtr refineResult(const ComputeResult& first, const std::atomic<bool>& cancel,
+                              const PlotDataPreparer* preparer = nullptr);
 
 /// @brief A result that says the computation failed and why (the message is shown as is).
 ComputeResultPtr failedResult(const ComputeRequest& request, const std::string& message);

@@ -267,7 +267,7 @@ std::size_t PlotCurves::levelFor(double visibleFraction, double pixels) const {
 }
 
 bool buildPlotCurves(const Contour& contour, double omega, std::size_t n, PlotAxis axis,
-                     PlotCurves& out, const std::atomic<bool>& cancel) {
+                     PlotCurves& out, const std::atomic<bool>& cancel, std::size_t maxBuckets) {
     out = PlotCurves{};
     out.sampleCount = n;
     const Turn turn(contour, omega, axis);
@@ -281,6 +281,16 @@ bool buildPlotCurves(const Contour& contour, double omega, std::size_t n, PlotAx
     if (n > PlotCurves::kMaxLevelPoints) {
         shift = 2;
         while (2 * ceilDiv(n, std::size_t{1} << shift) > PlotCurves::kMaxLevelPoints) ++shift;
+    }
+    // A first picture starts at a coarser level of the same sequence (below: 3 after 0, then
+    // steps of 2), one that still has enough buckets to be coarsened.
+    if (maxBuckets > 0) {
+        while (ceilDiv(n, std::size_t{1} << shift) > maxBuckets) {
+            const int next = shift == 0 ? 3 : shift + 2;
+            if (ceilDiv(n, std::size_t{1} << next) < PlotCurves::kMinLevelBuckets) break;
+            shift = next;
+            out.partial = true;
+        }
     }
     std::array<CurveBuilder, kCurveCount> builders;
     for (CurveBuilder& b : builders) {

@@ -60,7 +60,14 @@ struct PlotCurves {
     /// Samples computed at a time (a multiple of kSampleBlock, so chunks are exact).
     static constexpr std::size_t kChunkSamples = 65'536;
 
-    std::vector<PlotLevel> levels;     ///< finest first
+    /// The finest level of a first picture holds at most this many buckets: enough for a
+    /// plot 4,096 pixels wide to show the whole turn at its true extremes (see buildPlotCurves).
+    static constexpr std::size_t kFirstPictureBuckets = 4'096;
+
+    std::vector<PlotLevel> levels;  ///< finest first
+    /// Only the coarser levels were made (a first picture): a second pass adds the finer ones,
+    /// for zooming in.
+    bool partial = false;
     std::array<PlotRange, 3> yRanges;  ///< velocity, acceleration, jerk, over all their curves
     /// The plotted turn: [0, 360°] or [0, T]; [−360°, 0] when turning clockwise over angle.
     PlotRange xRange;
@@ -77,7 +84,13 @@ struct PlotCurves {
 /// @brief Samples one turn in chunks of PlotCurves::kChunkSamples and builds the plotted
 /// curves: memory stays bounded however many samples the turn has. Requires
 /// 1 <= n <= kMaxSamplesPerTurn and omega != 0. Returns false if cancelled.
+///
+/// With `maxBuckets` > 0 only the levels of at most that many buckets are made (`partial` when
+/// that leaves out finer ones): every sample is still computed, and those levels are the same
+/// as in the whole set, so a plot narrower than `maxBuckets` pixels that shows the whole turn
+/// draws exactly what it would with every level. Most of the time of a whole set goes into
+/// its finest levels, which only a zoomed-in plot needs.
 bool buildPlotCurves(const Contour& contour, double omega, std::size_t n, PlotAxis axis,
-                     PlotCurves& out, const std::atomic<bool>& cancel);
+                     PlotCurves& out, const std::atomic<bool>& cancel, std::size_t maxBuckets = 0);
 
 }  // namespace cam

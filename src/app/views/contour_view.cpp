@@ -7,6 +7,7 @@
 
 #include "document/commands.h"
 #include "models/delegates.h"
+#include "views/layer_replot.h"
 #include "views/palette.h"
 #include "views/stale_label.h"
 
@@ -143,6 +144,9 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     m_controlPolygon->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 4));
     // The drag handles above the markers: a centre cross never hides the handle on it.
     addLayer("handles", layer("markers"), QCustomPlot::limAbove);
+    // Buffered: an edit moves them at once, while the contour waits for the engine's result.
+    m_handlesLayer = layer("handles");
+    m_handlesLayer->setMode(QCPLayer::lmBuffered);
     for (QCPAbstractPlottable* p : std::initializer_list<QCPAbstractPlottable*>{
              m_firstHandle, m_secondHandle, m_controlPolygon}) {
         p->setLayer("handles");
@@ -165,7 +169,7 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     connect(this, &QCustomPlot::mouseWheel, this, [this] { m_autoFit = false; });
     connect(document, &ProjectDocument::changed, this, [this] {
         updateHandles();
-        replot(rpQueuedReplot);
+        replotLayer(m_handlesLayer);  // the contour follows with the result
     });
 }
 
@@ -308,7 +312,7 @@ void ContourView::setCursorAngle(double phi) {
     m_ray->end->setCoords(reach * std::cos(phi), reach * std::sin(phi));
     m_rayPoint->position->setCoords(r * std::cos(phi), r * std::sin(phi));
     placeFollower(phi);
-    m_cursorLayer->replot();
+    replotLayer(m_cursorLayer);
 }
 
 ContourView::FollowerMarkers ContourView::followerMarkers() const {
@@ -525,7 +529,7 @@ void ContourView::cancelPointPick() {
     m_picking = false;
     unsetCursor();
     m_pickMarker->setVisible(false);
-    m_cursorLayer->replot();
+    replotLayer(m_cursorLayer);
     emit pickCancelled();
 }
 
@@ -544,7 +548,7 @@ void ContourView::mousePressEvent(QMouseEvent* event) {
         m_picking = false;
         unsetCursor();
         m_pickMarker->setVisible(false);
-        m_cursorLayer->replot();
+        replotLayer(m_cursorLayer);
         event->accept();
         emit pointPicked(QPointF(p.x(), p.y()));
         return;
@@ -608,7 +612,7 @@ void ContourView::mouseMoveEvent(QMouseEvent* event) {
         const Eigen::Vector2d p = snap(event->position(), event->modifiers());
         m_pickMarker->position->setCoords(p.x(), p.y());
         m_pickMarker->setVisible(true);
-        m_cursorLayer->replot();
+        replotLayer(m_cursorLayer);
     }
     if (x != 0.0 || y != 0.0) emit cursorAngleChanged(std::atan2(y, x));
     QCustomPlot::mouseMoveEvent(event);

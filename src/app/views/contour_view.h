@@ -106,7 +106,8 @@ private:
     QCPCurve* m_controlPolygon = nullptr;  ///< P0–P1–P2–P3 of the selected spline
     QCPItemLine* m_ray = nullptr;
     QCPItemTracer* m_rayPoint = nullptr;
-    QCPLayer* m_cursorLayer = nullptr;  ///< buffered: the ray, its point and the follower
+    QCPLayer* m_cursorLayer = nullptr;   ///< buffered: the ray, its point and the follower
+    QCPLayer* m_handlesLayer = nullptr;  ///< buffered: the drag handles and control polygon
     /// The follower at the cursor angle (math.md §7): its line of motion or arm and pivot, the
     /// roller or the face, the contact point and the contact normal.
     struct FollowerItems {

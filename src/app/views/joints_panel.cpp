@@ -65,14 +65,21 @@ void JointsPanel::fill() {
                                  formatNumber(j.jumpAR, 5),
                                  formatNumber(j.relativeD2, 3)};
         for (int c = 0; c < 7; ++c) {
-            auto* item = new QTableWidgetItem(cells[c]);
-            item->setTextAlignment(c < 4 ? Qt::Alignment(Qt::AlignCenter)
-                                         : Qt::Alignment(Qt::AlignRight | Qt::AlignVCenter));
-            if (c == 2 && j.continuity != Continuity::C2) {
-                item->setForeground(j.continuity == Continuity::C1 ? QColor(170, 100, 0)
-                                                                   : QColor(180, 0, 30));
+            // The rows there are keep their items: an edit changes a few cells, if any.
+            QTableWidgetItem* item = this->item(row, c);
+            if (!item) {
+                item = new QTableWidgetItem;
+                item->setTextAlignment(c < 4 ? Qt::Alignment(Qt::AlignCenter)
+                                             : Qt::Alignment(Qt::AlignRight | Qt::AlignVCenter));
+                setItem(row, c, item);
             }
-            setItem(row, c, item);
+            if (item->text() != cells[c]) item->setText(cells[c]);
+            if (c == 2) {
+                const QBrush colour = j.continuity == Continuity::C2   ? QBrush()
+                                      : j.continuity == Continuity::C1 ? QColor(170, 100, 0)
+                                                                       : QColor(180, 0, 30);
+                if (item->foreground() != colour) item->setForeground(colour);
+            }
         }
     }
     if (first) resizeColumnsToContents();

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "views/layer_replot.h"
 #include "views/palette.h"
 #include "views/plot_data.h"
 #include "views/stale_label.h"
@@ -13,7 +14,8 @@ namespace {
 
 /// The law: dashed; the follower riding the contour: solid.
 QPen designPen(int which) {
-    return which == 0 ? QPen(QColor(0, 130, 60), 1.6, Qt::DashLine) : QPen(QColor(230, 120, 0), 1.2);
+    return which == 0 ? QPen(QColor(0, 130, 60), 1.6, Qt::DashLine)
+                      : QPen(QColor(230, 120, 0), 1.2);
 }
 
 }  // namespace
@@ -130,6 +132,7 @@ void KinematicsPlots::setResult(const ComputeResultPtr& result) {
         m_result.reset();
         m_data.reset();
         m_level = static_cast<std::size_t>(-1);
+        m_levelBucket = 0;
         setStale(staleText(*result));
         return;
     }
@@ -138,6 +141,15 @@ void KinematicsPlots::setResult(const ComputeResultPtr& result) {
         return;
     }
     setStale({});
+    if (m_result && result->generation == m_result->generation) {
+        // The same result with its finer levels: drawn when the zoom asks for one of them (the
+        // levels it had are the same).
+        m_result = result;
+        m_data = std::dynamic_pointer_cast<const KinematicsPlotData>(result->prepared);
+        if (!m_data) m_data = makeKinematicsPlotData(*result, nullptr);
+        chooseResolution();
+        return;
+    }
     m_result = result;
     // Made in the worker by the views' preparer; made here only without one (tests).
     m_data = std::dynamic_pointer_cast<const KinematicsPlotData>(result->prepared);
@@ -186,7 +198,9 @@ void KinematicsPlots::showDesign() {
     }
 }
 
-bool KinematicsPlots::showsDesign() const { return m_plots[0]->graph(kCurvesPerPlot)->dataCount() > 0; }
+bool KinematicsPlots::showsDesign() const {
+    return m_plots[0]->graph(kCurvesPerPlot)->dataCount() > 0;
+}
 
 QString KinematicsPlots::staleReason() const { return m_staleLabel->reason(); }
 
@@ -196,7 +210,7 @@ void KinematicsPlots::setStale(const QString& reason) {
     for (QCustomPlot* plot : m_plots) {
         for (int c = 0; c < plot->graphCount(); ++c) {
             QPen pen = plot->graph(c)->pen();
-            pen.setColor(stale                  ? staleColor()
+            pen.setColor(stale                ? staleColor()
                          : c < kCurvesPerPlot ? componentColor(c)
                                               : designPen(c - kCurvesPerPlot).color());
             plot->graph(c)->setPen(pen);
@@ -219,9 +233,14 @@ void KinematicsPlots::chooseResolution(bool force) {
     // on the safe side).
     const int axisWidth = m_plots[0]->axisRect()->width();
     const std::size_t level =
-        curves.levelFor(visible, axisWidth > 0 ? axisWidth : m_plots[0]->width());
-    if (level == m_level && !force) return;
-    m_level = std::min(level, m_data->levels.size() - 1);
+        std::min(curves.levelFor(visible, axisWidth > 0 ? axisWidth : m_plots[0]->width()),
+                 m_data->levels.size() - 1);
+    // By its buckets: a result with finer levels numbers the same levels differently.
+    const std::size_t bucket = curves.levels[level].samplesPerBucket;
+    const bool same = bucket == m_levelBucket;
+    m_level = level;
+    m_levelBucket = bucket;
+    if (same && !force) return;
     const auto& containers = m_data->levels[m_level];
     for (int p = 0; p < 3; ++p) {
         for (int c = 0; c < 3; ++c) {
@@ -261,31 +280,41 @@ void KinematicsPlots::setCursorX(double x) {
     for (std::size_t p = 0; p < 3; ++p) {
         m_cursors[p]->point1->setCoords(x, 0);
         m_cursors[p]->point2->setCoords(x, 1);
-        m_cursorLayers[p]->replot();
+        replotLayer(m_cursorLayers[p]);
     }
 }
 
 void KinematicsPlots::rebuildJointMarkers() {
-    for (QCPItemStraightLine* m : m_jointMarkers) m->parentPlot()->removeItem(m);
-    m_jointMarkers.clear();
-    if (!m_result || !m_result->ok()) return;
-    const double omega = m_result->omega;
-    for (const JointAnalysis& j : m_result->analysis.joints) {
-        if (j.continuity == Continuity::C2) continue;  // a_r is continuous here
-        // Where in the plotted turn (phi = omega·t, t in [0, T)) the joint angle comes up.
-        double phi = j.phi;
-        const double sign = omega > 0 ? 1.0 : -1.0;
-        phi = std::fmod(sign * phi, kTwoPi);
-        if (phi < 0) phi += kTwoPi;
-        const double x = m_axis == PlotAxis::Angle ? radToDeg(sign * phi) : phi / std::abs(omega);
-        for (QCustomPlot* p : m_plots) {
-            auto* line = new QCPItemStraightLine(p);
-            line->setPen(QPen(QColor(200, 120, 0, 150), 1, Qt::DotLine));
-            line->point1->setCoords(x, 0);
-            line->point2->setCoords(x, 1);
-            line->setSelectable(false);
-            m_jointMarkers.push_back(line);
+    // Where (phi = omega·t, t in [0, T)) each joint where a_r jumps comes up in the plotted turn.
+    std::vector<double> xs;
+    if (m_result && m_result->ok()) {
+        const double omega = m_result->omega;
+        for (const JointAnalysis& j : m_result->analysis.joints) {
+            if (j.continuity == Continuity::C2) continue;  // a_r is continuous here
+            const double sign = omega > 0 ? 1.0 : -1.0;
+            double phi = std::fmod(sign * j.phi, kTwoPi);
+            if (phi < 0) phi += kTwoPi;
+            xs.push_back(m_axis == PlotAxis::Angle ? radToDeg(sign * phi) : phi / std::abs(omega));
         }
+    }
+    // The lines there are, moved; only the difference is made or removed (an edit seldom
+    // changes the number of joints, and items are costly to make and remove).
+    const std::size_t wanted = xs.size() * m_plots.size();
+    while (m_jointMarkers.size() > wanted) {
+        m_jointMarkers.back()->parentPlot()->removeItem(m_jointMarkers.back());
+        m_jointMarkers.pop_back();
+    }
+    while (m_jointMarkers.size() < wanted) {
+        auto* line = new QCPItemStraightLine(m_plots[m_jointMarkers.size() % m_plots.size()]);
+        line->setPen(QPen(QColor(200, 120, 0, 150), 1, Qt::DotLine));
+        line->setSelectable(false);
+        line->setVisible(!m_staleLabel->isStale());
+        m_jointMarkers.push_back(line);
+    }
+    for (std::size_t i = 0; i < wanted; ++i) {
+        const double x = xs[i / m_plots.size()];
+        m_jointMarkers[i]->point1->setCoords(x, 0);
+        m_jointMarkers[i]->point2->setCoords(x, 1);
     }
 }
 

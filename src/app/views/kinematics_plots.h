@@ -66,6 +66,7 @@ private:
     PlotRange m_xRange;
     bool m_fitted = false;
     std::size_t m_level = static_cast<std::size_t>(-1);
+    std::size_t m_levelBucket = 0;  ///< samples per bucket of the level drawn
 };
 
 }  // namespace cam

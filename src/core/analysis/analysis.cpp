@@ -1,7 +1,9 @@
 #include "analysis/analysis.h"
 
+#include <array>
 #include <cmath>
 #include <functional>
+#include <memory>
 
 #include "common/angles.h"
 #include "project/validate.h"
@@ -184,34 +186,58 @@ std::pair<double, double> goldenMax(const std::function<double(double)>& f, doub
     return f1 >= f2 ? std::pair{x1, f1} : std::pair{x2, f2};
 }
 
-/// Largest value of sign·q over segment k's closed window, as (phi, value).
-Extremum segmentExtremum(const ContourSegment& seg, std::size_t k, Quantity q, double omega,
-                         double sign) {
-    auto f = [&](double phi) {
-        const PolarDerivatives d = seg.evaluate(phi);
-        return sign * quantityValue(q, d, polarMotion(d, omega));
-    };
-    constexpr int kGrid = 256;
-    const double width = seg.phiEnd - seg.phiStart;
-    int best = 0;
-    double bestValue = f(seg.phiStart);
-    for (int i = 1; i <= kGrid; ++i) {
-        const double value = f(seg.phiStart + width * i / kGrid);
-        if (value > bestValue) {
-            bestValue = value;
-            best = i;
+/// A segment's quantities on an even grid of its closed window: evaluated once, searched for
+/// every quantity and both signs (the evaluation, not the search, is what costs).
+class SegmentGrid {
+public:
+    static constexpr int kGrid = 256;
+
+    SegmentGrid(const ContourSegment& seg, double omega) : m_seg(seg), m_omega(omega) {
+        for (int i = 0; i <= kGrid; ++i) {
+            const PolarDerivatives d = seg.evaluate(phiAt(i));
+            m_points[static_cast<std::size_t>(i)] = {d, polarMotion(d, omega)};
         }
     }
-    double bestPhi = seg.phiStart + width * best / kGrid;
-    const double lo = seg.phiStart + width * std::max(0, best - 1) / kGrid;
-    const double hi = seg.phiStart + width * std::min(kGrid, best + 1) / kGrid;
-    const auto [phi, value] = goldenMax(f, lo, hi);
-    if (value > bestValue) {
-        bestValue = value;
-        bestPhi = phi;
+
+    /// Largest value of sign·q over the window, as (phi, value): the best grid point, then a
+    /// golden-section search between its neighbours.
+    [[nodiscard]] Extremum extremum(std::size_t k, Quantity q, double sign) const {
+        const auto valueAt = [&](int i) {
+            const auto& [d, m] = m_points[static_cast<std::size_t>(i)];
+            return sign * quantityValue(q, d, m);
+        };
+        int best = 0;
+        double bestValue = valueAt(0);
+        for (int i = 1; i <= kGrid; ++i) {
+            const double value = valueAt(i);
+            if (value > bestValue) {
+                bestValue = value;
+                best = i;
+            }
+        }
+        double bestPhi = phiAt(best);
+        const auto f = [&](double phi) {
+            const PolarDerivatives d = m_seg.evaluate(phi);
+            return sign * quantityValue(q, d, polarMotion(d, m_omega));
+        };
+        const auto [phi, value] =
+            goldenMax(f, phiAt(std::max(0, best - 1)), phiAt(std::min(kGrid, best + 1)));
+        if (value > bestValue) {
+            bestValue = value;
+            bestPhi = phi;
+        }
+        return {sign * bestValue, bestPhi, k};
     }
-    return {sign * bestValue, bestPhi, k};
-}
+
+private:
+    [[nodiscard]] double phiAt(int i) const {
+        return m_seg.phiStart + (m_seg.phiEnd - m_seg.phiStart) * i / kGrid;
+    }
+
+    const ContourSegment& m_seg;
+    double m_omega;
+    std::array<std::pair<PolarDerivatives, PolarMotion>, kGrid + 1> m_points;
+};
 
 }  // namespace
 
@@ -223,18 +249,21 @@ ContourAnalysis analyzeContour(const Contour& contour, double omega,
         if (cancelled()) return result;
         if (contour.size() > 1) result.joints.push_back(analyzeJoint(contour, k, omega));
     }
-    for (Quantity q : kAllQuantities) {
-        QuantityExtremes e;
-        e.quantity = q;
-        for (std::size_t k = 0; k < contour.size(); ++k) {
-            if (cancelled()) return result;
-            const Extremum hi = segmentExtremum(contour.segment(k), k, q, omega, 1.0);
-            const Extremum lo = segmentExtremum(contour.segment(k), k, q, omega, -1.0);
+    std::array<QuantityExtremes, kAllQuantities.size()> extremes;
+    for (std::size_t i = 0; i < kAllQuantities.size(); ++i)
+        extremes[i].quantity = kAllQuantities[i];
+    for (std::size_t k = 0; k < contour.size(); ++k) {
+        if (cancelled()) return result;
+        const auto grid = std::make_unique<SegmentGrid>(contour.segment(k), omega);
+        for (std::size_t i = 0; i < kAllQuantities.size(); ++i) {
+            QuantityExtremes& e = extremes[i];
+            const Extremum hi = grid->extremum(k, e.quantity, 1.0);
+            const Extremum lo = grid->extremum(k, e.quantity, -1.0);
             if (k == 0 || hi.value > e.max.value) e.max = hi;
             if (k == 0 || lo.value < e.min.value) e.min = lo;
         }
-        result.extremes.push_back(e);
     }
+    result.extremes.assign(extremes.begin(), extremes.end());
     return result;
 }
 
