@@ -50,7 +50,9 @@
 #include "views/motion_panel.h"
 #include "views/path_study_panel.h"
 #include "views/plot_data.h"
+#include "views/plot_redraw.h"
 #include "views/state_readout.h"
+#include "widgets/column_fit.h"
 #include "widgets/icons.h"
 #include "widgets/number_format.h"
 
@@ -347,8 +349,8 @@ void MainWindow::setUpDocks() {
         table->setItemDelegateForColumn(
             c, choice ? static_cast<QAbstractItemDelegate*>(choices) : numbers);
     }
-    table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table->verticalHeader()->setDefaultSectionSize(table->fontMetrics().height() + 6);
+    keepColumnsFitting(table);
     table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                            QAbstractItemView::AnyKeyPressed);
     // A spline's control points by value, tabbed with the table and the joints.
@@ -417,7 +419,7 @@ void MainWindow::setUpDocks() {
             [pressure](const QCPRange& r) {
                 if (pressure->xAxis->range() == r) return;
                 pressure->xAxis->setRange(r);
-                pressure->replot(QCustomPlot::rpQueuedReplot);
+                queueReplot(pressure);
             });
     connect(pressure->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), velocity,
             [velocity](const QCPRange& r) {

@@ -16,6 +16,7 @@
 #include "mainwindow.h"
 #include "views/contour_view.h"
 #include "views/kinematics_plots.h"
+#include "views/plot_redraw.h"
 
 namespace cam {
 
@@ -81,6 +82,7 @@ QImage renderScreenshot(MainWindow& window, const QSize& size) {
     for (int p = 0; p < 3; ++p) window.plots()->plot(p)->replot(QCustomPlot::rpImmediateRefresh);
     window.contourView()->replot(QCustomPlot::rpImmediateRefresh);
     QCoreApplication::processEvents();
+    replotQueuedNow();  // the docks' plots: queued one per pass of the event loop
     return window.grab().toImage();
 }
 

@@ -12,34 +12,95 @@
 #include "design/motion_design.h"
 #include "engine/plot_data_preparer.h"
 #include "follower/follower_turn.h"
+#include "geometry/planar.h"
 #include "timing/timing_job.h"
 
 namespace cam {
 namespace {
 
-/// Points per segment outline: 160 intervals for a few segments, fewer for many, so that the
+/// Intervals per segment outline: at most 128 for a few segments, fewer for many, so that the
 /// contour view never holds much more than kOutlinePointsTotal points (100,000 segments would
-/// otherwise be 16 million points to copy and draw); at least 8 intervals each.
-constexpr int kOutlineIntervalsPerSegment = 160;
+/// otherwise be 16 million points to copy and draw); at least 8 each.
 constexpr int kOutlineIntervalsMin = 8;
+constexpr int kOutlineIntervalsMax = 128;  // kOutlineIntervalsMin · 2^4
 constexpr std::size_t kOutlinePointsTotal = 1u << 18;
+/// An interval of an outline is halved while its middle lies farther than this fraction of the
+/// contour's size from its chord: 1e-4 of 70 mm is 7 µm, a tenth of a pixel when the contour
+/// fills 900 pixels. A 2-pixel line is stroked vertex by vertex (the contour view's largest
+/// cost); a fixed 160 intervals a segment gave arcs of 60° ten times the points they need.
+constexpr double kOutlineToleranceRelative = 1e-4;
 
-void buildOutlines(ComputeResult& r) {
-    const Contour& c = *r.contour;
-    r.outlines.resize(c.size());
-    const int intervals = static_cast<int>(
+Eigen::Vector2d pointAt(const ContourSegment& s, double phi) {
+    const double r = s.evaluate(phi).r;
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+/// Appends the outline of [a, b] without its start: its end, after whatever halving of it the
+/// tolerance asks for, up to `depth` times.
+void appendOutline(const ContourSegment& s, double a, const Eigen::Vector2d& pa, double b,
+                   const Eigen::Vector2d& pb, double tolerance, int depth, QVector<QPointF>& out) {
+    const double m = 0.5 * (a + b);
+    const Eigen::Vector2d pm = pointAt(s, m);
+    const Eigen::Vector2d chord = pb - pa;
+    const double length = chord.norm();
+    const double off = length > 0.0 ? std::abs(cross(chord, pm - pa)) / length : (pm - pa).norm();
+    if (depth > 0 && !(off <= tolerance)) {  // NaN: halved as far as allowed
+        appendOutline(s, a, pa, m, pm, tolerance, depth - 1, out);
+        appendOutline(s, m, pm, b, pb, tolerance, depth - 1, out);
+        return;
+    }
+    out.append({pb.x(), pb.y()});
+}
+
+/// Per segment, its outline for the contour view: ends included, intervals halved where the
+/// curve leaves their chord.
+std::vector<QVector<QPointF>> outlinesOf(const Contour& c) {
+    std::vector<QVector<QPointF>> outlines(c.size());
+    const int most = static_cast<int>(
         std::clamp<std::size_t>(kOutlinePointsTotal / std::max<std::size_t>(c.size(), 1),
-                                kOutlineIntervalsMin, kOutlineIntervalsPerSegment));
+                                kOutlineIntervalsMin, kOutlineIntervalsMax));
+    int depth = 0;
+    while ((kOutlineIntervalsMin << (depth + 1)) <= most) ++depth;
+    // The contour's size, from its coarsest points.
+    double reach = 0.0;
     for (std::size_t k = 0; k < c.size(); ++k) {
         const ContourSegment& s = c.segment(k);
-        QVector<QPointF>& out = r.outlines[k];
-        out.reserve(intervals + 1);
-        for (int i = 0; i <= intervals; ++i) {
-            const double phi = s.phiStart + (s.phiEnd - s.phiStart) * i / intervals;
-            const double rr = s.evaluate(phi).r;
-            out.append({rr * std::cos(phi), rr * std::sin(phi)});
+        for (int i = 0; i <= kOutlineIntervalsMin; ++i) {
+            const double r =
+                s.evaluate(s.phiStart + (s.phiEnd - s.phiStart) * i / kOutlineIntervalsMin).r;
+            if (std::isfinite(r)) reach = std::max(reach, std::abs(r));
         }
     }
+    const double tolerance = kOutlineToleranceRelative * 2.0 * reach;
+    for (std::size_t k = 0; k < c.size(); ++k) {
+        const ContourSegment& s = c.segment(k);
+        QVector<QPointF>& out = outlines[k];
+        double a = s.phiStart;
+        Eigen::Vector2d pa = pointAt(s, a);
+        out.append({pa.x(), pa.y()});
+        for (int i = 1; i <= kOutlineIntervalsMin; ++i) {
+            const double b = s.phiStart + (s.phiEnd - s.phiStart) * i / kOutlineIntervalsMin;
+            const Eigen::Vector2d pb = pointAt(s, b);
+            appendOutline(s, a, pa, b, pb, tolerance, depth, out);
+            a = b;
+            pa = pb;
+        }
+    }
+    return outlines;
+}
+
+/// What the contour view and the Joints tab need of the contour alone.
+struct ContourPart {
+    ContourAnalysis analysis;
+    std::vector<QVector<QPointF>> outlines;
+};
+
+ContourPart computeContourPart(const Contour* contour, double omega,
+                               const std::atomic<bool>* cancel) {
+    ContourPart part;
+    part.analysis = analyzeContour(*contour, omega, cancel);
+    if (!cancel->load()) part.outlines = outlinesOf(*contour);
+    return part;
 }
 
 /// The follower on the contour: placed, its design checks and its pressure-angle curve.
@@ -232,18 +293,26 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
         follower = QtConcurrent::run(computeFollower, &*result->contour, *request.project->follower,
                                      result->omega, result->period, request.axis, &cancel);
     }
-    // Every early return below waits for it: it reads the contour this result owns.
-    const auto waitForFollower = qScopeGuard([&] {
+    // So are the analysis and the outlines, on the pool too (the GUI thread waits idle for
+    // the first picture: its core is free).
+    QFuture<ContourPart> contourPart =
+        QtConcurrent::run(computeContourPart, &*result->contour, result->omega, &cancel);
+    // Every early return below waits for them: they read the contour this result owns.
+    const auto waitForPool = qScopeGuard([&] {
         if (follower.isValid()) follower.waitForFinished();
+        contourPart.waitForFinished();
     });
     result->sampleCount = static_cast<std::size_t>(request.project->samplesPerTurnOrDefault());
     if (!buildPlotCurves(*result->contour, result->omega, result->sampleCount, request.axis,
                          result->curves, cancel, request.firstPictureBuckets)) {
         return nullptr;
     }
-    result->analysis = analyzeContour(*result->contour, result->omega, &cancel);
-    if (cancel.load()) return nullptr;
-    buildOutlines(*result);
+    {
+        ContourPart part = contourPart.result();
+        if (cancel.load()) return nullptr;
+        result->analysis = std::move(part.analysis);
+        result->outlines = std::move(part.outlines);
+    }
     std::vector<CubicBezier> splines;
     for (const SegmentSpec& spec : request.project->contour) {
         if (isSpline(spec.type())) splines.push_back(bezierOf(spec));

@@ -7,8 +7,8 @@
 
 #include "document/commands.h"
 #include "models/delegates.h"
-#include "views/layer_replot.h"
 #include "views/palette.h"
+#include "views/plot_redraw.h"
 #include "views/stale_label.h"
 
 namespace cam {
@@ -65,9 +65,9 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     // marker never disappears under the line it marks. Above them the follower ray and its
     // point, on a buffered layer of their own: a cursor move redraws them alone.
     addLayer("markers", layer("main"), QCustomPlot::limAbove);
-    addLayer("cursor", layer("markers"), QCustomPlot::limAbove);
-    m_cursorLayer = layer("cursor");
-    m_cursorLayer->setMode(QCPLayer::lmBuffered);
+    // Drawn last: the drag handles, then the follower and the ray above them.
+    m_handlesLayer = addBufferedTopLayer(this, QStringLiteral("handles"));
+    m_cursorLayer = addBufferedTopLayer(this, QStringLiteral("cursor"));
     m_ray = new QCPItemLine(this);
     m_ray->setLayer(m_cursorLayer);
     m_ray->setPen(QPen(QColor(90, 90, 90), 1, Qt::DashLine));
@@ -143,10 +143,8 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     m_controlPolygon->setPen(QPen(QColor(0, 90, 200, 160), 1, Qt::DashLine));
     m_controlPolygon->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 4));
     // The drag handles above the markers: a centre cross never hides the handle on it.
-    addLayer("handles", layer("markers"), QCustomPlot::limAbove);
-    // Buffered: an edit moves them at once, while the contour waits for the engine's result.
-    m_handlesLayer = layer("handles");
-    m_handlesLayer->setMode(QCPLayer::lmBuffered);
+    // Buffered (see above): an edit moves them at once, while the contour waits for the
+    // engine's result.
     for (QCPAbstractPlottable* p : std::initializer_list<QCPAbstractPlottable*>{
              m_firstHandle, m_secondHandle, m_controlPolygon}) {
         p->setLayer("handles");
@@ -253,7 +251,7 @@ void ContourView::setResult(const ComputeResultPtr& result) {
     m_joints->setData(jx, jy);
     if (m_autoFit) resetZoom();
     setCursorAngle(m_cursorPhi);
-    replot(rpQueuedReplot);  // the new contour (the cursor alone redraws only its layer)
+    queueReplot(this);  // the new contour (the cursor alone redraws only its layer)
 }
 
 QCPCurve* ContourView::segmentCurve(int k) const {
@@ -271,7 +269,7 @@ void ContourView::resetZoom() {
     xAxis->setRange(m_xBounds.lower - pad, m_xBounds.upper + pad);
     yAxis->setRange(m_yBounds.lower - pad, m_yBounds.upper + pad);
     keepEqualAspect();
-    replot(rpQueuedReplot);
+    queueReplot(this);
 }
 
 void ContourView::keepEqualAspect() {
@@ -406,13 +404,13 @@ void ContourView::setStale(const QString& reason) {
     }
     m_ray->setVisible(!stale);
     m_rayPoint->setVisible(!stale);
-    replot(rpQueuedReplot);
+    queueReplot(this);
 }
 
 void ContourView::setSelectedSegment(int row) {
     m_selected = row;
     updateHandles();
-    replot(rpQueuedReplot);
+    queueReplot(this);
 }
 
 QPointF ContourView::secondHandlePosition(int row) const {

@@ -12,6 +12,7 @@
 #include "common/angles.h"
 #include "document/commands.h"
 #include "models/delegates.h"
+#include "views/plot_redraw.h"
 #include "widgets/number_format.h"
 #include "widgets/number_spin_box.h"
 
@@ -221,7 +222,7 @@ void FollowerPanel::refresh() {
 void FollowerPanel::setCursorX(double x) {
     m_cursor->point1->setCoords(x, 0);
     m_cursor->point2->setCoords(x, 1);
-    m_pressurePlot->replot(QCustomPlot::rpQueuedReplot);
+    queueReplot(m_pressurePlot);
 }
 
 void FollowerPanel::setResult(const ComputeResultPtr& result) {
@@ -250,7 +251,7 @@ void FollowerPanel::setResult(const ComputeResultPtr& result) {
         double top = limit;
         for (double v : y) top = std::max(top, std::abs(v));
         m_pressurePlot->yAxis->setRange(-1.1 * top, 1.1 * top);
-        m_pressurePlot->replot(QCustomPlot::rpQueuedReplot);
+        queueReplot(m_pressurePlot);
     }
     m_problems = 0;
     const auto add = [this](const QString& text, std::optional<double> phi, bool problem) {

@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "common/angles.h"
-#include "views/layer_replot.h"
 #include "views/palette.h"
 #include "views/plot_data.h"
+#include "views/plot_redraw.h"
 #include "views/stale_label.h"
 
 namespace cam {
@@ -69,9 +69,7 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
         side->setRowStretchFactor(0, 0.001);
         side->setMargins(QMargins(0, 8, 4, 0));
         // The cursor on a buffered layer of its own: a move redraws one line, not the curves.
-        plot->addLayer("cursor", plot->layer("main"), QCustomPlot::limAbove);
-        QCPLayer* cursorLayer = plot->layer("cursor");
-        cursorLayer->setMode(QCPLayer::lmBuffered);
+        QCPLayer* cursorLayer = addBufferedTopLayer(plot, QStringLiteral("cursor"));
         m_cursorLayers[static_cast<std::size_t>(p)] = cursorLayer;
         auto* cursor = new QCPItemStraightLine(plot);
         cursor->setLayer(cursorLayer);
@@ -95,7 +93,7 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
                     [b](const QCPRange& r) {
                         if (b->xAxis->range() != r) {
                             b->xAxis->setRange(r);
-                            b->replot(QCustomPlot::rpQueuedReplot);
+                            queueReplot(b);
                         }
                     });
         }
@@ -194,7 +192,7 @@ void KinematicsPlots::showDesign() {
                 graph->removeFromLegend();
             }
         }
-        plot->replot(QCustomPlot::rpQueuedReplot);
+        queueReplot(plot);
     }
 }
 
@@ -215,7 +213,7 @@ void KinematicsPlots::setStale(const QString& reason) {
                                               : designPen(c - kCurvesPerPlot).color());
             plot->graph(c)->setPen(pen);
         }
-        plot->replot(QCustomPlot::rpQueuedReplot);
+        queueReplot(plot);
     }
     for (QCPItemStraightLine* m : m_jointMarkers) m->setVisible(!stale);
 }
@@ -247,7 +245,7 @@ void KinematicsPlots::chooseResolution(bool force) {
             m_plots[static_cast<std::size_t>(p)]->graph(c)->setData(
                 containers[static_cast<std::size_t>(3 * p + c)]);
         }
-        m_plots[static_cast<std::size_t>(p)]->replot(QCustomPlot::rpQueuedReplot);
+        queueReplot(m_plots[static_cast<std::size_t>(p)]);
     }
 }
 
@@ -264,7 +262,7 @@ void KinematicsPlots::fitY() {
         if (!(range.size() > 0.0)) range = QCPRange(range.lower - 1.0, range.upper + 1.0);
         m_plots[p]->yAxis->setRange(range);
         m_plots[p]->yAxis->scaleRange(1.08);
-        m_plots[p]->replot(QCustomPlot::rpQueuedReplot);
+        queueReplot(m_plots[p]);
     }
 }
 

@@ -15,6 +15,7 @@
 #include "models/delegates.h"
 #include "views/palette.h"
 #include "views/plot_data.h"
+#include "views/plot_redraw.h"
 #include "widgets/number_spin_box.h"
 
 namespace cam {
@@ -269,7 +270,7 @@ void MachiningPanel::setOutcome(const TimingOutcomePtr& outcome) {
     m_feedPlot->rescaleAxes();
     m_feedPlot->yAxis->setRangeLower(0.0);
     m_feedPlot->yAxis->scaleRange(1.08, m_feedPlot->yAxis->range().lower);
-    m_feedPlot->replot(QCustomPlot::rpQueuedReplot);
+    queueReplot(m_feedPlot);
     double limit = 0.0;
     for (int i = 0; i < 3; ++i) {
         m_accelPlot->graph(i)->setData(data->accel[static_cast<std::size_t>(i)]);
@@ -279,7 +280,7 @@ void MachiningPanel::setOutcome(const TimingOutcomePtr& outcome) {
     }
     m_accelPlot->rescaleAxes();
     m_accelPlot->yAxis->setRange(-1.1 * limit, 1.1 * limit);
-    m_accelPlot->replot(QCustomPlot::rpQueuedReplot);
+    queueReplot(m_accelPlot);
 }
 
 QString MachiningPanel::timesText() const {

@@ -18,6 +18,7 @@
 #include "models/delegates.h"
 #include "models/design_table_model.h"
 #include "views/plot_data.h"
+#include "views/plot_redraw.h"
 #include "widgets/number_format.h"
 #include "widgets/number_spin_box.h"
 
@@ -170,7 +171,7 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
                     [b](const QCPRange& r) {
                         if (b->xAxis->range() != r) {
                             b->xAxis->setRange(r);
-                            b->replot(QCustomPlot::rpQueuedReplot);
+                            queueReplot(b);
                         }
                     });
         }
@@ -324,7 +325,7 @@ void MotionDesignPanel::setCursorX(double x) {
     for (std::size_t p = 0; p < 4; ++p) {
         m_cursors[p]->point1->setCoords(x, 0);
         m_cursors[p]->point2->setCoords(x, 1);
-        m_plots[p]->replot(QCustomPlot::rpQueuedReplot);
+        queueReplot(m_plots[p]);
     }
 }
 
@@ -378,7 +379,7 @@ void MotionDesignPanel::setResult(const ComputeResultPtr& result) {
         }
         plot->xAxis->setLabel(p == 3 ? (result->axis == PlotAxis::Angle ? tr("φ [°]") : tr("t [s]"))
                                      : QString());
-        plot->replot(QCustomPlot::rpQueuedReplot);
+        queueReplot(plot);
     }
     m_fitted = true;
     if (const QCPRange x(design->x.front(), design->x.back());

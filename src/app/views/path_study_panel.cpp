@@ -7,6 +7,7 @@
 #include <QVBoxLayout>
 
 #include "views/palette.h"
+#include "views/plot_redraw.h"
 
 namespace cam {
 
@@ -101,7 +102,7 @@ void PathStudyPanel::fill() {
     for (QCustomPlot* p : m_plots) {
         p->rescaleAxes();
         p->yAxis->scaleRange(1.1);
-        p->replot(QCustomPlot::rpQueuedReplot);
+        queueReplot(p);
     }
 }
 
