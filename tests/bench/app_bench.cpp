@@ -234,7 +234,6 @@ void BM_ReplotViews(benchmark::State& state) {
     auto window = makeWindow();
     std::vector<QCustomPlot*> views = {window->plots()->plot(0), window->plots()->plot(1),
                                        window->plots()->plot(2), window->contourView()};
-    if (qEnvironmentVariableIsSet("CONTOUR_ONLY")) views = {window->contourView()};
     for (auto _ : state) {
         QElapsedTimer timer;
         timer.start();
