@@ -572,6 +572,20 @@ void MainWindow::setUpActions() {
         QSettings().setValue("view/timeAxis", on);
         requestCompute();
     });
+    // The lift plot r(φ) above the kinematics plots: shown unless the user hid it.
+    auto* lift = new QAction(tr("&Radius Plot r(φ)"), this);
+    lift->setObjectName("actionLiftPlot");
+    lift->setCheckable(true);
+    lift->setToolTip(tr("Show the contour's radius r over the turn above the velocity"));
+    lift->setChecked(QSettings().value("view/liftPlot", true).toBool());
+    m_plots->plot(KinematicsPlots::kLiftPlot)->setVisible(lift->isChecked());
+    connect(lift, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue("view/liftPlot", on);
+        QCustomPlot* plot = m_plots->plot(KinematicsPlots::kLiftPlot);
+        plot->setVisible(on);
+        if (on) queueReplot(plot);
+    });
+    m_ui->menuView->insertAction(m_ui->actionResetZoom, lift);
     connect(m_ui->actionResetZoom, &QAction::triggered, this, [this] {
         m_contour->resetZoom();
         m_plots->resetZoom();
@@ -712,6 +726,7 @@ void MainWindow::setUpIcons() {
         {"actionSynthesize", "camwright-synthesize"},
         {"actionKeyboardShortcuts", "preferences-desktop-keyboard"},
         {"actionPlay", "media-playback-start"},
+        {"actionLiftPlot", "camwright-lift-plot"},
     };
     for (const auto& [object, icon] : named) {
         if (auto* action = findChild<QAction*>(object)) set(action, icon);

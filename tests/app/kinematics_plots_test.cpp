@@ -7,6 +7,8 @@
 
 #include <QAction>
 #include <QImage>
+#include <QScopeGuard>
+#include <QSettings>
 #include <QTest>
 #include <QWheelEvent>
 #include <algorithm>
@@ -119,6 +121,62 @@ int topOfDarkCurve(const QImage& image, int x0, int x1, int y0, int y1) {
     return -1;
 }
 
+TEST(KinematicsPlots, TheLiftPlotDrawsTheRadiusOfTheContourAboveTheOthers) {
+    const Reference ref;
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
+    window.resize(1400, 860);
+    window.show();
+    QAction* action = window.findChild<QAction*>("actionLiftPlot");
+    ASSERT_NE(action, nullptr);
+    EXPECT_TRUE(action->isChecked());  // shown by default
+    QCustomPlot* lift = window.plots()->plot(KinematicsPlots::kLiftPlot);
+    for (const int samples : {3600, 100'000}) {
+        window.document()->undoStack()->push(new SetSamplesPerTurn(window.document(), samples));
+        ASSERT_TRUE(window.waitForCurrentResult(10000));
+        // Every point drawn, (φ, r) taken back to the plane, lies on the circle of one of the
+        // six-lobe cam's arcs (its centres and radii from the file, not from the engine).
+        const auto points = dataOf(lift->graph(0));
+        ASSERT_GT(points.size(), 1000u);
+        double lo = 1e300, hi = -1e300;
+        for (const QCPGraphData& d : points) {
+            if (std::isnan(d.value)) continue;
+            const double phi = degToRad(d.key);
+            const Eigen::Vector2d p(d.value * std::cos(phi), d.value * std::sin(phi));
+            double off = 1e300;
+            for (const SegmentSpec& s : ref.project.contour) {
+                const Arc& arc = test::arcOf(s);
+                off = std::min(off, std::abs((p - arc.center).norm() - arc.radius));
+            }
+            ASSERT_LT(off, 1e-9) << samples << " samples, at " << d.key << "°";
+            lo = std::min(lo, d.value);
+            hi = std::max(hi, d.value);
+        }
+        // It spans the contour: from the notches to the lobes' tips. The tips are on circles
+        // of radius 8.10318055 about centres 20.89681945 from the origin: 29 mm, reached
+        // within a sample step; the notches at 25.73752542 − 4.84070597 = 20.89681945 mm.
+        EXPECT_NEAR(hi, 20.89681945 + 8.10318055, 1e-3) << samples;
+        EXPECT_NEAR(lo, 25.73752542 - 4.84070597, 1e-3) << samples;
+        EXPECT_LE(lift->yAxis->range().lower, lo);
+        EXPECT_GE(lift->yAxis->range().upper, hi);
+    }
+    // Drawn above the velocity, on the same x axis.
+    EXPECT_LT(lift->y(), window.plots()->plot(0)->y());
+    window.plots()->plot(0)->xAxis->setRange(40.0, 80.0);
+    EXPECT_EQ(lift->xAxis->range(), QCPRange(40.0, 80.0));
+    // The View menu hides it, and the choice is kept for the next window.
+    action->setChecked(false);
+    EXPECT_FALSE(lift->isVisible());
+    EXPECT_FALSE(QSettings().value("view/liftPlot", true).toBool());
+    {
+        MainWindow next;
+        EXPECT_FALSE(next.findChild<QAction*>("actionLiftPlot")->isChecked());
+        EXPECT_TRUE(next.plots()->plot(KinematicsPlots::kLiftPlot)->isHidden());
+    }
+    action->setChecked(true);
+    EXPECT_TRUE(lift->isVisible());
+}
+
 TEST(KinematicsPlots, EveryLobeReachesItsPeakAtEveryWindowSize) {
     // The six lobes are identical: each peaks where it meets a notch, at both ends, at the
     // one-sided limit of |a| at the joint (356,524 mm/s²); the nearest of 3600 samples reaches
@@ -127,6 +185,11 @@ TEST(KinematicsPlots, EveryLobeReachesItsPeakAtEveryWindowSize) {
     const Reference ref;
     MainWindow window;
     ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
+    // The acceleration plot at the height it has without the lift plot: shorter, a peak's
+    // last pixel is a faint antialiased tip this test's colour threshold does not see.
+    QAction* lift = window.findChild<QAction*>("actionLiftPlot");
+    lift->setChecked(false);
+    const auto shownAgain = qScopeGuard([lift] { lift->setChecked(true); });  // a setting
     window.show();
     for (const int samples : {3600, 100'000}) {
         window.document()->undoStack()->push(new SetSamplesPerTurn(window.document(), samples));

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <iterator>
 #include <set>
 #include <utility>
 
@@ -26,9 +27,10 @@ void expectBucketsHoldTheirExtremes(const Contour& contour, double omega, std::s
     const std::size_t size = level.samplesPerBucket;
     SampledTurn samples;
     ASSERT_TRUE(sampleTurn(contour, omega, n, samples));
-    const std::vector<double>* values[] = {&samples.vR, &samples.vPhi, &samples.v,
-                                           &samples.aR, &samples.aPhi, &samples.a,
-                                           &samples.jR, &samples.jPhi, &samples.j};
+    const std::vector<double>* values[] = {&samples.vR,   &samples.vPhi, &samples.v,  &samples.aR,
+                                           &samples.aPhi, &samples.a,    &samples.jR, &samples.jPhi,
+                                           &samples.j,    &samples.r};
+    static_assert(std::size(values) == kCurveCount);
     for (std::size_t c = 0; c < kCurveCount; ++c) {
         std::set<std::pair<double, double>> points;
         for (const PlotPoint& p : level.curves[c]) points.insert({p.x, p.y});
@@ -114,7 +116,7 @@ TEST(PlotLevels, AFirstPictureHoldsTheWholeSetsCoarserLevelsPointForPoint) {
                         }
                     }
                 }
-                for (std::size_t p = 0; p < 3; ++p) {
+                for (std::size_t p = 0; p < first.yRanges.size(); ++p) {
                     EXPECT_EQ(first.yRanges[p].lower, whole.yRanges[p].lower);
                     EXPECT_EQ(first.yRanges[p].upper, whole.yRanges[p].upper);
                 }

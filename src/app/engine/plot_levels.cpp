@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <optional>
 
@@ -21,13 +22,15 @@ constexpr Tag kBreakCandidate = -2;  ///< NaN between two one-sided values: kept
 
 using Values = std::array<double, kCurveCount>;
 
-Values valuesOf(const PolarMotion& m) {
-    return {m.vR, m.vPhi, m.v, m.aR, m.aPhi, m.a, m.jR, m.jPhi, m.j};
+Values valuesOf(const PolarDerivatives& d, double omega) {
+    const PolarMotion m = polarMotion(d, omega);
+    return {m.vR, m.vPhi, m.v, m.aR, m.aPhi, m.a, m.jR, m.jPhi, m.j, d.r};
 }
 
 const double* samplesOf(const SampledTurn& t, std::size_t c) {
     const std::vector<double>* sources[] = {&t.vR, &t.vPhi, &t.v,    &t.aR, &t.aPhi,
-                                            &t.a,  &t.jR,   &t.jPhi, &t.j};
+                                            &t.a,  &t.jR,   &t.jPhi, &t.j,  &t.r};
+    static_assert(std::size(sources) == kCurveCount);
     return sources[c]->data();
 }
 
@@ -46,7 +49,7 @@ public:
         return m_axis == PlotAxis::Angle ? radToDeg(phi) : phi / m_omega;
     }
     [[nodiscard]] Values valuesAt(std::size_t segment, double phi) const {
-        return valuesOf(polarMotion(m_contour.segment(segment).evaluate(phi), m_omega));
+        return valuesOf(m_contour.segment(segment).evaluate(phi), m_omega);
     }
 
     /// Walks from segment `from` in the direction of turning, starting at turn angle `phi`,
@@ -358,16 +361,20 @@ bool buildPlotCurves(const Contour& contour, double omega, std::size_t n, PlotAx
         builders[c].exact(xEnd, closing[c]);
     }
 
-    for (std::size_t p = 0; p < 3; ++p) {
+    // Per plot, its curves: three each for velocity, acceleration and jerk, then r alone.
+    constexpr std::array<std::pair<std::size_t, std::size_t>, 4> plotCurves{
+        {{0, 3}, {3, 6}, {6, 9}, {9, 10}}};
+    for (std::size_t p = 0; p < plotCurves.size(); ++p) {
+        const auto [begin, end] = plotCurves[p];
         double lo = kInf, hi = -kInf;
-        for (std::size_t c = 3 * p; c < 3 * p + 3; ++c) {
+        for (std::size_t c = begin; c < end; ++c) {
             lo = std::min(lo, builders[c].lo);
             hi = std::max(hi, builders[c].hi);
         }
         if (!(lo <= hi)) lo = hi = 0.0;  // nothing finite to show
         out.yRanges[p] = {lo, hi};
         const double tolerance = PlotCurves::kJumpRelative * std::max(hi - lo, 1e-300);
-        for (std::size_t c = 3 * p; c < 3 * p + 3; ++c) settleBreaks(builders[c], tolerance);
+        for (std::size_t c = begin; c < end; ++c) settleBreaks(builders[c], tolerance);
     }
 
     // Coarser levels, each with buckets four times as wide as the one before (a quarter of its

@@ -19,8 +19,9 @@ namespace cam {
 /// @brief The x axis of the kinematics plots.
 enum class PlotAxis { Angle, Time };
 
-/// @brief The curves of the kinematics plots, in this order (three per plot).
-enum class Curve { VR, VPhi, V, AR, APhi, A, JR, JPhi, J, Count };
+/// @brief The curves of the kinematics plots, in this order: three per plot for velocity,
+/// acceleration and jerk, then the radius r of the lift plot.
+enum class Curve { VR, VPhi, V, AR, APhi, A, JR, JPhi, J, R, Count };
 inline constexpr std::size_t kCurveCount = static_cast<std::size_t>(Curve::Count);
 
 /// @brief One point of a plotted curve; y is NaN where the line breaks.
@@ -68,7 +69,8 @@ struct PlotCurves {
     /// Only the coarser levels were made (a first picture): a second pass adds the finer ones,
     /// for zooming in.
     bool partial = false;
-    std::array<PlotRange, 3> yRanges;  ///< velocity, acceleration, jerk, over all their curves
+    /// Velocity, acceleration, jerk (each over its three curves), and r.
+    std::array<PlotRange, 4> yRanges;
     /// The plotted turn: [0, 360°] or [0, T]; [−360°, 0] when turning clockwise over angle.
     PlotRange xRange;
     std::size_t sampleCount = 0;

@@ -24,13 +24,15 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
-    const QString titles[] = {tr("Velocity [mm/s]"), tr("Acceleration [mm/s²]"),
-                              tr("Jerk [mm/s³]")};
-    const QString names[3][3] = {{tr("v_r"), tr("v_φ"), tr("|v|")},
-                                 {tr("a_r"), tr("a_φ"), tr("|a|")},
-                                 {tr("j_r"), tr("j_φ"), tr("|j|")}};
-    const char* objectNames[] = {"velocityPlot", "accelerationPlot", "jerkPlot"};
-    for (int p = 0; p < 3; ++p) {
+    const QString titles[] = {tr("Velocity [mm/s]"), tr("Acceleration [mm/s²]"), tr("Jerk [mm/s³]"),
+                              tr("Radius r [mm]")};
+    // The lift plot draws r alone: its other two curves stay empty and out of its legend.
+    const QString names[kPlotCount][3] = {{tr("v_r"), tr("v_φ"), tr("|v|")},
+                                          {tr("a_r"), tr("a_φ"), tr("|a|")},
+                                          {tr("j_r"), tr("j_φ"), tr("|j|")},
+                                          {tr("r"), {}, {}}};
+    const char* objectNames[] = {"velocityPlot", "accelerationPlot", "jerkPlot", "liftPlot"};
+    for (int p = 0; p < kPlotCount; ++p) {
         auto* plot = new QCustomPlot(this);
         plot->setObjectName(objectNames[p]);
         plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
@@ -46,6 +48,7 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
             // graph draws them as they are. (QCustomPlot's own reduction would start a pixel's
             // cluster at a NaN break and then lose that pixel's extremes.)
             g->setAdaptiveSampling(false);
+            if (names[p][c].isEmpty()) g->removeFromLegend();
         }
         // The motion design's law (dashed) and the follower on the contour, after the
         // kinematics' own curves: drawn while the project has a translating design.
@@ -83,8 +86,17 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
             emit cursorMoved(plot->xAxis->pixelToCoord(e->position().x()));
         });
         m_plots[static_cast<std::size_t>(p)] = plot;
-        layout->addWidget(plot, 1);
+        // The lift plot above the three it explains; it needs less height.
+        if (p == kLiftPlot) {
+            layout->insertWidget(0, plot, 2);
+        } else {
+            layout->addWidget(plot, 3);
+        }
     }
+    // Law and follower of a motion design are drawn over velocity, acceleration and jerk
+    // only (the design's lift is the follower's, not r).
+    for (int which = 0; which < 2; ++which)
+        m_plots[kLiftPlot]->graph(kCurvesPerPlot + which)->removeFromLegend();
     // One shared x axis: panning or zooming any plot moves all three.
     for (QCustomPlot* a : m_plots) {
         for (QCustomPlot* b : m_plots) {
@@ -247,15 +259,17 @@ void KinematicsPlots::chooseResolution(bool force) {
         }
         queueReplot(m_plots[static_cast<std::size_t>(p)]);
     }
+    m_plots[kLiftPlot]->graph(0)->setData(containers[static_cast<std::size_t>(Curve::R)]);
+    queueReplot(m_plots[kLiftPlot]);
 }
 
 void KinematicsPlots::fitY() {
     if (!m_result) return;
     // The worker measured the ranges; rescaling here would scan every point again.
-    for (std::size_t p = 0; p < 3; ++p) {
+    for (std::size_t p = 0; p < m_plots.size(); ++p) {
         const PlotRange& y = m_result->curves.yRanges[p];
         QCPRange range(y.lower, y.upper);
-        if (showsDesign()) {
+        if (showsDesign() && p < 3) {
             const PlotRange& d = m_result->design->yRanges[p + 1];
             range.expand(QCPRange(d.lower, d.upper));
         }
@@ -275,7 +289,7 @@ void KinematicsPlots::resetZoom() {
 }
 
 void KinematicsPlots::setCursorX(double x) {
-    for (std::size_t p = 0; p < 3; ++p) {
+    for (std::size_t p = 0; p < m_plots.size(); ++p) {
         m_cursors[p]->point1->setCoords(x, 0);
         m_cursors[p]->point2->setCoords(x, 1);
         replotLayer(m_cursorLayers[p]);

@@ -1,7 +1,8 @@
 #pragma once
 /// @file
-/// @brief Velocity, acceleration and jerk over one turn, stacked on one shared angle/time axis,
-/// with the cursor and the joints where the radial acceleration jumps.
+/// @brief The radius r (the lift plot), velocity, acceleration and jerk over one turn, stacked
+/// on one shared angle/time axis, with the cursor and the joints where the radial acceleration
+/// jumps.
 
 #include <QWidget>
 #include <array>
@@ -30,7 +31,11 @@ public:
     /// the cursor's own buffered layer.
     void setCursorX(double x);
     void resetZoom();
+    /// @brief Velocity (0), acceleration (1), jerk (2) and the lift plot r (kLiftPlot, drawn on
+    /// top).
     [[nodiscard]] QCustomPlot* plot(int i) const { return m_plots[static_cast<std::size_t>(i)]; }
+    static constexpr int kPlotCount = 4;
+    static constexpr int kLiftPlot = 3;
     /// @brief Why the curves shown are out of date; empty when they are the current project's.
     [[nodiscard]] QString staleReason() const;
     /// @brief The level of the result's curves the graphs draw now.
@@ -55,9 +60,9 @@ private:
     void showDesign();
     void setStale(const QString& reason);
 
-    std::array<QCustomPlot*, 3> m_plots{};
-    std::array<QCPItemStraightLine*, 3> m_cursors{};
-    std::array<QCPLayer*, 3> m_cursorLayers{};
+    std::array<QCustomPlot*, kPlotCount> m_plots{};
+    std::array<QCPItemStraightLine*, kPlotCount> m_cursors{};
+    std::array<QCPLayer*, kPlotCount> m_cursorLayers{};
     std::vector<QCPItemStraightLine*> m_jointMarkers;
     StaleLabel* m_staleLabel = nullptr;
     ComputeResultPtr m_result;  ///< the result drawn (the last one that could be computed)
