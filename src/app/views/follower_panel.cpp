@@ -11,6 +11,7 @@
 
 #include "common/angles.h"
 #include "document/commands.h"
+#include "messages/diagnostic_text.h"
 #include "models/delegates.h"
 #include "widgets/number_format.h"
 #include "widgets/number_spin_box.h"
@@ -264,16 +265,16 @@ void FollowerPanel::setResult(const ComputeResultPtr& result) {
         }
     };
     if (!result || !result->ok()) {
-        m_summary->setText(result && !result->errors.empty()
-                               ? tr("No design checks: %1")
-                                     .arg(QString::fromStdString(result->errors.front().text()))
-                               : tr("No design checks: the contour cannot be computed."));
+        m_summary->setText(
+            result && !result->errors.empty()
+                ? tr("No design checks: %1").arg(diagnosticText(result->errors.front()))
+                : tr("No design checks: the contour cannot be computed."));
         return;
     }
     if (!result->followerErrors.empty()) {
         for (const Diagnostic& d : result->followerErrors) {
-            add(tr("The follower cannot ride this cam: %1").arg(QString::fromStdString(d.text())),
-                std::nullopt, true);
+            add(tr("The follower cannot ride this cam: %1").arg(diagnosticText(d)), std::nullopt,
+                true);
         }
         m_summary->setText(tr("The follower cannot ride this cam."));
         return;

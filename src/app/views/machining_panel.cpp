@@ -12,6 +12,7 @@
 #include <functional>
 
 #include "document/commands.h"
+#include "messages/diagnostic_text.h"
 #include "models/delegates.h"
 #include "views/palette.h"
 #include "views/plot_data.h"
@@ -227,7 +228,7 @@ void MachiningPanel::setPending() {
 void MachiningPanel::setOutcome(const TimingOutcomePtr& outcome) {
     if (!outcome->errors.empty()) {
         QStringList lines;
-        for (const Diagnostic& d : outcome->errors) lines << QString::fromStdString(d.text());
+        for (const Diagnostic& d : outcome->errors) lines << diagnosticText(d);
         m_status->setText(tr("No machining time: %1").arg(lines.join("; ")));
         for (QLabel* l : m_times) l->setText("—");
         return;
