@@ -1114,7 +1114,7 @@
 <context>
     <name>cam::ContourView</name>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="+48" />
+        <location filename="../../src/app/views/contour_view.cpp" line="+49" />
         <source>x [mm]</source>
         <translation>x [mm]</translation>
     </message>
@@ -1124,7 +1124,7 @@
         <translation>y [mm]</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+11" />
         <source>Wheel: zoom · drag: pan · drag a square/diamond handle: move the centre or change the radius of the selected arc. Dragged points snap to centres, joints and the grid; Shift keeps one axis, Alt does not snap.</source>
         <translation>Mausrad: zoomen · Ziehen: verschieben · quadratischen/rautenförmigen Griff ziehen: Mittelpunkt verschieben oder Radius des gewählten Bogens ändern. Gezogene Punkte rasten an Mittelpunkten, Übergängen und am Raster ein; Umschalt hält eine Achse fest, Alt rastet nicht ein.</translation>
     </message>
@@ -1588,7 +1588,7 @@
 <context>
     <name>cam::FollowerPanel</name>
     <message>
-        <location filename="../../src/app/views/follower_panel.cpp" line="+46" />
+        <location filename="../../src/app/views/follower_panel.cpp" line="+47" />
         <source>Knife edge</source>
         <translation>Spitze (Messerkante)</translation>
     </message>
@@ -1738,7 +1738,7 @@
         <translation>Druckwinkel [°]</translation>
     </message>
     <message>
-        <location line="+147" />
+        <location line="+148" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -1882,7 +1882,7 @@
 <context>
     <name>cam::KinematicsPlots</name>
     <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="+25" />
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="+26" />
         <source>Velocity [mm/s]</source>
         <translation>Geschwindigkeit [mm/s]</translation>
     </message>
@@ -1965,7 +1965,7 @@
 <context>
     <name>cam::MachiningPanel</name>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="+47" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="+49" />
         <source>Add Machining Limits</source>
         <translation>Bearbeitungsgrenzen hinzufügen</translation>
     </message>
@@ -2717,7 +2717,7 @@
 <context>
     <name>cam::MotionDesignPanel</name>
     <message>
-        <location filename="../../src/app/views/motion_design_panel.cpp" line="+51" />
+        <location filename="../../src/app/views/motion_design_panel.cpp" line="+52" />
         <source>New Design</source>
         <translation>Neuer Entwurf</translation>
     </message>
@@ -2970,7 +2970,7 @@ T = %3 s</translation>
 <context>
     <name>cam::PathStudyPanel</name>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="+18" />
+        <location filename="../../src/app/views/path_study_panel.cpp" line="+19" />
         <source>x, y [mm]</source>
         <translation>x, y [mm]</translation>
     </message>
@@ -2995,7 +2995,7 @@ T = %3 s</translation>
         <translation>Segmentparameter t</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+15" />
         <source> analytic</source>
         <translation> analytisch</translation>
     </message>

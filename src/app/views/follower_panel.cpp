@@ -13,6 +13,7 @@
 #include "document/commands.h"
 #include "messages/diagnostic_text.h"
 #include "models/delegates.h"
+#include "views/axis_format.h"
 #include "widgets/number_format.h"
 #include "widgets/number_spin_box.h"
 
@@ -103,6 +104,7 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     m_pressurePlot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     m_pressurePlot->axisRect()->setRangeDrag(Qt::Horizontal);
     m_pressurePlot->axisRect()->setRangeZoom(Qt::Horizontal);
+    applyAxisFormat(m_pressurePlot);
     QCPGraph* angle = m_pressurePlot->addGraph();
     angle->setPen(QPen(QColor(20, 90, 160), 1.3));
     QCPGraph* beyond = m_pressurePlot->addGraph();

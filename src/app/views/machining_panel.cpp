@@ -14,6 +14,7 @@
 #include "document/commands.h"
 #include "messages/diagnostic_text.h"
 #include "models/delegates.h"
+#include "views/axis_format.h"
 #include "views/palette.h"
 #include "views/plot_data.h"
 #include "widgets/number_spin_box.h"
@@ -36,6 +37,7 @@ QCustomPlot* smallPlot(QWidget* parent, const QString& xLabel, const QString& yL
     p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     p->axisRect()->setRangeZoom(Qt::Horizontal);
     p->axisRect()->setRangeDrag(Qt::Horizontal);
+    applyAxisFormat(p);
     return p;
 }
 

@@ -18,6 +18,7 @@
 #include "messages/diagnostic_text.h"
 #include "models/delegates.h"
 #include "models/design_table_model.h"
+#include "views/axis_format.h"
 #include "views/plot_data.h"
 #include "widgets/number_format.h"
 #include "widgets/number_spin_box.h"
@@ -146,7 +147,7 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
         plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
         plot->axisRect()->setRangeDrag(Qt::Horizontal);
         plot->axisRect()->setRangeZoom(Qt::Horizontal);
-        plot->yAxis->setNumberFormat("gb");
+        applyAxisFormat(plot);
         plot->xAxis->setTickLabels(p == 3);
         QCPGraph* law = plot->addGraph();
         law->setName(tr("law"));
