@@ -1,6 +1,580 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>DiagnosticText</name>
+    <message>
+        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+70" />
+        <source>a number</source>
+        <translation>eine Zahl</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a string</source>
+        <translation>ein Text</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a boolean</source>
+        <translation>ein Wahrheitswert</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>an array</source>
+        <translation>ein Array</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>an object</source>
+        <translation>ein Objekt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>true or false</source>
+        <translation>true oder false</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>an array [x, y] of two numbers</source>
+        <translation>ein Array [x, y] aus zwei Zahlen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>an array of numbers</source>
+        <translation>ein Array aus Zahlen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>an array of segments</source>
+        <translation>ein Array aus Segmenten</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a whole number</source>
+        <translation>eine ganze Zahl</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a fillet</source>
+        <translation>eine Verrundung</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a tangent line</source>
+        <translation>eine Tangente</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>control point P%1</source>
+        <translation>Kontrollpunkt P%1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>control points</source>
+        <translation>Kontrollpunkte</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>start point</source>
+        <translation>Anfangspunkt</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>start tangent</source>
+        <translation>Anfangstangente</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>end point</source>
+        <translation>Endpunkt</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>end tangent</source>
+        <translation>Endtangente</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1, x</source>
+        <translation>%1, x</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1, y</source>
+        <translation>%1, y</translation>
+    </message>
+    <message>
+        <location line="+54" />
+        <source>law</source>
+        <translation>Gesetz</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>end angle</source>
+        <translation>Endwinkel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>lift</source>
+        <translation>Hub</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Motion design, segment %1</source>
+        <translation>Bewegungsentwurf, Segment %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Motion design, segment %1, %2</source>
+        <translation>Bewegungsentwurf, Segment %1, %2</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Motion design, joint between segments %1 and %2</source>
+        <translation>Bewegungsentwurf, Übergang zwischen Segment %1 und %2</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Machining, acceleration of axis %1</source>
+        <translation>Zerspanung, Beschleunigung der Achse %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Machining, speed limit of axis %1</source>
+        <translation>Zerspanung, Geschwindigkeitsgrenze der Achse %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Follower, pivot x</source>
+        <translation>Stößel, Drehpunkt des Hebels x</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Follower, pivot y</source>
+        <translation>Stößel, Drehpunkt des Hebels y</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <location line="+281" />
+        <source>Contour</source>
+        <translation>Kontur</translation>
+    </message>
+    <message>
+        <location line="-280" />
+        <source>Motion, ω [rad/s]</source>
+        <translation>Bewegung, ω [rad/s]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Motion, speed [rpm]</source>
+        <translation>Bewegung, Drehzahl [1/min]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Motion, period [s]</source>
+        <translation>Bewegung, Periode [s]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Follower, offset</source>
+        <translation>Stößel, Versatz</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Follower, roller radius</source>
+        <translation>Stößel, Rollenradius</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Follower, largest pressure angle</source>
+        <translation>Stößel, größter Druckwinkel</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Follower, type</source>
+        <translation>Stößel, Typ</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Follower, pivot</source>
+        <translation>Stößel, Drehpunkt des Hebels</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Follower, arm length</source>
+        <translation>Stößel, Hebellänge</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Samples per turn</source>
+        <translation>Abtastpunkte pro Umdrehung</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Machining, axis accelerations</source>
+        <translation>Zerspanung, Achsbeschleunigungen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Machining, axis speed limits</source>
+        <translation>Zerspanung, Achsgeschwindigkeitsgrenzen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Machining, feed ceiling</source>
+        <translation>Zerspanung, höchster Vorschub</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Machining, tool radius</source>
+        <translation>Zerspanung, Werkzeugradius</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Machining, step</source>
+        <translation>Zerspanung, Schrittweite</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Motion design, base radius</source>
+        <translation>Bewegungsentwurf, Grundkreisradius</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Motion design, tolerance</source>
+        <translation>Bewegungsentwurf, Toleranz</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Motion design, segments</source>
+        <translation>Bewegungsentwurf, Segmente</translation>
+    </message>
+    <message>
+        <location line="+37" />
+        <source>must be a finite number (got %1)</source>
+        <translation>muss eine endliche Zahl sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>magnitude must be at most 10⁶ mm (got %1)</source>
+        <translation>Betrag darf höchstens 10⁶ mm sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be between %1 and %2%3 (got %4)</source>
+        <translation>muss zwischen %1 und %2%3 liegen (ist %4)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>must be at least %1 mm (got %2): a smaller circle or step is below the precision of the joints</source>
+        <translation>muss mindestens %1 mm sein (ist %2): ein kleinerer Kreis oder Schritt liegt unter der Genauigkeit der Übergänge</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>must be &gt; 0 (got %1)</source>
+        <translation>muss &gt; 0 sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must not be 0 (its sign gives the turning direction)</source>
+        <translation>darf nicht 0 sein (das Vorzeichen gibt die Drehrichtung an)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>magnitude must be between %1 and %2%3 (got %4)</source>
+        <translation>Betrag muss zwischen %1 und %2%3 liegen (ist %4)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>must have at least one segment</source>
+        <translation>muss mindestens ein Segment haben</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be a finite angle of magnitude at most 10⁶° (got %1)</source>
+        <translation>muss ein endlicher Winkel mit einem Betrag von höchstens 10⁶° sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>must be greater than %1 %2° (got %3°)</source>
+        <translation>muss größer als %1 %2° sein (ist %3°)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>at %1° the follower ray only grazes the curve (it must cross it at an angle of at least %2 rad, or the follower would need an unbounded speed); the window must end before it</source>
+        <translation>bei %1° streift der Strahl des Stößels die Kurve nur (er muss sie unter einem Winkel von mindestens %2 rad schneiden, sonst bräuchte der Stößel eine unbegrenzte Geschwindigkeit); das Fenster muss vorher enden</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>window %1° .. %2° disagrees with the polar angles of the line's end points (%3° .. %4°)</source>
+        <translation>das Fenster %1° .. %2° passt nicht zu den Polarwinkeln der Endpunkte der Geraden (%3° .. %4°)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>window %1° .. %2° disagrees with the polar angles of the curve's end points (%3° .. %4°)</source>
+        <translation>das Fenster %1° .. %2° passt nicht zu den Polarwinkeln der Endpunkte der Kurve (%3° .. %4°)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the end point must differ from the start point (the line has no length)</source>
+        <translation>der Endpunkt muss sich vom Anfangspunkt unterscheiden (die Gerade hat keine Länge)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the line passes through the rotation centre, so the follower ray meets it at no angle or at every point</source>
+        <translation>die Gerade geht durch das Drehzentrum, daher trifft der Strahl des Stößels sie unter keinem Winkel oder in jedem Punkt</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the line runs clockwise around the rotation centre (from %1° to %2°); swap its start and end points</source>
+        <translation>die Gerade läuft im Uhrzeigersinn um das Drehzentrum (von %1° bis %2°); Anfangs- und Endpunkt tauschen</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>an end point lies on the rotation centre</source>
+        <translation>ein Endpunkt liegt im Drehzentrum</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the curve runs clockwise around the rotation centre (from %1° to %2°); reverse its points</source>
+        <translation>die Kurve läuft im Uhrzeigersinn um das Drehzentrum (von %1° bis %2°); ihre Punkte umkehren</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the follower ray meets the curve %1 times at %2°; inside its window it must meet it exactly once</source>
+        <translation>der Strahl des Stößels trifft die Kurve bei %2° %1-mal; innerhalb ihres Fensters muss er sie genau einmal treffen</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the rotation centre lies inside this circle, so the inner intersection is behind the follower (r ≤ 0); choose the outer branch</source>
+        <translation>das Drehzentrum liegt in diesem Kreis, daher liegt der innere Schnittpunkt hinter dem Stößel (r ≤ 0); den Zweig „außen“ wählen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the follower ray misses the circle inside the window %1° .. %2°; it meets it only for φ in %3° .. %4°</source>
+        <translation>der Strahl des Stößels verfehlt den Kreis im Fenster %1° .. %2°; er trifft ihn nur für φ in %3° .. %4°</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>gap of %1° between %2 %3° and %4 %5°</source>
+        <translation>Lücke von %1° zwischen %2 %3° und %4 %5°</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>overlap of %1° between %2 %3° and %4 %5°</source>
+        <translation>Überlappung von %1° zwischen %2 %3° und %4 %5°</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the windows cover %1° (from %2° to %3°); they must cover exactly one turn, 360°</source>
+        <translation>die Fenster überdecken %1° (von %2° bis %3°); sie müssen genau eine Umdrehung überdecken, 360°</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the segments do not meet at %1°: gap of %2 mm (at most 10⁻⁶ mm allowed)</source>
+        <translation>die Segmente treffen sich bei %1° nicht: Lücke von %2 mm (höchstens 10⁻⁶ mm erlaubt)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>a flat face moves only translating; use a knife edge or a roller on a swinging arm</source>
+        <translation>ein Flachstößel bewegt sich nur geradgeführt; auf einem Schwinghebel eine Spitze oder eine Rolle verwenden</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>must be smaller than the radius %1 mm of the concave arc in segment %2 (got %3 mm): the roller cannot enter it</source>
+        <translation>muss kleiner sein als der Radius %1 mm des konkaven Bogens in Segment %2 (ist %3 mm): die Rolle passt nicht hinein</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>must be between 16 and 10000000 (got %1)</source>
+        <translation>muss zwischen 16 und 10000000 liegen (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must list 2 or 3 axes (got %1)</source>
+        <translation>muss 2 oder 3 Achsen angeben (sind %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 needs a joint between two segments (the contour has %2)</source>
+        <translation>%1 braucht einen Übergang zwischen zwei Segmenten (die Kontur hat %2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>there is no joint %1: joints are numbered 0 .. %2</source>
+        <translation>es gibt keinen Übergang %1: die Übergänge sind von 0 bis %2 nummeriert</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>must be after %1°, where this segment starts (got %2°)</source>
+        <translation>muss nach %1° liegen, wo dieses Segment beginnt (ist %2°)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>must be at most 360° (got %1°)</source>
+        <translation>darf höchstens 360° sein (ist %1°)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a dwell keeps the lift it starts with (%1), got %2</source>
+        <translation>eine Rast behält den Hub, mit dem sie beginnt (%1), ist aber %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>must differ from the lift it starts with (%1) for %2; a stretch without motion is a dwell</source>
+        <translation>muss sich für %2 vom Hub am Anfang (%1) unterscheiden; ein Abschnitt ohne Bewegung ist eine Rast</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the last segment must end at 360° (got %1°)</source>
+        <translation>das letzte Segment muss bei 360° enden (ist %1°)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the motion must return to the start: the last lift must be 0 (got %1)</source>
+        <translation>die Bewegung muss zum Anfang zurückkehren: der letzte Hub muss 0 sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the velocity jumps from %1 to %2 per degree</source>
+        <translation>die Geschwindigkeit springt von %1 auf %2 pro Grad</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the acceleration jumps from %1 to %2 per degree²</source>
+        <translation>die Beschleunigung springt von %1 auf %2 pro Grad²</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the velocity jumps from %1 to %2 per degree; the acceleration jumps from %3 to %4 per degree²</source>
+        <translation>die Geschwindigkeit springt von %1 auf %2 pro Grad; die Beschleunigung springt von %3 auf %4 pro Grad²</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>missing</source>
+        <translation>fehlt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>unknown key</source>
+        <translation>unbekannter Schlüssel</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be %1 (got %2)</source>
+        <translation>muss %1 sein (ist %2)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be an array [x, y] of two numbers (got %1 elements)</source>
+        <translation>muss ein Array [x, y] aus zwei Zahlen sein (hat %1 Elemente)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>must be one of %1 (got “%2”)</source>
+        <translation>muss eines von %1 sein (ist „%2“)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>unknown segment type “%1” (expected “arc”, “line”, “bezier” or “hermite”)</source>
+        <translation>unbekannter Segmenttyp „%1“ (erwartet „arc“, „line“, „bezier“ oder „hermite“)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>unknown law “%1” (expected one of %2)</source>
+        <translation>unbekanntes Bewegungsgesetz „%1“ (erwartet eines von %2)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must give exactly one of omega_rad_s, rpm, period_s (got %1)</source>
+        <translation>muss genau eines von omega_rad_s, rpm, period_s angeben (sind %1)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>must be a whole number between 16 and 10000000 (got %1)</source>
+        <translation>muss eine ganze Zahl zwischen 16 und 10000000 sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>this file has format version %1; this Camwright reads version 1 only — open it with a newer Camwright</source>
+        <translation>diese Datei hat die Formatversion %1; dieses Camwright liest nur Version 1 – bitte mit einem neueren Camwright öffnen</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>must be 1 (got %1)</source>
+        <translation>muss 1 sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be an array of four points [x, y]</source>
+        <translation>muss ein Array aus vier Punkten [x, y] sein</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>duplicated key</source>
+        <translation>doppelter Schlüssel</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>line %1, column %2: number %3 is too large for a double</source>
+        <translation>Zeile %1, Spalte %2: die Zahl %3 ist zu groß für eine Gleitkommazahl (double)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>line %1, column %2: not valid JSON: %3</source>
+        <translation>Zeile %1, Spalte %2: kein gültiges JSON: %3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>nesting deeper than %1 levels</source>
+        <translation>Verschachtelung tiefer als %1 Ebenen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>line %1, column %2: a NUL byte (at byte offset %3): a project file is text</source>
+        <translation>Zeile %1, Spalte %2: ein NUL-Byte (bei Byte-Position %3): eine Projektdatei ist Text</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>not valid JSON</source>
+        <translation>kein gültiges JSON</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>line %1: expected %2 (got %3 values)</source>
+        <translation>Zeile %1: erwartet %2 (%3 Werte erhalten)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>line %1: expected %2 or %3 (got %4 values)</source>
+        <translation>Zeile %1: erwartet %2 oder %3 (%4 Werte erhalten)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>line %1: %2 must be a finite number (got “%3”)</source>
+        <translation>Zeile %1: %2 muss eine endliche Zahl sein (ist „%3“)</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>Joint between segments %1 and %2</source>
+        <translation>Übergang zwischen Segment %1 und %2</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Segment %1</source>
+        <translation>Segment %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Segment %1, %2</source>
+        <translation>Segment %1, %2</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
     <name>ExportFormat</name>
     <message>
         <location filename="../../src/app/export/export_request.cpp" line="+13" />
@@ -540,7 +1114,7 @@
 <context>
     <name>cam::ContourView</name>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="+48" />
+        <location filename="../../src/app/views/contour_view.cpp" line="+50" />
         <source>x [mm]</source>
         <translation>x [mm]</translation>
     </message>
@@ -550,7 +1124,7 @@
         <translation>y [mm]</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+11" />
         <source>Wheel: zoom · drag: pan · drag a square/diamond handle: move the centre or change the radius of the selected arc. Dragged points snap to centres, joints and the grid; Shift keeps one axis, Alt does not snap.</source>
         <translation>Mausrad: zoomen · Ziehen: verschieben · quadratischen/rautenförmigen Griff ziehen: Mittelpunkt verschieben oder Radius des gewählten Bogens ändern. Gezogene Punkte rasten an Mittelpunkten, Übergängen und am Raster ein; Umschalt hält eine Achse fest, Alt rastet nicht ein.</translation>
     </message>
@@ -565,7 +1139,7 @@
         <translation>Übergänge</translation>
     </message>
     <message>
-        <location line="+445" />
+        <location line="+450" />
         <location line="+8" />
         <source>Shape segment %1</source>
         <translation>Segment %1 formen</translation>
@@ -649,7 +1223,7 @@
         <translation>Segment %1, Hermite: Endpunkte p0, p3 und Endtangenten t0, t1 (t0 = 3·(P1 − P0)). Ein verschobener Endpunkt behält seine Tangente.</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+17" />
         <source>%1 %2: a component of the tangent vector, mm</source>
         <translation>%1 %2: eine Komponente des Tangentenvektors, mm</translation>
     </message>
@@ -662,7 +1236,7 @@
 <context>
     <name>cam::DesignTableModel</name>
     <message>
-        <location filename="../../src/app/models/design_table_model.cpp" line="+61" />
+        <location filename="../../src/app/models/design_table_model.cpp" line="+62" />
         <source>Dwell</source>
         <translation>Rast</translation>
     </message>
@@ -1014,7 +1588,7 @@
 <context>
     <name>cam::FollowerPanel</name>
     <message>
-        <location filename="../../src/app/views/follower_panel.cpp" line="+45" />
+        <location filename="../../src/app/views/follower_panel.cpp" line="+48" />
         <source>Knife edge</source>
         <translation>Spitze (Messerkante)</translation>
     </message>
@@ -1164,7 +1738,7 @@
         <translation>Druckwinkel [°]</translation>
     </message>
     <message>
-        <location line="+147" />
+        <location line="+148" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -1174,12 +1748,12 @@
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+20" />
         <source>No design checks: %1</source>
         <translation>Keine Auslegungsprüfung: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>No design checks: the contour cannot be computed.</source>
         <translation>Keine Auslegungsprüfung: die Kontur lässt sich nicht berechnen.</translation>
     </message>
@@ -1308,7 +1882,7 @@
 <context>
     <name>cam::KinematicsPlots</name>
     <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="+25" />
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="+28" />
         <source>Velocity [mm/s]</source>
         <translation>Geschwindigkeit [mm/s]</translation>
     </message>
@@ -1318,12 +1892,17 @@
         <translation>Beschleunigung [mm/s²]</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>Jerk [mm/s³]</source>
         <translation>Ruck [mm/s³]</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>Radius r [mm]</source>
+        <translation>Radius r [mm]</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>v_r</source>
         <translation>v_r</translation>
     </message>
@@ -1368,7 +1947,12 @@
         <translation>|j|</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+1" />
+        <source>r</source>
+        <translation>r</translation>
+    </message>
+    <message>
+        <location line="+23" />
         <source>law</source>
         <translation>Gesetz</translation>
     </message>
@@ -1378,7 +1962,7 @@
         <translation>Stößel</translation>
     </message>
     <message>
-        <location line="+100" />
+        <location line="+117" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -1391,7 +1975,7 @@
 <context>
     <name>cam::MachiningPanel</name>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="+46" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="+50" />
         <source>Add Machining Limits</source>
         <translation>Bearbeitungsgrenzen hinzufügen</translation>
     </message>
@@ -1559,7 +2143,7 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+84" />
+        <location filename="../../src/app/mainwindow.cpp" line="+87" />
         <source>The recovery copy could not be written: %1</source>
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
@@ -1569,7 +2153,7 @@
         <translation>wird berechnet…</translation>
     </message>
     <message>
-        <location line="+54" />
+        <location line="+66" />
         <location line="+31" />
         <source>Play</source>
         <translation>Abspielen</translation>
@@ -1809,7 +2393,17 @@
         <translation>Bogen annähern</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+8" />
+        <source>&amp;Radius Plot r(φ)</source>
+        <translation>&amp;Radiusdiagramm r(φ)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Show the contour's radius r over the turn above the velocity</source>
+        <translation>Den Radius r der Kontur über die Umdrehung über der Geschwindigkeit zeigen</translation>
+    </message>
+    <message>
+        <location line="+15" />
         <source>About Camwright</source>
         <translation>Über Camwright</translation>
     </message>
@@ -1904,7 +2498,7 @@
         <translation>&lt;b&gt;Diagramme&lt;/b&gt;: Geschwindigkeit, Beschleunigung und Ruck über dem Winkel oder der Zeit; die gestrichelte Linie ist der Cursor.</translation>
     </message>
     <message>
-        <location line="+68" />
+        <location line="+69" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -1968,12 +2562,12 @@
         <translation>%1 ist keine Wiederherstellungskopie einer beendeten Sitzung.</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+47" />
         <source>Project renamed to “%1”</source>
         <translation>Projekt in „%1“ umbenannt</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+58" />
         <source>not computed: %1</source>
         <translation>nicht berechnet: %1</translation>
     </message>
@@ -1998,7 +2592,7 @@
         <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
     </message>
     <message>
-        <location line="+53" />
+        <location line="+54" />
         <source>Valid · no contour yet: Synthesize (F6) makes it</source>
         <translation>Gültig · noch keine Kontur: Synthetisieren (F6) erzeugt sie</translation>
     </message>
@@ -2028,7 +2622,7 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-472" />
+        <location line="-525" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -2143,7 +2737,7 @@
 <context>
     <name>cam::MotionDesignPanel</name>
     <message>
-        <location filename="../../src/app/views/motion_design_panel.cpp" line="+50" />
+        <location filename="../../src/app/views/motion_design_panel.cpp" line="+53" />
         <source>New Design</source>
         <translation>Neuer Entwurf</translation>
     </message>
@@ -2273,12 +2867,12 @@
         </translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+31" />
         <source>The design cannot be made: %1</source>
         <translation>Der Entwurf ist nicht herstellbar: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>The design cannot be drawn at this speed.</source>
         <translation>Der Entwurf lässt sich bei dieser Drehzahl nicht zeichnen.</translation>
     </message>
@@ -2396,7 +2990,7 @@ T = %3 s</translation>
 <context>
     <name>cam::PathStudyPanel</name>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="+18" />
+        <location filename="../../src/app/views/path_study_panel.cpp" line="+20" />
         <source>x, y [mm]</source>
         <translation>x, y [mm]</translation>
     </message>
@@ -2421,7 +3015,7 @@ T = %3 s</translation>
         <translation>Segmentparameter t</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+15" />
         <source> analytic</source>
         <translation> analytisch</translation>
     </message>
@@ -2445,7 +3039,7 @@ T = %3 s</translation>
 <context>
     <name>cam::ProjectDocument</name>
     <message>
-        <location filename="../../src/app/document/project_document.cpp" line="+21" />
+        <location filename="../../src/app/document/project_document.cpp" line="+22" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
@@ -2458,7 +3052,7 @@ T = %3 s</translation>
 <context>
     <name>cam::ProjectFiles</name>
     <message>
-        <location filename="../../src/app/files/project_files.cpp" line="+64" />
+        <location filename="../../src/app/files/project_files.cpp" line="+65" />
         <source>%1 cannot be opened: another file is being opened</source>
         <translation>%1 kann nicht geöffnet werden: Es wird gerade eine andere Datei geöffnet</translation>
     </message>
@@ -2607,7 +3201,7 @@ Möchten Sie die Datei ersetzen?</translation>
 <context>
     <name>cam::SegmentTableModel</name>
     <message>
-        <location filename="../../src/app/models/segment_table_model.cpp" line="+82" />
+        <location filename="../../src/app/models/segment_table_model.cpp" line="+83" />
         <location line="+53" />
         <source>Arc</source>
         <translation>Bogen</translation>
@@ -2693,7 +3287,7 @@ Möchten Sie die Datei ersetzen?</translation>
         <translation>Polares Fenster [φ Anfang, φ Ende), Grad</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+13" />
         <source>Type</source>
         <translation>Typ</translation>
     </message>
@@ -2804,12 +3398,12 @@ Möchten Sie die Datei ersetzen?</translation>
 <context>
     <name>cam::StaleLabel</name>
     <message>
-        <location filename="../../src/app/views/stale_label.h" line="+22" />
+        <location filename="../../src/app/views/stale_label.h" line="+23" />
         <source>No contour yet: Synthesize (F6, in the Motion Design dock) makes it from the design.</source>
         <translation>Noch keine Kontur: Synthetisieren (F6, im Fenster Bewegungsentwurf) erzeugt sie aus dem Entwurf.</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+10" />
         <source>Not computed: %1%2
 Grey: the last computed state, out of date.</source>
         <translation>Nicht berechnet: %1%2

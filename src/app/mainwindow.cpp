@@ -37,6 +37,7 @@
 #include "files/project_files.h"
 #include "fillet/fillet.h"
 #include "io/project_json.h"
+#include "messages/diagnostic_text.h"
 #include "models/delegates.h"
 #include "models/segment_table_model.h"
 #include "ui_mainwindow.h"
@@ -913,7 +914,7 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
     // The pressure-angle plot shows what the kinematics plots show (their zoom included).
     m_follower->pressurePlot()->xAxis->setRange(m_plots->plot(0)->xAxis->range());
     if (!result->ok()) {
-        const QString first = QString::fromStdString(result->errors.front().text());
+        const QString first = diagnosticText(result->errors.front());
         // The problems themselves are in the validation label beside it.
         m_computeLabel->setText(result->failed ? tr("not computed: %1").arg(first)
                                 : m_document->awaitsSynthesis()
@@ -994,7 +995,7 @@ void MainWindow::updateStatus() {
         m_validationLabel->setToolTip({});
         m_validationLabel->setStyleSheet({});
     } else {
-        const QString first = QString::fromStdString(d.front().text());
+        const QString first = diagnosticText(d.front());
         const QString count = d.size() == 1 ? tr("1 problem: ") : tr("%1 problems: ").arg(d.size());
         m_validationLabel->setText(count + fontMetrics().elidedText(first, Qt::ElideRight, 600));
         m_validationLabel->setToolTip(diagnosticsText(d, 40));

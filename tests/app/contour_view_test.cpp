@@ -189,10 +189,10 @@ TEST(ContourView, AProjectThatCannotBeComputedIsShownGreyedAndLabelled) {
     const auto expectStale = [&](bool stale, const char* when) {
         // The picture first: no segment drawn in its own colour while it is out of date.
         EXPECT_EQ(colouredPixels() == 0, stale) << when;
-        EXPECT_EQ(labelSays(contourLabel, "contour[2].radius"), stale) << when;
-        EXPECT_EQ(labelSays(plotsLabel, "contour[2].radius"), stale) << when;
-        EXPECT_EQ(view->staleReason().contains("contour[2].radius"), stale) << when;
-        EXPECT_EQ(plots->staleReason().contains("contour[2].radius"), stale) << when;
+        EXPECT_EQ(labelSays(contourLabel, "Segment 2, Radius [mm]"), stale) << when;
+        EXPECT_EQ(labelSays(plotsLabel, "Segment 2, Radius [mm]"), stale) << when;
+        EXPECT_EQ(view->staleReason().contains("Segment 2, Radius [mm]"), stale) << when;
+        EXPECT_EQ(plots->staleReason().contains("Segment 2, Radius [mm]"), stale) << when;
         // The curves of the plots grey, not their own colours.
         const QColor curve = plots->plot(1)->graph(2)->pen().color();
         const QColor axial = plots->plot(1)->graph(0)->pen().color();
@@ -207,7 +207,8 @@ TEST(ContourView, AProjectThatCannotBeComputedIsShownGreyedAndLabelled) {
     ASSERT_TRUE(window.waitForCurrentResult(10000));
     EXPECT_FALSE(window.engine()->latestResult()->ok());
     expectStale(true, "after the edit");
-    EXPECT_TRUE(contourLabel && contourLabel->text().startsWith("Not computed: contour[2].radius"));
+    EXPECT_TRUE(contourLabel &&
+                contourLabel->text().startsWith("Not computed: Segment 2, Radius [mm]"));
     EXPECT_TRUE(window.findChild<QLabel*>("computeLabel")->text().contains("not computed"));
 
     window.document()->undoStack()->undo();

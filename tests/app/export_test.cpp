@@ -182,7 +182,8 @@ TEST(ExportInWindow, AFailureNamesTheProblemAndLosesNothing) {
     ASSERT_FALSE(window.document()->diagnostics().empty());
     request.path = QString::fromStdString(kept);
     problem = exportAndWait(window, request);
-    EXPECT_TRUE(problem.contains("contour[0]")) << problem.toStdString();
+    // Named as the table shows it (messages/diagnostic_text.h).
+    EXPECT_TRUE(problem.contains("Segment 0, Radius [mm]")) << problem.toStdString();
     EXPECT_EQ(test::readFile(kept), "the old program");
     closeProblemBox(window);
     EXPECT_EQ(test::folderEntries(dir.path()), std::vector<std::string>{"kept.ngc"});

@@ -62,7 +62,7 @@ TEST(FollowerPanel, ChoosingARollerIsOneUndoableEditComputedInTheWorker) {
     EXPECT_TRUE(window.followerPanel()
                     ->findChild<QLabel*>("designChecksSummary")
                     ->text()
-                    .contains("follower.radius"));
+                    .contains("Follower, roller radius"));
     radius->setValue(2.0);
     radius->setValue(2.5);  // one spin-box session: merged with the step before
     emit radius->editingFinished();

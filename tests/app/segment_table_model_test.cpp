@@ -240,7 +240,9 @@ TEST(SegmentTableProblems, ASplinePointProblemMarksItsRowsTypeCell) {
     document.reset(p, {});
     const QStringList problems = model.problemsAt(2, SegmentTableModel::Type);
     ASSERT_EQ(problems.size(), 1) << document.diagnostics().front().text();
-    EXPECT_TRUE(problems.front().startsWith("contour[2].points[2][0]: magnitude must be"));
+    EXPECT_TRUE(
+        problems.front().startsWith("Segment 2, control point P2, x: magnitude must be at most"))
+        << problems.front().toStdString();
     EXPECT_EQ(model.index(2, SegmentTableModel::Type).data(Qt::BackgroundRole).value<QColor>(),
               QColor(255, 205, 205));
     for (int row : {0, 1, 3}) EXPECT_TRUE(model.problemsAt(row, SegmentTableModel::Type).isEmpty());

@@ -2,6 +2,7 @@
 
 #include <QFileInfo>
 
+#include "messages/diagnostic_text.h"
 #include "project/validate.h"
 
 namespace cam {
@@ -141,7 +142,7 @@ QString diagnosticsText(const Diagnostics& diagnostics, int limit) {
             lines << ProjectDocument::tr("… and %1 more").arg(diagnostics.size() - limit);
             break;
         }
-        lines << QString::fromStdString(d.text());
+        lines << diagnosticText(d);
     }
     return lines.join('\n');
 }

@@ -20,6 +20,7 @@
 #include "document/project_document.h"
 #include "io/atomic_file.h"
 #include "io/project_json.h"
+#include "messages/diagnostic_text.h"
 #include "project/validate.h"
 #include "widgets/icons.h"
 
@@ -157,7 +158,7 @@ QString ProjectFiles::save(const QString& path) {
                                                      serializeProject(m_document->project()));
     if (!problems.empty()) {
         return tr("%1 could not be written: %2")
-            .arg(QDir::toNativeSeparators(path), QString::fromStdString(problems.front().message));
+            .arg(QDir::toNativeSeparators(path), DiagnosticText::message(problems.front()));
     }
     const QString absolute = QFileInfo(path).absoluteFilePath();
     m_document->markSaved(absolute);

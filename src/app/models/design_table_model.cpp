@@ -5,6 +5,7 @@
 #include <QRegularExpression>
 
 #include "document/commands.h"
+#include "messages/diagnostic_text.h"
 #include "models/delegates.h"
 #include "models/segment_table_model.h"
 #include "widgets/number_format.h"
@@ -89,7 +90,7 @@ void DesignTableModel::rebuild() {
         if (!match.hasMatch()) continue;
         const int row = match.captured(1).toInt();
         const int column = columnOfField(match.captured(2));
-        const QString text = QString::fromStdString(d.message);
+        const QString text = DiagnosticText::message(d);
         if (column >= 0) {
             m_problems[cellKey(row, column)] << text;
         } else {

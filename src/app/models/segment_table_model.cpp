@@ -6,6 +6,7 @@
 
 #include "common/angles.h"
 #include "contour/change_type.h"
+#include "messages/diagnostic_text.h"
 #include "project/validate.h"
 #include "widgets/number_format.h"
 
@@ -195,7 +196,12 @@ QVariant SegmentTableModel::headerData(int section, Qt::Orientation orientation,
         }
     }
     if (role != Qt::DisplayRole) return {};
-    switch (section) {
+    const QString title = columnTitle(section);
+    return title.isEmpty() ? QVariant() : QVariant(title);
+}
+
+QString SegmentTableModel::columnTitle(int column) {
+    switch (column) {
         case Type:
             return tr("Type");
         case CenterX:
@@ -352,7 +358,7 @@ void SegmentTableModel::rebuildProblems() {
     m_problems.clear();
     const int rows = rowCount();
     for (const Diagnostic& d : m_document->diagnostics()) {
-        const QString message = QString::fromStdString(d.text());
+        const QString message = diagnosticText(d);
         for (const SegmentPlace& place : d.places) {
             if (place.segment >= static_cast<std::size_t>(rows)) continue;
             const int row = static_cast<int>(place.segment);

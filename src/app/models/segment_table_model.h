@@ -44,6 +44,9 @@ public:
     Qt::ItemFlags flags(const QModelIndex& index) const override;
     bool setData(const QModelIndex& index, const QVariant& value, int role) override;
 
+    /// @brief The column's header text, "Radius [mm]": also how messages name the column.
+    [[nodiscard]] static QString columnTitle(int column);
+
     /// @brief The messages that concern a cell (empty when it is fine).
     [[nodiscard]] QStringList problemsAt(int row, int column) const;
 

@@ -7,6 +7,7 @@
 
 #include "document/commands.h"
 #include "models/delegates.h"
+#include "views/axis_format.h"
 #include "views/palette.h"
 #include "views/plot_redraw.h"
 #include "views/stale_label.h"
@@ -52,6 +53,7 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     yAxis2->setVisible(true);
     xAxis2->setTickLabels(false);
     yAxis2->setTickLabels(false);
+    applyAxisFormat(this);
     connect(xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), xAxis2,
             qOverload<const QCPRange&>(&QCPAxis::setRange));
     connect(yAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), yAxis2,

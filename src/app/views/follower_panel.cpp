@@ -11,7 +11,9 @@
 
 #include "common/angles.h"
 #include "document/commands.h"
+#include "messages/diagnostic_text.h"
 #include "models/delegates.h"
+#include "views/axis_format.h"
 #include "views/plot_redraw.h"
 #include "widgets/number_format.h"
 #include "widgets/number_spin_box.h"
@@ -103,6 +105,7 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     m_pressurePlot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     m_pressurePlot->axisRect()->setRangeDrag(Qt::Horizontal);
     m_pressurePlot->axisRect()->setRangeZoom(Qt::Horizontal);
+    applyAxisFormat(m_pressurePlot);
     QCPGraph* angle = m_pressurePlot->addGraph();
     angle->setPen(QPen(QColor(20, 90, 160), 1.3));
     QCPGraph* beyond = m_pressurePlot->addGraph();
@@ -265,16 +268,16 @@ void FollowerPanel::setResult(const ComputeResultPtr& result) {
         }
     };
     if (!result || !result->ok()) {
-        m_summary->setText(result && !result->errors.empty()
-                               ? tr("No design checks: %1")
-                                     .arg(QString::fromStdString(result->errors.front().text()))
-                               : tr("No design checks: the contour cannot be computed."));
+        m_summary->setText(
+            result && !result->errors.empty()
+                ? tr("No design checks: %1").arg(diagnosticText(result->errors.front()))
+                : tr("No design checks: the contour cannot be computed."));
         return;
     }
     if (!result->followerErrors.empty()) {
         for (const Diagnostic& d : result->followerErrors) {
-            add(tr("The follower cannot ride this cam: %1").arg(QString::fromStdString(d.text())),
-                std::nullopt, true);
+            add(tr("The follower cannot ride this cam: %1").arg(diagnosticText(d)), std::nullopt,
+                true);
         }
         m_summary->setText(tr("The follower cannot ride this cam."));
         return;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "views/axis_format.h"
 #include "views/palette.h"
 #include "views/plot_data.h"
 #include "views/plot_redraw.h"
@@ -39,7 +40,7 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
         plot->axisRect()->setRangeDrag(Qt::Horizontal);
         plot->axisRect()->setRangeZoom(Qt::Horizontal);
         plot->yAxis->setLabel(titles[p]);
-        plot->yAxis->setNumberFormat("gb");
+        applyAxisFormat(plot);
         for (int c = 0; c < 3; ++c) {
             QCPGraph* g = plot->addGraph();
             g->setName(names[p][c]);

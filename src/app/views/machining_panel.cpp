@@ -12,7 +12,9 @@
 #include <functional>
 
 #include "document/commands.h"
+#include "messages/diagnostic_text.h"
 #include "models/delegates.h"
+#include "views/axis_format.h"
 #include "views/palette.h"
 #include "views/plot_data.h"
 #include "views/plot_redraw.h"
@@ -36,6 +38,7 @@ QCustomPlot* smallPlot(QWidget* parent, const QString& xLabel, const QString& yL
     p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     p->axisRect()->setRangeZoom(Qt::Horizontal);
     p->axisRect()->setRangeDrag(Qt::Horizontal);
+    applyAxisFormat(p);
     return p;
 }
 
@@ -228,7 +231,7 @@ void MachiningPanel::setPending() {
 void MachiningPanel::setOutcome(const TimingOutcomePtr& outcome) {
     if (!outcome->errors.empty()) {
         QStringList lines;
-        for (const Diagnostic& d : outcome->errors) lines << QString::fromStdString(d.text());
+        for (const Diagnostic& d : outcome->errors) lines << diagnosticText(d);
         m_status->setText(tr("No machining time: %1").arg(lines.join("; ")));
         for (QLabel* l : m_times) l->setText("—");
         return;

@@ -15,8 +15,10 @@
 #include <cmath>
 
 #include "document/commands.h"
+#include "messages/diagnostic_text.h"
 #include "models/delegates.h"
 #include "models/design_table_model.h"
+#include "views/axis_format.h"
 #include "views/plot_data.h"
 #include "views/plot_redraw.h"
 #include "widgets/number_format.h"
@@ -146,7 +148,7 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
         plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
         plot->axisRect()->setRangeDrag(Qt::Horizontal);
         plot->axisRect()->setRangeZoom(Qt::Horizontal);
-        plot->yAxis->setNumberFormat("gb");
+        applyAxisFormat(plot);
         plot->xAxis->setTickLabels(p == 3);
         QCPGraph* law = plot->addGraph();
         law->setName(tr("law"));
@@ -335,9 +337,9 @@ void MotionDesignPanel::setResult(const ComputeResultPtr& result) {
     if (!design || !design->errors.empty()) {
         // The design cannot be drawn as it is: its problems are marked in the table.
         m_plotArea->setVisible(false);
-        m_notes->setText(design ? tr("The design cannot be made: %1")
-                                      .arg(QString::fromStdString(design->errors.front().text()))
-                                : tr("The design cannot be drawn at this speed."));
+        m_notes->setText(
+            design ? tr("The design cannot be made: %1").arg(diagnosticText(design->errors.front()))
+                   : tr("The design cannot be drawn at this speed."));
         m_notes->setStyleSheet("color: #b00020;");
         return;
     }
@@ -397,13 +399,13 @@ void MotionDesignPanel::setResult(const ComputeResultPtr& result) {
                           number(design->maxError[2]));
     } else if (!design->onContourErrors.empty()) {
         lines << tr("The follower cannot ride the contour: %1")
-                     .arg(QString::fromStdString(design->onContourErrors.front().text()));
+                     .arg(diagnosticText(design->onContourErrors.front()));
     } else if (!result->ok()) {
         lines << tr("No contour yet: Synthesize makes it from this design.");
     }
     bool problem = false;
     for (const Diagnostic& d : design->notes) {
-        lines << QString::fromStdString(d.text());
+        lines << diagnosticText(d);
         problem = problem || d.severity == Severity::Error;
     }
     m_notes->setText(lines.join('\n'));

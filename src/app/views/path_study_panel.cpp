@@ -6,6 +6,7 @@
 #include <QShowEvent>
 #include <QVBoxLayout>
 
+#include "views/axis_format.h"
 #include "views/palette.h"
 #include "views/plot_redraw.h"
 
@@ -24,6 +25,7 @@ PathStudyPanel::PathStudyPanel(QWidget* parent) : QWidget(parent) {
         plot->yAxis->setLabel(labels[p]);
         plot->xAxis->setLabel(p == 3 ? tr("segment parameter t") : QString());
         plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+        applyAxisFormat(plot);
         const int graphs = p == 3 ? 4 : 4;
         for (int g = 0; g < graphs; ++g) {
             QCPGraph* graph = plot->addGraph();

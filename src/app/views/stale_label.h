@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include "engine/compute_result.h"
+#include "messages/diagnostic_text.h"
 
 namespace cam {
 
@@ -23,9 +24,8 @@ inline QString staleText(const ComputeResult& result) {
                                            "No contour yet: Synthesize (F6, in the Motion Design "
                                            "dock) makes it from the design.");
     }
-    const QString first = result.errors.empty()
-                              ? QStringLiteral("?")
-                              : QString::fromStdString(result.errors.front().text());
+    const QString first =
+        result.errors.empty() ? QStringLiteral("?") : diagnosticText(result.errors.front());
     const QString more = result.errors.size() > 1 ? QCoreApplication::translate(
                                                         "cam::StaleLabel", " (and %n more)", "",
                                                         static_cast<int>(result.errors.size() - 1))

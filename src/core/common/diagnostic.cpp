@@ -78,6 +78,28 @@ std::string locationText(const SegmentPlace& place) {
     return text;
 }
 
+std::string_view diagnosticCodeName(DiagnosticCode code) {
+    switch (code) {
+#define CAM_DIAGNOSTIC_NAME(name, signature) \
+    case DiagnosticCode::name:               \
+        return #name;
+        CAM_DIAGNOSTIC_CODES(CAM_DIAGNOSTIC_NAME)
+#undef CAM_DIAGNOSTIC_NAME
+    }
+    return "?";
+}
+
+std::string_view diagnosticCodeSignature(DiagnosticCode code) {
+    switch (code) {
+#define CAM_DIAGNOSTIC_SIGNATURE(name, signature) \
+    case DiagnosticCode::name:                    \
+        return signature;
+        CAM_DIAGNOSTIC_CODES(CAM_DIAGNOSTIC_SIGNATURE)
+#undef CAM_DIAGNOSTIC_SIGNATURE
+    }
+    return "";
+}
+
 void internalError(const std::string& what) {
     std::fprintf(stderr, "camwright: internal error: %s\n", what.c_str());
     std::abort();

@@ -3,9 +3,12 @@
 /// @brief Located messages: how the core reports problems without throwing or printing.
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace cam {
@@ -48,6 +51,103 @@ struct SegmentPlace {
 /// @brief "contour[4]/contour[5]": the joint where `left` ends and `right` begins.
 [[nodiscard]] std::string jointLocation(std::size_t left, std::size_t right);
 
+/// @brief Every kind of message the core makes that a window can show, with the arguments each
+/// carries: X(Name, signature), one letter of the signature per argument, in order: `n` a number
+/// (double), `i` a whole number (a count or an index, held as a double), `k` a segment index
+/// (contour[k]), `s` a name (a term from a closed vocabulary such as a unit, a law, a JSON type,
+/// or text from the file). The comment after each code is its English message, `%1` … for the
+/// arguments.
+///
+/// Why an enum and not a string id: the codes never leave the process (files and the CLI carry
+/// the English text), so what has to stay stable is the meaning of a code, which an enum keeps
+/// as well as a string; and an enum lets the compiler find a code the app does not translate
+/// (`-Wswitch` on its switch) and a test iterate every code (kDiagnosticCodeCount).
+/// diagnosticCodeName() gives the stable name for test output and logs.
+#define CAM_DIAGNOSTIC_CODES(X)                                                                    \
+    X(Unspecified, "")                       /* only the English text (no translation) */          \
+    X(NotFinite, "n")                        /* must be a finite number (got %1) */                \
+    X(LengthTooLarge, "n")                   /* magnitude must be at most 1e6 mm (got %1) */       \
+    X(OutOfRange, "nnsn")                    /* must be between %1 and %2%3 (got %4) */            \
+    X(BelowMinimumLength, "nn")              /* must be at least %1 mm (got %2): … */            \
+    X(NotPositive, "n")                      /* must be > 0 (got %1) */                            \
+    X(SpeedIsZero, "")                       /* must not be 0 (its sign …) */                    \
+    X(SpeedOutOfRange, "nnsn")               /* magnitude must be between %1 and %2%3 (…%4) */   \
+    X(NoSegments, "")                        /* must have at least one segment */                  \
+    X(AngleNotFinite, "n")                   /* must be a finite angle of magnitude … (%1) */    \
+    X(WindowNotIncreasing, "nn")             /* must be greater than phi_start %1° (got %2°) */  \
+    X(RayGrazes, "nn")                       /* at %1° the follower ray only grazes … %2 rad */ \
+    X(WindowDisagreesWithLineEnds, "nnnn")   /* window %1° .. %2° … from/to (%3° .. %4°) */  \
+    X(WindowDisagreesWithSplineEnds, "nnnn") /* window … its end points (%3° .. %4°) */        \
+    X(LineHasNoLength, "")                   /* must differ from `from` (…no length) */          \
+    X(LineThroughCentre, "")                 /* the line passes through the rotation centre */     \
+    X(LineClockwise, "nn")                   /* the line runs clockwise … (from %1 to %2) */     \
+    X(SplineEndOnCentre, "")                 /* an end point lies on the rotation centre */        \
+    X(SplineClockwise, "nn")                 /* the curve runs clockwise … (from %1 to %2) */    \
+    X(RayMeetsSplineTimes, "in")             /* the follower ray meets the curve %1 times … */   \
+    X(InnerBranchBehindCentre, "")           /* the rotation centre lies inside this circle */     \
+    X(RayMissesArc, "nnnn")         /* … misses the circle inside %1 .. %2; … %3 .. %4 */      \
+    X(WindowGap, "nnn")             /* gap of %1° between phi_end %2 and phi_start %3 */          \
+    X(WindowOverlap, "nnn")         /* overlap of %1° between phi_end %2 and … %3 */            \
+    X(WindowsNotOneTurn, "nnn")     /* the windows cover %1° (from %2° to %3°); … */          \
+    X(JointGap, "nn")               /* the segments do not meet at %1°: gap of %2 mm */           \
+    X(FlatFaceOscillating, "")      /* a flat face moves only translating … */                   \
+    X(RollerTooLargeForArc, "nkn")  /* must be smaller than the radius %1 mm of … */             \
+    X(SamplesOutOfRange, "i")       /* must be between 16 and 10000000 (got %1) */                 \
+    X(AxisCount, "i")               /* must list 2 or 3 axes (got %1) */                           \
+    X(JointNeedsTwoSegments, "si")  /* a %1 needs a joint between two segments … */              \
+    X(NoSuchJoint, "ii")            /* there is no joint %1: joints are numbered … */            \
+    X(DesignEndNotAfterStart, "nn") /* must be after %1°, where this segment starts */            \
+    X(DesignEndBeyondTurn, "n")     /* must be at most 360° (got %1°) */                         \
+    X(DwellLiftChanges, "nn")       /* a dwell keeps the lift it starts with (%1) … */           \
+    X(LiftUnchanged, "ns")          /* must differ from the lift … (%1) for %2; … */           \
+    X(DesignLastNot360, "n")        /* the last segment must end at 360° (got %1°) */            \
+    X(DesignNotReturning, "n")      /* the motion must return to the start: … (%1) */            \
+    X(DesignVelocityJump, "nn")     /* the velocity jumps from %1 to %2 per degree */              \
+    X(DesignAccelerationJump, "nn") /* the acceleration jumps from %1 to %2 per …² */           \
+    X(DesignVelocityAndAccelerationJump, "nnnn") /* the two above joined by "; " */                \
+    X(Missing, "")                               /* missing */                                     \
+    X(UnknownKey, "")                            /* unknown key */                                 \
+    X(WrongType, "ss")                           /* must be %1 (got %2): a JSON type */            \
+    X(PointShape, "i")           /* must be an array [x, y] of two numbers (got %1 elements) */    \
+    X(NotOneOf, "ss")            /* must be "a" or "b" (got "%2"): %1 the choices */               \
+    X(UnknownSegmentType, "s")   /* unknown segment type "%1" (expected …) */                    \
+    X(UnknownLaw, "ss")          /* unknown law "%1" (expected one of %2) */                       \
+    X(SpeedNotExactlyOne, "i")   /* must give exactly one of omega_rad_s, rpm, period_s */         \
+    X(NotWholeSampleCount, "n")  /* must be a whole number between 16 and 10000000 */              \
+    X(NewerFormatVersion, "s")   /* this file has format version %1; … */                        \
+    X(NotFormatVersion1, "s")    /* must be 1 (got %1) */                                          \
+    X(BezierPointCount, "")      /* must be an array of four points [x, y] */                      \
+    X(JsonDuplicatedKey, "")     /* duplicated key */                                              \
+    X(JsonNumberTooLarge, "iis") /* line %1, column %2: number %3 is too large … */              \
+    X(JsonSyntax, "iis")         /* line %1, column %2: the parser's English reason */             \
+    X(JsonTooDeep, "i")          /* nesting deeper than %1 levels */                               \
+    X(JsonNulByte, "iii")        /* line %1, column %2: a NUL byte (at byte offset %3) */          \
+    X(JsonInvalid, "")           /* not valid JSON */                                              \
+    X(RowValueCount, "issi")     /* line %1: expected %2 or %3 (got %4 values) */                  \
+    X(RowValueNotFinite, "iss")  /* line %1: %2 must be a finite number (got "%3") */
+
+/// @brief What a diagnostic says, independent of the language it is shown in.
+enum class DiagnosticCode : std::uint16_t {
+#define CAM_DIAGNOSTIC_ENUM(name, signature) name,
+    CAM_DIAGNOSTIC_CODES(CAM_DIAGNOSTIC_ENUM)
+#undef CAM_DIAGNOSTIC_ENUM
+};
+
+/// @brief How many codes there are (DiagnosticCode values are 0 .. kDiagnosticCodeCount - 1).
+inline constexpr std::size_t kDiagnosticCodeCount = 0
+#define CAM_DIAGNOSTIC_COUNT(name, signature) +1
+    CAM_DIAGNOSTIC_CODES(CAM_DIAGNOSTIC_COUNT)
+#undef CAM_DIAGNOSTIC_COUNT
+    ;
+
+/// @brief "RayMissesArc": the code's stable name.
+[[nodiscard]] std::string_view diagnosticCodeName(DiagnosticCode code);
+/// @brief "nnnn": one letter per argument (see CAM_DIAGNOSTIC_CODES).
+[[nodiscard]] std::string_view diagnosticCodeSignature(DiagnosticCode code);
+
+/// @brief One argument of a message: a number or a name.
+using DiagnosticArg = std::variant<double, std::string>;
+
 /// @brief One problem (or note) and where it is, e.g. {"contour[3].radius", "must be > 0 (got
 /// -2)"}. Problems in the contour also carry their place as data.
 struct Diagnostic {
@@ -65,6 +165,18 @@ struct Diagnostic {
     /// The segment fields it concerns (empty when it is not about a segment): one for a field,
     /// two (phi_end of the left, phi_start of the right) for a joint.
     std::vector<SegmentPlace> places;
+    /// What it says, for a window that words it in its own language (the English `message` is
+    /// what the CLI prints and stays as it is); Unspecified where the core has no code for it.
+    DiagnosticCode code = DiagnosticCode::Unspecified;
+    /// The code's arguments, as its signature lists them.
+    std::vector<DiagnosticArg> args;
+
+    /// @brief This diagnostic with its code and arguments (`args` must match the signature).
+    [[nodiscard]] Diagnostic coded(DiagnosticCode code_, std::vector<DiagnosticArg> args_) && {
+        code = code_;
+        args = std::move(args_);
+        return std::move(*this);
+    }
 
     /// @brief A problem of one segment field; the location text follows from the place.
     [[nodiscard]] static Diagnostic at(const SegmentPlace& place, std::string message,

@@ -15,17 +15,22 @@ std::string segmentPlace(std::size_t k) { return "design.segments[" + std::to_st
 
 Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
     Diagnostics errors;
-    const auto error = [&](std::string location, std::string message) {
-        errors.emplace_back(std::move(location), std::move(message));
+    const auto error = [&](std::string location, std::string message, DiagnosticCode code,
+                           std::vector<DiagnosticArg> args) {
+        errors.push_back(
+            Diagnostic(std::move(location), std::move(message)).coded(code, std::move(args)));
     };
     const auto positive = [&](const char* location, double value) {
         if (!std::isfinite(value) || !(value > 0.0)) {
-            error(location, "must be > 0 (got " + formatNumber(value) + ")");
+            error(location, "must be > 0 (got " + formatNumber(value) + ")",
+                  DiagnosticCode::NotPositive, {value});
         }
     };
     positive("design.base_radius", spec.baseRadius);
     positive("design.tolerance", spec.tolerance);
-    if (spec.segments.empty()) error("design.segments", "must have at least one segment");
+    if (spec.segments.empty()) {
+        error("design.segments", "must have at least one segment", DiagnosticCode::NoSegments, {});
+    }
     double startDeg = 0.0, startLift = 0.0;
     MotionDesign design(spec);
     for (std::size_t k = 0; k < spec.segments.size(); ++k) {
@@ -36,28 +41,34 @@ Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
              {std::pair{".to_deg", s.toDeg}, std::pair{".lift", s.lift}, std::pair{".v0", s.v0},
               std::pair{".a0", s.a0}, std::pair{".v1", s.v1}, std::pair{".a1", s.a1}}) {
             if (!std::isfinite(v)) {
-                error(at + key, "must be a finite number (got " + formatNumber(v) + ")");
+                error(at + key, "must be a finite number (got " + formatNumber(v) + ")",
+                      DiagnosticCode::NotFinite, {v});
                 finite = false;
             }
         }
         if (!finite) continue;
         if (!(s.toDeg > startDeg)) {
-            error(at + ".to_deg", "must be after " + formatNumber(startDeg) +
-                                      "°, where this segment starts (got " + formatNumber(s.toDeg) +
-                                      "°)");
+            error(at + ".to_deg",
+                  "must be after " + formatNumber(startDeg) + "°, where this segment starts (got " +
+                      formatNumber(s.toDeg) + "°)",
+                  DiagnosticCode::DesignEndNotAfterStart, {startDeg, s.toDeg});
         } else if (s.toDeg > 360.0) {
-            error(at + ".to_deg", "must be at most 360° (got " + formatNumber(s.toDeg) + "°)");
+            error(at + ".to_deg", "must be at most 360° (got " + formatNumber(s.toDeg) + "°)",
+                  DiagnosticCode::DesignEndBeyondTurn, {s.toDeg});
         }
         if (s.law == MotionLawType::Dwell && s.lift != startLift) {
-            error(at + ".lift", "a dwell keeps the lift it starts with (" +
-                                    formatNumber(startLift) + "), got " + formatNumber(s.lift));
+            error(at + ".lift",
+                  "a dwell keeps the lift it starts with (" + formatNumber(startLift) + "), got " +
+                      formatNumber(s.lift),
+                  DiagnosticCode::DwellLiftChanges, {startLift, s.lift});
         } else if (s.law != MotionLawType::Dwell && s.law != MotionLawType::Poly5 &&
                    s.lift == startLift) {
-            error(at + ".lift", "must differ from the lift it starts with (" +
-                                    formatNumber(startLift) + ") for " +
-                                    std::string(lawName(s.law)) +
-                                    "; a stretch without motion "
-                                    "is a dwell");
+            error(at + ".lift",
+                  "must differ from the lift it starts with (" + formatNumber(startLift) +
+                      ") for " + std::string(lawName(s.law)) +
+                      "; a stretch without motion "
+                      "is a dwell",
+                  DiagnosticCode::LiftUnchanged, {startLift, std::string(lawName(s.law))});
         }
         design.m_startRad.push_back(degToRad(startDeg));
         design.m_endRad.push_back(degToRad(s.toDeg));
@@ -68,14 +79,17 @@ Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
     if (!spec.segments.empty()) {
         const std::string last = segmentPlace(spec.segments.size() - 1);
         if (std::isfinite(spec.segments.back().toDeg) && spec.segments.back().toDeg != 360.0) {
-            error(last + ".to_deg", "the last segment must end at 360° (got " +
-                                        formatNumber(spec.segments.back().toDeg) + "°)");
+            error(last + ".to_deg",
+                  "the last segment must end at 360° (got " +
+                      formatNumber(spec.segments.back().toDeg) + "°)",
+                  DiagnosticCode::DesignLastNot360, {spec.segments.back().toDeg});
         }
         if (std::isfinite(startLift) && startLift != 0.0) {
             error(last + ".lift",
                   "the motion must return to the start: the last lift must be "
                   "0 (got " +
-                      formatNumber(startLift) + ")");
+                      formatNumber(startLift) + ")",
+                  DiagnosticCode::DesignNotReturning, {startLift});
         }
     }
     if (!errors.empty()) return errors;
@@ -88,18 +102,27 @@ Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
         const double stroke = std::max({std::abs(left[0]), 1.0});
         const double perDeg = kPi / 180.0;
         std::string message;
+        std::vector<DiagnosticArg> args;
         if (std::abs(left[1] - right[1]) > 1e-9 * stroke) {
+            args = {left[1] * perDeg, right[1] * perDeg};
             message += "the velocity jumps from " + formatNumber(left[1] * perDeg) + " to " +
                        formatNumber(right[1] * perDeg) + " per degree";
         }
         if (std::abs(left[2] - right[2]) > 1e-9 * stroke) {
             if (!message.empty()) message += "; ";
+            args.insert(args.end(), {left[2] * perDeg * perDeg, right[2] * perDeg * perDeg});
             message += "the acceleration jumps from " + formatNumber(left[2] * perDeg * perDeg) +
                        " to " + formatNumber(right[2] * perDeg * perDeg) + " per degree²";
         }
         if (!message.empty()) {
-            design.m_jumps.emplace_back(segmentPlace(k) + "/" + segmentPlace(next), message,
-                                        Severity::Info);
+            const bool velocity = std::abs(left[1] - right[1]) > 1e-9 * stroke;
+            const DiagnosticCode code = args.size() == 4
+                                            ? DiagnosticCode::DesignVelocityAndAccelerationJump
+                                        : velocity ? DiagnosticCode::DesignVelocityJump
+                                                   : DiagnosticCode::DesignAccelerationJump;
+            design.m_jumps.push_back(
+                Diagnostic(segmentPlace(k) + "/" + segmentPlace(next), message, Severity::Info)
+                    .coded(code, std::move(args)));
         }
     }
     return design;

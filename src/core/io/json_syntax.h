@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "common/diagnostic.h"
 
@@ -25,5 +26,8 @@ inline constexpr int kMaxJsonDepth = 64;
 
 /// @brief "line 3, column 14" for a byte offset (0-based) into `text`.
 [[nodiscard]] std::string lineColumnOf(std::string_view text, std::size_t offset);
+/// @brief The line and column (both from 1) of byte `offset`, as numbers for a message's
+/// arguments.
+[[nodiscard]] std::pair<double, double> linePosition(std::string_view text, std::size_t offset);
 
 }  // namespace cam

@@ -1,5 +1,6 @@
 #include "io/number_rows.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <optional>
@@ -75,16 +76,30 @@ Result<std::vector<std::vector<double>>> parseNumberRows(std::string_view text,
         }
         const std::string at = "line " + std::to_string(lineNumber);
         if (cells.size() < shape.required || cells.size() > shape.names.size()) {
-            errors.push_back({at, "expected " + expected(shape) + " (got " +
-                                      std::to_string(cells.size()) + " values)"});
+            // The shortest row and the longest, for a window that words "or" its own way.
+            std::string shortest, longest;
+            for (std::size_t i = 0; i < shape.names.size(); ++i) {
+                if (i < std::max<std::size_t>(shape.required, 1))
+                    shortest += (i ? "," : "") + shape.names[i];
+                longest += (i ? "," : "") + shape.names[i];
+            }
+            errors.push_back(Diagnostic{at, "expected " + expected(shape) + " (got " +
+                                                std::to_string(cells.size()) + " values)"}
+                                 .coded(DiagnosticCode::RowValueCount,
+                                        {static_cast<double>(lineNumber), shortest, longest,
+                                         static_cast<double>(cells.size())}));
             continue;
         }
         std::vector<double> row;
         for (std::size_t c = 0; c < cells.size(); ++c) {
             const auto v = number(cells[c]);
             if (!v || !std::isfinite(*v)) {
-                errors.push_back({at, shape.names[c] + " must be a finite number (got \"" +
-                                          std::string(trim(cells[c])) + "\")"});
+                errors.push_back(Diagnostic{at, shape.names[c] +
+                                                    " must be a finite number (got \"" +
+                                                    std::string(trim(cells[c])) + "\")"}
+                                     .coded(DiagnosticCode::RowValueNotFinite,
+                                            {static_cast<double>(lineNumber), shape.names[c],
+                                             std::string(trim(cells[c]))}));
                 break;
             }
             row.push_back(*v);

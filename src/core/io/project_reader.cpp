@@ -24,14 +24,42 @@ class Reader {
 public:
     Diagnostics errors;
 
-    void error(const std::string& location, const std::string& message) {
-        errors.push_back({location, message, Severity::Error});
+    void error(const std::string& location, const std::string& message,
+               DiagnosticCode code = DiagnosticCode::Unspecified,
+               std::vector<DiagnosticArg> args = {}) {
+        errors.push_back(
+            Diagnostic{location, message, Severity::Error}.coded(code, std::move(args)));
+    }
+
+    /// "must be <what> (got <a JSON type>)".
+    void wrongType(const std::string& location, const std::string& what, const std::string& got) {
+        error(location, "must be " + what + " (got " + got + ")", DiagnosticCode::WrongType,
+              {what, got});
+    }
+
+    /// "must be "a", "b" or "c" (got "d")"; the arguments list the choices without the "or".
+    void notOneOf(const std::string& location, std::initializer_list<const char*> choices,
+                  const std::string& got) {
+        std::string english, list;
+        std::size_t i = 0;
+        for (const char* choice : choices) {
+            const std::string quoted = std::string("\"") + choice + '"';
+            if (i > 0) {
+                english += i + 1 == choices.size() ? " or " : ", ";
+                list += ", ";
+            }
+            english += quoted;
+            list += quoted;
+            ++i;
+        }
+        error(location, "must be " + english + " (got \"" + got + "\")", DiagnosticCode::NotOneOf,
+              {list, got});
     }
 
     const Json* field(const Json& obj, const std::string& at, const char* key, bool required) {
         const auto it = obj.find(key);
         if (it == obj.end()) {
-            if (required) error(join(at, key), "missing");
+            if (required) error(join(at, key), "missing", DiagnosticCode::Missing);
             return nullptr;
         }
         return &*it;
@@ -43,7 +71,7 @@ public:
 
     std::optional<double> number(const Json& j, const std::string& at) {
         if (!j.is_number()) {
-            error(at, std::string("must be a number (got ") + typeName(j) + ")");
+            wrongType(at, "a number", typeName(j));
             return std::nullopt;
         }
         return j.get<double>();
@@ -60,7 +88,7 @@ public:
         const Json* j = field(obj, at, key, required);
         if (!j) return std::nullopt;
         if (!j->is_boolean()) {
-            error(join(at, key), std::string("must be true or false (got ") + typeName(*j) + ")");
+            wrongType(join(at, key), "true or false", typeName(*j));
             return std::nullopt;
         }
         return j->get<bool>();
@@ -71,7 +99,7 @@ public:
         const Json* j = field(obj, at, key, required);
         if (!j) return std::nullopt;
         if (!j->is_string()) {
-            error(join(at, key), std::string("must be a string (got ") + typeName(*j) + ")");
+            wrongType(join(at, key), "a string", typeName(*j));
             return std::nullopt;
         }
         return j->get<std::string>();
@@ -86,10 +114,15 @@ public:
 
     /// A value that must be [x, y].
     std::optional<Eigen::Vector2d> pointValue(const Json& j, const std::string& loc) {
-        if (!j.is_array() || j.size() != 2) {
-            error(loc, std::string("must be an array [x, y] of two numbers (got ") +
-                           (j.is_array() ? std::to_string(j.size()) + " elements" : typeName(j)) +
-                           ")");
+        if (!j.is_array()) {
+            wrongType(loc, "an array [x, y] of two numbers", typeName(j));
+            return std::nullopt;
+        }
+        if (j.size() != 2) {
+            error(loc,
+                  "must be an array [x, y] of two numbers (got " + std::to_string(j.size()) +
+                      " elements)",
+                  DiagnosticCode::PointShape, {static_cast<double>(j.size())});
             return std::nullopt;
         }
         const auto x = number(j[0], loc + "[0]");
@@ -104,7 +137,7 @@ public:
         if (!j) return std::nullopt;
         const std::string loc = join(at, key);
         if (!j->is_array()) {
-            error(loc, std::string("must be an array of numbers (got ") + typeName(*j) + ")");
+            wrongType(loc, "an array of numbers", typeName(*j));
             return std::nullopt;
         }
         std::vector<double> out;
@@ -119,7 +152,7 @@ public:
 
     bool object(const Json& j, const std::string& at) {
         if (!j.is_object()) {
-            error(at, std::string("must be an object (got ") + typeName(j) + ")");
+            wrongType(at, "an object", typeName(j));
             return false;
         }
         return true;
@@ -130,7 +163,7 @@ public:
         for (const auto& [key, value] : obj.items()) {
             bool known = false;
             for (const char* k : keys) known = known || key == k;
-            if (!known) error(join(at, key.c_str()), "unknown key");
+            if (!known) error(join(at, key.c_str()), "unknown key", DiagnosticCode::UnknownKey);
         }
     }
 };
@@ -166,7 +199,7 @@ void readSegment(Reader& rd, const Json& j, const std::string& at, const UnitsSp
             } else if (*b == "inner") {
                 arc.branch = Branch::Inner;
             } else {
-                rd.error(at + ".branch", "must be \"outer\" or \"inner\" (got \"" + *b + "\")");
+                rd.notOneOf(at + ".branch", {"outer", "inner"}, *b);
             }
         }
         s.shape = arc;
@@ -186,7 +219,8 @@ void readSegment(Reader& rd, const Json& j, const std::string& at, const UnitsSp
         bool complete = false;
         if (const Json* pts = rd.field(j, at, "points", true)) {
             if (!pts->is_array() || pts->size() != 4) {
-                rd.error(at + ".points", "must be an array of four points [x, y]");
+                rd.error(at + ".points", "must be an array of four points [x, y]",
+                         DiagnosticCode::BezierPointCount);
             } else {
                 complete = true;
                 for (std::size_t i = 0; i < 4; ++i) {
@@ -212,8 +246,10 @@ void readSegment(Reader& rd, const Json& j, const std::string& at, const UnitsSp
         s.shape = curve;
         windowOrDefault(complete);
     } else {
-        rd.error(at + ".type", "unknown segment type \"" + *type +
-                                   "\" (expected \"arc\", \"line\", \"bezier\" or \"hermite\")");
+        rd.error(at + ".type",
+                 "unknown segment type \"" + *type +
+                     "\" (expected \"arc\", \"line\", \"bezier\" or \"hermite\")",
+                 DiagnosticCode::UnknownSegmentType, {*type});
     }
 }
 
@@ -230,8 +266,10 @@ void readMotion(Reader& rd, const Json& root, Project& p) {
         if (const auto v = rd.number(*m, "motion", key, true)) p.motion = {unit, *v};
     }
     if (given != 1) {
-        rd.error("motion", "must give exactly one of omega_rad_s, rpm, period_s (got " +
-                               std::to_string(given) + ")");
+        rd.error("motion",
+                 "must give exactly one of omega_rad_s, rpm, period_s (got " +
+                     std::to_string(given) + ")",
+                 DiagnosticCode::SpeedNotExactlyOne, {static_cast<double>(given)});
     }
 }
 
@@ -250,8 +288,7 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
         } else if (*type == "flat") {
             spec.type = FollowerType::Flat;
         } else {
-            rd.error("follower.type",
-                     "must be \"knife\", \"roller\" or \"flat\" (got \"" + *type + "\")");
+            rd.notOneOf("follower.type", {"knife", "roller", "flat"}, *type);
         }
     }
     if (const auto motion = rd.string(*f, "follower", "motion", false)) {
@@ -260,8 +297,7 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
         } else if (*motion == "oscillating") {
             spec.motion = FollowerMotion::Oscillating;
         } else {
-            rd.error("follower.motion",
-                     "must be \"translating\" or \"oscillating\" (got \"" + *motion + "\")");
+            rd.notOneOf("follower.motion", {"translating", "oscillating"}, *motion);
         }
     }
     const double mm = units.lengthFactor();
@@ -277,7 +313,7 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
         } else if (*arm == "cw") {
             spec.arm = ArmSide::Cw;
         } else {
-            rd.error("follower.arm", "must be \"cw\" or \"ccw\" (got \"" + *arm + "\")");
+            rd.notOneOf("follower.arm", {"cw", "ccw"}, *arm);
         }
     }
     if (const auto v = rd.number(*f, "follower", "max_pressure_angle_deg", false)) {
@@ -294,7 +330,8 @@ void readSampling(Reader& rd, const Json& root, Project& p) {
     if (!n) return;
     if (!(std::floor(*n) == *n) || std::abs(*n) > 9e15) {
         rd.error("sampling.samples_per_turn",
-                 "must be a whole number between 16 and 10000000 (got " + formatNumber(*n) + ")");
+                 "must be a whole number between 16 and 10000000 (got " + formatNumber(*n) + ")",
+                 DiagnosticCode::NotWholeSampleCount, {*n});
         return;
     }
     p.samplesPerTurn = static_cast<std::int64_t>(*n);
@@ -347,8 +384,7 @@ void readDesign(Reader& rd, const Json& root, const UnitsSpec& units, Project& p
     }
     if (const Json* list = rd.field(*d, "design", "segments", true)) {
         if (!list->is_array()) {
-            rd.error("design.segments",
-                     std::string("must be an array of segments (got ") + typeName(*list) + ")");
+            rd.wrongType("design.segments", "an array of segments", typeName(*list));
         } else {
             for (std::size_t k = 0; k < list->size(); ++k) {
                 const Json& j = (*list)[k];
@@ -359,8 +395,10 @@ void readDesign(Reader& rd, const Json& root, const UnitsSpec& units, Project& p
                     if (const auto law = lawFromName(*name)) {
                         s.law = *law;
                     } else {
-                        rd.error(at + ".law", "unknown law \"" + *name + "\" (expected one of " +
-                                                  knownLawNames() + ")");
+                        rd.error(at + ".law",
+                                 "unknown law \"" + *name + "\" (expected one of " +
+                                     knownLawNames() + ")",
+                                 DiagnosticCode::UnknownLaw, {*name, knownLawNames()});
                     }
                 }
                 if (s.law == MotionLawType::Poly5) {
@@ -390,23 +428,25 @@ void readDesign(Reader& rd, const Json& root, const UnitsSpec& units, Project& p
 Result<Project> readProject(const Json& root) {
     Reader rd;
     if (!root.is_object()) {
-        rd.error("(top level)", std::string("must be an object (got ") + typeName(root) + ")");
+        rd.wrongType("(top level)", "an object", typeName(root));
         return rd.errors;
     }
     const auto format = rd.string(root, "", "format", true);
     if (format && *format != "camwright") {
-        rd.error("format", "must be \"camwright\" (got \"" + *format + "\")");
+        rd.notOneOf("format", {"camwright"}, *format);
     }
     if (const Json* v = rd.field(root, "", "version", true)) {
         if (!v->is_number_integer()) {
-            rd.error("version", std::string("must be a whole number (got ") +
-                                    (v->is_number() ? v->dump() : typeName(*v)) + ")");
+            rd.wrongType("version", "a whole number", v->is_number() ? v->dump() : typeName(*v));
         } else if (v->get<std::int64_t>() > kProjectFormatVersion) {
-            rd.error("version", "this file has format version " + v->dump() +
-                                    "; this Camwright reads version 1 only — open it with a "
-                                    "newer Camwright");
+            rd.error("version",
+                     "this file has format version " + v->dump() +
+                         "; this Camwright reads version 1 only — open it with a "
+                         "newer Camwright",
+                     DiagnosticCode::NewerFormatVersion, {v->dump()});
         } else if (v->get<std::int64_t>() < 1) {
-            rd.error("version", "must be 1 (got " + v->dump() + ")");
+            rd.error("version", "must be 1 (got " + v->dump() + ")",
+                     DiagnosticCode::NotFormatVersion1, {v->dump()});
         }
     }
     if (hasErrors(rd.errors)) return rd.errors;  // not a Camwright v1 file: say only that
@@ -421,14 +461,14 @@ Result<Project> readProject(const Json& root) {
             if (*length == "m") {
                 units.length = LengthUnit::M;
             } else if (*length != "mm") {
-                rd.error("units.length", "must be \"mm\" or \"m\" (got \"" + *length + "\")");
+                rd.notOneOf("units.length", {"mm", "m"}, *length);
             }
         }
         if (const auto angle = rd.string(*u, "units", "angle", false)) {
             if (*angle == "rad") {
                 units.angle = AngleUnit::Rad;
             } else if (*angle != "deg") {
-                rd.error("units.angle", "must be \"deg\" or \"rad\" (got \"" + *angle + "\")");
+                rd.notOneOf("units.angle", {"deg", "rad"}, *angle);
             }
         }
     }
@@ -437,8 +477,7 @@ Result<Project> readProject(const Json& root) {
 
     if (const Json* c = rd.field(root, "", "contour", true)) {
         if (!c->is_array()) {
-            rd.error("contour",
-                     std::string("must be an array of segments (got ") + typeName(*c) + ")");
+            rd.wrongType("contour", "an array of segments", typeName(*c));
         } else {
             std::optional<double> previousEnd;
             for (std::size_t k = 0; k < c->size(); ++k) {

@@ -46,18 +46,24 @@ public:
     }
 
 private:
-    void error(const Where& where, std::string message) {
-        m_out.push_back({where.location, std::move(message), Severity::Error, where.places});
+    void error(const Where& where, std::string message,
+               DiagnosticCode code = DiagnosticCode::Unspecified,
+               std::vector<DiagnosticArg> args = {}) {
+        m_out.push_back(
+            Diagnostic{where.location, std::move(message), Severity::Error, where.places}.coded(
+                code, std::move(args)));
     }
 
     /// Finite with |value| <= 1e6 mm; returns false (and reports) otherwise.
     bool checkLength(const Where& where, double value) {
         if (!std::isfinite(value)) {
-            error(where, "must be a finite number (got " + formatNumber(value) + ")");
+            error(where, "must be a finite number (got " + formatNumber(value) + ")",
+                  DiagnosticCode::NotFinite, {value});
             return false;
         }
         if (std::abs(value) > kMaxLengthMm) {
-            error(where, "magnitude must be at most 1e6 mm (got " + formatNumber(value) + ")");
+            error(where, "magnitude must be at most 1e6 mm (got " + formatNumber(value) + ")",
+                  DiagnosticCode::LengthTooLarge, {value});
             return false;
         }
         return true;
@@ -72,12 +78,15 @@ private:
     /// Finite and within [lo, hi]; returns false (and reports) otherwise.
     bool checkRange(const Where& where, double value, double lo, double hi, const char* unit) {
         if (!std::isfinite(value)) {
-            error(where, "must be a finite number (got " + formatNumber(value) + ")");
+            error(where, "must be a finite number (got " + formatNumber(value) + ")",
+                  DiagnosticCode::NotFinite, {value});
             return false;
         }
         if (!(value >= lo && value <= hi)) {
-            error(where, "must be between " + formatNumber(lo) + " and " + formatNumber(hi) + unit +
-                             " (got " + formatNumber(value) + ")");
+            error(where,
+                  "must be between " + formatNumber(lo) + " and " + formatNumber(hi) + unit +
+                      " (got " + formatNumber(value) + ")",
+                  DiagnosticCode::OutOfRange, {lo, hi, std::string(unit), value});
             return false;
         }
         return true;
@@ -87,10 +96,12 @@ private:
     bool checkPositiveLength(const Where& where, double value) {
         if (!checkPositive(where, value, true)) return false;
         if (value < kMinLengthMm) {
-            error(where, "must be at least " + formatNumber(kMinLengthMm) + " mm (got " +
-                             formatNumber(value) +
-                             "): a smaller circle or step is below the "
-                             "precision of the joints");
+            error(where,
+                  "must be at least " + formatNumber(kMinLengthMm) + " mm (got " +
+                      formatNumber(value) +
+                      "): a smaller circle or step is below the "
+                      "precision of the joints",
+                  DiagnosticCode::BelowMinimumLength, {kMinLengthMm, value});
             return false;
         }
         return true;
@@ -99,11 +110,13 @@ private:
     bool checkPositive(const Where& where, double value, bool isLength) {
         if (isLength && !checkLength(where, value)) return false;
         if (!std::isfinite(value)) {
-            error(where, "must be a finite number (got " + formatNumber(value) + ")");
+            error(where, "must be a finite number (got " + formatNumber(value) + ")",
+                  DiagnosticCode::NotFinite, {value});
             return false;
         }
         if (!(value > 0.0)) {
-            error(where, "must be > 0 (got " + formatNumber(value) + ")");
+            error(where, "must be > 0 (got " + formatNumber(value) + ")",
+                  DiagnosticCode::NotPositive, {value});
             return false;
         }
         return true;
@@ -115,11 +128,14 @@ private:
                           : m.unit == SpeedUnit::Rpm     ? "motion.rpm"
                                                          : "motion.period_s";
         if (!std::isfinite(m.value)) {
-            error(key, "must be a finite number (got " + formatNumber(m.value) + ")");
+            error(key, "must be a finite number (got " + formatNumber(m.value) + ")",
+                  DiagnosticCode::NotFinite, {m.value});
         } else if (m.unit == SpeedUnit::PeriodS && !(m.value > 0.0)) {
-            error(key, "must be > 0 (got " + formatNumber(m.value) + ")");
+            error(key, "must be > 0 (got " + formatNumber(m.value) + ")",
+                  DiagnosticCode::NotPositive, {m.value});
         } else if (m.value == 0.0) {
-            error(key, "must not be 0 (its sign gives the turning direction)");
+            error(key, "must not be 0 (its sign gives the turning direction)",
+                  DiagnosticCode::SpeedIsZero);
         } else {
             const ValueRange range = m.unit == SpeedUnit::OmegaRadS ? kOmegaRadSRange
                                      : m.unit == SpeedUnit::Rpm     ? kRpmRange
@@ -130,8 +146,10 @@ private:
                                : m.unit == SpeedUnit::Rpm     ? " rpm"
                                                               : " s";
             if (!(std::abs(m.value) >= lo && std::abs(m.value) <= hi)) {
-                error(key, std::string("magnitude must be between ") + formatNumber(lo) + " and " +
-                               formatNumber(hi) + unit + " (got " + formatNumber(m.value) + ")");
+                error(key,
+                      std::string("magnitude must be between ") + formatNumber(lo) + " and " +
+                          formatNumber(hi) + unit + " (got " + formatNumber(m.value) + ")",
+                      DiagnosticCode::SpeedOutOfRange, {lo, hi, std::string(unit), m.value});
             }
         }
     }
@@ -140,7 +158,8 @@ private:
         const auto& segments = m_project.contour;
         if (segments.empty()) {
             // A design whose contour was never synthesised is valid (project-format.md).
-            if (!m_project.design) error("contour", "must have at least one segment");
+            if (!m_project.design)
+                error("contour", "must have at least one segment", DiagnosticCode::NoSegments);
             return;
         }
         bool allShapesValid = true;
@@ -164,14 +183,16 @@ private:
             if (!std::isfinite(value) || std::abs(value) > 1e6) {
                 error(SegmentPlace{k, part},
                       "must be a finite angle of magnitude at most 1e6° (got " +
-                          formatNumber(value) + ")");
+                          formatNumber(value) + ")",
+                      DiagnosticCode::AngleNotFinite, {value});
                 ok = false;
             }
         }
         if (ok && !(s.phiEndDeg > s.phiStartDeg)) {
-            error(SegmentPlace{k, SegmentPart::PhiEnd}, "must be greater than phi_start " +
-                                                            deg(s.phiStartDeg) + " (got " +
-                                                            deg(s.phiEndDeg) + ")");
+            error(SegmentPlace{k, SegmentPart::PhiEnd},
+                  "must be greater than phi_start " + deg(s.phiStartDeg) + " (got " +
+                      deg(s.phiEndDeg) + ")",
+                  DiagnosticCode::WindowNotIncreasing, {s.phiStartDeg, s.phiEndDeg});
             ok = false;
         }
         return ok;
@@ -199,22 +220,25 @@ private:
                       "at least " +
                       formatNumber(kMinRayAngleRad) +
                       " rad, or the follower would need an unbounded speed); the window must "
-                      "end before it");
+                      "end before it",
+                  DiagnosticCode::RayGrazes, {phiDeg, kMinRayAngleRad});
             return false;
         }
         return true;
     }
 
     /// The window of a line or spline must be the polar angles of its end points.
-    bool checkWindowFollowsEnds(std::size_t k, const char* whose) {
+    bool checkWindowFollowsEnds(std::size_t k, const char* whose, DiagnosticCode code) {
         const SegmentSpec& s = m_project.contour[k];
         const auto [start, end] = lineWindowDeg(s, s.phiStartDeg);
         if (std::abs(wrapDeg(s.phiStartDeg - start)) > kLineWindowToleranceDeg ||
             std::abs(wrapDeg(s.phiEndDeg - end)) > kLineWindowToleranceDeg ||
             std::abs((s.phiEndDeg - s.phiStartDeg) - (end - start)) > kLineWindowToleranceDeg) {
-            error(SegmentPlace{k}, "window " + deg(s.phiStartDeg) + " .. " + deg(s.phiEndDeg) +
-                                       " disagrees with the polar angles of " + whose + " (" +
-                                       deg(start) + " .. " + deg(end) + ")");
+            error(SegmentPlace{k},
+                  "window " + deg(s.phiStartDeg) + " .. " + deg(s.phiEndDeg) +
+                      " disagrees with the polar angles of " + whose + " (" + deg(start) + " .. " +
+                      deg(end) + ")",
+                  code, {s.phiStartDeg, s.phiEndDeg, start, end});
             return false;
         }
         return true;
@@ -236,24 +260,28 @@ private:
         if (!(from && to)) return false;
         if ((line.to - line.from).norm() <= kJointToleranceMm) {
             error(SegmentPlace{k, SegmentPart::To},
-                  "must differ from `from` (the line has no length)");
+                  "must differ from `from` (the line has no length)",
+                  DiagnosticCode::LineHasNoLength);
             return false;
         }
         if (line.distance() <= kJointToleranceMm) {
             error(SegmentPlace{k},
                   "the line passes through the rotation centre, so the follower ray meets "
-                  "it at no angle or at every point");
+                  "it at no angle or at every point",
+                  DiagnosticCode::LineThroughCentre);
             return false;
         }
         if (cross(line.from, line.to) <= 0.0) {
-            error(SegmentPlace{k}, "the line runs clockwise around the rotation centre (from " +
-                                       deg(radToDeg(std::atan2(line.from.y(), line.from.x()))) +
-                                       " to " +
-                                       deg(radToDeg(std::atan2(line.to.y(), line.to.x()))) +
-                                       "); swap `from` and `to`");
+            const double fromDeg = radToDeg(std::atan2(line.from.y(), line.from.x()));
+            const double toDeg = radToDeg(std::atan2(line.to.y(), line.to.x()));
+            error(SegmentPlace{k},
+                  "the line runs clockwise around the rotation centre (from " + deg(fromDeg) +
+                      " to " + deg(toDeg) + "); swap `from` and `to`",
+                  DiagnosticCode::LineClockwise, {fromDeg, toDeg});
             return false;
         }
-        return !windowValid || checkWindowFollowsEnds(k, "from/to");
+        return !windowValid ||
+               checkWindowFollowsEnds(k, "from/to", DiagnosticCode::WindowDisagreesWithLineEnds);
     }
 
     /// Bézier and Hermite: finite points, the window on the polar angles of the end points, and
@@ -277,16 +305,22 @@ private:
         if (!ok || !windowValid) return false;
         const auto [from, to] = endPointsOf(s);
         if (from.norm() <= kJointToleranceMm || to.norm() <= kJointToleranceMm) {
-            error(SegmentPlace{k}, "an end point lies on the rotation centre");
+            error(SegmentPlace{k}, "an end point lies on the rotation centre",
+                  DiagnosticCode::SplineEndOnCentre);
             return false;
         }
         const auto [start, end] = lineWindowDeg(s, s.phiStartDeg);
         if (!(end > start)) {
-            error(SegmentPlace{k}, "the curve runs clockwise around the rotation centre (from " +
-                                       deg(start) + " to " + deg(end) + "); reverse its points");
+            error(SegmentPlace{k},
+                  "the curve runs clockwise around the rotation centre (from " + deg(start) +
+                      " to " + deg(end) + "); reverse its points",
+                  DiagnosticCode::SplineClockwise, {start, end});
             return false;
         }
-        if (!checkWindowFollowsEnds(k, "its end points")) return false;
+        if (!checkWindowFollowsEnds(k, "its end points",
+                                    DiagnosticCode::WindowDisagreesWithSplineEnds)) {
+            return false;
+        }
         const CubicBezier curve = bezierOf(s);
         constexpr int kChecks = 256;
         for (int i = 1; i < kChecks; ++i) {
@@ -294,9 +328,10 @@ private:
             const double phi = degToRad(phiDeg);
             const std::size_t hits = curve.rayParameters(std::cos(phi), std::sin(phi)).size();
             if (hits != 1) {
-                error(SegmentPlace{k}, "the follower ray meets the curve " + std::to_string(hits) +
-                                           " times at " + deg(phiDeg) +
-                                           "; inside its window it must meet it exactly once");
+                error(SegmentPlace{k},
+                      "the follower ray meets the curve " + std::to_string(hits) + " times at " +
+                          deg(phiDeg) + "; inside its window it must meet it exactly once",
+                      DiagnosticCode::RayMeetsSplineTimes, {static_cast<double>(hits), phiDeg});
                 return false;
             }
         }
@@ -311,7 +346,8 @@ private:
         if (arc.branch == Branch::Inner && rel <= 1e-12) {
             error(SegmentPlace{k, SegmentPart::Branch},
                   "the rotation centre lies inside this circle, so the inner "
-                  "intersection is behind the follower (r <= 0); use \"outer\"");
+                  "intersection is behind the follower (r <= 0); use \"outer\"",
+                  DiagnosticCode::InnerBranchBehindCentre);
             return false;
         }
         if (rel < -1e-12) return true;  // centre inside the circle: the outer branch is total
@@ -325,7 +361,9 @@ private:
             error(SegmentPlace{k},
                   "the follower ray misses the circle inside the window " + deg(s.phiStartDeg) +
                       " .. " + deg(s.phiEndDeg) + "; it meets it only for phi in " +
-                      deg(centerDeg - alphaDeg) + " .. " + deg(centerDeg + alphaDeg));
+                      deg(centerDeg - alphaDeg) + " .. " + deg(centerDeg + alphaDeg),
+                  DiagnosticCode::RayMissesArc,
+                  {s.phiStartDeg, s.phiEndDeg, centerDeg - alphaDeg, centerDeg + alphaDeg});
             return false;
         }
         return true;
@@ -339,11 +377,14 @@ private:
             const double next = c[k + 1].phiStartDeg;
             const double diff = next - end;
             if (std::abs(diff) > kWindowToleranceDeg) {
-                m_out.push_back(Diagnostic::atJoint(k, k + 1,
-                                                    std::string(diff > 0 ? "gap" : "overlap") +
-                                                        " of " + deg(std::abs(diff)) +
-                                                        " between phi_end " + formatNumber(end) +
-                                                        " and phi_start " + formatNumber(next)));
+                m_out.push_back(
+                    Diagnostic::atJoint(k, k + 1,
+                                        std::string(diff > 0 ? "gap" : "overlap") + " of " +
+                                            deg(std::abs(diff)) + " between phi_end " +
+                                            formatNumber(end) + " and phi_start " +
+                                            formatNumber(next))
+                        .coded(diff > 0 ? DiagnosticCode::WindowGap : DiagnosticCode::WindowOverlap,
+                               {std::abs(diff), end, next}));
                 ok = false;
             }
         }
@@ -354,6 +395,8 @@ private:
                                         deg(c.back().phiEndDeg) +
                                         "); they must cover exactly one turn, 360°"};
             d.places = {{0, SegmentPart::PhiStart}, {c.size() - 1, SegmentPart::PhiEnd}};
+            d.code = DiagnosticCode::WindowsNotOneTurn;
+            d.args = {span, c.front().phiStartDeg, c.back().phiEndDeg};
             m_out.push_back(std::move(d));
             ok = false;
         }
@@ -372,7 +415,8 @@ private:
                 m_out.push_back(Diagnostic::atJoint(k, next,
                                                     "the segments do not meet at " + deg(angle) +
                                                         ": gap of " + formatNumber(gap) +
-                                                        " mm (at most 1e-06 mm allowed)"));
+                                                        " mm (at most 1e-06 mm allowed)")
+                                    .coded(DiagnosticCode::JointGap, {angle, gap}));
             }
         }
     }
@@ -391,7 +435,8 @@ private:
             if (f.type == FollowerType::Flat) {
                 error("follower.type",
                       "a flat face moves only translating (math.md §7); use a knife or a roller "
-                      "on an oscillating arm");
+                      "on an oscillating arm",
+                      DiagnosticCode::FlatFaceOscillating);
             }
             checkPoint("follower.pivot", f.pivot);
             checkPositiveLength("follower.arm_length", f.armLength);
@@ -409,10 +454,12 @@ private:
             const Eigen::Vector2d fromCentre = point - arc->center;
             const bool concave = fromCentre.x() * travel.y() - fromCentre.y() * travel.x() < 0.0;
             if (!concave) continue;
-            error("follower.radius", "must be smaller than the radius " +
-                                         formatNumber(arc->radius) + " mm of the concave arc " +
-                                         segmentLocation(k) + " (got " + formatNumber(f.radius) +
-                                         " mm): the roller cannot enter it");
+            error("follower.radius",
+                  "must be smaller than the radius " + formatNumber(arc->radius) +
+                      " mm of the concave arc " + segmentLocation(k) + " (got " +
+                      formatNumber(f.radius) + " mm): the roller cannot enter it",
+                  DiagnosticCode::RollerTooLargeForArc,
+                  {arc->radius, static_cast<double>(k), f.radius});
         }
     }
 
@@ -421,7 +468,8 @@ private:
         const auto n = *m_project.samplesPerTurn;
         if (n < kMinSamplesPerTurn || n > kMaxSamplesPerTurn) {
             error("sampling.samples_per_turn",
-                  "must be between 16 and 10000000 (got " + std::to_string(n) + ")");
+                  "must be between 16 and 10000000 (got " + std::to_string(n) + ")",
+                  DiagnosticCode::SamplesOutOfRange, {static_cast<double>(n)});
         }
     }
 
@@ -431,7 +479,8 @@ private:
         auto checkAxes = [&](const std::string& key, const std::vector<double>& values, double hi,
                              const char* unit) {
             if (values.size() < 2 || values.size() > 3) {
-                error(key, "must list 2 or 3 axes (got " + std::to_string(values.size()) + ")");
+                error(key, "must list 2 or 3 axes (got " + std::to_string(values.size()) + ")",
+                      DiagnosticCode::AxisCount, {static_cast<double>(values.size())});
             }
             for (std::size_t i = 0; i < values.size(); ++i) {
                 checkRange(key + "[" + std::to_string(i) + "]", values[i], kMinMachineLimit, hi,
@@ -480,12 +529,16 @@ std::optional<Diagnostic> jointIndexProblem(std::size_t segmentCount, std::size_
     if (segmentCount < 2) {
         return Diagnostic{"contour", "a " + operation +
                                          " needs a joint between two segments (the contour has " +
-                                         std::to_string(segmentCount) + ")"};
+                                         std::to_string(segmentCount) + ")"}
+            .coded(DiagnosticCode::JointNeedsTwoSegments,
+                   {operation, static_cast<double>(segmentCount)});
     }
     if (joint >= segmentCount) {
         return Diagnostic{"contour", "there is no joint " + std::to_string(joint) +
                                          ": joints are numbered 0 .. " +
-                                         std::to_string(segmentCount - 1)};
+                                         std::to_string(segmentCount - 1)}
+            .coded(DiagnosticCode::NoSuchJoint,
+                   {static_cast<double>(joint), static_cast<double>(segmentCount - 1)});
     }
     return std::nullopt;
 }

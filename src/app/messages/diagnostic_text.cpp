@@ -1,0 +1,514 @@
+#include "messages/diagnostic_text.h"
+
+#include <QLocale>
+#include <QRegularExpression>
+#include <cmath>
+
+#include "design/motion_law.h"
+#include "models/design_table_model.h"
+#include "models/segment_table_model.h"
+
+namespace cam {
+// A named namespace, not an anonymous one: the app is a unity build, and helpers named
+// columnName or term would meet their namesakes in the same translation unit.
+namespace diagnostic_wording {
+
+using Code = DiagnosticCode;
+
+/// A number in a message: at most kMessageDigits significant digits (as the core's English),
+/// the user's decimal separator, no group separators, never "-0".
+QString messageNumber(double value) {
+    if (value == 0.0) return QStringLiteral("0");
+    QLocale locale;
+    locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+    return locale.toString(value, 'g', kMessageDigits);
+}
+
+QString wholeNumber(double value) {
+    QLocale locale;
+    locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);
+    return locale.toString(static_cast<qlonglong>(std::llround(value)));
+}
+
+/// The header text without its unit: "Radius [mm]" → "Radius", for a column named inside a
+/// sentence whose numbers carry their units.
+QString columnName(int column) {
+    static const QRegularExpression unit(QStringLiteral(R"(\s*\[[^\]]*\]$)"));
+    return SegmentTableModel::columnTitle(column).remove(unit);
+}
+
+/// The arguments' signature letters and types agree with the code's.
+bool argumentsFit(const Diagnostic& d) {
+    if (static_cast<std::size_t>(d.code) >= kDiagnosticCodeCount) return false;
+    if (d.code == Code::Unspecified) return false;
+    const std::string_view signature = diagnosticCodeSignature(d.code);
+    if (signature.size() != d.args.size()) return false;
+    for (std::size_t i = 0; i < signature.size(); ++i) {
+        const bool isName = std::holds_alternative<std::string>(d.args[i]);
+        if (isName != (signature[i] == 's')) return false;
+    }
+    return true;
+}
+
+/// The messages whose place is a line of a text (file) and part of their arguments.
+bool placedByArguments(Code code) {
+    switch (code) {
+        case Code::JsonNumberTooLarge:
+        case Code::JsonSyntax:
+        case Code::JsonNulByte:
+        case Code::RowValueCount:
+        case Code::RowValueNotFinite:
+            return true;
+        default:
+            return false;
+    }
+}
+
+/// A name the core passes as an argument, in the window's words where it is one of the core's
+/// terms; anything else (a unit, text from a file) as it is.
+QString term(const std::string& name) {
+    if (name == "a number") return DiagnosticText::tr("a number");
+    if (name == "a string") return DiagnosticText::tr("a string");
+    if (name == "a boolean") return DiagnosticText::tr("a boolean");
+    if (name == "an array") return DiagnosticText::tr("an array");
+    if (name == "an object") return DiagnosticText::tr("an object");
+    if (name == "true or false") return DiagnosticText::tr("true or false");
+    if (name == "an array [x, y] of two numbers")
+        return DiagnosticText::tr("an array [x, y] of two numbers");
+    if (name == "an array of numbers") return DiagnosticText::tr("an array of numbers");
+    if (name == "an array of segments") return DiagnosticText::tr("an array of segments");
+    if (name == "a whole number") return DiagnosticText::tr("a whole number");
+    if (name == "fillet") return DiagnosticText::tr("a fillet");
+    if (name == "tangent line") return DiagnosticText::tr("a tangent line");
+    if (const auto law = lawFromName(name)) {
+        const QStringList names = DesignTableModel::lawNames();
+        const auto index = static_cast<qsizetype>(*law);
+        if (index < names.size()) return names[index];
+    }
+    return QString::fromStdString(name);
+}
+
+QString argument(const Diagnostic& d, std::size_t i) {
+    const char kind = diagnosticCodeSignature(d.code)[i];
+    if (kind == 's') return term(std::get<std::string>(d.args[i]));
+    const double value = std::get<double>(d.args[i]);
+    return kind == 'n' ? messageNumber(value) : wholeNumber(value);
+}
+
+QString pointPart(const SegmentPlace& p) {
+    QString name;
+    switch (p.part) {
+        case SegmentPart::Points:
+            name = p.point >= 0 ? DiagnosticText::tr("control point P%1").arg(p.point)
+                                : DiagnosticText::tr("control points");
+            break;
+        case SegmentPart::P0:
+            name = DiagnosticText::tr("start point");
+            break;
+        case SegmentPart::T0:
+            name = DiagnosticText::tr("start tangent");
+            break;
+        case SegmentPart::P3:
+            name = DiagnosticText::tr("end point");
+            break;
+        default:
+            name = DiagnosticText::tr("end tangent");
+            break;
+    }
+    if (p.axis == 0) return DiagnosticText::tr("%1, x").arg(name);
+    if (p.axis == 1) return DiagnosticText::tr("%1, y").arg(name);
+    return name;
+}
+
+/// The table column(s) or the control point a segment place names.
+QString partName(const SegmentPlace& p) {
+    auto pair = [&](int x, int y) {
+        if (p.axis == 0) return SegmentTableModel::columnTitle(x);
+        if (p.axis == 1) return SegmentTableModel::columnTitle(y);
+        return SegmentTableModel::columnTitle(x) + QStringLiteral(" / ") +
+               SegmentTableModel::columnTitle(y);
+    };
+    switch (p.part) {
+        case SegmentPart::Whole:
+            return {};
+        case SegmentPart::Type:
+            return SegmentTableModel::columnTitle(SegmentTableModel::Type);
+        case SegmentPart::Center:
+            return pair(SegmentTableModel::CenterX, SegmentTableModel::CenterY);
+        case SegmentPart::Radius:
+            return SegmentTableModel::columnTitle(SegmentTableModel::Radius);
+        case SegmentPart::Branch:
+            return SegmentTableModel::columnTitle(SegmentTableModel::Branch);
+        case SegmentPart::From:
+            return pair(SegmentTableModel::FromX, SegmentTableModel::FromY);
+        case SegmentPart::To:
+            return pair(SegmentTableModel::ToX, SegmentTableModel::ToY);
+        case SegmentPart::PhiStart:
+            return SegmentTableModel::columnTitle(SegmentTableModel::PhiStart);
+        case SegmentPart::PhiEnd:
+            return SegmentTableModel::columnTitle(SegmentTableModel::PhiEnd);
+        case SegmentPart::Points:
+        case SegmentPart::P0:
+        case SegmentPart::T0:
+        case SegmentPart::P3:
+        case SegmentPart::T1:
+            return pointPart(p);
+    }
+    return {};
+}
+
+/// "X", "Y", "Z" for an axis index of the machining lists.
+QString axisName(int i) { return i >= 0 && i < 3 ? QString(QChar('X' + i)) : QString::number(i); }
+
+/// A project field by its key, as the panels name it; the key itself where it is none of them.
+QString fieldName(const std::string& location) {
+    const QString key = QString::fromStdString(location);
+    static const QRegularExpression indexed(QStringLiteral(R"(^([a-z_.]+)\[(\d+)\]$)"));
+    static const QRegularExpression designSegment(
+        QStringLiteral(R"(^design\.segments\[(\d+)\](?:\.(\w+))?$)"));
+    if (const auto m = designSegment.match(key); m.hasMatch()) {
+        const QString row = m.captured(1);
+        const QString field = m.captured(2);
+        QString name;
+        if (field == QLatin1String("law")) name = DiagnosticText::tr("law");
+        if (field == QLatin1String("to_deg")) name = DiagnosticText::tr("end angle");
+        if (field == QLatin1String("lift")) name = DiagnosticText::tr("lift");
+        if (field == QLatin1String("v0") || field == QLatin1String("a0") ||
+            field == QLatin1String("v1") || field == QLatin1String("a1")) {
+            name = field;
+        }
+        if (field.isEmpty()) return DiagnosticText::tr("Motion design, segment %1").arg(row);
+        if (name.isEmpty()) return key;
+        return DiagnosticText::tr("Motion design, segment %1, %2").arg(row, name);
+    }
+    static const QRegularExpression designJoint(
+        QStringLiteral(R"(^design\.segments\[(\d+)\]/design\.segments\[(\d+)\]$)"));
+    if (const auto m = designJoint.match(key); m.hasMatch()) {
+        return DiagnosticText::tr("Motion design, joint between segments %1 and %2")
+            .arg(m.captured(1), m.captured(2));
+    }
+    if (const auto m = indexed.match(key); m.hasMatch()) {
+        const int i = m.captured(2).toInt();
+        const QString base = m.captured(1);
+        if (base == QLatin1String("machining.axis_accel"))
+            return DiagnosticText::tr("Machining, acceleration of axis %1").arg(axisName(i));
+        if (base == QLatin1String("machining.axis_vmax"))
+            return DiagnosticText::tr("Machining, speed limit of axis %1").arg(axisName(i));
+        if (base == QLatin1String("follower.pivot"))
+            return i == 0 ? DiagnosticText::tr("Follower, pivot x")
+                          : DiagnosticText::tr("Follower, pivot y");
+        return key;
+    }
+    if (key == QLatin1String("contour")) return DiagnosticText::tr("Contour");
+    if (key == QLatin1String("motion.omega_rad_s")) return DiagnosticText::tr("Motion, ω [rad/s]");
+    if (key == QLatin1String("motion.rpm")) return DiagnosticText::tr("Motion, speed [rpm]");
+    if (key == QLatin1String("motion.period_s")) return DiagnosticText::tr("Motion, period [s]");
+    if (key == QLatin1String("follower.offset")) return DiagnosticText::tr("Follower, offset");
+    if (key == QLatin1String("follower.radius"))
+        return DiagnosticText::tr("Follower, roller radius");
+    if (key == QLatin1String("follower.max_pressure_angle_deg"))
+        return DiagnosticText::tr("Follower, largest pressure angle");
+    if (key == QLatin1String("follower.type")) return DiagnosticText::tr("Follower, type");
+    if (key == QLatin1String("follower.pivot")) return DiagnosticText::tr("Follower, pivot");
+    if (key == QLatin1String("follower.arm_length"))
+        return DiagnosticText::tr("Follower, arm length");
+    if (key == QLatin1String("sampling.samples_per_turn"))
+        return DiagnosticText::tr("Samples per turn");
+    if (key == QLatin1String("machining.axis_accel"))
+        return DiagnosticText::tr("Machining, axis accelerations");
+    if (key == QLatin1String("machining.axis_vmax"))
+        return DiagnosticText::tr("Machining, axis speed limits");
+    if (key == QLatin1String("machining.feed_max"))
+        return DiagnosticText::tr("Machining, feed ceiling");
+    if (key == QLatin1String("machining.tool_radius"))
+        return DiagnosticText::tr("Machining, tool radius");
+    if (key == QLatin1String("machining.step")) return DiagnosticText::tr("Machining, step");
+    if (key == QLatin1String("design.base_radius"))
+        return DiagnosticText::tr("Motion design, base radius");
+    if (key == QLatin1String("design.tolerance"))
+        return DiagnosticText::tr("Motion design, tolerance");
+    if (key == QLatin1String("design.segments"))
+        return DiagnosticText::tr("Motion design, segments");
+    return key;
+}
+
+/// Codes the project reader makes: their place is where the file has the problem, named by
+/// the file's own keys (the user finds it in the file with them), so it stays as it is.
+bool placedInFile(Code code) {
+    switch (code) {
+        case Code::Missing:
+        case Code::UnknownKey:
+        case Code::WrongType:
+        case Code::PointShape:
+        case Code::NotOneOf:
+        case Code::UnknownSegmentType:
+        case Code::UnknownLaw:
+        case Code::SpeedNotExactlyOne:
+        case Code::NotWholeSampleCount:
+        case Code::NewerFormatVersion:
+        case Code::NotFormatVersion1:
+        case Code::BezierPointCount:
+        case Code::JsonDuplicatedKey:
+        case Code::JsonTooDeep:
+        case Code::JsonInvalid:
+            return true;
+        default:
+            return false;
+    }
+}
+
+QString translatedMessage(const Diagnostic& d) {
+    auto a = [&](std::size_t i) { return argument(d, i); };
+    const QString phiStart = columnName(SegmentTableModel::PhiStart);
+    const QString phiEnd = columnName(SegmentTableModel::PhiEnd);
+    switch (d.code) {
+        case Code::Unspecified:
+            return {};
+        case Code::NotFinite:
+            return DiagnosticText::tr("must be a finite number (got %1)").arg(a(0));
+        case Code::LengthTooLarge:
+            return DiagnosticText::tr("magnitude must be at most 10⁶ mm (got %1)").arg(a(0));
+        case Code::OutOfRange:
+            return DiagnosticText::tr("must be between %1 and %2%3 (got %4)")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::BelowMinimumLength:
+            return DiagnosticText::tr(
+                       "must be at least %1 mm (got %2): a smaller circle or step is below the "
+                       "precision of the joints")
+                .arg(a(0), a(1));
+        case Code::NotPositive:
+            return DiagnosticText::tr("must be > 0 (got %1)").arg(a(0));
+        case Code::SpeedIsZero:
+            return DiagnosticText::tr("must not be 0 (its sign gives the turning direction)");
+        case Code::SpeedOutOfRange:
+            return DiagnosticText::tr("magnitude must be between %1 and %2%3 (got %4)")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::NoSegments:
+            return DiagnosticText::tr("must have at least one segment");
+        case Code::AngleNotFinite:
+            return DiagnosticText::tr("must be a finite angle of magnitude at most 10⁶° (got %1)")
+                .arg(a(0));
+        case Code::WindowNotIncreasing:
+            return DiagnosticText::tr("must be greater than %1 %2° (got %3°)")
+                .arg(phiStart, a(0), a(1));
+        case Code::RayGrazes:
+            return DiagnosticText::tr(
+                       "at %1° the follower ray only grazes the curve (it must cross it at an "
+                       "angle of at least %2 rad, or the follower would need an unbounded "
+                       "speed); the window must end before it")
+                .arg(a(0), a(1));
+        case Code::WindowDisagreesWithLineEnds:
+            return DiagnosticText::tr(
+                       "window %1° .. %2° disagrees with the polar angles of the line's end "
+                       "points (%3° .. %4°)")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::WindowDisagreesWithSplineEnds:
+            return DiagnosticText::tr(
+                       "window %1° .. %2° disagrees with the polar angles of the curve's end "
+                       "points (%3° .. %4°)")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::LineHasNoLength:
+            return DiagnosticText::tr(
+                "the end point must differ from the start point (the line has no length)");
+        case Code::LineThroughCentre:
+            return DiagnosticText::tr(
+                "the line passes through the rotation centre, so the follower ray meets it at "
+                "no angle or at every point");
+        case Code::LineClockwise:
+            return DiagnosticText::tr(
+                       "the line runs clockwise around the rotation centre (from %1° to %2°); "
+                       "swap its start and end points")
+                .arg(a(0), a(1));
+        case Code::SplineEndOnCentre:
+            return DiagnosticText::tr("an end point lies on the rotation centre");
+        case Code::SplineClockwise:
+            return DiagnosticText::tr(
+                       "the curve runs clockwise around the rotation centre (from %1° to %2°); "
+                       "reverse its points")
+                .arg(a(0), a(1));
+        case Code::RayMeetsSplineTimes:
+            return DiagnosticText::tr(
+                       "the follower ray meets the curve %1 times at %2°; inside its window it "
+                       "must meet it exactly once")
+                .arg(a(0), a(1));
+        case Code::InnerBranchBehindCentre:
+            return DiagnosticText::tr(
+                "the rotation centre lies inside this circle, so the inner intersection is "
+                "behind the follower (r ≤ 0); choose the outer branch");
+        case Code::RayMissesArc:
+            return DiagnosticText::tr(
+                       "the follower ray misses the circle inside the window %1° .. %2°; it "
+                       "meets it only for φ in %3° .. %4°")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::WindowGap:
+            return DiagnosticText::tr("gap of %1° between %2 %3° and %4 %5°")
+                .arg(a(0), phiEnd, a(1), phiStart, a(2));
+        case Code::WindowOverlap:
+            return DiagnosticText::tr("overlap of %1° between %2 %3° and %4 %5°")
+                .arg(a(0), phiEnd, a(1), phiStart, a(2));
+        case Code::WindowsNotOneTurn:
+            return DiagnosticText::tr(
+                       "the windows cover %1° (from %2° to %3°); they must cover exactly one "
+                       "turn, 360°")
+                .arg(a(0), a(1), a(2));
+        case Code::JointGap:
+            return DiagnosticText::tr(
+                       "the segments do not meet at %1°: gap of %2 mm (at most 10⁻⁶ mm allowed)")
+                .arg(a(0), a(1));
+        case Code::FlatFaceOscillating:
+            return DiagnosticText::tr(
+                "a flat face moves only translating; use a knife edge or a roller on a "
+                "swinging arm");
+        case Code::RollerTooLargeForArc:
+            return DiagnosticText::tr(
+                       "must be smaller than the radius %1 mm of the concave arc in segment %2 "
+                       "(got %3 mm): the roller cannot enter it")
+                .arg(a(0), a(1), a(2));
+        case Code::SamplesOutOfRange:
+            return DiagnosticText::tr("must be between 16 and 10000000 (got %1)").arg(a(0));
+        case Code::AxisCount:
+            return DiagnosticText::tr("must list 2 or 3 axes (got %1)").arg(a(0));
+        case Code::JointNeedsTwoSegments:
+            return DiagnosticText::tr("%1 needs a joint between two segments (the contour has %2)")
+                .arg(a(0), a(1));
+        case Code::NoSuchJoint:
+            return DiagnosticText::tr("there is no joint %1: joints are numbered 0 .. %2")
+                .arg(a(0), a(1));
+        case Code::DesignEndNotAfterStart:
+            return DiagnosticText::tr("must be after %1°, where this segment starts (got %2°)")
+                .arg(a(0), a(1));
+        case Code::DesignEndBeyondTurn:
+            return DiagnosticText::tr("must be at most 360° (got %1°)").arg(a(0));
+        case Code::DwellLiftChanges:
+            return DiagnosticText::tr("a dwell keeps the lift it starts with (%1), got %2")
+                .arg(a(0), a(1));
+        case Code::LiftUnchanged:
+            return DiagnosticText::tr(
+                       "must differ from the lift it starts with (%1) for %2; a stretch without "
+                       "motion is a dwell")
+                .arg(a(0), a(1));
+        case Code::DesignLastNot360:
+            return DiagnosticText::tr("the last segment must end at 360° (got %1°)").arg(a(0));
+        case Code::DesignNotReturning:
+            return DiagnosticText::tr(
+                       "the motion must return to the start: the last lift must be 0 (got %1)")
+                .arg(a(0));
+        case Code::DesignVelocityJump:
+            return DiagnosticText::tr("the velocity jumps from %1 to %2 per degree")
+                .arg(a(0), a(1));
+        case Code::DesignAccelerationJump:
+            return DiagnosticText::tr("the acceleration jumps from %1 to %2 per degree²")
+                .arg(a(0), a(1));
+        case Code::DesignVelocityAndAccelerationJump:
+            return DiagnosticText::tr(
+                       "the velocity jumps from %1 to %2 per degree; the acceleration jumps "
+                       "from %3 to %4 per degree²")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::Missing:
+            return DiagnosticText::tr("missing");
+        case Code::UnknownKey:
+            return DiagnosticText::tr("unknown key");
+        case Code::WrongType:
+            return DiagnosticText::tr("must be %1 (got %2)").arg(a(0), a(1));
+        case Code::PointShape:
+            return DiagnosticText::tr("must be an array [x, y] of two numbers (got %1 elements)")
+                .arg(a(0));
+        case Code::NotOneOf:
+            return DiagnosticText::tr("must be one of %1 (got “%2”)").arg(a(0), a(1));
+        case Code::UnknownSegmentType:
+            return DiagnosticText::tr(
+                       "unknown segment type “%1” (expected “arc”, “line”, “bezier” or "
+                       "“hermite”)")
+                .arg(a(0));
+        case Code::UnknownLaw:
+            return DiagnosticText::tr("unknown law “%1” (expected one of %2)").arg(a(0), a(1));
+        case Code::SpeedNotExactlyOne:
+            return DiagnosticText::tr(
+                       "must give exactly one of omega_rad_s, rpm, period_s (got %1)")
+                .arg(a(0));
+        case Code::NotWholeSampleCount:
+            return DiagnosticText::tr("must be a whole number between 16 and 10000000 (got %1)")
+                .arg(a(0));
+        case Code::NewerFormatVersion:
+            return DiagnosticText::tr(
+                       "this file has format version %1; this Camwright reads version 1 only — "
+                       "open it with a newer Camwright")
+                .arg(a(0));
+        case Code::NotFormatVersion1:
+            return DiagnosticText::tr("must be 1 (got %1)").arg(a(0));
+        case Code::BezierPointCount:
+            return DiagnosticText::tr("must be an array of four points [x, y]");
+        case Code::JsonDuplicatedKey:
+            return DiagnosticText::tr("duplicated key");
+        case Code::JsonNumberTooLarge:
+            return DiagnosticText::tr("line %1, column %2: number %3 is too large for a double")
+                .arg(a(0), a(1), a(2));
+        case Code::JsonSyntax:
+            return DiagnosticText::tr("line %1, column %2: not valid JSON: %3")
+                .arg(a(0), a(1), a(2));
+        case Code::JsonTooDeep:
+            return DiagnosticText::tr("nesting deeper than %1 levels").arg(a(0));
+        case Code::JsonNulByte:
+            return DiagnosticText::tr(
+                       "line %1, column %2: a NUL byte (at byte offset %3): a project file is "
+                       "text")
+                .arg(a(0), a(1), a(2));
+        case Code::JsonInvalid:
+            return DiagnosticText::tr("not valid JSON");
+        case Code::RowValueCount:
+            if (std::get<std::string>(d.args[1]) == std::get<std::string>(d.args[2])) {
+                return DiagnosticText::tr("line %1: expected %2 (got %3 values)")
+                    .arg(a(0), a(1), a(3));
+            }
+            return DiagnosticText::tr("line %1: expected %2 or %3 (got %4 values)")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::RowValueNotFinite:
+            return DiagnosticText::tr("line %1: %2 must be a finite number (got “%3”)")
+                .arg(a(0), a(1), a(2));
+    }
+    return {};
+}
+
+}  // namespace diagnostic_wording
+
+bool DiagnosticText::translatable(const Diagnostic& diagnostic) {
+    return diagnostic_wording::argumentsFit(diagnostic);
+}
+
+QString DiagnosticText::location(const Diagnostic& d) {
+    using namespace diagnostic_wording;
+    if (!argumentsFit(d)) return QString::fromStdString(d.location);
+    if (placedByArguments(d.code)) return {};
+    if (placedInFile(d.code)) return QString::fromStdString(d.location);
+    if (d.code == Code::WindowsNotOneTurn) return tr("Contour");
+    if (d.places.size() == 2 && d.places[0].segment != d.places[1].segment) {
+        return tr("Joint between segments %1 and %2")
+            .arg(d.places[0].segment)
+            .arg(d.places[1].segment);
+    }
+    if (d.places.size() == 1) {
+        const SegmentPlace& p = d.places.front();
+        const QString part = partName(p);
+        return part.isEmpty() ? tr("Segment %1").arg(p.segment)
+                              : tr("Segment %1, %2").arg(QString::number(p.segment), part);
+    }
+    // A joint whose location the core names without places (a fillet of joint K, the motion
+    // design's contour[k]/contour[k+1] text) is left as the core wrote it.
+    return fieldName(d.location);
+}
+
+QString DiagnosticText::message(const Diagnostic& d) {
+    using namespace diagnostic_wording;
+    if (!argumentsFit(d)) return QString::fromStdString(d.message);
+    return translatedMessage(d);
+}
+
+QString DiagnosticText::line(const Diagnostic& d) {
+    using namespace diagnostic_wording;
+    if (!argumentsFit(d)) return QString::fromStdString(d.text());
+    const QString where = location(d);
+    const QString what = translatedMessage(d);
+    return where.isEmpty() ? what : tr("%1: %2").arg(where, what);
+}
+
+}  // namespace cam

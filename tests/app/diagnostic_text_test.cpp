@@ -1,0 +1,211 @@
+// The window words the core's diagnostics itself (messages/diagnostic_text.h): every code in
+// German, places as the table names them, numbers with the user's decimal separator. The
+// expected texts are written from what the messages say, not copied from the program's output.
+
+#include <gtest/gtest.h>
+
+#include <QFile>
+#include <QLabel>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+
+#include "app_test_support.h"
+#include "mainwindow.h"
+#include "messages/diagnostic_text.h"
+#include "models/segment_table_model.h"
+#include "translations.h"
+
+namespace cam {
+namespace {
+
+const QLocale kGerman(QLocale::German, QLocale::Germany);
+const QLocale kEnglish(QLocale::English, QLocale::UnitedStates);
+
+/// The window's language and number format for one test, restored after it.
+struct Language {
+    explicit Language(const QLocale& locale) : translations(locale) { QLocale::setDefault(locale); }
+    ~Language() { QLocale::setDefault(QLocale::c()); }
+    Translations translations;
+};
+
+/// Sample arguments for a code's signature, each one recognisable in the text: numbers
+/// 1000.25, 1001.25, …, whole numbers 71, 72, …, names «s0», «s1», ….
+std::vector<DiagnosticArg> sampleArguments(DiagnosticCode code) {
+    std::vector<DiagnosticArg> args;
+    int i = 0;
+    for (const char kind : diagnosticCodeSignature(code)) {
+        if (kind == 's') {
+            args.emplace_back("«s" + std::to_string(i) + "»");
+        } else if (kind == 'n') {
+            args.emplace_back(1000.25 + i);
+        } else {
+            args.emplace_back(71.0 + i);
+        }
+        ++i;
+    }
+    return args;
+}
+
+/// How an argument must appear in German.
+QString germanForm(DiagnosticCode code, std::size_t i) {
+    const char kind = diagnosticCodeSignature(code)[i];
+    const int k = static_cast<int>(i);
+    if (kind == 's') return QStringLiteral("«s%1»").arg(k);
+    if (kind == 'n') return QStringLiteral("%1,25").arg(1000 + k);
+    return QString::number(71 + k);
+}
+
+Diagnostic sample(DiagnosticCode code) {
+    return Diagnostic("machining.step", "english text").coded(code, sampleArguments(code));
+}
+
+QString englishLine(const Diagnostic& d) {
+    const Language english(kEnglish);
+    return DiagnosticText::line(d);
+}
+
+TEST(DiagnosticText, EveryCodeHasAGermanTextThatUsesAllItsArguments) {
+    ASSERT_GT(kDiagnosticCodeCount, 50u);
+    std::map<DiagnosticCode, QString> english;
+    for (std::size_t c = 1; c < kDiagnosticCodeCount; ++c) {
+        const auto code = static_cast<DiagnosticCode>(c);
+        english[code] = englishLine(sample(code));
+    }
+    const Language german(kGerman);
+    ASSERT_TRUE(german.translations.appTranslated());
+    static const QRegularExpression placeholder(QStringLiteral("%[0-9]"));
+    for (std::size_t c = 1; c < kDiagnosticCodeCount; ++c) {
+        const auto code = static_cast<DiagnosticCode>(c);
+        const std::string name(diagnosticCodeName(code));
+        const Diagnostic d = sample(code);
+        ASSERT_TRUE(DiagnosticText::translatable(d)) << name;
+        const QString text = DiagnosticText::line(d);
+        EXPECT_NE(text, english[code]) << name << ": no German text";
+        EXPECT_FALSE(text.contains(QStringLiteral("english text"))) << name;
+        EXPECT_FALSE(placeholder.match(text).hasMatch()) << name << ": " << text.toStdString();
+        for (std::size_t i = 0; i < d.args.size(); ++i) {
+            EXPECT_TRUE(text.contains(germanForm(code, i)))
+                << name << " does not show argument " << i << ": " << text.toStdString();
+        }
+        // The English window uses every argument too.
+        for (std::size_t i = 0; i < d.args.size(); ++i) {
+            QString form = germanForm(code, i);
+            form.replace(QStringLiteral(",25"), QStringLiteral(".25"));
+            EXPECT_TRUE(english[code].contains(form))
+                << name << " (English) does not show argument " << i << ": "
+                << english[code].toStdString();
+        }
+    }
+}
+
+TEST(DiagnosticText, WithoutACodeOrWithArgumentsThatDoNotFitItIsTheCoreText) {
+    const Language german(kGerman);
+    const Diagnostic plain("contour[2]", "some problem");
+    EXPECT_EQ(DiagnosticText::line(plain), QStringLiteral("contour[2]: some problem"));
+    const Diagnostic wrong =
+        Diagnostic("contour[2]", "some problem").coded(DiagnosticCode::NotPositive, {"x"});
+    EXPECT_EQ(DiagnosticText::line(wrong), QStringLiteral("contour[2]: some problem"));
+    EXPECT_EQ(DiagnosticText::message(wrong), QStringLiteral("some problem"));
+}
+
+/// A three-arc contour whose second arc has a negative radius and whose first joint has a gap
+/// of 0.5° (the first window ends at 120°, the second starts at 120.5°).
+QString writeInvalidProject(const QTemporaryDir& dir) {
+    const QString path = dir.filePath(QStringLiteral("invalid.cam.json"));
+    QFile file(path);
+    EXPECT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(R"({
+  "format": "camwright", "version": 1, "name": "Invalid",
+  "units": { "length": "mm", "angle": "deg" },
+  "motion": { "period_s": 0.4 },
+  "contour": [
+    { "type": "arc", "center": [0, 0], "radius": 20, "branch": "outer",
+      "phi_start": 0, "phi_end": 120 },
+    { "type": "arc", "center": [0, 0], "radius": -2.5, "branch": "outer",
+      "phi_start": 120.5, "phi_end": 240 },
+    { "type": "arc", "center": [0, 0], "radius": 20, "branch": "outer",
+      "phi_start": 240, "phi_end": 360 }
+  ]
+})");
+    return path;
+}
+
+/// What the window shows of the project's problems: the status label, its tooltip and the
+/// tooltips of the cells they mark.
+struct Shown {
+    QString label, labelTip, radiusTip, phiEndTip, phiStartTip;
+};
+
+Shown showInvalidProject(MainWindow& window) {
+    const QTemporaryDir dir;
+    EXPECT_TRUE(window.loadFile(writeInvalidProject(dir)).isEmpty());
+    const auto* label = window.findChild<QLabel*>(QStringLiteral("validationLabel"));
+    const auto* model = window.tableModel();
+    auto tip = [&](int row, int column) {
+        return model->data(model->index(row, column), Qt::ToolTipRole).toString();
+    };
+    return {label->text(), label->toolTip(), tip(1, SegmentTableModel::Radius),
+            tip(0, SegmentTableModel::PhiEnd), tip(1, SegmentTableModel::PhiStart)};
+}
+
+void expectNoFileKeys(const QString& text) {
+    for (const char* key : {"phi_start", "phi_end", "contour[", "radius:", "phi in"}) {
+        EXPECT_FALSE(text.contains(QLatin1String(key))) << key << " in " << text.toStdString();
+    }
+}
+
+TEST(DiagnosticText, TheGermanWindowShowsAnInvalidProjectInGerman) {
+    const Language german(kGerman);
+    MainWindow window;
+    const Shown shown = showInvalidProject(window);
+
+    const QString radius = QStringLiteral("Segment 1, Radius [mm]: muss > 0 sein (ist -2,5)");
+    const QString gap = QStringLiteral(
+        "Übergang zwischen Segment 0 und 1: Lücke von 0,5° zwischen φ Ende 120° und φ Anfang "
+        "120,5°");
+    EXPECT_TRUE(shown.label.contains(radius)) << shown.label.toStdString();
+    EXPECT_TRUE(shown.labelTip.contains(radius)) << shown.labelTip.toStdString();
+    EXPECT_TRUE(shown.labelTip.contains(gap)) << shown.labelTip.toStdString();
+    EXPECT_EQ(shown.radiusTip, radius);
+    EXPECT_EQ(shown.phiEndTip, gap);
+    EXPECT_EQ(shown.phiStartTip, gap);
+    for (const QString& text :
+         {shown.label, shown.labelTip, shown.radiusTip, shown.phiEndTip, shown.phiStartTip}) {
+        expectNoFileKeys(text);
+        EXPECT_FALSE(text.contains(QStringLiteral("must"))) << text.toStdString();
+        EXPECT_FALSE(text.contains(QStringLiteral("2.5"))) << text.toStdString();
+    }
+}
+
+TEST(DiagnosticText, TheEnglishWindowNamesTheTableColumnsToo) {
+    const Language english(kEnglish);
+    MainWindow window;
+    const Shown shown = showInvalidProject(window);
+
+    const QString radius = QStringLiteral("Segment 1, Radius [mm]: must be > 0 (got -2.5)");
+    const QString gap = QStringLiteral(
+        "Joint between segments 0 and 1: gap of 0.5° between φ end 120° and φ start 120.5°");
+    EXPECT_TRUE(shown.labelTip.contains(radius)) << shown.labelTip.toStdString();
+    EXPECT_TRUE(shown.labelTip.contains(gap)) << shown.labelTip.toStdString();
+    EXPECT_EQ(shown.radiusTip, radius);
+    EXPECT_EQ(shown.phiEndTip, gap);
+    for (const QString& text : {shown.label, shown.labelTip, shown.radiusTip, shown.phiEndTip})
+        expectNoFileKeys(text);
+}
+
+TEST(DiagnosticText, TheCoreKeepsItsEnglishForTheCommandLine) {
+    // The same problems as the core words them (the CLI prints these; cli_tests check the
+    // CLI itself).
+    const QTemporaryDir dir;
+    const auto loaded = loadProjectFile(writeInvalidProject(dir).toStdString());
+    ASSERT_FALSE(loaded.ok());
+    std::vector<std::string> lines;
+    for (const Diagnostic& d : loaded.errors()) lines.push_back(d.text());
+    EXPECT_EQ(lines, (std::vector<std::string>{
+                         "contour[1].radius: must be > 0 (got -2.5)",
+                         "contour[0]/contour[1]: gap of 0.5° between phi_end 120 and "
+                         "phi_start 120.5"}));
+}
+
+}  // namespace
+}  // namespace cam
