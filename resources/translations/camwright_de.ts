@@ -3402,8 +3402,16 @@ Möchten Sie die Datei ersetzen?</translation>
         <source>No contour yet: Synthesize (F6, in the Motion Design dock) makes it from the design.</source>
         <translation>Noch keine Kontur: Synthetisieren (F6, im Fenster Bewegungsentwurf) erzeugt sie aus dem Entwurf.</translation>
     </message>
+    <message numerus="yes">
+        <location line="+9" />
+        <source> (and %n more)</source>
+        <translation>
+            <numerusform> (und %n weiterer)</numerusform>
+            <numerusform> (und %n weitere)</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+10" />
+        <location line="+2" />
         <source>Not computed: %1%2
 Grey: the last computed state, out of date.</source>
         <translation>Nicht berechnet: %1%2

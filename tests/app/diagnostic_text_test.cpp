@@ -11,6 +11,7 @@
 
 #include "app_test_support.h"
 #include "mainwindow.h"
+#include "views/kinematics_plots.h"
 #include "messages/diagnostic_text.h"
 #include "models/segment_table_model.h"
 #include "translations.h"
@@ -130,10 +131,10 @@ QString writeInvalidProject(const QTemporaryDir& dir) {
     return path;
 }
 
-/// What the window shows of the project's problems: the status label, its tooltip and the
-/// tooltips of the cells they mark.
+/// What the window shows of the project's problems: the status label, its tooltip, the
+/// tooltips of the cells they mark, and the label over the plots' out-of-date curves.
 struct Shown {
-    QString label, labelTip, radiusTip, phiEndTip, phiStartTip;
+    QString label, labelTip, radiusTip, phiEndTip, phiStartTip, stale;
 };
 
 Shown showInvalidProject(MainWindow& window) {
@@ -144,8 +145,14 @@ Shown showInvalidProject(MainWindow& window) {
     auto tip = [&](int row, int column) {
         return model->data(model->index(row, column), Qt::ToolTipRole).toString();
     };
-    return {label->text(), label->toolTip(), tip(1, SegmentTableModel::Radius),
-            tip(0, SegmentTableModel::PhiEnd), tip(1, SegmentTableModel::PhiStart)};
+    EXPECT_TRUE(window.waitForCurrentResult(10000));
+    const auto* stale = window.plots()->findChild<QLabel*>(QStringLiteral("staleLabel"));
+    return {label->text(),
+            label->toolTip(),
+            tip(1, SegmentTableModel::Radius),
+            tip(0, SegmentTableModel::PhiEnd),
+            tip(1, SegmentTableModel::PhiStart),
+            stale ? stale->text() : QString()};
 }
 
 void expectNoFileKeys(const QString& text) {
@@ -169,8 +176,10 @@ TEST(DiagnosticText, TheGermanWindowShowsAnInvalidProjectInGerman) {
     EXPECT_EQ(shown.radiusTip, radius);
     EXPECT_EQ(shown.phiEndTip, gap);
     EXPECT_EQ(shown.phiStartTip, gap);
-    for (const QString& text :
-         {shown.label, shown.labelTip, shown.radiusTip, shown.phiEndTip, shown.phiStartTip}) {
+    EXPECT_EQ(shown.stale, "Nicht berechnet: " + radius +
+                               " (und 1 weiterer)\nGrau: der zuletzt berechnete Stand, veraltet.");
+    for (const QString& text : {shown.label, shown.labelTip, shown.radiusTip, shown.phiEndTip,
+                                shown.phiStartTip, shown.stale}) {
         expectNoFileKeys(text);
         EXPECT_FALSE(text.contains(QStringLiteral("must"))) << text.toStdString();
         EXPECT_FALSE(text.contains(QStringLiteral("2.5"))) << text.toStdString();

@@ -26,10 +26,11 @@ inline QString staleText(const ComputeResult& result) {
     }
     const QString first =
         result.errors.empty() ? QStringLiteral("?") : diagnosticText(result.errors.front());
-    const QString more = result.errors.size() > 1 ? QCoreApplication::translate(
-                                                        "cam::StaleLabel", " (and %n more)", "",
-                                                        static_cast<int>(result.errors.size() - 1))
-                                                  : QString();
+    QString more;
+    if (result.errors.size() > 1) {
+        const int others = static_cast<int>(result.errors.size() - 1);
+        more = QCoreApplication::translate("cam::StaleLabel", " (and %n more)", nullptr, others);
+    }
     return QCoreApplication::translate("cam::StaleLabel",
                                        "Not computed: %1%2\nGrey: the last computed state, "
                                        "out of date.")
