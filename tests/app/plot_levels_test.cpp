@@ -133,43 +133,5 @@ TEST(PlotLevels, AFirstPictureHoldsTheWholeSetsCoarserLevelsPointForPoint) {
     expectBucketsHoldTheirExtremes(contour, omega, 100'000, first.levels.front());
 }
 
-TEST(PlotLevels, AJointWhereTheTurnIsSplitAcrossCoresIsCrossedOnce) {
-    // Two circles of radius 20 about (0, 1) and (0, −1) meet at 0° and 180° at r = √399 at an
-    // angle: v_r jumps there. At 131,072 samples the turn is sampled in two stretches split at
-    // sample 65,536, 180°: the joint between them must be drawn exactly once, its two one-sided
-    // values at 180° with the break between, as anywhere else.
-    Project project;
-    project.motion = {SpeedUnit::PeriodS, 1.0};
-    project.contour = {SegmentSpec{Arc{{0.0, 1.0}, 20.0, Branch::Outer}, 0.0, 180.0},
-                       SegmentSpec{Arc{{0.0, -1.0}, 20.0, Branch::Outer}, 180.0, 360.0}};
-    const Contour contour = Contour::build(project).value();
-    const double omega = project.motion.omegaRadS();
-    // The one-sided radial velocities at 180°: r' = ∓ r·x_c…: by the core's own segments.
-    const double left = polarMotion(contour.segment(0).evaluate(M_PI), omega).vR;
-    const double right = polarMotion(contour.segment(1).evaluate(M_PI), omega).vR;
-    ASSERT_GT(std::abs(left - right), 1.0);
-    std::atomic<bool> cancel{false};
-    for (const std::size_t maxBuckets : {std::size_t{0}, PlotCurves::kFirstPictureBuckets}) {
-        PlotCurves curves;
-        ASSERT_TRUE(
-            buildPlotCurves(contour, omega, 131'072, PlotAxis::Angle, curves, cancel, maxBuckets));
-        for (const PlotLevel& level : curves.levels) {
-            const auto& vr = level.curves[static_cast<std::size_t>(Curve::VR)];
-            int breaks = 0;
-            for (std::size_t i = 1; i + 1 < vr.size(); ++i) {
-                if (!std::isnan(vr[i].y) || vr[i].x != 180.0) continue;
-                ++breaks;
-                EXPECT_EQ(vr[i - 1].x, 180.0);
-                EXPECT_EQ(vr[i + 1].x, 180.0);
-                EXPECT_NEAR(vr[i - 1].y, left, 1e-9 * std::abs(left));
-                EXPECT_NEAR(vr[i + 1].y, right, 1e-9 * std::abs(right));
-            }
-            EXPECT_EQ(breaks, 1) << level.samplesPerBucket << " samples per bucket";
-            // And x never runs backwards across the split.
-            for (std::size_t i = 1; i < vr.size(); ++i) ASSERT_GE(vr[i].x, vr[i - 1].x);
-        }
-    }
-}
-
 }  // namespace
 }  // namespace cam

@@ -1,7 +1,5 @@
 #include "engine/plot_levels.h"
 
-#include <QFuture>
-#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cstdint>
 #include <iterator>
@@ -50,11 +48,6 @@ public:
     [[nodiscard]] double xOf(double phi) const {
         return m_axis == PlotAxis::Angle ? radToDeg(phi) : phi / m_omega;
     }
-    /// Sample i's x: its angle in degrees, or its time.
-    [[nodiscard]] double sampleX(const SampledTurn& samples, std::size_t i) const {
-        return m_axis == PlotAxis::Angle ? radToDeg(samples.phi[i]) : samples.t[i];
-    }
-    [[nodiscard]] std::size_t segmentCount() const { return m_contour.size(); }
     [[nodiscard]] Values valuesAt(std::size_t segment, double phi) const {
         return valuesOf(m_contour.segment(segment).evaluate(phi), m_omega);
     }
@@ -201,14 +194,6 @@ struct CurveBuilder {
         }
         lo = l, hi = h;
     }
-    /// The points of the stretch that follows (its buckets are its own: none spans both).
-    void append(const CurveBuilder& next) {
-        flush();
-        points.insert(points.end(), next.points.begin(), next.points.end());
-        tags.insert(tags.end(), next.tags.begin(), next.tags.end());
-        lo = std::min(lo, next.lo);
-        hi = std::max(hi, next.hi);
-    }
     void exact(double x, double y) {
         flush();
         if (std::isfinite(y)) {
@@ -263,93 +248,6 @@ void settleBreaks(CurveBuilder& b, double tolerance) {
 
 std::size_t ceilDiv(std::size_t a, std::size_t b) { return (a + b - 1) / b; }
 
-/// Turns of at least this many samples are sampled in two stretches on two cores.
-constexpr std::size_t kParallelSamples = 32'768;
-
-/// Samples k = begin … end − 1 of an n-sample turn, in chunks of PlotCurves::kChunkSamples, into
-/// the finest level's builders (buckets of 2^shift samples), with the joints crossed between
-/// them. `begin` must be a multiple of kSampleBlock.
-struct Stretch {
-    /// Room for the points of `room` samples: the first stretch takes the others' points too.
-    Stretch(const Turn& turn_, int shift_, std::size_t begin_, std::size_t end_, std::size_t room)
-        : turn(turn_), shift(shift_), begin(begin_), end(end_) {
-        const std::size_t length = room;
-        for (CurveBuilder& b : builders) {
-            const std::size_t expected =
-                shift == 0 ? length : 2 * ceilDiv(length, std::size_t{1} << shift) + 2;
-            b.points.reserve(expected + 3 * turn.segmentCount() + 8);  // and the joints
-            b.tags.reserve(expected + 3 * turn.segmentCount() + 8);
-        }
-    }
-
-    /// Returns false if cancelled.
-    bool run(const Contour& contour, double omega, std::size_t n, const std::atomic<bool>& cancel) {
-        // One chunk of samples at a time, in a buffer the thread keeps: no big turn is ever
-        // held, and no fresh memory is touched for it on every edit.
-        thread_local SampledTurn samples;
-        if (begin > 0) {
-            // Where the sample before the stretch is: the block before it, as one pass has it.
-            if (!sampleTurnRange(contour, omega, n, begin - kSampleBlock, kSampleBlock, samples,
-                                 &cancel)) {
-                return false;
-            }
-            lastSegment = static_cast<std::size_t>(samples.segment.back());
-            lastPhi = samples.phi.back();
-        }
-        const std::size_t chunk = PlotCurves::kChunkSamples;
-        std::vector<double> xs;
-        std::vector<Crossing> crossings;
-        struct Boundary {
-            std::size_t index, begin, end;  // sample in the chunk; its crossings
-        };
-        std::vector<Boundary> boundaries;
-        for (std::size_t first = begin; first < end; first += chunk) {
-            const std::size_t count = std::min(chunk, end - first);
-            if (!sampleTurnRange(contour, omega, n, first, count, samples, &cancel)) return false;
-            xs.resize(count);
-            for (std::size_t i = 0; i < count; ++i) xs[i] = turn.sampleX(samples, i);
-            crossings.clear();
-            boundaries.clear();
-            for (std::size_t i = 0; i < count; ++i) {
-                const auto segment = static_cast<std::size_t>(samples.segment[i]);
-                if ((first > 0 || i > 0) && segment != lastSegment) {
-                    const std::size_t from = crossings.size();
-                    turn.cross(lastSegment, segment, lastPhi, std::nullopt, crossings);
-                    boundaries.push_back({i, from, crossings.size()});
-                }
-                lastSegment = segment;
-                lastPhi = samples.phi[i];
-            }
-            for (std::size_t c = 0; c < kCurveCount; ++c) {
-                const double* y = samplesOf(samples, c);
-                CurveBuilder& b = builders[c];
-                // Runs of one segment, with the joints between them.
-                std::size_t runStart = 0;
-                for (std::size_t r = 0; r <= boundaries.size(); ++r) {
-                    const std::size_t runEnd = r < boundaries.size() ? boundaries[r].index : count;
-                    b.addRun(xs.data() + runStart, y + runStart, runEnd - runStart,
-                             static_cast<Tag>(first + runStart), shift);
-                    if (r == boundaries.size()) break;
-                    for (std::size_t j = boundaries[r].begin; j < boundaries[r].end; ++j) {
-                        b.joint(crossings[j], c);
-                    }
-                    runStart = runEnd;
-                }
-            }
-            if (cancel.load(std::memory_order_relaxed)) return false;
-        }
-        for (CurveBuilder& b : builders) b.flush();  // no bucket goes on past the stretch
-        return true;
-    }
-
-    const Turn& turn;
-    int shift;
-    std::size_t begin, end;
-    std::array<CurveBuilder, kCurveCount> builders;
-    std::size_t lastSegment = 0;  ///< of the last sample so far (before the stretch at first)
-    double lastPhi = 0.0;
-};
-
 }  // namespace
 
 std::size_t PlotCurves::pointCount() const {
@@ -397,35 +295,62 @@ bool buildPlotCurves(const Contour& contour, double omega, std::size_t n, PlotAx
             out.partial = true;
         }
     }
-    // Two stretches of the turn on two cores when it is long, split where no bucket of any
-    // level spans the split and sampling chunks stay aligned (so each sample is computed
-    // exactly as in one pass): the second on the thread pool, the first here.
-    int coarsest = shift;
-    for (int s = shift == 0 ? 3 : shift + 2;
-         ceilDiv(n, std::size_t{1} << s) >= PlotCurves::kMinLevelBuckets; s += 2) {
-        coarsest = s;
+    std::array<CurveBuilder, kCurveCount> builders;
+    for (CurveBuilder& b : builders) {
+        const std::size_t expected = shift == 0 ? n : 2 * ceilDiv(n, std::size_t{1} << shift);
+        b.points.reserve(expected + 3 * contour.size() + 8);  // and the joints
+        b.tags.reserve(expected + 3 * contour.size() + 8);
     }
-    const std::size_t align = std::max(kSampleBlock, std::size_t{1} << coarsest);
-    const std::size_t split = n >= kParallelSamples ? n / 2 / align * align : 0;
-    Stretch head(turn, shift, 0, split > 0 ? split : n, n);
-    std::optional<Stretch> tail;
-    QFuture<bool> tailDone;
-    if (split > 0) {
-        tail.emplace(turn, shift, split, n, n - split);
-        tailDone = QtConcurrent::run([&] { return tail->run(contour, omega, n, cancel); });
-    }
-    const bool headDone = head.run(contour, omega, n, cancel);
-    if (tailDone.isValid() && !tailDone.result()) return false;  // waits for it in any case
-    if (!headDone) return false;
-    std::array<CurveBuilder, kCurveCount>& builders = head.builders;
-    std::size_t lastSegment = head.lastSegment;
-    double lastPhi = head.lastPhi;
-    if (tail) {
-        for (std::size_t c = 0; c < kCurveCount; ++c) builders[c].append(tail->builders[c]);
-        lastSegment = tail->lastSegment;
-        lastPhi = tail->lastPhi;
-    }
+
+    // One chunk of samples at a time, in a buffer the worker thread keeps: no big turn is ever
+    // held, and no fresh memory is touched for it on every edit.
+    thread_local SampledTurn samples;
+    const std::size_t chunk = PlotCurves::kChunkSamples;
+    std::vector<double> xs;
     std::vector<Crossing> crossings;
+    struct Boundary {
+        std::size_t index, begin, end;  // sample in the chunk; its crossings
+    };
+    std::vector<Boundary> boundaries;
+    std::size_t lastSegment = 0;
+    double lastPhi = 0.0;
+    for (std::size_t first = 0; first < n; first += chunk) {
+        const std::size_t count = std::min(chunk, n - first);
+        if (!sampleTurnRange(contour, omega, n, first, count, samples, &cancel)) return false;
+        xs.resize(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            xs[i] = axis == PlotAxis::Angle ? radToDeg(samples.phi[i]) : samples.t[i];
+        }
+        crossings.clear();
+        boundaries.clear();
+        for (std::size_t i = 0; i < count; ++i) {
+            const auto segment = static_cast<std::size_t>(samples.segment[i]);
+            if ((first > 0 || i > 0) && segment != lastSegment) {
+                const std::size_t begin = crossings.size();
+                turn.cross(lastSegment, segment, lastPhi, std::nullopt, crossings);
+                boundaries.push_back({i, begin, crossings.size()});
+            }
+            lastSegment = segment;
+            lastPhi = samples.phi[i];
+        }
+        for (std::size_t c = 0; c < kCurveCount; ++c) {
+            const double* y = samplesOf(samples, c);
+            CurveBuilder& b = builders[c];
+            // Runs of one segment, with the joints between them.
+            std::size_t runStart = 0;
+            for (std::size_t r = 0; r <= boundaries.size(); ++r) {
+                const std::size_t runEnd = r < boundaries.size() ? boundaries[r].index : count;
+                b.addRun(xs.data() + runStart, y + runStart, runEnd - runStart,
+                         static_cast<Tag>(first + runStart), shift);
+                if (r == boundaries.size()) break;
+                for (std::size_t j = boundaries[r].begin; j < boundaries[r].end; ++j) {
+                    b.joint(crossings[j], c);
+                }
+                runStart = runEnd;
+            }
+        }
+        if (cancel.load(std::memory_order_relaxed)) return false;
+    }
     // The joints between the last sample and the end of the turn, then the value at the end.
     crossings.clear();
     const std::size_t endSegment =
