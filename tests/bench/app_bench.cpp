@@ -1,7 +1,8 @@
 // Responsiveness of the desktop application, measured on the real MainWindow (offscreen) with
 // the six-lobe cam at 100,000 samples per turn:
-//  BM_EditToRedraw      — from a cell edit (setData on the segment table) until all three
-//                         kinematics plots (and the pressure angle, when shown) have redrawn
+//  BM_EditToRedraw      — from a cell edit (setData on the segment table) until the four
+//                         kinematics plots (r, velocity, acceleration, jerk; and the pressure
+//                         angle, when shown) have redrawn
 //                         with its result (manual time); counter all_views_ms: until the
 //                         contour view has too.
 //  BM_StreamingEdits    — 200 cell edits at 100 Hz; counters report the longest stall of the
@@ -80,8 +81,8 @@ void BM_EditToRedraw(benchmark::State& state) {
     auto window = makeWindow(follower);
     // The plots the time is taken for (the kinematics plots, and the pressure angle when the
     // follower is shown), then the contour view (counter all_views_ms).
-    std::vector<QCustomPlot*> views = {window->plots()->plot(0), window->plots()->plot(1),
-                                       window->plots()->plot(2)};
+    std::vector<QCustomPlot*> views;
+    for (int p = 0; p < cam::KinematicsPlots::kPlotCount; ++p) views.push_back(window->plots()->plot(p));
     if (follower) views.push_back(window->followerPanel()->pressurePlot());
     views.push_back(window->contourView());
     // Per edit: whether its result was handed to the views, and when each view had redrawn
