@@ -3,7 +3,7 @@
 <context>
     <name>DiagnosticText</name>
     <message>
-        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+70" />
+        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+71" />
         <source>a number</source>
         <translation>eine Zahl</translation>
     </message>
@@ -153,13 +153,13 @@
         <translation>Stößel, Drehpunkt des Hebels y</translation>
     </message>
     <message>
-        <location line="+3" />
-        <location line="+281" />
+        <location line="+5" />
+        <location line="+277" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-280" />
+        <location line="-276" />
         <source>Motion, ω [rad/s]</source>
         <translation>Bewegung, ω [rad/s]</translation>
     </message>
@@ -179,7 +179,7 @@
         <translation>Stößel, Versatz</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Follower, roller radius</source>
         <translation>Stößel, Rollenradius</translation>
     </message>
@@ -199,12 +199,12 @@
         <translation>Stößel, Drehpunkt des Hebels</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Follower, arm length</source>
         <translation>Stößel, Hebellänge</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Samples per turn</source>
         <translation>Abtastpunkte pro Umdrehung</translation>
     </message>
@@ -219,12 +219,12 @@
         <translation>Zerspanung, Achsgeschwindigkeitsgrenzen</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Machining, feed ceiling</source>
         <translation>Zerspanung, höchster Vorschub</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Machining, tool radius</source>
         <translation>Zerspanung, Werkzeugradius</translation>
     </message>
@@ -234,22 +234,22 @@
         <translation>Zerspanung, Schrittweite</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Motion design, base radius</source>
         <translation>Bewegungsentwurf, Grundkreisradius</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Motion design, tolerance</source>
         <translation>Bewegungsentwurf, Toleranz</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Motion design, segments</source>
         <translation>Bewegungsentwurf, Segmente</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+41" />
         <source>must be a finite number (got %1)</source>
         <translation>muss eine endliche Zahl sein (ist %1)</translation>
     </message>

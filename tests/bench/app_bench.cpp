@@ -82,7 +82,8 @@ void BM_EditToRedraw(benchmark::State& state) {
     // The plots the time is taken for (the kinematics plots, and the pressure angle when the
     // follower is shown), then the contour view (counter all_views_ms).
     std::vector<QCustomPlot*> views;
-    for (int p = 0; p < cam::KinematicsPlots::kPlotCount; ++p) views.push_back(window->plots()->plot(p));
+    for (int p = 0; p < cam::KinematicsPlots::kPlotCount; ++p)
+        views.push_back(window->plots()->plot(p));
     if (follower) views.push_back(window->followerPanel()->pressurePlot());
     views.push_back(window->contourView());
     // Per edit: whether its result was handed to the views, and when each view had redrawn
@@ -172,22 +173,24 @@ BENCHMARK(BM_StreamingEdits)
     ->Repetitions(3)
     ->ReportAggregatesOnly(false);
 
-/// The worker's first picture of an edit (plot levels down to
-/// PlotCurves::kFirstPictureBuckets, every sample computed), and then its refinement.
-void BM_FirstPicture(benchmark::State& state) {
+/// The six-lobe cam as the window loads it, at `samples` per turn.
+std::shared_ptr<const cam::Project> sixLobeProject(std::int64_t samples) {
     auto window = std::make_unique<cam::MainWindow>();
     if (!window->loadFile(QStringLiteral(CAMWRIGHT_EXAMPLES "/six-lobe-arc-cam.cam.json"))
              .isEmpty()) {
         std::abort();
     }
     cam::Project p = window->document()->project();
-    p.samplesPerTurn = state.range(0);
-    const cam::ComputeRequest request{1,
-                                      std::make_shared<const cam::Project>(p),
-                                      cam::PlotAxis::Angle,
-                                      false,
-                                      cam::TimingMethod::Optimal,
-                                      cam::PlotCurves::kFirstPictureBuckets};
+    p.samplesPerTurn = samples;
+    return std::make_shared<const cam::Project>(std::move(p));
+}
+
+/// The worker's first picture of an edit (plot levels down to
+/// PlotCurves::kFirstPictureBuckets, every sample computed), and then its refinement.
+void BM_FirstPicture(benchmark::State& state) {
+    const cam::ComputeRequest request{
+        1,     sixLobeProject(state.range(0)), cam::PlotAxis::Angle,
+        false, cam::TimingMethod::Optimal,     cam::PlotCurves::kFirstPictureBuckets};
     const cam::QcpPlotDataPreparer preparer;
     const std::atomic<bool> cancel{false};
     double refineMs = 0.0;
@@ -207,15 +210,7 @@ void BM_FirstPicture(benchmark::State& state) {
 BENCHMARK(BM_FirstPicture)->Arg(3600)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 
 void BM_ComputeProject(benchmark::State& state) {
-    auto window = std::make_unique<cam::MainWindow>();
-    if (!window->loadFile(QStringLiteral(CAMWRIGHT_EXAMPLES "/six-lobe-arc-cam.cam.json"))
-             .isEmpty()) {
-        std::abort();
-    }
-    cam::Project p = window->document()->project();
-    p.samplesPerTurn = state.range(0);
-    const cam::ComputeRequest request{1, std::make_shared<const cam::Project>(p),
-                                      cam::PlotAxis::Angle};
+    const cam::ComputeRequest request{1, sixLobeProject(state.range(0)), cam::PlotAxis::Angle};
     const cam::QcpPlotDataPreparer preparer;
     const std::atomic<bool> cancel{false};
     for (auto _ : state) {

@@ -52,6 +52,20 @@ std::string failureMessage(const std::exception* e) {
         .toStdString();
 }
 
+/// The barrier: an exception escaping run() would end the program in std::terminate. Whatever
+/// the computation held is released by the unwinding; the request is answered with a result
+/// that says what happened, and the next request starts afresh.
+template <class Step>
+ComputeResultPtr guarded(const ComputeRequest& request, Step&& step) {
+    try {
+        return step();
+    } catch (const std::exception& e) {
+        return failedResult(request, failureMessage(&e));
+    } catch (...) {
+        return failedResult(request, failureMessage(nullptr));
+    }
+}
+
 }  // namespace
 
 void ComputeWorker::run() {
@@ -67,30 +81,15 @@ void ComputeWorker::run() {
             preparer = m_preparer;
             m_cancel = false;
         }
-        // The barrier: an exception escaping run() would end the program in std::terminate.
-        // Whatever the computation held is released by the unwinding; the request is answered
-        // with a result that says what happened, and the next request starts afresh.
-        ComputeResultPtr result;
-        try {
-            result = computeProject(request, m_cancel, preparer.get());
-        } catch (const std::exception& e) {
-            result = failedResult(request, failureMessage(&e));
-        } catch (...) {
-            result = failedResult(request, failureMessage(nullptr));
-        }
+        const ComputeResultPtr result =
+            guarded(request, [&] { return computeProject(request, m_cancel, preparer.get()); });
         if (!result || m_cancel.load()) continue;
         emit finished(result);
         // The first picture is shown; the finer plot levels (for zooming in) follow, unless
         // a newer request came meanwhile.
         if (result->curves.partial) {
-            ComputeResultPtr refined;
-            try {
-                refined = refineResult(*result, m_cancel, preparer.get());
-            } catch (const std::exception& e) {
-                refined = failedResult(request, failureMessage(&e));
-            } catch (...) {
-                refined = failedResult(request, failureMessage(nullptr));
-            }
+            const ComputeResultPtr refined =
+                guarded(request, [&] { return refineResult(*result, m_cancel, preparer.get()); });
             if (!refined || m_cancel.load()) continue;
             emit finished(refined);
         }

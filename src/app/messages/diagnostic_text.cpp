@@ -3,6 +3,7 @@
 #include <QLocale>
 #include <QRegularExpression>
 #include <cmath>
+#include <utility>
 
 #include "design/motion_law.h"
 #include "models/design_table_model.h"
@@ -199,36 +200,34 @@ QString fieldName(const std::string& location) {
                           : DiagnosticText::tr("Follower, pivot y");
         return key;
     }
-    if (key == QLatin1String("contour")) return DiagnosticText::tr("Contour");
-    if (key == QLatin1String("motion.omega_rad_s")) return DiagnosticText::tr("Motion, ω [rad/s]");
-    if (key == QLatin1String("motion.rpm")) return DiagnosticText::tr("Motion, speed [rpm]");
-    if (key == QLatin1String("motion.period_s")) return DiagnosticText::tr("Motion, period [s]");
-    if (key == QLatin1String("follower.offset")) return DiagnosticText::tr("Follower, offset");
-    if (key == QLatin1String("follower.radius"))
-        return DiagnosticText::tr("Follower, roller radius");
-    if (key == QLatin1String("follower.max_pressure_angle_deg"))
-        return DiagnosticText::tr("Follower, largest pressure angle");
-    if (key == QLatin1String("follower.type")) return DiagnosticText::tr("Follower, type");
-    if (key == QLatin1String("follower.pivot")) return DiagnosticText::tr("Follower, pivot");
-    if (key == QLatin1String("follower.arm_length"))
-        return DiagnosticText::tr("Follower, arm length");
-    if (key == QLatin1String("sampling.samples_per_turn"))
-        return DiagnosticText::tr("Samples per turn");
-    if (key == QLatin1String("machining.axis_accel"))
-        return DiagnosticText::tr("Machining, axis accelerations");
-    if (key == QLatin1String("machining.axis_vmax"))
-        return DiagnosticText::tr("Machining, axis speed limits");
-    if (key == QLatin1String("machining.feed_max"))
-        return DiagnosticText::tr("Machining, feed ceiling");
-    if (key == QLatin1String("machining.tool_radius"))
-        return DiagnosticText::tr("Machining, tool radius");
-    if (key == QLatin1String("machining.step")) return DiagnosticText::tr("Machining, step");
-    if (key == QLatin1String("design.base_radius"))
-        return DiagnosticText::tr("Motion design, base radius");
-    if (key == QLatin1String("design.tolerance"))
-        return DiagnosticText::tr("Motion design, tolerance");
-    if (key == QLatin1String("design.segments"))
-        return DiagnosticText::tr("Motion design, segments");
+    // The project's fields by their keys (lupdate reads the names here; tr() at lookup).
+    static constexpr std::pair<const char*, const char*> kFields[] = {
+        {"contour", QT_TRANSLATE_NOOP("DiagnosticText", "Contour")},
+        {"motion.omega_rad_s", QT_TRANSLATE_NOOP("DiagnosticText", "Motion, ω [rad/s]")},
+        {"motion.rpm", QT_TRANSLATE_NOOP("DiagnosticText", "Motion, speed [rpm]")},
+        {"motion.period_s", QT_TRANSLATE_NOOP("DiagnosticText", "Motion, period [s]")},
+        {"follower.offset", QT_TRANSLATE_NOOP("DiagnosticText", "Follower, offset")},
+        {"follower.radius", QT_TRANSLATE_NOOP("DiagnosticText", "Follower, roller radius")},
+        {"follower.max_pressure_angle_deg",
+         QT_TRANSLATE_NOOP("DiagnosticText", "Follower, largest pressure angle")},
+        {"follower.type", QT_TRANSLATE_NOOP("DiagnosticText", "Follower, type")},
+        {"follower.pivot", QT_TRANSLATE_NOOP("DiagnosticText", "Follower, pivot")},
+        {"follower.arm_length", QT_TRANSLATE_NOOP("DiagnosticText", "Follower, arm length")},
+        {"sampling.samples_per_turn", QT_TRANSLATE_NOOP("DiagnosticText", "Samples per turn")},
+        {"machining.axis_accel",
+         QT_TRANSLATE_NOOP("DiagnosticText", "Machining, axis accelerations")},
+        {"machining.axis_vmax",
+         QT_TRANSLATE_NOOP("DiagnosticText", "Machining, axis speed limits")},
+        {"machining.feed_max", QT_TRANSLATE_NOOP("DiagnosticText", "Machining, feed ceiling")},
+        {"machining.tool_radius", QT_TRANSLATE_NOOP("DiagnosticText", "Machining, tool radius")},
+        {"machining.step", QT_TRANSLATE_NOOP("DiagnosticText", "Machining, step")},
+        {"design.base_radius", QT_TRANSLATE_NOOP("DiagnosticText", "Motion design, base radius")},
+        {"design.tolerance", QT_TRANSLATE_NOOP("DiagnosticText", "Motion design, tolerance")},
+        {"design.segments", QT_TRANSLATE_NOOP("DiagnosticText", "Motion design, segments")},
+    };
+    for (const auto& [field, name] : kFields) {
+        if (key == QLatin1String(field)) return DiagnosticText::tr(name);
+    }
     return key;
 }
 

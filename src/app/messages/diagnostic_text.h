@@ -13,7 +13,7 @@
 
 namespace cam {
 
-/// @brief Holds the translation context "cam::DiagnosticText" of the messages.
+/// @brief Holds the translation context "DiagnosticText" of the messages.
 class DiagnosticText {
     Q_DECLARE_TR_FUNCTIONS(DiagnosticText)
 public:
