@@ -9,39 +9,11 @@
 #include "document/commands.h"
 #include "document/project_document.h"
 #include "models/delegates.h"
-#include "project/validate.h"
+#include "spline/control_points.h"
 #include "widgets/number_spin_box.h"
 
 namespace cam {
 namespace {
-
-/// End k's handle: P0→P1 (k = 0) or P3→P2 (k = 1), mm.
-Eigen::Vector2d handleOf(const SegmentSpec& s, int k) {
-    const CubicBezier b = bezierOf(s);
-    return k == 0 ? Eigen::Vector2d(b.p[1] - b.p[0]) : Eigen::Vector2d(b.p[2] - b.p[3]);
-}
-
-/// The direction of end k's handle; along the chord towards the other end when it has none.
-Eigen::Vector2d handleDirection(const SegmentSpec& s, int k) {
-    const Eigen::Vector2d h = handleOf(s, k);
-    if (h.norm() > 0.0) return h.normalized();
-    const CubicBezier b = bezierOf(s);
-    const Eigen::Vector2d chord =
-        k == 0 ? Eigen::Vector2d(b.p[3] - b.p[0]) : Eigen::Vector2d(b.p[0] - b.p[3]);
-    return chord.norm() > 0.0 ? chord.normalized() : Eigen::Vector2d(1.0, 0.0);
-}
-
-/// Sets end k's handle to `handle`: a Bézier's P1 or P2, a Hermite's t0 = 3·handle or
-/// t1 = −3·handle; the window follows the end points.
-SegmentSpec withHandle(const SegmentSpec& s, int k, const Eigen::Vector2d& handle) {
-    SegmentSpec r = s;
-    if (CubicBezier* b = r.as<CubicBezier>()) {
-        b->p[k == 0 ? 1 : 2] = b->p[k == 0 ? 0 : 3] + handle;
-    } else if (HermiteCurve* h = r.as<HermiteCurve>()) {
-        (k == 0 ? h->t0 : h->t1) = (k == 0 ? 3.0 : -3.0) * handle;
-    }
-    return r;
-}
 
 NumberSpinBox* editor(QWidget* parent, const QString& name, const QString& suffix,
                       const QString& tip) {
@@ -55,33 +27,6 @@ NumberSpinBox* editor(QWidget* parent, const QString& name, const QString& suffi
 }
 
 }  // namespace
-
-SegmentSpec ControlPointsPanel::withPoint(const SegmentSpec& s, int k, int axis, double v) {
-    SegmentSpec r = s;
-    if (CubicBezier* b = r.as<CubicBezier>()) {
-        if (k == 0 || k == 3) {
-            const int handle = k == 0 ? 1 : 2;
-            const double offset = b->p[handle][axis] - b->p[k][axis];
-            b->p[handle][axis] = v + offset;  // the handle moves with its end
-        }
-        b->p[k][axis] = v;
-    } else if (HermiteCurve* h = r.as<HermiteCurve>()) {
-        Eigen::Vector2d* fields[4] = {&h->p0, &h->t0, &h->p3, &h->t1};
-        (*fields[k])[axis] = v;
-    }
-    std::tie(r.phiStartDeg, r.phiEndDeg) = lineWindowDeg(r, r.phiStartDeg);
-    return r;
-}
-
-SegmentSpec ControlPointsPanel::withHandleLength(const SegmentSpec& s, int k, double length) {
-    return withHandle(s, k, length * handleDirection(s, k));
-}
-
-SegmentSpec ControlPointsPanel::withHandleAngle(const SegmentSpec& s, int k, double angleDeg) {
-    const double length = handleOf(s, k).norm();
-    const double a = degToRad(angleDeg);
-    return withHandle(s, k, length * Eigen::Vector2d(std::cos(a), std::sin(a)));
-}
 
 ControlPointsPanel::ControlPointsPanel(ProjectDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document) {
@@ -108,7 +53,7 @@ ControlPointsPanel::ControlPointsPanel(ProjectDocument* document, QWidget* paren
             connect(box, &QDoubleSpinBox::valueChanged, this, [this, k, axis](double v) {
                 if (m_refreshing || m_row < 0) return;
                 const SegmentSpec& s = m_document->project().contour.at(std::size_t(m_row));
-                push(withPoint(s, k, axis, v),
+                push(withControlPoint(s, k, axis, v),
                      QStringLiteral("%1 %2").arg(m_pointNames[k]->text(), axis ? "y" : "x"));
             });
             connect(box, &QDoubleSpinBox::editingFinished, this, [this] { m_gesture = 0; });
@@ -206,7 +151,7 @@ void ControlPointsPanel::refresh() {
         }
     }
     for (int k = 0; k < 2; ++k) {
-        const Eigen::Vector2d handle = handleOf(*s, k);
+        const Eigen::Vector2d handle = splineHandle(*s, k);
         m_handleLength[k]->setValue(handle.norm());
         m_handleAngle[k]->setValue(
             handle.norm() > 0.0 ? radToDeg(std::atan2(handle.y(), handle.x())) : 0.0);

@@ -33,15 +33,6 @@ public:
     [[nodiscard]] NumberSpinBox* handleLengthEditor(int k) const { return m_handleLength[k]; }
     [[nodiscard]] NumberSpinBox* handleAngleEditor(int k) const { return m_handleAngle[k]; }
 
-    /// @brief Segment `s` with control point k's coordinate `axis` set to v. Moving an end point
-    /// moves its handle with it (the handle keeps its length and angle, as a Hermite end keeps
-    /// its tangent); the window follows the end points. Requires a spline.
-    [[nodiscard]] static SegmentSpec withPoint(const SegmentSpec& s, int k, int axis, double v);
-    /// @brief Segment `s` with end k's handle (0: P0→P1, 1: P3→P2; a Hermite's t0 and t1 are
-    /// three times these) set to this length (mm) or angle (degrees from +x, counter-clockwise).
-    [[nodiscard]] static SegmentSpec withHandleLength(const SegmentSpec& s, int k, double length);
-    [[nodiscard]] static SegmentSpec withHandleAngle(const SegmentSpec& s, int k, double angleDeg);
-
 private:
     void refresh();
     void push(const SegmentSpec& after, const QString& what);
