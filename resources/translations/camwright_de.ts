@@ -3,7 +3,7 @@
 <context>
     <name>DiagnosticText</name>
     <message>
-        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+70" />
+        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+71" />
         <source>a number</source>
         <translation>eine Zahl</translation>
     </message>
@@ -63,7 +63,33 @@
         <translation>eine Tangente</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+15" />
+        <location line="+4" />
+        <source>the tangent point would leave segment %1</source>
+        <translation>der Berührpunkt würde Segment %1 verlassen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>no circle of that radius touches both neighbours inside the corner</source>
+        <translation>kein Kreis dieses Radius berührt beide Nachbarn innerhalb der Ecke</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>no larger circle touches both neighbours inside the corner</source>
+        <translation>kein größerer Kreis berührt beide Nachbarn innerhalb der Ecke</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the follower ray would not meet the fillet arc exactly once: it would pass the rotation centre or turn back as seen from it</source>
+        <translation>der Strahl des Stößels träfe den Verrundungsbogen nicht genau einmal: er ginge durch das Drehzentrum oder liefe, von dort gesehen, zurück</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>radii are limited to 10⁶ mm</source>
+        <translation>Radien sind auf 10⁶ mm begrenzt</translation>
+    </message>
+    <message>
+        <location line="+15" />
         <source>control point P%1</source>
         <translation>Kontrollpunkt P%1</translation>
     </message>
@@ -154,12 +180,12 @@
     </message>
     <message>
         <location line="+3" />
-        <location line="+281" />
+        <location line="+323" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-280" />
+        <location line="-322" />
         <source>Motion, ω [rad/s]</source>
         <translation>Bewegung, ω [rad/s]</translation>
     </message>
@@ -249,7 +275,7 @@
         <translation>Bewegungsentwurf, Segmente</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+35" />
         <source>must be a finite number (got %1)</source>
         <translation>muss eine endliche Zahl sein (ist %1)</translation>
     </message>
@@ -554,7 +580,62 @@
         <translation>Zeile %1: %2 muss eine endliche Zahl sein (ist „%3“)</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+3" />
+        <source>the contour is not valid, so the joint cannot be rounded</source>
+        <translation>die Kontur ist nicht gültig, daher kann der Übergang nicht verrundet werden</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>fillets join arcs and lines; segment %1 is neither</source>
+        <translation>Verrundungen verbinden Bögen und Geraden; Segment %1 ist keins von beiden</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the segments already meet tangentially (their tangents differ by %1°, at most %2° counts as tangent); there is no corner to round</source>
+        <translation>die Segmente treffen sich bereits tangential (ihre Tangenten unterscheiden sich um %1°, bis %2° gilt als tangential); es gibt keine Ecke zu verrunden</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>radius %1 mm does not fit: fillets join arcs and lines; segment %2 is neither</source>
+        <translation>Radius %1 mm passt nicht: Verrundungen verbinden Bögen und Geraden; Segment %2 ist keins von beiden</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>radius %1 mm does not fit: the segments already meet tangentially (their tangents differ by %2°, at most %3° counts as tangent); there is no corner to round</source>
+        <translation>Radius %1 mm passt nicht: die Segmente treffen sich bereits tangential (ihre Tangenten unterscheiden sich um %2°, bis %3° gilt als tangential); es gibt keine Ecke zu verrunden</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>no fillet radius of at least %1 mm fits at this joint (%2)</source>
+        <translation>an diesem Übergang passt kein Verrundungsradius von mindestens %1 mm (%2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>radius %1 mm does not fit: no fillet radius of at least %2 mm fits at this joint (%3)</source>
+        <translation>Radius %1 mm passt nicht: an diesem Übergang passt kein Verrundungsradius von mindestens %2 mm (%3)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>radius %1 mm is too small: a fillet radius is at least %2 mm, the smallest radius a project holds</source>
+        <translation>Radius %1 mm ist zu klein: ein Verrundungsradius beträgt mindestens %2 mm, den kleinsten Radius, den ein Projekt fasst</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>radius %1 mm must be a number &gt; 0: radii below %2 mm fit</source>
+        <translation>Radius %1 mm muss eine Zahl &gt; 0 sein: Radien unter %2 mm passen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>radius %1 mm is too large: only radii below %2 mm fit (%3)</source>
+        <translation>Radius %1 mm ist zu groß: nur Radien unter %2 mm passen (%3)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>radius %1 mm does not fit (%2), although most radii below %3 mm do</source>
+        <translation>Radius %1 mm passt nicht (%2), obwohl die meisten Radien unter %3 mm passen</translation>
+    </message>
+    <message>
+        <location line="+20" />
         <source>Joint between segments %1 and %2</source>
         <translation>Übergang zwischen Segment %1 und %2</translation>
     </message>

@@ -8,13 +8,16 @@
 #include <QLabel>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include <tuple>
 
 #include "app_test_support.h"
+#include "fillet/fillet.h"
 #include "mainwindow.h"
-#include "views/kinematics_plots.h"
 #include "messages/diagnostic_text.h"
 #include "models/segment_table_model.h"
+#include "project/validate.h"
 #include "translations.h"
+#include "views/kinematics_plots.h"
 
 namespace cam {
 namespace {
@@ -214,6 +217,36 @@ TEST(DiagnosticText, TheCoreKeepsItsEnglishForTheCommandLine) {
                          "contour[1].radius: must be > 0 (got -2.5)",
                          "contour[0]/contour[1]: gap of 0.5° between phi_end 120 and "
                          "phi_start 120.5"}));
+}
+
+/// The window's line of a diagnostic in German.
+QString germanLine(const Diagnostic& d) {
+    const Language german(kGerman);
+    return DiagnosticText::line(d);
+}
+
+TEST(DiagnosticText, ARoundCornerTooTightForTheRadiusIsExplainedInGerman) {
+    // The square |x|, |y| <= 10: at its right-angled corners the tangent points sit rho from
+    // the corner, so the 20 mm sides allow radii below 20 mm; 25 mm would leave the side before.
+    const Eigen::Vector2d corners[] = {{10, -10}, {10, 10}, {-10, 10}, {-10, -10}};
+    std::vector<SegmentSpec> square;
+    double near = -45.0;
+    for (int k = 0; k < 4; ++k) {
+        SegmentSpec side{Line{corners[k], corners[(k + 1) % 4]}};
+        std::tie(side.phiStartDeg, side.phiEndDeg) = lineWindowDeg(side, near);
+        square.push_back(side);
+        near = side.phiEndDeg;
+    }
+    const auto rounded = filletJoint(square, 1, 25.0);
+    ASSERT_FALSE(rounded.ok());
+    const Diagnostic& d = rounded.errors().front();
+    EXPECT_EQ(d.text(),
+              "contour[0]/contour[1]: radius 25 mm is too large: only radii below 20 mm fit (the "
+              "tangent point would leave contour[0])");
+    EXPECT_EQ(germanLine(d),
+              QStringLiteral("Übergang zwischen Segment 0 und 1: Radius 25 mm ist zu groß: nur "
+                             "Radien unter 20 mm passen (der Berührpunkt würde Segment 0 "
+                             "verlassen)"));
 }
 
 }  // namespace

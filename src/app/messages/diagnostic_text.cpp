@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "design/motion_law.h"
+#include "fillet/fillet.h"
 #include "models/design_table_model.h"
 #include "models/segment_table_model.h"
 
@@ -85,6 +86,34 @@ QString term(const std::string& name) {
         const auto index = static_cast<qsizetype>(*law);
         if (index < names.size()) return names[index];
     }
+    return QString::fromStdString(name);
+}
+
+/// Why a fillet radius fails (a name of fillet_reason); the neighbour it leaves is one of the
+/// joint's two segments, the diagnostic's places.
+QString filletReason(const Diagnostic& d, std::size_t i) {
+    const std::string& name = std::get<std::string>(d.args[i]);
+    const bool joint = d.places.size() == 2;
+    if (name == fillet_reason::kLeavesLeft && joint) {
+        return DiagnosticText::tr("the tangent point would leave segment %1")
+            .arg(d.places[0].segment);
+    }
+    if (name == fillet_reason::kLeavesRight && joint) {
+        return DiagnosticText::tr("the tangent point would leave segment %1")
+            .arg(d.places[1].segment);
+    }
+    if (name == fillet_reason::kNoCircle)
+        return DiagnosticText::tr(
+            "no circle of that radius touches both neighbours inside the corner");
+    if (name == fillet_reason::kNoLargerCircle)
+        return DiagnosticText::tr("no larger circle touches both neighbours inside the corner");
+    if (name == fillet_reason::kRayNotOnce) {
+        return DiagnosticText::tr(
+            "the follower ray would not meet the fillet arc exactly once: it would pass the "
+            "rotation centre or turn back as seen from it");
+    }
+    if (name == fillet_reason::kRadiusLimit)
+        return DiagnosticText::tr("radii are limited to 10⁶ mm");
     return QString::fromStdString(name);
 }
 
@@ -259,8 +288,6 @@ bool placedInFile(Code code) {
 
 QString translatedMessage(const Diagnostic& d) {
     auto a = [&](std::size_t i) { return argument(d, i); };
-    const QString phiStart = columnName(SegmentTableModel::PhiStart);
-    const QString phiEnd = columnName(SegmentTableModel::PhiEnd);
     switch (d.code) {
         case Code::Unspecified:
             return {};
@@ -465,6 +492,50 @@ QString translatedMessage(const Diagnostic& d) {
         case Code::RowValueNotFinite:
             return DiagnosticText::tr("line %1: %2 must be a finite number (got “%3”)")
                 .arg(a(0), a(1), a(2));
+        case Code::FilletContourInvalid:
+            return DiagnosticText::tr("the contour is not valid, so the joint cannot be rounded");
+        case Code::FilletNeedsArcsAndLines:
+            return DiagnosticText::tr("fillets join arcs and lines; segment %1 is neither")
+                .arg(a(0));
+        case Code::FilletAlreadyTangent:
+            return DiagnosticText::tr(
+                       "the segments already meet tangentially (their tangents differ by %1°, at "
+                       "most %2° counts as tangent); there is no corner to round")
+                .arg(a(0), a(1));
+        case Code::FilletRadiusNeedsArcsAndLines:
+            return DiagnosticText::tr(
+                       "radius %1 mm does not fit: fillets join arcs and lines; segment %2 is "
+                       "neither")
+                .arg(a(0), a(1));
+        case Code::FilletRadiusAlreadyTangent:
+            return DiagnosticText::tr(
+                       "radius %1 mm does not fit: the segments already meet tangentially (their "
+                       "tangents differ by %2°, at most %3° counts as tangent); there is no "
+                       "corner to round")
+                .arg(a(0), a(1), a(2));
+        case Code::FilletNothingFits:
+            return DiagnosticText::tr("no fillet radius of at least %1 mm fits at this joint (%2)")
+                .arg(a(0), filletReason(d, 1));
+        case Code::FilletRadiusNothingFits:
+            return DiagnosticText::tr(
+                       "radius %1 mm does not fit: no fillet radius of at least %2 mm fits at "
+                       "this joint (%3)")
+                .arg(a(0), a(1), filletReason(d, 2));
+        case Code::FilletRadiusTooSmall:
+            return DiagnosticText::tr(
+                       "radius %1 mm is too small: a fillet radius is at least %2 mm, the "
+                       "smallest radius a project holds")
+                .arg(a(0), a(1));
+        case Code::FilletRadiusNotPositive:
+            return DiagnosticText::tr("radius %1 mm must be a number > 0: radii below %2 mm fit")
+                .arg(a(0), a(1));
+        case Code::FilletRadiusTooLarge:
+            return DiagnosticText::tr("radius %1 mm is too large: only radii below %2 mm fit (%3)")
+                .arg(a(0), a(1), filletReason(d, 2));
+        case Code::FilletRadiusInGap:
+            return DiagnosticText::tr(
+                       "radius %1 mm does not fit (%2), although most radii below %3 mm do")
+                .arg(a(0), filletReason(d, 1), a(2));
     }
     return {};
 }

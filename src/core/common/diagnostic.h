@@ -63,6 +63,15 @@ struct SegmentPlace {
 /// as well as a string; and an enum lets the compiler find a code the app does not translate
 /// (`-Wswitch` on its switch) and a test iterate every code (kDiagnosticCodeCount).
 /// diagnosticCodeName() gives the stable name for test output and logs.
+///
+/// Why a fillet's reason is a name and not a code of its own: the reason a radius fails (the
+/// tangent point would leave a neighbour, no circle fits, the ray would meet the arc twice,
+/// the 1e6 mm limit) is one of six, and four messages end with one of them. A code per pair
+/// would be 24 codes that differ only in their last clause; a reason code nested as an argument
+/// would need arguments of its own in the middle of another code's list. So the reason is an
+/// `s` argument from a closed vocabulary (FilletReason in fillet.h), worded once by the app; the
+/// one neighbour a reason can name is one of the joint's two segments, which the diagnostic
+/// carries as its places.
 #define CAM_DIAGNOSTIC_CODES(X)                                                                    \
     X(Unspecified, "")                       /* only the English text (no translation) */          \
     X(NotFinite, "n")                        /* must be a finite number (got %1) */                \
@@ -124,7 +133,18 @@ struct SegmentPlace {
     X(JsonNulByte, "iii")        /* line %1, column %2: a NUL byte (at byte offset %3) */          \
     X(JsonInvalid, "")           /* not valid JSON */                                              \
     X(RowValueCount, "issi")     /* line %1: expected %2 or %3 (got %4 values) */                  \
-    X(RowValueNotFinite, "iss")  /* line %1: %2 must be a finite number (got "%3") */
+    X(RowValueNotFinite, "iss")  /* line %1: %2 must be a finite number (got "%3") */          \
+    X(FilletContourInvalid, "")  /* the contour is not valid, so the joint cannot be rounded */    \
+    X(FilletNeedsArcsAndLines, "k") /* fillets join arcs and lines; contour[%1] is neither */      \
+    X(FilletAlreadyTangent, "nn")   /* the segments already meet tangentially (… %1°, … %2° …) */  \
+    X(FilletRadiusNeedsArcsAndLines, "nk") /* radius %1 mm does not fit: fillets join … */         \
+    X(FilletRadiusAlreadyTangent, "nnn")   /* radius %1 mm does not fit: the segments … */         \
+    X(FilletNothingFits, "ns")       /* no fillet radius of at least %1 mm fits … (%2 reason) */   \
+    X(FilletRadiusNothingFits, "nns") /* radius %1 mm does not fit: no fillet radius … %2 (%3) */  \
+    X(FilletRadiusTooSmall, "nn") /* radius %1 mm is too small: a fillet radius is at least %2 */  \
+    X(FilletRadiusNotPositive, "nn") /* radius %1 mm must be a number > 0: radii below %2 mm f… */ \
+    X(FilletRadiusTooLarge, "nns")   /* radius %1 mm is too large: only radii below %2 … (%3) */   \
+    X(FilletRadiusInGap, "nsn")      /* radius %1 mm does not fit (%2), although most … %3 mm do */
 
 /// @brief What a diagnostic says, independent of the language it is shown in.
 enum class DiagnosticCode : std::uint16_t {
