@@ -63,6 +63,16 @@
         <translation>eine Tangente</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>the roller</source>
+        <translation>die Rolle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the tip</source>
+        <translation>die Spitze</translation>
+    </message>
+    <message>
         <location line="+15" />
         <location line="+4" />
         <source>the tangent point would leave segment %1</source>
@@ -180,12 +190,12 @@
     </message>
     <message>
         <location line="+3" />
-        <location line="+323" />
+        <location line="+348" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-322" />
+        <location line="-347" />
         <source>Motion, ω [rad/s]</source>
         <translation>Bewegung, ω [rad/s]</translation>
     </message>
@@ -635,7 +645,32 @@
         <translation>Radius %1 mm passt nicht (%2), obwohl die meisten Radien unter %3 mm passen</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+4" />
+        <source>the roller radius %1 mm is not smaller than this concave arc's radius %2 mm: the roller cannot follow it</source>
+        <translation>der Rollenradius %1 mm ist nicht kleiner als der Radius %2 mm dieses konkaven Bogens: die Rolle kann ihm nicht folgen</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>is inside the cam: the pivot turns on a circle of radius %1 mm round the cam centre, but the profile reaches %2 mm at %3°; move it farther out</source>
+        <translation>liegt in der Kurvenscheibe: der Drehpunkt läuft auf einem Kreis mit Radius %1 mm um die Mitte der Kurvenscheibe, aber das Profil reicht bei %3° bis %2 mm; ihn weiter nach außen legen</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>is too short: at %1° the cam is %2 mm from the pivot, and %3 reaches only %4 mm</source>
+        <translation>ist zu kurz: bei %1° ist die Kurvenscheibe %2 mm vom Drehpunkt entfernt, und %3 reicht nur %4 mm weit</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>is too long: at %1° %2 passes beyond the whole cam (at most %3 mm from the pivot)</source>
+        <translation>ist zu lang: bei %1° reicht %2 über die ganze Kurvenscheibe hinaus (sie ist höchstens %3 mm vom Drehpunkt entfernt)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>does not let %1 touch the cam at %2° (no contact on the chosen side of the arm)</source>
+        <translation>lässt %1 die Kurvenscheibe bei %2° nicht berühren (kein Kontakt auf der gewählten Seite des Hebels)</translation>
+    </message>
+    <message>
+        <location line="+21" />
         <source>Joint between segments %1 and %2</source>
         <translation>Übergang zwischen Segment %1 und %2</translation>
     </message>

@@ -11,7 +11,9 @@
 #include <tuple>
 
 #include "app_test_support.h"
+#include "core/test_projects.h"
 #include "fillet/fillet.h"
+#include "follower/follower.h"
 #include "mainwindow.h"
 #include "messages/diagnostic_text.h"
 #include "models/segment_table_model.h"
@@ -247,6 +249,52 @@ TEST(DiagnosticText, ARoundCornerTooTightForTheRadiusIsExplainedInGerman) {
               QStringLiteral("Übergang zwischen Segment 0 und 1: Radius 25 mm ist zu groß: nur "
                              "Radien unter 20 mm passen (der Berührpunkt würde Segment 0 "
                              "verlassen)"));
+}
+
+TEST(DiagnosticText, ARollerWiderThanAConcaveArcIsExplainedInGerman) {
+    // A 5 mm roller does not fit the six-lobe cam's concave arcs of radius 4.840705970000002 mm.
+    FollowerSpec spec;
+    spec.type = FollowerType::Roller;
+    spec.radius = 5.0;
+    const auto model = FollowerModel::build(test::sixLobe(), spec);
+    ASSERT_FALSE(model.ok());
+    const Diagnostic& d = model.errors().front();
+    EXPECT_EQ(d.text(),
+              "contour[0].radius: the roller radius 5 mm is not smaller than this concave arc's "
+              "radius 4.84070597 mm: the roller cannot follow it");
+    EXPECT_EQ(
+        germanLine(d),
+        QStringLiteral("Segment 0, Radius [mm]: der Rollenradius 5 mm ist nicht kleiner "
+                       "als der Radius 4,84070597 mm dieses konkaven Bogens: die Rolle kann ihm "
+                       "nicht folgen"));
+}
+
+TEST(DiagnosticText, AnArmTooShortForTheCamIsExplainedInGerman) {
+    // The six-lobe cam reaches out to 29 mm; from a pivot 60 mm out a 20 mm arm with a 2 mm
+    // roller reaches 22 mm, short of the cam.
+    FollowerSpec spec;
+    spec.type = FollowerType::Roller;
+    spec.radius = 2.0;
+    spec.motion = FollowerMotion::Oscillating;
+    spec.pivot = {60.0, 0.0};
+    spec.armLength = 20.0;
+    spec.arm = ArmSide::Ccw;
+    const auto model = FollowerModel::build(test::sixLobe(), spec);
+    ASSERT_FALSE(model.ok());
+    const Diagnostic& d = model.errors().front();
+    ASSERT_EQ(d.code, DiagnosticCode::ArmTooShort);
+    const std::string english = d.message;
+    EXPECT_EQ(english.rfind("is too short: at ", 0), 0u) << english;
+    EXPECT_NE(english.find(" mm from the pivot, and the roller reaches only 22 mm"),
+              std::string::npos)
+        << english;
+    const QString german = germanLine(d);
+    EXPECT_TRUE(german.startsWith(QStringLiteral("Stößel, Hebellänge: ist zu kurz: bei ")))
+        << german.toStdString();
+    EXPECT_TRUE(
+        german.contains(QStringLiteral("vom Drehpunkt entfernt, und die Rolle reicht "
+                                       "nur 22 mm weit")))
+        << german.toStdString();
 }
 
 }  // namespace

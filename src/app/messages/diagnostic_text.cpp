@@ -81,6 +81,8 @@ QString term(const std::string& name) {
     if (name == "a whole number") return DiagnosticText::tr("a whole number");
     if (name == "fillet") return DiagnosticText::tr("a fillet");
     if (name == "tangent line") return DiagnosticText::tr("a tangent line");
+    if (name == "the roller") return DiagnosticText::tr("the roller");
+    if (name == "the tip") return DiagnosticText::tr("the tip");
     if (const auto law = lawFromName(name)) {
         const QStringList names = DesignTableModel::lawNames();
         const auto index = static_cast<qsizetype>(*law);
@@ -536,6 +538,31 @@ QString translatedMessage(const Diagnostic& d) {
             return DiagnosticText::tr(
                        "radius %1 mm does not fit (%2), although most radii below %3 mm do")
                 .arg(a(0), filletReason(d, 1), a(2));
+        case Code::RollerNotSmallerThanArc:
+            return DiagnosticText::tr(
+                       "the roller radius %1 mm is not smaller than this concave arc's radius %2 "
+                       "mm: the roller cannot follow it")
+                .arg(a(0), a(1));
+        case Code::PivotInsideCam:
+            return DiagnosticText::tr(
+                       "is inside the cam: the pivot turns on a circle of radius %1 mm round the "
+                       "cam centre, but the profile reaches %2 mm at %3°; move it farther out")
+                .arg(a(0), a(1), a(2));
+        case Code::ArmTooShort:
+            return DiagnosticText::tr(
+                       "is too short: at %1° the cam is %2 mm from the pivot, and %3 reaches "
+                       "only %4 mm")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArmTooLong:
+            return DiagnosticText::tr(
+                       "is too long: at %1° %2 passes beyond the whole cam (at most %3 mm from "
+                       "the pivot)")
+                .arg(a(0), a(1), a(2));
+        case Code::ArmNoContact:
+            return DiagnosticText::tr(
+                       "does not let %1 touch the cam at %2° (no contact on the chosen side of "
+                       "the arm)")
+                .arg(a(0), a(1));
     }
     return {};
 }

@@ -144,7 +144,12 @@ struct SegmentPlace {
     X(FilletRadiusTooSmall, "nn") /* radius %1 mm is too small: a fillet radius is at least %2 */  \
     X(FilletRadiusNotPositive, "nn") /* radius %1 mm must be a number > 0: radii below %2 mm f… */ \
     X(FilletRadiusTooLarge, "nns")   /* radius %1 mm is too large: only radii below %2 … (%3) */   \
-    X(FilletRadiusInGap, "nsn")      /* radius %1 mm does not fit (%2), although most … %3 mm do */
+    X(FilletRadiusInGap, "nsn")      /* radius %1 mm does not fit (%2), although most … %3 mm do */\
+    X(RollerNotSmallerThanArc, "nn") /* the roller radius %1 mm is not smaller than … %2 mm … */   \
+    X(PivotInsideCam, "nnn") /* is inside the cam: … radius %1 mm … reaches %2 mm at %3° */        \
+    X(ArmTooShort, "nnsn")  /* is too short: at %1° the cam is %2 mm from the pivot, and %3 … %4 */\
+    X(ArmTooLong, "nsn")    /* is too long: at %1° %2 passes beyond the whole cam (at most %3 …) */\
+    X(ArmNoContact, "sn")   /* does not let %1 touch the cam at %2° (no contact on the … arm) */
 
 /// @brief What a diagnostic says, independent of the language it is shown in.
 enum class DiagnosticCode : std::uint16_t {
