@@ -190,12 +190,12 @@
     </message>
     <message>
         <location line="+3" />
-        <location line="+348" />
+        <location line="+393" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-347" />
+        <location line="-392" />
         <source>Motion, ω [rad/s]</source>
         <translation>Bewegung, ω [rad/s]</translation>
     </message>
@@ -668,6 +668,71 @@
         <location line="+5" />
         <source>does not let %1 touch the cam at %2° (no contact on the chosen side of the arm)</source>
         <translation>lässt %1 die Kurvenscheibe bei %2° nicht berühren (kein Kontakt auf der gewählten Seite des Hebels)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the tool radius %1 mm is larger than this curve's tightest concave radius %2 mm: the offset path degenerates</source>
+        <translation>der Werkzeugradius %1 mm ist größer als der engste konkave Radius %2 mm dieser Kurve: die versetzte Bahn entartet</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the tool radius %1 mm is not smaller than the radius %2 mm of this concave arc: the offset path degenerates</source>
+        <translation>der Werkzeugradius %1 mm ist nicht kleiner als der Radius %2 mm dieses konkaven Bogens: die versetzte Bahn entartet</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the offset segments do not meet at this corner</source>
+        <translation>die versetzten Segmente treffen sich an dieser Ecke nicht</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the tool radius %1 mm is too large here: at its concave corners the offset of this segment would have to be trimmed beyond its ends</source>
+        <translation>der Werkzeugradius %1 mm ist hier zu groß: an seinen konkaven Ecken müsste die versetzte Bahn dieses Segments über seine Enden hinaus gekürzt werden</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>must be a finite length of at least %1 mm (got %2)</source>
+        <translation>muss eine endliche Länge von mindestens %1 mm sein (ist %2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 mm makes %2 steps on this %3 mm path; the seed method takes at most %4: a step of at least %5 mm</source>
+        <translation>%1 mm ergibt %2 Schritte auf dieser %3 mm langen Bahn; das Ausgangsverfahren nimmt höchstens %4: eine Schrittweite von mindestens %5 mm</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>is empty</source>
+        <translation>ist leer</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>coordinates must be finite, at most 10⁶ mm, and the bulge finite</source>
+        <translation>die Koordinaten müssen endlich und höchstens 10⁶ mm sein, der Bulge endlich</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>a path needs at least two points</source>
+        <translation>eine Bahn braucht mindestens zwei Punkte</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>repeats the previous point</source>
+        <translation>wiederholt den vorigen Punkt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>an arc (bulge %1) must keep its height, but z goes from %2 to %3</source>
+        <translation>ein Bogen (Bulge %1) muss seine Höhe halten, aber z geht von %2 auf %3</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>an arc needs two distinct points in the XY plane</source>
+        <translation>ein Bogen braucht zwei verschiedene Punkte in der XY-Ebene</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the arc (bulge %1) reaches %2 mm from the origin; a path must stay within %3 mm</source>
+        <translation>der Bogen (Bulge %1) reicht %2 mm vom Ursprung weg; eine Bahn muss innerhalb von %3 mm bleiben</translation>
     </message>
     <message>
         <location line="+21" />

@@ -18,6 +18,7 @@
 #include "messages/diagnostic_text.h"
 #include "models/segment_table_model.h"
 #include "project/validate.h"
+#include "timing/tool_path.h"
 #include "translations.h"
 #include "views/kinematics_plots.h"
 
@@ -249,6 +250,22 @@ TEST(DiagnosticText, ARoundCornerTooTightForTheRadiusIsExplainedInGerman) {
               QStringLiteral("Übergang zwischen Segment 0 und 1: Radius 25 mm ist zu groß: nur "
                              "Radien unter 20 mm passen (der Berührpunkt würde Segment 0 "
                              "verlassen)"));
+}
+
+TEST(DiagnosticText, AToolWiderThanAConcaveArcIsExplainedInGerman) {
+    // The six-lobe cam's notches are concave arcs of radius 4.840705970000002 mm (its file),
+    // shown to 10 significant digits; segment 0 is one.
+    const auto path = toolPathFromContour(test::sixLobe(), 6.0);
+    ASSERT_FALSE(path.ok());
+    const Diagnostic& d = path.errors().front();
+    EXPECT_EQ(
+        d.text(),
+        "contour[0]: the tool radius 6 mm is not smaller than the radius 4.84070597 mm of this "
+        "concave arc: the offset path degenerates");
+    EXPECT_EQ(germanLine(d),
+              QStringLiteral("Segment 0: der Werkzeugradius 6 mm ist nicht kleiner als der "
+                             "Radius 4,84070597 mm dieses konkaven Bogens: die versetzte Bahn "
+                             "entartet"));
 }
 
 TEST(DiagnosticText, ARollerWiderThanAConcaveArcIsExplainedInGerman) {

@@ -563,6 +563,51 @@ QString translatedMessage(const Diagnostic& d) {
                        "does not let %1 touch the cam at %2° (no contact on the chosen side of "
                        "the arm)")
                 .arg(a(0), a(1));
+        case Code::ToolAboveCurveRadius:
+            return DiagnosticText::tr(
+                       "the tool radius %1 mm is larger than this curve's tightest concave radius "
+                       "%2 mm: the offset path degenerates")
+                .arg(a(0), a(1));
+        case Code::ToolNotBelowArcRadius:
+            return DiagnosticText::tr(
+                       "the tool radius %1 mm is not smaller than the radius %2 mm of this "
+                       "concave arc: the offset path degenerates")
+                .arg(a(0), a(1));
+        case Code::OffsetCornerUnmet:
+            return DiagnosticText::tr("the offset segments do not meet at this corner");
+        case Code::ToolTrimsSegment:
+            return DiagnosticText::tr(
+                       "the tool radius %1 mm is too large here: at its concave corners the "
+                       "offset of this segment would have to be trimmed beyond its ends")
+                .arg(a(0));
+        case Code::SeedStepTooSmall:
+            return DiagnosticText::tr("must be a finite length of at least %1 mm (got %2)")
+                .arg(a(0), a(1));
+        case Code::SeedStepTooMany:
+            return DiagnosticText::tr(
+                       "%1 mm makes %2 steps on this %3 mm path; the seed method takes at most "
+                       "%4: a step of at least %5 mm")
+                .arg(a(0), a(1), a(2), a(3), a(4));
+        case Code::PathEmpty:
+            return DiagnosticText::tr("is empty");
+        case Code::PathPointInvalid:
+            return DiagnosticText::tr(
+                "coordinates must be finite, at most 10⁶ mm, and the bulge finite");
+        case Code::PathTooFewPoints:
+            return DiagnosticText::tr("a path needs at least two points");
+        case Code::PathPointRepeated:
+            return DiagnosticText::tr("repeats the previous point");
+        case Code::PathArcChangesHeight:
+            return DiagnosticText::tr(
+                       "an arc (bulge %1) must keep its height, but z goes from %2 to %3")
+                .arg(a(0), a(1), a(2));
+        case Code::PathArcNoChord:
+            return DiagnosticText::tr("an arc needs two distinct points in the XY plane");
+        case Code::PathArcTooFar:
+            return DiagnosticText::tr(
+                       "the arc (bulge %1) reaches %2 mm from the origin; a path must stay "
+                       "within %3 mm")
+                .arg(a(0), a(1), a(2));
     }
     return {};
 }

@@ -149,7 +149,20 @@ struct SegmentPlace {
     X(PivotInsideCam, "nnn") /* is inside the cam: … radius %1 mm … reaches %2 mm at %3° */        \
     X(ArmTooShort, "nnsn")  /* is too short: at %1° the cam is %2 mm from the pivot, and %3 … %4 */\
     X(ArmTooLong, "nsn")    /* is too long: at %1° %2 passes beyond the whole cam (at most %3 …) */\
-    X(ArmNoContact, "sn")   /* does not let %1 touch the cam at %2° (no contact on the … arm) */
+    X(ArmNoContact, "sn")   /* does not let %1 touch the cam at %2° (no contact on the … arm) */   \
+    X(ToolAboveCurveRadius, "nn") /* the tool radius %1 mm is larger than this curve's … %2 mm */  \
+    X(ToolNotBelowArcRadius, "nn") /* the tool radius %1 mm is not smaller than the radius %2 … */ \
+    X(OffsetCornerUnmet, "")       /* the offset segments do not meet at this corner */            \
+    X(ToolTrimsSegment, "n")  /* the tool radius %1 mm is too large here: … trimmed beyond … */   \
+    X(SeedStepTooSmall, "nn") /* must be a finite length of at least %1 mm (got %2) */             \
+    X(SeedStepTooMany, "nnnin") /* %1 mm makes %2 steps on this %3 mm path; … at most %4: … %5 */ \
+    X(PathEmpty, "")            /* is empty */                                                     \
+    X(PathPointInvalid, "")     /* coordinates must be finite, at most 1e6 mm, and the bulge … */  \
+    X(PathTooFewPoints, "")     /* a path needs at least two points */                             \
+    X(PathPointRepeated, "")    /* repeats the previous point */                                  \
+    X(PathArcChangesHeight, "nnn") /* an arc (bulge %1) must keep its height, but z goes … */     \
+    X(PathArcNoChord, "")          /* an arc needs two distinct points in the XY plane */          \
+    X(PathArcTooFar, "nnn") /* the arc (bulge %1) reaches %2 mm from the origin; … within %3 mm */
 
 /// @brief What a diagnostic says, independent of the language it is shown in.
 enum class DiagnosticCode : std::uint16_t {
