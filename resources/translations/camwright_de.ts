@@ -3,7 +3,7 @@
 <context>
     <name>DiagnosticText</name>
     <message>
-        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+71" />
+        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+74" />
         <source>a number</source>
         <translation>eine Zahl</translation>
     </message>
@@ -73,6 +73,26 @@
         <translation>die Spitze</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>an arc</source>
+        <translation>ein Bogen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a line</source>
+        <translation>eine Gerade</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a Bézier spline</source>
+        <translation>ein Bézier-Spline</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a Hermite spline</source>
+        <translation>ein Hermite-Spline</translation>
+    </message>
+    <message>
         <location line="+15" />
         <location line="+4" />
         <source>the tangent point would leave segment %1</source>
@@ -99,7 +119,22 @@
         <translation>Radien sind auf 10⁶ mm begrenzt</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+12" />
+        <source>the outer tangent from (%1, %2) on segment %3 to (%4, %5) on segment %6</source>
+        <translation>die äußere Tangente von (%1; %2) auf Segment %3 nach (%4; %5) auf Segment %6</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the inner tangent from (%1, %2) on segment %3 to (%4, %5) on segment %6</source>
+        <translation>die innere Tangente von (%1; %2) auf Segment %3 nach (%4; %5) auf Segment %6</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the tangent “%1” from (%2, %3) on segment %4 to (%5, %6) on segment %7</source>
+        <translation>die Tangente „%1“ von (%2; %3) auf Segment %4 nach (%5; %6) auf Segment %7</translation>
+    </message>
+    <message>
+        <location line="+19" />
         <source>control point P%1</source>
         <translation>Kontrollpunkt P%1</translation>
     </message>
@@ -190,12 +225,12 @@
     </message>
     <message>
         <location line="+3" />
-        <location line="+393" />
+        <location line="+546" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-392" />
+        <location line="-545" />
         <source>Motion, ω [rad/s]</source>
         <translation>Bewegung, ω [rad/s]</translation>
     </message>
@@ -285,7 +320,7 @@
         <translation>Bewegungsentwurf, Segmente</translation>
     </message>
     <message>
-        <location line="+35" />
+        <location line="+39" />
         <source>must be a finite number (got %1)</source>
         <translation>muss eine endliche Zahl sein (ist %1)</translation>
     </message>
@@ -733,6 +768,171 @@
         <location line="+2" />
         <source>the arc (bulge %1) reaches %2 mm from the origin; a path must stay within %3 mm</source>
         <translation>der Bogen (Bulge %1) reicht %2 mm vom Ursprung weg; eine Bahn muss innerhalb von %3 mm bleiben</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>a tangent line joins two arcs; segment %1 is %2</source>
+        <translation>eine Tangente verbindet zwei Bögen; Segment %1 ist %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>segment %1 is not a circle (its radius must be a finite number &gt; 0, its centre finite)</source>
+        <translation>Segment %1 ist kein Kreis (sein Radius muss eine endliche Zahl &gt; 0 sein, sein Mittelpunkt endlich)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>both arcs lie on the same circle, so they already meet tangentially: no line fits between them</source>
+        <translation>beide Bögen liegen auf demselben Kreis und treffen sich daher bereits tangential: keine Gerade passt dazwischen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the circle of segment %1 lies inside that of segment %2, so the two circles have no common tangent</source>
+        <translation>der Kreis von Segment %1 liegt in dem von Segment %2, daher haben die beiden Kreise keine gemeinsame Tangente</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>no tangent line fits: %1</source>
+        <translation>keine Tangente passt: %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the circles touch at (%1, %2): the arcs can meet there directly, without a line</source>
+        <translation>die Kreise berühren sich in (%1; %2): die Bögen können sich dort direkt treffen, ohne Gerade</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 runs clockwise around the rotation centre (its polar angle would not grow from segment %2 to segment %3)</source>
+        <translation>%1 läuft im Uhrzeigersinn um das Drehzentrum (ihr Polarwinkel würde von Segment %2 bis Segment %3 nicht wachsen)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 touches segment %2 on the near side of its circle, but the arc follows the far side (outer branch)</source>
+        <translation>%1 berührt Segment %2 auf der nahen Seite seines Kreises, aber der Bogen folgt der fernen Seite (Zweig „außen“)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 touches segment %2 on the far side of its circle, but the arc follows the near side (inner branch)</source>
+        <translation>%1 berührt Segment %2 auf der fernen Seite seines Kreises, aber der Bogen folgt der nahen Seite (Zweig „innen“)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>with %1 the window of segment %2 would be empty: its end would move onto its start %3°</source>
+        <translation>mit %1 wäre das Fenster von Segment %2 leer: sein Ende rückte auf seinen Anfang %3°</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>with %1 the window of segment %2 would be empty or reversed: its start would move to %3°, not before its end %4°</source>
+        <translation>mit %1 wäre das Fenster von Segment %2 leer oder umgekehrt: sein Anfang rückte auf %3°, nicht vor sein Ende %4°</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>has no segment to continue</source>
+        <translation>hat kein Segment, das sich fortsetzen ließe</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>there is no segment %1: rows are 0 .. %2</source>
+        <translation>es gibt kein Segment %1: die Zeilen sind 0 .. %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a contour of one segment must be a circle; segment %1 is %2</source>
+        <translation>eine Kontur aus einem Segment muss ein Kreis sein; Segment %1 ist %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>segment %1 is not a circle</source>
+        <translation>Segment %1 ist kein Kreis</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the follower ray at the end %1° of segment %2 misses its circle, so it has no end point</source>
+        <translation>der Strahl des Stößels am Ende %1° von Segment %2 verfehlt dessen Kreis, daher hat es keinen Endpunkt</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>segment %1 has no direction at its end point</source>
+        <translation>Segment %1 hat an seinem Endpunkt keine Richtung</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>segment %1 does not run counter-clockwise around the rotation centre at its end point (%2, %3) (its polar angle does not grow there)</source>
+        <translation>Segment %1 läuft an seinem Endpunkt (%2; %3) nicht gegen den Uhrzeigersinn um das Drehzentrum (sein Polarwinkel wächst dort nicht)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the point must be finite (got (%1, %2))</source>
+        <translation>der Punkt muss endlich sein (ist (%1; %2))</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the point is the rotation centre, which no arc of the contour can reach</source>
+        <translation>der Punkt ist das Drehzentrum, das kein Bogen der Kontur erreichen kann</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the point is the end point (%1, %2) of segment %3: an arc needs a second point</source>
+        <translation>der Punkt ist der Endpunkt (%1; %2) von Segment %3: ein Bogen braucht einen zweiten Punkt</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the point is on the tangent: use a line (an arc through it would need a radius or centre beyond 10⁶ mm, the largest length a project holds)</source>
+        <translation>der Punkt liegt auf der Tangente: eine Gerade verwenden (ein Bogen durch ihn bräuchte einen Radius oder Mittelpunkt jenseits von 10⁶ mm, der größten Länge, die ein Projekt fasst)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the arc's radius would be %1 mm, below %2 mm, the smallest a project holds</source>
+        <translation>der Radius des Bogens wäre %1 mm, unter %2 mm, dem kleinsten, den ein Projekt fasst</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the end point of segment %1 is not on the outer branch of the circle (centre (%2, %3), radius %4 mm)</source>
+        <translation>der Endpunkt von Segment %1 liegt nicht auf dem Zweig „außen“ des Kreises (Mittelpunkt (%2; %3), Radius %4 mm)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the end point of segment %1 is not on the inner branch of the circle (centre (%2, %3), radius %4 mm)</source>
+        <translation>der Endpunkt von Segment %1 liegt nicht auf dem Zweig „innen“ des Kreises (Mittelpunkt (%2; %3), Radius %4 mm)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the point lies on the near side of the circle (centre (%1, %2), radius %3 mm) as seen from the rotation centre, but the arc leaves segment %4 on its far side (outer branch): the follower ray would not meet the arc at the point</source>
+        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, auf der nahen Seite des Kreises (Mittelpunkt (%1; %2), Radius %3 mm), aber der Bogen verlässt Segment %4 auf dessen ferner Seite (Zweig „außen“): der Strahl des Stößels träfe den Bogen nicht im Punkt</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>the point lies on the far side of the circle (centre (%1, %2), radius %3 mm) as seen from the rotation centre, but the arc leaves segment %4 on its near side (inner branch): the follower ray would not meet the arc at the point</source>
+        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, auf der fernen Seite des Kreises (Mittelpunkt (%1; %2), Radius %3 mm), aber der Bogen verlässt Segment %4 auf dessen naher Seite (Zweig „innen“): der Strahl des Stößels träfe den Bogen nicht im Punkt</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>the point lies behind the end point of segment %1 as seen from the rotation centre: the arc along the circle (centre (%2, %3), radius %4 mm) would pass to its near side and run back before reaching it</source>
+        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, hinter dem Endpunkt von Segment %1: der Bogen entlang des Kreises (Mittelpunkt (%2; %3), Radius %4 mm) ginge auf dessen nahe Seite über und liefe zurück, bevor er ihn erreicht</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the point lies behind the end point of segment %1 as seen from the rotation centre: the arc along the circle (centre (%2, %3), radius %4 mm) would pass to its far side and run back before reaching it</source>
+        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, hinter dem Endpunkt von Segment %1: der Bogen entlang des Kreises (Mittelpunkt (%2; %3), Radius %4 mm) ginge auf dessen ferne Seite über und liefe zurück, bevor er ihn erreicht</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the point lies on the follower ray at the end %1° of segment %2: the arc's window would be empty</source>
+        <translation>der Punkt liegt auf dem Strahl des Stößels am Ende %1° von Segment %2: das Fenster des Bogens wäre leer</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the arc would end at %1° (the polar angle of the point), not before the end %2° of segment %3, whose window would be empty or reversed</source>
+        <translation>der Bogen endete bei %1° (dem Polarwinkel des Punkts), nicht vor dem Ende %2° von Segment %3, dessen Fenster leer oder umgekehrt wäre</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the point is the end point of segment %1, which would have no length left</source>
+        <translation>der Punkt ist der Endpunkt von Segment %1, dem keine Länge bliebe</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>with its start point moved to the point, segment %1 would no longer run counter-clockwise from %2° to its end %3°</source>
+        <translation>mit seinem Anfangspunkt im Punkt liefe Segment %1 nicht mehr gegen den Uhrzeigersinn von %2° bis zu seinem Ende %3°</translation>
     </message>
     <message>
         <location line="+21" />

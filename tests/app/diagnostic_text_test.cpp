@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "app_test_support.h"
+#include "construction/tangents.h"
 #include "core/test_projects.h"
 #include "fillet/fillet.h"
 #include "follower/follower.h"
@@ -312,6 +313,35 @@ TEST(DiagnosticText, AnArmTooShortForTheCamIsExplainedInGerman) {
         german.contains(QStringLiteral("vom Drehpunkt entfernt, und die Rolle reicht "
                                        "nur 22 mm weit")))
         << german.toStdString();
+}
+
+TEST(DiagnosticText, EveryDroppedTangentIsExplainedInGerman) {
+    // A base circle R20 at the origin and a nose R6 at (0, 24) on the inner branch. Their two
+    // outer tangents touch the base at 20·(±cos θ, sin θ) and the nose at (0, 24) + 6·(±cos θ,
+    // sin θ), sin θ = 14/24, cos θ = √380/24: (±16.2447, 11.6667) and (±4.8734, 27.5). The
+    // left one runs clockwise; the right one touches the nose on its far side, where the inner
+    // branch does not run.
+    const std::vector<SegmentSpec> lobe{SegmentSpec{Arc{{0, 0}, 20, Branch::Outer}, -90.0, 90.0},
+                                        SegmentSpec{Arc{{0, 24}, 6, Branch::Inner}, 90.0, 270.0}};
+    const auto joined = tangentLineJoint(lobe, 1);
+    ASSERT_FALSE(joined.ok());
+    const Diagnostic& d = joined.errors().front();
+    EXPECT_EQ(d.text(),
+              "contour[0]/contour[1]: no tangent line fits: the outer tangent from (-16.2447, "
+              "11.6667) on contour[0] to (-4.8734, 27.5) on contour[1] runs clockwise around the "
+              "rotation centre (its polar angle would not grow from contour[0] to contour[1]); "
+              "the outer tangent from (16.2447, 11.6667) on contour[0] to (4.8734, 27.5) on "
+              "contour[1] touches contour[1] on the far side of its circle, but the arc follows "
+              "the near side (inner branch)");
+    EXPECT_EQ(germanLine(d),
+              QStringLiteral(
+                  "Übergang zwischen Segment 0 und 1: keine Tangente passt: die äußere Tangente "
+                  "von (-16,2447; 11,6667) auf Segment 0 nach (-4,8734; 27,5) auf Segment 1 "
+                  "läuft im Uhrzeigersinn um das Drehzentrum (ihr Polarwinkel würde von Segment "
+                  "0 bis Segment 1 nicht wachsen); die äußere Tangente von (16,2447; 11,6667) "
+                  "auf Segment 0 nach (4,8734; 27,5) auf Segment 1 berührt Segment 1 auf der "
+                  "fernen Seite seines Kreises, aber der Bogen folgt der nahen Seite (Zweig "
+                  "„innen“)"));
 }
 
 }  // namespace

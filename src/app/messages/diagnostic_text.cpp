@@ -48,6 +48,9 @@ bool argumentsFit(const Diagnostic& d) {
         const bool isName = std::holds_alternative<std::string>(d.args[i]);
         if (isName != (signature[i] == 's')) return false;
     }
+    for (const Diagnostic& reason : d.reasons) {
+        if (!argumentsFit(reason)) return false;
+    }
     return true;
 }
 
@@ -83,6 +86,10 @@ QString term(const std::string& name) {
     if (name == "tangent line") return DiagnosticText::tr("a tangent line");
     if (name == "the roller") return DiagnosticText::tr("the roller");
     if (name == "the tip") return DiagnosticText::tr("the tip");
+    if (name == "an arc") return DiagnosticText::tr("an arc");
+    if (name == "a line") return DiagnosticText::tr("a line");
+    if (name == "a Bézier spline") return DiagnosticText::tr("a Bézier spline");
+    if (name == "a Hermite spline") return DiagnosticText::tr("a Hermite spline");
     if (const auto law = lawFromName(name)) {
         const QStringList names = DesignTableModel::lawNames();
         const auto index = static_cast<qsizetype>(*law);
@@ -118,6 +125,33 @@ QString filletReason(const Diagnostic& d, std::size_t i) {
         return DiagnosticText::tr("radii are limited to 10⁶ mm");
     return QString::fromStdString(name);
 }
+
+QString argument(const Diagnostic& d, std::size_t i);
+
+/// "the outer tangent from (1, 2) on segment 3 to (4, 5) on segment 6": the seven arguments
+/// from `first` on (the kind, a point, a segment, a point, a segment).
+QString tangentName(const Diagnostic& d, std::size_t first) {
+    auto a = [&](std::size_t i) { return argument(d, first + i); };
+    const std::string& kind = std::get<std::string>(d.args[first]);
+    if (kind == "outer") {
+        return DiagnosticText::tr(
+                   "the outer tangent from (%1, %2) on segment %3 to (%4, %5) on "
+                   "segment %6")
+            .arg(a(1), a(2), a(3), a(4), a(5), a(6));
+    }
+    if (kind == "inner") {
+        return DiagnosticText::tr(
+                   "the inner tangent from (%1, %2) on segment %3 to (%4, %5) on "
+                   "segment %6")
+            .arg(a(1), a(2), a(3), a(4), a(5), a(6));
+    }
+    return DiagnosticText::tr(
+               "the tangent “%1” from (%2, %3) on segment %4 to (%5, %6) on "
+               "segment %7")
+        .arg(a(0), a(1), a(2), a(3), a(4), a(5), a(6));
+}
+
+QString translatedMessage(const Diagnostic& d);
 
 QString argument(const Diagnostic& d, std::size_t i) {
     const char kind = diagnosticCodeSignature(d.code)[i];
@@ -290,6 +324,10 @@ bool placedInFile(Code code) {
 
 QString translatedMessage(const Diagnostic& d) {
     auto a = [&](std::size_t i) { return argument(d, i); };
+    const QString tangent =
+        diagnosticCodeSignature(d.code).starts_with("snnknnk") ? tangentName(d, 0) : QString();
+    const QString phiStart = columnName(SegmentTableModel::PhiStart);
+    const QString phiEnd = columnName(SegmentTableModel::PhiEnd);
     switch (d.code) {
         case Code::Unspecified:
             return {};
@@ -607,6 +645,155 @@ QString translatedMessage(const Diagnostic& d) {
             return DiagnosticText::tr(
                        "the arc (bulge %1) reaches %2 mm from the origin; a path must stay "
                        "within %3 mm")
+                .arg(a(0), a(1), a(2));
+        case Code::TangentNeedsArcs:
+            return DiagnosticText::tr("a tangent line joins two arcs; segment %1 is %2")
+                .arg(a(0), a(1));
+        case Code::TangentNotCircle:
+            return DiagnosticText::tr(
+                       "segment %1 is not a circle (its radius must be a finite number > 0, its "
+                       "centre finite)")
+                .arg(a(0));
+        case Code::TangentSameCircle:
+            return DiagnosticText::tr(
+                "both arcs lie on the same circle, so they already meet tangentially: no line "
+                "fits between them");
+        case Code::TangentCircleInside:
+            return DiagnosticText::tr(
+                       "the circle of segment %1 lies inside that of segment %2, so the two "
+                       "circles have no common tangent")
+                .arg(a(0), a(1));
+        case Code::TangentNoneFits: {
+            QStringList reasons;
+            for (const Diagnostic& reason : d.reasons) reasons << translatedMessage(reason);
+            return DiagnosticText::tr("no tangent line fits: %1")
+                .arg(reasons.join(QStringLiteral("; ")));
+        }
+        case Code::TangentTouch:
+            return DiagnosticText::tr(
+                       "the circles touch at (%1, %2): the arcs can meet there directly, without "
+                       "a line")
+                .arg(a(0), a(1));
+        case Code::TangentClockwise:
+            return DiagnosticText::tr(
+                       "%1 runs clockwise around the rotation centre (its polar angle would not "
+                       "grow from segment %2 to segment %3)")
+                .arg(tangent, a(3), a(6));
+        case Code::TangentOnNearSide:
+            return DiagnosticText::tr(
+                       "%1 touches segment %2 on the near side of its circle, but the arc "
+                       "follows the far side (outer branch)")
+                .arg(tangent, a(7));
+        case Code::TangentOnFarSide:
+            return DiagnosticText::tr(
+                       "%1 touches segment %2 on the far side of its circle, but the arc follows "
+                       "the near side (inner branch)")
+                .arg(tangent, a(7));
+        case Code::TangentEmptiesLeft:
+            return DiagnosticText::tr(
+                       "with %1 the window of segment %2 would be empty: its end would move onto "
+                       "its start %3°")
+                .arg(tangent, a(3), a(7));
+        case Code::TangentReversesRight:
+            return DiagnosticText::tr(
+                       "with %1 the window of segment %2 would be empty or reversed: its start "
+                       "would move to %3°, not before its end %4°")
+                .arg(tangent, a(6), a(7), a(8));
+        case Code::ArcNoSegment:
+            return DiagnosticText::tr("has no segment to continue");
+        case Code::ArcNoSuchRow:
+            return DiagnosticText::tr("there is no segment %1: rows are 0 .. %2").arg(a(0), a(1));
+        case Code::ArcSingleNotCircle:
+            return DiagnosticText::tr("a contour of one segment must be a circle; segment %1 is %2")
+                .arg(a(0), a(1));
+        case Code::ArcRowNotCircle:
+            return DiagnosticText::tr("segment %1 is not a circle").arg(a(0));
+        case Code::ArcRayMissesEnd:
+            return DiagnosticText::tr(
+                       "the follower ray at the end %1° of segment %2 misses its circle, so it "
+                       "has no end point")
+                .arg(a(0), a(1));
+        case Code::ArcNoEndDirection:
+            return DiagnosticText::tr("segment %1 has no direction at its end point").arg(a(0));
+        case Code::ArcEndClockwise:
+            return DiagnosticText::tr(
+                       "segment %1 does not run counter-clockwise around the rotation centre at "
+                       "its end point (%2, %3) (its polar angle does not grow there)")
+                .arg(a(0), a(1), a(2));
+        case Code::ArcPointNotFinite:
+            return DiagnosticText::tr("the point must be finite (got (%1, %2))").arg(a(0), a(1));
+        case Code::ArcPointAtCentre:
+            return DiagnosticText::tr(
+                "the point is the rotation centre, which no arc of the contour can reach");
+        case Code::ArcPointIsEnd:
+            return DiagnosticText::tr(
+                       "the point is the end point (%1, %2) of segment %3: an arc needs a second "
+                       "point")
+                .arg(a(0), a(1), a(2));
+        case Code::ArcPointOnTangent:
+            return DiagnosticText::tr(
+                "the point is on the tangent: use a line (an arc through it would need a radius "
+                "or centre beyond 10⁶ mm, the largest length a project holds)");
+        case Code::ArcRadiusTooSmall:
+            return DiagnosticText::tr(
+                       "the arc's radius would be %1 mm, below %2 mm, the smallest a project "
+                       "holds")
+                .arg(a(0), a(1));
+        case Code::ArcEndOffOuter:
+            return DiagnosticText::tr(
+                       "the end point of segment %1 is not on the outer branch of the circle "
+                       "(centre (%2, %3), radius %4 mm)")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArcEndOffInner:
+            return DiagnosticText::tr(
+                       "the end point of segment %1 is not on the inner branch of the circle "
+                       "(centre (%2, %3), radius %4 mm)")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArcPointOnNearSide:
+            return DiagnosticText::tr(
+                       "the point lies on the near side of the circle (centre (%1, %2), radius "
+                       "%3 mm) as seen from the rotation centre, but the arc leaves segment %4 "
+                       "on its far side (outer branch): the follower ray would not meet the arc "
+                       "at the point")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArcPointOnFarSide:
+            return DiagnosticText::tr(
+                       "the point lies on the far side of the circle (centre (%1, %2), radius "
+                       "%3 mm) as seen from the rotation centre, but the arc leaves segment %4 "
+                       "on its near side (inner branch): the follower ray would not meet the arc "
+                       "at the point")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArcRunsBackNear:
+            return DiagnosticText::tr(
+                       "the point lies behind the end point of segment %1 as seen from the "
+                       "rotation centre: the arc along the circle (centre (%2, %3), radius %4 mm) "
+                       "would pass to its near side and run back before reaching it")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArcRunsBackFar:
+            return DiagnosticText::tr(
+                       "the point lies behind the end point of segment %1 as seen from the "
+                       "rotation centre: the arc along the circle (centre (%2, %3), radius %4 mm) "
+                       "would pass to its far side and run back before reaching it")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArcPointOnEndRay:
+            return DiagnosticText::tr(
+                       "the point lies on the follower ray at the end %1° of segment %2: the "
+                       "arc's window would be empty")
+                .arg(a(0), a(1));
+        case Code::ArcEndsAfterNext:
+            return DiagnosticText::tr(
+                       "the arc would end at %1° (the polar angle of the point), not before the "
+                       "end %2° of segment %3, whose window would be empty or reversed")
+                .arg(a(0), a(1), a(2));
+        case Code::ArcPointIsNextEnd:
+            return DiagnosticText::tr(
+                       "the point is the end point of segment %1, which would have no length "
+                       "left")
+                .arg(a(0));
+        case Code::ArcNextClockwise:
+            return DiagnosticText::tr(
+                       "with its start point moved to the point, segment %1 would no longer run "
+                       "counter-clockwise from %2° to its end %3°")
                 .arg(a(0), a(1), a(2));
     }
     return {};

@@ -72,6 +72,11 @@ struct SegmentPlace {
 /// `s` argument from a closed vocabulary (FilletReason in fillet.h), worded once by the app; the
 /// one neighbour a reason can name is one of the joint's two segments, which the diagnostic
 /// carries as its places.
+///
+/// A message that lists a variable number of reasons ("no tangent line fits: a; b; c") keeps
+/// them as `reasons`, each a coded Diagnostic of its own: no fixed signature can hold a list.
+/// Sides and branches that follow from one sense ("the near side …, but the far side (outer
+/// branch)") are a code each, not a name each, so that a language can word the pair as a whole.
 #define CAM_DIAGNOSTIC_CODES(X)                                                                    \
     X(Unspecified, "")                       /* only the English text (no translation) */          \
     X(NotFinite, "n")                        /* must be a finite number (got %1) */                \
@@ -162,7 +167,40 @@ struct SegmentPlace {
     X(PathPointRepeated, "")    /* repeats the previous point */                                  \
     X(PathArcChangesHeight, "nnn") /* an arc (bulge %1) must keep its height, but z goes … */     \
     X(PathArcNoChord, "")          /* an arc needs two distinct points in the XY plane */          \
-    X(PathArcTooFar, "nnn") /* the arc (bulge %1) reaches %2 mm from the origin; … within %3 mm */
+    X(PathArcTooFar, "nnn") /* the arc (bulge %1) reaches %2 mm from the origin; … within %3 mm */ \
+    X(TangentNeedsArcs, "ks")           /* a tangent line joins two arcs; contour[%1] is %2 (a… */ \
+    X(TangentNotCircle, "k")            /* contour[%1] is not a circle (its radius must be …) */   \
+    X(TangentSameCircle, "")            /* both arcs lie on the same circle, so … */               \
+    X(TangentCircleInside, "kk")        /* the circle of contour[%1] lies inside that of conto… */ \
+    X(TangentNoneFits, "")              /* no tangent line fits: and `reasons` joined by "; " */   \
+    X(TangentTouch, "nn")               /* the circles touch at (%1, %2): the arcs can meet th… */ \
+    X(TangentClockwise, "snnknnk")      /* the %1 tangent from (%2, %3) on contour[%4] to … ru… */ \
+    X(TangentOnNearSide, "snnknnkk")    /* the %1 tangent … touches contour[%8] on the near si… */ \
+    X(TangentOnFarSide, "snnknnkk")     /* the %1 tangent … touches contour[%8] on the far sid… */ \
+    X(TangentEmptiesLeft, "snnknnkn")   /* with the %1 tangent … the window of contour[%4] wou… */ \
+    X(TangentReversesRight, "snnknnknn") /* with the %1 tangent … contour[%7] … start %8°, … e… */ \
+    X(ArcNoSegment, "")                 /* has no segment to continue */                           \
+    X(ArcNoSuchRow, "ki")               /* there is no contour[%1]: rows are 0 .. %2 */            \
+    X(ArcSingleNotCircle, "ks")         /* a contour of one segment must be a circle; contour[… */ \
+    X(ArcRowNotCircle, "k")             /* contour[%1] is not a circle */                          \
+    X(ArcRayMissesEnd, "nk")            /* the follower ray at the end %1° of contour[%2] miss… */ \
+    X(ArcNoEndDirection, "k")           /* contour[%1] has no direction at its end point */        \
+    X(ArcEndClockwise, "knn")           /* contour[%1] does not run counter-clockwise … end po… */ \
+    X(ArcPointNotFinite, "nn")          /* the point must be finite (got (%1, %2)) */              \
+    X(ArcPointAtCentre, "")             /* the point is the rotation centre, which no arc … ca… */ \
+    X(ArcPointIsEnd, "nnk")             /* the point is the end point (%1, %2) of contour[%3]:… */ \
+    X(ArcPointOnTangent, "")            /* the point is on the tangent: use a line (…) */          \
+    X(ArcRadiusTooSmall, "nn")          /* the arc's radius would be %1 mm, below %2 mm, … */      \
+    X(ArcEndOffOuter, "knnn")           /* the end point of contour[%1] is not on the outer br… */ \
+    X(ArcEndOffInner, "knnn")           /* … not on the inner branch of the circle (centre (%2… */ \
+    X(ArcPointOnNearSide, "nnnk")       /* the point lies on the near side of the circle … lea… */ \
+    X(ArcPointOnFarSide, "nnnk")        /* the point lies on the far side of the circle … leav… */ \
+    X(ArcRunsBackNear, "knnn")          /* the point lies behind the end point of contour[%1]… */  \
+    X(ArcRunsBackFar, "knnn")           /* the point lies behind the end point of contour[%1]… */  \
+    X(ArcPointOnEndRay, "nk")           /* the point lies on the follower ray at the end %1° o… */ \
+    X(ArcEndsAfterNext, "nnk")          /* the arc would end at %1° (…), not before the end %2… */ \
+    X(ArcPointIsNextEnd, "k")           /* the point is the end point of contour[%1], which wo… */ \
+    X(ArcNextClockwise, "knn")          /* with its start point moved …, contour[%1] would no… */
 
 /// @brief What a diagnostic says, independent of the language it is shown in.
 enum class DiagnosticCode : std::uint16_t {
@@ -208,6 +246,9 @@ struct Diagnostic {
     DiagnosticCode code = DiagnosticCode::Unspecified;
     /// The code's arguments, as its signature lists them.
     std::vector<DiagnosticArg> args;
+    /// The reasons a message lists after its own words, each with its own code (only
+    /// TangentNoneFits has them: one for every tangent that was dropped).
+    std::vector<Diagnostic> reasons;
 
     /// @brief This diagnostic with its code and arguments (`args` must match the signature).
     [[nodiscard]] Diagnostic coded(DiagnosticCode code_, std::vector<DiagnosticArg> args_) && {
