@@ -93,6 +93,21 @@
         <translation>ein Hermite-Spline</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>the depth</source>
+        <translation>die Tiefe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the safe height</source>
+        <translation>die sichere Höhe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the step-down</source>
+        <translation>die Zustellung</translation>
+    </message>
+    <message>
         <location line="+15" />
         <location line="+4" />
         <source>the tangent point would leave segment %1</source>
@@ -225,12 +240,12 @@
     </message>
     <message>
         <location line="+3" />
-        <location line="+546" />
+        <location line="+580" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-545" />
+        <location line="-579" />
         <source>Motion, ω [rad/s]</source>
         <translation>Bewegung, ω [rad/s]</translation>
     </message>
@@ -935,7 +950,57 @@
         <translation>mit seinem Anfangspunkt im Punkt liefe Segment %1 nicht mehr gegen den Uhrzeigersinn von %2° bis zu seinem Ende %3°</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+5" />
+        <source>the tolerance must be between %1 and %2 mm, not %3</source>
+        <translation>die Toleranz muss zwischen %1 und %2 mm liegen, nicht %3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the tool radius must be above 0 and at most %1 mm, not %2</source>
+        <translation>der Werkzeugradius muss über 0 und höchstens %1 mm sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>with cutter compensation the tool would have to reach past the next programmed arc at a concave corner of this segment, which a controller offsetting one move at a time turns into a cut through the part; export the tool-centre path (without --compensation) or use a coarser --tolerance</source>
+        <translation>mit Werkzeugradiuskorrektur müsste das Werkzeug an einer konkaven Ecke dieses Segments über den nächsten programmierten Bogen hinausreichen, was eine Steuerung, die Satz für Satz versetzt, in einen Schnitt durch das Werkstück verwandelt; die Werkzeugmittelpunktsbahn exportieren (ohne --compensation) oder eine gröbere --tolerance verwenden</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 must be above 0 and at most %2 mm, not %3</source>
+        <translation>%1 muss über 0 und höchstens %2 mm sein, nicht %3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the feed must be above 0 and at most %1 mm/min, not %2</source>
+        <translation>der Vorschub muss über 0 und höchstens %1 mm/min sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the tool number must be from 1 to 99999, not %1</source>
+        <translation>die Werkzeugnummer muss zwischen 1 und 99999 liegen, nicht %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a step-down of %1 mm makes %2 passes for a depth of %3 mm; at most %4 are made</source>
+        <translation>eine Zustellung von %1 mm ergibt %2 Durchgänge für eine Tiefe von %3 mm; höchstens %4 werden gefahren</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>a cam table has from %1 to %2 points, not %3</source>
+        <translation>eine Kurvenscheibentabelle hat %1 bis %2 Punkte, nicht %3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>is not a finite number (%1): the result is beyond what a double can hold</source>
+        <translation>ist keine endliche Zahl (%1): das Ergebnis übersteigt, was ein double fassen kann</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>must be at least 1 (got 0)</source>
+        <translation>muss mindestens 1 sein (ist 0)</translation>
+    </message>
+    <message>
+        <location line="+18" />
         <source>Joint between segments %1 and %2</source>
         <translation>Übergang zwischen Segment %1 und %2</translation>
     </message>

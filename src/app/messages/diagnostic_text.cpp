@@ -90,6 +90,9 @@ QString term(const std::string& name) {
     if (name == "a line") return DiagnosticText::tr("a line");
     if (name == "a Bézier spline") return DiagnosticText::tr("a Bézier spline");
     if (name == "a Hermite spline") return DiagnosticText::tr("a Hermite spline");
+    if (name == "the depth") return DiagnosticText::tr("the depth");
+    if (name == "the safe height") return DiagnosticText::tr("the safe height");
+    if (name == "the step-down") return DiagnosticText::tr("the step-down");
     if (const auto law = lawFromName(name)) {
         const QStringList names = DesignTableModel::lawNames();
         const auto index = static_cast<qsizetype>(*law);
@@ -795,6 +798,40 @@ QString translatedMessage(const Diagnostic& d) {
                        "with its start point moved to the point, segment %1 would no longer run "
                        "counter-clockwise from %2° to its end %3°")
                 .arg(a(0), a(1), a(2));
+        case Code::ExportToleranceOutOfRange:
+            return DiagnosticText::tr("the tolerance must be between %1 and %2 mm, not %3")
+                .arg(a(0), a(1), a(2));
+        case Code::ExportToolRadiusOutOfRange:
+            return DiagnosticText::tr("the tool radius must be above 0 and at most %1 mm, not %2")
+                .arg(a(0), a(1));
+        case Code::GcodeCompensationCutsPart:
+            return DiagnosticText::tr(
+                "with cutter compensation the tool would have to reach past the next programmed "
+                "arc at a concave corner of this segment, which a controller offsetting one move "
+                "at a time turns into a cut through the part; export the tool-centre path "
+                "(without --compensation) or use a coarser --tolerance");
+        case Code::GcodeLengthOutOfRange:
+            return DiagnosticText::tr("%1 must be above 0 and at most %2 mm, not %3")
+                .arg(a(0), a(1), a(2));
+        case Code::GcodeFeedOutOfRange:
+            return DiagnosticText::tr("the feed must be above 0 and at most %1 mm/min, not %2")
+                .arg(a(0), a(1));
+        case Code::GcodeToolNumber:
+            return DiagnosticText::tr("the tool number must be from 1 to 99999, not %1").arg(a(0));
+        case Code::GcodeTooManyPasses:
+            return DiagnosticText::tr(
+                       "a step-down of %1 mm makes %2 passes for a depth of %3 mm; at most %4 "
+                       "are made")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::CamTablePoints:
+            return DiagnosticText::tr("a cam table has from %1 to %2 points, not %3")
+                .arg(a(0), a(1), a(2));
+        case Code::SampleNotFinite:
+            return DiagnosticText::tr(
+                       "is not a finite number (%1): the result is beyond what a double can hold")
+                .arg(a(0));
+        case Code::NoPoints:
+            return DiagnosticText::tr("must be at least 1 (got 0)");
     }
     return {};
 }

@@ -200,7 +200,17 @@ struct SegmentPlace {
     X(ArcPointOnEndRay, "nk")           /* the point lies on the follower ray at the end %1° o… */ \
     X(ArcEndsAfterNext, "nnk")          /* the arc would end at %1° (…), not before the end %2… */ \
     X(ArcPointIsNextEnd, "k")           /* the point is the end point of contour[%1], which wo… */ \
-    X(ArcNextClockwise, "knn")          /* with its start point moved …, contour[%1] would no… */
+    X(ArcNextClockwise, "knn")          /* with its start point moved …, contour[%1] would no… */  \
+    X(ExportToleranceOutOfRange, "nnn") /* the tolerance must be between %1 and %2 mm, not %3 */   \
+    X(ExportToolRadiusOutOfRange, "nn") /* the tool radius must be above 0 and at most %1 mm,… */  \
+    X(GcodeCompensationCutsPart, "")    /* with cutter compensation the tool would have to rea… */ \
+    X(GcodeLengthOutOfRange, "snn")     /* %1 (the depth, …) must be above 0 and at most %2 mm… */ \
+    X(GcodeFeedOutOfRange, "nn")        /* the feed must be above 0 and at most %1 mm/min, not… */ \
+    X(GcodeToolNumber, "i")             /* the tool number must be from 1 to 99999, not %1 */      \
+    X(GcodeTooManyPasses, "nnni")       /* a step-down of %1 mm makes %2 passes for a depth of… */ \
+    X(CamTablePoints, "iii")            /* a cam table has from %1 to %2 points, not %3 */         \
+    X(SampleNotFinite, "n")             /* is not a finite number (%1): the result is beyond w… */ \
+    X(NoPoints, "")                     /* must be at least 1 (got 0) */
 
 /// @brief What a diagnostic says, independent of the language it is shown in.
 enum class DiagnosticCode : std::uint16_t {
