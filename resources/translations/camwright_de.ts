@@ -94,6 +94,36 @@
     </message>
     <message>
         <location line="+1" />
+        <source>a folder</source>
+        <translation>ein Ordner</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a FIFO</source>
+        <translation>eine FIFO</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a character device</source>
+        <translation>ein zeichenorientiertes Gerät</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a block device</source>
+        <translation>ein blockorientiertes Gerät</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a socket</source>
+        <translation>ein Socket</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a special file</source>
+        <translation>eine Spezialdatei</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>the depth</source>
         <translation>die Tiefe</translation>
     </message>
@@ -240,12 +270,12 @@
     </message>
     <message>
         <location line="+3" />
-        <location line="+580" />
+        <location line="+640" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-579" />
+        <location line="-639" />
         <source>Motion, ω [rad/s]</source>
         <translation>Bewegung, ω [rad/s]</translation>
     </message>
@@ -1000,7 +1030,132 @@
         <translation>muss mindestens 1 sein (ist 0)</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+2" />
+        <source>is not a finite number, which a file cannot hold</source>
+        <translation>ist keine endliche Zahl; eine Datei kann sie nicht speichern</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot open: %1</source>
+        <translation>kann nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot examine: %1</source>
+        <translation>kann nicht untersucht werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot read: %1</source>
+        <translation>kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is %1, not a regular file: not read</source>
+        <translation>ist %1, keine reguläre Datei: nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is %1 MiB (%2 bytes): files larger than %3 MiB are not read</source>
+        <translation>ist %1 MiB groß (%2 Bytes): Dateien über %3 MiB werden nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>grew past %1 MiB while it was read: larger files are not read</source>
+        <translation>wuchs beim Lesen über %1 MiB: größere Dateien werden nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>no file name given</source>
+        <translation>kein Dateiname angegeben</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot examine %1: %2</source>
+        <translation>%1 kann nicht untersucht werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot follow its symbolic links: %1</source>
+        <translation>ihren symbolischen Links kann nicht gefolgt werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot read the symbolic link %1: %2</source>
+        <translation>der symbolische Link %1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is a link to an open file descriptor, not a file: not replaced</source>
+        <translation>ist ein Link auf einen offenen Dateideskriptor, keine Datei: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 is a link to an open file descriptor, not a file: not replaced</source>
+        <translation>%1 ist ein Link auf einen offenen Dateideskriptor, keine Datei: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>is %1, not a regular file: not replaced</source>
+        <translation>ist %1, keine reguläre Datei: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 is %2, not a regular file: not replaced</source>
+        <translation>%1 ist %2, keine reguläre Datei: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>names a folder, not a file</source>
+        <translation>bezeichnet einen Ordner, keine Datei</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot create a temporary file in %1: %2</source>
+        <translation>in %1 kann keine temporäre Datei angelegt werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot give the new file the owner of %1: %2</source>
+        <translation>die neue Datei kann nicht den Eigentümer von %1 erhalten: %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>cannot give the new file the permissions of %1: %2</source>
+        <translation>die neue Datei kann nicht die Zugriffsrechte von %1 erhalten: %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>cannot flush %1 to disk: %2</source>
+        <translation>%1 kann nicht auf den Datenträger geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 became %2 while it was written: not replaced</source>
+        <translation>%1 ist während des Schreibens %2 geworden: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>cannot replace %1: %2</source>
+        <translation>%1 kann nicht ersetzt werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>replaced, but cannot close %1: %2</source>
+        <translation>ersetzt, aber %1 kann nicht geschlossen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>replaced, but cannot flush the folder %1 to disk: %2</source>
+        <translation>ersetzt, aber der Ordner %1 kann nicht auf den Datenträger geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="+19" />
         <source>Joint between segments %1 and %2</source>
         <translation>Übergang zwischen Segment %1 und %2</translation>
     </message>

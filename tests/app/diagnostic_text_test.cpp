@@ -344,5 +344,18 @@ TEST(DiagnosticText, EveryDroppedTangentIsExplainedInGerman) {
                   "„innen“)"));
 }
 
+TEST(DiagnosticText, AFileThatCannotBeOpenedKeepsTheSystemsWords) {
+    const std::string path = "/nonexistent-camwright-folder/cam.cam.json";
+    const auto loaded = loadProjectFile(path);
+    ASSERT_FALSE(loaded.ok());
+    const Diagnostic& d = loaded.errors().front();
+    // The operating system's reason (ENOENT, in the C library's English) is an argument as it
+    // is; the rest is the window's.
+    EXPECT_EQ(d.text(), path + ": cannot open: No such file or directory");
+    EXPECT_EQ(germanLine(d),
+              QString::fromStdString(path) +
+                  QStringLiteral(": kann nicht geöffnet werden: No such file or directory"));
+}
+
 }  // namespace
 }  // namespace cam

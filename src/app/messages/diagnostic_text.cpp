@@ -90,6 +90,12 @@ QString term(const std::string& name) {
     if (name == "a line") return DiagnosticText::tr("a line");
     if (name == "a Bézier spline") return DiagnosticText::tr("a Bézier spline");
     if (name == "a Hermite spline") return DiagnosticText::tr("a Hermite spline");
+    if (name == "a folder") return DiagnosticText::tr("a folder");
+    if (name == "a FIFO") return DiagnosticText::tr("a FIFO");
+    if (name == "a character device") return DiagnosticText::tr("a character device");
+    if (name == "a block device") return DiagnosticText::tr("a block device");
+    if (name == "a socket") return DiagnosticText::tr("a socket");
+    if (name == "a special file") return DiagnosticText::tr("a special file");
     if (name == "the depth") return DiagnosticText::tr("the depth");
     if (name == "the safe height") return DiagnosticText::tr("the safe height");
     if (name == "the step-down") return DiagnosticText::tr("the step-down");
@@ -832,6 +838,66 @@ QString translatedMessage(const Diagnostic& d) {
                 .arg(a(0));
         case Code::NoPoints:
             return DiagnosticText::tr("must be at least 1 (got 0)");
+        case Code::NotFiniteForFile:
+            return DiagnosticText::tr("is not a finite number, which a file cannot hold");
+        case Code::FileCannotOpen:
+            return DiagnosticText::tr("cannot open: %1").arg(a(0));
+        case Code::FileCannotExamineOpen:
+            return DiagnosticText::tr("cannot examine: %1").arg(a(0));
+        case Code::FileCannotRead:
+            return DiagnosticText::tr("cannot read: %1").arg(a(0));
+        case Code::FileNotRegularToRead:
+            return DiagnosticText::tr("is %1, not a regular file: not read").arg(a(0));
+        case Code::FileTooLargeToRead:
+            return DiagnosticText::tr("is %1 MiB (%2 bytes): files larger than %3 MiB are not read")
+                .arg(a(0), a(1), a(2));
+        case Code::FileGrewTooLarge:
+            return DiagnosticText::tr(
+                       "grew past %1 MiB while it was read: larger files are not read")
+                .arg(a(0));
+        case Code::FileNoName:
+            return DiagnosticText::tr("no file name given");
+        case Code::FileCannotExamine:
+            return DiagnosticText::tr("cannot examine %1: %2").arg(a(0), a(1));
+        case Code::FileLinkLoop:
+            return DiagnosticText::tr("cannot follow its symbolic links: %1").arg(a(0));
+        case Code::FileCannotReadLink:
+            return DiagnosticText::tr("cannot read the symbolic link %1: %2").arg(a(0), a(1));
+        case Code::FileIsDescriptorLink:
+            return DiagnosticText::tr(
+                "is a link to an open file descriptor, not a file: not replaced");
+        case Code::FileLinkTargetIsDescriptorLink:
+            return DiagnosticText::tr(
+                       "%1 is a link to an open file descriptor, not a file: not replaced")
+                .arg(a(0));
+        case Code::FileNotRegular:
+            return DiagnosticText::tr("is %1, not a regular file: not replaced").arg(a(0));
+        case Code::FileLinkTargetNotRegular:
+            return DiagnosticText::tr("%1 is %2, not a regular file: not replaced").arg(a(0), a(1));
+        case Code::FileCannotWrite:
+            return DiagnosticText::tr("cannot write %1: %2").arg(a(0), a(1));
+        case Code::FileNamesFolder:
+            return DiagnosticText::tr("names a folder, not a file");
+        case Code::FileCannotCreateTemporary:
+            return DiagnosticText::tr("cannot create a temporary file in %1: %2").arg(a(0), a(1));
+        case Code::FileCannotCopyOwner:
+            return DiagnosticText::tr("cannot give the new file the owner of %1: %2")
+                .arg(a(0), a(1));
+        case Code::FileCannotCopyPermissions:
+            return DiagnosticText::tr("cannot give the new file the permissions of %1: %2")
+                .arg(a(0), a(1));
+        case Code::FileCannotFlush:
+            return DiagnosticText::tr("cannot flush %1 to disk: %2").arg(a(0), a(1));
+        case Code::FileBecameOther:
+            return DiagnosticText::tr("%1 became %2 while it was written: not replaced")
+                .arg(a(0), a(1));
+        case Code::FileCannotReplace:
+            return DiagnosticText::tr("cannot replace %1: %2").arg(a(0), a(1));
+        case Code::FileReplacedCannotClose:
+            return DiagnosticText::tr("replaced, but cannot close %1: %2").arg(a(0), a(1));
+        case Code::FileReplacedCannotFlushFolder:
+            return DiagnosticText::tr("replaced, but cannot flush the folder %1 to disk: %2")
+                .arg(a(0), a(1));
     }
     return {};
 }

@@ -210,7 +210,32 @@ struct SegmentPlace {
     X(GcodeTooManyPasses, "nnni")       /* a step-down of %1 mm makes %2 passes for a depth of… */ \
     X(CamTablePoints, "iii")            /* a cam table has from %1 to %2 points, not %3 */         \
     X(SampleNotFinite, "n")             /* is not a finite number (%1): the result is beyond w… */ \
-    X(NoPoints, "")                     /* must be at least 1 (got 0) */
+    X(NoPoints, "")                     /* must be at least 1 (got 0) */                           \
+    X(NotFiniteForFile, "")             /* is not a finite number, which a file cannot hold */     \
+    X(FileCannotOpen, "s")              /* cannot open: %1 (the OS's words) */                     \
+    X(FileCannotExamineOpen, "s")       /* cannot examine: %1 (the OS's words) */                  \
+    X(FileCannotRead, "s")              /* cannot read: %1 (the OS's words) */                     \
+    X(FileNotRegularToRead, "s")        /* is %1 (a kind of file), not a regular file: not read */ \
+    X(FileTooLargeToRead, "nii")        /* is %1 MiB (%2 bytes): files larger than %3 MiB are… */  \
+    X(FileGrewTooLarge, "i")            /* grew past %1 MiB while it was read: larger files ar… */ \
+    X(FileNoName, "")                   /* no file name given */                                   \
+    X(FileCannotExamine, "ss")          /* cannot examine %1: %2 (the OS's words) */               \
+    X(FileLinkLoop, "s")                /* cannot follow its symbolic links: %1 (the OS's word… */ \
+    X(FileCannotReadLink, "ss")         /* cannot read the symbolic link %1: %2 */                 \
+    X(FileIsDescriptorLink, "")         /* is a link to an open file descriptor, not a file: n… */ \
+    X(FileLinkTargetIsDescriptorLink, "s") /* %1 is a link to an open file descriptor, … not r… */ \
+    X(FileNotRegular, "s")              /* is %1, not a regular file: not replaced */              \
+    X(FileLinkTargetNotRegular, "ss")   /* %1 is %2, not a regular file: not replaced */           \
+    X(FileCannotWrite, "ss")            /* cannot write %1: %2 */                                  \
+    X(FileNamesFolder, "")              /* names a folder, not a file */                           \
+    X(FileCannotCreateTemporary, "ss")  /* cannot create a temporary file in %1: %2 */             \
+    X(FileCannotCopyOwner, "ss")        /* cannot give the new file the owner of %1: %2 */         \
+    X(FileCannotCopyPermissions, "ss")  /* cannot give the new file the permissions of %1: %2 */   \
+    X(FileCannotFlush, "ss")            /* cannot flush %1 to disk: %2 */                          \
+    X(FileBecameOther, "ss")            /* %1 became %2 while it was written: not replaced */      \
+    X(FileCannotReplace, "ss")          /* cannot replace %1: %2 */                                \
+    X(FileReplacedCannotClose, "ss")    /* replaced, but cannot close %1: %2 */                    \
+    X(FileReplacedCannotFlushFolder, "ss") /* replaced, but cannot flush the folder %1 to disk… */
 
 /// @brief What a diagnostic says, independent of the language it is shown in.
 enum class DiagnosticCode : std::uint16_t {
