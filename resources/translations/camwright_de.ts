@@ -3,7 +3,7 @@
 <context>
     <name>DiagnosticText</name>
     <message>
-        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+71" />
+        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+75" />
         <source>a number</source>
         <translation>eine Zahl</translation>
     </message>
@@ -63,7 +63,123 @@
         <translation>eine Tangente</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+1" />
+        <source>the roller</source>
+        <translation>die Rolle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the tip</source>
+        <translation>die Spitze</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>an arc</source>
+        <translation>ein Bogen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a line</source>
+        <translation>eine Gerade</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a Bézier spline</source>
+        <translation>ein Bézier-Spline</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a Hermite spline</source>
+        <translation>ein Hermite-Spline</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a folder</source>
+        <translation>ein Ordner</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a FIFO</source>
+        <translation>eine FIFO</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a character device</source>
+        <translation>ein zeichenorientiertes Gerät</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a block device</source>
+        <translation>ein blockorientiertes Gerät</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a socket</source>
+        <translation>ein Socket</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>a special file</source>
+        <translation>eine Spezialdatei</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the depth</source>
+        <translation>die Tiefe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the safe height</source>
+        <translation>die sichere Höhe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the step-down</source>
+        <translation>die Zustellung</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <location line="+4" />
+        <source>the tangent point would leave segment %1</source>
+        <translation>der Berührpunkt würde Segment %1 verlassen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>no circle of that radius touches both neighbours inside the corner</source>
+        <translation>kein Kreis dieses Radius berührt beide Nachbarn innerhalb der Ecke</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>no larger circle touches both neighbours inside the corner</source>
+        <translation>kein größerer Kreis berührt beide Nachbarn innerhalb der Ecke</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the follower ray would not meet the fillet arc exactly once: it would pass the rotation centre or turn back as seen from it</source>
+        <translation>der Strahl des Stößels träfe den Verrundungsbogen nicht genau einmal: er ginge durch das Drehzentrum oder liefe, von dort gesehen, zurück</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>radii are limited to 10⁶ mm</source>
+        <translation>Radien sind auf 10⁶ mm begrenzt</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>the outer tangent from (%1, %2) on segment %3 to (%4, %5) on segment %6</source>
+        <translation>die äußere Tangente von (%1; %2) auf Segment %3 nach (%4; %5) auf Segment %6</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the inner tangent from (%1, %2) on segment %3 to (%4, %5) on segment %6</source>
+        <translation>die innere Tangente von (%1; %2) auf Segment %3 nach (%4; %5) auf Segment %6</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the tangent “%1” from (%2, %3) on segment %4 to (%5, %6) on segment %7</source>
+        <translation>die Tangente „%1“ von (%2; %3) auf Segment %4 nach (%5; %6) auf Segment %7</translation>
+    </message>
+    <message>
+        <location line="+19" />
         <source>control point P%1</source>
         <translation>Kontrollpunkt P%1</translation>
     </message>
@@ -154,12 +270,12 @@
     </message>
     <message>
         <location line="+5" />
-        <location line="+277" />
+        <location line="+636" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-276" />
+        <location line="-635" />
         <source>Motion, ω [rad/s]</source>
         <translation>Bewegung, ω [rad/s]</translation>
     </message>
@@ -249,7 +365,7 @@
         <translation>Bewegungsentwurf, Segmente</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+43" />
         <source>must be a finite number (got %1)</source>
         <translation>muss eine endliche Zahl sein (ist %1)</translation>
     </message>
@@ -552,6 +668,491 @@
         <location line="+3" />
         <source>line %1: %2 must be a finite number (got “%3”)</source>
         <translation>Zeile %1: %2 muss eine endliche Zahl sein (ist „%3“)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the contour is not valid, so the joint cannot be rounded</source>
+        <translation>die Kontur ist nicht gültig, daher kann der Übergang nicht verrundet werden</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>fillets join arcs and lines; segment %1 is neither</source>
+        <translation>Verrundungen verbinden Bögen und Geraden; Segment %1 ist keins von beiden</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the segments already meet tangentially (their tangents differ by %1°, at most %2° counts as tangent); there is no corner to round</source>
+        <translation>die Segmente treffen sich bereits tangential (ihre Tangenten unterscheiden sich um %1°, bis %2° gilt als tangential); es gibt keine Ecke zu verrunden</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>radius %1 mm does not fit: fillets join arcs and lines; segment %2 is neither</source>
+        <translation>Radius %1 mm passt nicht: Verrundungen verbinden Bögen und Geraden; Segment %2 ist keins von beiden</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>radius %1 mm does not fit: the segments already meet tangentially (their tangents differ by %2°, at most %3° counts as tangent); there is no corner to round</source>
+        <translation>Radius %1 mm passt nicht: die Segmente treffen sich bereits tangential (ihre Tangenten unterscheiden sich um %2°, bis %3° gilt als tangential); es gibt keine Ecke zu verrunden</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>no fillet radius of at least %1 mm fits at this joint (%2)</source>
+        <translation>an diesem Übergang passt kein Verrundungsradius von mindestens %1 mm (%2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>radius %1 mm does not fit: no fillet radius of at least %2 mm fits at this joint (%3)</source>
+        <translation>Radius %1 mm passt nicht: an diesem Übergang passt kein Verrundungsradius von mindestens %2 mm (%3)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>radius %1 mm is too small: a fillet radius is at least %2 mm, the smallest radius a project holds</source>
+        <translation>Radius %1 mm ist zu klein: ein Verrundungsradius beträgt mindestens %2 mm, den kleinsten Radius, den ein Projekt fasst</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>radius %1 mm must be a number &gt; 0: radii below %2 mm fit</source>
+        <translation>Radius %1 mm muss eine Zahl &gt; 0 sein: Radien unter %2 mm passen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>radius %1 mm is too large: only radii below %2 mm fit (%3)</source>
+        <translation>Radius %1 mm ist zu groß: nur Radien unter %2 mm passen (%3)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>radius %1 mm does not fit (%2), although most radii below %3 mm do</source>
+        <translation>Radius %1 mm passt nicht (%2), obwohl die meisten Radien unter %3 mm passen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the roller radius %1 mm is not smaller than this concave arc's radius %2 mm: the roller cannot follow it</source>
+        <translation>der Rollenradius %1 mm ist nicht kleiner als der Radius %2 mm dieses konkaven Bogens: die Rolle kann ihm nicht folgen</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>is inside the cam: the pivot turns on a circle of radius %1 mm round the cam centre, but the profile reaches %2 mm at %3°; move it farther out</source>
+        <translation>liegt in der Kurvenscheibe: der Drehpunkt läuft auf einem Kreis mit Radius %1 mm um die Mitte der Kurvenscheibe, aber das Profil reicht bei %3° bis %2 mm; ihn weiter nach außen legen</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>is too short: at %1° the cam is %2 mm from the pivot, and %3 reaches only %4 mm</source>
+        <translation>ist zu kurz: bei %1° ist die Kurvenscheibe %2 mm vom Drehpunkt entfernt, und %3 reicht nur %4 mm weit</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>is too long: at %1° %2 passes beyond the whole cam (at most %3 mm from the pivot)</source>
+        <translation>ist zu lang: bei %1° reicht %2 über die ganze Kurvenscheibe hinaus (sie ist höchstens %3 mm vom Drehpunkt entfernt)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>does not let %1 touch the cam at %2° (no contact on the chosen side of the arm)</source>
+        <translation>lässt %1 die Kurvenscheibe bei %2° nicht berühren (kein Kontakt auf der gewählten Seite des Hebels)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the tool radius %1 mm is larger than this curve's tightest concave radius %2 mm: the offset path degenerates</source>
+        <translation>der Werkzeugradius %1 mm ist größer als der engste konkave Radius %2 mm dieser Kurve: die versetzte Bahn entartet</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the tool radius %1 mm is not smaller than the radius %2 mm of this concave arc: the offset path degenerates</source>
+        <translation>der Werkzeugradius %1 mm ist nicht kleiner als der Radius %2 mm dieses konkaven Bogens: die versetzte Bahn entartet</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the offset segments do not meet at this corner</source>
+        <translation>die versetzten Segmente treffen sich an dieser Ecke nicht</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the tool radius %1 mm is too large here: at its concave corners the offset of this segment would have to be trimmed beyond its ends</source>
+        <translation>der Werkzeugradius %1 mm ist hier zu groß: an seinen konkaven Ecken müsste die versetzte Bahn dieses Segments über seine Enden hinaus gekürzt werden</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>must be a finite length of at least %1 mm (got %2)</source>
+        <translation>muss eine endliche Länge von mindestens %1 mm sein (ist %2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 mm makes %2 steps on this %3 mm path; the seed method takes at most %4: a step of at least %5 mm</source>
+        <translation>%1 mm ergibt %2 Schritte auf dieser %3 mm langen Bahn; das Ausgangsverfahren nimmt höchstens %4: eine Schrittweite von mindestens %5 mm</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>is empty</source>
+        <translation>ist leer</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>coordinates must be finite, at most 10⁶ mm, and the bulge finite</source>
+        <translation>die Koordinaten müssen endlich und höchstens 10⁶ mm sein, der Bulge endlich</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>a path needs at least two points</source>
+        <translation>eine Bahn braucht mindestens zwei Punkte</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>repeats the previous point</source>
+        <translation>wiederholt den vorigen Punkt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>an arc (bulge %1) must keep its height, but z goes from %2 to %3</source>
+        <translation>ein Bogen (Bulge %1) muss seine Höhe halten, aber z geht von %2 auf %3</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>an arc needs two distinct points in the XY plane</source>
+        <translation>ein Bogen braucht zwei verschiedene Punkte in der XY-Ebene</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the arc (bulge %1) reaches %2 mm from the origin; a path must stay within %3 mm</source>
+        <translation>der Bogen (Bulge %1) reicht %2 mm vom Ursprung weg; eine Bahn muss innerhalb von %3 mm bleiben</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>a tangent line joins two arcs; segment %1 is %2</source>
+        <translation>eine Tangente verbindet zwei Bögen; Segment %1 ist %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>segment %1 is not a circle (its radius must be a finite number &gt; 0, its centre finite)</source>
+        <translation>Segment %1 ist kein Kreis (sein Radius muss eine endliche Zahl &gt; 0 sein, sein Mittelpunkt endlich)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>both arcs lie on the same circle, so they already meet tangentially: no line fits between them</source>
+        <translation>beide Bögen liegen auf demselben Kreis und treffen sich daher bereits tangential: keine Gerade passt dazwischen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the circle of segment %1 lies inside that of segment %2, so the two circles have no common tangent</source>
+        <translation>der Kreis von Segment %1 liegt in dem von Segment %2, daher haben die beiden Kreise keine gemeinsame Tangente</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>no tangent line fits: %1</source>
+        <translation>keine Tangente passt: %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the circles touch at (%1, %2): the arcs can meet there directly, without a line</source>
+        <translation>die Kreise berühren sich in (%1; %2): die Bögen können sich dort direkt treffen, ohne Gerade</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 runs clockwise around the rotation centre (its polar angle would not grow from segment %2 to segment %3)</source>
+        <translation>%1 läuft im Uhrzeigersinn um das Drehzentrum (ihr Polarwinkel würde von Segment %2 bis Segment %3 nicht wachsen)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 touches segment %2 on the near side of its circle, but the arc follows the far side (outer branch)</source>
+        <translation>%1 berührt Segment %2 auf der nahen Seite seines Kreises, aber der Bogen folgt der fernen Seite (Zweig „außen“)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 touches segment %2 on the far side of its circle, but the arc follows the near side (inner branch)</source>
+        <translation>%1 berührt Segment %2 auf der fernen Seite seines Kreises, aber der Bogen folgt der nahen Seite (Zweig „innen“)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>with %1 the window of segment %2 would be empty: its end would move onto its start %3°</source>
+        <translation>mit %1 wäre das Fenster von Segment %2 leer: sein Ende rückte auf seinen Anfang %3°</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>with %1 the window of segment %2 would be empty or reversed: its start would move to %3°, not before its end %4°</source>
+        <translation>mit %1 wäre das Fenster von Segment %2 leer oder umgekehrt: sein Anfang rückte auf %3°, nicht vor sein Ende %4°</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>has no segment to continue</source>
+        <translation>hat kein Segment, das sich fortsetzen ließe</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>there is no segment %1: rows are 0 .. %2</source>
+        <translation>es gibt kein Segment %1: die Zeilen sind 0 .. %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a contour of one segment must be a circle; segment %1 is %2</source>
+        <translation>eine Kontur aus einem Segment muss ein Kreis sein; Segment %1 ist %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>segment %1 is not a circle</source>
+        <translation>Segment %1 ist kein Kreis</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the follower ray at the end %1° of segment %2 misses its circle, so it has no end point</source>
+        <translation>der Strahl des Stößels am Ende %1° von Segment %2 verfehlt dessen Kreis, daher hat es keinen Endpunkt</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>segment %1 has no direction at its end point</source>
+        <translation>Segment %1 hat an seinem Endpunkt keine Richtung</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>segment %1 does not run counter-clockwise around the rotation centre at its end point (%2, %3) (its polar angle does not grow there)</source>
+        <translation>Segment %1 läuft an seinem Endpunkt (%2; %3) nicht gegen den Uhrzeigersinn um das Drehzentrum (sein Polarwinkel wächst dort nicht)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the point must be finite (got (%1, %2))</source>
+        <translation>der Punkt muss endlich sein (ist (%1; %2))</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the point is the rotation centre, which no arc of the contour can reach</source>
+        <translation>der Punkt ist das Drehzentrum, das kein Bogen der Kontur erreichen kann</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the point is the end point (%1, %2) of segment %3: an arc needs a second point</source>
+        <translation>der Punkt ist der Endpunkt (%1; %2) von Segment %3: ein Bogen braucht einen zweiten Punkt</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the point is on the tangent: use a line (an arc through it would need a radius or centre beyond 10⁶ mm, the largest length a project holds)</source>
+        <translation>der Punkt liegt auf der Tangente: eine Gerade verwenden (ein Bogen durch ihn bräuchte einen Radius oder Mittelpunkt jenseits von 10⁶ mm, der größten Länge, die ein Projekt fasst)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the arc's radius would be %1 mm, below %2 mm, the smallest a project holds</source>
+        <translation>der Radius des Bogens wäre %1 mm, unter %2 mm, dem kleinsten, den ein Projekt fasst</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the end point of segment %1 is not on the outer branch of the circle (centre (%2, %3), radius %4 mm)</source>
+        <translation>der Endpunkt von Segment %1 liegt nicht auf dem Zweig „außen“ des Kreises (Mittelpunkt (%2; %3), Radius %4 mm)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the end point of segment %1 is not on the inner branch of the circle (centre (%2, %3), radius %4 mm)</source>
+        <translation>der Endpunkt von Segment %1 liegt nicht auf dem Zweig „innen“ des Kreises (Mittelpunkt (%2; %3), Radius %4 mm)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the point lies on the near side of the circle (centre (%1, %2), radius %3 mm) as seen from the rotation centre, but the arc leaves segment %4 on its far side (outer branch): the follower ray would not meet the arc at the point</source>
+        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, auf der nahen Seite des Kreises (Mittelpunkt (%1; %2), Radius %3 mm), aber der Bogen verlässt Segment %4 auf dessen ferner Seite (Zweig „außen“): der Strahl des Stößels träfe den Bogen nicht im Punkt</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>the point lies on the far side of the circle (centre (%1, %2), radius %3 mm) as seen from the rotation centre, but the arc leaves segment %4 on its near side (inner branch): the follower ray would not meet the arc at the point</source>
+        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, auf der fernen Seite des Kreises (Mittelpunkt (%1; %2), Radius %3 mm), aber der Bogen verlässt Segment %4 auf dessen naher Seite (Zweig „innen“): der Strahl des Stößels träfe den Bogen nicht im Punkt</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>the point lies behind the end point of segment %1 as seen from the rotation centre: the arc along the circle (centre (%2, %3), radius %4 mm) would pass to its near side and run back before reaching it</source>
+        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, hinter dem Endpunkt von Segment %1: der Bogen entlang des Kreises (Mittelpunkt (%2; %3), Radius %4 mm) ginge auf dessen nahe Seite über und liefe zurück, bevor er ihn erreicht</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the point lies behind the end point of segment %1 as seen from the rotation centre: the arc along the circle (centre (%2, %3), radius %4 mm) would pass to its far side and run back before reaching it</source>
+        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, hinter dem Endpunkt von Segment %1: der Bogen entlang des Kreises (Mittelpunkt (%2; %3), Radius %4 mm) ginge auf dessen ferne Seite über und liefe zurück, bevor er ihn erreicht</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the point lies on the follower ray at the end %1° of segment %2: the arc's window would be empty</source>
+        <translation>der Punkt liegt auf dem Strahl des Stößels am Ende %1° von Segment %2: das Fenster des Bogens wäre leer</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the arc would end at %1° (the polar angle of the point), not before the end %2° of segment %3, whose window would be empty or reversed</source>
+        <translation>der Bogen endete bei %1° (dem Polarwinkel des Punkts), nicht vor dem Ende %2° von Segment %3, dessen Fenster leer oder umgekehrt wäre</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the point is the end point of segment %1, which would have no length left</source>
+        <translation>der Punkt ist der Endpunkt von Segment %1, dem keine Länge bliebe</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>with its start point moved to the point, segment %1 would no longer run counter-clockwise from %2° to its end %3°</source>
+        <translation>mit seinem Anfangspunkt im Punkt liefe Segment %1 nicht mehr gegen den Uhrzeigersinn von %2° bis zu seinem Ende %3°</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the tolerance must be between %1 and %2 mm, not %3</source>
+        <translation>die Toleranz muss zwischen %1 und %2 mm liegen, nicht %3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the tool radius must be above 0 and at most %1 mm, not %2</source>
+        <translation>der Werkzeugradius muss über 0 und höchstens %1 mm sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>with cutter compensation the tool would have to reach past the next programmed arc at a concave corner of this segment, which a controller offsetting one move at a time turns into a cut through the part; export the tool-centre path (without --compensation) or use a coarser --tolerance</source>
+        <translation>mit Werkzeugradiuskorrektur müsste das Werkzeug an einer konkaven Ecke dieses Segments über den nächsten programmierten Bogen hinausreichen, was eine Steuerung, die Satz für Satz versetzt, in einen Schnitt durch das Werkstück verwandelt; die Werkzeugmittelpunktsbahn exportieren (ohne --compensation) oder eine gröbere --tolerance verwenden</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 must be above 0 and at most %2 mm, not %3</source>
+        <translation>%1 muss über 0 und höchstens %2 mm sein, nicht %3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the feed must be above 0 and at most %1 mm/min, not %2</source>
+        <translation>der Vorschub muss über 0 und höchstens %1 mm/min sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the tool number must be from 1 to 99999, not %1</source>
+        <translation>die Werkzeugnummer muss zwischen 1 und 99999 liegen, nicht %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a step-down of %1 mm makes %2 passes for a depth of %3 mm; at most %4 are made</source>
+        <translation>eine Zustellung von %1 mm ergibt %2 Durchgänge für eine Tiefe von %3 mm; höchstens %4 werden gefahren</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>a cam table has from %1 to %2 points, not %3</source>
+        <translation>eine Kurvenscheibentabelle hat %1 bis %2 Punkte, nicht %3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>is not a finite number (%1): the result is beyond what a double can hold</source>
+        <translation>ist keine endliche Zahl (%1): das Ergebnis übersteigt, was ein double fassen kann</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>must be at least 1 (got 0)</source>
+        <translation>muss mindestens 1 sein (ist 0)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is not a finite number, which a file cannot hold</source>
+        <translation>ist keine endliche Zahl; eine Datei kann sie nicht speichern</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot open: %1</source>
+        <translation>kann nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot examine: %1</source>
+        <translation>kann nicht untersucht werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot read: %1</source>
+        <translation>kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is %1, not a regular file: not read</source>
+        <translation>ist %1, keine reguläre Datei: nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is %1 MiB (%2 bytes): files larger than %3 MiB are not read</source>
+        <translation>ist %1 MiB groß (%2 Bytes): Dateien über %3 MiB werden nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>grew past %1 MiB while it was read: larger files are not read</source>
+        <translation>wuchs beim Lesen über %1 MiB: größere Dateien werden nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>no file name given</source>
+        <translation>kein Dateiname angegeben</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot examine %1: %2</source>
+        <translation>%1 kann nicht untersucht werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot follow its symbolic links: %1</source>
+        <translation>ihren symbolischen Links kann nicht gefolgt werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot read the symbolic link %1: %2</source>
+        <translation>der symbolische Link %1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is a link to an open file descriptor, not a file: not replaced</source>
+        <translation>ist ein Link auf einen offenen Dateideskriptor, keine Datei: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 is a link to an open file descriptor, not a file: not replaced</source>
+        <translation>%1 ist ein Link auf einen offenen Dateideskriptor, keine Datei: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>is %1, not a regular file: not replaced</source>
+        <translation>ist %1, keine reguläre Datei: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 is %2, not a regular file: not replaced</source>
+        <translation>%1 ist %2, keine reguläre Datei: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>names a folder, not a file</source>
+        <translation>bezeichnet einen Ordner, keine Datei</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot create a temporary file in %1: %2</source>
+        <translation>in %1 kann keine temporäre Datei angelegt werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot give the new file the owner of %1: %2</source>
+        <translation>die neue Datei kann nicht den Eigentümer von %1 erhalten: %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>cannot give the new file the permissions of %1: %2</source>
+        <translation>die neue Datei kann nicht die Zugriffsrechte von %1 erhalten: %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>cannot flush %1 to disk: %2</source>
+        <translation>%1 kann nicht auf den Datenträger geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 became %2 while it was written: not replaced</source>
+        <translation>%1 ist während des Schreibens %2 geworden: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>cannot replace %1: %2</source>
+        <translation>%1 kann nicht ersetzt werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>replaced, but cannot close %1: %2</source>
+        <translation>ersetzt, aber %1 kann nicht geschlossen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>replaced, but cannot flush the folder %1 to disk: %2</source>
+        <translation>ersetzt, aber der Ordner %1 kann nicht auf den Datenträger geschrieben werden: %2</translation>
     </message>
     <message>
         <location line="+19" />
@@ -1158,7 +1759,7 @@
 <context>
     <name>cam::ControlPointsPanel</name>
     <message>
-        <location filename="../../src/app/views/control_points_panel.cpp" line="+96" />
+        <location filename="../../src/app/views/control_points_panel.cpp" line="+41" />
         <source>x [mm]</source>
         <translation>x [mm]</translation>
     </message>

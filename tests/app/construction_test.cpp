@@ -130,14 +130,15 @@ TEST_F(Construction, ATangentLineThatCannotBeIsRefusedWithAMessageAndNothingChan
     const Project before = window.document()->project();
     // No row selected.
     EXPECT_FALSE(ContourEdits::tangentLineToNext(*window.document(), -1).ok());
-    // A circle inside the other: no common tangent; the message names the two segments.
+    // A circle inside the other: no common tangent; the message names the two segments as the
+    // table numbers them.
     trigger("actionNew");
     typeInto(1, SegmentTableModel::Radius, "3");
     const Project nested = window.document()->project();
     const EditOutcome refused = ContourEdits::tangentLineToNext(*window.document(), 0);
     ASSERT_FALSE(refused.ok());
-    EXPECT_TRUE(refused.problem.contains("contour[0]")) << refused.problem.toStdString();
-    EXPECT_TRUE(refused.problem.contains("contour[1]")) << refused.problem.toStdString();
+    EXPECT_TRUE(refused.problem.contains("the circle of segment 1 lies inside that of segment 0"))
+        << refused.problem.toStdString();
     EXPECT_EQ(window.document()->project(), nested);
     EXPECT_NE(nested, before);
 }

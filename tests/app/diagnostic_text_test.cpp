@@ -8,13 +8,20 @@
 #include <QLabel>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include <tuple>
 
 #include "app_test_support.h"
+#include "construction/tangents.h"
+#include "core/test_projects.h"
+#include "fillet/fillet.h"
+#include "follower/follower.h"
 #include "mainwindow.h"
-#include "views/kinematics_plots.h"
 #include "messages/diagnostic_text.h"
 #include "models/segment_table_model.h"
+#include "project/validate.h"
+#include "timing/tool_path.h"
 #include "translations.h"
+#include "views/kinematics_plots.h"
 
 namespace cam {
 namespace {
@@ -214,6 +221,140 @@ TEST(DiagnosticText, TheCoreKeepsItsEnglishForTheCommandLine) {
                          "contour[1].radius: must be > 0 (got -2.5)",
                          "contour[0]/contour[1]: gap of 0.5° between phi_end 120 and "
                          "phi_start 120.5"}));
+}
+
+/// The window's line of a diagnostic in German.
+QString germanLine(const Diagnostic& d) {
+    const Language german(kGerman);
+    return DiagnosticText::line(d);
+}
+
+TEST(DiagnosticText, ARoundCornerTooTightForTheRadiusIsExplainedInGerman) {
+    // The square |x|, |y| <= 10: at its right-angled corners the tangent points sit rho from
+    // the corner, so the 20 mm sides allow radii below 20 mm; 25 mm would leave the side before.
+    const Eigen::Vector2d corners[] = {{10, -10}, {10, 10}, {-10, 10}, {-10, -10}};
+    std::vector<SegmentSpec> square;
+    double near = -45.0;
+    for (int k = 0; k < 4; ++k) {
+        SegmentSpec side{Line{corners[k], corners[(k + 1) % 4]}};
+        std::tie(side.phiStartDeg, side.phiEndDeg) = lineWindowDeg(side, near);
+        square.push_back(side);
+        near = side.phiEndDeg;
+    }
+    const auto rounded = filletJoint(square, 1, 25.0);
+    ASSERT_FALSE(rounded.ok());
+    const Diagnostic& d = rounded.errors().front();
+    EXPECT_EQ(d.text(),
+              "contour[0]/contour[1]: radius 25 mm is too large: only radii below 20 mm fit (the "
+              "tangent point would leave contour[0])");
+    EXPECT_EQ(germanLine(d),
+              QStringLiteral("Übergang zwischen Segment 0 und 1: Radius 25 mm ist zu groß: nur "
+                             "Radien unter 20 mm passen (der Berührpunkt würde Segment 0 "
+                             "verlassen)"));
+}
+
+TEST(DiagnosticText, AToolWiderThanAConcaveArcIsExplainedInGerman) {
+    // The six-lobe cam's notches are concave arcs of radius 4.840705970000002 mm (its file),
+    // shown to 10 significant digits; segment 0 is one.
+    const auto path = toolPathFromContour(test::sixLobe(), 6.0);
+    ASSERT_FALSE(path.ok());
+    const Diagnostic& d = path.errors().front();
+    EXPECT_EQ(
+        d.text(),
+        "contour[0]: the tool radius 6 mm is not smaller than the radius 4.84070597 mm of this "
+        "concave arc: the offset path degenerates");
+    EXPECT_EQ(germanLine(d),
+              QStringLiteral("Segment 0: der Werkzeugradius 6 mm ist nicht kleiner als der "
+                             "Radius 4,84070597 mm dieses konkaven Bogens: die versetzte Bahn "
+                             "entartet"));
+}
+
+TEST(DiagnosticText, ARollerWiderThanAConcaveArcIsExplainedInGerman) {
+    // A 5 mm roller does not fit the six-lobe cam's concave arcs of radius 4.840705970000002 mm.
+    FollowerSpec spec;
+    spec.type = FollowerType::Roller;
+    spec.radius = 5.0;
+    const auto model = FollowerModel::build(test::sixLobe(), spec);
+    ASSERT_FALSE(model.ok());
+    const Diagnostic& d = model.errors().front();
+    EXPECT_EQ(d.text(),
+              "contour[0].radius: the roller radius 5 mm is not smaller than this concave arc's "
+              "radius 4.84070597 mm: the roller cannot follow it");
+    EXPECT_EQ(
+        germanLine(d),
+        QStringLiteral("Segment 0, Radius [mm]: der Rollenradius 5 mm ist nicht kleiner "
+                       "als der Radius 4,84070597 mm dieses konkaven Bogens: die Rolle kann ihm "
+                       "nicht folgen"));
+}
+
+TEST(DiagnosticText, AnArmTooShortForTheCamIsExplainedInGerman) {
+    // The six-lobe cam reaches out to 29 mm; from a pivot 60 mm out a 20 mm arm with a 2 mm
+    // roller reaches 22 mm, short of the cam.
+    FollowerSpec spec;
+    spec.type = FollowerType::Roller;
+    spec.radius = 2.0;
+    spec.motion = FollowerMotion::Oscillating;
+    spec.pivot = {60.0, 0.0};
+    spec.armLength = 20.0;
+    spec.arm = ArmSide::Ccw;
+    const auto model = FollowerModel::build(test::sixLobe(), spec);
+    ASSERT_FALSE(model.ok());
+    const Diagnostic& d = model.errors().front();
+    ASSERT_EQ(d.code, DiagnosticCode::ArmTooShort);
+    const std::string english = d.message;
+    EXPECT_EQ(english.rfind("is too short: at ", 0), 0u) << english;
+    EXPECT_NE(english.find(" mm from the pivot, and the roller reaches only 22 mm"),
+              std::string::npos)
+        << english;
+    const QString german = germanLine(d);
+    EXPECT_TRUE(german.startsWith(QStringLiteral("Stößel, Hebellänge: ist zu kurz: bei ")))
+        << german.toStdString();
+    EXPECT_TRUE(
+        german.contains(QStringLiteral("vom Drehpunkt entfernt, und die Rolle reicht "
+                                       "nur 22 mm weit")))
+        << german.toStdString();
+}
+
+TEST(DiagnosticText, EveryDroppedTangentIsExplainedInGerman) {
+    // A base circle R20 at the origin and a nose R6 at (0, 24) on the inner branch. Their two
+    // outer tangents touch the base at 20·(±cos θ, sin θ) and the nose at (0, 24) + 6·(±cos θ,
+    // sin θ), sin θ = 14/24, cos θ = √380/24: (±16.2447, 11.6667) and (±4.8734, 27.5). The
+    // left one runs clockwise; the right one touches the nose on its far side, where the inner
+    // branch does not run.
+    const std::vector<SegmentSpec> lobe{SegmentSpec{Arc{{0, 0}, 20, Branch::Outer}, -90.0, 90.0},
+                                        SegmentSpec{Arc{{0, 24}, 6, Branch::Inner}, 90.0, 270.0}};
+    const auto joined = tangentLineJoint(lobe, 1);
+    ASSERT_FALSE(joined.ok());
+    const Diagnostic& d = joined.errors().front();
+    EXPECT_EQ(d.text(),
+              "contour[0]/contour[1]: no tangent line fits: the outer tangent from (-16.2447, "
+              "11.6667) on contour[0] to (-4.8734, 27.5) on contour[1] runs clockwise around the "
+              "rotation centre (its polar angle would not grow from contour[0] to contour[1]); "
+              "the outer tangent from (16.2447, 11.6667) on contour[0] to (4.8734, 27.5) on "
+              "contour[1] touches contour[1] on the far side of its circle, but the arc follows "
+              "the near side (inner branch)");
+    EXPECT_EQ(germanLine(d),
+              QStringLiteral(
+                  "Übergang zwischen Segment 0 und 1: keine Tangente passt: die äußere Tangente "
+                  "von (-16,2447; 11,6667) auf Segment 0 nach (-4,8734; 27,5) auf Segment 1 "
+                  "läuft im Uhrzeigersinn um das Drehzentrum (ihr Polarwinkel würde von Segment "
+                  "0 bis Segment 1 nicht wachsen); die äußere Tangente von (16,2447; 11,6667) "
+                  "auf Segment 0 nach (4,8734; 27,5) auf Segment 1 berührt Segment 1 auf der "
+                  "fernen Seite seines Kreises, aber der Bogen folgt der nahen Seite (Zweig "
+                  "„innen“)"));
+}
+
+TEST(DiagnosticText, AFileThatCannotBeOpenedKeepsTheSystemsWords) {
+    const std::string path = "/nonexistent-camwright-folder/cam.cam.json";
+    const auto loaded = loadProjectFile(path);
+    ASSERT_FALSE(loaded.ok());
+    const Diagnostic& d = loaded.errors().front();
+    // The operating system's reason (ENOENT, in the C library's English) is an argument as it
+    // is; the rest is the window's.
+    EXPECT_EQ(d.text(), path + ": cannot open: No such file or directory");
+    EXPECT_EQ(germanLine(d),
+              QString::fromStdString(path) +
+                  QStringLiteral(": kann nicht geöffnet werden: No such file or directory"));
 }
 
 }  // namespace

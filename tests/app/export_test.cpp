@@ -161,11 +161,12 @@ TEST(ExportInWindow, AFailureNamesTheProblemAndLosesNothing) {
     request.gcode.toolRadiusMm = 6.0;
     request.path = QString::fromStdString(kept);
     QString problem = exportAndWait(window, request);
-    EXPECT_TRUE(problem.contains("contour[")) << problem.toStdString();
+    EXPECT_TRUE(problem.contains("Segment 0: the tool radius 6 mm is not smaller than"))
+        << problem.toStdString();
     EXPECT_EQ(test::readFile(kept), "the old program");
     auto* box = window.findChild<QMessageBox*>("exportProblemBox");
     ASSERT_NE(box, nullptr);
-    EXPECT_TRUE(box->informativeText().contains("contour["))
+    EXPECT_TRUE(box->informativeText().contains("Segment 0: the tool radius 6 mm"))
         << box->informativeText().toStdString();
     closeProblemBox(window);
 

@@ -169,7 +169,7 @@ TEST(FollowerPanel, AnArmThatCannotReachTheCamIsListedNotHidden) {
     ASSERT_TRUE(waitForResult(window));
     const QStringList lines = window.followerPanel()->checkLines();
     ASSERT_EQ(lines.size(), 1);
-    EXPECT_TRUE(lines[0].contains("follower.arm_length")) << lines[0].toStdString();
+    EXPECT_TRUE(lines[0].contains("Follower, arm length: is too short")) << lines[0].toStdString();
     EXPECT_TRUE(lines[0].contains("too short")) << lines[0].toStdString();
     EXPECT_EQ(window.followerPanel()->problemCount(), 1);
     // The kinematics are still shown: only the follower cannot be placed.

@@ -110,7 +110,7 @@ TEST(MachiningHostile, TheWindowExplainsTheStepAndClosesAtOnce) {
         ASSERT_TRUE(waitForTiming(*window.engine(), kPromptMs));
         const auto* status = window.machiningPanel()->findChild<QLabel*>("machiningStatus");
         ASSERT_NE(status, nullptr);
-        EXPECT_TRUE(status->text().contains("machining.step")) << status->text().toStdString();
+        EXPECT_TRUE(status->text().contains("Machining, step: ")) << status->text().toStdString();
         window.close();
         closed.start();
     }

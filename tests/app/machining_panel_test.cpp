@@ -146,7 +146,7 @@ TEST(MachiningPanel, AnArcTrimmedAwayAtItsConcaveCornersIsExplained) {
         if (label->text().startsWith("No machining time")) shown << label->text();
     }
     ASSERT_EQ(shown.size(), 1) << shown.join(" | ").toStdString();
-    EXPECT_TRUE(shown.front().contains("contour[2]: the tool radius 3 mm is too large here"))
+    EXPECT_TRUE(shown.front().contains("Segment 2: the tool radius 3 mm is too large here"))
         << shown.front().toStdString();
     EXPECT_EQ(window.machiningPanel()->timesText(), "— · — · —");
 }

@@ -217,7 +217,7 @@ TEST(MainWindow, ANumberAFileCannotHoldIsNotSavedAndNothingIsWritten) {
     window.document()->undoStack()->push(
         new EditSegment(window.document(), 2, s, EditedField::Radius, "NaN"));
     const QString message = window.saveFile(path);
-    EXPECT_TRUE(message.contains("contour[2].radius: is not a finite number"))
+    EXPECT_TRUE(message.contains("Segment 2, Radius [mm]: is not a finite number"))
         << message.toStdString();
     EXPECT_FALSE(QFile::exists(path));
     EXPECT_TRUE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());

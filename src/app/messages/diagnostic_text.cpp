@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "design/motion_law.h"
+#include "fillet/fillet.h"
 #include "models/design_table_model.h"
 #include "models/segment_table_model.h"
 
@@ -48,6 +49,9 @@ bool argumentsFit(const Diagnostic& d) {
         const bool isName = std::holds_alternative<std::string>(d.args[i]);
         if (isName != (signature[i] == 's')) return false;
     }
+    for (const Diagnostic& reason : d.reasons) {
+        if (!argumentsFit(reason)) return false;
+    }
     return true;
 }
 
@@ -81,6 +85,21 @@ QString term(const std::string& name) {
     if (name == "a whole number") return DiagnosticText::tr("a whole number");
     if (name == "fillet") return DiagnosticText::tr("a fillet");
     if (name == "tangent line") return DiagnosticText::tr("a tangent line");
+    if (name == "the roller") return DiagnosticText::tr("the roller");
+    if (name == "the tip") return DiagnosticText::tr("the tip");
+    if (name == "an arc") return DiagnosticText::tr("an arc");
+    if (name == "a line") return DiagnosticText::tr("a line");
+    if (name == "a Bézier spline") return DiagnosticText::tr("a Bézier spline");
+    if (name == "a Hermite spline") return DiagnosticText::tr("a Hermite spline");
+    if (name == "a folder") return DiagnosticText::tr("a folder");
+    if (name == "a FIFO") return DiagnosticText::tr("a FIFO");
+    if (name == "a character device") return DiagnosticText::tr("a character device");
+    if (name == "a block device") return DiagnosticText::tr("a block device");
+    if (name == "a socket") return DiagnosticText::tr("a socket");
+    if (name == "a special file") return DiagnosticText::tr("a special file");
+    if (name == "the depth") return DiagnosticText::tr("the depth");
+    if (name == "the safe height") return DiagnosticText::tr("the safe height");
+    if (name == "the step-down") return DiagnosticText::tr("the step-down");
     if (const auto law = lawFromName(name)) {
         const QStringList names = DesignTableModel::lawNames();
         const auto index = static_cast<qsizetype>(*law);
@@ -88,6 +107,61 @@ QString term(const std::string& name) {
     }
     return QString::fromStdString(name);
 }
+
+/// Why a fillet radius fails (a name of fillet_reason); the neighbour it leaves is one of the
+/// joint's two segments, the diagnostic's places.
+QString filletReason(const Diagnostic& d, std::size_t i) {
+    const std::string& name = std::get<std::string>(d.args[i]);
+    const bool joint = d.places.size() == 2;
+    if (name == fillet_reason::kLeavesLeft && joint) {
+        return DiagnosticText::tr("the tangent point would leave segment %1")
+            .arg(d.places[0].segment);
+    }
+    if (name == fillet_reason::kLeavesRight && joint) {
+        return DiagnosticText::tr("the tangent point would leave segment %1")
+            .arg(d.places[1].segment);
+    }
+    if (name == fillet_reason::kNoCircle)
+        return DiagnosticText::tr(
+            "no circle of that radius touches both neighbours inside the corner");
+    if (name == fillet_reason::kNoLargerCircle)
+        return DiagnosticText::tr("no larger circle touches both neighbours inside the corner");
+    if (name == fillet_reason::kRayNotOnce) {
+        return DiagnosticText::tr(
+            "the follower ray would not meet the fillet arc exactly once: it would pass the "
+            "rotation centre or turn back as seen from it");
+    }
+    if (name == fillet_reason::kRadiusLimit)
+        return DiagnosticText::tr("radii are limited to 10⁶ mm");
+    return QString::fromStdString(name);
+}
+
+QString argument(const Diagnostic& d, std::size_t i);
+
+/// "the outer tangent from (1, 2) on segment 3 to (4, 5) on segment 6": the seven arguments
+/// from `first` on (the kind, a point, a segment, a point, a segment).
+QString tangentName(const Diagnostic& d, std::size_t first) {
+    auto a = [&](std::size_t i) { return argument(d, first + i); };
+    const std::string& kind = std::get<std::string>(d.args[first]);
+    if (kind == "outer") {
+        return DiagnosticText::tr(
+                   "the outer tangent from (%1, %2) on segment %3 to (%4, %5) on "
+                   "segment %6")
+            .arg(a(1), a(2), a(3), a(4), a(5), a(6));
+    }
+    if (kind == "inner") {
+        return DiagnosticText::tr(
+                   "the inner tangent from (%1, %2) on segment %3 to (%4, %5) on "
+                   "segment %6")
+            .arg(a(1), a(2), a(3), a(4), a(5), a(6));
+    }
+    return DiagnosticText::tr(
+               "the tangent “%1” from (%2, %3) on segment %4 to (%5, %6) on "
+               "segment %7")
+        .arg(a(0), a(1), a(2), a(3), a(4), a(5), a(6));
+}
+
+QString translatedMessage(const Diagnostic& d);
 
 QString argument(const Diagnostic& d, std::size_t i) {
     const char kind = diagnosticCodeSignature(d.code)[i];
@@ -258,6 +332,8 @@ bool placedInFile(Code code) {
 
 QString translatedMessage(const Diagnostic& d) {
     auto a = [&](std::size_t i) { return argument(d, i); };
+    const QString tangent =
+        diagnosticCodeSignature(d.code).starts_with("snnknnk") ? tangentName(d, 0) : QString();
     const QString phiStart = columnName(SegmentTableModel::PhiStart);
     const QString phiEnd = columnName(SegmentTableModel::PhiEnd);
     switch (d.code) {
@@ -464,6 +540,363 @@ QString translatedMessage(const Diagnostic& d) {
         case Code::RowValueNotFinite:
             return DiagnosticText::tr("line %1: %2 must be a finite number (got “%3”)")
                 .arg(a(0), a(1), a(2));
+        case Code::FilletContourInvalid:
+            return DiagnosticText::tr("the contour is not valid, so the joint cannot be rounded");
+        case Code::FilletNeedsArcsAndLines:
+            return DiagnosticText::tr("fillets join arcs and lines; segment %1 is neither")
+                .arg(a(0));
+        case Code::FilletAlreadyTangent:
+            return DiagnosticText::tr(
+                       "the segments already meet tangentially (their tangents differ by %1°, at "
+                       "most %2° counts as tangent); there is no corner to round")
+                .arg(a(0), a(1));
+        case Code::FilletRadiusNeedsArcsAndLines:
+            return DiagnosticText::tr(
+                       "radius %1 mm does not fit: fillets join arcs and lines; segment %2 is "
+                       "neither")
+                .arg(a(0), a(1));
+        case Code::FilletRadiusAlreadyTangent:
+            return DiagnosticText::tr(
+                       "radius %1 mm does not fit: the segments already meet tangentially (their "
+                       "tangents differ by %2°, at most %3° counts as tangent); there is no "
+                       "corner to round")
+                .arg(a(0), a(1), a(2));
+        case Code::FilletNothingFits:
+            return DiagnosticText::tr("no fillet radius of at least %1 mm fits at this joint (%2)")
+                .arg(a(0), filletReason(d, 1));
+        case Code::FilletRadiusNothingFits:
+            return DiagnosticText::tr(
+                       "radius %1 mm does not fit: no fillet radius of at least %2 mm fits at "
+                       "this joint (%3)")
+                .arg(a(0), a(1), filletReason(d, 2));
+        case Code::FilletRadiusTooSmall:
+            return DiagnosticText::tr(
+                       "radius %1 mm is too small: a fillet radius is at least %2 mm, the "
+                       "smallest radius a project holds")
+                .arg(a(0), a(1));
+        case Code::FilletRadiusNotPositive:
+            return DiagnosticText::tr("radius %1 mm must be a number > 0: radii below %2 mm fit")
+                .arg(a(0), a(1));
+        case Code::FilletRadiusTooLarge:
+            return DiagnosticText::tr("radius %1 mm is too large: only radii below %2 mm fit (%3)")
+                .arg(a(0), a(1), filletReason(d, 2));
+        case Code::FilletRadiusInGap:
+            return DiagnosticText::tr(
+                       "radius %1 mm does not fit (%2), although most radii below %3 mm do")
+                .arg(a(0), filletReason(d, 1), a(2));
+        case Code::RollerNotSmallerThanArc:
+            return DiagnosticText::tr(
+                       "the roller radius %1 mm is not smaller than this concave arc's radius %2 "
+                       "mm: the roller cannot follow it")
+                .arg(a(0), a(1));
+        case Code::PivotInsideCam:
+            return DiagnosticText::tr(
+                       "is inside the cam: the pivot turns on a circle of radius %1 mm round the "
+                       "cam centre, but the profile reaches %2 mm at %3°; move it farther out")
+                .arg(a(0), a(1), a(2));
+        case Code::ArmTooShort:
+            return DiagnosticText::tr(
+                       "is too short: at %1° the cam is %2 mm from the pivot, and %3 reaches "
+                       "only %4 mm")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArmTooLong:
+            return DiagnosticText::tr(
+                       "is too long: at %1° %2 passes beyond the whole cam (at most %3 mm from "
+                       "the pivot)")
+                .arg(a(0), a(1), a(2));
+        case Code::ArmNoContact:
+            return DiagnosticText::tr(
+                       "does not let %1 touch the cam at %2° (no contact on the chosen side of "
+                       "the arm)")
+                .arg(a(0), a(1));
+        case Code::ToolAboveCurveRadius:
+            return DiagnosticText::tr(
+                       "the tool radius %1 mm is larger than this curve's tightest concave radius "
+                       "%2 mm: the offset path degenerates")
+                .arg(a(0), a(1));
+        case Code::ToolNotBelowArcRadius:
+            return DiagnosticText::tr(
+                       "the tool radius %1 mm is not smaller than the radius %2 mm of this "
+                       "concave arc: the offset path degenerates")
+                .arg(a(0), a(1));
+        case Code::OffsetCornerUnmet:
+            return DiagnosticText::tr("the offset segments do not meet at this corner");
+        case Code::ToolTrimsSegment:
+            return DiagnosticText::tr(
+                       "the tool radius %1 mm is too large here: at its concave corners the "
+                       "offset of this segment would have to be trimmed beyond its ends")
+                .arg(a(0));
+        case Code::SeedStepTooSmall:
+            return DiagnosticText::tr("must be a finite length of at least %1 mm (got %2)")
+                .arg(a(0), a(1));
+        case Code::SeedStepTooMany:
+            return DiagnosticText::tr(
+                       "%1 mm makes %2 steps on this %3 mm path; the seed method takes at most "
+                       "%4: a step of at least %5 mm")
+                .arg(a(0), a(1), a(2), a(3), a(4));
+        case Code::PathEmpty:
+            return DiagnosticText::tr("is empty");
+        case Code::PathPointInvalid:
+            return DiagnosticText::tr(
+                "coordinates must be finite, at most 10⁶ mm, and the bulge finite");
+        case Code::PathTooFewPoints:
+            return DiagnosticText::tr("a path needs at least two points");
+        case Code::PathPointRepeated:
+            return DiagnosticText::tr("repeats the previous point");
+        case Code::PathArcChangesHeight:
+            return DiagnosticText::tr(
+                       "an arc (bulge %1) must keep its height, but z goes from %2 to %3")
+                .arg(a(0), a(1), a(2));
+        case Code::PathArcNoChord:
+            return DiagnosticText::tr("an arc needs two distinct points in the XY plane");
+        case Code::PathArcTooFar:
+            return DiagnosticText::tr(
+                       "the arc (bulge %1) reaches %2 mm from the origin; a path must stay "
+                       "within %3 mm")
+                .arg(a(0), a(1), a(2));
+        case Code::TangentNeedsArcs:
+            return DiagnosticText::tr("a tangent line joins two arcs; segment %1 is %2")
+                .arg(a(0), a(1));
+        case Code::TangentNotCircle:
+            return DiagnosticText::tr(
+                       "segment %1 is not a circle (its radius must be a finite number > 0, its "
+                       "centre finite)")
+                .arg(a(0));
+        case Code::TangentSameCircle:
+            return DiagnosticText::tr(
+                "both arcs lie on the same circle, so they already meet tangentially: no line "
+                "fits between them");
+        case Code::TangentCircleInside:
+            return DiagnosticText::tr(
+                       "the circle of segment %1 lies inside that of segment %2, so the two "
+                       "circles have no common tangent")
+                .arg(a(0), a(1));
+        case Code::TangentNoneFits: {
+            QStringList reasons;
+            for (const Diagnostic& reason : d.reasons) reasons << translatedMessage(reason);
+            return DiagnosticText::tr("no tangent line fits: %1")
+                .arg(reasons.join(QStringLiteral("; ")));
+        }
+        case Code::TangentTouch:
+            return DiagnosticText::tr(
+                       "the circles touch at (%1, %2): the arcs can meet there directly, without "
+                       "a line")
+                .arg(a(0), a(1));
+        case Code::TangentClockwise:
+            return DiagnosticText::tr(
+                       "%1 runs clockwise around the rotation centre (its polar angle would not "
+                       "grow from segment %2 to segment %3)")
+                .arg(tangent, a(3), a(6));
+        case Code::TangentOnNearSide:
+            return DiagnosticText::tr(
+                       "%1 touches segment %2 on the near side of its circle, but the arc "
+                       "follows the far side (outer branch)")
+                .arg(tangent, a(7));
+        case Code::TangentOnFarSide:
+            return DiagnosticText::tr(
+                       "%1 touches segment %2 on the far side of its circle, but the arc follows "
+                       "the near side (inner branch)")
+                .arg(tangent, a(7));
+        case Code::TangentEmptiesLeft:
+            return DiagnosticText::tr(
+                       "with %1 the window of segment %2 would be empty: its end would move onto "
+                       "its start %3°")
+                .arg(tangent, a(3), a(7));
+        case Code::TangentReversesRight:
+            return DiagnosticText::tr(
+                       "with %1 the window of segment %2 would be empty or reversed: its start "
+                       "would move to %3°, not before its end %4°")
+                .arg(tangent, a(6), a(7), a(8));
+        case Code::ArcNoSegment:
+            return DiagnosticText::tr("has no segment to continue");
+        case Code::ArcNoSuchRow:
+            return DiagnosticText::tr("there is no segment %1: rows are 0 .. %2").arg(a(0), a(1));
+        case Code::ArcSingleNotCircle:
+            return DiagnosticText::tr("a contour of one segment must be a circle; segment %1 is %2")
+                .arg(a(0), a(1));
+        case Code::ArcRowNotCircle:
+            return DiagnosticText::tr("segment %1 is not a circle").arg(a(0));
+        case Code::ArcRayMissesEnd:
+            return DiagnosticText::tr(
+                       "the follower ray at the end %1° of segment %2 misses its circle, so it "
+                       "has no end point")
+                .arg(a(0), a(1));
+        case Code::ArcNoEndDirection:
+            return DiagnosticText::tr("segment %1 has no direction at its end point").arg(a(0));
+        case Code::ArcEndClockwise:
+            return DiagnosticText::tr(
+                       "segment %1 does not run counter-clockwise around the rotation centre at "
+                       "its end point (%2, %3) (its polar angle does not grow there)")
+                .arg(a(0), a(1), a(2));
+        case Code::ArcPointNotFinite:
+            return DiagnosticText::tr("the point must be finite (got (%1, %2))").arg(a(0), a(1));
+        case Code::ArcPointAtCentre:
+            return DiagnosticText::tr(
+                "the point is the rotation centre, which no arc of the contour can reach");
+        case Code::ArcPointIsEnd:
+            return DiagnosticText::tr(
+                       "the point is the end point (%1, %2) of segment %3: an arc needs a second "
+                       "point")
+                .arg(a(0), a(1), a(2));
+        case Code::ArcPointOnTangent:
+            return DiagnosticText::tr(
+                "the point is on the tangent: use a line (an arc through it would need a radius "
+                "or centre beyond 10⁶ mm, the largest length a project holds)");
+        case Code::ArcRadiusTooSmall:
+            return DiagnosticText::tr(
+                       "the arc's radius would be %1 mm, below %2 mm, the smallest a project "
+                       "holds")
+                .arg(a(0), a(1));
+        case Code::ArcEndOffOuter:
+            return DiagnosticText::tr(
+                       "the end point of segment %1 is not on the outer branch of the circle "
+                       "(centre (%2, %3), radius %4 mm)")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArcEndOffInner:
+            return DiagnosticText::tr(
+                       "the end point of segment %1 is not on the inner branch of the circle "
+                       "(centre (%2, %3), radius %4 mm)")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArcPointOnNearSide:
+            return DiagnosticText::tr(
+                       "the point lies on the near side of the circle (centre (%1, %2), radius "
+                       "%3 mm) as seen from the rotation centre, but the arc leaves segment %4 "
+                       "on its far side (outer branch): the follower ray would not meet the arc "
+                       "at the point")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArcPointOnFarSide:
+            return DiagnosticText::tr(
+                       "the point lies on the far side of the circle (centre (%1, %2), radius "
+                       "%3 mm) as seen from the rotation centre, but the arc leaves segment %4 "
+                       "on its near side (inner branch): the follower ray would not meet the arc "
+                       "at the point")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArcRunsBackNear:
+            return DiagnosticText::tr(
+                       "the point lies behind the end point of segment %1 as seen from the "
+                       "rotation centre: the arc along the circle (centre (%2, %3), radius %4 mm) "
+                       "would pass to its near side and run back before reaching it")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArcRunsBackFar:
+            return DiagnosticText::tr(
+                       "the point lies behind the end point of segment %1 as seen from the "
+                       "rotation centre: the arc along the circle (centre (%2, %3), radius %4 mm) "
+                       "would pass to its far side and run back before reaching it")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::ArcPointOnEndRay:
+            return DiagnosticText::tr(
+                       "the point lies on the follower ray at the end %1° of segment %2: the "
+                       "arc's window would be empty")
+                .arg(a(0), a(1));
+        case Code::ArcEndsAfterNext:
+            return DiagnosticText::tr(
+                       "the arc would end at %1° (the polar angle of the point), not before the "
+                       "end %2° of segment %3, whose window would be empty or reversed")
+                .arg(a(0), a(1), a(2));
+        case Code::ArcPointIsNextEnd:
+            return DiagnosticText::tr(
+                       "the point is the end point of segment %1, which would have no length "
+                       "left")
+                .arg(a(0));
+        case Code::ArcNextClockwise:
+            return DiagnosticText::tr(
+                       "with its start point moved to the point, segment %1 would no longer run "
+                       "counter-clockwise from %2° to its end %3°")
+                .arg(a(0), a(1), a(2));
+        case Code::ExportToleranceOutOfRange:
+            return DiagnosticText::tr("the tolerance must be between %1 and %2 mm, not %3")
+                .arg(a(0), a(1), a(2));
+        case Code::ExportToolRadiusOutOfRange:
+            return DiagnosticText::tr("the tool radius must be above 0 and at most %1 mm, not %2")
+                .arg(a(0), a(1));
+        case Code::GcodeCompensationCutsPart:
+            return DiagnosticText::tr(
+                "with cutter compensation the tool would have to reach past the next programmed "
+                "arc at a concave corner of this segment, which a controller offsetting one move "
+                "at a time turns into a cut through the part; export the tool-centre path "
+                "(without --compensation) or use a coarser --tolerance");
+        case Code::GcodeLengthOutOfRange:
+            return DiagnosticText::tr("%1 must be above 0 and at most %2 mm, not %3")
+                .arg(a(0), a(1), a(2));
+        case Code::GcodeFeedOutOfRange:
+            return DiagnosticText::tr("the feed must be above 0 and at most %1 mm/min, not %2")
+                .arg(a(0), a(1));
+        case Code::GcodeToolNumber:
+            return DiagnosticText::tr("the tool number must be from 1 to 99999, not %1").arg(a(0));
+        case Code::GcodeTooManyPasses:
+            return DiagnosticText::tr(
+                       "a step-down of %1 mm makes %2 passes for a depth of %3 mm; at most %4 "
+                       "are made")
+                .arg(a(0), a(1), a(2), a(3));
+        case Code::CamTablePoints:
+            return DiagnosticText::tr("a cam table has from %1 to %2 points, not %3")
+                .arg(a(0), a(1), a(2));
+        case Code::SampleNotFinite:
+            return DiagnosticText::tr(
+                       "is not a finite number (%1): the result is beyond what a double can hold")
+                .arg(a(0));
+        case Code::NoPoints:
+            return DiagnosticText::tr("must be at least 1 (got 0)");
+        case Code::NotFiniteForFile:
+            return DiagnosticText::tr("is not a finite number, which a file cannot hold");
+        case Code::FileCannotOpen:
+            return DiagnosticText::tr("cannot open: %1").arg(a(0));
+        case Code::FileCannotExamineOpen:
+            return DiagnosticText::tr("cannot examine: %1").arg(a(0));
+        case Code::FileCannotRead:
+            return DiagnosticText::tr("cannot read: %1").arg(a(0));
+        case Code::FileNotRegularToRead:
+            return DiagnosticText::tr("is %1, not a regular file: not read").arg(a(0));
+        case Code::FileTooLargeToRead:
+            return DiagnosticText::tr("is %1 MiB (%2 bytes): files larger than %3 MiB are not read")
+                .arg(a(0), a(1), a(2));
+        case Code::FileGrewTooLarge:
+            return DiagnosticText::tr(
+                       "grew past %1 MiB while it was read: larger files are not read")
+                .arg(a(0));
+        case Code::FileNoName:
+            return DiagnosticText::tr("no file name given");
+        case Code::FileCannotExamine:
+            return DiagnosticText::tr("cannot examine %1: %2").arg(a(0), a(1));
+        case Code::FileLinkLoop:
+            return DiagnosticText::tr("cannot follow its symbolic links: %1").arg(a(0));
+        case Code::FileCannotReadLink:
+            return DiagnosticText::tr("cannot read the symbolic link %1: %2").arg(a(0), a(1));
+        case Code::FileIsDescriptorLink:
+            return DiagnosticText::tr(
+                "is a link to an open file descriptor, not a file: not replaced");
+        case Code::FileLinkTargetIsDescriptorLink:
+            return DiagnosticText::tr(
+                       "%1 is a link to an open file descriptor, not a file: not replaced")
+                .arg(a(0));
+        case Code::FileNotRegular:
+            return DiagnosticText::tr("is %1, not a regular file: not replaced").arg(a(0));
+        case Code::FileLinkTargetNotRegular:
+            return DiagnosticText::tr("%1 is %2, not a regular file: not replaced").arg(a(0), a(1));
+        case Code::FileCannotWrite:
+            return DiagnosticText::tr("cannot write %1: %2").arg(a(0), a(1));
+        case Code::FileNamesFolder:
+            return DiagnosticText::tr("names a folder, not a file");
+        case Code::FileCannotCreateTemporary:
+            return DiagnosticText::tr("cannot create a temporary file in %1: %2").arg(a(0), a(1));
+        case Code::FileCannotCopyOwner:
+            return DiagnosticText::tr("cannot give the new file the owner of %1: %2")
+                .arg(a(0), a(1));
+        case Code::FileCannotCopyPermissions:
+            return DiagnosticText::tr("cannot give the new file the permissions of %1: %2")
+                .arg(a(0), a(1));
+        case Code::FileCannotFlush:
+            return DiagnosticText::tr("cannot flush %1 to disk: %2").arg(a(0), a(1));
+        case Code::FileBecameOther:
+            return DiagnosticText::tr("%1 became %2 while it was written: not replaced")
+                .arg(a(0), a(1));
+        case Code::FileCannotReplace:
+            return DiagnosticText::tr("cannot replace %1: %2").arg(a(0), a(1));
+        case Code::FileReplacedCannotClose:
+            return DiagnosticText::tr("replaced, but cannot close %1: %2").arg(a(0), a(1));
+        case Code::FileReplacedCannotFlushFolder:
+            return DiagnosticText::tr("replaced, but cannot flush the folder %1 to disk: %2")
+                .arg(a(0), a(1));
     }
     return {};
 }

@@ -175,12 +175,14 @@ Result<std::vector<Move>> compensatedLoop(const Contour& contour, const ContourO
             return std::count(origin.begin(), origin.end(), k);
         };
         if (piecesOf(centre.origin) != piecesOf(profile.value().origin)) {
-            errors.push_back({segmentLocation(k),
-                              "with cutter compensation the tool would have to reach past the "
-                              "next programmed arc at a concave corner of this segment, which a "
-                              "controller offsetting one move at a time turns into a cut through "
-                              "the part; export the tool-centre path (without --compensation) or "
-                              "use a coarser --tolerance"});
+            errors.push_back(
+                Diagnostic::at({k},
+                               "with cutter compensation the tool would have to reach past the "
+                               "next programmed arc at a concave corner of this segment, which a "
+                               "controller offsetting one move at a time turns into a cut "
+                               "through the part; export the tool-centre path (without "
+                               "--compensation) or use a coarser --tolerance")
+                    .coded(DiagnosticCode::GcodeCompensationCutsPart, {}));
         }
     }
     if (!errors.empty()) return errors;
@@ -323,9 +325,11 @@ std::string commentSafe(const std::string& name) {
 
 void checkLength(double value, const char* location, const char* what, Diagnostics& errors) {
     if (!(value > 0.0 && value <= kMaxLengthMm)) {
-        errors.push_back({location, std::string(what) + " must be above 0 and at most " +
-                                        formatNumber(kMaxLengthMm) + " mm, not " +
-                                        formatNumber(value)});
+        errors.push_back(Diagnostic(location, std::string(what) + " must be above 0 and at most " +
+                                                  formatNumber(kMaxLengthMm) + " mm, not " +
+                                                  formatNumber(value))
+                             .coded(DiagnosticCode::GcodeLengthOutOfRange,
+                                    {std::string(what), kMaxLengthMm, value}));
     }
 }
 
@@ -338,24 +342,33 @@ Result<std::string> gcodeProgram(const Contour& contour, const GcodeOptions& opt
     checkLength(options.depthMm, "--depth", "the depth", errors);
     checkLength(options.safeZMm, "safeZMm", "the safe height", errors);
     if (!(options.feedMmMin > 0.0 && options.feedMmMin <= kMaxSpeedMmS * 60.0)) {
-        errors.push_back({"feedMmMin", "the feed must be above 0 and at most " +
-                                           formatNumber(kMaxSpeedMmS * 60.0) + " mm/min, not " +
-                                           formatNumber(options.feedMmMin)});
+        errors.push_back(Diagnostic("feedMmMin", "the feed must be above 0 and at most " +
+                                                     formatNumber(kMaxSpeedMmS * 60.0) +
+                                                     " mm/min, not " +
+                                                     formatNumber(options.feedMmMin))
+                             .coded(DiagnosticCode::GcodeFeedOutOfRange,
+                                    {kMaxSpeedMmS * 60.0, options.feedMmMin}));
     }
     if (!(options.toolNumber >= 1 && options.toolNumber <= 99999)) {
-        errors.push_back({"toolNumber", "the tool number must be from 1 to 99999, not " +
-                                            std::to_string(options.toolNumber)});
+        errors.push_back(
+            Diagnostic("toolNumber", "the tool number must be from 1 to 99999, not " +
+                                         std::to_string(options.toolNumber))
+                .coded(DiagnosticCode::GcodeToolNumber, {static_cast<double>(options.toolNumber)}));
     }
     long long passes = 1;
     if (options.stepDownMm) {
         checkLength(*options.stepDownMm, "--step-down", "the step-down", errors);
         const double count = std::ceil(options.depthMm / *options.stepDownMm - 1e-9);
         if (errors.empty() && count > static_cast<double>(kMaxGcodePasses)) {
-            errors.push_back({"--step-down", "a step-down of " + formatNumber(*options.stepDownMm) +
-                                                 " mm makes " + formatNumber(count) +
-                                                 " passes for a depth of " +
-                                                 formatNumber(options.depthMm) + " mm; at most " +
-                                                 std::to_string(kMaxGcodePasses) + " are made"});
+            errors.push_back(
+                Diagnostic("--step-down", "a step-down of " + formatNumber(*options.stepDownMm) +
+                                              " mm makes " + formatNumber(count) +
+                                              " passes for a depth of " +
+                                              formatNumber(options.depthMm) + " mm; at most " +
+                                              std::to_string(kMaxGcodePasses) + " are made")
+                    .coded(DiagnosticCode::GcodeTooManyPasses,
+                           {*options.stepDownMm, count, options.depthMm,
+                            static_cast<double>(kMaxGcodePasses)}));
         }
         if (errors.empty()) passes = std::max(1LL, static_cast<long long>(count));
     }

@@ -25,7 +25,8 @@ std::optional<Diagnostic> firstNonFiniteSample(const SampledTurn& turn) {
             location += std::to_string(k);
             location += ", ";
             location += name;
-            return Diagnostic(std::move(location), std::move(message));
+            return Diagnostic(std::move(location), std::move(message))
+                .coded(DiagnosticCode::SampleNotFinite, {(*values)[k]});
         }
     }
     return std::nullopt;
@@ -64,7 +65,10 @@ void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower,
 
 Result<std::string> sampleCsv(const Contour& contour, double omega, std::size_t points,
                               const FollowerModel* follower) {
-    if (points < 1) return Diagnostics{{"points", "must be at least 1 (got 0)"}};
+    if (points < 1) {
+        return Diagnostics{
+            Diagnostic("points", "must be at least 1 (got 0)").coded(DiagnosticCode::NoPoints, {})};
+    }
     SampledTurn turn;
     sampleTurn(contour, omega, points, turn);
     if (auto problem = firstNonFiniteSample(turn)) return Diagnostics{std::move(*problem)};

@@ -164,6 +164,26 @@ Candidate solve(const Corner& k, double rho) {
     return Candidate{.failure = Failure::NoCircle};
 }
 
+/// Why rho fails, as a name of fillet_reason; `atBound` for the radius just beyond the largest
+/// that fits.
+std::string reasonName(Failure f, bool atBound) {
+    switch (f) {
+        case Failure::LeavesLeft:
+            return fillet_reason::kLeavesLeft;
+        case Failure::LeavesRight:
+            return fillet_reason::kLeavesRight;
+        case Failure::NoCircle:
+            return atBound ? fillet_reason::kNoLargerCircle : fillet_reason::kNoCircle;
+        case Failure::RayTwice:
+            return fillet_reason::kRayNotOnce;
+        case Failure::TooLarge:
+            return fillet_reason::kRadiusLimit;
+        case Failure::None:
+            break;
+    }
+    return "";
+}
+
 /// Why rho fails; `atBound` words it for the radius just beyond the largest that fits.
 std::string reason(const Corner& k, Failure f, bool atBound) {
     switch (f) {
@@ -207,8 +227,11 @@ Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t j
         if (d.severity == Severity::Error) problems.push_back(std::move(d));
     }
     if (!problems.empty()) {
-        problems.insert(problems.begin(),
-                        {k.location, "the contour is not valid, so the joint cannot be rounded"});
+        problems.insert(
+            problems.begin(),
+            Diagnostic::atJoint(k.left, k.right,
+                                "the contour is not valid, so the joint cannot be rounded")
+                .coded(DiagnosticCode::FilletContourInvalid, {}));
         return problems;
     }
     k.a = contour[k.left];
@@ -216,7 +239,10 @@ Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t j
     for (std::size_t i : {k.left, k.right}) {
         if (isSpline(contour[i].type())) {
             return Diagnostics{
-                {k.location, "fillets join arcs and lines; " + segmentLocation(i) + " is neither"}};
+                Diagnostic::atJoint(
+                    k.left, k.right,
+                    "fillets join arcs and lines; " + segmentLocation(i) + " is neither")
+                    .coded(DiagnosticCode::FilletNeedsArcsAndLines, {static_cast<double>(i)})};
         }
     }
     k.phiJoint = k.a.phiEndDeg;
@@ -231,10 +257,13 @@ Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t j
     const double turnDeg = radToDeg(std::abs(k.turn));
     if (turnDeg <= kTangentToleranceDeg) {
         return Diagnostics{
-            {k.location, "the segments already meet tangentially (their tangents differ by " +
-                             formatNumber(turnDeg) + "°, at most " +
-                             formatNumber(kTangentToleranceDeg) +
-                             "° counts as tangent); there is no corner to round"}};
+            Diagnostic::atJoint(k.left, k.right,
+                                "the segments already meet tangentially (their tangents differ "
+                                "by " +
+                                    formatNumber(turnDeg) + "°, at most " +
+                                    formatNumber(kTangentToleranceDeg) +
+                                    "° counts as tangent); there is no corner to round")
+                .coded(DiagnosticCode::FilletAlreadyTangent, {turnDeg, kTangentToleranceDeg})};
     }
     return k;
 }
@@ -285,6 +314,12 @@ std::string nothingFitsMessage(const Corner& k, const Bound& bound) {
            " mm fits at this joint (" + reason(k, bound.why, bound.maxRadius > 0.0) + ")";
 }
 
+/// A problem of the corner k, located at its joint.
+Diagnostic atCorner(const Corner& k, std::string message, DiagnosticCode code,
+                    std::vector<DiagnosticArg> args) {
+    return Diagnostic::atJoint(k.left, k.right, std::move(message)).coded(code, std::move(args));
+}
+
 FilletResult build(const Corner& k, const std::vector<SegmentSpec>& contour, std::size_t joint,
                    const Candidate& c, double rho) {
     std::vector<SegmentSpec> out = contour;
@@ -327,7 +362,11 @@ Result<FilletRange> filletRange(const std::vector<SegmentSpec>& contour, std::si
     if (!corner.ok()) return corner.errors();
     const Corner& k = corner.value();
     const Bound bound = largestRadius(k);
-    if (nothingFits(bound)) return Diagnostics{{k.location, nothingFitsMessage(k, bound)}};
+    if (nothingFits(bound)) {
+        return Diagnostics{atCorner(k, nothingFitsMessage(k, bound),
+                                    DiagnosticCode::FilletNothingFits,
+                                    {kMinLengthMm, reasonName(bound.why, bound.maxRadius > 0.0)})};
+    }
     return FilletRange{kMinLengthMm, bound.maxRadius};
 }
 
@@ -338,17 +377,27 @@ Result<FilletResult> filletJoint(const std::vector<SegmentSpec>& contour, std::s
         Diagnostics errors = corner.errors();
         // Name the radius too, so the message answers "why not this one?".
         if (errors.size() == 1 && errors.front().location != "contour") {
-            errors.front().message =
-                "radius " + formatNumber(rho) + " mm does not fit: " + errors.front().message;
+            Diagnostic& d = errors.front();
+            d.message = "radius " + formatNumber(rho) + " mm does not fit: " + d.message;
+            std::vector<DiagnosticArg> args{rho};
+            args.insert(args.end(), d.args.begin(), d.args.end());
+            if (d.code == DiagnosticCode::FilletNeedsArcsAndLines) {
+                d = std::move(d).coded(DiagnosticCode::FilletRadiusNeedsArcsAndLines, args);
+            } else if (d.code == DiagnosticCode::FilletAlreadyTangent) {
+                d = std::move(d).coded(DiagnosticCode::FilletRadiusAlreadyTangent, args);
+            } else {
+                d = std::move(d).coded(DiagnosticCode::Unspecified, {});
+            }
         }
         return errors;
     }
     const Corner& k = corner.value();
     if (std::isfinite(rho) && rho > 0.0 && rho < kMinLengthMm) {
-        return Diagnostics{{k.location, "radius " + formatNumber(rho) +
-                                            " mm is too small: a fillet radius is at least " +
-                                            formatNumber(kMinLengthMm) +
-                                            " mm, the smallest radius a project holds"}};
+        return Diagnostics{atCorner(
+            k,
+            "radius " + formatNumber(rho) + " mm is too small: a fillet radius is at least " +
+                formatNumber(kMinLengthMm) + " mm, the smallest radius a project holds",
+            DiagnosticCode::FilletRadiusTooSmall, {rho, kMinLengthMm})};
     }
     const Candidate c = std::isfinite(rho) && rho > 0.0 ? solve(k, rho) : Candidate{};
     if (c.failure == Failure::None) {
@@ -356,29 +405,42 @@ Result<FilletResult> filletJoint(const std::vector<SegmentSpec>& contour, std::s
         Project project;
         project.contour = result.contour;
         const Diagnostics problems = validateProject(project);
-        if (hasErrors(problems)) {  // a safety net: every check above should prevent this
-            return Diagnostics{{k.location, "radius " + formatNumber(rho) +
-                                                " mm gives a contour that does not validate (" +
-                                                problems.front().text() + ")"}};
+        // A safety net: every check above should prevent this. It nests the validator's
+        // English text, so it stays without a code (the window shows it in English).
+        if (hasErrors(problems)) {
+            return Diagnostics{Diagnostic::atJoint(
+                k.left, k.right,
+                "radius " + formatNumber(rho) + " mm gives a contour that does not validate (" +
+                    problems.front().text() + ")")};
         }
         return result;
     }
     const std::string asked = "radius " + formatNumber(rho) + " mm";
     const Bound bound = largestRadius(k);
     if (nothingFits(bound)) {
-        return Diagnostics{{k.location, asked + " does not fit: " + nothingFitsMessage(k, bound)}};
+        return Diagnostics{
+            atCorner(k, asked + " does not fit: " + nothingFitsMessage(k, bound),
+                     DiagnosticCode::FilletRadiusNothingFits,
+                     {rho, kMinLengthMm, reasonName(bound.why, bound.maxRadius > 0.0)})};
     }
     const std::string below = "radii below " + rounded(bound.maxRadius) + " mm";
     if (!(rho > 0.0) || !std::isfinite(rho)) {
-        return Diagnostics{{k.location, asked + " must be a number > 0: " + below + " fit"}};
+        return Diagnostics{atCorner(k, asked + " must be a number > 0: " + below + " fit",
+                                    DiagnosticCode::FilletRadiusNotPositive,
+                                    {rho, bound.maxRadius})};
     }
     if (rho >= bound.maxRadius) {
-        return Diagnostics{{k.location, asked + " is too large: only " + below + " fit (" +
-                                            reason(k, bound.why, true) + ")"}};
+        return Diagnostics{atCorner(
+            k, asked + " is too large: only " + below + " fit (" + reason(k, bound.why, true) + ")",
+            DiagnosticCode::FilletRadiusTooLarge,
+            {rho, bound.maxRadius, reasonName(bound.why, true)})};
     }
     // Feasible radii need not form one interval; this one lies in a gap below the bound.
-    return Diagnostics{{k.location, asked + " does not fit (" + reason(k, c.failure, false) +
-                                        "), although most " + below + " do"}};
+    return Diagnostics{atCorner(k,
+                                asked + " does not fit (" + reason(k, c.failure, false) +
+                                    "), although most " + below + " do",
+                                DiagnosticCode::FilletRadiusInGap,
+                                {rho, reasonName(c.failure, false), bound.maxRadius})};
 }
 
 }  // namespace cam

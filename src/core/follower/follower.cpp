@@ -55,7 +55,8 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
                         Diagnostic::at({k, SegmentPart::Radius},
                                        "the roller radius " + formatNumber(rho) +
                                            " mm is not smaller than this concave arc's radius " +
-                                           formatNumber(R) + " mm: the roller cannot follow it"));
+                                           formatNumber(R) + " mm: the roller cannot follow it")
+                            .coded(DiagnosticCode::RollerNotSmallerThanArc, {rho, R}));
                     continue;
                 }
                 piece.radius = piece.convex ? R + rho : R - rho;

@@ -287,11 +287,13 @@ Diagnostics FollowerModel::checkPivot(const Contour& contour) const {
         }
     }
     if (pivotRadius > rFar) return {};
-    return {{"follower.pivot", "is inside the cam: the pivot turns on a circle of radius " +
-                                   formatNumber(pivotRadius) +
-                                   " mm round the cam centre, but the profile reaches " +
-                                   formatNumber(rFar) + " mm at " + formatNumber(radToDeg(phiFar)) +
-                                   "°; move it farther out"}};
+    return {
+        Diagnostic("follower.pivot", "is inside the cam: the pivot turns on a circle of radius " +
+                                         formatNumber(pivotRadius) +
+                                         " mm round the cam centre, but the profile reaches " +
+                                         formatNumber(rFar) + " mm at " +
+                                         formatNumber(radToDeg(phiFar)) + "°; move it farther out")
+            .coded(DiagnosticCode::PivotInsideCam, {pivotRadius, rFar, radToDeg(phiFar)})};
 }
 
 Diagnostics FollowerModel::armUnreachable(const Contour& contour, double phi) const {
@@ -311,18 +313,23 @@ Diagnostics FollowerModel::armUnreachable(const Contour& contour, double phi) co
     const std::string where = "at " + formatNumber(radToDeg(phi)) + "°";
     const std::string what = rho > 0.0 ? "the roller" : "the tip";
     if (L + rho <= nearest) {
-        return {{"follower.arm_length", "is too short: " + where + " the cam is " +
-                                            formatNumber(nearest) + " mm from the pivot, and " +
-                                            what + " reaches only " + formatNumber(L + rho) +
-                                            " mm"}};
+        return {Diagnostic("follower.arm_length",
+                           "is too short: " + where + " the cam is " + formatNumber(nearest) +
+                               " mm from the pivot, and " + what + " reaches only " +
+                               formatNumber(L + rho) + " mm")
+                    .coded(DiagnosticCode::ArmTooShort,
+                           {radToDeg(phi), nearest, std::string(what), L + rho})};
     }
     if (L - rho >= farthest) {
-        return {{"follower.arm_length", "is too long: " + where + " " + what +
-                                            " passes beyond the whole cam (at most " +
-                                            formatNumber(farthest) + " mm from the pivot)"}};
+        return {
+            Diagnostic("follower.arm_length", "is too long: " + where + " " + what +
+                                                  " passes beyond the whole cam (at most " +
+                                                  formatNumber(farthest) + " mm from the pivot)")
+                .coded(DiagnosticCode::ArmTooLong, {radToDeg(phi), std::string(what), farthest})};
     }
-    return {{"follower.arm_length", "does not let " + what + " touch the cam " + where +
-                                        " (no contact on the chosen side of the arm)"}};
+    return {Diagnostic("follower.arm_length", "does not let " + what + " touch the cam " + where +
+                                                  " (no contact on the chosen side of the arm)")
+                .coded(DiagnosticCode::ArmNoContact, {std::string(what), radToDeg(phi)})};
 }
 
 }  // namespace cam

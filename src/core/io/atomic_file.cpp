@@ -148,8 +148,13 @@ AtomicFileWriter::AtomicFileWriter(std::string path) : m_path(std::move(path)) {
 
 AtomicFileWriter::~AtomicFileWriter() { discardTemporary(); }
 
-void AtomicFileWriter::fail(const std::string& what, int error) {
-    if (m_errors.empty()) m_errors.push_back({m_path, what + ": " + std::strerror(error)});
+void AtomicFileWriter::fail(const std::string& what, int error, DiagnosticCode code,
+                            std::vector<DiagnosticArg> args) {
+    if (m_errors.empty()) {
+        const std::string reason = std::strerror(error);  // the OS's own words
+        args.emplace_back(reason);
+        m_errors.push_back(Diagnostic(m_path, what + ": " + reason).coded(code, std::move(args)));
+    }
     discardTemporary();
 }
 
@@ -189,7 +194,8 @@ void AtomicFileWriter::removeStaleTemporaries(const std::string& folder,
 
 void AtomicFileWriter::resolveTarget() {
     if (m_path.empty()) {
-        m_errors.push_back({m_path, "no file name given"});
+        m_errors.push_back(
+            Diagnostic(m_path, "no file name given").coded(DiagnosticCode::FileNoName, {}));
         return;
     }
     std::string current = m_path;
@@ -197,7 +203,8 @@ void AtomicFileWriter::resolveTarget() {
         struct stat st {};
         if (::lstat(current.c_str(), &st) != 0) {
             if (errno != ENOENT) {
-                fail("cannot examine " + current, errno);
+                fail("cannot examine " + current, errno, DiagnosticCode::FileCannotExamine,
+                     {current});
                 return;
             }
             // Nothing there (also the end of a dangling symlink): a new file is created.
@@ -208,23 +215,29 @@ void AtomicFileWriter::resolveTarget() {
             struct statfs fs {};
             if (::statfs(folderOf(current).c_str(), &fs) == 0 &&
                 static_cast<long>(fs.f_type) == kProcSuperMagic) {
+                const std::string what =
+                    "is a link to an open file descriptor, not a file: not replaced";
                 m_errors.push_back(
-                    {m_path, (current == m_path ? "" : current + " ") +
-                                 "is a link to an open file descriptor, not a file: not replaced"});
+                    current == m_path
+                        ? Diagnostic(m_path, what).coded(DiagnosticCode::FileIsDescriptorLink, {})
+                        : Diagnostic(m_path, current + " " + what)
+                              .coded(DiagnosticCode::FileLinkTargetIsDescriptorLink, {current}));
                 return;
             }
             if (hops == kMaxSymlinkHops) {
-                fail("cannot follow its symbolic links", ELOOP);
+                fail("cannot follow its symbolic links", ELOOP, DiagnosticCode::FileLinkLoop, {});
                 return;
             }
             std::string link(static_cast<std::size_t>(st.st_size > 0 ? st.st_size : 255) + 1, '\0');
             const ssize_t n = ::readlink(current.c_str(), link.data(), link.size());
             if (n < 0) {
-                fail("cannot read the symbolic link " + current, errno);
+                fail("cannot read the symbolic link " + current, errno,
+                     DiagnosticCode::FileCannotReadLink, {current});
                 return;
             }
             if (n == 0 || static_cast<std::size_t>(n) >= link.size()) {
-                fail("cannot read the symbolic link " + current, ENAMETOOLONG);
+                fail("cannot read the symbolic link " + current, ENAMETOOLONG,
+                     DiagnosticCode::FileCannotReadLink, {current});
                 return;
             }
             link.resize(static_cast<std::size_t>(n));
@@ -233,15 +246,19 @@ void AtomicFileWriter::resolveTarget() {
             continue;
         }
         if (!S_ISREG(st.st_mode)) {
-            m_errors.push_back({m_path, (current == m_path ? "" : current + " ") + "is " +
-                                            kindOf(st.st_mode) +
-                                            ", not a regular file: not replaced"});
+            const std::string kind = kindOf(st.st_mode);
+            const std::string what = "is " + kind + ", not a regular file: not replaced";
+            m_errors.push_back(
+                current == m_path
+                    ? Diagnostic(m_path, what).coded(DiagnosticCode::FileNotRegular, {kind})
+                    : Diagnostic(m_path, current + " " + what)
+                          .coded(DiagnosticCode::FileLinkTargetNotRegular, {current, kind}));
             return;
         }
         // A read-only file says "do not change me"; the folder's permissions alone would allow
         // the rename.
         if (::faccessat(AT_FDCWD, current.c_str(), W_OK, AT_EACCESS) != 0) {
-            fail("cannot write " + current, errno);
+            fail("cannot write " + current, errno, DiagnosticCode::FileCannotWrite, {current});
             return;
         }
         m_resolvedPath = current;
@@ -257,7 +274,8 @@ void AtomicFileWriter::createTemporary() {
     const std::string folder = folderOf(m_resolvedPath);
     const std::string name = nameOf(m_resolvedPath);
     if (name.empty() || name == "." || name == "..") {
-        m_errors.push_back({m_path, "names a folder, not a file"});
+        m_errors.push_back(Diagnostic(m_path, "names a folder, not a file")
+                               .coded(DiagnosticCode::FileNamesFolder, {}));
         return;
     }
     removeStaleTemporaries(folder, name);
@@ -280,7 +298,8 @@ void AtomicFileWriter::createTemporary() {
         }
         if (fd < 0) {
             if (openError == EEXIST) continue;
-            fail("cannot create a temporary file in " + folder, openError);
+            fail("cannot create a temporary file in " + folder, openError,
+                 DiagnosticCode::FileCannotCreateTemporary, {folder});
             return;
         }
         // Locked for as long as it is written. Another writer's cleanup may have locked and
@@ -301,7 +320,8 @@ void AtomicFileWriter::createTemporary() {
         m_tempPath = std::move(temp);
     }
     if (m_fd < 0) {
-        fail("cannot create a temporary file in " + folder, EEXIST);
+        fail("cannot create a temporary file in " + folder, EEXIST,
+             DiagnosticCode::FileCannotCreateTemporary, {folder});
         return;
     }
     if (!m_targetExists) return;
@@ -309,7 +329,8 @@ void AtomicFileWriter::createTemporary() {
         // Not permitted to give the file away: keep at least the group if we may.
         if (errno != EPERM ||
             (::fchown(m_fd, static_cast<uid_t>(-1), m_gid) != 0 && errno != EPERM)) {
-            fail("cannot give the new file the owner of " + m_resolvedPath, errno);
+            fail("cannot give the new file the owner of " + m_resolvedPath, errno,
+                 DiagnosticCode::FileCannotCopyOwner, {m_resolvedPath});
             return;
         }
     }
@@ -321,7 +342,8 @@ void AtomicFileWriter::write(std::string_view chunk) {
         const ssize_t n = ::write(m_fd, chunk.data(), chunk.size());
         if (n < 0) {
             if (errno == EINTR) continue;
-            fail("cannot write " + m_resolvedPath, errno);
+            fail("cannot write " + m_resolvedPath, errno, DiagnosticCode::FileCannotWrite,
+                 {m_resolvedPath});
             return;
         }
         chunk.remove_prefix(static_cast<std::size_t>(n));
@@ -334,31 +356,37 @@ Diagnostics AtomicFileWriter::commit() {
     if (!ok()) return m_errors;
     // The mode is set last: a write by an unprivileged process clears set-id bits.
     if (m_targetExists && ::fchmod(m_fd, m_mode) != 0) {
-        fail("cannot give the new file the permissions of " + m_resolvedPath, errno);
+        fail("cannot give the new file the permissions of " + m_resolvedPath, errno,
+             DiagnosticCode::FileCannotCopyPermissions, {m_resolvedPath});
         return m_errors;
     }
     if (::fsync(m_fd) != 0) {
-        fail("cannot flush " + m_resolvedPath + " to disk", errno);
+        fail("cannot flush " + m_resolvedPath + " to disk", errno, DiagnosticCode::FileCannotFlush,
+             {m_resolvedPath});
         return m_errors;
     }
     // Something may have appeared in its place while we wrote; replace only a regular file.
     struct stat st {};
     if (::lstat(m_resolvedPath.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
-        m_errors.push_back({m_path, m_resolvedPath + " became " + kindOf(st.st_mode) +
-                                        " while it was written: not replaced"});
+        const std::string kind = kindOf(st.st_mode);
+        m_errors.push_back(Diagnostic(m_path, m_resolvedPath + " became " + kind +
+                                                  " while it was written: not replaced")
+                               .coded(DiagnosticCode::FileBecameOther, {m_resolvedPath, kind}));
         discardTemporary();
         return m_errors;
     }
     // Renamed while still open and locked: until then it must not look like a leftover.
     if (::rename(m_tempPath.c_str(), m_resolvedPath.c_str()) != 0) {
-        fail("cannot replace " + m_resolvedPath, errno);
+        fail("cannot replace " + m_resolvedPath, errno, DiagnosticCode::FileCannotReplace,
+             {m_resolvedPath});
         return m_errors;
     }
     m_tempPath.clear();  // it is the target now
     releaseSignalSlot(m_signalSlot);
     // fsync succeeded, so the content is on disk; a failing close would still be news.
     if (::close(std::exchange(m_fd, -1)) != 0 && errno != EINTR) {
-        fail("replaced, but cannot close " + m_resolvedPath, errno);
+        fail("replaced, but cannot close " + m_resolvedPath, errno,
+             DiagnosticCode::FileReplacedCannotClose, {m_resolvedPath});
         return m_errors;
     }
     // Make the rename itself durable. Some file systems cannot fsync a folder (EINVAL): there is
@@ -366,7 +394,8 @@ Diagnostics AtomicFileWriter::commit() {
     const std::string folder = folderOf(m_resolvedPath);
     const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (dir < 0 || (::fsync(dir) != 0 && errno != EINVAL)) {
-        fail("replaced, but cannot flush the folder " + folder + " to disk", errno);
+        fail("replaced, but cannot flush the folder " + folder + " to disk", errno,
+             DiagnosticCode::FileReplacedCannotFlushFolder, {folder});
     }
     if (dir >= 0) ::close(dir);
     return m_errors;

@@ -66,7 +66,10 @@ public:
 private:
     void resolveTarget();
     void createTemporary();
-    void fail(const std::string& what, int error);
+    /// Records "what: <the OS's error text>" (the first failure only) with its code, whose
+    /// arguments are `args` and then the OS's text.
+    void fail(const std::string& what, int error, DiagnosticCode code,
+              std::vector<DiagnosticArg> args);
     void discardTemporary();
     void removeStaleTemporaries(const std::string& folder, const std::string& name) const;
 

@@ -14,7 +14,10 @@ Result<std::vector<PathPoint>> parsePathCsv(std::string_view text) {
         if (row.size() == 4) p.bulge = row[3];
         points.push_back(p);
     }
-    if (points.size() < 2) return Diagnostics{{"points", "a path needs at least two points"}};
+    if (points.size() < 2) {
+        return Diagnostics{Diagnostic("points", "a path needs at least two points")
+                               .coded(DiagnosticCode::PathTooFewPoints, {})};
+    }
     return points;
 }
 

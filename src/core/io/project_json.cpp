@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 #include "io/json_syntax.h"
@@ -21,22 +22,26 @@ struct FileDescriptor {
     ~FileDescriptor() { ::close(fd); }
 };
 
-std::string notARegularFile(mode_t mode) {
+Diagnostic notARegularFile(const std::string& path, mode_t mode) {
     const char* kind = S_ISDIR(mode)    ? "a folder"
                        : S_ISFIFO(mode) ? "a FIFO"
                        : S_ISCHR(mode)  ? "a character device"
                        : S_ISBLK(mode)  ? "a block device"
                        : S_ISSOCK(mode) ? "a socket"
                                         : "a special file";
-    return std::string("is ") + kind + ", not a regular file: not read";
+    return Diagnostic(path, std::string("is ") + kind + ", not a regular file: not read")
+        .coded(DiagnosticCode::FileNotRegularToRead, {std::string(kind)});
 }
 
-std::string tooLarge(off_t bytes) {
+Diagnostic tooLarge(const std::string& path, off_t bytes) {
     char mib[32];
     std::snprintf(mib, sizeof mib, "%.1f", static_cast<double>(bytes) / (1 << 20));
-    return "is " + std::string(mib) + " MiB (" + std::to_string(bytes) +
-           " bytes): files larger than " + std::to_string(kMaxProjectFileBytes >> 20) +
-           " MiB are not read";
+    return Diagnostic(path, "is " + std::string(mib) + " MiB (" + std::to_string(bytes) +
+                                " bytes): files larger than " +
+                                std::to_string(kMaxProjectFileBytes >> 20) + " MiB are not read")
+        .coded(DiagnosticCode::FileTooLargeToRead,
+               {std::strtod(mib, nullptr), static_cast<double>(bytes),
+                static_cast<double>(kMaxProjectFileBytes >> 20)});
 }
 
 }  // namespace
@@ -57,25 +62,29 @@ Result<Project> parseProject(std::string_view text) {
 }
 
 Result<std::string> readTextFile(const std::string& path) {
-    auto refuse = [&](std::string message) { return Diagnostics{{path, std::move(message)}}; };
-    auto failed = [&](const char* what) {
-        return refuse(what + std::string(std::strerror(errno)));
+    auto refuse = [&](Diagnostic problem) { return Diagnostics{std::move(problem)}; };
+    // "cannot open: " and the OS's own words, which stay an argument as they are.
+    auto failed = [&](const char* what, DiagnosticCode code) {
+        const std::string reason = std::strerror(errno);
+        return refuse(Diagnostic(path, what + reason).coded(code, {reason}));
     };
     // Look before opening: opening a device can have effects of its own, and reading /dev/zero
     // or a FIFO never ends.
     struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) return failed("cannot open: ");
-    if (!S_ISREG(st.st_mode)) return refuse(notARegularFile(st.st_mode));
+    if (::stat(path.c_str(), &st) != 0)
+        return failed("cannot open: ", DiagnosticCode::FileCannotOpen);
+    if (!S_ISREG(st.st_mode)) return refuse(notARegularFile(path, st.st_mode));
     if (static_cast<std::uint64_t>(st.st_size) > kMaxProjectFileBytes)
-        return refuse(tooLarge(st.st_size));
+        return refuse(tooLarge(path, st.st_size));
     // O_NONBLOCK: if a FIFO took the file's place since stat(), open must not wait for a writer.
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-    if (fd < 0) return failed("cannot open: ");
+    if (fd < 0) return failed("cannot open: ", DiagnosticCode::FileCannotOpen);
     const FileDescriptor file{fd};
-    if (::fstat(fd, &st) != 0) return failed("cannot examine: ");
-    if (!S_ISREG(st.st_mode)) return refuse(notARegularFile(st.st_mode));
+    if (::fstat(fd, &st) != 0)
+        return failed("cannot examine: ", DiagnosticCode::FileCannotExamineOpen);
+    if (!S_ISREG(st.st_mode)) return refuse(notARegularFile(path, st.st_mode));
     if (static_cast<std::uint64_t>(st.st_size) > kMaxProjectFileBytes)
-        return refuse(tooLarge(st.st_size));
+        return refuse(tooLarge(path, st.st_size));
 
     // One byte more than the size: the read that finds the end needs no second buffer. A file
     // that grows while it is read is read up to one byte past the limit, no further.
@@ -84,14 +93,18 @@ Result<std::string> readTextFile(const std::string& path) {
     for (;;) {
         if (size == text.size()) {
             if (size > kMaxProjectFileBytes) {
-                return refuse("grew past " + std::to_string(kMaxProjectFileBytes >> 20) +
-                              " MiB while it was read: larger files are not read");
+                return refuse(Diagnostic(path, "grew past " +
+                                                   std::to_string(kMaxProjectFileBytes >> 20) +
+                                                   " MiB while it was read: larger files are not "
+                                                   "read")
+                                  .coded(DiagnosticCode::FileGrewTooLarge,
+                                         {static_cast<double>(kMaxProjectFileBytes >> 20)}));
             }
             text.resize(std::min<std::size_t>(2 * size, kMaxProjectFileBytes + 1));
         }
         const ssize_t n = ::read(fd, text.data() + size, text.size() - size);
         if (n < 0 && errno == EINTR) continue;
-        if (n < 0) return failed("cannot read: ");
+        if (n < 0) return failed("cannot read: ", DiagnosticCode::FileCannotRead);
         if (n == 0) break;
         size += static_cast<std::size_t>(n);
     }

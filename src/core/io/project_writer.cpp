@@ -140,7 +140,7 @@ Diagnostics nonFiniteValues(const Project& p) {
     auto check = [&](double v, Diagnostic where) {
         if (std::isfinite(v)) return;
         where.message = "is not a finite number, which a file cannot hold";
-        out.push_back(std::move(where));
+        out.push_back(std::move(where).coded(DiagnosticCode::NotFiniteForFile, {}));
     };
     auto checkPoint = [&](const Eigen::Vector2d& v, SegmentPlace place) {
         for (int axis = 0; axis < 2; ++axis) {

@@ -680,9 +680,10 @@ Diagnostics checkMachineLimits(const MachineLimits& lim) {
     auto check = [&](const std::string& where, double value, double lo, double hi,
                      const char* unit) {
         if (value == kUnlimited || (value >= lo && value <= hi)) return;
-        errors.push_back({where, "must be between " + formatNumber(lo) + " and " +
-                                     formatNumber(hi) + unit + " (got " + formatNumber(value) +
-                                     ")"});
+        errors.push_back(
+            Diagnostic(where, "must be between " + formatNumber(lo) + " and " + formatNumber(hi) +
+                                  unit + " (got " + formatNumber(value) + ")")
+                .coded(DiagnosticCode::OutOfRange, {lo, hi, std::string(unit), value}));
     };
     for (int i = 0; i < 3; ++i) {
         check("accel[" + std::to_string(i) + "]", lim.accel[i], kMinMachineLimit, kMaxAccelMmS2,
@@ -700,7 +701,9 @@ namespace {
 /// a seed step that is no step for this path.
 Diagnostics checkTimingInputs(const ToolPath& path, const MachineLimits& lim, TimingMethod method) {
     Diagnostics errors = checkMachineLimits(lim);
-    if (path.segments.empty()) errors.push_back({"path", "is empty"});
+    if (path.segments.empty()) {
+        errors.push_back(Diagnostic("path", "is empty").coded(DiagnosticCode::PathEmpty, {}));
+    }
     if (method == TimingMethod::Seed && errors.empty()) {
         const Diagnostics step = checkSeedStep(path, lim.seedStep, "step");
         errors.insert(errors.end(), step.begin(), step.end());

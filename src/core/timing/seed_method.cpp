@@ -12,17 +12,23 @@ constexpr double kTinyComponent = 1e-12;
 
 Diagnostics checkSeedStep(const ToolPath& path, double step, const std::string& location) {
     if (!std::isfinite(step) || !(step >= kMinLengthMm)) {
-        return {{location, "must be a finite length of at least " + formatNumber(kMinLengthMm) +
-                               " mm (got " + formatNumber(step) + ")"}};
+        return {Diagnostic(location, "must be a finite length of at least " +
+                                         formatNumber(kMinLengthMm) + " mm (got " +
+                                         formatNumber(step) + ")")
+                    .coded(DiagnosticCode::SeedStepTooSmall, {kMinLengthMm, step})};
     }
     const double length = path.length();
     const double steps = length / step;
     if (!(steps <= kMaxSeedSteps)) {
-        return {{location, formatNumber(step) + " mm makes " + formatNumber(std::ceil(steps)) +
-                               " steps on this " + formatNumber(length) +
-                               " mm path; the seed method takes at most " +
-                               formatNumber(kMaxSeedSteps) + ": a step of at least " +
-                               formatNumber(length / kMaxSeedSteps) + " mm"}};
+        return {Diagnostic(location, formatNumber(step) + " mm makes " +
+                                         formatNumber(std::ceil(steps)) + " steps on this " +
+                                         formatNumber(length) +
+                                         " mm path; the seed method takes at most " +
+                                         formatNumber(kMaxSeedSteps) + ": a step of at least " +
+                                         formatNumber(length / kMaxSeedSteps) + " mm")
+                    .coded(DiagnosticCode::SeedStepTooMany,
+                           {step, std::ceil(steps), length, static_cast<double>(kMaxSeedSteps),
+                            length / kMaxSeedSteps})};
     }
     return {};
 }

@@ -112,12 +112,16 @@ Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
         const PathPoint& p = points[k];
         if (!p.position.allFinite() || !std::isfinite(p.bulge) ||
             p.position.cwiseAbs().maxCoeff() > kMaxPathCoordinateMm) {
-            errors.push_back({at(k),
-                              "coordinates must be finite, at most 1e6 mm, and the bulge "
-                              "finite"});
+            errors.push_back(Diagnostic(at(k),
+                                        "coordinates must be finite, at most 1e6 mm, and the "
+                                        "bulge finite")
+                                 .coded(DiagnosticCode::PathPointInvalid, {}));
         }
     }
-    if (points.size() < 2) errors.push_back({"points", "a path needs at least two points"});
+    if (points.size() < 2) {
+        errors.push_back(Diagnostic("points", "a path needs at least two points")
+                             .coded(DiagnosticCode::PathTooFewPoints, {}));
+    }
     if (!errors.empty()) return errors;
 
     ToolPath path;
@@ -125,7 +129,8 @@ Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
         const Vec3& a = points[k].position;
         const Vec3& b = points[k + 1].position;
         if ((b - a).norm() < 1e-9) {
-            errors.push_back({at(k + 1), "repeats the previous point"});
+            errors.push_back(Diagnostic(at(k + 1), "repeats the previous point")
+                                 .coded(DiagnosticCode::PathPointRepeated, {}));
             continue;
         }
         const double bulge = points[k].bulge;
@@ -134,15 +139,19 @@ Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
             continue;
         }
         if (std::abs(b.z() - a.z()) > 1e-9) {
-            errors.push_back({at(k), "an arc (bulge " + formatNumber(bulge) +
-                                         ") must keep its height, but z goes from " +
-                                         formatNumber(a.z()) + " to " + formatNumber(b.z())});
+            errors.push_back(
+                Diagnostic(at(k), "an arc (bulge " + formatNumber(bulge) +
+                                      ") must keep its height, but z goes from " +
+                                      formatNumber(a.z()) + " to " + formatNumber(b.z()))
+                    .coded(DiagnosticCode::PathArcChangesHeight, {bulge, a.z(), b.z()}));
             continue;
         }
         const Vec2 chord = xy(b) - xy(a);
         const double c = chord.norm();
         if (c < 1e-9) {
-            errors.push_back({at(k + 1), "an arc needs two distinct points in the XY plane"});
+            errors.push_back(
+                Diagnostic(at(k + 1), "an arc needs two distinct points in the XY plane")
+                    .coded(DiagnosticCode::PathArcNoChord, {}));
             continue;
         }
         // DXF bulge b = tan(θ/4): the centre sits (c/4)·(1/b − b) to the left of the chord and
@@ -156,10 +165,12 @@ Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
         // huge radius (bulge 1e9 on a 10 mm chord: 2.5e9 mm), with a length and times to match.
         const double reach = arcReach(center, radius, (xy(a) - center), theta);
         if (!(reach <= kMaxPathCoordinateMm)) {
-            errors.push_back({at(k), "the arc (bulge " + formatNumber(bulge) + ") reaches " +
-                                         formatNumber(reach) +
-                                         " mm from the origin; a path must stay within " +
-                                         formatNumber(kMaxPathCoordinateMm) + " mm"});
+            errors.push_back(
+                Diagnostic(at(k), "the arc (bulge " + formatNumber(bulge) + ") reaches " +
+                                      formatNumber(reach) +
+                                      " mm from the origin; a path must stay within " +
+                                      formatNumber(kMaxPathCoordinateMm) + " mm")
+                    .coded(DiagnosticCode::PathArcTooFar, {bulge, reach, kMaxPathCoordinateMm}));
             continue;
         }
         const Vec2 ra = xy(a) - center;
@@ -332,18 +343,20 @@ Result<ContourOffset> offsetContour(const Contour& contour, double toolRadius,
         const ContourFrame a = frameAt(seg, seg.phiStart), b = frameAt(seg, seg.phiEnd);
         starts.push_back(a);
         ends.push_back(b);
-        const std::string at = segmentLocation(k);
         if (isSpline(seg.type)) {
             // Tangent arc pairs within 0.1 µm: lines and arcs for the planner, G1 throughout.
             for (const PathSegment& piece :
                  biarcsOf(CubicBezier{seg.bezierKernel.p}, splineToleranceMm, 0.0, cancel)) {
                 const auto shifted = offsetPiece(piece, toolRadius);
                 if (!shifted) {
-                    errors.push_back({at, "the tool radius " + formatNumber(toolRadius) +
-                                              " mm is larger than this curve's tightest "
-                                              "concave radius " +
-                                              formatNumber(piece.radius) +
-                                              " mm: the offset path degenerates"});
+                    errors.push_back(
+                        Diagnostic::at({k}, "the tool radius " + formatNumber(toolRadius) +
+                                                " mm is larger than this curve's tightest "
+                                                "concave radius " +
+                                                formatNumber(piece.radius) +
+                                                " mm: the offset path degenerates")
+                            .coded(DiagnosticCode::ToolAboveCurveRadius,
+                                   {toolRadius, piece.radius}));
                     break;
                 }
                 offset[k].push_back(*shifted);
@@ -366,9 +379,11 @@ Result<ContourOffset> offsetContour(const Contour& contour, double toolRadius,
         const double convex = wa.dot(a.normal) >= 0 ? 1.0 : -1.0;
         const double radius = r + convex * toolRadius;
         if (radius <= 1e-9) {
-            errors.push_back({at, "the tool radius " + formatNumber(toolRadius) +
-                                      " mm is not smaller than the radius " + formatNumber(r) +
-                                      " mm of this concave arc: the offset path degenerates"});
+            errors.push_back(
+                Diagnostic::at({k}, "the tool radius " + formatNumber(toolRadius) +
+                                        " mm is not smaller than the radius " + formatNumber(r) +
+                                        " mm of this concave arc: the offset path degenerates")
+                    .coded(DiagnosticCode::ToolNotBelowArcRadius, {toolRadius, r}));
             continue;
         }
         const double direction = cross(wa, a.tangent) >= 0 ? 1.0 : -1.0;
@@ -402,7 +417,6 @@ Result<ContourOffset> offsetContour(const Contour& contour, double toolRadius,
         // of 1e-8 rad as a corner would intersect two nearly tangent offsets, which moves the
         // joint by sqrt(2Rδ) and tilts both tangents.
         if (std::abs(turn) <= degToRad(kTangentToleranceDeg)) continue;
-        const std::string at = segmentLocation(k) + "/" + segmentLocation(next);
         if (turn > 0) {
             // Convex corner: the tool rolls around the corner point.
             const Vec2 na = left.normal;
@@ -441,7 +455,9 @@ Result<ContourOffset> offsetContour(const Contour& contour, double toolRadius,
         }
         if (!best) best = nearest(before.back(), after.front(), false);
         if (!best) {
-            errors.push_back({at, "the offset segments do not meet at this corner"});
+            errors.push_back(
+                Diagnostic::atJoint(k, next, "the offset segments do not meet at this corner")
+                    .coded(DiagnosticCode::OffsetCornerUnmet, {}));
             continue;
         }
         before.resize(keepBefore + 1);
@@ -456,10 +472,12 @@ Result<ContourOffset> offsetContour(const Contour& contour, double toolRadius,
         if (cancelRequested(cancel)) return cancelledDiagnostics();
         for (std::size_t i = 0; i < joined[k].size(); ++i) {
             if (!trimmedWithin(offset[k][i], joined[k][i])) {
-                errors.push_back({segmentLocation(k),
-                                  "the tool radius " + formatNumber(toolRadius) +
-                                      " mm is too large here: at its concave corners the offset of "
-                                      "this segment would have to be trimmed beyond its ends"});
+                errors.push_back(
+                    Diagnostic::at({k}, "the tool radius " + formatNumber(toolRadius) +
+                                            " mm is too large here: at its concave corners the "
+                                            "offset of this segment would have to be trimmed "
+                                            "beyond its ends")
+                        .coded(DiagnosticCode::ToolTrimsSegment, {toolRadius}));
                 break;
             }
         }
