@@ -973,13 +973,19 @@ bool MainWindow::waitForCurrentResult(int timeoutMs) {
         // A first picture is followed by its finer plot levels.
         return r && r->generation == m_engine->latestGeneration() && !r->curves.partial;
     };
-    if (current()) return true;
+    // Shown: the plots have been replotted with it too (they replot one per pass of the event
+    // loop, see queueReplot).
+    const auto shown = [] {
+        replotQueuedNow();
+        return true;
+    };
+    if (current()) return shown();
     QEventLoop loop;
     QTimer::singleShot(timeoutMs, &loop, [&loop] { loop.exit(1); });
     connect(m_engine, &ComputeEngine::resultReady, &loop, [&loop, current] {
         if (current()) loop.exit(0);
     });
-    return loop.exec() == 0;
+    return loop.exec() == 0 && shown();
 }
 
 void MainWindow::updateStatus() {
