@@ -79,7 +79,13 @@ QImage renderScreenshot(MainWindow& window, const QSize& size) {
     if (!waitUntilShown(window)) return {};
     if (window.shownResult()) window.setCursorTime(window.shownResult()->period / 8.0);
     window.statusBar()->clearMessage();  // transient messages name paths: not part of the picture
-    for (int p = 0; p < 3; ++p) window.plots()->plot(p)->replot(QCustomPlot::rpImmediateRefresh);
+    // Twice: the stacked plots share one left margin, and each takes it from the others' last
+    // layout (a slow build had the lift plot laid out before the others took theirs).
+    for (int round = 0; round < 2; ++round) {
+        for (int p = 0; p < KinematicsPlots::kPlotCount; ++p) {
+            window.plots()->plot(p)->replot(QCustomPlot::rpImmediateRefresh);
+        }
+    }
     window.contourView()->replot(QCustomPlot::rpImmediateRefresh);
     QCoreApplication::processEvents();
     replotQueuedNow();  // the docks' plots: queued one per pass of the event loop
