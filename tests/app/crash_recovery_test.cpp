@@ -173,6 +173,15 @@ protected:
         return found;
     }
 
+    /// The titles of the windows on the display that are shown, for a failure's message.
+    QString visibleWindowNames() {
+        QStringList names;
+        for (const QString& id :
+             xdotool({"search", "--onlyvisible", "--name", "."}).split('\n', Qt::SkipEmptyParts))
+            names << '"' + xdotool({"getwindowname", id}) + '"';
+        return names.join(", ");
+    }
+
     QStringList recoveryCopies() const {
         return QDir(m_recovery).entryList({"session-*.cam.json"}, QDir::Files);
     }
@@ -222,7 +231,9 @@ TEST_F(CrashRecovery, AKilledSessionsEditComesBackOnTheNextStart) {
         bool restored = false;
         for (int attempt = 0; attempt < 10 && !restored; ++attempt) {
             const QString box =
-                xdotool({"search", "--name", "Recover Unsaved Changes"}).split('\n').front();
+                xdotool({"search", "--onlyvisible", "--name", "Recover Unsaved Changes"})
+                    .split('\n')
+                    .front();
             if (!box.isEmpty()) {
                 QThread::msleep(300);
                 xdotool({"mousemove", "--window", box, "20", "20"});
@@ -234,7 +245,8 @@ TEST_F(CrashRecovery, AKilledSessionsEditComesBackOnTheNextStart) {
                 },
                 2000);
         }
-        ASSERT_TRUE(restored) << appLog();
+        ASSERT_TRUE(restored) << "windows shown: " << visibleWindowNames().toStdString()
+                              << "; log: " << appLog();
         QThread::msleep(1000);
         // The restored project is the file's, unsaved: Ctrl+S writes the edit into it.
         xdotool({"mousemove", "300", "849", "click", "1"});  // the status bar: activates the window
@@ -285,6 +297,29 @@ TEST(Autosave, ACopyIsWrittenOnlyWhileThereAreUnsavedChangesAndSavingRemovesIt) 
     }
     // A clean end removes it.
     EXPECT_TRUE(QDir(folder.filePath("recovery")).entryList({"session-*"}, QDir::Files).isEmpty());
+}
+
+TEST(Autosave, NoCopyExistsWithoutTheNoteOfItsFile) {
+    // A session killed between writing the copy and its note left a copy that restored as
+    // an untitled project. The note comes first: when it cannot be written, neither is the copy.
+    QTemporaryDir folder;
+    ProjectDocument doc;
+    auto project = loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json"));
+    ASSERT_TRUE(project.ok());
+    doc.reset(project.value(), folder.filePath("cam.cam.json"));
+    Autosave autosave(&doc, folder.filePath("recovery"));
+    const QString copy = autosave.recoveryPath();
+    const QString note = copy.chopped(9) + ".json";
+    ASSERT_TRUE(QDir().mkpath(note));  // a folder where the note goes: it cannot be written
+    SegmentSpec moved = doc.project().contour.front();
+    std::get<Arc>(moved.shape).center.x() = 26.5;
+    doc.undoStack()->push(new EditSegment(&doc, 0, moved, EditedField::CenterX, "edit"));
+    EXPECT_FALSE(autosave.writeNow().isEmpty());
+    EXPECT_FALSE(QFile::exists(copy));
+    ASSERT_TRUE(QDir().rmdir(note));
+    EXPECT_TRUE(autosave.writeNow().isEmpty());
+    EXPECT_EQ(firstCentreX(copy), 26.5);
+    EXPECT_TRUE(readAll(note).contains("cam.cam.json"));
 }
 
 }  // namespace

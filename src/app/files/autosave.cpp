@@ -75,13 +75,14 @@ void Autosave::setIntervalMs(int ms) { m_timer.setInterval(std::max(ms, 10)); }
 
 QString Autosave::writeNow() {
     if (!m_document->isModified() || (m_hasCopy && m_writtenAt == m_changes)) return {};
-    const std::string text = serializeProject(m_document->project());
-    QString problem = writeWhole(m_projectPath, QByteArray::fromStdString(text));
+    // The note of the original file first: a session killed between the two writes leaves a
+    // copy that still names its file (the other order left the first copy nameless).
+    const QJsonObject meta{{"original", m_document->filePath()},
+                           {"saved", QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs)}};
+    QString problem = writeWhole(m_metaPath, QJsonDocument(meta).toJson());
     if (problem.isEmpty()) {
-        const QJsonObject meta{
-            {"original", m_document->filePath()},
-            {"saved", QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs)}};
-        problem = writeWhole(m_metaPath, QJsonDocument(meta).toJson());
+        const std::string text = serializeProject(m_document->project());
+        problem = writeWhole(m_projectPath, QByteArray::fromStdString(text));
     }
     if (problem.isEmpty()) {
         m_hasCopy = true;
