@@ -896,9 +896,11 @@ void MainWindow::requestCompute() {
 void MainWindow::showResult(const ComputeResultPtr& result) {
     if (m_shown && result->ok() && result->generation == m_shown->generation) {
         // The same result with the finer plot levels (see ComputeWorker): only the plots,
-        // which draw them when zoomed in, take it.
+        // which draw them when zoomed in, take it; and the follower's design checks.
+        const bool checks = m_shown->followerChecksPending && !result->followerChecksPending;
         m_shown = result;
         m_plots->setResult(result);
+        if (checks) m_follower->showChecks(result);
         emit resultShown(result);
         return;
     }
@@ -971,7 +973,7 @@ bool MainWindow::waitForCurrentResult(int timeoutMs) {
     const auto current = [this] {
         const auto& r = m_engine->latestResult();
         // A first picture is followed by its finer plot levels.
-        return r && r->generation == m_engine->latestGeneration() && !r->curves.partial;
+        return r && r->generation == m_engine->latestGeneration() && r->complete();
     };
     // Shown: the plots have been replotted with it too (they replot one per pass of the event
     // loop, see queueReplot).

@@ -11,7 +11,10 @@
 
 #include "app_test_support.h"
 #include "common/angles.h"
+#include "contour/contour.h"
 #include "engine/compute_engine.h"
+#include "follower/follower_analysis.h"
+#include "io/project_json.h"
 
 namespace cam {
 namespace {
@@ -103,6 +106,60 @@ TEST(ComputeEngine, AFirstPictureIsFollowedByTheSameResultWithEveryPlotLevel) {
     EXPECT_EQ(first.outlines, whole.outlines);
     EXPECT_EQ(first.curves.levels.back().curves[0].size(),
               whole.curves.levels.back().curves[0].size());
+}
+
+TEST(ComputeEngine, AFirstPictureLeavesTheArmsDesignChecksToItsRefinement) {
+    // A swinging arm's checks take longer than the kinematics: the first picture shows the
+    // pressure-angle curve without them, the refinement adds them.
+    ComputeEngine engine;
+    std::vector<ComputeResultPtr> shown;
+    QObject::connect(&engine, &ComputeEngine::resultReady,
+                     [&](const ComputeResultPtr& r) { shown.push_back(r); });
+    auto loaded = loadProjectFile(test::examplePath("swinging-arm-cam.cam.json"));
+    ASSERT_TRUE(loaded.ok());
+    const Project p = std::move(loaded).value();
+    ASSERT_TRUE(p.follower && p.follower->motion == FollowerMotion::Oscillating);
+    engine.request(p, PlotAxis::Angle);
+    ASSERT_TRUE(test::processEventsUntil([&] { return shown.size() >= 2; }));
+    test::processEventsUntil([] { return false; }, 200);  // nothing else comes
+    ASSERT_EQ(shown.size(), 2u);
+    const ComputeResult& first = *shown[0];
+    const ComputeResult& whole = *shown[1];
+    ASSERT_TRUE(first.ok() && first.follower);
+    EXPECT_TRUE(first.followerChecksPending);
+    EXPECT_FALSE(first.complete());
+    EXPECT_EQ(first.followerPressureDeg.size(), ComputeResult::kFollowerCurvePoints + 1);
+    EXPECT_FALSE(whole.followerChecksPending);
+    EXPECT_TRUE(whole.complete());
+    // The checks are those of the follower on the contour, made apart from the engine.
+    const Contour contour = Contour::build(p).value();
+    const FollowerModel model = FollowerModel::build(contour, *p.follower).value();
+    const FollowerAnalysis expected =
+        analyzeFollower(model, p.motion.omegaRadS(), contour.phiBegin());
+    EXPECT_GT(expected.pressureRise.value, 0.0);
+    EXPECT_EQ(whole.followerChecks.pressureRise.value, expected.pressureRise.value);
+    EXPECT_EQ(whole.followerChecks.pressureRise.phi, expected.pressureRise.phi);
+    EXPECT_EQ(whole.followerChecks.pressureReturn.value, expected.pressureReturn.value);
+    EXPECT_EQ(whole.followerChecks.rhoPitchMin.value, expected.rhoPitchMin.value);
+    EXPECT_EQ(whole.followerChecks.limitRad, expected.limitRad);
+    EXPECT_EQ(whole.followerChecks.undercut.size(), expected.undercut.size());
+    // The curve is the first picture's.
+    EXPECT_EQ(whole.followerPressureDeg, first.followerPressureDeg);
+}
+
+TEST(ComputeEngine, WithoutAFirstPictureTheChecksComeAtOnce) {
+    auto loaded = loadProjectFile(test::examplePath("swinging-arm-cam.cam.json"));
+    ASSERT_TRUE(loaded.ok());
+    ComputeRequest request;
+    request.generation = 1;
+    request.project = std::make_shared<const Project>(std::move(loaded).value());
+    const std::atomic<bool> cancel{false};
+    const ComputeResultPtr result = computeProject(request, cancel);
+    ASSERT_TRUE(result && result->ok() && result->follower);
+    EXPECT_FALSE(result->followerChecksPending);
+    EXPECT_TRUE(result->complete());
+    EXPECT_GT(result->followerChecks.limitRad, 0.0);
+    EXPECT_EQ(refineResult(*result, cancel, nullptr), nullptr);  // nothing left to add
 }
 
 TEST(ComputeEngine, StreamingEditsShowOnlyNewerResultsAndEndOnTheLast) {

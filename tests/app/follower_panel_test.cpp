@@ -158,6 +158,44 @@ TEST(FollowerPanel, TheChecksAreTheCoresAndAClickGoesToTheirAngle) {
     EXPECT_NEAR(window.cursorTime(), expected, 1e-12);
 }
 
+TEST(FollowerPanel, AnEditsChecksFollowItsFirstPictureAndTheListIsNeverEmptyMeanwhile) {
+    // The first picture of an edit carries the pressure-angle curve but not the arm's checks
+    // (they take longer than the kinematics): the list keeps the previous checks until the
+    // same result comes back with its own.
+    MainWindow window;
+    ASSERT_TRUE(
+        window.loadFile(QString::fromStdString(test::examplePath("swinging-arm-cam.cam.json")))
+            .isEmpty());
+    window.show();
+    ASSERT_TRUE(waitForResult(window));
+    const QStringList before = window.followerPanel()->checkLines();
+    ASSERT_FALSE(before.isEmpty());
+    std::vector<std::pair<bool, QStringList>> seen;  // pending, the list as shown then
+    QObject::connect(&window, &MainWindow::resultShown, [&](const ComputeResultPtr& r) {
+        seen.emplace_back(r->followerChecksPending, window.followerPanel()->checkLines());
+    });
+    auto* limit = child<QDoubleSpinBox>(window, "pressureLimitSpinBox");
+    ASSERT_NE(limit, nullptr);
+    limit->setValue(limit->value() + 5.0);
+    emit limit->editingFinished();
+    ASSERT_TRUE(waitForResult(window));
+    ASSERT_GE(seen.size(), 2u);
+    EXPECT_TRUE(seen.front().first);
+    EXPECT_EQ(seen.front().second, before);  // the previous checks, not an empty list
+    EXPECT_FALSE(seen.back().first);
+    // Then the checks of the edit: the core's, with the new limit.
+    const ComputeResultPtr result = window.engine()->latestResult();
+    const Contour contour = Contour::build(*result->project).value();
+    const FollowerModel model = FollowerModel::build(contour, *result->project->follower).value();
+    const FollowerAnalysis a = analyzeFollower(model, result->omega, contour.phiBegin());
+    const QStringList after = window.followerPanel()->checkLines();
+    EXPECT_EQ(seen.back().second, after);
+    ASSERT_FALSE(after.isEmpty());
+    EXPECT_TRUE(after[0].contains(QLocale().toString(radToDeg(a.limitRad), 'f', 2)))
+        << after[0].toStdString();
+    EXPECT_NE(after, before);
+}
+
 TEST(FollowerPanel, AnArmThatCannotReachTheCamIsListedNotHidden) {
     MainWindow window;
     ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());

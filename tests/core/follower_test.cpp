@@ -219,6 +219,20 @@ TEST(FollowerFlat, TheFaceRestsOnTheHighestPointOfTheProfile) {
 namespace cam {
 namespace {
 
+TEST(FollowerAnalysisTest, ACancelledAnalysisStopsAtOnceAndReturnsNothing) {
+    const Contour contour = sixLobe();
+    const FollowerModel m = model(contour, FollowerType::Roller, 2.0, 3.0);
+    const FollowerAnalysis whole = analyzeFollower(m, 1.0, contour.phiBegin());
+    ASSERT_GT(whole.pressureRise.value, 0.0);
+    ASSERT_GT(whole.limitRad, 0.0);
+    const std::atomic<bool> cancel{true};
+    const FollowerAnalysis stopped =
+        analyzeFollower(m, 1.0, contour.phiBegin(), kFollowerCheckSamples, &cancel);
+    EXPECT_EQ(stopped.pressureRise.value, 0.0);
+    EXPECT_EQ(stopped.limitRad, 0.0);
+    EXPECT_TRUE(stopped.undercut.empty());
+}
+
 TEST(FollowerAnalysisTest, ExtremesAgreeWithADenseSampling) {
     // The refined extremes against the best of 200 000 evenly spaced angles: never worse, and
     // within what that grid can resolve.

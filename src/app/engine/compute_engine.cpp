@@ -85,9 +85,9 @@ void ComputeWorker::run() {
             guarded(request, [&] { return computeProject(request, m_cancel, preparer.get()); });
         if (!result || m_cancel.load()) continue;
         emit finished(result);
-        // The first picture is shown; the finer plot levels (for zooming in) follow, unless
-        // a newer request came meanwhile.
-        if (result->curves.partial) {
+        // The first picture is shown; the finer plot levels (for zooming in) and the
+        // follower's design checks follow, unless a newer request came meanwhile.
+        if (!result->complete()) {
             const ComputeResultPtr refined =
                 guarded(request, [&] { return refineResult(*result, m_cancel, preparer.get()); });
             if (!refined || m_cancel.load()) continue;

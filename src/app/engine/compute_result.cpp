@@ -112,7 +112,8 @@ struct FollowerPart {
 };
 
 FollowerPart computeFollower(const Contour* contour, const FollowerSpec& spec, double omega,
-                             double period, PlotAxis axis, const std::atomic<bool>* cancel) {
+                             double period, PlotAxis axis, bool checks,
+                             const std::atomic<bool>* cancel) {
     FollowerPart part;
     auto follower = FollowerModel::build(*contour, spec);
     if (!follower.ok()) {
@@ -121,7 +122,7 @@ FollowerPart computeFollower(const Contour* contour, const FollowerSpec& spec, d
     }
     auto model = std::make_shared<const FollowerModel>(std::move(follower).value());
     if (cancel->load()) return part;
-    part.checks = analyzeFollower(*model, omega, contour->phiBegin());
+    if (checks) part.checks = analyzeFollower(*model, omega, contour->phiBegin());
     constexpr std::size_t n = ComputeResult::kFollowerCurvePoints;
     FollowerTurn turn;
     if (!sampleFollowerTurn(*model, omega, n, turn, cancel)) return part;
@@ -288,10 +289,13 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     result->period = kTwoPi / std::abs(result->omega);
     // The follower needs only the contour: on the pool's other core while this thread samples
     // the turn (a swinging arm's design checks cost about as much as the kinematics).
+    // A first picture leaves the design checks to refineResult(): the curve is what is drawn.
     QFuture<FollowerPart> follower;
+    const bool checksNow = request.firstPictureBuckets == 0;
     if (request.project->follower) {
-        follower = QtConcurrent::run(computeFollower, &*result->contour, *request.project->follower,
-                                     result->omega, result->period, request.axis, &cancel);
+        follower =
+            QtConcurrent::run(computeFollower, &*result->contour, *request.project->follower,
+                              result->omega, result->period, request.axis, checksNow, &cancel);
     }
     // So are the analysis and the outlines, on the pool too (the GUI thread waits idle for
     // the first picture: its core is free).
@@ -332,6 +336,7 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
         result->follower = std::move(part.model);
         result->followerErrors = std::move(part.errors);
         result->followerChecks = std::move(part.checks);
+        result->followerChecksPending = result->follower && !checksNow;
         result->followerX = std::move(part.x);
         result->followerPressureDeg = std::move(part.pressureDeg);
     }
@@ -345,15 +350,25 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
 
 ComputeResultPtr refineResult(const ComputeResult& first, const std::atomic<bool>& cancel,
                               const PlotDataPreparer* preparer) {
-    if (!first.ok() || !first.curves.partial) return nullptr;
+    if (!first.ok() || first.complete()) return nullptr;
     QElapsedTimer timer;
     timer.start();
     auto result = std::make_shared<ComputeResult>(first);
-    if (!buildPlotCurves(*result->contour, result->omega, result->sampleCount, result->axis,
+    // On this thread alone: the window draws the first picture meanwhile on the other core.
+    // The checks first, which the Follower dock lists; the finer levels are for zooming in.
+    if (first.followerChecksPending) {
+        result->followerChecks =
+            analyzeFollower(*first.follower, first.omega, first.contour->phiBegin(),
+                            kFollowerCheckSamples, &cancel);
+        result->followerChecksPending = false;
+        if (cancel.load()) return nullptr;
+    }
+    if (first.curves.partial &&
+        !buildPlotCurves(*result->contour, result->omega, result->sampleCount, result->axis,
                          result->curves, cancel)) {
         return nullptr;
     }
-    if (preparer) {
+    if (preparer && first.curves.partial) {
         result->prepared = preparer->prepare(*result, cancel);
         if (cancel.load()) return nullptr;
     }

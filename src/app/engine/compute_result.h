@@ -42,8 +42,9 @@ struct ComputeRequest {
     PlotAxis axis = PlotAxis::Angle;
     bool timing = false;  ///< also compute the machining times (when the panel is shown)
     TimingMethod plotMethod = TimingMethod::Optimal;
-    /// With a value > 0, the plot levels stop at this many buckets (a first picture, see
-    /// buildPlotCurves); refineResult() adds the finer ones. 0: every level at once.
+    /// With a value > 0 the result is a first picture: the plot levels stop at this many
+    /// buckets (see buildPlotCurves) and the follower's design checks are left out;
+    /// refineResult() adds both. 0: everything at once.
     std::size_t firstPictureBuckets = 0;
 };
 
@@ -102,6 +103,9 @@ struct ComputeResult {
     std::shared_ptr<const FollowerModel> follower;
     Diagnostics followerErrors;
     FollowerAnalysis followerChecks;
+    /// The design checks are not computed yet (a first picture: a swinging arm's take longer
+    /// than the kinematics); refineResult() adds them.
+    bool followerChecksPending = false;
     /// The pressure angle (deg) over the turn at kFollowerCurvePoints + 1 equal time steps, on
     /// the plots' x axis (degrees or seconds, as `curves`).
     std::vector<double> followerX, followerPressureDeg;
@@ -113,6 +117,8 @@ struct ComputeResult {
     PreparedPlotDataPtr prepared;
 
     [[nodiscard]] bool ok() const { return errors.empty() && contour.has_value(); }
+    /// @brief Nothing of it is left for refineResult(): every plot level, every check.
+    [[nodiscard]] bool complete() const { return !curves.partial && !followerChecksPending; }
     /// @brief A design whose contour was never synthesised: nothing to draw but the design.
     [[nodiscard]] bool awaitsContour() const;
 };
@@ -159,8 +165,9 @@ TimingOutcomePtr computeTiming(const ComputeRequest& request, const Contour& con
 ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic<bool>& cancel,
                                 const PlotDataPreparer* preparer = nullptr);
 
-/// @brief The first picture's result with every plot level (and the views' data for them):
-/// the same result otherwise. Null if cancelled, or if `first` has every level already.
+/// @brief The first picture's result with every plot level (and the views' data for them) and
+/// the follower's design checks: the same result otherwise. Null if cancelled, or if `first`
+/// is complete already.
 ComputeResultPtr refineResult(const ComputeResult& first, const std::atomic<bool>& cancel,
                               const PlotDataPreparer* preparer = nullptr);
 

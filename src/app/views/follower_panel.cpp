@@ -229,14 +229,13 @@ void FollowerPanel::setCursorX(double x) {
 }
 
 void FollowerPanel::setResult(const ComputeResultPtr& result) {
-    m_checks->clear();
     const bool curve = result && result->ok() && result->follower;
     m_pressurePlot->setVisible(curve);
     if (curve) {
         const QVector<double> x(result->followerX.begin(), result->followerX.end());
         const QVector<double> y(result->followerPressureDeg.begin(),
                                 result->followerPressureDeg.end());
-        const double limit = radToDeg(result->followerChecks.limitRad);
+        const double limit = result->follower->spec().maxPressureAngleOrDefault();
         QVector<double> beyond(y.size());
         for (qsizetype k = 0; k < y.size(); ++k) {
             beyond[k] = std::abs(y[k]) > limit ? y[k] : std::numeric_limits<double>::quiet_NaN();
@@ -256,6 +255,13 @@ void FollowerPanel::setResult(const ComputeResultPtr& result) {
         m_pressurePlot->yAxis->setRange(-1.1 * top, 1.1 * top);
         queueReplot(m_pressurePlot);
     }
+    // A first picture's checks follow with its refinement (MainWindow::showResult): until
+    // then the list keeps the previous ones.
+    if (!(curve && result->followerChecksPending)) showChecks(result);
+}
+
+void FollowerPanel::showChecks(const ComputeResultPtr& result) {
+    m_checks->clear();
     m_problems = 0;
     const auto add = [this](const QString& text, std::optional<double> phi, bool problem) {
         auto* item = new QListWidgetItem(text, m_checks);

@@ -27,8 +27,11 @@ class FollowerPanel : public QWidget {
 public:
     explicit FollowerPanel(ProjectDocument* document, QWidget* parent = nullptr);
 
-    /// @brief Shows the design checks of a result (the last one computed).
+    /// @brief Shows the pressure-angle curve and the design checks of a result (the last one
+    /// computed); a first picture's checks come later, through showChecks().
     void setResult(const ComputeResultPtr& result);
+    /// @brief Shows the design checks of a result (its curve is shown already).
+    void showChecks(const ComputeResultPtr& result);
     /// @brief The checks as shown, one line each (for tests and copying).
     [[nodiscard]] QStringList checkLines() const;
     /// @brief How many checks fail (beyond the limit, cannot reach, cannot ride).

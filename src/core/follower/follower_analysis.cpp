@@ -41,11 +41,14 @@ FollowerExtremum refine(const std::function<double(double)>& f, double phi, doub
 }  // namespace
 
 FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega, double phiBegin,
-                                 int samples) {
+                                 int samples, const std::atomic<bool>* cancel) {
     const int n = std::max(samples, 64);
     const double h = kTwoPi / n;
     std::vector<FollowerState> st(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) st[static_cast<std::size_t>(i)] = model.at(phiBegin + i * h, omega);
+    for (int i = 0; i < n; ++i) {
+        if (cancel && i % 256 == 0 && cancel->load(std::memory_order_relaxed)) return {};
+        st[static_cast<std::size_t>(i)] = model.at(phiBegin + i * h, omega);
+    }
     const auto at = [&](int i) -> const FollowerState& {
         return st[static_cast<std::size_t>(((i % n) + n) % n)];
     };

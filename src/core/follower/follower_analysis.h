@@ -4,6 +4,7 @@
 /// derivatives, the largest pressure angle on rise and return against the limit, the smallest
 /// radii of curvature, the flat face's width, and where the follower cannot reach the profile.
 
+#include <atomic>
 #include <vector>
 
 #include "follower/follower.h"
@@ -42,9 +43,14 @@ struct FollowerAnalysis {
     std::vector<NonContact> undercut;
 };
 
+/// @brief How many angles the design checks sample per turn by default.
+inline constexpr int kFollowerCheckSamples = 7200;
+
 /// @brief Samples the turn at `samples` angles, refines every extreme by golden sections and
-/// every jump of the contact point and limit crossing by bisection.
+/// every jump of the contact point and limit crossing by bisection. Polls `cancel` while it
+/// samples: once set, what it returns is incomplete and meant to be dropped.
 [[nodiscard]] FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega,
-                                               double phiBegin, int samples = 7200);
+                                               double phiBegin, int samples = kFollowerCheckSamples,
+                                               const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace cam
