@@ -147,7 +147,7 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
     constexpr int kSamples = 2048;
     const double h = kTwoPi / kSamples;
     std::vector<double> s(kSamples);
-    for (int i = 0; i < kSamples; ++i) s[i] = model.best(model.m_phiBegin + i * h).rank;
+    for (int i = 0; i < kSamples; ++i) s[i] = model.rankAt(model.m_phiBegin + i * h);
     // An arm that finds no contact at a sample cannot ride the cam (a line always finds one).
     for (int i = 0; i < kSamples && model.oscillating(); ++i) {
         if (!(s[i] > -std::numeric_limits<double>::infinity())) {
@@ -161,20 +161,20 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
         double lo = model.m_phiBegin + (i - 1) * h, hi = model.m_phiBegin + (i + 1) * h;
         constexpr double g = 0.6180339887498949;
         double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-        double f1 = model.best(x1).rank, f2 = model.best(x2).rank;
+        double f1 = model.rankAt(x1), f2 = model.rankAt(x2);
         for (int it = 0; it < 80 && hi - lo > 1e-15; ++it) {
             if (f1 <= f2) {
                 hi = x2;
                 x2 = x1;
                 f2 = f1;
                 x1 = hi - g * (hi - lo);
-                f1 = model.best(x1).rank;
+                f1 = model.rankAt(x1);
             } else {
                 lo = x1;
                 x1 = x2;
                 f1 = f2;
                 x2 = lo + g * (hi - lo);
-                f2 = model.best(x2).rank;
+                f2 = model.rankAt(x2);
             }
         }
         minimum = std::min({minimum, s[i], f1, f2});
@@ -470,6 +470,17 @@ void FollowerModel::supports(double phi, const Eigen::Vector2d& u,
                 break;
         }
     }
+}
+
+double FollowerModel::rankAt(double phi) const {
+    if (!oscillating()) return best(phi).rank;
+    // armContacts' first piece is the one of the highest rank, and its contacts' ranks are
+    // the ones armRank finds (the same intersections, without jets).
+    double top = -std::numeric_limits<double>::infinity();
+    for (const std::uint32_t index : piecesAt(phi)) {
+        top = std::max(top, armRank(m_pieces[index], phi));
+    }
+    return top;
 }
 
 FollowerModel::Candidate FollowerModel::best(double phi) const {

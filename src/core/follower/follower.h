@@ -120,6 +120,8 @@ private:
     void armContacts(double phi, std::vector<Candidate>& out) const;  // follower_arm.cpp
     [[nodiscard]] double armRank(const Piece& piece, double phi) const;
     [[nodiscard]] Candidate best(double phi) const;
+    /// best(phi).rank without the derivatives (an arm's contact found in doubles alone).
+    [[nodiscard]] double rankAt(double phi) const;
     [[nodiscard]] Candidate best(double phi, const Eigen::Vector2d& u) const;
     [[nodiscard]] FollowerState armState(double phi, double omega, const Candidate& c) const;
     /// follower_arm.cpp: a pivot that comes inside the cam; why the arm finds no contact at φ.
