@@ -64,7 +64,14 @@ QString germanForm(DiagnosticCode code, std::size_t i) {
 }
 
 Diagnostic sample(DiagnosticCode code) {
-    return Diagnostic("machining.step", "english text").coded(code, sampleArguments(code));
+    Diagnostic d = Diagnostic("machining.step", "english text").coded(code, sampleArguments(code));
+    // Codes that nest whole diagnostics carry one, worded too.
+    if (code == DiagnosticCode::FilletRadiusInvalidContour ||
+        code == DiagnosticCode::TangentNoneFits) {
+        d.reasons.push_back(Diagnostic("contour[2].radius", "nested english text")
+                                .coded(DiagnosticCode::NotPositive, {-2.5}));
+    }
+    return d;
 }
 
 QString englishLine(const Diagnostic& d) {
@@ -90,6 +97,10 @@ TEST(DiagnosticText, EveryCodeHasAGermanTextThatUsesAllItsArguments) {
         const QString text = DiagnosticText::line(d);
         EXPECT_NE(text, english[code]) << name << ": no German text";
         EXPECT_FALSE(text.contains(QStringLiteral("english text"))) << name;
+        if (!d.reasons.empty()) {
+            EXPECT_TRUE(text.contains(QStringLiteral("-2,5")))
+                << name << ": " << text.toStdString();
+        }
         EXPECT_FALSE(placeholder.match(text).hasMatch()) << name << ": " << text.toStdString();
         for (std::size_t i = 0; i < d.args.size(); ++i) {
             EXPECT_TRUE(text.contains(germanForm(code, i)))
