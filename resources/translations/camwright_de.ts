@@ -269,13 +269,33 @@
         <translation>Stößel, Drehpunkt des Hebels y</translation>
     </message>
     <message>
+        <location line="+3" />
+        <source>Point %1</source>
+        <translation>Punkt %1</translation>
+    </message>
+    <message>
         <location line="+5" />
-        <location line="+636" />
+        <location line="+716" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-635" />
+        <location line="-715" />
+        <source>Points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Bulge factor</source>
+        <translation>Wölbungsfaktor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Admissible radial error</source>
+        <translation>Zulässiger radialer Fehler</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Motion, ω [rad/s]</source>
         <translation>Bewegung, ω [rad/s]</translation>
     </message>
@@ -348,6 +368,11 @@
         <location line="+1" />
         <source>Machining, step</source>
         <translation>Zerspanung, Schrittweite</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Motion design</source>
+        <translation>Bewegungsentwurf</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1155,12 +1180,123 @@
         <translation>ersetzt, aber der Ordner %1 kann nicht auf den Datenträger geschrieben werden: %2</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+3" />
+        <source>there is no such segment</source>
+        <translation>dieses Segment gibt es nicht</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is not an arc</source>
+        <translation>ist kein Bogen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the admissible radial error must be &gt; 0 mm</source>
+        <translation>der zulässige radiale Fehler muss &gt; 0 mm sein</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the follower ray at the start of the window does not meet the arc</source>
+        <translation>der Strahl des Stößels am Anfang des Fensters trifft den Bogen nicht</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the follower ray at the end of the window does not meet the arc</source>
+        <translation>der Strahl des Stößels am Ende des Fensters trifft den Bogen nicht</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>a spline needs at least two points</source>
+        <translation>ein Spline braucht mindestens zwei Stützpunkte</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a closed spline needs at least three points</source>
+        <translation>ein geschlossener Spline braucht mindestens drei Stützpunkte</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be a finite factor &gt; 0 (got %1)</source>
+        <translation>muss ein endlicher Faktor &gt; 0 sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the neighbouring segments do not meet, so there is no boundary to fit the windows to</source>
+        <translation>die benachbarten Segmente treffen sich nicht, daher gibt es keine Grenze, an die sich die Fenster anpassen ließen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>is empty: the design's contour was never synthesised (Synthesize Contour, F6, makes it)</source>
+        <translation>ist leer: die Kontur des Entwurfs wurde noch nie synthetisiert (Kontur synthetisieren, F6, erzeugt sie)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the project has no motion design to synthesise a contour from</source>
+        <translation>das Projekt hat keinen Bewegungsentwurf, aus dem sich eine Kontur synthetisieren ließe</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the synthesised arc table is not a valid contour</source>
+        <translation>die synthetisierte Bogentabelle ist keine gültige Kontur</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot be met: no biarc joins two neighbouring points of the profile's sampling within it (the profile has a corner or a cusp there, or the tolerance is too small)</source>
+        <translation>ist nicht einzuhalten: kein Doppelbogen verbindet zwei benachbarte Abtastpunkte des Profils innerhalb dieser Toleranz (das Profil hat dort eine Ecke oder Spitze, oder die Toleranz ist zu klein)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the follower's line (offset %1 mm) passes outside the base circle of radius %2 mm: make the base radius larger than the offset</source>
+        <translation>die Stößelgerade (Versatz %1 mm) verläuft außerhalb des Grundkreises mit Radius %2 mm: den Grundkreisradius größer als den Versatz wählen</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the follower's line (offset %1 mm) passes outside the base circle of radius %2 mm (base radius + roller radius): make the base radius larger than the offset</source>
+        <translation>die Stößelgerade (Versatz %1 mm) verläuft außerhalb des Grundkreises mit Radius %2 mm (Grundkreisradius + Rollenradius): den Grundkreisradius größer als den Versatz wählen</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>an arm of %1 mm from a pivot %2 mm from the cam centre cannot touch the base circle of radius %3 mm</source>
+        <translation>ein Schwinghebel von %1 mm Länge, dessen Drehpunkt %2 mm vom Scheibenmittelpunkt entfernt ist, kann den Grundkreis mit Radius %3 mm nicht berühren</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>an arm of %1 mm from a pivot %2 mm from the cam centre cannot touch the base circle of radius %3 mm (base radius + roller radius)</source>
+        <translation>ein Schwinghebel von %1 mm Länge, dessen Drehpunkt %2 mm vom Scheibenmittelpunkt entfernt ist, kann den Grundkreis mit Radius %3 mm (Grundkreisradius + Rollenradius) nicht berühren</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>undercut: from %2° to %3° the pitch curve bends tighter than the roller radius %1 mm</source>
+        <translation>Unterschnitt: von %2° bis %3° ist die Rollenmittelpunktsbahn enger gekrümmt als der Rollenradius %1 mm</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>undercut: from %1° to %2° the envelope of the flat face folds back (h + h'' &lt; 0)</source>
+        <translation>Unterschnitt: von %1° bis %2° schlägt die Hüllkurve des Flachstößels zurück (h + h'' &lt; 0)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>from %2° to %3° the pressure angle exceeds %1°</source>
+        <translation>von %2° bis %3° überschreitet der Druckwinkel %1°</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>radius %1 mm gives a contour that does not validate (%2)</source>
+        <translation>Radius %1 mm ergibt eine ungültige Kontur (%2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+18" />
         <source>Joint between segments %1 and %2</source>
         <translation>Übergang zwischen Segment %1 und %2</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="-725" />
+        <location line="+732" />
         <source>Segment %1</source>
         <translation>Segment %1</translation>
     </message>
@@ -3193,7 +3329,7 @@
         <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
     </message>
     <message>
-        <location line="+54" />
+        <location line="+60" />
         <source>Valid · no contour yet: Synthesize (F6) makes it</source>
         <translation>Gültig · noch keine Kontur: Synthetisieren (F6) erzeugt sie</translation>
     </message>
@@ -3223,7 +3359,7 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-525" />
+        <location line="-531" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>

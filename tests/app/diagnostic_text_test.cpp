@@ -11,14 +11,19 @@
 #include <tuple>
 
 #include "app_test_support.h"
+#include "common/cancel.h"
 #include "construction/tangents.h"
 #include "core/test_projects.h"
+#include "design/exact_profile.h"
+#include "design/synthesis.h"
 #include "fillet/fillet.h"
 #include "follower/follower.h"
 #include "mainwindow.h"
 #include "messages/diagnostic_text.h"
 #include "models/segment_table_model.h"
 #include "project/validate.h"
+#include "spline/circle_approximation.h"
+#include "spline/teach_in.h"
 #include "timing/tool_path.h"
 #include "translations.h"
 #include "views/kinematics_plots.h"
@@ -64,7 +69,14 @@ QString germanForm(DiagnosticCode code, std::size_t i) {
 }
 
 Diagnostic sample(DiagnosticCode code) {
-    return Diagnostic("machining.step", "english text").coded(code, sampleArguments(code));
+    Diagnostic d = Diagnostic("machining.step", "english text").coded(code, sampleArguments(code));
+    // Codes that nest whole diagnostics carry one, worded too.
+    if (code == DiagnosticCode::FilletRadiusInvalidContour ||
+        code == DiagnosticCode::TangentNoneFits) {
+        d.reasons.push_back(Diagnostic("contour[2].radius", "nested english text")
+                                .coded(DiagnosticCode::NotPositive, {-2.5}));
+    }
+    return d;
 }
 
 QString englishLine(const Diagnostic& d) {
@@ -90,6 +102,10 @@ TEST(DiagnosticText, EveryCodeHasAGermanTextThatUsesAllItsArguments) {
         const QString text = DiagnosticText::line(d);
         EXPECT_NE(text, english[code]) << name << ": no German text";
         EXPECT_FALSE(text.contains(QStringLiteral("english text"))) << name;
+        if (!d.reasons.empty()) {
+            EXPECT_TRUE(text.contains(QStringLiteral("-2,5")))
+                << name << ": " << text.toStdString();
+        }
         EXPECT_FALSE(placeholder.match(text).hasMatch()) << name << ": " << text.toStdString();
         for (std::size_t i = 0; i < d.args.size(); ++i) {
             EXPECT_TRUE(text.contains(germanForm(code, i)))
@@ -342,6 +358,140 @@ TEST(DiagnosticText, EveryDroppedTangentIsExplainedInGerman) {
                   "auf Segment 0 nach (4,8734; 27,5) auf Segment 1 berührt Segment 1 auf der "
                   "fernen Seite seines Kreises, aber der Bogen folgt der nahen Seite (Zweig "
                   "„innen“)"));
+}
+
+TEST(DiagnosticText, TooFewOrRepeatedTeachInPointsAreExplainedInGerman) {
+    const auto one = contourThroughPoints({{20.0, 0.0}}, HandleRule::Oval);
+    ASSERT_FALSE(one.ok());
+    EXPECT_EQ(one.errors().front().text(), "points: a closed spline needs at least three points");
+    EXPECT_EQ(germanLine(one.errors().front()),
+              QStringLiteral("Punkte: ein geschlossener Spline braucht mindestens drei "
+                             "Stützpunkte"));
+
+    const auto open = splineThroughPoints({{20.0, 0.0}}, false, HandleRule::Chord);
+    ASSERT_FALSE(open.ok());
+    EXPECT_EQ(germanLine(open.errors().front()),
+              QStringLiteral("Punkte: ein Spline braucht mindestens zwei Stützpunkte"));
+
+    // Points 1 and 2 coincide: point 2 is named, counted from 0 as in the list.
+    const auto repeated = contourThroughPoints(
+        {{20.0, 0.0}, {0.0, 20.0}, {0.0, 20.0}, {-20.0, 0.0}, {0.0, -20.0}}, HandleRule::Oval);
+    ASSERT_FALSE(repeated.ok());
+    EXPECT_EQ(repeated.errors().front().text(), "point[2]: repeats the previous point");
+    EXPECT_EQ(germanLine(repeated.errors().front()),
+              QStringLiteral("Punkt 2: wiederholt den vorigen Punkt"));
+
+    const auto flat =
+        contourThroughPoints({{20.0, 0.0}, {0.0, 20.0}, {-20.0, 0.0}}, HandleRule::Oval, -0.5);
+    ASSERT_FALSE(flat.ok());
+    EXPECT_EQ(flat.errors().front().text(), "bulge: must be a finite factor > 0 (got -0.5)");
+    EXPECT_EQ(germanLine(flat.errors().front()),
+              QStringLiteral("Wölbungsfaktor: muss ein endlicher Faktor > 0 sein (ist -0,5)"));
+}
+
+TEST(DiagnosticText, AnArcApproximationItCannotMakeIsExplainedInGerman) {
+    // A circle of radius 20 about the origin in two windows, and a line.
+    std::vector<SegmentSpec> contour = test::splitCircle(0.0, 20.0, {0.0, 180.0, 360.0}).contour;
+    const auto exact = approximateArcSegment(contour, 0, 0.0);
+    ASSERT_FALSE(exact.ok());
+    EXPECT_EQ(exact.errors().front().text(), "error: the admissible radial error must be > 0 mm");
+    EXPECT_EQ(germanLine(exact.errors().front()),
+              QStringLiteral("Zulässiger radialer Fehler: der zulässige radiale Fehler muss "
+                             "> 0 mm sein"));
+
+    const auto beyond = approximateArcSegment(contour, 5, 0.001);
+    ASSERT_FALSE(beyond.ok());
+    EXPECT_EQ(beyond.errors().front().text(), "contour[5]: no such segment");
+    EXPECT_EQ(germanLine(beyond.errors().front()),
+              QStringLiteral("Segment 5: dieses Segment gibt es nicht"));
+
+    contour[1] = SegmentSpec{Line{{-20.0, 0.0}, {20.0, -20.0}}, 180.0, 360.0};
+    const auto line = approximateArcSegment(contour, 1, 0.001);
+    ASSERT_FALSE(line.ok());
+    EXPECT_EQ(line.errors().front().text(), "contour[1].type: is not an arc");
+    EXPECT_EQ(germanLine(line.errors().front()), QStringLiteral("Segment 1, Typ: ist kein Bogen"));
+}
+
+TEST(DiagnosticText, AFollowerLineBesideTheBaseCircleIsExplainedInGerman) {
+    // A 5 mm roller on a line 50.5 mm off the centre misses the 45 mm circle its centre runs
+    // on at lift 0 (base radius 40 mm + roller radius).
+    FollowerSpec follower;
+    follower.type = FollowerType::Roller;
+    follower.radius = 5.0;
+    follower.offset = 50.5;
+    const auto design = MotionDesign::build(test::cycloidalDesign());
+    ASSERT_TRUE(design.ok());
+    const auto roller = ExactProfile::build(design.value(), follower);
+    ASSERT_FALSE(roller.ok());
+    EXPECT_EQ(roller.errors().front().text(),
+              "design.base_radius: the follower's line (offset 50.5 mm) passes outside the base "
+              "circle of radius 45 mm (base radius + roller radius): make the base radius larger "
+              "than the offset");
+    EXPECT_EQ(germanLine(roller.errors().front()),
+              QStringLiteral("Bewegungsentwurf, Grundkreisradius: die Stößelgerade (Versatz "
+                             "50,5 mm) verläuft außerhalb des Grundkreises mit Radius "
+                             "45 mm (Grundkreisradius + Rollenradius): den Grundkreisradius "
+                             "größer als den Versatz wählen"));
+
+    // A knife edge has no roller radius to add.
+    follower.type = FollowerType::Knife;
+    const auto knife = ExactProfile::build(design.value(), follower);
+    ASSERT_FALSE(knife.ok());
+    EXPECT_EQ(germanLine(knife.errors().front()),
+              QStringLiteral("Bewegungsentwurf, Grundkreisradius: die Stößelgerade (Versatz "
+                             "50,5 mm) verläuft außerhalb des Grundkreises mit Radius "
+                             "40 mm: den Grundkreisradius größer als den Versatz wählen"));
+}
+
+TEST(DiagnosticText, AnUndercutIsExplainedInGermanWithItsAngles) {
+    // A steep, high rise on a small base circle: near the top of the rise the pitch curve bends
+    // tighter than a roller of 16 mm (the core's Synthesis.UndercutIsRefusedWithItsAngles).
+    Project p;
+    p.design = test::cycloidalDesign();
+    p.design->baseRadius = 10.0;
+    p.design->segments[0] = {MotionLawType::Cycloidal, 60.0, 30.0};
+    p.design->segments[1].lift = 30.0;
+    FollowerSpec roller;
+    roller.type = FollowerType::Roller;
+    roller.radius = 16.0;
+    p.follower = roller;
+    const auto made = synthesize(p, 0.01);
+    ASSERT_FALSE(made.ok());
+    const Diagnostic& d = made.errors().front();
+    ASSERT_EQ(d.code, DiagnosticCode::UndercutRoller);
+    const std::string english = d.text();
+    EXPECT_EQ(english.rfind("follower.radius: undercut: the pitch curve bends tighter than the "
+                            "roller radius 16 mm from ",
+                            0),
+              0u)
+        << english;
+    // The angles are the core's, in the German number format.
+    static const QRegularExpression german(QStringLiteral(
+        R"(^Stößel, Rollenradius: Unterschnitt: von (\d+(,\d+)?)° bis (\d+(,\d+)?)° ist die )"
+        R"(Rollenmittelpunktsbahn enger gekrümmt als der Rollenradius 16 mm$)"));
+    const QString line = germanLine(d);
+    const auto m = german.match(line);
+    ASSERT_TRUE(m.hasMatch()) << line.toStdString();
+    const double from = std::get<double>(d.args[1]), to = std::get<double>(d.args[2]);
+    EXPECT_EQ(m.captured(1), kGerman.toString(from, 'g', kMessageDigits));
+    EXPECT_EQ(m.captured(3), kGerman.toString(to, 'g', kMessageDigits));
+    EXPECT_LT(from, to);
+    EXPECT_NE(english.find(formatNumber(from) + "° to " + formatNumber(to) + "°"),
+              std::string::npos)
+        << english;
+
+    // Without a design there is nothing to synthesise.
+    const auto none = synthesize(Project{}, std::nullopt);
+    ASSERT_FALSE(none.ok());
+    EXPECT_EQ(germanLine(none.errors().front()),
+              QStringLiteral("Bewegungsentwurf: das Projekt hat keinen Bewegungsentwurf, aus dem "
+                             "sich eine Kontur synthetisieren ließe"));
+}
+
+TEST(DiagnosticText, ACancelledComputationSaysSoInGerman) {
+    const Diagnostic d = cancelledDiagnostics().front();
+    EXPECT_EQ(d.text(), "cancelled");
+    EXPECT_EQ(germanLine(d), QStringLiteral("abgebrochen"));
 }
 
 TEST(DiagnosticText, AFileThatCannotBeOpenedKeepsTheSystemsWords) {

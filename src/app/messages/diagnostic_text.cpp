@@ -272,11 +272,17 @@ QString fieldName(const std::string& location) {
         if (base == QLatin1String("follower.pivot"))
             return i == 0 ? DiagnosticText::tr("Follower, pivot x")
                           : DiagnosticText::tr("Follower, pivot y");
+        if (base == QLatin1String("contour")) return DiagnosticText::tr("Segment %1").arg(i);
+        // The teach-in's points, numbered from 0 as the segments are.
+        if (base == QLatin1String("point")) return DiagnosticText::tr("Point %1").arg(i);
         return key;
     }
     // The project's fields by their keys (lupdate reads the names here; tr() at lookup).
     static constexpr std::pair<const char*, const char*> kFields[] = {
         {"contour", QT_TRANSLATE_NOOP("DiagnosticText", "Contour")},
+        {"points", QT_TRANSLATE_NOOP("DiagnosticText", "Points")},
+        {"bulge", QT_TRANSLATE_NOOP("DiagnosticText", "Bulge factor")},
+        {"error", QT_TRANSLATE_NOOP("DiagnosticText", "Admissible radial error")},
         {"motion.omega_rad_s", QT_TRANSLATE_NOOP("DiagnosticText", "Motion, ω [rad/s]")},
         {"motion.rpm", QT_TRANSLATE_NOOP("DiagnosticText", "Motion, speed [rpm]")},
         {"motion.period_s", QT_TRANSLATE_NOOP("DiagnosticText", "Motion, period [s]")},
@@ -295,6 +301,7 @@ QString fieldName(const std::string& location) {
         {"machining.feed_max", QT_TRANSLATE_NOOP("DiagnosticText", "Machining, feed ceiling")},
         {"machining.tool_radius", QT_TRANSLATE_NOOP("DiagnosticText", "Machining, tool radius")},
         {"machining.step", QT_TRANSLATE_NOOP("DiagnosticText", "Machining, step")},
+        {"design", QT_TRANSLATE_NOOP("DiagnosticText", "Motion design")},
         {"design.base_radius", QT_TRANSLATE_NOOP("DiagnosticText", "Motion design, base radius")},
         {"design.tolerance", QT_TRANSLATE_NOOP("DiagnosticText", "Motion design, tolerance")},
         {"design.segments", QT_TRANSLATE_NOOP("DiagnosticText", "Motion design, segments")},
@@ -897,6 +904,82 @@ QString translatedMessage(const Diagnostic& d) {
         case Code::FileReplacedCannotFlushFolder:
             return DiagnosticText::tr("replaced, but cannot flush the folder %1 to disk: %2")
                 .arg(a(0), a(1));
+        case Code::NoSuchSegment:
+            return DiagnosticText::tr("there is no such segment");
+        case Code::NotAnArc:
+            return DiagnosticText::tr("is not an arc");
+        case Code::RadialErrorNotPositive:
+            return DiagnosticText::tr("the admissible radial error must be > 0 mm");
+        case Code::ApproximationStartMissesArc:
+            return DiagnosticText::tr(
+                "the follower ray at the start of the window does not meet the arc");
+        case Code::ApproximationEndMissesArc:
+            return DiagnosticText::tr(
+                "the follower ray at the end of the window does not meet the arc");
+        case Code::SplineTooFewPoints:
+            return DiagnosticText::tr("a spline needs at least two points");
+        case Code::ClosedSplineTooFewPoints:
+            return DiagnosticText::tr("a closed spline needs at least three points");
+        case Code::BulgeNotPositive:
+            return DiagnosticText::tr("must be a finite factor > 0 (got %1)").arg(a(0));
+        case Code::WindowsSegmentsDoNotMeet:
+            return DiagnosticText::tr(
+                "the neighbouring segments do not meet, so there is no boundary to fit the "
+                "windows to");
+        case Code::ContourNeverSynthesised:
+            return DiagnosticText::tr(
+                "is empty: the design's contour was never synthesised (Synthesize Contour, F6, "
+                "makes it)");
+        case Code::NoDesign:
+            return DiagnosticText::tr(
+                "the project has no motion design to synthesise a contour "
+                "from");
+        case Code::SynthesisedContourInvalid:
+            return DiagnosticText::tr("the synthesised arc table is not a valid contour");
+        case Code::ToleranceCannotBeMet:
+            return DiagnosticText::tr(
+                "cannot be met: no biarc joins two neighbouring points of the profile's sampling "
+                "within it (the profile has a corner or a cusp there, or the tolerance is too "
+                "small)");
+        case Code::OffsetOutsideBaseCircle:
+            return DiagnosticText::tr(
+                       "the follower's line (offset %1 mm) passes outside the base circle of "
+                       "radius %2 mm: make the base radius larger than the offset")
+                .arg(a(0), a(1));
+        case Code::OffsetOutsidePitchBaseCircle:
+            return DiagnosticText::tr(
+                       "the follower's line (offset %1 mm) passes outside the base circle of "
+                       "radius %2 mm (base radius + roller radius): make the base radius larger "
+                       "than the offset")
+                .arg(a(0), a(1));
+        case Code::ArmMissesBaseCircle:
+            return DiagnosticText::tr(
+                       "an arm of %1 mm from a pivot %2 mm from the cam centre cannot touch the "
+                       "base circle of radius %3 mm")
+                .arg(a(0), a(1), a(2));
+        case Code::ArmMissesPitchBaseCircle:
+            return DiagnosticText::tr(
+                       "an arm of %1 mm from a pivot %2 mm from the cam centre cannot touch the "
+                       "base circle of radius %3 mm (base radius + roller radius)")
+                .arg(a(0), a(1), a(2));
+        case Code::UndercutRoller:
+            return DiagnosticText::tr(
+                       "undercut: from %2° to %3° the pitch curve bends tighter than the roller "
+                       "radius %1 mm")
+                .arg(a(0), a(1), a(2));
+        case Code::UndercutFlatFace:
+            return DiagnosticText::tr(
+                       "undercut: from %1° to %2° the envelope of the flat face folds back "
+                       "(h + h'' < 0)")
+                .arg(a(0), a(1));
+        case Code::PressureAngleExceeded:
+            return DiagnosticText::tr("from %2° to %3° the pressure angle exceeds %1°")
+                .arg(a(0), a(1), a(2));
+        case Code::FilletRadiusInvalidContour:
+            return DiagnosticText::tr("radius %1 mm gives a contour that does not validate (%2)")
+                .arg(a(0), d.reasons.empty() ? QString() : DiagnosticText::line(d.reasons[0]));
+        case Code::Cancelled:
+            return DiagnosticText::tr("cancelled");
     }
     return {};
 }

@@ -19,6 +19,8 @@ namespace cam {
 inline constexpr std::size_t kCancelPollInterval = 4096;
 
 /// @brief What a computation stopped by its cancel flag returns.
-[[nodiscard]] inline Diagnostics cancelledDiagnostics() { return {{"", "cancelled"}}; }
+[[nodiscard]] inline Diagnostics cancelledDiagnostics() {
+    return {Diagnostic{"", "cancelled"}.coded(DiagnosticCode::Cancelled, {})};
+}
 
 }  // namespace cam

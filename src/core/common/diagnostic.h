@@ -75,6 +75,13 @@ struct SegmentPlace {
 ///
 /// A message that lists a variable number of reasons ("no tangent line fits: a; b; c") keeps
 /// them as `reasons`, each a coded Diagnostic of its own: no fixed signature can hold a list.
+/// So does a message that nests another whole diagnostic, location and all (a fillet whose
+/// contour fails validation names the validator's first problem).
+///
+/// An optional clause of the English ("… radius 30 mm (base radius + roller radius)" when the
+/// follower has a roller) makes a second code, not a flag argument: the app then words each
+/// sentence whole, without building it from pieces.
+///
 /// Sides and branches that follow from one sense ("the near side …, but the far side (outer
 /// branch)") are a code each, not a name each, so that a language can word the pair as a whole.
 #define CAM_DIAGNOSTIC_CODES(X)                                                                             \
@@ -235,7 +242,29 @@ struct SegmentPlace {
     X(FileBecameOther, "ss")           /* %1 became %2 while it was written: not replaced */                \
     X(FileCannotReplace, "ss")         /* cannot replace %1: %2 */                                          \
     X(FileReplacedCannotClose, "ss")   /* replaced, but cannot close %1: %2 */                              \
-    X(FileReplacedCannotFlushFolder, "ss") /* replaced, but cannot flush the folder %1 to disk… */
+    X(FileReplacedCannotFlushFolder, "ss") /* replaced, but cannot flush the folder %1 to disk… */        \
+    X(NoSuchSegment, "")                   /* no such segment */                                            \
+    X(NotAnArc, "")                        /* is not an arc */                                              \
+    X(RadialErrorNotPositive, "")          /* the admissible radial error must be > 0 mm */                 \
+    X(ApproximationStartMissesArc, "") /* the ray at the window's start does not meet the arc */            \
+    X(ApproximationEndMissesArc, "")   /* the ray at the window's end does not meet the arc */              \
+    X(SplineTooFewPoints, "")          /* a spline needs at least two points */                             \
+    X(ClosedSplineTooFewPoints, "")    /* a closed spline needs at least three points */                    \
+    X(BulgeNotPositive, "n")           /* must be a finite factor > 0 (got %1) */                           \
+    X(WindowsSegmentsDoNotMeet, "")    /* the neighbouring segments do not meet, so … */                  \
+    X(ContourNeverSynthesised, "")     /* is empty: the design's contour was never synthe… */             \
+    X(NoDesign, "")                    /* the project has no design to synthesise a conto… */             \
+    X(SynthesisedContourInvalid, "")   /* the synthesised arc table is not a valid contour */               \
+    X(ToleranceCannotBeMet, "")        /* cannot be met: no biarc joins two neighbouring … */             \
+    X(OffsetOutsideBaseCircle, "nn") /* the follower's line (offset %1 mm) … radius %2 mm: … */         \
+    X(OffsetOutsidePitchBaseCircle, "nn") /* … radius %2 mm (base radius + roller radius): … */         \
+    X(ArmMissesBaseCircle, "nnn")      /* an arm of %1 mm from a pivot %2 mm … radius %3 mm */            \
+    X(ArmMissesPitchBaseCircle, "nnn") /* … of radius %3 mm (base radius + roller radius) */              \
+    X(UndercutRoller, "nnn")  /* undercut: … the roller radius %1 mm from %2° to %3° */                 \
+    X(UndercutFlatFace, "nn") /* undercut: the face's envelope folds back … from %1° to %2° */          \
+    X(PressureAngleExceeded, "nnn")    /* the pressure angle exceeds %1° from %2° to %3° */              \
+    X(FilletRadiusInvalidContour, "n") /* radius %1 mm gives a contour that … (reasons[0]) */             \
+    X(Cancelled, "")                   /* cancelled */
 
 /// @brief What a diagnostic says, independent of the language it is shown in.
 enum class DiagnosticCode : std::uint16_t {
@@ -281,8 +310,9 @@ struct Diagnostic {
     DiagnosticCode code = DiagnosticCode::Unspecified;
     /// The code's arguments, as its signature lists them.
     std::vector<DiagnosticArg> args;
-    /// The reasons a message lists after its own words, each with its own code (only
-    /// TangentNoneFits has them: one for every tangent that was dropped).
+    /// The reasons a message lists after its own words, each with its own code (TangentNoneFits
+    /// has one for every tangent that was dropped; FilletRadiusInvalidContour the one problem of
+    /// the contour it names).
     std::vector<Diagnostic> reasons;
 
     /// @brief This diagnostic with its code and arguments (`args` must match the signature).

@@ -17,8 +17,10 @@ Result<Contour> Contour::build(const Project& project, ValidationOptions options
     if (hasErrors(errors)) return errors;
     if (project.contour.empty()) {
         // Valid only as a design waiting for its synthesis: nothing to compute yet.
-        return Diagnostics{{"contour", "is empty: the design's contour was never synthesised "
-                                       "(camwright-cli synthesize makes it)"}};
+        return Diagnostics{Diagnostic{"contour",
+                                      "is empty: the design's contour was never synthesised "
+                                      "(camwright-cli synthesize makes it)"}
+                               .coded(DiagnosticCode::ContourNeverSynthesised, {})};
     }
 
     Contour contour;

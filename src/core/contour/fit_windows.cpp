@@ -121,7 +121,8 @@ Result<std::vector<SegmentSpec>> fitWindows(const std::vector<SegmentSpec>& cont
         if (!best) {
             errors.push_back(Diagnostic::atJoint(k, (k + 1) % n,
                                                  "the neighbouring segments do not meet, so "
-                                                 "there is no boundary to fit"));
+                                                 "there is no boundary to fit")
+                                 .coded(DiagnosticCode::WindowsSegmentsDoNotMeet, {}));
         }
         joints[k] = best;
     }

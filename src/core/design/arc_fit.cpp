@@ -192,10 +192,12 @@ Result<ArcFit> fitArcs(const std::function<CurveSample(double)>& curve, double t
         std::size_t good = i + 1, bad = n + 1;
         std::array<FittedArc, 2> goodPair;
         if (!(bestBiarc(s, i, good, tolerance, goodPair, 1) <= tolerance)) {
-            return Diagnostics{{"design.tolerance",
-                                "cannot be met: no biarc joins two neighbouring points of the "
-                                "profile's sampling within it (the profile has a corner or a "
-                                "cusp there, or the tolerance is too small)"}};
+            return Diagnostics{
+                Diagnostic{"design.tolerance",
+                           "cannot be met: no biarc joins two neighbouring points of the "
+                           "profile's sampling within it (the profile has a corner or a "
+                           "cusp there, or the tolerance is too small)"}
+                    .coded(DiagnosticCode::ToleranceCannotBeMet, {})};
         }
         // The search looks at every fourth sample; a biarc is taken only when every sample of
         // its stretch is within the tolerance too.

@@ -33,12 +33,15 @@ Result<ExactProfile> ExactProfile::build(const MotionDesign& design, const Follo
     const double Rp = Rb + rho;  // the pitch curve's base circle
     if (follower.motion == FollowerMotion::Translating) {
         if (follower.type != FollowerType::Flat && !(std::abs(follower.offset) < Rp)) {
-            return Diagnostics{{"design.base_radius",
-                                "the follower's line (offset " + formatNumber(follower.offset) +
-                                    " mm) passes outside the base circle of radius " +
-                                    formatNumber(Rp) + " mm" +
-                                    (rho > 0.0 ? " (base radius + roller radius)" : "") +
-                                    ": make the base radius larger than the offset"}};
+            return Diagnostics{
+                Diagnostic{"design.base_radius",
+                           "the follower's line (offset " + formatNumber(follower.offset) +
+                               " mm) passes outside the base circle of radius " + formatNumber(Rp) +
+                               " mm" + (rho > 0.0 ? " (base radius + roller radius)" : "") +
+                               ": make the base radius larger than the offset"}
+                    .coded(rho > 0.0 ? DiagnosticCode::OffsetOutsidePitchBaseCircle
+                                     : DiagnosticCode::OffsetOutsideBaseCircle,
+                           {follower.offset, Rp})};
         }
         profile.m_s0 = follower.type == FollowerType::Flat
                            ? Rb
@@ -50,12 +53,15 @@ Result<ExactProfile> ExactProfile::build(const MotionDesign& design, const Follo
     const double a = follower.pivot.norm(), L = follower.armLength;
     const double cosine = (a * a + L * L - Rp * Rp) / (2.0 * a * L);
     if (!(a > Rp) || !(std::abs(cosine) < 1.0)) {
-        return Diagnostics{{"design.base_radius",
-                            "an arm of " + formatNumber(L) + " mm from a pivot " + formatNumber(a) +
-                                " mm from the centre cannot touch the base "
-                                "circle of radius " +
-                                formatNumber(Rp) + " mm" +
-                                (rho > 0.0 ? " (base radius + roller radius)" : "")}};
+        return Diagnostics{Diagnostic{
+            "design.base_radius",
+            "an arm of " + formatNumber(L) + " mm from a pivot " + formatNumber(a) +
+                " mm from the centre cannot touch the base "
+                "circle of radius " +
+                formatNumber(Rp) + " mm" + (rho > 0.0 ? " (base radius + roller radius)" : "")}
+                               .coded(rho > 0.0 ? DiagnosticCode::ArmMissesPitchBaseCircle
+                                                : DiagnosticCode::ArmMissesBaseCircle,
+                                      {L, a, Rp})};
     }
     profile.m_theta0 = std::acos(cosine);
     profile.m_beta = std::atan2(-follower.pivot.y(), -follower.pivot.x());
@@ -156,8 +162,11 @@ std::vector<ProfileProblem> ExactProfile::problems(bool strictPressureAngle, int
     const auto steep = [&](const ProfilePoint& p) { return std::abs(p.pressureAngle) > limit; };
     std::vector<ProfilePoint> sampled(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) sampled[static_cast<std::size_t>(i)] = at(i * h);
+    // `what` and `args` say what is wrong; the stretch's ends (in degrees) follow as the
+    // code's last two arguments.
     const auto ranges = [&](const std::function<bool(const ProfilePoint&)>& bad,
                             const std::string& location, const std::string& what,
+                            DiagnosticCode code, const std::vector<DiagnosticArg>& args,
                             Severity severity) {
         // Stretches of bad samples, their ends bisected to 1e-12 rad.
         const auto edge = [&](double good, double badPhi) {
@@ -178,24 +187,31 @@ std::vector<ProfileProblem> ExactProfile::problems(bool strictPressureAngle, int
             while (j + 1 < n && badAt(j + 1)) ++j;
             const double from = i == 0 ? 0.0 : edge((i - 1) * h, i * h);
             const double to = j == n - 1 ? kTwoPi : edge((j + 1) * h, j * h);
+            std::vector<DiagnosticArg> coded = args;
+            coded.insert(coded.end(), {radToDeg(from), radToDeg(to)});
             out.push_back({from, to,
                            Diagnostic(location,
                                       what + " from " + formatNumber(radToDeg(from)) + "° to " +
                                           formatNumber(radToDeg(to)) + "°",
-                                      severity)});
+                                      severity)
+                               .coded(code, std::move(coded))});
             i = j + 1;
         }
     };
-    ranges(folds, m_follower.type == FollowerType::Roller ? "follower.radius" : "design",
-           m_follower.type == FollowerType::Roller
-               ? "undercut: the pitch curve bends tighter than the roller radius " +
-                     formatNumber(rho) + " mm"
-               : "undercut: the face's envelope folds back (h + h'' < 0)",
-           Severity::Error);
+    if (m_follower.type == FollowerType::Roller) {
+        ranges(folds, "follower.radius",
+               "undercut: the pitch curve bends tighter than the roller radius " +
+                   formatNumber(rho) + " mm",
+               DiagnosticCode::UndercutRoller, {rho}, Severity::Error);
+    } else {
+        ranges(folds, "design", "undercut: the face's envelope folds back (h + h'' < 0)",
+               DiagnosticCode::UndercutFlatFace, {}, Severity::Error);
+    }
     if (m_follower.type != FollowerType::Flat) {
+        const double limitDeg = m_follower.maxPressureAngleOrDefault();
         ranges(steep, "follower.max_pressure_angle_deg",
-               "the pressure angle exceeds " +
-                   formatNumber(m_follower.maxPressureAngleOrDefault()) + "°",
+               "the pressure angle exceeds " + formatNumber(limitDeg) + "°",
+               DiagnosticCode::PressureAngleExceeded, {limitDeg},
                strictPressureAngle ? Severity::Error : Severity::Info);
     }
     return out;

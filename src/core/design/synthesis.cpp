@@ -61,7 +61,9 @@ std::vector<SegmentSpec> contourOf(const std::vector<FittedArc>& arcs) {
 Result<Synthesis> synthesize(const Project& project, std::optional<double> tolerance,
                              bool strictPressureAngle, const std::atomic<bool>* cancel) {
     if (!project.design) {
-        return Diagnostics{{"design", "the project has no design to synthesise a contour from"}};
+        return Diagnostics{
+            Diagnostic{"design", "the project has no design to synthesise a contour from"}.coded(
+                DiagnosticCode::NoDesign, {})};
     }
     DesignSpec spec = *project.design;
     if (tolerance) spec.tolerance = *tolerance;
@@ -101,7 +103,9 @@ Result<Synthesis> synthesize(const Project& project, std::optional<double> toler
     made.contour = result.contour;
     auto contour = Contour::build(made);
     if (!contour.ok()) {
-        Diagnostics why{{"design", "the synthesised arc table is not a valid contour"}};
+        Diagnostics why{
+            Diagnostic{"design", "the synthesised arc table is not a valid contour"}.coded(
+                DiagnosticCode::SynthesisedContourInvalid, {})};
         for (const Diagnostic& d : contour.errors()) why.push_back(d);
         return why;
     }

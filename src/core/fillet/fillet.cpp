@@ -406,12 +406,15 @@ Result<FilletResult> filletJoint(const std::vector<SegmentSpec>& contour, std::s
         project.contour = result.contour;
         const Diagnostics problems = validateProject(project);
         // A safety net: every check above should prevent this. It nests the validator's
-        // English text, so it stays without a code (the window shows it in English).
+        // problem, which keeps its own code as the reason.
         if (hasErrors(problems)) {
-            return Diagnostics{Diagnostic::atJoint(
-                k.left, k.right,
-                "radius " + formatNumber(rho) + " mm gives a contour that does not validate (" +
-                    problems.front().text() + ")")};
+            Diagnostic d = Diagnostic::atJoint(k.left, k.right,
+                                               "radius " + formatNumber(rho) +
+                                                   " mm gives a contour that does not validate (" +
+                                                   problems.front().text() + ")")
+                               .coded(DiagnosticCode::FilletRadiusInvalidContour, {rho});
+            d.reasons.push_back(problems.front());
+            return Diagnostics{std::move(d)};
         }
         return result;
     }

@@ -39,18 +39,25 @@ Result<std::vector<CubicBezier>> splineThroughPoints(const std::vector<Vec>& k, 
                                                      HandleRule rule, double bulge) {
     const std::size_t n = k.size();
     if (n < (closed ? 3u : 2u)) {
-        return Diagnostics{{"points", closed ? "a closed spline needs at least three points"
-                                             : "a spline needs at least two points"}};
+        if (closed) {
+            return Diagnostics{
+                Diagnostic{"points", "a closed spline needs at least three points"}.coded(
+                    DiagnosticCode::ClosedSplineTooFewPoints, {})};
+        }
+        return Diagnostics{Diagnostic{"points", "a spline needs at least two points"}.coded(
+            DiagnosticCode::SplineTooFewPoints, {})};
     }
     if (!(bulge > 0) || !std::isfinite(bulge)) {
         return Diagnostics{
-            {"bulge", "must be a finite factor > 0 (got " + formatNumber(bulge) + ")"}};
+            Diagnostic{"bulge", "must be a finite factor > 0 (got " + formatNumber(bulge) + ")"}
+                .coded(DiagnosticCode::BulgeNotPositive, {bulge})};
     }
     const std::size_t legs = closed ? n : n - 1;
     for (std::size_t i = 0; i < legs; ++i) {
         if ((k[(i + 1) % n] - k[i]).norm() < 1e-9) {
-            return Diagnostics{
-                {"point[" + std::to_string((i + 1) % n) + "]", "repeats the previous point"}};
+            return Diagnostics{Diagnostic{"point[" + std::to_string((i + 1) % n) + "]",
+                                          "repeats the previous point"}
+                                   .coded(DiagnosticCode::PathPointRepeated, {})};
         }
     }
     // Per knot: unit direction and the lengths of its incoming and outgoing handles.
