@@ -186,7 +186,7 @@ void MainWindow::setUpPlay() {
     m_playSpeed->setObjectName("playSpeedComboBox");
     m_playSpeed->setToolTip(tr("Play at this fraction of the cam's real speed"));
     for (double factor : {0.01, 0.05, 0.1, 0.25, 0.5, 1.0}) {
-        m_playSpeed->addItem(QStringLiteral("%1×").arg(QLocale().toString(factor)), factor);
+        m_playSpeed->addItem(QStringLiteral("%1×").arg(formatNumber(factor, 6)), factor);
     }
     QSettings settings;
     const int index = m_playSpeed->findData(settings.value("view/playSpeed", 0.05).toDouble());
@@ -331,9 +331,8 @@ void MainWindow::finishSynthesis(const std::shared_ptr<const Result<Synthesis>>&
     statusBar()->showMessage(
         tr("Synthesized %n segment(s) within %1 mm in %2 ms", nullptr,
            static_cast<int>(made.report.segments))
-            .arg(QLocale().toString(made.report.maxDeviationMm, 'g', 3),
-                 QLocale().toString(static_cast<double>(m_synthesisClock.nsecsElapsed()) / 1e6, 'f',
-                                    0)),
+            .arg(formatNumber(made.report.maxDeviationMm, 3),
+                 formatFixed(static_cast<double>(m_synthesisClock.nsecsElapsed()) / 1e6, 0)),
         8000);
     emit synthesisFinished({});
 }

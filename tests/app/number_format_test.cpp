@@ -3,9 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <QLabel>
 #include <QLocale>
+#include <tuple>
 
 #include "app_test_support.h"
+#include "document/commands.h"
 #include "mainwindow.h"
 #include "models/segment_table_model.h"
 #include "widgets/number_format.h"
@@ -57,6 +60,30 @@ TEST(NumberFormat, TheTableShowsRoundOffAsZeroButKeepsTheExactValue) {
     EXPECT_NE(x3.data(Qt::EditRole).toDouble(), 0.0);  // only the display rounds
     EXPECT_EQ(model->index(6, SegmentTableModel::CenterX).data(Qt::DisplayRole).toString(),
               "-25.73752542");
+}
+
+TEST(NumberFormat, TheMotionSummaryHasNoThousandsSeparatorsInEitherLanguage) {
+    // 1,500 rpm is 157.08 rad/s and a period of 0.04 s: the summary beside the speed once
+    // wrote "1,500 rpm" in English and "1.500 rpm" in German.
+    for (const auto& [locale, rpm, omega, period] :
+         {std::tuple{QLocale(QLocale::English, QLocale::UnitedStates), "· 1500 ", "157.08 rad/s",
+                     "T = 0.04 s"},
+          std::tuple{QLocale(QLocale::German, QLocale::Germany), "· 1500 ", "157,08 rad/s",
+                     "T = 0,04 s"}}) {
+        const DefaultLocale shown(locale);
+        MainWindow window;
+        ASSERT_TRUE(
+            window.loadFile(QString::fromStdString(test::examplePath("six-lobe-arc-cam.cam.json")))
+                .isEmpty());
+        window.document()->undoStack()->push(
+            new SetMotion(window.document(), MotionSpec{SpeedUnit::Rpm, 1500.0}));
+        const auto* summary = window.findChild<QLabel*>("motionSummary");
+        ASSERT_NE(summary, nullptr);
+        const QString text = summary->text();
+        EXPECT_TRUE(text.contains(rpm)) << text.toStdString();
+        EXPECT_TRUE(text.contains(omega)) << text.toStdString();  // 50π = 157.0796…
+        EXPECT_TRUE(text.contains(period)) << text.toStdString();
+    }
 }
 
 }  // namespace

@@ -82,8 +82,8 @@ EditOutcome ContourEdits::roundCorner(ProjectDocument& document, int joint, doub
     if (!result.ok()) return EditOutcome::refused(diagnosticsText(result.errors()));
     document.undoStack()->push(
         new ReplaceContour(&document, result.value().contour, tr("Round corner")));
-    return EditOutcome::done(
-        tr("Corner rounded with a %1 mm switch arc").arg(QLocale().toString(rho, 'g', 6)), joint);
+    return EditOutcome::done(tr("Corner rounded with a %1 mm switch arc").arg(formatNumber(rho, 6)),
+                             joint);
 }
 
 EditOutcome ContourEdits::tangentLineToNext(ProjectDocument& document, int row) {
@@ -130,11 +130,11 @@ EditOutcome ContourEdits::approximateArc(ProjectDocument& document, int row, dou
     if (!replaced.ok()) return EditOutcome::refused(diagnosticsText(replaced.errors()));
     document.undoStack()->push(
         new ReplaceContour(&document, replaced.value(), tr("Approximate arc by Béziers")));
-    return EditOutcome::done(tr("%n Bézier piece(s): radial error %1 mm, end/middle speed ratio %2",
-                                "", static_cast<int>(report.pieces.size()))
-                                 .arg(QLocale().toString(report.radialErrorMm, 'g', 3),
-                                      QLocale().toString(report.speedRatio, 'f', 4)),
-                             row);
+    return EditOutcome::done(
+        tr("%n Bézier piece(s): radial error %1 mm, end/middle speed ratio %2", "",
+           static_cast<int>(report.pieces.size()))
+            .arg(formatNumber(report.radialErrorMm, 3), formatFixed(report.speedRatio, 4)),
+        row);
 }
 
 EditOutcome ContourEdits::contourThroughPoints(ProjectDocument& document, const QString& pointsText,

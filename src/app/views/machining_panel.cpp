@@ -18,6 +18,7 @@
 #include "views/palette.h"
 #include "views/plot_data.h"
 #include "views/plot_redraw.h"
+#include "widgets/number_format.h"
 #include "widgets/number_spin_box.h"
 
 namespace cam {
@@ -244,11 +245,11 @@ void MachiningPanel::setOutcome(const TimingOutcomePtr& outcome) {
         const QString text = QStringLiteral("%1\n%2%3 s")
                                  .arg(m_times[m]->property("name").toString(),
                                       outcome->converged[k] ? QString() : QStringLiteral("≈ "),
-                                      QLocale().toString(outcome->timesS[k], 'f', 4));
+                                      formatFixed(outcome->timesS[k], 4));
         if (!outcome->converged[k]) {
             estimates << tr("%1 (relative error about %2)")
                              .arg(m_times[m]->property("name").toString(),
-                                  QLocale().toString(outcome->convergence[k], 'g', 2));
+                                  formatNumber(outcome->convergence[k], 2));
         }
         m_times[m]->setText(text);
         QFont f = m_times[m]->font();
@@ -257,9 +258,9 @@ void MachiningPanel::setOutcome(const TimingOutcomePtr& outcome) {
     }
     m_status->setText(tr("Path %1 mm (contour offset by the tool radius); optimal plan on %2 "
                          "grid points; computed in %3 ms")
-                          .arg(QLocale().toString(outcome->lengthMm, 'f', 2),
-                               QLocale().toString(static_cast<qlonglong>(outcome->gridPoints)),
-                               QLocale().toString(outcome->computeMs, 'f', 0)));
+                          .arg(formatFixed(outcome->lengthMm, 2),
+                               formatNumber(static_cast<double>(outcome->gridPoints), 15),
+                               formatFixed(outcome->computeMs, 0)));
     if (!estimates.isEmpty()) {
         m_status->setText(m_status->text() + "\n" +
                           tr("Not converged: the grid limit stopped the refinement first, so "

@@ -10,6 +10,7 @@
 #include "common/angles.h"
 #include "document/commands.h"
 #include "models/delegates.h"
+#include "widgets/number_format.h"
 #include "widgets/number_spin_box.h"
 
 namespace cam {
@@ -81,9 +82,8 @@ void MotionPanel::refresh() {
     if (valid) {
         const double omega = m.omegaRadS();
         m_summary->setText(tr("ω = %1 rad/s · %2 rpm\nT = %3 s")
-                               .arg(QLocale().toString(omega, 'g', 6),
-                                    QLocale().toString(omega * 60.0 / kTwoPi, 'g', 6),
-                                    QLocale().toString(kTwoPi / std::abs(omega), 'g', 6)));
+                               .arg(formatNumber(omega, 6), formatNumber(omega * 60.0 / kTwoPi, 6),
+                                    formatNumber(kTwoPi / std::abs(omega), 6)));
     } else {
         m_summary->setText(tr("The speed must not be 0 (and a period must be positive)."));
     }
