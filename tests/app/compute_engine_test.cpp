@@ -75,16 +75,23 @@ TEST(ComputeEngine, HundredRapidEditsGiveOneFinalResultForTheLastSnapshot) {
     }
 }
 
-TEST(ComputeEngine, AFirstPictureIsFollowedByTheSameResultWithEveryPlotLevel) {
+/// Every result an engine reports for one request of `p` (a first picture and its
+/// refinement, or one complete result), waiting until nothing more comes.
+std::vector<ComputeResultPtr> resultsOfOneRequest(const Project& p) {
     ComputeEngine engine;
     std::vector<ComputeResultPtr> shown;
     QObject::connect(&engine, &ComputeEngine::resultReady,
                      [&](const ComputeResultPtr& r) { shown.push_back(r); });
+    engine.request(p, PlotAxis::Angle);
+    test::processEventsUntil([&] { return shown.size() >= 2; });
+    test::processEventsUntil([] { return false; }, 200);  // nothing else comes
+    return shown;
+}
+
+TEST(ComputeEngine, AFirstPictureIsFollowedByTheSameResultWithEveryPlotLevel) {
     Project p = test::loadExample();
     p.samplesPerTurn = 100'000;
-    engine.request(p, PlotAxis::Angle);
-    ASSERT_TRUE(test::processEventsUntil([&] { return shown.size() >= 2; }));
-    test::processEventsUntil([] { return false; }, 200);  // nothing else comes
+    const std::vector<ComputeResultPtr> shown = resultsOfOneRequest(p);
     ASSERT_EQ(shown.size(), 2u);
     const ComputeResult& first = *shown[0];
     const ComputeResult& whole = *shown[1];
@@ -111,17 +118,11 @@ TEST(ComputeEngine, AFirstPictureIsFollowedByTheSameResultWithEveryPlotLevel) {
 TEST(ComputeEngine, AFirstPictureLeavesTheArmsDesignChecksToItsRefinement) {
     // A swinging arm's checks take longer than the kinematics: the first picture shows the
     // pressure-angle curve without them, the refinement adds them.
-    ComputeEngine engine;
-    std::vector<ComputeResultPtr> shown;
-    QObject::connect(&engine, &ComputeEngine::resultReady,
-                     [&](const ComputeResultPtr& r) { shown.push_back(r); });
     auto loaded = loadProjectFile(test::examplePath("swinging-arm-cam.cam.json"));
     ASSERT_TRUE(loaded.ok());
     const Project p = std::move(loaded).value();
     ASSERT_TRUE(p.follower && p.follower->motion == FollowerMotion::Oscillating);
-    engine.request(p, PlotAxis::Angle);
-    ASSERT_TRUE(test::processEventsUntil([&] { return shown.size() >= 2; }));
-    test::processEventsUntil([] { return false; }, 200);  // nothing else comes
+    const std::vector<ComputeResultPtr> shown = resultsOfOneRequest(p);
     ASSERT_EQ(shown.size(), 2u);
     const ComputeResult& first = *shown[0];
     const ComputeResult& whole = *shown[1];

@@ -265,20 +265,31 @@ TEST_F(CrashRecovery, AKilledSessionsEditComesBackOnTheNextStart) {
     EXPECT_TRUE(QDir(m_recovery).entryList({"session-*"}, QDir::Files).isEmpty());
 }
 
+/// The six-lobe example in `doc`, as if opened from `path`.
+bool openSixLobe(ProjectDocument& doc, const QString& path) {
+    auto project = loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json"));
+    if (!project.ok()) return false;
+    doc.reset(project.value(), path);
+    return true;
+}
+
+/// An edit of the first arc's centre x, as the table makes it.
+void moveFirstCentreX(ProjectDocument& doc, double x) {
+    SegmentSpec moved = doc.project().contour.front();
+    std::get<Arc>(moved.shape).center.x() = x;
+    doc.undoStack()->push(new EditSegment(&doc, 0, moved, EditedField::CenterX, "edit"));
+}
+
 TEST(Autosave, ACopyIsWrittenOnlyWhileThereAreUnsavedChangesAndSavingRemovesIt) {
     QTemporaryDir folder;
     ProjectDocument doc;
-    auto project = loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json"));
-    ASSERT_TRUE(project.ok());
-    doc.reset(project.value(), folder.filePath("cam.cam.json"));
+    ASSERT_TRUE(openSixLobe(doc, folder.filePath("cam.cam.json")));
     {
         Autosave autosave(&doc, folder.filePath("recovery"));
         const QString copy = autosave.recoveryPath();
         EXPECT_TRUE(autosave.writeNow().isEmpty());
         EXPECT_FALSE(QFile::exists(copy));  // nothing unsaved: no copy
-        SegmentSpec moved = doc.project().contour.front();
-        std::get<Arc>(moved.shape).center.x() = 26.5;
-        doc.undoStack()->push(new EditSegment(&doc, 0, moved, EditedField::CenterX, "edit"));
+        moveFirstCentreX(doc, 26.5);
         EXPECT_TRUE(autosave.writeNow().isEmpty());
         ASSERT_TRUE(QFile::exists(copy));
         EXPECT_EQ(firstCentreX(copy), 26.5);
@@ -304,16 +315,12 @@ TEST(Autosave, NoCopyExistsWithoutTheNoteOfItsFile) {
     // an untitled project. The note comes first: when it cannot be written, neither is the copy.
     QTemporaryDir folder;
     ProjectDocument doc;
-    auto project = loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json"));
-    ASSERT_TRUE(project.ok());
-    doc.reset(project.value(), folder.filePath("cam.cam.json"));
+    ASSERT_TRUE(openSixLobe(doc, folder.filePath("cam.cam.json")));
     Autosave autosave(&doc, folder.filePath("recovery"));
     const QString copy = autosave.recoveryPath();
     const QString note = copy.chopped(9) + ".json";
     ASSERT_TRUE(QDir().mkpath(note));  // a folder where the note goes: it cannot be written
-    SegmentSpec moved = doc.project().contour.front();
-    std::get<Arc>(moved.shape).center.x() = 26.5;
-    doc.undoStack()->push(new EditSegment(&doc, 0, moved, EditedField::CenterX, "edit"));
+    moveFirstCentreX(doc, 26.5);
     EXPECT_FALSE(autosave.writeNow().isEmpty());
     EXPECT_FALSE(QFile::exists(copy));
     ASSERT_TRUE(QDir().rmdir(note));
