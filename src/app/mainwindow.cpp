@@ -971,7 +971,7 @@ void MainWindow::setCursorTime(double t) {
 bool MainWindow::waitForCurrentResult(int timeoutMs) {
     const auto current = [this] {
         const auto& r = m_engine->latestResult();
-        // A first picture is followed by its finer plot levels.
+        // A first picture is followed by its finer plot levels and the follower's checks.
         return r && r->generation == m_engine->latestGeneration() && r->complete();
     };
     // Shown: the plots have been replotted with it too (they replot one per pass of the event

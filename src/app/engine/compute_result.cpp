@@ -288,8 +288,8 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     result->omega = request.project->motion.omegaRadS();
     result->period = kTwoPi / std::abs(result->omega);
     // The follower needs only the contour: on the pool's other core while this thread samples
-    // the turn (a swinging arm's design checks cost about as much as the kinematics).
-    // A first picture leaves the design checks to refineResult(): the curve is what is drawn.
+    // the turn (a swinging arm's pressure-angle curve costs about as much as the kinematics).
+    // A first picture leaves its design checks (two to three times that) to refineResult().
     QFuture<FollowerPart> follower;
     const bool checksNow = request.firstPictureBuckets == 0;
     if (request.project->follower) {
