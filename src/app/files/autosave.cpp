@@ -42,9 +42,9 @@ Autosave::Autosave(ProjectDocument* document, QString folder, QObject* parent)
     QDir().mkpath(m_folder);
     // One copy per window: the process id, and a count for a second window of one process.
     static int windows = 0;
-    const QString base = m_folder + QStringLiteral("/session-%1-%2")
-                                        .arg(QCoreApplication::applicationPid())
-                                        .arg(++windows);
+    const QString base =
+        m_folder +
+        QStringLiteral("/session-%1-%2").arg(QCoreApplication::applicationPid()).arg(++windows);
     m_projectPath = base + QStringLiteral(".cam.json");
     m_metaPath = base + QStringLiteral(".json");
     // Held while this session runs: a copy whose lock is free belongs to a session that died.
