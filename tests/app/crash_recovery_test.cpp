@@ -297,7 +297,7 @@ TEST(Autosave, ACopyIsWrittenOnlyWhileThereAreUnsavedChangesAndSavingRemovesIt) 
         auto back = loadProjectStructure(QFile::encodeName(copy).toStdString());
         ASSERT_TRUE(back.ok());
         EXPECT_EQ(back.value(), doc.project());
-        EXPECT_TRUE(readAll(copy.chopped(9) + ".json").contains("cam.cam.json"));
+        EXPECT_TRUE(readAll(autosave.notePath()).contains("cam.cam.json"));
         // This session is alive: its copy is nobody's orphan.
         EXPECT_TRUE(autosave.orphans().empty());
         doc.markSaved(doc.filePath());
@@ -318,7 +318,7 @@ TEST(Autosave, NoCopyExistsWithoutTheNoteOfItsFile) {
     ASSERT_TRUE(openSixLobe(doc, folder.filePath("cam.cam.json")));
     Autosave autosave(&doc, folder.filePath("recovery"));
     const QString copy = autosave.recoveryPath();
-    const QString note = copy.chopped(9) + ".json";
+    const QString note = autosave.notePath();
     ASSERT_TRUE(QDir().mkpath(note));  // a folder where the note goes: it cannot be written
     moveFirstCentreX(doc, 26.5);
     EXPECT_FALSE(autosave.writeNow().isEmpty());

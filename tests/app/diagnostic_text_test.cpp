@@ -306,13 +306,8 @@ TEST(DiagnosticText, ARollerWiderThanAConcaveArcIsExplainedInGerman) {
 TEST(DiagnosticText, AnArmTooShortForTheCamIsExplainedInGerman) {
     // The six-lobe cam reaches out to 29 mm; from a pivot 60 mm out a 20 mm arm with a 2 mm
     // roller reaches 22 mm, short of the cam.
-    FollowerSpec spec;
-    spec.type = FollowerType::Roller;
-    spec.radius = 2.0;
-    spec.motion = FollowerMotion::Oscillating;
-    spec.pivot = {60.0, 0.0};
-    spec.armLength = 20.0;
-    spec.arm = ArmSide::Ccw;
+    const FollowerSpec spec =
+        test::armSpec(FollowerType::Roller, 2.0, {60.0, 0.0}, 20.0, ArmSide::Ccw);
     const auto model = FollowerModel::build(test::sixLobe(), spec);
     ASSERT_FALSE(model.ok());
     const Diagnostic& d = model.errors().front();

@@ -12,23 +12,12 @@
 namespace cam {
 namespace {
 
+using test::armSpec;
 using test::derivative;
 using test::distanceToProfile;
 using test::load;
 using test::relClose;
 using test::sixLobe;
-
-FollowerSpec armSpec(FollowerType type, double radius, Eigen::Vector2d pivot, double length,
-                     ArmSide side) {
-    FollowerSpec spec;
-    spec.type = type;
-    spec.radius = radius;
-    spec.motion = FollowerMotion::Oscillating;
-    spec.pivot = pivot;
-    spec.armLength = length;
-    spec.arm = side;
-    return spec;
-}
 
 FollowerModel armModel(const Contour& contour, const FollowerSpec& spec) {
     auto m = FollowerModel::build(contour, spec);

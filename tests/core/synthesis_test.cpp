@@ -167,12 +167,8 @@ TEST(Synthesis, AFlatFaceFollowsTheLaw) {
 }
 
 TEST(Synthesis, ASwingingRollerFollowsTheLawInDegrees) {
-    FollowerSpec arm;
-    arm.type = FollowerType::Roller;
-    arm.radius = 6.0;
-    arm.motion = FollowerMotion::Oscillating;
-    arm.pivot = {70.0, 30.0};
-    arm.armLength = 60.0;
+    const FollowerSpec arm =
+        test::armSpec(FollowerType::Roller, 6.0, {70.0, 30.0}, 60.0, FollowerSpec{}.arm);
     // A lift of 10° swung. At lift 0 the roller centre is Rb + ρ = 46 from the centre: the arm
     // is turned by θ0 from the line pivot → centre, cos θ0 = (a² + L² − 46²)/(2aL); ψ = β + θ.
     const double a = arm.pivot.norm(), L = 60.0;

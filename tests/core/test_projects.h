@@ -23,6 +23,19 @@ inline Contour load(const std::string& path) {
 /// The bundled six-lobe arc cam's contour (r from 20.9 to 29 mm).
 inline Contour sixLobe() { return load(examplePath("six-lobe-arc-cam.cam.json")); }
 
+/// A follower (knife, radius 0, or roller) on a swinging arm of `length` about `pivot`.
+inline FollowerSpec armSpec(FollowerType type, double radius, Eigen::Vector2d pivot, double length,
+                            ArmSide side) {
+    FollowerSpec spec;
+    spec.type = type;
+    spec.radius = radius;
+    spec.motion = FollowerMotion::Oscillating;
+    spec.pivot = pivot;
+    spec.armLength = length;
+    spec.arm = side;
+    return spec;
+}
+
 /// A result's errors; none when it succeeded.
 template <class T>
 Diagnostics errorsOf(const Result<T>& result) {

@@ -35,6 +35,8 @@ public:
     /// problem, or empty.
     QString writeNow();
     [[nodiscard]] QString recoveryPath() const { return m_projectPath; }
+    /// @brief Where the note beside the copy names the original file and the time it was saved.
+    [[nodiscard]] QString notePath() const { return m_metaPath; }
     [[nodiscard]] QString folder() const { return m_folder; }
 
     /// @brief What a crashed session left behind.
@@ -62,8 +64,8 @@ private:
     QString m_projectPath, m_metaPath;
     std::unique_ptr<QLockFile> m_lock;
     QTimer m_timer;
-    quint64 m_changes = 0;       ///< edits seen
-    quint64 m_writtenAt = 0;     ///< m_changes when the copy was last written
+    quint64 m_changes = 0;    ///< edits seen
+    quint64 m_writtenAt = 0;  ///< m_changes when the copy was last written
     bool m_hasCopy = false;
 };
 
