@@ -31,8 +31,7 @@ constexpr std::size_t kOutlinePointsTotal = 1u << 18;
 constexpr double kOutlineToleranceRelative = 1e-4;
 
 Eigen::Vector2d pointAt(const ContourSegment& s, double phi) {
-    const double r = s.evaluate(phi).r;
-    return {r * std::cos(phi), r * std::sin(phi)};
+    return fromPolar(s.evaluate(phi).r, phi);
 }
 
 /// Appends the outline of [a, b] without its start: its end, after whatever halving of it the

@@ -98,7 +98,7 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
     // only (the design's lift is the follower's, not r).
     for (int which = 0; which < 2; ++which)
         m_plots[kLiftPlot]->graph(kCurvesPerPlot + which)->removeFromLegend();
-    // One shared x axis: panning or zooming any plot moves all three.
+    // One shared x axis: panning or zooming any plot moves them all.
     for (QCustomPlot* a : m_plots) {
         for (QCustomPlot* b : m_plots) {
             if (a == b) continue;
@@ -119,7 +119,7 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
     // The left axes line up however wide their tick labels are.
     auto* group = new QCPMarginGroup(m_plots[0]);
     for (QCustomPlot* p : m_plots) p->axisRect()->setMarginGroup(QCP::msLeft | QCP::msRight, group);
-    // Legend columns of equal width keep the three x axes exactly above each other.
+    // Legend columns of equal width keep the x axes exactly above each other.
     int legendWidth = 0;
     for (QCustomPlot* p : m_plots) {
         legendWidth = std::max(legendWidth, p->legend->minimumOuterSizeHint().width());

@@ -13,6 +13,7 @@
 #include "follower/follower_candidate.h"
 #include "follower/jet.h"
 #include "follower/piece_geometry.h"
+#include "geometry/planar.h"
 
 namespace cam {
 
@@ -256,8 +257,7 @@ namespace {
 
 /// The profile point on the ray at φ.
 Eigen::Vector2d profileAt(const Contour& contour, double phi) {
-    const double r = contour.segment(contour.segmentAt(phi)).evaluate(phi).r;
-    return {r * std::cos(phi), r * std::sin(phi)};
+    return fromPolar(contour.segment(contour.segmentAt(phi)).evaluate(phi).r, phi);
 }
 
 constexpr int kProfileSamples = 2048;

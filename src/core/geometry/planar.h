@@ -19,6 +19,11 @@ namespace cam {
 /// @brief v turned a quarter turn counter-clockwise.
 [[nodiscard]] inline Eigen::Vector2d perp(const Eigen::Vector2d& v) { return {-v.y(), v.x()}; }
 
+/// @brief The point at distance r from the origin on the ray at angle phi (rad).
+[[nodiscard]] inline Eigen::Vector2d fromPolar(double r, double phi) {
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+
 /// @brief The polar angle of p, degrees in (−180, 180].
 [[nodiscard]] inline double polarDeg(const Eigen::Vector2d& p) {
     return radToDeg(std::atan2(p.y(), p.x()));

@@ -2,6 +2,7 @@
 
 #include "common/angles.h"
 #include "common/diagnostic.h"
+#include "geometry/planar.h"
 
 #include <cmath>
 
@@ -31,8 +32,7 @@ PolarDerivatives polarOfSegment(const SegmentSpec& s, double phiDeg) {
 
 Eigen::Vector2d pointOnSegment(const SegmentSpec& s, double phiDeg) {
     const double phi = degToRad(phiDeg);
-    const double r = polarOfSegment(s, phiDeg).r;
-    return {r * std::cos(phi), r * std::sin(phi)};
+    return fromPolar(polarOfSegment(s, phiDeg).r, phi);
 }
 
 double UnitsSpec::angleFactor() const { return angle == AngleUnit::Rad ? 180.0 / kPi : 1.0; }
