@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "engine/memory_reuse.h"
 #include "files/autosave.h"
 #include "mainwindow.h"
 #include "screenshot.h"
@@ -59,6 +60,7 @@ bool isHeadless(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    cam::keepFreedMemoryForReuse();
     if (isHeadless(argc, argv)) g_defaultHandler = qInstallMessageHandler(quietHeadlessMessages);
     chooseOffscreenWhenThereIsNoDisplay(argc, argv);
     QApplication app(argc, argv);

@@ -31,6 +31,7 @@
 
 #include "document/commands.h"
 #include "engine/compute_engine.h"
+#include "engine/memory_reuse.h"
 #include "mainwindow.h"
 #include "models/segment_table_model.h"
 #include "views/contour_view.h"
@@ -358,6 +359,7 @@ BENCHMARK(BM_CursorMove)
 }  // namespace
 
 int main(int argc, char** argv) {
+    cam::keepFreedMemoryForReuse();  // as the app does
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     QApplication::setApplicationName("camwright-bench");
