@@ -14,6 +14,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "document/project_document.h"
+#include "engine/background_priority.h"
 #include "engine/compute_engine.h"
 #include "export/export_dialog.h"
 #include "io/atomic_file.h"
@@ -233,6 +234,7 @@ void MainWindow::exportFile(const ExportRequest& request) {
                 finishExport(request.path, what, outcome.bytes, outcome.problem);
             });
     watcher->setFuture(QtConcurrent::run([project = m_document->project(), request] {
+        runInTheBackground();
         const Result<std::string> text = exportText(project, request);
         if (!text.ok()) return ExportOutcome{0, problemText(text.errors())};
         return writeExport(request.path, text.value());

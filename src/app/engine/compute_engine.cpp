@@ -5,6 +5,8 @@
 #include <QMutexLocker>
 #include <new>
 
+#include "engine/background_priority.h"
+
 namespace cam {
 
 ComputeWorker::ComputeWorker(QObject* parent) : QThread(parent) {}
@@ -26,7 +28,7 @@ void ComputeWorker::submit(ComputeRequest request) {
     m_pending = std::move(request);
     m_cancel = true;  // whatever is running answers an older request
     if (!isRunning()) {
-        start(QThread::LowPriority);
+        start();
     } else {
         m_wake.wakeOne();
     }
@@ -69,6 +71,7 @@ ComputeResultPtr guarded(const ComputeRequest& request, Step&& step) {
 }  // namespace
 
 void ComputeWorker::run() {
+    runInTheBackground();
     for (;;) {
         ComputeRequest request;
         std::shared_ptr<const PlotDataPreparer> preparer;

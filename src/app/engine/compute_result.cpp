@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "engine/background_priority.h"
 #include "design/exact_profile.h"
 #include "design/motion_design.h"
 #include "engine/plot_data_preparer.h"
@@ -96,6 +97,7 @@ struct ContourPart {
 
 ContourPart computeContourPart(const Contour* contour, double omega,
                                const std::atomic<bool>* cancel) {
+    runInTheBackground();
     ContourPart part;
     part.analysis = analyzeContour(*contour, omega, cancel);
     if (!cancel->load()) part.outlines = outlinesOf(*contour);
@@ -113,6 +115,7 @@ struct FollowerPart {
 FollowerPart computeFollower(const Contour* contour, const FollowerSpec& spec, double omega,
                              double period, PlotAxis axis, bool checks,
                              const std::atomic<bool>* cancel) {
+    runInTheBackground();
     FollowerPart part;
     auto follower = FollowerModel::build(*contour, spec);
     if (!follower.ok()) {

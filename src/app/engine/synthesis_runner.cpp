@@ -2,6 +2,8 @@
 
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "engine/background_priority.h"
+
 namespace cam {
 
 SynthesisRunner::SynthesisRunner(QObject* parent)
@@ -26,6 +28,7 @@ bool SynthesisRunner::start(const Project& project, double tolerance) {
     m_watcher.setFuture(QtConcurrent::run(
         [project = m_project, cancel = m_cancel,
          tolerance]() -> std::shared_ptr<const Result<Synthesis>> {
+            runInTheBackground();
             try {
                 auto made = synthesize(*project, tolerance, false, cancel.get());
                 if (cancel->load()) return nullptr;
