@@ -2109,6 +2109,73 @@
     </message>
 </context>
 <context>
+    <name>cam::DisplayQuantity</name>
+    <message>
+        <location filename="../../src/app/widgets/quantity_format.cpp" line="+30" />
+        <source>(%1, %2)</source>
+        <translation>(%1; %2)</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/widgets/quantity_format.h" line="+58" />
+        <location line="+23" />
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location line="-21" />
+        <location line="+20" />
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <location line="-17" />
+        <location line="+19" />
+        <source>mm/s</source>
+        <translation>mm/s</translation>
+    </message>
+    <message>
+        <location line="-18" />
+        <location line="+21" />
+        <source>mm/s²</source>
+        <translation>mm/s²</translation>
+    </message>
+    <message>
+        <location line="-20" />
+        <source>mm/s³</source>
+        <translation>mm/s³</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>rad/s</source>
+        <translation>rad/s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>rpm</source>
+        <translation>U/min</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>°/s</source>
+        <translation>°/s</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>°/s²</source>
+        <translation>°/s²</translation>
+    </message>
+</context>
+<context>
     <name>cam::ExportDialog</name>
     <message>
         <location filename="../../src/app/export/export_dialog.cpp" line="+52" />
