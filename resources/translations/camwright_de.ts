@@ -2593,8 +2593,8 @@
     </message>
     <message>
         <location line="+4" />
-        <source>The follower cannot reach the profile at %1: it jumps from (%2, %3) to (%4, %5)</source>
-        <translation>Der Stößel erreicht das Profil bei %1 nicht: er springt von (%2, %3) nach (%4, %5)</translation>
+        <source>The follower cannot reach the profile at %1: it jumps from %2 to %3</source>
+        <translation>Der Stößel erreicht das Profil bei %1 nicht: er springt von %2 nach %3</translation>
     </message>
     <message>
         <location line="+6" />
@@ -2935,8 +2935,8 @@
     </message>
     <message>
         <location line="+9" />
-        <source>Path %1 mm (contour offset by the tool radius); optimal plan on %2 grid points; computed in %3 ms</source>
-        <translation>Bahn %1 mm (Kontur um den Werkzeugradius versetzt); zeitoptimaler Plan auf %2 Gitterpunkten; berechnet in %3 ms</translation>
+        <source>Path %1 (contour offset by the tool radius); optimal plan on %2 grid points; computed in %3</source>
+        <translation>Bahn %1 (Kontur um den Werkzeugradius versetzt); zeitoptimaler Plan auf %2 Gitterpunkten; berechnet in %3</translation>
     </message>
     <message>
         <location line="+7" />
@@ -3664,10 +3664,10 @@
     </message>
     <message numerus="yes">
         <location line="+9" />
-        <source>Last synthesis: %n segment(s), at most %1 mm from the exact profile. The follower on them against the law (%2 angles): lift %3%4, velocity %5%6, acceleration %7%8 (the arcs are only tangent-continuous: the acceleration jumps at their joints).</source>
+        <source>Last synthesis: %n segment(s), at most %1 from the exact profile. The follower on them against the law (%2 angles): lift %3, velocity %4, acceleration %5 (the arcs are only tangent-continuous: the acceleration jumps at their joints).</source>
         <translation>
-            <numerusform>Letzte Synthese: %n Abschnitt, höchstens %1 mm vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3%4, Geschwindigkeit %5%6, Beschleunigung %7%8 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform>
-            <numerusform>Letzte Synthese: %n Abschnitte, höchstens %1 mm vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3%4, Geschwindigkeit %5%6, Beschleunigung %7%8 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform>
+            <numerusform>Letzte Synthese: %n Abschnitt, höchstens %1 vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3, Geschwindigkeit %4, Beschleunigung %5 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform>
+            <numerusform>Letzte Synthese: %n Abschnitte, höchstens %1 vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3, Geschwindigkeit %4, Beschleunigung %5 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform>
         </translation>
     </message>
     <message>
@@ -3712,8 +3712,8 @@
     </message>
     <message>
         <location line="+13" />
-        <source>The follower on the contour as it is, against the law (%1 samples): lift %2 %3, velocity %4 %3/s, acceleration %5 %3/s².</source>
-        <translation>Der Stößel auf der jetzigen Kontur gegenüber dem Gesetz (%1 Stützstellen): Hub %2 %3, Geschwindigkeit %4 %3/s, Beschleunigung %5 %3/s².</translation>
+        <source>The follower on the contour as it is, against the law (%1 samples): lift %2, velocity %3, acceleration %4.</source>
+        <translation>Der Stößel auf der jetzigen Kontur gegenüber dem Gesetz (%1 Stützstellen): Hub %2, Geschwindigkeit %3, Beschleunigung %4.</translation>
     </message>
     <message>
         <location line="+6" />
@@ -3780,10 +3780,10 @@
     </message>
     <message>
         <location line="+46" />
-        <source>ω = %1 rad/s · %2 rpm
-T = %3 s</source>
-        <translation>ω = %1 rad/s · %2 U/min
-T = %3 s</translation>
+        <source>ω = %1 · %2
+T = %3</source>
+        <translation>ω = %1 · %2
+T = %3</translation>
     </message>
     <message>
         <location line="+5" />
