@@ -1715,8 +1715,8 @@
     </message>
     <message>
         <location line="+1" />
-        <source>Radius of the switch arc (below %1 mm fits):</source>
-        <translation>Radius des Umschaltbogens (unter %1 mm passt):</translation>
+        <source>Radius of the switch arc (below %1 fits):</source>
+        <translation>Radius des Umschaltbogens (unter %1 passt):</translation>
     </message>
     <message>
         <location line="+6" />
@@ -1783,8 +1783,8 @@
     </message>
     <message>
         <location line="+2" />
-        <source>Corner rounded with a %1 mm switch arc</source>
-        <translation>Ecke mit einem Schaltbogen von %1 mm verrundet</translation>
+        <source>Corner rounded with a %1 switch arc</source>
+        <translation>Ecke mit einem Schaltbogen von %1 verrundet</translation>
     </message>
     <message>
         <location line="+6" />
@@ -1813,8 +1813,8 @@
     </message>
     <message>
         <location line="+1" />
-        <source>Tangent arc: centre (%1, %2), radius %3 mm</source>
-        <translation>Tangentenbogen: Mittelpunkt (%1, %2), Radius %3 mm</translation>
+        <source>Tangent arc: centre %1, radius %2</source>
+        <translation>Tangentenbogen: Mittelpunkt %1, Radius %2</translation>
     </message>
     <message>
         <location line="+7" />
@@ -1828,10 +1828,10 @@
     </message>
     <message numerus="yes">
         <location line="+1" />
-        <source>%n Bézier piece(s): radial error %1 mm, end/middle speed ratio %2</source>
+        <source>%n Bézier piece(s): radial error %1, end/middle speed ratio %2</source>
         <translation>
-            <numerusform>%n Bézierstück: Radialabweichung %1 mm, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform>
-            <numerusform>%n Bézierstücke: Radialabweichung %1 mm, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform>
+            <numerusform>%n Bézierstück: Radialabweichung %1, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform>
+            <numerusform>%n Bézierstücke: Radialabweichung %1, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform>
         </translation>
     </message>
     <message>
@@ -3042,10 +3042,10 @@
     </message>
     <message numerus="yes">
         <location line="+7" />
-        <source>Synthesized %n segment(s) within %1 mm in %2 ms</source>
+        <source>Synthesized %n segment(s) within %1 in %2</source>
         <translation>
-            <numerusform>%n Abschnitt innerhalb %1 mm in %2 ms synthetisiert</numerusform>
-            <numerusform>%n Abschnitte innerhalb %1 mm in %2 ms synthetisiert</numerusform>
+            <numerusform>%n Abschnitt innerhalb %1 in %2 synthetisiert</numerusform>
+            <numerusform>%n Abschnitte innerhalb %1 in %2 synthetisiert</numerusform>
         </translation>
     </message>
     <message>
@@ -3070,8 +3070,8 @@
     </message>
     <message>
         <location line="+5" />
-        <source>Cursor at %1°</source>
-        <translation>Cursor bei %1°</translation>
+        <source>Cursor at %1</source>
+        <translation>Cursor bei %1</translation>
     </message>
     <message>
         <location line="+29" />
@@ -3392,8 +3392,8 @@
     </message>
     <message>
         <location line="+11" />
-        <source>%1 samples computed in %2 ms</source>
-        <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
+        <source>%1 samples computed in %2</source>
+        <translation>%1 Abtastpunkte in %2 berechnet</translation>
     </message>
     <message>
         <location line="+60" />
