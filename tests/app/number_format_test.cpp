@@ -32,9 +32,6 @@ TEST(NumberFormat, RoundOffIsZeroAndNoThousandsSeparators) {
     EXPECT_EQ(formatNumber(215.60000000000002, 10), "215.6");
     EXPECT_EQ(formatNumber(2e-9, 3), "2E-09");  // above round-off: a value, shown as one
     EXPECT_EQ(formatNumber(12345.678, 7), "12345.68");
-    EXPECT_EQ(formatFixed(-0.0004, 3), "0.000");
-    EXPECT_EQ(formatFixed(-0.0006, 3), "-0.001");
-    EXPECT_EQ(formatFixed(12345.678, 2), "12345.68");
 }
 
 TEST(NumberFormat, ALargeValueIsWrittenWholeNeverWithAnExponent) {
@@ -55,8 +52,6 @@ TEST(NumberFormat, GermanHasADecimalCommaAndStillNoGroups) {
     EXPECT_EQ(formatNumber(1.279561153e-15, 10), "0");
     EXPECT_EQ(formatNumber(1234.5, 6), "1234,5");
     EXPECT_EQ(formatNumber(123456789.0, 6), "123457000");  // whole, and still no groups
-    EXPECT_EQ(formatFixed(-0.0004, 3), "0,000");
-    EXPECT_EQ(formatFixed(1234.5, 1), "1234,5");
 }
 
 TEST(NumberFormat, TheTableShowsRoundOffAsZeroButKeepsTheExactValue) {

@@ -33,12 +33,4 @@ QString formatNumber(double value, int significant) {
     return locale.toString(v, 'g', significant);
 }
 
-QString formatFixed(double value, int decimals) {
-    const QString text = displayLocale().toString(cleaned(value), 'f', decimals);
-    // -0.0004 with three decimals is "-0.000": the sign of a value that rounds to 0 goes.
-    const QLocale locale = displayLocale();
-    const QString zero = locale.toString(0.0, 'f', decimals);
-    return text.mid(1) == zero && text.startsWith(locale.negativeSign()) ? zero : text;
-}
-
 }  // namespace cam

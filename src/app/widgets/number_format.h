@@ -20,7 +20,4 @@ inline constexpr double kRoundOffZero = 1e-9;
 /// Below 10⁻⁴ it keeps %g's exponent (2E-09), the notation a cell accepts. ±∞ is "∞", "-∞".
 [[nodiscard]] QString formatNumber(double value, int significant);
 
-/// @brief `value` with `decimals` digits after the decimal separator in the user's locale.
-[[nodiscard]] QString formatFixed(double value, int decimals);
-
 }  // namespace cam
