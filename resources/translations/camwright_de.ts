@@ -3,7 +3,7 @@
 <context>
     <name>DiagnosticText</name>
     <message>
-        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+75" />
+        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+81" />
         <source>a number</source>
         <translation>eine Zahl</translation>
     </message>
@@ -1715,8 +1715,8 @@
     </message>
     <message>
         <location line="+1" />
-        <source>Radius of the switch arc (below %1 mm fits):</source>
-        <translation>Radius des Umschaltbogens (unter %1 mm passt):</translation>
+        <source>Radius of the switch arc (below %1 fits):</source>
+        <translation>Radius des Umschaltbogens (unter %1 passt):</translation>
     </message>
     <message>
         <location line="+6" />
@@ -1732,7 +1732,7 @@
 <context>
     <name>cam::ContourEdits</name>
     <message>
-        <location filename="../../src/app/document/contour_edits.cpp" line="+18" />
+        <location filename="../../src/app/document/contour_edits.cpp" line="+16" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
@@ -1783,11 +1783,24 @@
     </message>
     <message>
         <location line="+2" />
-        <source>Corner rounded with a %1 mm switch arc</source>
-        <translation>Ecke mit einem Schaltbogen von %1 mm verrundet</translation>
+        <source>Corner rounded with a %1 switch arc</source>
+        <translation>Ecke mit einem Schaltbogen von %1 verrundet</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+32" />
+        <source>Tangent arc: centre %1, radius %2</source>
+        <translation>Tangentenbogen: Mittelpunkt %1, Radius %2</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+15" />
+        <source>%n Bézier piece(s): radial error %1, end/middle speed ratio %2</source>
+        <translation>
+            <numerusform>%n Bézierstück: Radialabweichung %1, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform>
+            <numerusform>%n Bézierstücke: Radialabweichung %1, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="-40" />
         <source>Select the arc the tangent line starts from first.</source>
         <translation>Zuerst den Bogen auswählen, an dem die Tangente beginnt.</translation>
     </message>
@@ -1797,7 +1810,7 @@
         <translation>Tangente zum nächsten Bogen</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+3" />
         <source>Tangent line from %1 to %2</source>
         <translation>Tangente von %1 nach %2</translation>
     </message>
@@ -1812,12 +1825,7 @@
         <translation>Tangentenbogen durch einen Punkt</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Tangent arc: centre (%1, %2), radius %3 mm</source>
-        <translation>Tangentenbogen: Mittelpunkt (%1, %2), Radius %3 mm</translation>
-    </message>
-    <message>
-        <location line="+7" />
+        <location line="+8" />
         <source>Select the arc to approximate first.</source>
         <translation>Zuerst den anzunähernden Bogen auswählen.</translation>
     </message>
@@ -1826,16 +1834,8 @@
         <source>Approximate arc by Béziers</source>
         <translation>Bogen durch Béziers annähern</translation>
     </message>
-    <message numerus="yes">
-        <location line="+1" />
-        <source>%n Bézier piece(s): radial error %1 mm, end/middle speed ratio %2</source>
-        <translation>
-            <numerusform>%n Bézierstück: Radialabweichung %1 mm, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform>
-            <numerusform>%n Bézierstücke: Radialabweichung %1 mm, Geschwindigkeitsverhältnis Rand/Mitte %2</numerusform>
-        </translation>
-    </message>
     <message>
-        <location line="+16" />
+        <location line="+18" />
         <source>New contour through points</source>
         <translation>Neue Kontur durch Punkte</translation>
     </message>
@@ -1973,7 +1973,7 @@
 <context>
     <name>cam::DesignTableModel</name>
     <message>
-        <location filename="../../src/app/models/design_table_model.cpp" line="+62" />
+        <location filename="../../src/app/models/design_table_model.cpp" line="+61" />
         <source>Dwell</source>
         <translation>Rast</translation>
     </message>
@@ -2063,7 +2063,7 @@
         <translation>Nur für Polynom 5</translation>
     </message>
     <message>
-        <location line="+64" />
+        <location line="+65" />
         <source>Law</source>
         <translation>Bewegungsgesetz</translation>
     </message>
@@ -2106,6 +2106,73 @@
         <location line="+62" />
         <source>Edit %1 of design segment %2</source>
         <translation>%1 von Bewegungsabschnitt %2 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>cam::DisplayQuantity</name>
+    <message>
+        <location filename="../../src/app/widgets/quantity_format.cpp" line="+30" />
+        <source>(%1, %2)</source>
+        <translation>(%1; %2)</translation>
+    </message>
+    <message>
+        <location filename="../../src/app/widgets/quantity_format.h" line="+58" />
+        <location line="+23" />
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location line="-21" />
+        <location line="+20" />
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <location line="-17" />
+        <location line="+19" />
+        <source>mm/s</source>
+        <translation>mm/s</translation>
+    </message>
+    <message>
+        <location line="-18" />
+        <location line="+21" />
+        <source>mm/s²</source>
+        <translation>mm/s²</translation>
+    </message>
+    <message>
+        <location line="-20" />
+        <source>mm/s³</source>
+        <translation>mm/s³</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>rad/s</source>
+        <translation>rad/s</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>rpm</source>
+        <translation>U/min</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>°/s</source>
+        <translation>°/s</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>°/s²</source>
+        <translation>°/s²</translation>
     </message>
 </context>
 <context>
@@ -2325,7 +2392,7 @@
 <context>
     <name>cam::FollowerPanel</name>
     <message>
-        <location filename="../../src/app/views/follower_panel.cpp" line="+48" />
+        <location filename="../../src/app/views/follower_panel.cpp" line="+46" />
         <source>Knife edge</source>
         <translation>Spitze (Messerkante)</translation>
     </message>
@@ -2475,7 +2542,7 @@
         <translation>Druckwinkel [°]</translation>
     </message>
     <message>
-        <location line="+148" />
+        <location line="+147" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -2485,7 +2552,7 @@
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+27" />
         <source>No design checks: %1</source>
         <translation>Keine Auslegungsprüfung: %1</translation>
     </message>
@@ -2526,8 +2593,8 @@
     </message>
     <message>
         <location line="+4" />
-        <source>The follower cannot reach the profile at %1: it jumps from (%2, %3) to (%4, %5)</source>
-        <translation>Der Stößel erreicht das Profil bei %1 nicht: er springt von (%2, %3) nach (%4, %5)</translation>
+        <source>The follower cannot reach the profile at %1: it jumps from %2 to %3</source>
+        <translation>Der Stößel erreicht das Profil bei %1 nicht: er springt von %2 nach %3</translation>
     </message>
     <message>
         <location line="+6" />
@@ -2712,7 +2779,7 @@
 <context>
     <name>cam::MachiningPanel</name>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="+50" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="+51" />
         <source>Add Machining Limits</source>
         <translation>Bearbeitungsgrenzen hinzufügen</translation>
     </message>
@@ -2867,9 +2934,9 @@
         <translation>%1 (relativer Fehler etwa %2)</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>Path %1 mm (contour offset by the tool radius); optimal plan on %2 grid points; computed in %3 ms</source>
-        <translation>Bahn %1 mm (Kontur um den Werkzeugradius versetzt); zeitoptimaler Plan auf %2 Gitterpunkten; berechnet in %3 ms</translation>
+        <location line="+11" />
+        <source>Path %1 (contour offset by the tool radius); optimal plan on %2 grid points; computed in %3</source>
+        <translation>Bahn %1 (Kontur um den Werkzeugradius versetzt); zeitoptimaler Plan auf %2 Gitterpunkten; berechnet in %3</translation>
     </message>
     <message>
         <location line="+7" />
@@ -2891,12 +2958,12 @@
     </message>
     <message>
         <location line="+66" />
-        <location line="+31" />
+        <location line="+32" />
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-27" />
+        <location line="-28" />
         <source>Turn the cam with the follower riding it (F5)</source>
         <translation>Die Scheibe drehen, der Stößel fährt mit (F5)</translation>
     </message>
@@ -2906,7 +2973,7 @@
         <translation>Mit diesem Bruchteil der wirklichen Drehzahl abspielen</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+25" />
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -2973,16 +3040,8 @@
         <source>Synthesized: the contour already is this design's.</source>
         <translation>Synthetisiert: die Kontur ist bereits die dieses Entwurfs.</translation>
     </message>
-    <message numerus="yes">
-        <location line="+7" />
-        <source>Synthesized %n segment(s) within %1 mm in %2 ms</source>
-        <translation>
-            <numerusform>%n Abschnitt innerhalb %1 mm in %2 ms synthetisiert</numerusform>
-            <numerusform>%n Abschnitte innerhalb %1 mm in %2 ms synthetisiert</numerusform>
-        </translation>
-    </message>
     <message>
-        <location line="+26" />
+        <location line="+33" />
         <source>Control Points</source>
         <translation>Kontrollpunkte</translation>
     </message>
@@ -3001,10 +3060,18 @@
         <source>The follower and its design checks (Ctrl+L)</source>
         <translation>Der Stößel und seine Auslegungsprüfungen (Strg+L)</translation>
     </message>
+    <message numerus="yes">
+        <location line="-76" />
+        <source>Synthesized %n segment(s) within %1 in %2</source>
+        <translation>
+            <numerusform>%n Abschnitt innerhalb %1 in %2 synthetisiert</numerusform>
+            <numerusform>%n Abschnitte innerhalb %1 in %2 synthetisiert</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+5" />
-        <source>Cursor at %1°</source>
-        <translation>Cursor bei %1°</translation>
+        <location line="+82" />
+        <source>Cursor at %1</source>
+        <translation>Cursor bei %1</translation>
     </message>
     <message>
         <location line="+29" />
@@ -3304,7 +3371,7 @@
         <translation>Projekt in „%1“ umbenannt</translation>
     </message>
     <message>
-        <location line="+58" />
+        <location line="+60" />
         <source>not computed: %1</source>
         <translation>nicht berechnet: %1</translation>
     </message>
@@ -3324,9 +3391,9 @@
         <translation>Berechnung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+11" />
-        <source>%1 samples computed in %2 ms</source>
-        <translation>%1 Abtastpunkte in %2 ms berechnet</translation>
+        <location line="+12" />
+        <source>%1 samples computed in %2</source>
+        <translation>%1 Abtastpunkte in %2 berechnet</translation>
     </message>
     <message>
         <location line="+60" />
@@ -3359,7 +3426,7 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-531" />
+        <location line="-534" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
@@ -3474,7 +3541,7 @@
 <context>
     <name>cam::MotionDesignPanel</name>
     <message>
-        <location filename="../../src/app/views/motion_design_panel.cpp" line="+53" />
+        <location filename="../../src/app/views/motion_design_panel.cpp" line="+63" />
         <source>New Design</source>
         <translation>Neuer Entwurf</translation>
     </message>
@@ -3596,15 +3663,20 @@
         <translation>Dieses Projekt hat keinen Bewegungsentwurf. „Neuer Entwurf“ legt einen an: die Bewegung des Stößels festlegen, dann erzeugt Synthetisieren daraus die Kontur.</translation>
     </message>
     <message numerus="yes">
-        <location line="+9" />
-        <source>Last synthesis: %n segment(s), at most %1 mm from the exact profile. The follower on them against the law (%2 angles): lift %3%4, velocity %5%6, acceleration %7%8 (the arcs are only tangent-continuous: the acceleration jumps at their joints).</source>
+        <location line="+7" />
+        <source>Last synthesis: %n segment(s), at most %1 from the exact profile. The follower on them against the law (%2 angles): lift %3, velocity %4, acceleration %5 (the arcs are only tangent-continuous: the acceleration jumps at their joints).</source>
         <translation>
-            <numerusform>Letzte Synthese: %n Abschnitt, höchstens %1 mm vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3%4, Geschwindigkeit %5%6, Beschleunigung %7%8 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform>
-            <numerusform>Letzte Synthese: %n Abschnitte, höchstens %1 mm vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3%4, Geschwindigkeit %5%6, Beschleunigung %7%8 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform>
+            <numerusform>Letzte Synthese: %n Abschnitt, höchstens %1 vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3, Geschwindigkeit %4, Beschleunigung %5 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform>
+            <numerusform>Letzte Synthese: %n Abschnitte, höchstens %1 vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3, Geschwindigkeit %4, Beschleunigung %5 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+87" />
+        <source>The follower on the contour as it is, against the law (%1 samples): lift %2, velocity %3, acceleration %4.</source>
+        <translation>Der Stößel auf der jetzigen Kontur gegenüber dem Gesetz (%1 Stützstellen): Hub %2, Geschwindigkeit %3, Beschleunigung %4.</translation>
+    </message>
+    <message>
+        <location line="-55" />
         <source>The design cannot be made: %1</source>
         <translation>Der Entwurf ist nicht herstellbar: %1</translation>
     </message>
@@ -3644,12 +3716,7 @@
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+13" />
-        <source>The follower on the contour as it is, against the law (%1 samples): lift %2 %3, velocity %4 %3/s, acceleration %5 %3/s².</source>
-        <translation>Der Stößel auf der jetzigen Kontur gegenüber dem Gesetz (%1 Stützstellen): Hub %2 %3, Geschwindigkeit %4 %3/s, Beschleunigung %5 %3/s².</translation>
-    </message>
-    <message>
-        <location line="+6" />
+        <location line="+21" />
         <source>The follower cannot ride the contour: %1</source>
         <translation>Der Stößel kann die Kontur nicht abfahren: %1</translation>
     </message>
@@ -3667,7 +3734,7 @@
 <context>
     <name>cam::MotionPanel</name>
     <message>
-        <location filename="../../src/app/views/motion_panel.cpp" line="+22" />
+        <location filename="../../src/app/views/motion_panel.cpp" line="+23" />
         <source>Turning speed; a negative speed turns clockwise</source>
         <translation>Drehgeschwindigkeit; negativ dreht im Uhrzeigersinn</translation>
     </message>
@@ -3712,11 +3779,11 @@
         <translation>Punkte / Umdrehung</translation>
     </message>
     <message>
-        <location line="+46" />
-        <source>ω = %1 rad/s · %2 rpm
-T = %3 s</source>
-        <translation>ω = %1 rad/s · %2 U/min
-T = %3 s</translation>
+        <location line="+47" />
+        <source>ω = %1 · %2
+T = %3</source>
+        <translation>ω = %1 · %2
+T = %3</translation>
     </message>
     <message>
         <location line="+5" />
@@ -3727,7 +3794,7 @@ T = %3 s</translation>
 <context>
     <name>cam::PathStudyPanel</name>
     <message>
-        <location filename="../../src/app/views/path_study_panel.cpp" line="+20" />
+        <location filename="../../src/app/views/path_study_panel.cpp" line="+21" />
         <source>x, y [mm]</source>
         <translation>x, y [mm]</translation>
     </message>
@@ -3938,43 +4005,43 @@ Möchten Sie die Datei ersetzen?</translation>
 <context>
     <name>cam::SegmentTableModel</name>
     <message>
-        <location filename="../../src/app/models/segment_table_model.cpp" line="+83" />
-        <location line="+53" />
+        <location filename="../../src/app/models/segment_table_model.cpp" line="+82" />
+        <location line="+52" />
         <source>Arc</source>
         <translation>Bogen</translation>
     </message>
     <message>
-        <location line="-53" />
-        <location line="+53" />
+        <location line="-52" />
+        <location line="+52" />
         <source>Line</source>
         <translation>Gerade</translation>
     </message>
     <message>
-        <location line="-53" />
-        <location line="+53" />
+        <location line="-52" />
+        <location line="+52" />
         <source>Bézier</source>
         <translation>Bézier</translation>
     </message>
     <message>
-        <location line="-53" />
-        <location line="+53" />
+        <location line="-52" />
+        <location line="+52" />
         <source>Hermite</source>
         <translation>Hermite</translation>
     </message>
     <message>
-        <location line="-52" />
-        <location line="+64" />
+        <location line="-51" />
+        <location line="+63" />
         <source>outer</source>
         <translation>außen</translation>
     </message>
     <message>
-        <location line="-64" />
-        <location line="+64" />
+        <location line="-63" />
+        <location line="+63" />
         <source>inner</source>
         <translation>innen</translation>
     </message>
     <message>
-        <location line="-57" />
+        <location line="-56" />
         <source>outer: far intersection of the ray with the circle; inner: near intersection</source>
         <translation>außen: ferner Schnittpunkt des Strahls mit dem Kreis (r_oben); innen: naher Schnittpunkt (r_unten)</translation>
     </message>
@@ -3994,7 +4061,7 @@ Möchten Sie die Datei ersetzen?</translation>
         <translation>Die Griffe in der Konturansicht ziehen, um die Kurve zu formen, oder ihre Kontrollpunkte im Reiter Kontrollpunkte eingeben.</translation>
     </message>
     <message>
-        <location line="+66" />
+        <location line="+65" />
         <source>What the segment is: an arc of a circle, a line, or a cubic spline piece (Bézier or Hermite)</source>
         <translation>Art des Segments: ein Kreisbogen, eine Strecke oder ein kubisches Spline-Stück (Bézier oder Hermite)</translation>
     </message>
@@ -4158,7 +4225,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>cam::StateReadout</name>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="+15" />
+        <location filename="../../src/app/views/state_readout.cpp" line="+26" />
         <source>t</source>
         <translation>t</translation>
     </message>
@@ -4223,7 +4290,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <translation>|j|</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+15" />
         <source>State of the follower at the cursor: move the mouse over a plot</source>
         <translation>Zustand des Stößels am Cursor: Maus über ein Diagramm bewegen</translation>
     </message>

@@ -55,7 +55,7 @@
 #include "views/state_readout.h"
 #include "widgets/column_fit.h"
 #include "widgets/icons.h"
-#include "widgets/number_format.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 
@@ -186,7 +186,8 @@ void MainWindow::setUpPlay() {
     m_playSpeed->setObjectName("playSpeedComboBox");
     m_playSpeed->setToolTip(tr("Play at this fraction of the cam's real speed"));
     for (double factor : {0.01, 0.05, 0.1, 0.25, 0.5, 1.0}) {
-        m_playSpeed->addItem(QStringLiteral("%1×").arg(formatNumber(factor, 6)), factor);
+        m_playSpeed->addItem(formatQuantity(DisplayQuantity::Ratio, factor) + QStringLiteral("×"),
+                             factor);
     }
     QSettings settings;
     const int index = m_playSpeed->findData(settings.value("view/playSpeed", 0.05).toDouble());
@@ -329,10 +330,11 @@ void MainWindow::finishSynthesis(const std::shared_ptr<const Result<Synthesis>>&
     m_document->undoStack()->push(
         new SynthesizeContour(m_document, made.contour, from.design->tolerance));
     statusBar()->showMessage(
-        tr("Synthesized %n segment(s) within %1 mm in %2 ms", nullptr,
+        tr("Synthesized %n segment(s) within %1 in %2", nullptr,
            static_cast<int>(made.report.segments))
-            .arg(formatNumber(made.report.maxDeviationMm, 3),
-                 formatFixed(static_cast<double>(m_synthesisClock.nsecsElapsed()) / 1e6, 0)),
+            .arg(formatQuantity(DisplayQuantity::LengthError, made.report.maxDeviationMm),
+                 formatQuantity(DisplayQuantity::Duration,
+                                static_cast<double>(m_synthesisClock.nsecsElapsed()) / 1e6)),
         8000);
     emit synthesisFinished({});
 }
@@ -409,7 +411,8 @@ void MainWindow::setUpDocks() {
     connect(m_follower, &FollowerPanel::anglePicked, this, [this](double phi) {
         if (!m_shown) return;
         setCursorTime(phi / m_shown->omega);
-        statusBar()->showMessage(tr("Cursor at %1°").arg(formatFixed(radToDeg(phi), 2)), 4000);
+        statusBar()->showMessage(
+            tr("Cursor at %1").arg(formatQuantity(DisplayQuantity::Angle, radToDeg(phi))), 4000);
     });
     // The pressure-angle plot shares the kinematics plots' x axis: panning or zooming either
     // moves the other.
@@ -933,9 +936,10 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
     m_shown = result;
     m_computeLabel->setStyleSheet({});
     setCursorTime(m_cursorT);
-    m_computeLabel->setText(tr("%1 samples computed in %2 ms")
-                                .arg(formatNumber(static_cast<double>(result->sampleCount), 15),
-                                     formatFixed(result->computeMs, 1)));
+    m_computeLabel->setText(
+        tr("%1 samples computed in %2")
+            .arg(formatQuantity(DisplayQuantity::Count, static_cast<double>(result->sampleCount)),
+                 formatQuantity(DisplayQuantity::Duration, result->computeMs)));
     emit resultShown(result);
 }
 

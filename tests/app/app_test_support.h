@@ -6,10 +6,12 @@
 #include <QLocale>
 #include <QStringList>
 #include <QThread>
+#include <cmath>
 #include <limits>
 
 #include "io/project_json.h"
 #include "test_support.h"
+#include "widgets/quantity_format.h"
 
 namespace cam::test {
 
@@ -37,18 +39,26 @@ bool processEventsUntil(Predicate done, int timeoutMs = kSanitized ? 60000 : 100
     return done();
 }
 
-/// The number a row of the State-at-Cursor readout shows ("φ 45 °" → 45); NaN if absent.
+/// The number a row of the State-at-Cursor readout shows ("φ 45°" → 45, "r 26.21882 mm" →
+/// 26.21882); NaN if absent.
 template <class Window>
 double readoutValue(const Window& window, const QString& name) {
     for (const QString& line : window.readout()->text().split('\n')) {
         const QStringList parts = line.split(' ');
         if (parts.size() >= 2 && parts[0] == name) {
             bool ok = false;
-            const double value = QLocale::c().toDouble(QString(parts[1]).remove(','), &ok);
+            const QString number = QString(parts[1]).remove(',').remove(QChar(u'°'));
+            const double value = QLocale::c().toDouble(number, &ok);
             if (ok) return value;
         }
     }
     return std::numeric_limits<double>::quiet_NaN();
+}
+
+/// How close a readout's number of `quantity` is to the value it shows, relative: its
+/// significant digits round to half a unit of the last, 0.5·10^(1 − digits) at worst.
+inline double readoutTolerance(DisplayQuantity quantity) {
+    return std::pow(10.0, 1 - quantityFormat(quantity).significant);
 }
 
 }  // namespace cam::test

@@ -266,9 +266,12 @@ TEST(StateReadout, ReadsAnglesAndInstantsWithinOneTurnWhereverTheMouseIs) {
         const double phi = std::atan2(y, x) + kTwoPi;  // in [0, 2π): the lower half
         // Turning clockwise, the ray reaches 303.69° after 360° − 303.69° of rotation.
         const double t = omega > 0 ? phi / omega : (kTwoPi - phi) / -omega;
-        // The readout shows eight significant digits.
-        EXPECT_TRUE(test::relClose(test::readoutValue(window, "φ"), radToDeg(phi), 1e-7)) << omega;
-        EXPECT_TRUE(test::relClose(test::readoutValue(window, "t"), t, 1e-7)) << omega;
+        // The readout shows an angle's and a time's significant digits (quantity_format.h).
+        const double angleTolerance = test::readoutTolerance(DisplayQuantity::Angle);
+        const double timeTolerance = test::readoutTolerance(DisplayQuantity::Time);
+        EXPECT_TRUE(test::relClose(test::readoutValue(window, "φ"), radToDeg(phi), angleTolerance))
+            << omega;
+        EXPECT_TRUE(test::relClose(test::readoutValue(window, "t"), t, timeTolerance)) << omega;
         EXPECT_GE(test::readoutValue(window, "t"), 0.0);
         EXPECT_LT(test::readoutValue(window, "t"), period);
 
@@ -285,7 +288,7 @@ TEST(StateReadout, ReadsAnglesAndInstantsWithinOneTurnWhereverTheMouseIs) {
         EXPECT_LT(readPhi, 360.0) << omega;
         // The angle the mouse points at, a few degrees before the start, read within the turn.
         const double xDeg = velocity->xAxis->pixelToCoord(rect.left() - 20);
-        EXPECT_TRUE(test::relClose(readPhi, mod360(xDeg), 1e-7)) << omega;
+        EXPECT_TRUE(test::relClose(readPhi, mod360(xDeg), angleTolerance)) << omega;
     }
 }
 

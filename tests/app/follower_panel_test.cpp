@@ -22,6 +22,7 @@
 #include "views/contour_view.h"
 #include "views/follower_panel.h"
 #include "views/kinematics_plots.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 namespace {
@@ -113,10 +114,11 @@ TEST(FollowerPanel, TheChecksAreTheCoresAndAClickGoesToTheirAngle) {
     const FollowerAnalysis a = analyzeFollower(model, result->omega, contour.phiBegin());
     const QStringList lines = window.followerPanel()->checkLines();
     ASSERT_FALSE(lines.isEmpty());
-    EXPECT_TRUE(lines[0].contains(QLocale().toString(radToDeg(a.pressureRise.value), 'f', 2)))
+    EXPECT_TRUE(
+        lines[0].contains(formatQuantity(DisplayQuantity::Angle, radToDeg(a.pressureRise.value))))
         << lines[0].toStdString();
     // 45° is the swinging arm's default limit; it is exceeded in 12 ranges on this cam.
-    EXPECT_TRUE(lines[0].contains("45.00°")) << lines[0].toStdString();
+    EXPECT_TRUE(lines[0].contains("(limit 45°)")) << lines[0].toStdString();
     EXPECT_EQ(lines.filter("beyond the limit").size(),
               static_cast<qsizetype>(a.pressureExceeded.size()));
     EXPECT_EQ(window.followerPanel()->problemCount(),
@@ -191,7 +193,7 @@ TEST(FollowerPanel, AnEditsChecksFollowItsFirstPictureAndTheListIsNeverEmptyMean
     const QStringList after = window.followerPanel()->checkLines();
     EXPECT_EQ(seen.back().second, after);
     ASSERT_FALSE(after.isEmpty());
-    EXPECT_TRUE(after[0].contains(QLocale().toString(radToDeg(a.limitRad), 'f', 2)))
+    EXPECT_TRUE(after[0].contains(formatQuantity(DisplayQuantity::Angle, radToDeg(a.limitRad))))
         << after[0].toStdString();
     EXPECT_NE(after, before);
 }

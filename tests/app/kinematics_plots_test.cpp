@@ -354,7 +354,8 @@ TEST(KinematicsPlots, CursorMovesRedrawOnlyTheCursorLayer) {
     for (std::size_t i = 0; i < views.size(); ++i) EXPECT_EQ(fullReplots[i], 0) << i;
     // The cursor did move: the readout and the dashed line are at the mouse's angle.
     const double x = velocity->xAxis->pixelToCoord(column);
-    EXPECT_TRUE(test::relClose(test::readoutValue(window, "φ"), x, 1e-7));  // 8 digits shown
+    EXPECT_TRUE(test::relClose(test::readoutValue(window, "φ"), x,
+                               test::readoutTolerance(DisplayQuantity::Angle)));
     const QImage image = velocity->grab().toImage();
     int dark = 0;
     for (int y = rect.top() + 2; y < rect.bottom() - 2; ++y) {

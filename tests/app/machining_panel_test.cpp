@@ -51,8 +51,9 @@ TEST(MachiningPanel, ShowsTheThreeTimesTheCoreComputes) {
     for (int m = 0; m < 3; ++m) {
         const double expected = machiningTime(path, lim, methods[m]).value().timeS;
         EXPECT_DOUBLE_EQ(outcome->timesS[static_cast<std::size_t>(m)], expected) << m;
-        EXPECT_TRUE(
-            window.machiningPanel()->timesText().contains(QLocale().toString(expected, 'f', 4)))
+        // A time has 6 significant digits (widgets/quantity_format.h).
+        EXPECT_TRUE(window.machiningPanel()->timesText().contains(
+            QLocale().toString(expected, 'g', 6) + " s"))
             << window.machiningPanel()->timesText().toStdString();
     }
     // And independently: the offset path built from the arcs' data and timed by the reference

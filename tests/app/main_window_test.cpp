@@ -244,14 +244,15 @@ TEST(MainWindow, EditsReachThePlotsAndTheReadout) {
     ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
     ASSERT_TRUE(window.waitForCurrentResult(10000));
     window.setCursorTime(0.05);
-    EXPECT_TRUE(window.readout()->text().contains("r 26.218824"))
+    // Lengths have 7 significant digits (widgets/quantity_format.h): 26.218824198 mm.
+    EXPECT_TRUE(window.readout()->text().contains("r 26.21882 mm"))
         << window.readout()->text().toStdString();
     // Slower turning: every velocity halves; the readout follows the new result.
     auto* stack = window.document()->undoStack();
     stack->push(new SetMotion(window.document(), {SpeedUnit::PeriodS, 0.8}));
     ASSERT_TRUE(window.waitForCurrentResult(10000));
-    window.setCursorTime(0.1);  // the same angle, 45°
-    EXPECT_TRUE(window.readout()->text().contains("v_φ 205.92216"))
+    window.setCursorTime(0.1);                                          // the same angle, 45°
+    EXPECT_TRUE(window.readout()->text().contains("v_φ 205.922 mm/s"))  // 6 digits
         << window.readout()->text().toStdString();
 }
 
@@ -350,7 +351,7 @@ TEST(MainWindow, EditingARadiusRedrawsThePlotsEvenThoughTheJointsOpen) {
     EXPECT_DOUBLE_EQ(test::arcOf(after->project->contour[1]).radius, 8.5);
     // The lobe grew: its tip at 30° is 29 + 0.397 mm out, in the plotted data too.
     window.setCursorTime(after->period * 30.0 / 360.0);
-    EXPECT_TRUE(window.readout()->text().contains("r 29.396819"))
+    EXPECT_TRUE(window.readout()->text().contains("r 29.39682 mm"))
         << window.readout()->text().toStdString();
     // The document still reports the opened joints, and undo brings back the valid cam.
     EXPECT_FALSE(window.document()->isValid());
@@ -675,7 +676,7 @@ TEST(JointsPanel, ListsEveryJointAndClickingOneGoesThere) {
     // Joint 2|3 sits at 69.69141°: clicking it moves the readout there.
     QTest::mouseClick(joints->viewport(), Qt::LeftButton, {},
                       joints->visualItemRect(joints->item(2, 0)).center());
-    EXPECT_TRUE(window.readout()->text().contains("φ 69.691411"))
+    EXPECT_TRUE(window.readout()->text().contains("φ 69.69141°"))
         << window.readout()->text().toStdString();
 }
 

@@ -5,6 +5,7 @@
 
 #include <QLabel>
 #include <QLocale>
+#include <limits>
 #include <tuple>
 
 #include "app_test_support.h"
@@ -30,17 +31,27 @@ TEST(NumberFormat, RoundOffIsZeroAndNoThousandsSeparators) {
     EXPECT_EQ(formatNumber(-40298.521, 8), "-40298.521");  // en_US would group: -40,298.521
     EXPECT_EQ(formatNumber(215.60000000000002, 10), "215.6");
     EXPECT_EQ(formatNumber(2e-9, 3), "2E-09");  // above round-off: a value, shown as one
-    EXPECT_EQ(formatFixed(-0.0004, 3), "0.000");
-    EXPECT_EQ(formatFixed(-0.0006, 3), "-0.001");
-    EXPECT_EQ(formatFixed(12345.678, 2), "12345.68");
+    EXPECT_EQ(formatNumber(12345.678, 7), "12345.68");
+}
+
+TEST(NumberFormat, ALargeValueIsWrittenWholeNeverWithAnExponent) {
+    // %g would write 4.07473E+08: from 10^digits up the rounded value is written whole.
+    const DefaultLocale english(QLocale(QLocale::English, QLocale::UnitedStates));
+    EXPECT_EQ(formatNumber(407472740.8, 6), "407473000");
+    EXPECT_EQ(formatNumber(-407472740.8, 6), "-407473000");
+    EXPECT_EQ(formatNumber(999999.7, 6), "1000000");  // rounds up to 10^6: whole too
+    EXPECT_EQ(formatNumber(999999.4, 6), "999999");
+    EXPECT_EQ(formatNumber(123456.4, 6), "123456");
+    EXPECT_EQ(formatNumber(std::numeric_limits<double>::infinity(), 6), "∞");
+    EXPECT_EQ(formatNumber(-std::numeric_limits<double>::infinity(), 6), "-∞");
 }
 
 TEST(NumberFormat, GermanHasADecimalCommaAndStillNoGroups) {
     const DefaultLocale german(QLocale(QLocale::German, QLocale::Germany));
     EXPECT_EQ(formatNumber(-40298.521, 8), "-40298,521");  // de_DE would group: -40.298,521
     EXPECT_EQ(formatNumber(1.279561153e-15, 10), "0");
-    EXPECT_EQ(formatFixed(-0.0004, 3), "0,000");
-    EXPECT_EQ(formatFixed(1234.5, 1), "1234,5");
+    EXPECT_EQ(formatNumber(1234.5, 6), "1234,5");
+    EXPECT_EQ(formatNumber(123456789.0, 6), "123457000");  // whole, and still no groups
 }
 
 TEST(NumberFormat, TheTableShowsRoundOffAsZeroButKeepsTheExactValue) {

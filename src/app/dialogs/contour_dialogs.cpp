@@ -5,11 +5,10 @@
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QLabel>
-#include <QLocale>
 #include <QPlainTextEdit>
 
-#include "widgets/number_format.h"
 #include "widgets/number_spin_box.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 namespace {
@@ -67,10 +66,10 @@ std::optional<TeachInInput> ContourDialogs::askTeachIn(QWidget* parent) {
 }
 
 std::optional<double> ContourDialogs::askSwitchArcRadius(QWidget* parent, double maxRadius) {
-    return askNumber(
-        parent, tr("Round Corner"),
-        tr("Radius of the switch arc (below %1 mm fits):").arg(formatNumber(maxRadius, 6)),
-        QStringLiteral(" mm"), std::min(maxRadius / 2.0, 5.0));
+    return askNumber(parent, tr("Round Corner"),
+                     tr("Radius of the switch arc (below %1 fits):")
+                         .arg(formatQuantity(DisplayQuantity::Length, maxRadius)),
+                     QStringLiteral(" mm"), std::min(maxRadius / 2.0, 5.0));
 }
 
 std::optional<double> ContourDialogs::askRadialError(QWidget* parent) {

@@ -1,7 +1,5 @@
 #include "document/contour_edits.h"
 
-#include <QLocale>
-
 #include "construction/tangents.h"
 #include "contour/fit_windows.h"
 #include "document/commands.h"
@@ -9,7 +7,7 @@
 #include "fillet/fillet.h"
 #include "io/number_rows.h"
 #include "spline/circle_approximation.h"
-#include "widgets/number_format.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 
@@ -82,8 +80,9 @@ EditOutcome ContourEdits::roundCorner(ProjectDocument& document, int joint, doub
     if (!result.ok()) return EditOutcome::refused(diagnosticsText(result.errors()));
     document.undoStack()->push(
         new ReplaceContour(&document, result.value().contour, tr("Round corner")));
-    return EditOutcome::done(tr("Corner rounded with a %1 mm switch arc").arg(formatNumber(rho, 6)),
-                             joint);
+    return EditOutcome::done(
+        tr("Corner rounded with a %1 switch arc").arg(formatQuantity(DisplayQuantity::Length, rho)),
+        joint);
 }
 
 EditOutcome ContourEdits::tangentLineToNext(ProjectDocument& document, int row) {
@@ -97,9 +96,7 @@ EditOutcome ContourEdits::tangentLineToNext(ProjectDocument& document, int row) 
     const TangentLineChoice& line = result.value().choices.front();
     document.undoStack()->push(
         new ReplaceContour(&document, line.contour, tr("Tangent line to the next arc")));
-    const auto point = [](const Eigen::Vector2d& p) {
-        return QStringLiteral("(%1, %2)").arg(formatNumber(p.x(), 6), formatNumber(p.y(), 6));
-    };
+    const auto point = [](const Eigen::Vector2d& p) { return formatPoint(p.x(), p.y()); };
     return EditOutcome::done(
         tr("Tangent line from %1 to %2").arg(point(line.tangentPoint1), point(line.tangentPoint2)),
         static_cast<int>(line.lineIndex));
@@ -116,9 +113,9 @@ EditOutcome ContourEdits::tangentArcThrough(ProjectDocument& document, int row,
     const ArcThroughPointResult& arc = result.value();
     document.undoStack()->push(
         new ReplaceContour(&document, arc.contour, tr("Tangent arc through a point")));
-    return EditOutcome::done(tr("Tangent arc: centre (%1, %2), radius %3 mm")
-                                 .arg(formatNumber(arc.center.x(), 6),
-                                      formatNumber(arc.center.y(), 6), formatNumber(arc.radius, 6)),
+    return EditOutcome::done(tr("Tangent arc: centre %1, radius %2")
+                                 .arg(formatPoint(arc.center.x(), arc.center.y()),
+                                      formatQuantity(DisplayQuantity::Length, arc.radius)),
                              static_cast<int>(arc.arcIndex));
 }
 
@@ -131,9 +128,10 @@ EditOutcome ContourEdits::approximateArc(ProjectDocument& document, int row, dou
     document.undoStack()->push(
         new ReplaceContour(&document, replaced.value(), tr("Approximate arc by Béziers")));
     return EditOutcome::done(
-        tr("%n Bézier piece(s): radial error %1 mm, end/middle speed ratio %2", "",
+        tr("%n Bézier piece(s): radial error %1, end/middle speed ratio %2", "",
            static_cast<int>(report.pieces.size()))
-            .arg(formatNumber(report.radialErrorMm, 3), formatFixed(report.speedRatio, 4)),
+            .arg(formatQuantity(DisplayQuantity::LengthError, report.radialErrorMm),
+                 formatQuantity(DisplayQuantity::Ratio, report.speedRatio)),
         row);
 }
 

@@ -9,6 +9,7 @@
 #include "fillet/fillet.h"
 #include "models/design_table_model.h"
 #include "models/segment_table_model.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 // A named namespace, not an anonymous one: the app is a unity build, and helpers named
@@ -18,7 +19,10 @@ namespace diagnostic_wording {
 using Code = DiagnosticCode;
 
 /// A number in a message: at most kMessageDigits significant digits (as the core's English),
-/// the user's decimal separator, no group separators, never "-0".
+/// the user's decimal separator, no group separators, never "-0". A message does not say what
+/// quantity its number is, and often quotes what was typed: it keeps the digits a cell shows
+/// a typed value with, and does not round a typed 1e-12 to 0 as the table's display does.
+static_assert(quantityFormat(DisplayQuantity::Input).significant == kMessageDigits);
 QString messageNumber(double value) {
     if (value == 0.0) return QStringLiteral("0");
     QLocale locale;
@@ -26,6 +30,8 @@ QString messageNumber(double value) {
     return locale.toString(value, 'g', kMessageDigits);
 }
 
+/// A count or a typed whole number (a tool number, a file's bytes) with every digit: unlike
+/// the table's Count, never rounded to ten digits, since it may quote what was typed.
 QString wholeNumber(double value) {
     QLocale locale;
     locale.setNumberOptions(locale.numberOptions() | QLocale::OmitGroupSeparator);

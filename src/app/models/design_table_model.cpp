@@ -1,14 +1,13 @@
 #include "models/design_table_model.h"
 
 #include <QColor>
-#include <QLocale>
 #include <QRegularExpression>
 
 #include "document/commands.h"
 #include "messages/diagnostic_text.h"
 #include "models/delegates.h"
 #include "models/segment_table_model.h"
-#include "widgets/number_format.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 namespace {
@@ -167,7 +166,7 @@ QVariant DesignTableModel::data(const QModelIndex& index, int role) const {
     if (role != Qt::DisplayRole && role != Qt::EditRole) return {};
     const bool edit = role == Qt::EditRole;
     const auto number = [&](double v) -> QVariant {
-        return edit ? QVariant(v) : QVariant(formatNumber(v, 10));
+        return edit ? QVariant(v) : QVariant(formatQuantityValue(DisplayQuantity::Input, v));
     };
     const auto coefficient = [&](double LawCoefficients::*field) -> QVariant {
         if (s.law == MotionLawType::Dwell) return {};
@@ -179,7 +178,8 @@ QVariant DesignTableModel::data(const QModelIndex& index, int role) const {
         } else {
             return {};
         }
-        return edit ? QVariant(value) : QVariant(formatFixed(value, 4));
+        return edit ? QVariant(value)
+                    : QVariant(formatQuantityValue(DisplayQuantity::Ratio, value));
     };
     switch (c) {
         case Law: {

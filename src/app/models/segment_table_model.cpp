@@ -1,14 +1,13 @@
 #include "models/segment_table_model.h"
 
 #include <QColor>
-#include <QLocale>
 #include <cmath>
 
 #include "common/angles.h"
 #include "contour/change_type.h"
 #include "messages/diagnostic_text.h"
 #include "project/validate.h"
-#include "widgets/number_format.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 namespace {
@@ -107,9 +106,8 @@ QVariant SegmentTableModel::data(const QModelIndex& index, int role) const {
                 tr("Drag the handles in the contour view to shape the curve, or type its "
                    "control points in the Control Points tab.")};
             for (int i = 0; i < 4; ++i) {
-                lines << QStringLiteral("%1 = (%2, %3)")
-                             .arg(names[i], formatNumber(points[i].x(), 8),
-                                  formatNumber(points[i].y(), 8));
+                lines << QStringLiteral("%1 = %2").arg(names[i],
+                                                       formatPoint(points[i].x(), points[i].y()));
             }
             return lines.join('\n');
         }
@@ -127,7 +125,7 @@ QVariant SegmentTableModel::data(const QModelIndex& index, int role) const {
     if (!isApplicable(index.row(), c)) return {};
     const bool edit = role == Qt::EditRole;
     auto number = [&](double v) -> QVariant {
-        return edit ? QVariant(v) : QVariant(formatNumber(v, 10));
+        return edit ? QVariant(v) : QVariant(formatQuantityValue(DisplayQuantity::Input, v));
     };
     const Arc* arc = s.as<Arc>();
     const Line* line = s.as<Line>();

@@ -22,7 +22,7 @@ NumberSpinBox* editor(QWidget* parent, const QString& name, const QString& suffi
     box->setSuffix(suffix);
     box->setToolTip(tip);
     box->setRange(-kMaxLengthMm, kMaxLengthMm);
-    box->setSignificantDigits(10);
+    box->setSignificantDigits(quantityFormat(DisplayQuantity::Input).significant);
     return box;
 }
 

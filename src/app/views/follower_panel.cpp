@@ -15,8 +15,8 @@
 #include "models/delegates.h"
 #include "views/axis_format.h"
 #include "views/plot_redraw.h"
-#include "widgets/number_format.h"
 #include "widgets/number_spin_box.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 namespace {
@@ -32,10 +32,8 @@ NumberSpinBox* spinBox(QWidget* parent, const char* name, const QString& suffix,
     return s;
 }
 
-QString degrees(double rad) { return formatFixed(radToDeg(rad), 2) + "°"; }
-QString millimetres(double mm) {
-    return std::isfinite(mm) ? formatNumber(mm, 6) + " mm" : QStringLiteral("∞");
-}
+QString degrees(double rad) { return formatQuantity(DisplayQuantity::Angle, radToDeg(rad)); }
+QString millimetres(double mm) { return formatQuantity(DisplayQuantity::Length, mm); }
 
 }  // namespace
 
@@ -306,9 +304,9 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
             r.from, true);
     }
     for (const NonContact& c : a.undercut) {
-        add(tr("The follower cannot reach the profile at %1: it jumps from (%2, %3) to (%4, %5)")
-                .arg(degrees(c.phi), formatFixed(c.from.x(), 3), formatFixed(c.from.y(), 3),
-                     formatFixed(c.to.x(), 3), formatFixed(c.to.y(), 3)),
+        add(tr("The follower cannot reach the profile at %1: it jumps from %2 to %3")
+                .arg(degrees(c.phi), formatPoint(c.from.x(), c.from.y()),
+                     formatPoint(c.to.x(), c.to.y())),
             c.phi, true);
     }
     const bool flat = result->follower->spec().type == FollowerType::Flat;

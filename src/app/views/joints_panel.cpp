@@ -4,7 +4,7 @@
 #include <QShowEvent>
 
 #include "common/angles.h"
-#include "widgets/number_format.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 
@@ -58,12 +58,12 @@ void JointsPanel::fill() {
     for (int row = 0; row < rowCount(); ++row) {
         const JointAnalysis& j = joints[static_cast<std::size_t>(row)];
         const QString cells[] = {QStringLiteral("%1 | %2").arg(j.left).arg(j.right),
-                                 formatFixed(radToDeg(j.phi), 4),
+                                 formatQuantityValue(DisplayQuantity::Angle, radToDeg(j.phi)),
                                  continuityName(j.continuity),
                                  continuityName(j.geometric),
-                                 formatNumber(j.tangentBreakDeg, 4),
-                                 formatNumber(j.jumpAR, 5),
-                                 formatNumber(j.relativeD2, 3)};
+                                 formatQuantityValue(DisplayQuantity::Angle, j.tangentBreakDeg),
+                                 formatQuantityValue(DisplayQuantity::Acceleration, j.jumpAR),
+                                 formatQuantityValue(DisplayQuantity::Ratio, j.relativeD2)};
         for (int c = 0; c < 7; ++c) {
             // The rows there are keep their items: an edit changes a few cells, if any.
             QTableWidgetItem* item = this->item(row, c);

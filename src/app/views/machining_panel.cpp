@@ -18,8 +18,8 @@
 #include "views/palette.h"
 #include "views/plot_data.h"
 #include "views/plot_redraw.h"
-#include "widgets/number_format.h"
 #include "widgets/number_spin_box.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 namespace {
@@ -242,25 +242,27 @@ void MachiningPanel::setOutcome(const TimingOutcomePtr& outcome) {
     for (int m = 0; m < 3; ++m) {
         const auto k = static_cast<std::size_t>(m);
         // A time whose refinement stopped short is an estimate, and shown as one.
-        const QString text = QStringLiteral("%1\n%2%3 s")
+        const QString text = QStringLiteral("%1\n%2%3")
                                  .arg(m_times[m]->property("name").toString(),
                                       outcome->converged[k] ? QString() : QStringLiteral("≈ "),
-                                      formatFixed(outcome->timesS[k], 4));
+                                      formatQuantity(DisplayQuantity::Time, outcome->timesS[k]));
         if (!outcome->converged[k]) {
             estimates << tr("%1 (relative error about %2)")
                              .arg(m_times[m]->property("name").toString(),
-                                  formatNumber(outcome->convergence[k], 2));
+                                  formatQuantity(DisplayQuantity::RelativeError,
+                                                 outcome->convergence[k]));
         }
         m_times[m]->setText(text);
         QFont f = m_times[m]->font();
         f.setBold(m == plotted);
         m_times[m]->setFont(f);
     }
-    m_status->setText(tr("Path %1 mm (contour offset by the tool radius); optimal plan on %2 "
-                         "grid points; computed in %3 ms")
-                          .arg(formatFixed(outcome->lengthMm, 2),
-                               formatNumber(static_cast<double>(outcome->gridPoints), 15),
-                               formatFixed(outcome->computeMs, 0)));
+    m_status->setText(
+        tr("Path %1 (contour offset by the tool radius); optimal plan on %2 "
+           "grid points; computed in %3")
+            .arg(formatQuantity(DisplayQuantity::Length, outcome->lengthMm),
+                 formatQuantity(DisplayQuantity::Count, static_cast<double>(outcome->gridPoints)),
+                 formatQuantity(DisplayQuantity::Duration, outcome->computeMs)));
     if (!estimates.isEmpty()) {
         m_status->setText(m_status->text() + "\n" +
                           tr("Not converged: the grid limit stopped the refinement first, so "

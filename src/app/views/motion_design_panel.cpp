@@ -12,6 +12,7 @@
 #include <QTableView>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <array>
 #include <cmath>
 
 #include "document/commands.h"
@@ -21,8 +22,8 @@
 #include "views/axis_format.h"
 #include "views/plot_data.h"
 #include "views/plot_redraw.h"
-#include "widgets/number_format.h"
 #include "widgets/number_spin_box.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 namespace {
@@ -38,7 +39,16 @@ NumberSpinBox* lengthBox(QWidget* parent, const char* name, const QString& tip) 
     return s;
 }
 
-QString number(double v) { return formatNumber(v, 3); }
+/// The quantities of the errors in lift, velocity and acceleration: a swinging arm's lift is
+/// its angle.
+std::array<DisplayQuantity, 3> liftErrorQuantities(bool swinging) {
+    if (swinging) {
+        return {DisplayQuantity::AngleError, DisplayQuantity::AngularVelocityError,
+                DisplayQuantity::AngularAccelerationError};
+    }
+    return {DisplayQuantity::LengthError, DisplayQuantity::VelocityError,
+            DisplayQuantity::AccelerationError};
+}
 
 /// The law: dashed; the follower riding the contour: solid (as on the kinematics plots).
 const QPen kLawPen(QColor(0, 130, 60), 1.6, Qt::DashLine);
@@ -304,18 +314,17 @@ void MotionDesignPanel::refresh() {
 }
 
 void MotionDesignPanel::setReport(const SynthesisReport& report, bool swinging) {
-    const QString lift = swinging ? QStringLiteral("°") : QStringLiteral(" mm");
-    const QString speed = swinging ? QStringLiteral(" °/s") : QStringLiteral(" mm/s");
-    const QString accel = swinging ? QStringLiteral(" °/s²") : QStringLiteral(" mm/s²");
-    m_reportText = tr("Last synthesis: %n segment(s), at most %1 mm from the exact profile. The "
-                      "follower on them against the law (%2 angles): lift %3%4, velocity %5%6, "
-                      "acceleration %7%8 (the arcs are only tangent-continuous: the "
+    const auto [lift, speed, accel] = liftErrorQuantities(swinging);
+    m_reportText = tr("Last synthesis: %n segment(s), at most %1 from the exact profile. The "
+                      "follower on them against the law (%2 angles): lift %3, velocity %4, "
+                      "acceleration %5 (the arcs are only tangent-continuous: the "
                       "acceleration jumps at their joints).",
                       nullptr, static_cast<int>(report.segments))
-                       .arg(number(report.maxDeviationMm))
+                       .arg(formatQuantity(DisplayQuantity::LengthError, report.maxDeviationMm))
                        .arg(static_cast<qulonglong>(report.checkedAngles))
-                       .arg(number(report.maxLiftError), lift, number(report.maxVelocityError),
-                            speed, number(report.maxAccelerationError), accel);
+                       .arg(formatQuantity(lift, report.maxLiftError),
+                            formatQuantity(speed, report.maxVelocityError),
+                            formatQuantity(accel, report.maxAccelerationError));
     m_report->setText(m_reportText);
 }
 
@@ -392,11 +401,13 @@ void MotionDesignPanel::setResult(const ComputeResultPtr& result) {
     }
     QStringList lines;
     if (!design->onContour[0].empty()) {
+        const std::array<DisplayQuantity, 3> errors = liftErrorQuantities(swinging);
         lines << tr("The follower on the contour as it is, against the law (%1 samples): lift "
-                    "%2 %3, velocity %4 %3/s, acceleration %5 %3/s².")
+                    "%2, velocity %3, acceleration %4.")
                      .arg(design->x.size() - 1)
-                     .arg(number(design->maxError[0]), unit, number(design->maxError[1]),
-                          number(design->maxError[2]));
+                     .arg(formatQuantity(errors[0], design->maxError[0]),
+                          formatQuantity(errors[1], design->maxError[1]),
+                          formatQuantity(errors[2], design->maxError[2]));
     } else if (!design->onContourErrors.empty()) {
         lines << tr("The follower cannot ride the contour: %1")
                      .arg(diagnosticText(design->onContourErrors.front()));

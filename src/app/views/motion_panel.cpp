@@ -10,8 +10,8 @@
 #include "common/angles.h"
 #include "document/commands.h"
 #include "models/delegates.h"
-#include "widgets/number_format.h"
 #include "widgets/number_spin_box.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 
@@ -81,9 +81,11 @@ void MotionPanel::refresh() {
                        !(m.unit == SpeedUnit::PeriodS && m.value < 0.0);
     if (valid) {
         const double omega = m.omegaRadS();
-        m_summary->setText(tr("ω = %1 rad/s · %2 rpm\nT = %3 s")
-                               .arg(formatNumber(omega, 6), formatNumber(omega * 60.0 / kTwoPi, 6),
-                                    formatNumber(kTwoPi / std::abs(omega), 6)));
+        m_summary->setText(
+            tr("ω = %1 · %2\nT = %3")
+                .arg(formatQuantity(DisplayQuantity::AngularSpeed, omega),
+                     formatQuantity(DisplayQuantity::RotationSpeed, omega * 60.0 / kTwoPi),
+                     formatQuantity(DisplayQuantity::Time, kTwoPi / std::abs(omega))));
     } else {
         m_summary->setText(tr("The speed must not be 0 (and a period must be positive)."));
     }

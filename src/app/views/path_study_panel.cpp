@@ -9,6 +9,7 @@
 #include "views/axis_format.h"
 #include "views/palette.h"
 #include "views/plot_redraw.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 
@@ -81,7 +82,7 @@ void PathStudyPanel::fill() {
                        "k runs from k to k + 1). Blue x, red y; lines analytic, circles the "
                        "difference quotients (step h = %1); at the bottom their difference, "
                        "solid for the first and dashed for the second derivative.")
-                        .arg(s.step));
+                        .arg(formatQuantityValue(DisplayQuantity::Ratio, s.step)));
     const QVector<double> t(s.t.begin(), s.t.end());
     auto vec = [](const std::vector<double>& v) { return QVector<double>(v.begin(), v.end()); };
     for (int p = 0; p < 3; ++p) {

@@ -2,14 +2,25 @@
 
 #include <QGridLayout>
 #include <QLabel>
-#include <QLocale>
 
 #include "common/angles.h"
-#include "widgets/number_format.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
+namespace {
+
+/// What each row of the readout shows, in its order.
+constexpr DisplayQuantity kReadoutQuantities[] = {
+    DisplayQuantity::Time,         DisplayQuantity::Angle,        DisplayQuantity::Count,
+    DisplayQuantity::Length,       DisplayQuantity::Velocity,     DisplayQuantity::Velocity,
+    DisplayQuantity::Velocity,     DisplayQuantity::Acceleration, DisplayQuantity::Acceleration,
+    DisplayQuantity::Acceleration, DisplayQuantity::Jerk,         DisplayQuantity::Jerk,
+    DisplayQuantity::Jerk};
+
+}  // namespace
 
 StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
+    static_assert(std::size(kReadoutQuantities) == kRows);
     auto* grid = new QGridLayout(this);
     grid->setVerticalSpacing(2);
     const QString names[kRows] = {tr("t"),   tr("φ"),   tr("segment"), tr("r"),   tr("v_r"),
@@ -20,7 +31,11 @@ StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
         m_values[i] = new QLabel(QStringLiteral("—"), this);
         m_values[i]->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
         m_values[i]->setTextInteractionFlags(Qt::TextSelectableByMouse);
-        m_values[i]->setMinimumWidth(fontMetrics().horizontalAdvance("-0000000.000 mm/s²"));
+        // The widest value short of an exponent or of 10¹¹: negative, below 1 with three zeros
+        // after the point and all of its digits ("-0.0008888889 mm"); a wider one widens the
+        // column.
+        m_values[i]->setMinimumWidth(fontMetrics().horizontalAdvance(
+            formatQuantity(kReadoutQuantities[i], -8.888888888888e-4)));
         grid->addWidget(m_names[i], i, 0);
         grid->addWidget(m_values[i], i, 1);
     }
@@ -29,19 +44,16 @@ StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
 }
 
 void StateReadout::setState(const KinematicState& s) {
-    auto num = [&](double v, const QString& unit) {
-        return formatNumber(v, 8) + QStringLiteral(" ") + unit;
-    };
     const PolarMotion& m = s.motion;
     // Where on the cam, 0 … 360°, whichever way it turns (s.phi = ω·t is negative clockwise).
     double phiDeg = mod360(radToDeg(s.phi));
     if (phiDeg >= 360.0) phiDeg = 0.0;  // −1e-17 reduces to 360 in floating point
-    const QString values[kRows] = {
-        num(s.t, "s"),        num(phiDeg, "°"),    QString::number(s.segment), num(s.polar.r, "mm"),
-        num(m.vR, "mm/s"),    num(m.vPhi, "mm/s"), num(m.v, "mm/s"),           num(m.aR, "mm/s²"),
-        num(m.aPhi, "mm/s²"), num(m.a, "mm/s²"),   num(m.jR, "mm/s³"),         num(m.jPhi, "mm/s³"),
-        num(m.j, "mm/s³")};
-    for (int i = 0; i < kRows; ++i) m_values[i]->setText(values[i]);
+    const auto segment = static_cast<double>(s.segment);
+    const double values[kRows] = {s.t,  phiDeg, segment, s.polar.r, m.vR,   m.vPhi, m.v,
+                                  m.aR, m.aPhi, m.a,     m.jR,      m.jPhi, m.j};
+    for (int i = 0; i < kRows; ++i) {
+        m_values[i]->setText(formatQuantity(kReadoutQuantities[i], values[i]));
+    }
 }
 
 void StateReadout::clear() {

@@ -20,15 +20,17 @@ double cleaned(double value) {
 }  // namespace
 
 QString formatNumber(double value, int significant) {
-    return displayLocale().toString(cleaned(value), 'g', significant);
-}
-
-QString formatFixed(double value, int decimals) {
-    const QString text = displayLocale().toString(cleaned(value), 'f', decimals);
-    // -0.0004 with three decimals is "-0.000": the sign of a value that rounds to 0 goes.
     const QLocale locale = displayLocale();
-    const QString zero = locale.toString(0.0, 'f', decimals);
-    return text.mid(1) == zero && text.startsWith(locale.negativeSign()) ? zero : text;
+    if (std::isinf(value)) return value > 0 ? QStringLiteral("∞") : locale.negativeSign() + "∞";
+    const double v = cleaned(value);
+    if (std::isfinite(v) && std::abs(v) >= 1.0) {
+        // Rounded first, as %g rounds: 999999.7 to 6 digits is 1000000, which %g writes 1E+06.
+        const double rounded = QString::number(v, 'e', significant - 1).toDouble();
+        if (std::abs(rounded) >= std::pow(10.0, significant)) {
+            return locale.toString(rounded, 'f', 0);
+        }
+    }
+    return locale.toString(v, 'g', significant);
 }
 
 }  // namespace cam

@@ -5,6 +5,8 @@
 
 #include <QDoubleSpinBox>
 
+#include "widgets/quantity_format.h"
+
 namespace cam {
 
 /// @brief A spin box for doubles that keeps the exact value.
@@ -22,7 +24,7 @@ class NumberSpinBox : public QDoubleSpinBox {
 public:
     explicit NumberSpinBox(QWidget* parent = nullptr);
 
-    /// @brief How many significant digits the text shows (default 10).
+    /// @brief How many significant digits the text shows (default: the table's Input, 10).
     void setSignificantDigits(int digits);
     [[nodiscard]] int significantDigits() const { return m_digits; }
 
@@ -42,7 +44,7 @@ public:
 private:
     [[nodiscard]] QString stripped(const QString& text) const;
 
-    int m_digits = 10;
+    int m_digits = quantityFormat(DisplayQuantity::Input).significant;
 };
 
 }  // namespace cam
