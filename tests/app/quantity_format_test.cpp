@@ -35,8 +35,8 @@ struct ShownLanguage {
     Translations translations;
 };
 
-const QLocale kEnglish(QLocale::English, QLocale::UnitedStates);
-const QLocale kGerman(QLocale::German, QLocale::Germany);
+const QLocale kEnglishQuantities(QLocale::English, QLocale::UnitedStates);
+const QLocale kGermanQuantities(QLocale::German, QLocale::Germany);
 
 /// The significant digits of a number as shown ("-0.001230" has 4; "407473000" has 9).
 int significantDigits(const QString& number) {
@@ -77,7 +77,7 @@ TEST(QuantityFormat, EveryQuantityHasItsDigitsAndAUnitUnlessItIsAPureNumber) {
 }
 
 TEST(QuantityFormat, EnglishStringsByTheRule) {
-    const ShownLanguage english(kEnglish);
+    const ShownLanguage english(kEnglishQuantities);
     EXPECT_EQ(formatQuantity(Q::Length, 123.456789), "123.4568 mm");
     EXPECT_EQ(formatQuantity(Q::Length, -25.737525423), "-25.73753 mm");
     EXPECT_EQ(formatQuantity(Q::Length, 1e-15), "0 mm");  // round-off of an exact 0
@@ -120,7 +120,7 @@ TEST(QuantityFormat, EnglishStringsByTheRule) {
 }
 
 TEST(QuantityFormat, GermanStringsByTheRule) {
-    const ShownLanguage german(kGerman);
+    const ShownLanguage german(kGermanQuantities);
     ASSERT_TRUE(german.translations.appTranslated());
     EXPECT_EQ(formatQuantity(Q::Length, 123.456789), "123,4568 mm");
     EXPECT_EQ(formatQuantity(Q::Length, 1e-15), "0 mm");
@@ -181,7 +181,7 @@ TEST(QuantityFormat, TheReadoutShowsEachRowWithItsQuantitysDigitsAndUnit) {
 TEST(QuantityFormat, TheWindowReadsTheSixLobeCamWithTheTablesDigits) {
     // math.md §3: at t = 0.05 s r = 26.218824198 mm, v_φ = 411.844327435 mm/s,
     // a_r = -40298.5214382 mm/s²; the joint between lobe 0 and notch 1 at 9.691410798731°.
-    const ShownLanguage english(kEnglish);
+    const ShownLanguage english(kEnglishQuantities);
     MainWindow window;
     ASSERT_TRUE(window.loadFile(test::kExampleFile).isEmpty());
     window.show();
@@ -210,7 +210,7 @@ TEST(QuantityFormat, TheFollowerChecksShowAnglesAndRadiiWithTheTablesDigits) {
     // 37.945095446524455° at 73.63043015917653°, limit 40°; the smallest radius of curvature
     // of the profile 5.999999999999989 mm at 90.16466528734792°, of the pitch curve
     // 10.99999999999999 mm there.
-    const ShownLanguage english(kEnglish);
+    const ShownLanguage english(kEnglishQuantities);
     MainWindow window;
     ASSERT_TRUE(
         window.loadFile(QString::fromStdString(test::examplePath("roller-lobe-cam.cam.json")))
