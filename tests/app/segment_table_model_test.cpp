@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <QAbstractItemModelTester>
+#include <set>
 
 #include "app_test_support.h"
 #include "common/angles.h"
@@ -116,6 +117,30 @@ TEST_F(SegmentTableModelTest, AWindowGapMarksBothNeighbouringCells) {
     model.setData(cell(2, SegmentTableModel::PhiStart), 51.0, Qt::EditRole);
     EXPECT_FALSE(model.problemsAt(1, SegmentTableModel::PhiEnd).isEmpty());
     EXPECT_FALSE(model.problemsAt(2, SegmentTableModel::PhiStart).isEmpty());
+}
+
+TEST_F(SegmentTableModelTest, AnEditRefreshesItsRowAndTheRowsWhoseProblemsChangedOnly) {
+    // The rows each edit announces as changed (the view repaints exactly those).
+    std::set<int> announced;
+    QObject::connect(&model, &QAbstractItemModel::dataChanged,
+                     [&](const QModelIndex& topLeft, const QModelIndex& bottomRight) {
+                         for (int row = topLeft.row(); row <= bottomRight.row(); ++row)
+                             announced.insert(row);
+                     });
+    // Row 0 from arc to line, through its end points: every joint still meets, and no cell
+    // of another row gains or loses a mark, so its row alone.
+    model.setData(cell(0, SegmentTableModel::Type), 1, Qt::EditRole);
+    ASSERT_TRUE(document.isValid());
+    EXPECT_EQ(announced, (std::set<int>{0}));
+    // A window gap between rows 1 and 2: row 2 (edited) and row 1 (its end now marked).
+    announced.clear();
+    model.setData(cell(2, SegmentTableModel::PhiStart), 51.0, Qt::EditRole);
+    EXPECT_EQ(announced, (std::set<int>{1, 2}));
+    // Undone: the same two rows lose their marks.
+    announced.clear();
+    stack().undo();
+    EXPECT_EQ(announced, (std::set<int>{1, 2}));
+    EXPECT_TRUE(model.problemsAt(1, SegmentTableModel::PhiEnd).isEmpty());
 }
 
 TEST_F(SegmentTableModelTest, InsertRemoveMoveAreUndoable) {
