@@ -163,6 +163,8 @@ private:
     void report(const EditOutcome& outcome, const QString& title = {});
     void requestCompute();
     void showResult(const ComputeResultPtr& result);
+    /// The views beside the plots: contour, Joints tab, path study, motion design.
+    void showBesidePlots(const ComputeResultPtr& result);
     void updateStatus();
     void updateTitle();
     int selectedRow() const;

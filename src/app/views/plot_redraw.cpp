@@ -3,6 +3,8 @@
 #include <QCoreApplication>
 #include <QPointer>
 #include <deque>
+#include <utility>
+#include <vector>
 
 namespace cam {
 namespace {
@@ -11,6 +13,8 @@ namespace {
 /// next one (GUI thread only).
 struct ReplotQueue {
     std::deque<QPointer<QCustomPlot>> plots;
+    /// What waits for the plots (whenReplotsDone), oldest first.
+    std::vector<std::pair<QPointer<QObject>, std::function<void()>>> then;
     bool posted = false;
 };
 
@@ -19,17 +23,28 @@ ReplotQueue& replotQueue() {
     return queue;
 }
 
+/// Calls what waits for the plots; what they queue (a contour view's replot) comes after.
+void runWaiting(ReplotQueue& queue) {
+    auto waiting = std::exchange(queue.then, {});
+    for (auto& [context, then] : waiting) {
+        if (context) then();
+    }
+}
+
 void replotNext() {
     ReplotQueue& queue = replotQueue();
     queue.posted = false;
-    while (!queue.plots.empty()) {
+    bool replotted = false;
+    while (!queue.plots.empty() && !replotted) {
         const QPointer<QCustomPlot> plot = queue.plots.front();
         queue.plots.pop_front();
         if (!plot) continue;  // closed meanwhile
         plot->replot();
-        break;
+        replotted = true;
     }
-    if (!queue.plots.empty() && !queue.posted) {
+    // The waiting calls get a pass of their own, after the last replot's.
+    if (!replotted && queue.plots.empty()) runWaiting(queue);
+    if ((!queue.plots.empty() || !queue.then.empty()) && !queue.posted) {
         // Posted while this pass runs: Qt delivers it in the next one, after input and timers.
         queue.posted = true;
         QMetaObject::invokeMethod(QCoreApplication::instance(), replotNext, Qt::QueuedConnection);
@@ -56,12 +71,24 @@ void queueReplot(QCustomPlot* plot) {
     }
 }
 
+void whenReplotsDone(QObject* context, std::function<void()> then) {
+    ReplotQueue& queue = replotQueue();
+    queue.then.emplace_back(context, std::move(then));
+    if (!queue.posted) {
+        queue.posted = true;
+        QMetaObject::invokeMethod(QCoreApplication::instance(), replotNext, Qt::QueuedConnection);
+    }
+}
+
 void replotQueuedNow() {
     ReplotQueue& queue = replotQueue();
-    while (!queue.plots.empty()) {
-        const QPointer<QCustomPlot> plot = queue.plots.front();
-        queue.plots.pop_front();
-        if (plot) plot->replot();
+    while (!queue.plots.empty() || !queue.then.empty()) {
+        while (!queue.plots.empty()) {
+            const QPointer<QCustomPlot> plot = queue.plots.front();
+            queue.plots.pop_front();
+            if (plot) plot->replot();
+        }
+        runWaiting(queue);
     }
 }
 

@@ -6,6 +6,8 @@
 
 #include <qcustomplot.h>
 
+#include <functional>
+
 namespace cam {
 
 /// @brief Queues a full replot of `plot`. Plots queued together are replotted one per pass of
@@ -15,7 +17,14 @@ namespace cam {
 /// A plot already waiting is not queued again.
 void queueReplot(QCustomPlot* plot);
 
-/// @brief Replots every plot queueReplot() holds, now (before a picture is taken of them).
+/// @brief Calls `then` (unless `context` is gone by then) in a pass of the event loop of its own
+/// once every plot queued so far has been replotted: what the window shows beside its plots
+/// (the readout, the contour view, the Joints tab) waits for them, so that an edit's plots are
+/// not delayed by painting the rest. Calls made while plots are queued run in the order made.
+void whenReplotsDone(QObject* context, std::function<void()> then);
+
+/// @brief Replots every plot queueReplot() holds, and calls what whenReplotsDone() holds, now
+/// (before a picture is taken of them, or a test reads them).
 void replotQueuedNow();
 
 /// @brief Whether `plot` waits for a replot queued by queueReplot() or by QCustomPlot itself.

@@ -1,0 +1,111 @@
+// Plots replot one per pass of the event loop; what waits for them (whenReplotsDone) comes
+// after the last, and an edit's plots are drawn before the rest of the window takes its result.
+
+#include <gtest/gtest.h>
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QStringList>
+#include <memory>
+
+#include "app_test_support.h"
+#include "mainwindow.h"
+#include "models/segment_table_model.h"
+#include "views/contour_view.h"
+#include "views/kinematics_plots.h"
+#include "views/plot_redraw.h"
+#include "views/state_readout.h"
+
+#include <qcustomplot.h>
+
+namespace cam {
+namespace {
+
+/// Processes events until `done` or two seconds passed.
+template <typename Done>
+void processUntil(Done done) {
+    QElapsedTimer clock;
+    clock.start();
+    while (!done() && clock.elapsed() < 2000) QCoreApplication::processEvents();
+}
+
+/// Lets QCustomPlot's own first replots happen before a test counts any.
+void settle() {
+    for (int i = 0; i < 3; ++i) QCoreApplication::processEvents();
+}
+
+TEST(PlotRedraw, WhatWaitsForThePlotsComesAfterTheLastOfThemInOrder) {
+    QCustomPlot a, b;
+    settle();
+    QStringList events;
+    QObject::connect(&a, &QCustomPlot::afterReplot, [&] { events << "a"; });
+    QObject::connect(&b, &QCustomPlot::afterReplot, [&] { events << "b"; });
+    QObject context;
+    queueReplot(&a);
+    queueReplot(&b);
+    whenReplotsDone(&context, [&] { events << "first"; });
+    whenReplotsDone(&context, [&] { events << "second"; });
+    // Nothing yet: all of it waits for the event loop.
+    EXPECT_TRUE(events.isEmpty());
+    processUntil([&] { return events.size() == 4; });
+    EXPECT_EQ(events, (QStringList{"a", "b", "first", "second"}));
+}
+
+TEST(PlotRedraw, AGoneContextIsNotCalledAndReplotQueuedNowCallsTheRest) {
+    QCustomPlot a;
+    settle();
+    QStringList events;
+    QObject::connect(&a, &QCustomPlot::afterReplot, [&] { events << "a"; });
+    auto gone = std::make_unique<QObject>();
+    QObject kept;
+    queueReplot(&a);
+    whenReplotsDone(gone.get(), [&] { events << "gone"; });
+    whenReplotsDone(&kept, [&] { events << "kept"; });
+    gone.reset();
+    replotQueuedNow();  // at once, without the event loop
+    EXPECT_EQ(events, (QStringList{"a", "kept"}));
+    QCoreApplication::processEvents();  // the pass posted meanwhile finds nothing left
+    EXPECT_EQ(events, (QStringList{"a", "kept"}));
+}
+
+TEST(PlotRedraw, AnEditsPlotsAreDrawnBeforeTheReadoutAndTheContourViewTakeItsResult) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(test::kExampleFile).isEmpty());
+    window.resize(1400, 860);
+    window.show();
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    window.setCursorTime(0.001);  // on segment 0, which the edit turns into a line
+    const QString readoutBefore = window.readout()->text();
+    std::vector<QCustomPlot*> plots;
+    for (int p = 0; p < KinematicsPlots::kPlotCount; ++p) plots.push_back(window.plots()->plot(p));
+    // When the last kinematics plot has replotted with the edit's result: the readout and the
+    // contour view still show the previous one.
+    int replotted = 0;
+    QString readoutThen;
+    int contourReplotsThen = -1;
+    int contourReplots = 0;
+    bool edited = false;
+    QObject::connect(window.contourView(), &QCustomPlot::afterReplot, [&] { ++contourReplots; });
+    for (QCustomPlot* plot : plots) {
+        QObject::connect(plot, &QCustomPlot::afterReplot, [&] {
+            if (edited && ++replotted == static_cast<int>(plots.size())) {
+                readoutThen = window.readout()->text();
+                contourReplotsThen = contourReplots;
+            }
+        });
+    }
+    edited = true;
+    window.tableModel()->setData(window.tableModel()->index(0, SegmentTableModel::Type), 1,
+                                 Qt::EditRole);
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    processUntil([&] { return window.readout()->text() != readoutBefore; });
+    ASSERT_EQ(replotted, static_cast<int>(plots.size()));
+    EXPECT_EQ(readoutThen, readoutBefore);
+    EXPECT_EQ(contourReplotsThen, 0);
+    // And then they do: the readout reads the line, the contour view is redrawn.
+    EXPECT_NE(window.readout()->text(), readoutBefore);
+    EXPECT_GE(contourReplots, 1);
+}
+
+}  // namespace
+}  // namespace cam
