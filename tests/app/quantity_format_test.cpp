@@ -6,9 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <QCoreApplication>
 #include <QDockWidget>
+#include <QEvent>
 #include <QLabel>
 #include <QLocale>
+#include <QVBoxLayout>
 #include <limits>
 
 #include "app_test_support.h"
@@ -176,6 +179,45 @@ TEST(QuantityFormat, TheReadoutShowsEachRowWithItsQuantitysDigitsAndUnit) {
         if (value->text() != widest) continue;
         EXPECT_GE(value->minimumWidth(), value->fontMetrics().horizontalAdvance(widest));
     }
+}
+
+TEST(QuantityFormat, ANewStateAsksForNoLayoutPassAndAWiderValueWidensItsLabel) {
+    const ShownLanguage english(kEnglishQuantities);
+    QWidget dock;
+    auto* readout = new StateReadout(&dock);
+    auto* layout = new QVBoxLayout(&dock);
+    layout->addWidget(readout);
+    dock.show();
+    QCoreApplication::processEvents();
+    // Layout passes the readout asks for while states come in (one per edit and cursor move).
+    struct LayoutRequests : QObject {
+        int count = 0;
+        bool eventFilter(QObject*, QEvent* event) override {
+            if (event->type() == QEvent::LayoutRequest) ++count;
+            return false;
+        }
+    } requests;
+    readout->installEventFilter(&requests);
+    KinematicState s;
+    for (int k = 0; k < 20; ++k) {
+        s.t = 0.001 * k;
+        s.polar.r = 20.0 + 0.37 * k;
+        s.motion = PolarMotion{-369.1 * k, 411.8, 553.06, -40298.5 * k, -11597.1,
+                               41934.0,    4.07e8,      -1.5e3 * k,    1.2e9};
+        readout->setState(s);
+        QCoreApplication::processEvents();
+    }
+    EXPECT_EQ(requests.count, 0);
+    // A value wider than any the column was made for: its label widens, nothing is cut off.
+    s.motion.j = -1.234567e15;
+    readout->setState(s);
+    QCoreApplication::processEvents();
+    for (const QLabel* value : readout->findChildren<QLabel*>()) {
+        EXPECT_GE(value->width(), value->fontMetrics().horizontalAdvance(value->text()))
+            << value->text().toStdString();
+    }
+    EXPECT_TRUE(readout->text().endsWith("|j| -1234570000000000 mm/s³"))
+        << readout->text().toStdString();
 }
 
 TEST(QuantityFormat, TheWindowReadsTheSixLobeCamWithTheTablesDigits) {

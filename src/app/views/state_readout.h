@@ -21,6 +21,8 @@ public:
     [[nodiscard]] QString text() const;
 
 private:
+    /// Shows `text` in the value label of `row`, widening it first if the text needs more room.
+    void showValue(int row, const QString& text);
     static constexpr int kRows = 13;
     std::array<QLabel*, kRows> m_names{};
     std::array<QLabel*, kRows> m_values{};
