@@ -39,7 +39,7 @@ StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
                                       kReadoutQuantities[i], -8.888888888888e-4)),
                                   m_values[i]->sizeHint().height());
         grid->addWidget(m_names[i], i, 0);
-        grid->addWidget(m_values[i], i, 1);
+        grid->addWidget(m_values[i], i, 1, Qt::AlignRight);
     }
     grid->setRowStretch(kRows, 1);
     setToolTip(tr("State of the follower at the cursor: move the mouse over a plot"));
