@@ -24,9 +24,7 @@ namespace {
 
 #if defined(__linux__)
 
-int niceOfThisThread() {
-    return getpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)));
-}
+int niceOfThisThread() { return getpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid))); }
 
 /// The nice value of this process's thread named `name` (its first 15 characters), from
 /// /proc/self/task/*/stat: field 19, counted after the name in parentheses.

@@ -202,8 +202,8 @@ TEST(QuantityFormat, ANewStateAsksForNoLayoutPassAndAWiderValueWidensItsLabel) {
     for (int k = 0; k < 20; ++k) {
         s.t = 0.001 * k;
         s.polar.r = 20.0 + 0.37 * k;
-        s.motion = PolarMotion{-369.1 * k, 411.8, 553.06, -40298.5 * k, -11597.1,
-                               41934.0,    4.07e8,      -1.5e3 * k,    1.2e9};
+        s.motion = PolarMotion{-369.1 * k, 411.8,  553.06,     -40298.5 * k, -11597.1,
+                               41934.0,    4.07e8, -1.5e3 * k, 1.2e9};
         readout->setState(s);
         QCoreApplication::processEvents();
     }

@@ -22,8 +22,8 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QElapsedTimer>
-#include <QFile>
 #include <QEventLoop>
+#include <QFile>
 #include <QMouseEvent>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -99,9 +99,10 @@ double timeOneEdit(cam::MainWindow& window, const std::vector<QCustomPlot*>& vie
     std::vector<qint64> redrawnAt(views.size(), -1);
     std::vector<QMetaObject::Connection> connections;
     const std::uint64_t before = window.engine()->latestGeneration();
-    connections.push_back(QObject::connect(
-        &window, &cam::MainWindow::resultShown,
-        [&](const cam::ComputeResultPtr& result) { shown = shown || result->generation > before; }));
+    connections.push_back(QObject::connect(&window, &cam::MainWindow::resultShown,
+                                           [&](const cam::ComputeResultPtr& result) {
+                                               shown = shown || result->generation > before;
+                                           }));
     // Waits as the window does, asleep between events: a busy loop here took a core from the
     // engine's pool and slowed every edit it timed.
     QEventLoop loop;

@@ -8,9 +8,9 @@
 #include <cmath>
 
 #include "common/angles.h"
-#include "engine/background_priority.h"
 #include "design/exact_profile.h"
 #include "design/motion_design.h"
+#include "engine/background_priority.h"
 #include "engine/plot_data_preparer.h"
 #include "follower/follower_turn.h"
 #include "geometry/planar.h"

@@ -25,9 +25,9 @@ bool SynthesisRunner::start(const Project& project, double tolerance) {
     if (m_watcher.isRunning()) return false;
     m_project = std::make_shared<const Project>(project);
     m_cancel = std::make_shared<std::atomic<bool>>(false);
-    m_watcher.setFuture(QtConcurrent::run(
-        [project = m_project, cancel = m_cancel,
-         tolerance]() -> std::shared_ptr<const Result<Synthesis>> {
+    m_watcher.setFuture(
+        QtConcurrent::run([project = m_project, cancel = m_cancel,
+                           tolerance]() -> std::shared_ptr<const Result<Synthesis>> {
             runInTheBackground();
             try {
                 auto made = synthesize(*project, tolerance, false, cancel.get());

@@ -35,8 +35,8 @@ StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
         // after the point and all of its digits ("-0.0008888889 mm"); a wider one widens the
         // column (showValue()). A fixed size: a new text asks for no layout pass (0.5 ms for the
         // readout's thirteen labels on every edit and cursor move).
-        m_values[i]->setFixedSize(fontMetrics().horizontalAdvance(formatQuantity(
-                                      kReadoutQuantities[i], -8.888888888888e-4)),
+        m_values[i]->setFixedSize(fontMetrics().horizontalAdvance(
+                                      formatQuantity(kReadoutQuantities[i], -8.888888888888e-4)),
                                   m_values[i]->sizeHint().height());
         grid->addWidget(m_names[i], i, 0);
         grid->addWidget(m_values[i], i, 1, Qt::AlignRight);
