@@ -907,6 +907,7 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
         return;
     }
     m_busyTimer->stop();
+    m_handedGeneration = result->generation;
     // The views keep what they drew from the last computable result and mark it out of date.
     // The plots first: each view's redraw is queued, and they are drawn in this order.
     m_plots->setResult(result);
@@ -934,10 +935,13 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
     // The rest of the window (the contour view, the Joints tab, the readout, the status bar)
     // follows once the plots are drawn, so that painting it never delays them: it took 1.5 to
     // 2 ms of an edit's redraw. By then it takes the newest result of this request (a first
-    // picture may have been refined meanwhile); a newer request's result has its own turn.
+    // picture may have been refined meanwhile); a newer request's result, computable or not,
+    // has its own turn, and this one is then never shown there.
     whenReplotsDone(this, [this, generation = result->generation, samples = result->sampleCount,
                            ms = result->computeMs] {
-        if (!m_shown || m_shown->generation != generation) return;
+        if (m_handedGeneration != generation || !m_shown || m_shown->generation != generation) {
+            return;
+        }
         showBesidePlots(m_shown);
         m_computeLabel->setStyleSheet({});
         setCursorTime(m_cursorT);

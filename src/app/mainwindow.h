@@ -222,6 +222,9 @@ private:
     bool m_synthesisInteractive = false;
     double m_cursorT = 0.0;
     ComputeResultPtr m_shown;  ///< the last result that could be computed: what the views draw
+    /// The request of the last result handed to the views (computable or not; its refinement
+    /// has the same).
+    std::uint64_t m_handedGeneration = 0;
 };
 
 }  // namespace cam

@@ -5,10 +5,13 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QLabel>
 #include <QStringList>
 #include <memory>
 
 #include "app_test_support.h"
+#include "engine/compute_engine.h"
+#include "engine/compute_result.h"
 #include "mainwindow.h"
 #include "models/segment_table_model.h"
 #include "views/contour_view.h"
@@ -66,6 +69,60 @@ TEST(PlotRedraw, AGoneContextIsNotCalledAndReplotQueuedNowCallsTheRest) {
     EXPECT_EQ(events, (QStringList{"a", "kept"}));
     QCoreApplication::processEvents();  // the pass posted meanwhile finds nothing left
     EXPECT_EQ(events, (QStringList{"a", "kept"}));
+}
+
+TEST(PlotRedraw, PlotsQueuedLaterNeverHoldBackWhatWaitsForEarlierOnes) {
+    QCustomPlot a, b;
+    settle();
+    QStringList events;
+    int bReplots = 0;
+    // b is queued again after each of its replots, ten times: a stream of replots, as while
+    // edits stream in.
+    QObject::connect(&a, &QCustomPlot::afterReplot, [&] {
+        events << "a";
+        queueReplot(&b);
+    });
+    QObject::connect(&b, &QCustomPlot::afterReplot, [&] {
+        events << "b";
+        if (++bReplots < 10) queueReplot(&b);
+    });
+    QObject context;
+    queueReplot(&a);
+    whenReplotsDone(&context, [&] { events << "waited for a"; });
+    processUntil([&] { return bReplots == 10; });
+    ASSERT_GE(events.size(), 3);
+    EXPECT_EQ(events.mid(0, 3), (QStringList{"a", "waited for a", "b"}));
+}
+
+TEST(PlotRedraw, AResultThatCannotBeComputedIsNotOverwrittenByTheOneBefore) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(test::kExampleFile).isEmpty());
+    window.show();
+    ASSERT_TRUE(window.waitForCurrentResult(10000));
+    // As soon as an edit's result reaches the plots (the rest of the window still waiting for
+    // them), a newer request's result arrives that could not be computed.
+    bool failedSent = false;
+    QObject::connect(&window, &MainWindow::resultShown, [&](const ComputeResultPtr& shown) {
+        if (failedSent || !shown->ok()) return;
+        failedSent = true;
+        ComputeRequest newer;
+        newer.generation = shown->generation + 1;
+        newer.project = shown->project;
+        emit window.engine()->resultReady(failedResult(newer, "the test's failure"));
+    });
+    window.tableModel()->setData(window.tableModel()->index(0, SegmentTableModel::Type), 1,
+                                 Qt::EditRole);
+    processUntil([&] { return failedSent; });
+    ASSERT_TRUE(failedSent);
+    replotQueuedNow();
+    for (int i = 0; i < 5; ++i) QCoreApplication::processEvents();
+    // The window says what the newest result says: not computed, no state at the cursor.
+    const auto* computeLabel = window.findChild<QLabel*>("computeLabel");
+    ASSERT_TRUE(computeLabel);
+    EXPECT_TRUE(computeLabel->text().contains("not computed"))
+        << computeLabel->text().toStdString();
+    EXPECT_TRUE(window.readout()->text().startsWith("t —"))
+        << window.readout()->text().toStdString();
 }
 
 TEST(PlotRedraw, AnEditsPlotsAreDrawnBeforeTheReadoutAndTheContourViewTakeItsResult) {

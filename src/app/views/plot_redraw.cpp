@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QPointer>
+#include <cstdint>
 #include <deque>
 #include <utility>
 #include <vector>
@@ -9,13 +10,59 @@
 namespace cam {
 namespace {
 
-/// The plots waiting for queueReplot(), oldest first, and whether a pass is posted to take the
-/// next one (GUI thread only).
+/// The plots waiting for queueReplot(), oldest first, what waits for them (whenReplotsDone),
+/// and whether a pass is posted to take the next one (GUI thread only). Each queued plot gets
+/// the next number; a waiting call waits for the number of the last plot queued before it.
 struct ReplotQueue {
-    std::deque<QPointer<QCustomPlot>> plots;
-    /// What waits for the plots (whenReplotsDone), oldest first.
-    std::vector<std::pair<QPointer<QObject>, std::function<void()>>> then;
+    struct Plot {
+        QPointer<QCustomPlot> plot;
+        std::uint64_t number;
+    };
+    struct Waiting {
+        QPointer<QObject> context;
+        std::function<void()> then;
+        std::uint64_t after;  ///< runs once the plot of this number is done
+    };
+    std::deque<Plot> plots;
+    std::deque<Waiting> then;
+    std::uint64_t queued = 0;  ///< the number of the last plot queued
+    std::uint64_t done = 0;    ///< the number of the last plot replotted (or closed)
     bool posted = false;
+
+    [[nodiscard]] bool waitingReady() const { return !then.empty() && then.front().after <= done; }
+    void post() {
+        if (posted) return;
+        // Posted while a pass runs: Qt delivers it in the next one, after input and timers.
+        posted = true;
+        QMetaObject::invokeMethod(QCoreApplication::instance(), replotNext, Qt::QueuedConnection);
+    }
+    /// Calls what waits for plots already done; what they queue (a contour view's replot)
+    /// comes after.
+    void runReady() {
+        std::vector<Waiting> ready;
+        while (waitingReady()) {
+            ready.push_back(std::move(then.front()));
+            then.pop_front();
+        }
+        for (Waiting& w : ready) {
+            if (w.context) w.then();
+        }
+    }
+    /// Replots the next plot still open; false if none is left.
+    bool replotOne() {
+        while (!plots.empty()) {
+            const Plot next = plots.front();
+            plots.pop_front();
+            done = next.number;
+            if (next.plot) {
+                next.plot->replot();
+                return true;
+            }
+        }
+        return false;
+    }
+
+    static void replotNext();
 };
 
 ReplotQueue& replotQueue() {
@@ -23,32 +70,17 @@ ReplotQueue& replotQueue() {
     return queue;
 }
 
-/// Calls what waits for the plots; what they queue (a contour view's replot) comes after.
-void runWaiting(ReplotQueue& queue) {
-    auto waiting = std::exchange(queue.then, {});
-    for (auto& [context, then] : waiting) {
-        if (context) then();
-    }
-}
-
-void replotNext() {
+/// One pass: what waits for plots already done, in a pass of its own (so that a stream of new
+/// replots never holds it back), else the next plot.
+void ReplotQueue::replotNext() {
     ReplotQueue& queue = replotQueue();
     queue.posted = false;
-    bool replotted = false;
-    while (!queue.plots.empty() && !replotted) {
-        const QPointer<QCustomPlot> plot = queue.plots.front();
-        queue.plots.pop_front();
-        if (!plot) continue;  // closed meanwhile
-        plot->replot();
-        replotted = true;
+    if (queue.waitingReady()) {
+        queue.runReady();
+    } else {
+        queue.replotOne();
     }
-    // The waiting calls get a pass of their own, after the last replot's.
-    if (!replotted && queue.plots.empty()) runWaiting(queue);
-    if ((!queue.plots.empty() || !queue.then.empty()) && !queue.posted) {
-        // Posted while this pass runs: Qt delivers it in the next one, after input and timers.
-        queue.posted = true;
-        QMetaObject::invokeMethod(QCoreApplication::instance(), replotNext, Qt::QueuedConnection);
-    }
+    if (!queue.plots.empty() || !queue.then.empty()) queue.post();
 }
 
 /// QCustomPlot's protected members, read through member pointers of a subclass.
@@ -61,41 +93,32 @@ struct PlotAccess : QCustomPlot {
 
 void queueReplot(QCustomPlot* plot) {
     ReplotQueue& queue = replotQueue();
-    for (const QPointer<QCustomPlot>& p : queue.plots) {
-        if (p == plot) return;
+    for (const ReplotQueue::Plot& p : queue.plots) {
+        if (p.plot == plot) return;
     }
-    queue.plots.emplace_back(plot);
-    if (!queue.posted) {
-        queue.posted = true;
-        QMetaObject::invokeMethod(QCoreApplication::instance(), replotNext, Qt::QueuedConnection);
-    }
+    queue.plots.push_back({plot, ++queue.queued});
+    queue.post();
 }
 
 void whenReplotsDone(QObject* context, std::function<void()> then) {
     ReplotQueue& queue = replotQueue();
-    queue.then.emplace_back(context, std::move(then));
-    if (!queue.posted) {
-        queue.posted = true;
-        QMetaObject::invokeMethod(QCoreApplication::instance(), replotNext, Qt::QueuedConnection);
-    }
+    queue.then.push_back({context, std::move(then), queue.queued});
+    queue.post();
 }
 
 void replotQueuedNow() {
     ReplotQueue& queue = replotQueue();
     while (!queue.plots.empty() || !queue.then.empty()) {
-        while (!queue.plots.empty()) {
-            const QPointer<QCustomPlot> plot = queue.plots.front();
-            queue.plots.pop_front();
-            if (plot) plot->replot();
+        while (queue.replotOne()) {
         }
-        runWaiting(queue);
+        queue.runReady();
     }
 }
 
 bool isReplotQueued(QCustomPlot* plot) {
     if (plot->*(&PlotAccess::mReplotQueued)) return true;
-    for (const QPointer<QCustomPlot>& p : replotQueue().plots) {
-        if (p == plot) return true;
+    for (const ReplotQueue::Plot& p : replotQueue().plots) {
+        if (p.plot == plot) return true;
     }
     return false;
 }

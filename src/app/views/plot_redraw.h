@@ -20,7 +20,8 @@ void queueReplot(QCustomPlot* plot);
 /// @brief Calls `then` (unless `context` is gone by then) in a pass of the event loop of its own
 /// once every plot queued so far has been replotted: what the window shows beside its plots
 /// (the readout, the contour view, the Joints tab) waits for them, so that an edit's plots are
-/// not delayed by painting the rest. Calls made while plots are queued run in the order made.
+/// not delayed by painting the rest. Plots queued later never hold it back (while edits stream
+/// in, the queue is seldom empty); calls run in the order made.
 void whenReplotsDone(QObject* context, std::function<void()> then);
 
 /// @brief Replots every plot queueReplot() holds, and calls what whenReplotsDone() holds, now
