@@ -10,6 +10,15 @@
 #include "engine/memory_reuse.h"
 #include "views/plot_data.h"
 
+// GCC names an address-sanitized build by __SANITIZE_ADDRESS__, clang by __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define CAMWRIGHT_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CAMWRIGHT_ADDRESS_SANITIZER 1
+#endif
+#endif
+
 namespace cam {
 namespace {
 
@@ -20,7 +29,7 @@ long minorFaults() {
 }
 
 TEST(MemoryReuse, AnEditsComputationTouchesFewNewPages) {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(CAMWRIGHT_ADDRESS_SANITIZER)
     GTEST_SKIP() << "the address sanitizer brings its own allocator";
 #elif !defined(__GLIBC__)
     GTEST_SKIP() << "tunes glibc's allocator only";
