@@ -23,7 +23,9 @@ QString formatNumber(double value, int significant) {
     const QLocale locale = displayLocale();
     if (std::isinf(value)) return value > 0 ? QStringLiteral("∞") : locale.negativeSign() + "∞";
     const double v = cleaned(value);
-    if (std::isfinite(v) && std::abs(v) >= 1.0) {
+    // Only a value of at least 9·10^(digits−1) can round to 10^digits or more: the others (every
+    // table cell, most readout values) skip the rounding through text.
+    if (std::isfinite(v) && std::abs(v) >= 9.0 * std::pow(10.0, significant - 1)) {
         // Rounded first, as %g rounds: 999999.7 to 6 digits is 1000000, which %g writes 1E+06.
         const double rounded = QString::number(v, 'e', significant - 1).toDouble();
         if (std::abs(rounded) >= std::pow(10.0, significant)) {
