@@ -98,7 +98,9 @@ TEST_F(DockLayout, ComboEditorsAreNeverClipped) {
 TEST_F(DockLayout, TheRightHandDocksAreTabsAndTheWindowKeepsItsSize) {
     ASSERT_TRUE(window.loadFile(test::kExampleFile).isEmpty());
     // The layout settles first: the Segments dock takes its rows once the load has been laid
-    // out, and that lays the plots out again (a slow sanitizer build measured before it).
+    // out, and the status bar its "computed" text once the plots have drawn the first result;
+    // both lay the plots out again (a slow sanitizer build measured before them).
+    ASSERT_TRUE(window.waitForCurrentResult(20000));
     test::processEventsUntil([] { return false; }, 100);
     const int heightBefore = window.plots()->plot(0)->height();
     for (const char* name :
