@@ -94,6 +94,26 @@ TEST(PlotRedraw, PlotsQueuedLaterNeverHoldBackWhatWaitsForEarlierOnes) {
     EXPECT_EQ(events.mid(0, 3), (QStringList{"a", "waited for a", "b"}));
 }
 
+TEST(PlotRedraw, WhatTheWaitingCallsChangedIsPaintedInAPassBeforeTheNextReplot) {
+    // A waiting call (the readout, the contour view's new result) changes labels and queues a
+    // replot: the window paints those labels in the next pass, and the replot, which repaints
+    // the window again, comes in the pass after. In one pass together they held the window for
+    // 7 to 8 ms. What was posted in the pass of the call (the paint, input) comes before it.
+    QCustomPlot first, second;
+    settle();
+    std::vector<std::string> order;
+    QObject::connect(&second, &QCustomPlot::afterReplot, [&] { order.push_back("replot"); });
+    queueReplot(&first);
+    whenReplotsDone(&first, [&] {
+        order.push_back("call");
+        queueReplot(&second);
+        QMetaObject::invokeMethod(
+            &first, [&] { order.push_back("posted in the call's pass"); }, Qt::QueuedConnection);
+    });
+    processUntil([&] { return order.size() == 3; });
+    EXPECT_EQ(order, (std::vector<std::string>{"call", "posted in the call's pass", "replot"}));
+}
+
 TEST(PlotRedraw, AResultThatCannotBeComputedIsNotOverwrittenByTheOneBefore) {
     MainWindow window;
     ASSERT_TRUE(window.loadFile(test::kExampleFile).isEmpty());

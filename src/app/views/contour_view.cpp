@@ -252,8 +252,10 @@ void ContourView::setResult(const ComputeResultPtr& result) {
     // its search for the visible ones skips some when zoomed in.
     m_joints->setData(jx, jy);
     if (m_autoFit) resetZoom();
+    // The new contour, cursor and all, in one replot: queued first, so that the cursor's move
+    // does not redraw its layer over the old contour before.
+    queueReplot(this);
     setCursorAngle(m_cursorPhi);
-    queueReplot(this);  // the new contour (the cursor alone redraws only its layer)
 }
 
 QCPCurve* ContourView::segmentCurve(int k) const {

@@ -112,7 +112,10 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
         line = new QCPItemStraightLine(m_pressurePlot);
         line->setPen(QPen(QColor(200, 30, 30), 1, Qt::DashLine));
     }
+    // The cursor on a buffered layer of its own: a move redraws one line, not the curve.
+    m_cursorLayer = addBufferedTopLayer(m_pressurePlot, QStringLiteral("cursor"));
     m_cursor = new QCPItemStraightLine(m_pressurePlot);
+    m_cursor->setLayer(m_cursorLayer);
     m_cursor->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
     m_cursor->point1->setCoords(0, 0);
     m_cursor->point2->setCoords(0, 1);
@@ -221,9 +224,10 @@ void FollowerPanel::refresh() {
 }
 
 void FollowerPanel::setCursorX(double x) {
+    if (m_cursor->point1->coords().x() == x) return;  // drawn there already
     m_cursor->point1->setCoords(x, 0);
     m_cursor->point2->setCoords(x, 1);
-    queueReplot(m_pressurePlot);
+    replotLayer(m_cursorLayer);
 }
 
 void FollowerPanel::setResult(const ComputeResultPtr& result) {

@@ -291,6 +291,8 @@ void KinematicsPlots::resetZoom() {
 
 void KinematicsPlots::setCursorX(double x) {
     for (std::size_t p = 0; p < m_plots.size(); ++p) {
+        // Where it is already (a new result redraws the cursor where it was): nothing to redraw.
+        if (m_cursors[p]->point1->coords().x() == x) continue;
         m_cursors[p]->point1->setCoords(x, 0);
         m_cursors[p]->point2->setCoords(x, 1);
         replotLayer(m_cursorLayers[p]);
