@@ -7,6 +7,7 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QStringList>
+#include <QTimer>
 #include <memory>
 
 #include "app_test_support.h"
@@ -112,6 +113,27 @@ TEST(PlotRedraw, WhatTheWaitingCallsChangedIsPaintedInAPassBeforeTheNextReplot) 
     });
     processUntil([&] { return order.size() == 3; });
     EXPECT_EQ(order, (std::vector<std::string>{"call", "posted in the call's pass", "replot"}));
+}
+
+TEST(PlotRedraw, ATimerDueBetweenTwoReplotsFiresBetweenThem) {
+    // Input and timers get their turn between two replots: a pass is a zero timer, not a
+    // posted event (Qt delivered a chain of posted passes two at a time before any timer, and
+    // a probe timer saw the window held for both).
+    QCustomPlot first, second;
+    settle();
+    std::vector<std::string> order;
+    QTimer due;
+    due.setSingleShot(true);
+    QObject::connect(&due, &QTimer::timeout, [&] { order.push_back("timer"); });
+    QObject::connect(&first, &QCustomPlot::afterReplot, [&] {
+        order.push_back("first");
+        due.start(0);
+    });
+    QObject::connect(&second, &QCustomPlot::afterReplot, [&] { order.push_back("second"); });
+    queueReplot(&first);
+    queueReplot(&second);
+    processUntil([&] { return order.size() == 3; });
+    EXPECT_EQ(order, (std::vector<std::string>{"first", "timer", "second"}));
 }
 
 TEST(PlotRedraw, AResultThatCannotBeComputedIsNotOverwrittenByTheOneBefore) {

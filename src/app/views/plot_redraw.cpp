@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QPointer>
+#include <QTimer>
 #include <cstdint>
 #include <deque>
 #include <utility>
@@ -11,8 +12,8 @@ namespace cam {
 namespace {
 
 /// The plots waiting for queueReplot(), oldest first, what waits for them (whenReplotsDone),
-/// and whether a pass is posted to take the next one (GUI thread only). Each queued plot gets
-/// the next number; a waiting call waits for the number of the last plot queued before it.
+/// and the timer that starts the pass taking the next one (GUI thread only). Each queued plot
+/// gets the next number; a waiting call waits for the number of the last plot queued before it.
 struct ReplotQueue {
     struct Plot {
         QPointer<QCustomPlot> plot;
@@ -27,17 +28,22 @@ struct ReplotQueue {
     std::deque<Waiting> then;
     std::uint64_t queued = 0;  ///< the number of the last plot queued
     std::uint64_t done = 0;    ///< the number of the last plot replotted (or closed)
-    bool posted = false;
-    /// The last pass ran waiting calls: the next one only lets the window paint what they
-    /// changed (labels, a table row) before the next replot, with input and timers between.
-    bool yieldNext = false;
+    QPointer<QTimer> pass;     ///< owned by the application: gone with it
 
     [[nodiscard]] bool waitingReady() const { return !then.empty() && then.front().after <= done; }
     void post() {
-        if (posted) return;
-        // Posted while a pass runs: Qt delivers it in the next one, after input and timers.
-        posted = true;
-        QMetaObject::invokeMethod(QCoreApplication::instance(), replotNext, Qt::QueuedConnection);
+        // A pass is a zero timer's timeout, not a posted event: Qt delivers the events posted
+        // in one pass of the event loop together, and the timers and input only after them, so
+        // a chain of posted passes held input back for two passes at a time (7 to 10 ms). A
+        // zero timer waits while events are posted or input is pending: what a pass changed
+        // (labels, a table row) is painted, and input handled, before the next replot.
+        if (!pass) {
+            pass = new QTimer(QCoreApplication::instance());
+            pass->setSingleShot(true);
+            pass->setInterval(0);
+            QObject::connect(pass, &QTimer::timeout, pass, &ReplotQueue::replotNext);
+        }
+        if (!pass->isActive()) pass->start();
     }
     /// Calls what waits for plots already done; what they queue (a contour view's replot)
     /// comes after.
@@ -77,15 +83,8 @@ ReplotQueue& replotQueue() {
 /// replots never holds it back), else the next plot.
 void ReplotQueue::replotNext() {
     ReplotQueue& queue = replotQueue();
-    queue.posted = false;
-    if (queue.yieldNext) {
-        // What the waiting calls changed is painted in this pass (its update request was
-        // posted with this pass); the next replot, with its own repaint of the window, waits
-        // for a pass of its own. Together they held the window for 7 to 8 ms.
-        queue.yieldNext = false;
-    } else if (queue.waitingReady()) {
+    if (queue.waitingReady()) {
         queue.runReady();
-        queue.yieldNext = true;
     } else {
         queue.replotOne();
     }

@@ -21,8 +21,8 @@ void queueReplot(QCustomPlot* plot);
 /// once every plot queued so far has been replotted: what the window shows beside its plots
 /// (the readout, the contour view, the Joints tab) waits for them, so that an edit's plots are
 /// not delayed by painting the rest. Plots queued later never hold it back (while edits stream
-/// in, the queue is seldom empty); calls run in the order made. The pass after theirs replots
-/// nothing: the window paints what they changed, and input has its turn, before the next replot.
+/// in, the queue is seldom empty); calls run in the order made. The window paints what they
+/// changed, and input has its turn, before the next replot.
 void whenReplotsDone(QObject* context, std::function<void()> then);
 
 /// @brief Replots every plot queueReplot() holds, and calls what whenReplotsDone() holds, now
