@@ -105,10 +105,10 @@ TEST(ComputeEngine, AFirstPictureIsFollowedByTheSameResultWithEveryPlotLevel) {
     EXPECT_EQ(whole.curves.levels.front().samplesPerBucket, 4u);
     // Everything else is the same result.
     EXPECT_EQ(first.sampleCount, whole.sampleCount);
-    ASSERT_EQ(first.analysis.extremes.size(), whole.analysis.extremes.size());
-    for (std::size_t i = 0; i < first.analysis.extremes.size(); ++i) {
-        EXPECT_EQ(first.analysis.extremes[i].max.value, whole.analysis.extremes[i].max.value);
-        EXPECT_EQ(first.analysis.extremes[i].min.value, whole.analysis.extremes[i].min.value);
+    ASSERT_EQ(first.joints.size(), whole.joints.size());
+    for (std::size_t i = 0; i < first.joints.size(); ++i) {
+        EXPECT_EQ(first.joints[i].phi, whole.joints[i].phi);
+        EXPECT_EQ(first.joints[i].continuity, whole.joints[i].continuity);
     }
     EXPECT_EQ(first.outlines, whole.outlines);
     EXPECT_EQ(first.curves.levels.back().curves[0].size(),

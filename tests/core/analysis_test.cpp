@@ -68,6 +68,15 @@ TEST(JointAnalysis, CornerHasTangentBreakOfItsGeometry) {
         // r = 10/cos(φ - θn): r' jumps from +10·√2 to -10·√2 at a corner.
         EXPECT_NEAR(j.jumpDr, -20.0 * std::sqrt(2.0), 1e-9);
     }
+    // The joints alone (what the window computes on every edit) are the same, corner by corner.
+    const std::vector<JointAnalysis> joints = analyzeJoints(c.value(), kTwoPi);
+    ASSERT_EQ(joints.size(), 4u);
+    for (std::size_t k = 0; k < 4; ++k) {
+        EXPECT_EQ(joints[k].left, k);
+        EXPECT_EQ(joints[k].phi, a.joints[k].phi);
+        EXPECT_EQ(joints[k].tangentBreakDeg, a.joints[k].tangentBreakDeg);
+        EXPECT_EQ(joints[k].continuity, a.joints[k].continuity);
+    }
     // r ranges from 10 (edge midpoints) to 10·√2 (corners).
     const auto& r = a.extremes.front();
     ASSERT_EQ(r.quantity, Quantity::R);

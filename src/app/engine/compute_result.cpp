@@ -91,7 +91,7 @@ std::vector<QVector<QPointF>> outlinesOf(const Contour& c) {
 
 /// What the contour view and the Joints tab need of the contour alone.
 struct ContourPart {
-    ContourAnalysis analysis;
+    std::vector<JointAnalysis> joints;
     std::vector<QVector<QPointF>> outlines;
 };
 
@@ -99,7 +99,7 @@ ContourPart computeContourPart(const Contour* contour, double omega,
                                const std::atomic<bool>* cancel) {
     runInTheBackground();
     ContourPart part;
-    part.analysis = analyzeContour(*contour, omega, cancel);
+    part.joints = analyzeJoints(*contour, omega, cancel);
     if (!cancel->load()) part.outlines = outlinesOf(*contour);
     return part;
 }
@@ -316,7 +316,7 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     {
         ContourPart part = contourPart.result();
         if (cancel.load()) return nullptr;
-        result->analysis = std::move(part.analysis);
+        result->joints = std::move(part.joints);
         result->outlines = std::move(part.outlines);
     }
     std::vector<CubicBezier> splines;

@@ -90,7 +90,9 @@ struct ComputeResult {
     double omega = 0.0;           ///< rad/s
     double period = 0.0;          ///< s
     std::size_t sampleCount = 0;  ///< samples per turn that were computed (in chunks)
-    ContourAnalysis analysis;
+    /// The joints, as the Joints tab and the plots' joint markers show them. (The window shows
+    /// no extremes: their search cost 4 ms of every edit; `camwright-cli analyze` reports them.)
+    std::vector<JointAnalysis> joints;
     /// Per segment, its outline for the contour view (x, y in mm), ends included.
     std::vector<QVector<QPointF>> outlines;
     /// The kinematics curves over angle or time at several resolutions, with their ranges.

@@ -26,10 +26,10 @@ JointsPanel::JointsPanel(QWidget* parent) : QTableWidget(parent) {
     horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
     setToolTip(tr("Click a joint to put the cursor there"));
     connect(this, &QTableWidget::cellClicked, this, [this](int row, int) {
-        if (!m_result || row < 0 || row >= static_cast<int>(m_result->analysis.joints.size())) {
+        if (!m_result || row < 0 || row >= static_cast<int>(m_result->joints.size())) {
             return;
         }
-        const JointAnalysis& j = m_result->analysis.joints[static_cast<std::size_t>(row)];
+        const JointAnalysis& j = m_result->joints[static_cast<std::size_t>(row)];
         emit jointPicked(static_cast<int>(j.left), static_cast<int>(j.right), j.phi);
     });
 }
@@ -52,7 +52,7 @@ void JointsPanel::showEvent(QShowEvent* event) {
 void JointsPanel::fill() {
     m_stale = false;
     if (!m_result) return;
-    const auto& joints = m_result->analysis.joints;
+    const auto& joints = m_result->joints;
     const bool first = rowCount() == 0;
     setRowCount(static_cast<int>(joints.size()));
     for (int row = 0; row < rowCount(); ++row) {

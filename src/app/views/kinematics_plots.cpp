@@ -304,7 +304,7 @@ void KinematicsPlots::rebuildJointMarkers() {
     std::vector<double> xs;
     if (m_result && m_result->ok()) {
         const double omega = m_result->omega;
-        for (const JointAnalysis& j : m_result->analysis.joints) {
+        for (const JointAnalysis& j : m_result->joints) {
             if (j.continuity == Continuity::C2) continue;  // a_r is continuous here
             const double sign = omega > 0 ? 1.0 : -1.0;
             double phi = std::fmod(sign * j.phi, kTwoPi);

@@ -241,14 +241,22 @@ private:
 
 }  // namespace
 
+std::vector<JointAnalysis> analyzeJoints(const Contour& contour, double omega,
+                                         const std::atomic<bool>* cancel) {
+    std::vector<JointAnalysis> joints;
+    if (contour.size() < 2) return joints;
+    for (std::size_t k = 0; k < contour.size(); ++k) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) return {};
+        joints.push_back(analyzeJoint(contour, k, omega));
+    }
+    return joints;
+}
+
 ContourAnalysis analyzeContour(const Contour& contour, double omega,
                                const std::atomic<bool>* cancel) {
     const auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
     ContourAnalysis result;
-    for (std::size_t k = 0; k < contour.size(); ++k) {
-        if (cancelled()) return result;
-        if (contour.size() > 1) result.joints.push_back(analyzeJoint(contour, k, omega));
-    }
+    result.joints = analyzeJoints(contour, omega, cancel);
     std::array<QuantityExtremes, kAllQuantities.size()> extremes;
     for (std::size_t i = 0; i < kAllQuantities.size(); ++i)
         extremes[i].quantity = kAllQuantities[i];

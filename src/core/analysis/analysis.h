@@ -72,6 +72,11 @@ struct ContourAnalysis {
     std::vector<QuantityExtremes> extremes;
 };
 
+/// @brief The joints of a contour turning at omega (rad/s), the one at the end of each segment
+/// (none for a single segment); empty when `cancel` reads true between two.
+[[nodiscard]] std::vector<JointAnalysis> analyzeJoints(const Contour& contour, double omega,
+                                                       const std::atomic<bool>* cancel = nullptr);
+
 /// @brief Joints and extremes of a contour turning at omega (rad/s).
 ///
 /// Extremes are found per segment on a fine grid that includes both window ends (one-sided
