@@ -80,11 +80,14 @@ void editCell(cam::MainWindow& window) {
     model->setData(type, type.data(Qt::EditRole).toInt() == 0 ? 1 : 0, Qt::EditRole);
 }
 
+/// The windows kept from one repetition to the next, closed by main() before the application
+/// ends (a window outliving QApplication crashed the bench at exit).
+std::map<std::pair<bool, bool>, std::unique_ptr<cam::MainWindow>> keptWindows;
+
 /// A window kept from one repetition to the next: a designer edits the same open project again
 /// and again. Made on first use per (follower, warm) and then reused.
 cam::MainWindow& editedWindow(bool follower, bool warm) {
-    static std::map<std::pair<bool, bool>, std::unique_ptr<cam::MainWindow>> windows;
-    auto& window = windows[{follower, warm}];
+    auto& window = keptWindows[{follower, warm}];
     if (!window) window = makeWindow(follower);
     return *window;
 }
@@ -404,6 +407,7 @@ int main(int argc, char** argv) {
     QApplication::setApplicationName("camwright-bench");
     benchmark::Initialize(&argc, argv);
     benchmark::RunSpecifiedBenchmarks();
+    keptWindows.clear();
     benchmark::Shutdown();
     return 0;
 }
