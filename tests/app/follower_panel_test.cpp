@@ -87,6 +87,39 @@ TEST(FollowerPanel, ChoosingARollerIsOneUndoableEditComputedInTheWorker) {
     EXPECT_EQ(window.document()->project().follower->radius, 2.5);
 }
 
+TEST(FollowerPanel, ThePressureCurveIsAOnePixelLineAndOnlyWhatIsBeyondTheLimitIsWider) {
+    // Qt strokes a pen wider than one pixel through its general stroker, 15 times the cost of
+    // a one-pixel line: the pressure-angle curve, redrawn on every edit, is one pixel wide (at
+    // 1.3 px it took 2 to 3 ms of the redraw); only the stretches beyond the limit are wider.
+    MainWindow window;
+    ASSERT_TRUE(
+        window.loadFile(QString::fromStdString(test::examplePath("swinging-arm-cam.cam.json")))
+            .isEmpty());
+    window.show();
+    ASSERT_TRUE(waitForResult(window));
+    QCustomPlot* plot = window.followerPanel()->pressurePlot();
+    ASSERT_EQ(plot->graphCount(), 2);
+    EXPECT_EQ(plot->graph(0)->pen().widthF(), 1.0);
+    EXPECT_EQ(plot->graph(0)->dataCount(),
+              static_cast<int>(ComputeResult::kFollowerCurvePoints + 1));
+    EXPECT_GT(plot->graph(1)->pen().widthF(), 1.0);
+    // The wide one holds values only where |angle| exceeds the limit (NaN elsewhere).
+    const double limit = window.document()->project().follower->maxPressureAngleOrDefault();
+    int beyond = 0;
+    for (int k = 0; k < plot->graph(1)->dataCount(); ++k) {
+        const double v = plot->graph(1)->data()->at(k)->value;
+        const double all = plot->graph(0)->data()->at(k)->value;
+        if (std::isnan(v)) {
+            EXPECT_LE(std::abs(all), limit) << k;
+        } else {
+            EXPECT_EQ(v, all) << k;
+            EXPECT_GT(std::abs(v), limit) << k;
+            ++beyond;
+        }
+    }
+    EXPECT_LT(beyond, plot->graph(1)->dataCount());
+}
+
 TEST(FollowerPanel, TheChecksAreTheCoresAndAClickGoesToTheirAngle) {
     MainWindow window;
     ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
