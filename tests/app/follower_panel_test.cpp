@@ -31,6 +31,13 @@ using test::kExampleFile;
 
 bool waitForResult(MainWindow& w) { return w.waitForCurrentResult(20000); }
 
+/// Opens the bundled example `name`, shows the window and waits for its result.
+bool openAndCompute(MainWindow& w, const char* name) {
+    if (!w.loadFile(QString::fromStdString(test::examplePath(name))).isEmpty()) return false;
+    w.show();
+    return waitForResult(w);
+}
+
 template <class T>
 T* child(const MainWindow& w, const char* name) {
     T* widget = w.followerPanel()->findChild<T*>(name);
@@ -92,11 +99,7 @@ TEST(FollowerPanel, ThePressureCurveIsAOnePixelLineAndOnlyWhatIsBeyondTheLimitIs
     // a one-pixel line: the pressure-angle curve, redrawn on every edit, is one pixel wide (at
     // 1.3 px it took 2 to 3 ms of the redraw); only the stretches beyond the limit are wider.
     MainWindow window;
-    ASSERT_TRUE(
-        window.loadFile(QString::fromStdString(test::examplePath("swinging-arm-cam.cam.json")))
-            .isEmpty());
-    window.show();
-    ASSERT_TRUE(waitForResult(window));
+    ASSERT_TRUE(openAndCompute(window, "swinging-arm-cam.cam.json"));
     QCustomPlot* plot = window.followerPanel()->pressurePlot();
     ASSERT_EQ(plot->graphCount(), 2);
     EXPECT_EQ(plot->graph(0)->pen().widthF(), 1.0);
@@ -198,11 +201,7 @@ TEST(FollowerPanel, AnEditsChecksFollowItsFirstPictureAndTheListIsNeverEmptyMean
     // (they take longer than the kinematics): the list keeps the previous checks until the
     // same result comes back with its own.
     MainWindow window;
-    ASSERT_TRUE(
-        window.loadFile(QString::fromStdString(test::examplePath("swinging-arm-cam.cam.json")))
-            .isEmpty());
-    window.show();
-    ASSERT_TRUE(waitForResult(window));
+    ASSERT_TRUE(openAndCompute(window, "swinging-arm-cam.cam.json"));
     const QStringList before = window.followerPanel()->checkLines();
     ASSERT_FALSE(before.isEmpty());
     std::vector<std::pair<bool, QStringList>> seen;  // pending, the list as shown then
