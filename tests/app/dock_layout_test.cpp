@@ -118,5 +118,48 @@ TEST_F(DockLayout, TheRightHandDocksAreTabsAndTheWindowKeepsItsSize) {
     EXPECT_EQ(window.tabifiedDockWidgets(window.findChild<QDockWidget*>("followerDock")).size(), 3);
 }
 
+TEST_F(DockLayout, NoPlotWritesItsTickLabelsIntoOneAnother) {
+    // A project with a roller and a motion design: every right-hand dock has plots, the Motion
+    // Design dock four in little room. In each, with each dock in front, every axis leaves a
+    // label's height between two labels up its side (and their half widths along the bottom).
+    ASSERT_TRUE(window
+                    .loadFile(QString::fromStdString(
+                        test::examplePath("synthesised-cycloidal-roller.cam.json")))
+                    .isEmpty());
+    ASSERT_TRUE(window.waitForCurrentResult(20000));
+    int axesChecked = 0;
+    for (const char* name : {"followerDock", "motionDesignDock", "pathStudyDock"}) {
+        auto* dock = window.findChild<QDockWidget*>(name);
+        ASSERT_NE(dock, nullptr) << name;
+        dock->show();
+        dock->raise();
+        test::processEventsUntil([] { return false; }, 150);  // laid out and replotted
+        for (QCustomPlot* plot : window.findChildren<QCustomPlot*>()) {
+            if (!plot->isVisible() || plot->visibleRegion().isEmpty()) continue;
+            plot->replot(QCustomPlot::rpImmediateRefresh);
+            for (QCPAxis* axis : plot->axisRect()->axes()) {
+                if (!axis->visible() || !axis->tickLabels()) continue;
+                const QVector<double> ticks = axis->tickVector();
+                const QVector<QString> labels = axis->tickVectorLabels();
+                const QFontMetricsF font(axis->tickLabelFont());
+                for (qsizetype i = 1; i < ticks.size(); ++i) {
+                    const double apart =
+                        std::abs(axis->coordToPixel(ticks[i]) - axis->coordToPixel(ticks[i - 1]));
+                    const double needed = axis->orientation() == Qt::Vertical
+                                              ? font.height()
+                                              : (font.horizontalAdvance(labels[i]) +
+                                                 font.horizontalAdvance(labels[i - 1])) /
+                                                    2.0;
+                    EXPECT_GE(apart, needed)
+                        << name << ": " << plot->objectName().toStdString() << " "
+                        << labels[i - 1].toStdString() << " / " << labels[i].toStdString();
+                }
+                ++axesChecked;
+            }
+        }
+    }
+    EXPECT_GE(axesChecked, 3 * 8);  // each pass: the four kinematics plots' axes and its own
+}
+
 }  // namespace
 }  // namespace cam

@@ -13,6 +13,9 @@ constexpr int kTickDigits = 6;
 
 /// The default ticker's tick positions with the policy's labels.
 class LocaleAxisTicker : public QCPAxisTicker {
+public:
+    int mostTicks = 5;  ///< the tick count asked for where the axis is long enough
+
 protected:
     QString getTickLabel(double tick, const QLocale& locale, QChar /*formatChar*/,
                          int /*precision*/) override {
@@ -28,6 +31,30 @@ protected:
         return ticks;
     }
 };
+
+/// Fewer ticks on a vertical axis too short for the default's labels: the ticker's readable
+/// steps are kept, and at least a label's height and a fifth is left from one tick to the next.
+/// (The Motion Design dock's four plots share a small dock: at 70 px the lift axis wrote
+/// "15 12.5 10 7.5" into one another.)
+void fitVerticalTickCounts(QCustomPlot* plot) {
+    for (QCPAxisRect* rect : plot->axisRects()) {
+        for (QCPAxis* axis : rect->axes(QCPAxis::atLeft | QCPAxis::atRight)) {
+            auto* ticker = dynamic_cast<LocaleAxisTicker*>(axis->ticker().data());
+            if (!ticker || !axis->tickLabels() || rect->height() <= 0) continue;
+            const double room = 1.2 * QFontMetricsF(axis->tickLabelFont()).height();
+            const double pixelsPerUnit = rect->height() / axis->range().size();
+            int count = ticker->mostTicks;
+            for (; count > 1; --count) {
+                ticker->setTickCount(count);
+                QVector<double> ticks;
+                ticker->generate(axis->range(), plot->locale(), QLatin1Char('g'),
+                                 axis->numberPrecision(), ticks, nullptr, nullptr);
+                if (ticks.size() < 2 || (ticks[1] - ticks[0]) * pixelsPerUnit >= room) break;
+            }
+            ticker->setTickCount(count);
+        }
+    }
+}
 
 QString superscript(int exponent) {
     static const QChar digits[] = {u'⁰', u'¹', u'²', u'³', u'⁴', u'⁵', u'⁶', u'⁷', u'⁸', u'⁹'};
@@ -57,13 +84,16 @@ void applyAxisFormat(QCustomPlot* plot) {
         for (QCPAxis* axis : rect->axes()) {
             // Only the default ticker: a special one (time, text) keeps its own labels.
             if (typeid(*axis->ticker()) != typeid(QCPAxisTicker)) continue;
-            const QSharedPointer<QCPAxisTicker> own(new LocaleAxisTicker);
-            own->setTickCount(axis->ticker()->tickCount());
+            const QSharedPointer<LocaleAxisTicker> own(new LocaleAxisTicker);
+            own->mostTicks = axis->ticker()->tickCount();
+            own->setTickCount(own->mostTicks);
             own->setTickStepStrategy(axis->ticker()->tickStepStrategy());
             own->setTickOrigin(axis->ticker()->tickOrigin());
             axis->setTicker(own);
         }
     }
+    QObject::connect(plot, &QCustomPlot::beforeReplot, plot,
+                     [plot] { fitVerticalTickCounts(plot); });
 }
 
 }  // namespace cam
