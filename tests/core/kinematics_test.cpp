@@ -173,5 +173,37 @@ TEST(SampledTurn, ChunksAreTheWholeTurn) {
     }
 }
 
+TEST(SampledTurn, AlignedChunksOfALongTurnAreItsSamplesBitForBit) {
+    // Segments of tens of thousands of samples, which the loop goes through in pieces between
+    // two polls of the cancel flag: those pieces end on the turn's own grid, not a chunk's, so
+    // a chunk that starts inside a segment still splits it where the whole turn does (split
+    // 16,384 samples after where each started, they differed in the last bit, and the app's
+    // two halves of a turn differed from the turn in one piece).
+    const Contour sixLobeCam = sixLobe();
+    for (const double omega : {5.0 * kPi, -5.0 * kPi}) {
+        const std::size_t n = 1'000'003;
+        SampledTurn whole, chunk;
+        ASSERT_TRUE(sampleTurn(sixLobeCam, omega, n, whole));
+        for (const auto& [first, count] :
+             {std::pair<std::size_t, std::size_t>{50 * kSampleBlock, 64 * kSampleBlock},
+              {488 * kSampleBlock, 64 * kSampleBlock},
+              {200 * kSampleBlock, n - 200 * kSampleBlock}}) {
+            ASSERT_TRUE(sampleTurnRange(sixLobeCam, omega, n, first, count, chunk));
+            for (std::size_t i = 0; i < count; ++i) {
+                const std::size_t k = first + i;
+                ASSERT_EQ(chunk.segment[i], whole.segment[k]) << k;
+                ASSERT_EQ(chunk.r[i], whole.r[k]) << k;
+                ASSERT_EQ(chunk.x[i], whole.x[k]) << k;
+                ASSERT_EQ(chunk.vR[i], whole.vR[k]) << k;
+                ASSERT_EQ(chunk.vPhi[i], whole.vPhi[k]) << k;
+                ASSERT_EQ(chunk.aR[i], whole.aR[k]) << k;
+                ASSERT_EQ(chunk.a[i], whole.a[k]) << k;
+                ASSERT_EQ(chunk.jR[i], whole.jR[k]) << k;
+                ASSERT_EQ(chunk.j[i], whole.j[k]) << k;
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace cam

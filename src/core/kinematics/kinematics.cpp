@@ -176,7 +176,9 @@ bool sampleTurnRange(const Contour& contour, double omega, std::size_t n, std::s
         end = std::min(end, last);
         while (end > k + 1 && contour.segmentAt(phiOf(end - 1)) != seg) --end;
         while (end < last && contour.segmentAt(phiOf(end)) == seg) ++end;
-        end = std::min(end, k + kSamplesBetweenPolls);
+        // Polls on the turn's grid, not k's: where a piece ends must not depend on where the
+        // chunk began (a piece ending mid-block rounds its last samples differently).
+        end = std::min(end, (k / kSamplesBetweenPolls + 1) * kSamplesBetweenPolls);
 
         const auto segIndex = static_cast<std::int32_t>(seg);
         if (s.type == SegmentType::Arc) {
