@@ -9,7 +9,6 @@
 #include <cmath>
 #include <iterator>
 #include <set>
-#include <string_view>
 #include <utility>
 
 #include "app_test_support.h"
@@ -132,64 +131,6 @@ TEST(PlotLevels, AFirstPictureHoldsTheWholeSetsCoarserLevelsPointForPoint) {
     EXPECT_TRUE(first.partial);
     EXPECT_EQ(first.levels.front().samplesPerBucket, 64u);
     expectBucketsHoldTheirExtremes(contour, omega, 100'000, first.levels.front());
-}
-
-TEST(PlotLevels, ATurnSampledInTwoHalvesAtOnceIsTheSamePointForPoint) {
-    // The halves meet at a bucket boundary; a joint may lie between the last sample of the
-    // first and the first of the second. The six-lobe cam has 24 joints, the egg cam splines.
-    // And a circle about (5, 0) in two arcs that meet at 180°: with 32,768 samples the second
-    // half starts on that joint's sample.
-    Project split;
-    split.motion = {SpeedUnit::PeriodS, 1.0};
-    split.contour = {{Arc{{5, 0}, 20, Branch::Outer}, 0, 180},
-                     {Arc{{5, 0}, 20, Branch::Outer}, 180, 360}};
-    std::atomic<bool> cancel{false};
-    for (const char* example : {"six-lobe-arc-cam.cam.json", "spline-egg-cam.cam.json", ""}) {
-        auto loaded = *example ? loadProjectFile(test::examplePath(example))
-                               : Result<Project>(Project(split));
-        ASSERT_TRUE(loaded.ok()) << example;
-        const Project project = std::move(loaded).value();
-        const Contour contour = Contour::build(project).value();
-        for (const double omega : {project.motion.omegaRadS(), -project.motion.omegaRadS()}) {
-            for (const PlotAxis axis : {PlotAxis::Angle, PlotAxis::Time}) {
-                // The egg cam's splines solve a cubic per sample (over 1 µs): they at the
-                // fewest samples that are split, the arcs up to a million too.
-                const bool splines = std::string_view(example) == "spline-egg-cam.cam.json";
-                for (const std::size_t n :
-                     {std::size_t{32'768}, std::size_t{100'000}, std::size_t{1'000'003}}) {
-                    if (splines && n > 32'768) continue;
-                    if (n > 100'000 && axis == PlotAxis::Time) continue;  // the same samples
-                    for (const std::size_t buckets :
-                         {std::size_t{0}, PlotCurves::kFirstPictureBuckets}) {
-                        SCOPED_TRACE(testing::Message()
-                                     << example << ", omega " << omega << ", n " << n << ", axis "
-                                     << static_cast<int>(axis) << ", buckets " << buckets);
-                        PlotCurves halves, whole;
-                        ASSERT_TRUE(
-                            buildPlotCurves(contour, omega, n, axis, halves, cancel, buckets));
-                        ASSERT_TRUE(buildPlotCurves(contour, omega, n, axis, whole, cancel, buckets,
-                                                    false));
-                        ASSERT_EQ(halves.levels.size(), whole.levels.size());
-                        for (std::size_t i = 0; i < whole.levels.size(); ++i) {
-                            for (std::size_t c = 0; c < kCurveCount; ++c) {
-                                const auto& a = halves.levels[i].curves[c];
-                                const auto& b = whole.levels[i].curves[c];
-                                ASSERT_EQ(a.size(), b.size()) << "level " << i << ", curve " << c;
-                                for (std::size_t k = 0; k < a.size(); ++k) {
-                                    ASSERT_TRUE(samePoint(a[k], b[k]))
-                                        << "level " << i << ", curve " << c << ", point " << k;
-                                }
-                            }
-                        }
-                        for (std::size_t p = 0; p < whole.yRanges.size(); ++p) {
-                            EXPECT_EQ(halves.yRanges[p].lower, whole.yRanges[p].lower);
-                            EXPECT_EQ(halves.yRanges[p].upper, whole.yRanges[p].upper);
-                        }
-                    }
-                }
-            }
-        }
-    }
 }
 
 }  // namespace

@@ -6,14 +6,8 @@
 #include <limits>
 #include <optional>
 
-#include <QScopeGuard>
-#include <QThread>
-#include <QThreadPool>
-#include <QtConcurrent/QtConcurrentRun>
-
 #include "common/angles.h"
 #include "common/tolerances.h"
-#include "engine/background_priority.h"
 
 namespace cam {
 namespace {
@@ -254,76 +248,6 @@ void settleBreaks(CurveBuilder& b, double tolerance) {
 
 std::size_t ceilDiv(std::size_t a, std::size_t b) { return (a + b - 1) / b; }
 
-using Builders = std::array<CurveBuilder, kCurveCount>;
-
-/// The thread that samples second halves: one of its own, so that a half starts at once while
-/// the global pool's threads compute the follower and the outlines of the same edit.
-QThreadPool* halvesThread() {
-    static QThreadPool* const pool = [] {
-        auto* p = new QThreadPool;  // lives as long as the program: never torn down under a task
-        p->setMaxThreadCount(1);
-        p->setExpiryTimeout(-1);
-        return p;
-    }();
-    return pool;
-}
-
-/// Samples [begin, end) of the turn into `builders`, with the joints the turn passes between
-/// two of those samples; `lastSegment` and `lastPhi` are the segment and turn angle of sample
-/// begin − 1 (ignored for begin 0) and come back as those of sample end − 1. The samples go
-/// one chunk at a time through `samples`: no big turn is ever held. Returns false if cancelled.
-bool sampleRange(const Contour& contour, const Turn& turn, double omega, std::size_t n,
-                 PlotAxis axis, int shift, std::size_t begin, std::size_t end, Builders& builders,
-                 std::size_t& lastSegment, double& lastPhi, SampledTurn& samples,
-                 const std::atomic<bool>& cancel) {
-    const std::size_t chunk = PlotCurves::kChunkSamples;
-    std::vector<double> xs;
-    std::vector<Crossing> crossings;
-    struct Boundary {
-        std::size_t index, begin, end;  // sample in the chunk; its crossings
-    };
-    std::vector<Boundary> boundaries;
-    for (std::size_t first = begin; first < end; first += chunk) {
-        const std::size_t count = std::min(chunk, end - first);
-        if (!sampleTurnRange(contour, omega, n, first, count, samples, &cancel)) return false;
-        xs.resize(count);
-        for (std::size_t i = 0; i < count; ++i) {
-            xs[i] = axis == PlotAxis::Angle ? radToDeg(samples.phi[i]) : samples.t[i];
-        }
-        crossings.clear();
-        boundaries.clear();
-        for (std::size_t i = 0; i < count; ++i) {
-            const auto segment = static_cast<std::size_t>(samples.segment[i]);
-            if ((first > 0 || i > 0) && segment != lastSegment) {
-                const std::size_t from = crossings.size();
-                turn.cross(lastSegment, segment, lastPhi, std::nullopt, crossings);
-                boundaries.push_back({i, from, crossings.size()});
-            }
-            lastSegment = segment;
-            lastPhi = samples.phi[i];
-        }
-        for (std::size_t c = 0; c < kCurveCount; ++c) {
-            const double* y = samplesOf(samples, c);
-            CurveBuilder& b = builders[c];
-            // Runs of one segment, with the joints between them.
-            std::size_t runStart = 0;
-            for (std::size_t r = 0; r <= boundaries.size(); ++r) {
-                const std::size_t runEnd = r < boundaries.size() ? boundaries[r].index : count;
-                b.addRun(xs.data() + runStart, y + runStart, runEnd - runStart,
-                         static_cast<Tag>(first + runStart), shift);
-                if (r == boundaries.size()) break;
-                for (std::size_t j = boundaries[r].begin; j < boundaries[r].end; ++j) {
-                    b.joint(crossings[j], c);
-                }
-                runStart = runEnd;
-            }
-        }
-        if (cancel.load(std::memory_order_relaxed)) return false;
-    }
-    for (CurveBuilder& b : builders) b.flush();
-    return true;
-}
-
 }  // namespace
 
 std::size_t PlotCurves::pointCount() const {
@@ -346,8 +270,7 @@ std::size_t PlotCurves::levelFor(double visibleFraction, double pixels) const {
 }
 
 bool buildPlotCurves(const Contour& contour, double omega, std::size_t n, PlotAxis axis,
-                     PlotCurves& out, const std::atomic<bool>& cancel, std::size_t maxBuckets,
-                     bool inParallel) {
+                     PlotCurves& out, const std::atomic<bool>& cancel, std::size_t maxBuckets) {
     out = PlotCurves{};
     out.sampleCount = n;
     const Turn turn(contour, omega, axis);
@@ -372,73 +295,64 @@ bool buildPlotCurves(const Contour& contour, double omega, std::size_t n, PlotAx
             out.partial = true;
         }
     }
-    Builders builders;
+    std::array<CurveBuilder, kCurveCount> builders;
     for (CurveBuilder& b : builders) {
         const std::size_t expected = shift == 0 ? n : 2 * ceilDiv(n, std::size_t{1} << shift);
         b.points.reserve(expected + 3 * contour.size() + 8);  // and the joints
         b.tags.reserve(expected + 3 * contour.size() + 8);
     }
 
-    // The second half of a long turn on a helper thread while this one samples the first: the
-    // sampling is most of a first picture's time, and the other core is mostly free meanwhile
-    // (the outlines and joints take a fraction of it). The halves meet at a bucket boundary of
-    // every level, so that no bucket spans them.
+    // One chunk of samples at a time, in a buffer the worker thread keeps: no big turn is ever
+    // held, and no fresh memory is touched for it on every edit.
+    thread_local SampledTurn samples;
+    const std::size_t chunk = PlotCurves::kChunkSamples;
+    std::vector<double> xs;
+    std::vector<Crossing> crossings;
+    struct Boundary {
+        std::size_t index, begin, end;  // sample in the chunk; its crossings
+    };
+    std::vector<Boundary> boundaries;
     std::size_t lastSegment = 0;
     double lastPhi = 0.0;
-    // The chunk buffers, this thread's whichever thread samples a half (the waiting thread
-    // runs a half itself when the helper has not started it): made on the first edit, then
-    // reused, no fresh memory touched for them on the next ones (8 MB at a chunk of 65,536).
-    thread_local SampledTurn firstBuffer, secondBuffer, boundaryBuffer;
-    // Named here: in the lambda below the names would be the running thread's own.
-    SampledTurn& secondSamples = secondBuffer;
-    SampledTurn& boundary = boundaryBuffer;
-    const std::size_t alignment = std::size_t{1} << std::max(shift, 12);
-    const std::size_t middle = n / 2 / alignment * alignment;
-    if (inParallel && n >= 2 * PlotCurves::kParallelSamplesMin && middle > 0) {
-        Builders second;
-        const std::size_t rest = n - middle;
-        for (CurveBuilder& b : second) {
-            const std::size_t expected =
-                shift == 0 ? rest : 2 * ceilDiv(rest, std::size_t{1} << shift);
-            b.points.reserve(expected + 3 * contour.size() + 8);
-            b.tags.reserve(expected + 3 * contour.size() + 8);
+    for (std::size_t first = 0; first < n; first += chunk) {
+        const std::size_t count = std::min(chunk, n - first);
+        if (!sampleTurnRange(contour, omega, n, first, count, samples, &cancel)) return false;
+        xs.resize(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            xs[i] = axis == PlotAxis::Angle ? radToDeg(samples.phi[i]) : samples.t[i];
         }
-        std::size_t secondSegment = 0;
-        double secondPhi = 0.0;
-        QThread* const caller = QThread::currentThread();
-        QFuture<bool> secondHalf = QtConcurrent::run(halvesThread(), [&] {
-            // As the computation it is part of; the waiting thread may run it itself.
-            if (QThread::currentThread() != caller) runInTheBackground();
-            // Where the first half ends: the segment and angle of its last sample.
-            if (!sampleTurnRange(contour, omega, n, middle - 1, 1, boundary, &cancel)) {
-                return false;
+        crossings.clear();
+        boundaries.clear();
+        for (std::size_t i = 0; i < count; ++i) {
+            const auto segment = static_cast<std::size_t>(samples.segment[i]);
+            if ((first > 0 || i > 0) && segment != lastSegment) {
+                const std::size_t begin = crossings.size();
+                turn.cross(lastSegment, segment, lastPhi, std::nullopt, crossings);
+                boundaries.push_back({i, begin, crossings.size()});
             }
-            secondSegment = static_cast<std::size_t>(boundary.segment[0]);
-            secondPhi = boundary.phi[0];
-            return sampleRange(contour, turn, omega, n, axis, shift, middle, n, second,
-                               secondSegment, secondPhi, secondSamples, cancel);
-        });
-        // It uses this frame: waited for however the first half ends.
-        const auto waitForSecond = qScopeGuard([&] { secondHalf.waitForFinished(); });
-        const bool firstDone = sampleRange(contour, turn, omega, n, axis, shift, 0, middle,
-                                           builders, lastSegment, lastPhi, firstBuffer, cancel);
-        if (!secondHalf.result() || !firstDone) return false;
-        for (std::size_t c = 0; c < kCurveCount; ++c) {
-            CurveBuilder& a = builders[c];
-            const CurveBuilder& b = second[c];
-            a.points.insert(a.points.end(), b.points.begin(), b.points.end());
-            a.tags.insert(a.tags.end(), b.tags.begin(), b.tags.end());
-            a.lo = std::min(a.lo, b.lo);
-            a.hi = std::max(a.hi, b.hi);
+            lastSegment = segment;
+            lastPhi = samples.phi[i];
         }
-        lastSegment = secondSegment;
-        lastPhi = secondPhi;
-    } else if (!sampleRange(contour, turn, omega, n, axis, shift, 0, n, builders, lastSegment,
-                            lastPhi, firstBuffer, cancel)) {
-        return false;
+        for (std::size_t c = 0; c < kCurveCount; ++c) {
+            const double* y = samplesOf(samples, c);
+            CurveBuilder& b = builders[c];
+            // Runs of one segment, with the joints between them.
+            std::size_t runStart = 0;
+            for (std::size_t r = 0; r <= boundaries.size(); ++r) {
+                const std::size_t runEnd = r < boundaries.size() ? boundaries[r].index : count;
+                b.addRun(xs.data() + runStart, y + runStart, runEnd - runStart,
+                         static_cast<Tag>(first + runStart), shift);
+                if (r == boundaries.size()) break;
+                for (std::size_t j = boundaries[r].begin; j < boundaries[r].end; ++j) {
+                    b.joint(crossings[j], c);
+                }
+                runStart = runEnd;
+            }
+        }
+        if (cancel.load(std::memory_order_relaxed)) return false;
     }
     // The joints between the last sample and the end of the turn, then the value at the end.
-    std::vector<Crossing> crossings;
+    crossings.clear();
     const std::size_t endSegment =
         turn.cross(lastSegment, contour.size(), lastPhi, phiEnd, crossings);
     const Values closing = turn.valuesAt(endSegment, phiEnd);

@@ -64,9 +64,6 @@ struct PlotCurves {
     /// The finest level of a first picture holds at most this many buckets: enough for a
     /// plot 4,096 pixels wide to show the whole turn at its true extremes (see buildPlotCurves).
     static constexpr std::size_t kFirstPictureBuckets = 4'096;
-    /// @brief Samples per half from which a turn is sampled in two halves at once (below, the
-    /// hand-over to the pool costs more than it saves).
-    static constexpr std::size_t kParallelSamplesMin = 16'384;
 
     std::vector<PlotLevel> levels;  ///< finest first
     /// Only the coarser levels were made (a first picture): a second pass adds the finer ones,
@@ -95,12 +92,7 @@ struct PlotCurves {
 /// as in the whole set, so a plot narrower than `maxBuckets` pixels that shows the whole turn
 /// draws exactly what it would with every level. Most of the time of a whole set goes into
 /// its finest levels, which only a zoomed-in plot needs.
-///
-/// A turn of at least 2 · PlotCurves::kParallelSamplesMin samples is sampled in two halves,
-/// the second on the global thread pool, unless `inParallel` is false; the curves are the same
-/// point for point.
 bool buildPlotCurves(const Contour& contour, double omega, std::size_t n, PlotAxis axis,
-                     PlotCurves& out, const std::atomic<bool>& cancel, std::size_t maxBuckets = 0,
-                     bool inParallel = true);
+                     PlotCurves& out, const std::atomic<bool>& cancel, std::size_t maxBuckets = 0);
 
 }  // namespace cam
