@@ -114,13 +114,7 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
         line = new QCPItemStraightLine(m_pressurePlot);
         line->setPen(QPen(QColor(200, 30, 30), 1, Qt::DashLine));
     }
-    // The cursor on a buffered layer of its own: a move redraws one line, not the curve.
-    m_cursorLayer = addBufferedTopLayer(m_pressurePlot, QStringLiteral("cursor"));
-    m_cursor = new QCPItemStraightLine(m_pressurePlot);
-    m_cursor->setLayer(m_cursorLayer);
-    m_cursor->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
-    m_cursor->point1->setCoords(0, 0);
-    m_cursor->point2->setCoords(0, 1);
+    m_cursor = addCursorLine(m_pressurePlot);
     layout->addWidget(m_pressurePlot, 1);
 
     // A click, or Enter on the current line, goes to the check's angle.
@@ -225,12 +219,7 @@ void FollowerPanel::refresh() {
     m_refreshing = false;
 }
 
-void FollowerPanel::setCursorX(double x) {
-    if (m_cursor->point1->coords().x() == x) return;  // drawn there already
-    m_cursor->point1->setCoords(x, 0);
-    m_cursor->point2->setCoords(x, 1);
-    replotLayer(m_cursorLayer);
-}
+void FollowerPanel::setCursorX(double x) { moveCursorLine(m_cursor, x); }
 
 void FollowerPanel::setResult(const ComputeResultPtr& result) {
     const bool curve = result && result->ok() && result->follower;

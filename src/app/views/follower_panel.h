@@ -13,7 +13,6 @@
 
 class QComboBox;
 class QCPItemStraightLine;
-class QCPLayer;
 class QCustomPlot;
 class QLabel;
 class QListWidget;
@@ -66,7 +65,6 @@ private:
     QCustomPlot* m_pressurePlot;
     std::array<QCPItemStraightLine*, 2> m_limitLines{};
     QCPItemStraightLine* m_cursor;
-    QCPLayer* m_cursorLayer;
     int m_problems = 0;
     int m_gesture = 0;
     bool m_refreshing = false;

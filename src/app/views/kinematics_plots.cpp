@@ -72,15 +72,7 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
         side->addElement(1, 0, new QCPLayoutElement(plot));  // spacer: legend stays at the top
         side->setRowStretchFactor(0, 0.001);
         side->setMargins(QMargins(0, 8, 4, 0));
-        // The cursor on a buffered layer of its own: a move redraws one line, not the curves.
-        QCPLayer* cursorLayer = addBufferedTopLayer(plot, QStringLiteral("cursor"));
-        m_cursorLayers[static_cast<std::size_t>(p)] = cursorLayer;
-        auto* cursor = new QCPItemStraightLine(plot);
-        cursor->setLayer(cursorLayer);
-        cursor->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
-        cursor->point1->setCoords(0, 0);
-        cursor->point2->setCoords(0, 1);
-        m_cursors[static_cast<std::size_t>(p)] = cursor;
+        m_cursors[static_cast<std::size_t>(p)] = addCursorLine(plot);
         // Only the bottom plot labels the shared x axis.
         plot->xAxis->setTickLabels(p == 2);
         connect(plot, &QCustomPlot::mouseMove, this, [this, plot](QMouseEvent* e) {
@@ -290,13 +282,7 @@ void KinematicsPlots::resetZoom() {
 }
 
 void KinematicsPlots::setCursorX(double x) {
-    for (std::size_t p = 0; p < m_plots.size(); ++p) {
-        // Where it is already (a new result redraws the cursor where it was): nothing to redraw.
-        if (m_cursors[p]->point1->coords().x() == x) continue;
-        m_cursors[p]->point1->setCoords(x, 0);
-        m_cursors[p]->point2->setCoords(x, 1);
-        replotLayer(m_cursorLayers[p]);
-    }
+    for (QCPItemStraightLine* cursor : m_cursors) moveCursorLine(cursor, x);
 }
 
 void KinematicsPlots::rebuildJointMarkers() {

@@ -62,7 +62,6 @@ private:
 
     std::array<QCustomPlot*, kPlotCount> m_plots{};
     std::array<QCPItemStraightLine*, kPlotCount> m_cursors{};
-    std::array<QCPLayer*, kPlotCount> m_cursorLayers{};
     std::vector<QCPItemStraightLine*> m_jointMarkers;
     StaleLabel* m_staleLabel = nullptr;
     ComputeResultPtr m_result;  ///< the result drawn (the last one that could be computed)

@@ -166,14 +166,7 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
         QCPGraph* follower = plot->addGraph();
         follower->setName(tr("follower on the contour"));
         follower->setPen(kFollowerPen);
-        // The cursor on a buffered layer of its own: a move redraws one line, not the curves.
-        m_cursorLayers[p] = addBufferedTopLayer(plot, QStringLiteral("cursor"));
-        auto* cursor = new QCPItemStraightLine(plot);
-        cursor->setLayer(m_cursorLayers[p]);
-        cursor->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
-        cursor->point1->setCoords(0, 0);
-        cursor->point2->setCoords(0, 1);
-        m_cursors[p] = cursor;
+        m_cursors[p] = addCursorLine(plot);
         plot->axisRect()->setMarginGroup(QCP::msLeft | QCP::msRight, group);
         m_plots[p] = plot;
         plots->addWidget(plot, 1);
@@ -336,12 +329,7 @@ QString MotionDesignPanel::notesText() const { return m_notes->text(); }
 
 void MotionDesignPanel::setCursorX(double x) {
     if (!m_plotArea->isVisible()) return;
-    for (std::size_t p = 0; p < 4; ++p) {
-        if (m_cursors[p]->point1->coords().x() == x) continue;  // drawn there already
-        m_cursors[p]->point1->setCoords(x, 0);
-        m_cursors[p]->point2->setCoords(x, 1);
-        replotLayer(m_cursorLayers[p]);
-    }
+    for (QCPItemStraightLine* cursor : m_cursors) moveCursorLine(cursor, x);
 }
 
 void MotionDesignPanel::setResult(const ComputeResultPtr& result) {

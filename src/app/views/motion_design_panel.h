@@ -15,7 +15,6 @@
 class QAction;
 class QCheckBox;
 class QCPItemStraightLine;
-class QCPLayer;
 class QCustomPlot;
 class QLabel;
 class QPushButton;
@@ -81,7 +80,6 @@ private:
     QWidget* m_plotArea;
     std::array<QCustomPlot*, 4> m_plots{};
     std::array<QCPItemStraightLine*, 4> m_cursors{};
-    std::array<QCPLayer*, 4> m_cursorLayers{};
     std::vector<QCPItemStraightLine*> m_joints;
     QString m_reportText;
     int m_gesture = 0;

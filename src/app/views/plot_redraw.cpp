@@ -150,4 +150,21 @@ QCPLayer* addBufferedTopLayer(QCustomPlot* plot, const QString& name) {
     return layer;
 }
 
+QCPItemStraightLine* addCursorLine(QCustomPlot* plot) {
+    QCPLayer* layer = addBufferedTopLayer(plot, QStringLiteral("cursor"));
+    auto* cursor = new QCPItemStraightLine(plot);
+    cursor->setLayer(layer);
+    cursor->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
+    cursor->point1->setCoords(0, 0);
+    cursor->point2->setCoords(0, 1);
+    return cursor;
+}
+
+void moveCursorLine(QCPItemStraightLine* cursor, double x) {
+    if (cursor->point1->coords().x() == x) return;  // drawn there already
+    cursor->point1->setCoords(x, 0);
+    cursor->point2->setCoords(x, 1);
+    replotLayer(cursor->layer());
+}
+
 }  // namespace cam

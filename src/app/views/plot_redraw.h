@@ -45,4 +45,12 @@ void replotLayer(QCPLayer* layer);
 /// each: fewer buffers to clear on every replot and to compose on every paint.
 QCPLayer* addBufferedTopLayer(QCustomPlot* plot, const QString& name);
 
+/// @brief Adds the plot's cursor: a dashed vertical line at x = 0 on a buffered top layer
+/// "cursor" of its own, so that moving it redraws one line, not the curves.
+QCPItemStraightLine* addCursorLine(QCustomPlot* plot);
+
+/// @brief Moves a cursor made by addCursorLine() to x and redraws its layer (replotLayer());
+/// a cursor already there is not redrawn (a new result sets every cursor again).
+void moveCursorLine(QCPItemStraightLine* cursor, double x);
+
 }  // namespace cam
