@@ -1570,7 +1570,7 @@
 <context>
     <name>PlotKind</name>
     <message>
-        <location filename="../../src/app/export/plot_picture.cpp" line="+103" />
+        <location filename="../../src/app/export/plot_picture.cpp" line="+117" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
@@ -1603,6 +1603,21 @@
         <location line="+2" />
         <source>Pressure angle</source>
         <translation>Druckwinkel</translation>
+    </message>
+</context>
+<context>
+    <name>cam::Autosave</name>
+    <message>
+        <location filename="../../src/app/files/autosave.cpp" line="+184" />
+        <source>The recovery copy %1 cannot be read:
+%2</source>
+        <translation>Die Wiederherstellungskopie %1 ist nicht lesbar:
+%2</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>The unsaved changes were restored, but their new recovery copy could not be written (%1); the old copy %2 is kept.</source>
+        <translation>Die ungespeicherten Änderungen wurden wiederhergestellt, aber ihre neue Wiederherstellungskopie konnte nicht geschrieben werden (%1); die alte Kopie %2 bleibt erhalten.</translation>
     </message>
 </context>
 <context>
@@ -1656,7 +1671,7 @@
 <context>
     <name>cam::ComputeWorker</name>
     <message>
-        <location filename="../../src/app/engine/compute_engine.cpp" line="+45" />
+        <location filename="../../src/app/engine/compute_engine.cpp" line="+47" />
         <source>out of memory — fewer samples per turn would need less</source>
         <translation>zu wenig Arbeitsspeicher – weniger Abtastpunkte pro Umdrehung bräuchten weniger</translation>
     </message>
@@ -1876,7 +1891,7 @@
         <translation>Übergänge</translation>
     </message>
     <message>
-        <location line="+450" />
+        <location line="+452" />
         <location line="+8" />
         <source>Shape segment %1</source>
         <translation>Segment %1 formen</translation>
@@ -2542,7 +2557,7 @@
         <translation>Druckwinkel [°]</translation>
     </message>
     <message>
-        <location line="+147" />
+        <location line="+142" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -2766,7 +2781,7 @@
         <translation>Stößel</translation>
     </message>
     <message>
-        <location line="+117" />
+        <location line="+109" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -3307,19 +3322,19 @@
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="+10" />
-        <location line="+42" />
+        <location line="+11" />
+        <location line="+31" />
         <source>an untitled project</source>
         <translation>einem unbenannten Projekt</translation>
     </message>
     <message>
-        <location line="-39" />
-        <location line="+20" />
+        <location line="-28" />
+        <location line="+24" />
         <source>Recover Unsaved Changes</source>
         <translation>Ungesicherte Änderungen wiederherstellen</translation>
     </message>
     <message>
-        <location line="-19" />
+        <location line="-23" />
         <source>Camwright did not close properly. Unsaved changes to %1, autosaved %2, can be restored.</source>
         <translation>Camwright wurde nicht ordnungsgemäß beendet. Ungesicherte Änderungen an %1, automatisch gesichert %2, können wiederhergestellt werden.</translation>
     </message>
@@ -3349,29 +3364,17 @@
         <translation>Die Wiederherstellungskopie wurde verworfen.</translation>
     </message>
     <message>
-        <location line="+15" />
-        <source>The recovery copy %1 cannot be read:
-%2</source>
-        <translation>Die Wiederherstellungskopie %1 ist nicht lesbar:
-%2</translation>
-    </message>
-    <message>
-        <location line="+9" />
+        <location line="+13" />
         <source>Restored the unsaved changes of %1: save them to keep them.</source>
         <translation>Ungesicherte Änderungen an %1 wiederhergestellt: speichern, um sie zu behalten.</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>%1 is no recovery copy of a session that ended.</source>
-        <translation>%1 ist keine Wiederherstellungskopie einer beendeten Sitzung.</translation>
-    </message>
-    <message>
-        <location line="+47" />
+        <location line="+51" />
         <source>Project renamed to “%1”</source>
         <translation>Projekt in „%1“ umbenannt</translation>
     </message>
     <message>
-        <location line="+60" />
+        <location line="+58" />
         <source>not computed: %1</source>
         <translation>nicht berechnet: %1</translation>
     </message>
@@ -3391,12 +3394,12 @@
         <translation>Berechnung fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+23" />
         <source>%1 samples computed in %2</source>
         <translation>%1 Abtastpunkte in %2 berechnet</translation>
     </message>
     <message>
-        <location line="+60" />
+        <location line="+68" />
         <source>Valid · no contour yet: Synthesize (F6) makes it</source>
         <translation>Gültig · noch keine Kontur: Synthetisieren (F6) erzeugt sie</translation>
     </message>
@@ -3426,12 +3429,12 @@
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-534" />
+        <location line="-539" />
         <source>Fit Windows</source>
         <translation>Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../../src/app/mainwindow_exports.cpp" line="+49" />
+        <location filename="../../src/app/mainwindow_exports.cpp" line="+50" />
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
@@ -3446,7 +3449,7 @@
         <translation>Diagramm exportieren…</translation>
     </message>
     <message>
-        <location line="+64" />
+        <location line="+69" />
         <source>Nothing has been computed yet.</source>
         <translation>Es wurde noch nichts berechnet.</translation>
     </message>
@@ -3518,7 +3521,7 @@
         <translation>Exportiere %1 nach %2…</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+22" />
         <source>Exported %1 to %2 (%3)</source>
         <translation>%1 nach %2 exportiert (%3)</translation>
     </message>
@@ -3623,7 +3626,7 @@
         <translation>Stößel auf der Kontur</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+24" />
         <source>Remove design</source>
         <translation>Entwurf entfernen</translation>
     </message>
@@ -3671,7 +3674,7 @@
         </translation>
     </message>
     <message>
-        <location line="+87" />
+        <location line="+83" />
         <source>The follower on the contour as it is, against the law (%1 samples): lift %2, velocity %3, acceleration %4.</source>
         <translation>Der Stößel auf der jetzigen Kontur gegenüber dem Gesetz (%1 Stützstellen): Hub %2, Geschwindigkeit %3, Beschleunigung %4.</translation>
     </message>
@@ -3848,7 +3851,7 @@ T = %3</translation>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+120" />
+        <location line="+123" />
         <source>… and %1 more</source>
         <translation>… und %1 weitere</translation>
     </message>
@@ -3856,12 +3859,12 @@ T = %3</translation>
 <context>
     <name>cam::ProjectFiles</name>
     <message>
-        <location filename="../../src/app/files/project_files.cpp" line="+65" />
+        <location filename="../../src/app/files/project_files.cpp" line="+70" />
         <source>%1 cannot be opened: another file is being opened</source>
         <translation>%1 kann nicht geöffnet werden: Es wird gerade eine andere Datei geöffnet</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+30" />
         <source>Opening</source>
         <translation>Öffnen</translation>
     </message>
@@ -3891,6 +3894,11 @@ T = %3</translation>
 %2</source>
         <translation>%1 kann nicht geöffnet werden:
 %2</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>%1 is open in another Camwright window too: a save in either asks before it overwrites the other's</source>
+        <translation>%1 ist auch in einem anderen Camwright-Fenster geöffnet: Speichern fragt in beiden, bevor es die Änderungen des anderen überschreibt</translation>
     </message>
     <message>
         <location line="+7" />
@@ -3932,24 +3940,46 @@ T = %3</translation>
     </message>
     <message>
         <location line="+10" />
-        <location line="+9" />
+        <location line="+8" />
+        <location line="+14" />
         <source>Open Project</source>
         <translation>Projekt öffnen</translation>
     </message>
     <message>
-        <location line="-7" />
-        <location line="+23" />
+        <location line="-20" />
+        <location line="+50" />
         <source>Camwright projects (*.cam.json)</source>
         <translation>Camwright-Projekte (*.cam.json)</translation>
     </message>
     <message>
-        <location line="-9" />
-        <location line="+25" />
+        <location line="-43" />
+        <source>%1 is already open in another Camwright window.</source>
+        <translation>%1 ist bereits in einem anderen Camwright-Fenster geöffnet.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Open it here too? Whichever window saves second is asked before it overwrites the other's changes.</source>
+        <translation>Auch hier öffnen? Das Fenster, das als zweites speichert, wird gefragt, bevor es die Änderungen des anderen überschreibt.</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>Nothing to save: %1 holds this project as it is</source>
+        <translation>Nichts zu speichern: %1 enthält das Projekt, wie es ist</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Nothing to save here; %1 was changed on disk by another program or window</source>
+        <translation>Hier gibt es nichts zu speichern; %1 wurde auf dem Datenträger von einem anderen Programm oder Fenster geändert</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <location line="+30" />
+        <location line="+5" />
         <source>Save Project</source>
         <translation>Projekt speichern</translation>
     </message>
     <message>
-        <location line="-17" />
+        <location line="-27" />
         <location line="+7" />
         <source>Save Project As</source>
         <translation>Projekt speichern unter</translation>
@@ -3962,7 +3992,63 @@ Do you want to replace it?</source>
 Möchten Sie die Datei ersetzen?</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+20" />
+        <source>%1 has been changed on disk since this window opened or saved it.</source>
+        <translation>%1 wurde auf dem Datenträger geändert, seit dieses Fenster die Datei geöffnet oder gespeichert hat.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Another program or Camwright window has written it. Overwrite its changes with this window's project?</source>
+        <translation>Ein anderes Programm oder Camwright-Fenster hat sie geschrieben. Dessen Änderungen mit dem Projekt dieses Fensters überschreiben?</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Overwrite</source>
+        <translation>Überschreiben</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Not saved: %1 keeps the changes made on disk</source>
+        <translation>Nicht gespeichert: %1 behält die auf dem Datenträger gemachten Änderungen</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>%1 was deleted or moved away on disk; Save writes it again</source>
+        <translation>%1 wurde auf dem Datenträger gelöscht oder verschoben; Speichern schreibt die Datei neu</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <location line="+20" />
+        <source>File Changed on Disk</source>
+        <translation>Datei auf dem Datenträger geändert</translation>
+    </message>
+    <message>
+        <location line="-19" />
+        <source>%1 has been changed on disk by another program or window.</source>
+        <translation>%1 wurde auf dem Datenträger von einem anderen Programm oder Fenster geändert.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Reload it and discard the unsaved changes made here? Keep them, and Save asks before it overwrites the file.</source>
+        <translation>Neu laden und die hier gemachten ungespeicherten Änderungen verwerfen? Werden sie behalten, fragt Speichern, bevor es die Datei überschreibt.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Reload it? Keep this window's version, and Save asks before it overwrites the file.</source>
+        <translation>Neu laden? Wird die Fassung dieses Fensters behalten, fragt Speichern, bevor es die Datei überschreibt.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Reload</source>
+        <translation>Neu laden</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Keep This Version</source>
+        <translation>Diese Fassung behalten</translation>
+    </message>
+    <message>
+        <location line="+15" />
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>
@@ -3977,7 +4063,7 @@ Möchten Sie die Datei ersetzen?</translation>
         <translation>Beispiel öffnen</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+26" />
         <source>Open Recent</source>
         <translation>Zuletzt geöffnet</translation>
     </message>
@@ -4005,7 +4091,7 @@ Möchten Sie die Datei ersetzen?</translation>
 <context>
     <name>cam::SegmentTableModel</name>
     <message>
-        <location filename="../../src/app/models/segment_table_model.cpp" line="+82" />
+        <location filename="../../src/app/models/segment_table_model.cpp" line="+104" />
         <location line="+52" />
         <source>Arc</source>
         <translation>Bogen</translation>
@@ -4290,7 +4376,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <translation>|j|</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+17" />
         <source>State of the follower at the cursor: move the mouse over a plot</source>
         <translation>Zustand des Stößels am Cursor: Maus über ein Diagramm bewegen</translation>
     </message>
@@ -4311,7 +4397,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../../src/app/main.cpp" line="+78" />
+        <location filename="../../src/app/main.cpp" line="+81" />
         <source>Design and inspect cam contours.</source>
         <translation>Kurvenkonturen entwerfen und prüfen.</translation>
     </message>

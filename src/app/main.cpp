@@ -14,6 +14,7 @@
 
 #include "engine/memory_reuse.h"
 #include "files/autosave.h"
+#include "files/project_files.h"
 #include "mainwindow.h"
 #include "screenshot.h"
 #include "translations.h"
@@ -124,6 +125,8 @@ int main(int argc, char** argv) {
     }
     const bool exportPlot = parser.isSet(exportPlotOption);
     const bool headless = parser.isSet(screenshotOption) || exportPlot;
+    // A picture drawn for a script is not a file the user opened.
+    if (headless) window.files()->setRemembersRecentFiles(false);
     if (exportPlot && files.isEmpty()) {
         std::fprintf(stderr, "camwright: --export-plot: give the PROJECT to draw\n");
         return 1;

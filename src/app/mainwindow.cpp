@@ -763,6 +763,7 @@ void MainWindow::setUpIcons() {
 QString MainWindow::loadFile(const QString& path) { return m_files->load(path); }
 
 bool MainWindow::offerRecovery() {
+    // Claimed while the question is open: a second window starting meanwhile offers another.
     const std::vector<Autosave::Orphan> orphans = m_autosave->orphans();
     if (orphans.empty()) return false;
     const Autosave::Orphan& newest = orphans.front();
@@ -787,34 +788,21 @@ bool MainWindow::offerRecovery() {
         return false;
     }
     if (box.clickedButton() != restore) return false;
-    const QString problem = restoreRecovery(newest.project);
-    if (!problem.isEmpty()) {
-        QMessageBox::warning(this, tr("Recover Unsaved Changes"), problem);
-        return false;
-    }
-    return true;
+    return restoreRecovery(newest);
 }
 
-QString MainWindow::restoreRecovery(const QString& recoveryCopy) {
-    auto loaded = loadProjectStructure(QFile::encodeName(recoveryCopy).toStdString());
-    if (!loaded.ok()) {
-        return tr("The recovery copy %1 cannot be read:\n%2")
-            .arg(QDir::toNativeSeparators(recoveryCopy), diagnosticsText(loaded.errors()));
-    }
-    for (const Autosave::Orphan& o : m_autosave->orphans()) {
-        if (o.project != recoveryCopy) continue;
-        m_document->reset(std::move(loaded).value(), o.original);
-        m_document->markUnsaved();
-        Autosave::discard(o);  // this session's own copy takes over
+bool MainWindow::restoreRecovery(const Autosave::Orphan& orphan) {
+    QString problem;
+    const bool restored = m_autosave->adopt(orphan, &problem);
+    if (!problem.isEmpty()) QMessageBox::warning(this, tr("Recover Unsaved Changes"), problem);
+    if (restored) {
         statusBar()->showMessage(
             tr("Restored the unsaved changes of %1: save them to keep them.")
-                .arg(o.original.isEmpty() ? tr("an untitled project")
-                                          : QDir::toNativeSeparators(o.original)),
+                .arg(orphan.original.isEmpty() ? tr("an untitled project")
+                                               : QDir::toNativeSeparators(orphan.original)),
             10000);
-        return {};
     }
-    return tr("%1 is no recovery copy of a session that ended.")
-        .arg(QDir::toNativeSeparators(recoveryCopy));
+    return restored;
 }
 
 QString MainWindow::saveFile(const QString& path) { return m_files->save(path); }

@@ -10,6 +10,7 @@
 #include "design/synthesis.h"
 #include "engine/compute_result.h"
 #include "export/export_request.h"
+#include "files/autosave.h"
 
 class QCustomPlot;
 class QComboBox;
@@ -35,7 +36,6 @@ class MachiningPanel;
 class MotionPanel;
 class MotionDesignPanel;
 class SynthesisRunner;
-class Autosave;
 class ProjectDocument;
 class ProjectFiles;
 struct EditOutcome;
@@ -82,11 +82,13 @@ public:
     [[nodiscard]] QAction* synthesizeAction() const { return m_synthesizeAction; }
 
     [[nodiscard]] Autosave* autosave() const { return m_autosave; }
+    [[nodiscard]] ProjectFiles* files() const { return m_files; }
     /// @brief After a crash: offers to restore the newest recovery copy a dead session left
     /// (Restore, Discard, or keep it for later). True when a project was restored.
     bool offerRecovery();
-    /// @brief Opens a recovery copy as the project it was (its file, unsaved) and removes it.
-    QString restoreRecovery(const QString& recoveryCopy);
+    /// @brief Opens a recovery copy as the project it was (its file, unsaved); the copy goes
+    /// once this session's own holds it. Problems are shown; true when restored.
+    bool restoreRecovery(const Autosave::Orphan& orphan);
 
     /// @brief Starts synthesising the contour from the design in a worker (Synthesize, F6);
     /// false when there is no design or a synthesis is running. Its end is reported by
@@ -157,6 +159,8 @@ private:
                       const QString& problem);
     /// The project's file name without .cam.json ("untitled" before it has one).
     [[nodiscard]] QString exportBaseName() const;
+    /// The project's name, or without one its file's base name: the title of a picture.
+    [[nodiscard]] QString exportTitle() const;
     void setUpDocks();
     /// Shows what a contour edit did (status bar, selection) or why not (a message box titled
     /// `title`; none when empty).

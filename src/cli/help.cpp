@@ -253,7 +253,11 @@ std::string overviewHelp() {
     for (const CommandHelp& c : commandTable()) {
         out += "  " + c.name + std::string(12 - c.name.size(), ' ') + c.summary + "\n";
     }
-    out += "\nunits: mm, s, degrees; v in mm/s, a in mm/s², j in mm/s³.\n" + kExitCodes;
+    out += "\nunits: mm, s, degrees; v in mm/s, a in mm/s², j in mm/s³.\n"
+           "--out FILE: written to a temporary file beside it, then renamed over it: FILE\n"
+           "    is the old file or the whole new one; a symlink stays a symlink, mode and\n"
+           "    owner are kept, but a hard link to the old FILE keeps the old content.\n" +
+           kExitCodes;
     return out;
 }
 

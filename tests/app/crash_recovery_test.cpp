@@ -7,23 +7,32 @@
 
 #include <gtest/gtest.h>
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QStandardPaths>
+#include <QSysInfo>
 #include <QTemporaryDir>
 #include <QThread>
+#include <atomic>
 #include <functional>
+#include <set>
+#include <thread>
+
+#include <unistd.h>
 #include <limits>
 
 #include "document/commands.h"
 #include "document/project_document.h"
 #include "files/autosave.h"
+#include "files/session_lock.h"
 #include "io/project_json.h"
 #include "test_support.h"
 
@@ -186,19 +195,15 @@ protected:
         return QDir(m_recovery).entryList({"session-*.cam.json"}, QDir::Files);
     }
 
-    QTemporaryDir m_home;
-    VirtualDisplay m_display{m_home.path()};
-    QString m_project, m_recovery;
-};
-
-TEST_F(CrashRecovery, AKilledSessionsEditComesBackOnTheNextStart) {
-    ASSERT_FALSE(m_display.name().isEmpty()) << "Xvfb did not start";
-    const QString before = readAll(m_project);
-    ASSERT_EQ(firstCentreX(m_project), 25.73752542);
-    {
+    /// Opens the project, types 26.5 into row 0's "Centre x" cell, waits for the recovery copy
+    /// to hold it and kills the application with SIGKILL; its process id.
+    qint64 killAfterAnEdit() {
         QProcess app;
         start(app, {m_project});
-        ASSERT_TRUE(waitForWindow("cam.cam.json")) << appLog();
+        if (!waitForWindow("cam.cam.json")) {
+            ADD_FAILURE() << appLog();
+            return 0;
+        }
         QThread::msleep(2000);  // laid out and computed
         // The window opens at 1400×860 in the top-left corner (no window manager); row 0's
         // "Centre x" cell of the Segments dock is at (121, 647). Type 26.5 into it.
@@ -208,18 +213,31 @@ TEST_F(CrashRecovery, AKilledSessionsEditComesBackOnTheNextStart) {
         xdotool({"type", "26.5"});
         xdotool({"key", "Return"});
         // The recovery copy holds the edit within a few autosave intervals.
-        ASSERT_TRUE(waitFor(
+        const bool copied = waitFor(
             [&] {
                 const QStringList copies = recoveryCopies();
                 return copies.size() == 1 &&
                        firstCentreX(QDir(m_recovery).filePath(copies.front())) == 26.5;
             },
-            10000))
-            << "no recovery copy with the edit in " << m_recovery.toStdString() << ": "
-            << recoveryCopies().join(", ").toStdString();
+            10000);
+        EXPECT_TRUE(copied) << "no recovery copy with the edit in " << m_recovery.toStdString()
+                            << ": " << recoveryCopies().join(", ").toStdString();
+        const qint64 pid = app.processId();
         app.kill();  // SIGKILL: no chance to clean up
-        ASSERT_TRUE(app.waitForFinished(5000));
+        EXPECT_TRUE(app.waitForFinished(5000));
+        return pid;
     }
+
+    QTemporaryDir m_home;
+    VirtualDisplay m_display{m_home.path()};
+    QString m_project, m_recovery;
+};
+
+TEST_F(CrashRecovery, AKilledSessionsEditComesBackOnTheNextStart) {
+    ASSERT_FALSE(m_display.name().isEmpty()) << "Xvfb did not start";
+    const QString before = readAll(m_project);
+    ASSERT_EQ(firstCentreX(m_project), 25.73752542);
+    killAfterAnEdit();
     EXPECT_EQ(readAll(m_project), before);  // the project file was never touched
     ASSERT_EQ(recoveryCopies().size(), 1u);
     {
@@ -263,6 +281,65 @@ TEST_F(CrashRecovery, AKilledSessionsEditComesBackOnTheNextStart) {
     }
     EXPECT_TRUE(recoveryCopies().isEmpty());
     EXPECT_TRUE(QDir(m_recovery).entryList({"session-*"}, QDir::Files).isEmpty());
+}
+
+TEST_F(CrashRecovery, TheNextSessionOffersTheCopyEvenWithTheKilledOnesProcessId) {
+    // The probe's data loss, as it happens where the application always gets the same process
+    // id (containers, systemd): the next session took the copy for its own, did not offer it
+    // and deleted it at its clean end. The kernel is asked for the killed session's id.
+    ASSERT_FALSE(m_display.name().isEmpty()) << "Xvfb did not start";
+    const qint64 killed = killAfterAnEdit();
+    ASSERT_GT(killed, 1);
+    ASSERT_EQ(recoveryCopies().size(), 1u);
+    QProcess app;
+    for (int attempt = 0; attempt < 20; ++attempt) {
+        QFile last("/proc/sys/kernel/ns_last_pid");
+        if (!last.open(QIODevice::WriteOnly) || last.write(QByteArray::number(killed - 1)) <= 0 ||
+            !last.flush()) {
+            GTEST_SKIP() << "cannot choose the next process id here (/proc/sys/kernel/"
+                            "ns_last_pid needs root); Autosave.AnEndedSessionsCopyIsOffered"
+                            "WhateverProcessIdItsLockNames covers it in-process";
+        }
+        last.close();
+        start(app, {});
+        if (app.processId() == killed) break;
+        app.kill();
+        app.waitForFinished(5000);
+    }
+    if (app.processId() != killed) {
+        GTEST_SKIP() << "another process took id " << killed << " each time";
+    }
+    ASSERT_TRUE(waitForWindow("Recover Unsaved Changes")) << appLog();
+    // Escape answers Later: the copy stays for the next start; then a clean quit.
+    bool answered = false;
+    for (int attempt = 0; attempt < 10 && !answered; ++attempt) {
+        const QString box =
+            xdotool({"search", "--onlyvisible", "--name", "Recover Unsaved Changes"})
+                .split('\n')
+                .front();
+        if (!box.isEmpty()) {
+            QThread::msleep(300);
+            xdotool({"mousemove", "--window", box, "20", "20"});
+            xdotool({"key", "Escape"});
+        }
+        answered = waitFor(
+            [&] {
+                return xdotool({"search", "--onlyvisible", "--name", "Recover Unsaved Changes"})
+                    .isEmpty();
+            },
+            2000);
+    }
+    ASSERT_TRUE(answered) << visibleWindowNames().toStdString();
+    ASSERT_TRUE(waitForWindow("Camwright")) << appLog();
+    QThread::msleep(1000);
+    xdotool({"mousemove", "300", "849", "click", "1"});
+    QThread::msleep(300);
+    xdotool({"key", "ctrl+q"});
+    ASSERT_TRUE(app.waitForFinished(10000)) << "the app did not quit";
+    EXPECT_EQ(app.exitCode(), 0);
+    const QStringList copies = recoveryCopies();
+    ASSERT_EQ(copies.size(), 1u);
+    EXPECT_EQ(firstCentreX(QDir(m_recovery).filePath(copies.front())), 26.5);
 }
 
 /// The six-lobe example in `doc`, as if opened from `path`.
@@ -329,5 +406,188 @@ TEST(Autosave, NoCopyExistsWithoutTheNoteOfItsFile) {
     EXPECT_TRUE(readAll(note).contains("cam.cam.json"));
 }
 
+/// What a session that ended without cleaning up leaves in `folder` as `<base>.*`: the six-lobe
+/// project with its first centre at `x` as the copy, a note naming `original`, and a lock file
+/// nobody holds whose text (what QLockFile writes: process id, program, host) is `lockText`.
+void leaveEndedSession(const QString& folder, const QString& base, double x,
+                       const QString& original, const QByteArray& lockText) {
+    QDir().mkpath(folder);
+    ProjectDocument doc;
+    ASSERT_TRUE(openSixLobe(doc, original));
+    moveFirstCentreX(doc, x);
+    QFile copy(folder + "/" + base + ".cam.json");
+    ASSERT_TRUE(copy.open(QIODevice::WriteOnly));
+    copy.write(QByteArray::fromStdString(serializeProject(doc.project())));
+    QFile note(folder + "/" + base + ".json");
+    ASSERT_TRUE(note.open(QIODevice::WriteOnly));
+    note.write(
+        QJsonDocument(QJsonObject{{"original", original}, {"saved", "2026-11-27T10:00:00.000Z"}})
+            .toJson());
+    QFile lock(folder + "/" + base + ".lock");
+    ASSERT_TRUE(lock.open(QIODevice::WriteOnly));
+    lock.write(lockText);
+}
+
+/// The lock text QLockFile writes for process (or thread) `id` of the program running here:
+/// to QLockFile such a lock belongs to a live session.
+QByteArray lockTextOf(qint64 id) {
+    const QString program = QFileInfo(QFile::symLinkTarget("/proc/self/exe")).fileName();
+    return QByteArray::number(id) + '\n' + program.toUtf8() + '\n' +
+           QSysInfo::machineHostName().toUtf8() + '\n';
+}
+
+QStringList filesIn(const QString& folder) {
+    return QDir(folder).entryList(QDir::Files | QDir::Hidden, QDir::Name);
+}
+
+TEST(Autosave, AnEndedSessionsCopyIsOfferedWhateverProcessIdItsLockNames) {
+    // The probe's data loss: the next session was given the dead one's process id, skipped its
+    // copy as its own and deleted it. Here the dead sessions' locks name this very process (as
+    // a session with the reused id would find) and a live thread of it: neither may hide a
+    // copy, and none of them is deleted unseen.
+    QTemporaryDir home;
+    const QString folder = home.filePath("recovery");
+    const qint64 pid = QCoreApplication::applicationPid();
+    std::atomic<qint64> threadId{0};
+    std::atomic<bool> stop{false};
+    std::thread live([&] {
+        threadId = static_cast<qint64>(::gettid());
+        while (!stop) QThread::msleep(5);
+    });
+    while (threadId == 0) QThread::msleep(1);
+    // The name this process would have had under the old naming, the old naming with another
+    // id, and the current naming.
+    leaveEndedSession(folder, QStringLiteral("session-%1-1").arg(pid), 26.5, "/p/a.cam.json",
+                      lockTextOf(pid));
+    leaveEndedSession(folder, QStringLiteral("session-%1-1").arg(threadId.load()), 27.5,
+                      "/p/b.cam.json", lockTextOf(threadId));
+    leaveEndedSession(folder, "session-0123456789abcdef0123456789abcdef", 28.5, "/p/c.cam.json",
+                      lockTextOf(pid));
+    {
+        ProjectDocument doc;
+        ASSERT_TRUE(openSixLobe(doc, home.filePath("mine.cam.json")));
+        Autosave autosave(&doc, folder);
+        const std::vector<Autosave::Orphan> orphans = autosave.orphans();
+        std::set<double> offered;
+        for (const Autosave::Orphan& o : orphans) offered.insert(firstCentreX(o.project));
+        EXPECT_EQ(offered, (std::set<double>{26.5, 27.5, 28.5}));
+        // This session's own name is none of theirs, and it ends (saved, then cleanly) without
+        // touching them.
+        EXPECT_FALSE(autosave.recoveryPath().contains(QString::number(pid)));
+        moveFirstCentreX(doc, 30.0);
+        EXPECT_TRUE(autosave.writeNow().isEmpty());
+        doc.markSaved(doc.filePath());
+    }
+    stop = true;
+    live.join();
+    EXPECT_EQ(QDir(folder).entryList({"session-*.cam.json"}, QDir::Files).size(), 3u)
+        << filesIn(folder).join(", ").toStdString();
+}
+
+TEST(Autosave, ALiveSessionsCopyIsNobodysOrphanAndAnOfferedCopyIsClaimed) {
+    QTemporaryDir home;
+    const QString folder = home.filePath("recovery");
+    ProjectDocument first, second, third;
+    ASSERT_TRUE(openSixLobe(first, home.filePath("a.cam.json")));
+    ASSERT_TRUE(openSixLobe(second, home.filePath("b.cam.json")));
+    ASSERT_TRUE(openSixLobe(third, home.filePath("c.cam.json")));
+    Autosave a(&first, folder), b(&second, folder);
+    moveFirstCentreX(first, 26.5);
+    ASSERT_TRUE(a.writeNow().isEmpty());
+    // Another window of the same process, alive: not offered.
+    EXPECT_TRUE(b.orphans().empty());
+    leaveEndedSession(folder, "session-dead", 27.5, "/p/dead.cam.json", lockTextOf(1));
+    {
+        // While one starting session offers the ended one's copy, another does not.
+        const std::vector<Autosave::Orphan> offered = b.orphans();
+        ASSERT_EQ(offered.size(), 1u);
+        EXPECT_EQ(firstCentreX(offered.front().project), 27.5);
+        Autosave c(&third, folder);
+        EXPECT_TRUE(c.orphans().empty());
+    }
+    // Once it is no longer offered ("Later"), it is offered again.
+    ASSERT_EQ(b.orphans().size(), 1u);
+}
+
+TEST(Autosave, NoSessionDeletesACopyItDidNotWrite) {
+    QTemporaryDir home;
+    const QString folder = home.filePath("recovery");
+    ProjectDocument doc;
+    ASSERT_TRUE(openSixLobe(doc, home.filePath("a.cam.json")));
+    Autosave autosave(&doc, folder);
+    // A file at this session's own name that it never wrote (whatever put it there).
+    ASSERT_TRUE(QDir().mkpath(folder));
+    {
+        QFile foreign(autosave.recoveryPath());
+        ASSERT_TRUE(foreign.open(QIODevice::WriteOnly));
+        foreign.write("{}");
+    }
+    moveFirstCentreX(doc, 26.5);
+    doc.markSaved(doc.filePath());  // saved: this session's copy would go
+    doc.reset(doc.project(), home.filePath("b.cam.json"));
+    EXPECT_TRUE(QFile::exists(autosave.recoveryPath()));
+}
+
+TEST(Autosave, EndedSessionsWithoutACopyLeaveNothingBehind) {
+    // The probe found 119 lock files of killed sessions that nothing removed.
+    QTemporaryDir home;
+    const QString folder = home.filePath("recovery");
+    QDir().mkpath(folder);
+    const auto touch = [&](const QString& name) {
+        QFile f(folder + "/" + name);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write("1\ncamwright\nhost\n");
+    };
+    touch("session-4242-1.lock");           // an older version's, killed while saved
+    touch("session-aaaa.lock");             // killed before it had a copy …
+    touch("session-aaaa.json");             // … but after its note
+    touch("session-bbbb.lock");             // killed while writing its copy:
+    touch("session-bbbb.cam.json.k2Xq9a");  // QSaveFile's temporary
+    // A live session without a copy yet keeps its lock.
+    auto live = SessionLock::create(folder + "/session-cccc.lock");
+    ASSERT_TRUE(live);
+    ProjectDocument doc;
+    ASSERT_TRUE(openSixLobe(doc, home.filePath("a.cam.json")));
+    Autosave autosave(&doc, folder);
+    EXPECT_TRUE(autosave.orphans().empty());
+    EXPECT_EQ(filesIn(folder), QStringList{"session-cccc.lock"});
+    // This session has no copy, so no files at all (a headless run leaves nothing).
+    EXPECT_FALSE(QFile::exists(autosave.lockPath()));
+}
+
+TEST(Autosave, RestoreWritesThisSessionsCopyBeforeTheOldOneGoes) {
+    QTemporaryDir home;
+    const QString folder = home.filePath("recovery");
+    leaveEndedSession(folder, "session-dead", 27.5, home.filePath("cam.cam.json"), lockTextOf(1));
+    ProjectDocument doc;
+    Autosave autosave(&doc, folder);
+    std::vector<Autosave::Orphan> orphans = autosave.orphans();
+    ASSERT_EQ(orphans.size(), 1u);
+    QString problem;
+    ASSERT_TRUE(autosave.adopt(orphans.front(), &problem)) << problem.toStdString();
+    EXPECT_TRUE(problem.isEmpty()) << problem.toStdString();
+    EXPECT_EQ(doc.filePath(), home.filePath("cam.cam.json"));
+    EXPECT_TRUE(doc.isModified());
+    // The edit is safe in this session's copy, and the ended session's files are gone.
+    EXPECT_EQ(firstCentreX(autosave.recoveryPath()), 27.5);
+    EXPECT_FALSE(QFile::exists(orphans.front().project));
+    EXPECT_FALSE(QFile::exists(orphans.front().meta));
+    EXPECT_FALSE(QFile::exists(orphans.front().lock));
+}
+
+TEST(Autosave, ARestoreThatCannotWriteItsOwnCopyKeepsTheOldOne) {
+    QTemporaryDir home;
+    const QString folder = home.filePath("recovery");
+    leaveEndedSession(folder, "session-dead", 27.5, home.filePath("cam.cam.json"), lockTextOf(1));
+    ProjectDocument doc;
+    Autosave autosave(&doc, folder);
+    ASSERT_TRUE(QDir().mkpath(autosave.notePath()));  // a folder where the note goes
+    std::vector<Autosave::Orphan> orphans = autosave.orphans();
+    ASSERT_EQ(orphans.size(), 1u);
+    QString problem;
+    EXPECT_TRUE(autosave.adopt(orphans.front(), &problem));
+    EXPECT_TRUE(problem.contains("kept")) << problem.toStdString();
+    EXPECT_EQ(firstCentreX(orphans.front().project), 27.5);
+}
 }  // namespace
 }  // namespace cam

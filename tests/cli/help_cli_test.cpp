@@ -91,6 +91,10 @@ TEST(CliHelp, TheOverviewListsEveryCommandAndHowToGetItsPage) {
     }
     std::istringstream in(r.out);
     for (std::string line; std::getline(in, line);) EXPECT_LE(columns(line), 80u) << line;
+    // What --out does to a file is said where every command's --out is (issue 27: Save and
+    // --out replace a hard-linked file by a new one).
+    EXPECT_NE(r.out.find("a hard link to the old FILE keeps the old content"), std::string::npos)
+        << r.out;
     const auto unknown = test::runCli({"help", "frobnicate"});
     EXPECT_EQ(unknown.exitCode, 1);
     EXPECT_NE(unknown.err.find("frobnicate: unknown command"), std::string::npos) << unknown.err;

@@ -27,12 +27,14 @@ void ProjectDocument::reset(Project project, QString filePath) {
     reset(std::move(project), std::move(filePath), std::move(diagnostics));
 }
 
-void ProjectDocument::reset(Project project, QString filePath, Diagnostics diagnostics) {
+void ProjectDocument::reset(Project project, QString filePath, Diagnostics diagnostics,
+                            QByteArray fileDigest) {
     m_undoStack.clear();
     emit contourAboutToBeReset();
     m_project = std::move(project);
     m_diagnostics = std::move(diagnostics);
     m_filePath = std::move(filePath);
+    m_fileDigest = std::move(fileDigest);
     m_undoStack.setClean();
     emit filePathChanged(m_filePath);
     emit contourReset();
@@ -44,7 +46,8 @@ void ProjectDocument::reset(Project project, QString filePath, Diagnostics diagn
     emit changed();
 }
 
-void ProjectDocument::markSaved(const QString& filePath) {
+void ProjectDocument::markSaved(const QString& filePath, QByteArray fileDigest) {
+    m_fileDigest = std::move(fileDigest);
     if (filePath != m_filePath) {
         m_filePath = filePath;
         emit filePathChanged(m_filePath);

@@ -34,10 +34,17 @@ public:
     /// @brief Replaces the whole project (New, Open): clears the undo history.
     void reset(Project project, QString filePath);
     /// @brief The same, with the project's diagnostics already computed (validateProject, off
-    /// the GUI thread for a big file).
-    void reset(Project project, QString filePath, Diagnostics diagnostics);
-    /// @brief After a successful save: remembers the path and marks the state clean.
-    void markSaved(const QString& filePath);
+    /// the GUI thread for a big file), and the digest of the file's content it was read from.
+    void reset(Project project, QString filePath, Diagnostics diagnostics,
+               QByteArray fileDigest = {});
+    /// @brief After a successful save: remembers the path and the digest of what was written,
+    /// and marks the state clean.
+    void markSaved(const QString& filePath, QByteArray fileDigest = {});
+    /// @brief SHA-256 of the file's content as this window last read or wrote it; empty when
+    /// unknown. Set before filePathChanged is emitted. What tells a save that another program
+    /// or window has written the file since (files/file_watch.h).
+    [[nodiscard]] const QByteArray& fileDigest() const { return m_fileDigest; }
+    void setFileDigest(QByteArray digest) { m_fileDigest = std::move(digest); }
     /// @brief Marks the state as unsaved (a project restored from a recovery copy).
     void markUnsaved() { m_undoStack.resetClean(); }
 
@@ -94,6 +101,7 @@ private:
     Diagnostics m_diagnostics;
     QUndoStack m_undoStack;
     QString m_filePath;
+    QByteArray m_fileDigest;
 };
 
 /// @brief Diagnostics for a message box or tooltip: one per line, at most `limit` of them and

@@ -1,6 +1,7 @@
 #include "files/project_files.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QDir>
 #include <QEventLoop>
 #include <QFile>
@@ -10,6 +11,7 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QProgressDialog>
+#include <QPushButton>
 #include <QSettings>
 #include <QThread>
 #include <QTimer>
@@ -18,6 +20,7 @@
 #include <optional>
 
 #include "document/project_document.h"
+#include "files/file_watch.h"
 #include "io/atomic_file.h"
 #include "io/project_json.h"
 #include "messages/diagnostic_text.h"
@@ -49,6 +52,8 @@ ProjectFiles::ProjectFiles(ProjectDocument* document, QWidget* window, QMenu* re
       m_window(window),
       m_recentMenu(recentMenu),
       m_examplesMenu(examplesMenu) {
+    m_watch = new FileWatch(document, this);
+    connect(m_watch, &FileWatch::changedOnDisk, this, &ProjectFiles::askAboutChangeOnDisk);
     rebuildRecentMenu();
     rebuildExamplesMenu();
 }
@@ -71,12 +76,19 @@ QString ProjectFiles::load(const QString& path) {
         std::atomic<bool> done{false};
         std::optional<Result<Project>> project;
         Diagnostics diagnostics;
+        QByteArray digest;  ///< of the very bytes parsed: what a later save compares with
     };
     auto outcome = std::make_shared<Outcome>();
     QThread* worker = QThread::create([file = QFile::encodeName(path).toStdString(), outcome] {
-        auto loaded = loadProjectStructure(file);
-        if (loaded.ok()) outcome->diagnostics = validateProject(loaded.value());
-        outcome->project.emplace(std::move(loaded));
+        auto text = readTextFile(file);
+        if (!text.ok()) {
+            outcome->project.emplace(text.errors());
+        } else {
+            outcome->digest = FileWatch::digest(QByteArray::fromStdString(text.value()));
+            auto loaded = parseProjectStructure(text.value());
+            if (loaded.ok()) outcome->diagnostics = validateProject(loaded.value());
+            outcome->project.emplace(std::move(loaded));
+        }
         outcome->done = true;
     });
     worker->setObjectName("projectLoader");
@@ -132,9 +144,18 @@ QString ProjectFiles::load(const QString& path) {
         return tr("%1 cannot be opened:\n%2").arg(shown, diagnosticsText(loaded.errors()));
     }
     const QString absolute = QFileInfo(path).absoluteFilePath();
-    m_document->reset(std::move(loaded).value(), absolute, std::move(outcome->diagnostics));
+    const bool elsewhere = absolute != m_document->filePath() && m_watch->isOpenElsewhere(absolute);
+    m_document->reset(std::move(loaded).value(), absolute, std::move(outcome->diagnostics),
+                      outcome->digest);
     addRecentFile(absolute);
     const int problems = errorCount(m_document->diagnostics());
+    if (elsewhere) {
+        emit message(tr("%1 is open in another Camwright window too: a save in either asks "
+                        "before it overwrites the other's")
+                         .arg(shown),
+                     10000);
+        return {};
+    }
     emit message(problems == 0
                      ? tr("Opened %1").arg(shown)
                      : tr("Opened %1 with %n problem(s): listed in the status bar, marked in the "
@@ -154,14 +175,14 @@ QString ProjectFiles::save(const QString& path) {
             .arg(QDir::toNativeSeparators(path), diagnosticsText(unwritable));
     }
     // The core's writer, as the CLI's --out: mode, owner and symlinks kept, non-files refused.
-    const Diagnostics problems = writeFileAtomically(QFile::encodeName(path).toStdString(),
-                                                     serializeProject(m_document->project()));
+    const std::string text = serializeProject(m_document->project());
+    const Diagnostics problems = writeFileAtomically(QFile::encodeName(path).toStdString(), text);
     if (!problems.empty()) {
         return tr("%1 could not be written: %2")
             .arg(QDir::toNativeSeparators(path), DiagnosticText::message(problems.front()));
     }
     const QString absolute = QFileInfo(path).absoluteFilePath();
-    m_document->markSaved(absolute);
+    m_document->markSaved(absolute, FileWatch::digest(QByteArray::fromStdString(text)));
     addRecentFile(absolute);
     const int open = errorCount(m_document->diagnostics());
     emit message(open == 0 ? tr("Saved %1").arg(QDir::toNativeSeparators(path))
@@ -181,6 +202,19 @@ void ProjectFiles::open(const QString& givenPath) {
         if (path.isEmpty()) return;
     }
     QSettings().setValue("files/lastDir", QFileInfo(path).absolutePath());
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    if (absolute != m_document->filePath() && m_watch->isOpenElsewhere(absolute)) {
+        QMessageBox box(QMessageBox::Warning, tr("Open Project"),
+                        tr("%1 is already open in another Camwright window.")
+                            .arg(QDir::toNativeSeparators(absolute)),
+                        QMessageBox::Open | QMessageBox::Cancel, m_window);
+        box.setObjectName("openElsewhereBox");
+        box.setInformativeText(
+            tr("Open it here too? Whichever window saves second is asked before it overwrites "
+               "the other's changes."));
+        box.setDefaultButton(QMessageBox::Cancel);
+        if (box.exec() != QMessageBox::Open) return;
+    }
     const QString problem = load(path);
     // A cancelled open needs no box: the user asked for it, the status bar says it.
     if (!problem.isEmpty() && !m_loadCancelled) {
@@ -190,6 +224,20 @@ void ProjectFiles::open(const QString& givenPath) {
 
 bool ProjectFiles::save() {
     if (m_document->filePath().isEmpty()) return saveAs();
+    const QString shown = QDir::toNativeSeparators(m_document->filePath());
+    const DiskState disk = m_watch->check();
+    // Nothing unsaved: nothing is written (a file someone else changed stays theirs); only a
+    // file that is gone is written again.
+    if (!m_document->isModified() && disk != DiskState::Removed) {
+        emit message(disk == DiskState::Same
+                         ? tr("Nothing to save: %1 holds this project as it is").arg(shown)
+                         : tr("Nothing to save here; %1 was changed on disk by another "
+                              "program or window")
+                               .arg(shown),
+                     6000);
+        return true;
+    }
+    if (disk == DiskState::Changed && !mayOverwriteChangedFile()) return false;
     const QString problem = save(m_document->filePath());
     if (!problem.isEmpty()) QMessageBox::warning(m_window, tr("Save Project"), problem);
     return problem.isEmpty();
@@ -215,9 +263,74 @@ bool ProjectFiles::saveAs() {
         }
     }
     QSettings().setValue("files/lastDir", QFileInfo(path).absolutePath());
+    // Save As onto the project's own file is a Save: the same question about changes on disk.
+    if (QFileInfo(path).absoluteFilePath() == m_document->filePath() &&
+        m_watch->check() == DiskState::Changed && !mayOverwriteChangedFile()) {
+        return false;
+    }
     const QString problem = save(path);
     if (!problem.isEmpty()) QMessageBox::warning(m_window, tr("Save Project"), problem);
     return problem.isEmpty();
+}
+
+bool ProjectFiles::mayOverwriteChangedFile() {
+    QMessageBox box(QMessageBox::Warning, tr("Save Project"),
+                    tr("%1 has been changed on disk since this window opened or saved it.")
+                        .arg(QDir::toNativeSeparators(m_document->filePath())),
+                    QMessageBox::NoButton, m_window);
+    box.setObjectName("overwriteChangedBox");
+    box.setInformativeText(
+        tr("Another program or Camwright window has written it. Overwrite "
+           "its changes with this window's project?"));
+    QPushButton* overwrite = box.addButton(tr("Overwrite"), QMessageBox::DestructiveRole);
+    box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.exec();
+    if (box.clickedButton() == overwrite) return true;
+    emit message(tr("Not saved: %1 keeps the changes made on disk")
+                     .arg(QDir::toNativeSeparators(m_document->filePath())),
+                 8000);
+    return false;
+}
+
+void ProjectFiles::askAboutChangeOnDisk() {
+    if (m_asking) return;
+    // Not over another dialog or while a file opens: asked once those are done.
+    if (m_loading || QApplication::activeModalWidget() || QApplication::activePopupWidget()) {
+        QTimer::singleShot(300, this, &ProjectFiles::askAboutChangeOnDisk);
+        return;
+    }
+    const QString path = m_document->filePath();
+    const QString shown = QDir::toNativeSeparators(path);
+    const DiskState state = m_watch->check();
+    if (state == DiskState::Same) return;
+    if (state == DiskState::Removed) {
+        emit message(tr("%1 was deleted or moved away on disk; Save writes it again").arg(shown),
+                     10000);
+        return;
+    }
+    QMessageBox box(QMessageBox::Question, tr("File Changed on Disk"),
+                    tr("%1 has been changed on disk by another program or window.").arg(shown),
+                    QMessageBox::NoButton, m_window);
+    box.setObjectName("changedOnDiskBox");
+    box.setInformativeText(m_document->isModified()
+                               ? tr("Reload it and discard the unsaved changes made here? Keep "
+                                    "them, and Save asks before it overwrites the file.")
+                               : tr("Reload it? Keep this window's version, and Save asks "
+                                    "before it overwrites the file."));
+    QPushButton* reload =
+        box.addButton(tr("Reload"), m_document->isModified() ? QMessageBox::DestructiveRole
+                                                             : QMessageBox::AcceptRole);
+    QPushButton* keep = box.addButton(tr("Keep This Version"), QMessageBox::RejectRole);
+    box.setDefaultButton(m_document->isModified() ? keep : reload);
+    m_asking = true;
+    box.exec();
+    m_asking = false;
+    if (box.clickedButton() != reload || m_document->filePath() != path) return;
+    const QString problem = load(path);
+    if (!problem.isEmpty() && !m_loadCancelled) {
+        QMessageBox::warning(m_window, tr("File Changed on Disk"), problem);
+    }
 }
 
 bool ProjectFiles::maybeSave() {
@@ -245,6 +358,7 @@ void ProjectFiles::openExample(const QString& resourcePath) {
 }
 
 void ProjectFiles::addRecentFile(const QString& path) {
+    if (!m_remembersRecentFiles) return;
     QSettings settings;
     QStringList files = settings.value("files/recent").toStringList();
     files.removeAll(path);
