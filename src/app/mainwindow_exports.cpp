@@ -73,6 +73,11 @@ void MainWindow::setUpExports() {
     }
 }
 
+QString MainWindow::exportTitle() const {
+    const std::string& name = m_document->project().name;
+    return name.empty() ? exportBaseName() : QString::fromStdString(name);
+}
+
 QString MainWindow::exportBaseName() const {
     const QString path = m_document->filePath();
     if (path.isEmpty()) return "untitled";
@@ -145,7 +150,7 @@ QByteArray MainWindow::plotPicture(PlotKind kind, PictureFormat format, QSize si
     QCustomPlot* plot = plotWidget(kind);
     if (size.isEmpty()) size = plot->size();
     PictureText text;
-    text.title = tr("%1 — %2").arg(exportBaseName(), plotKindTitle(kind));
+    text.title = tr("%1 — %2").arg(exportTitle(), plotKindTitle(kind));
     // The stacked plots share the bottom one's x axis label.
     if (kind == PlotKind::Velocity || kind == PlotKind::Acceleration) {
         text.xLabel = m_plots->plot(2)->xAxis->label();

@@ -4,12 +4,17 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <vector>
 
 #include "cli/arguments.h"
+#include "export/free_text.h"
+#include "io/atomic_file.h"
 
 extern char** environ;
 
@@ -44,15 +49,70 @@ std::string pictureApp() {
     return app.string();
 }
 
+namespace {
+
+/// A folder of our own under the system's temporary folder, removed with what is in it.
+class PrivateFolder {
+public:
+    PrivateFolder() {
+        std::string pattern =
+            (std::filesystem::temp_directory_path() / "camwright-XXXXXX").string();
+        if (::mkdtemp(pattern.data()) == nullptr) {
+            throw CliError{kNotComputable, pattern,
+                           std::string("cannot be made: ") + std::strerror(errno)};
+        }
+        m_path = pattern;
+    }
+    ~PrivateFolder() {
+        std::error_code ec;
+        std::filesystem::remove_all(m_path, ec);
+    }
+    PrivateFolder(const PrivateFolder&) = delete;
+    PrivateFolder& operator=(const PrivateFolder&) = delete;
+    [[nodiscard]] const std::filesystem::path& path() const { return m_path; }
+
+private:
+    std::filesystem::path m_path;
+};
+
+}  // namespace
+
 int drawPlotWithApp(const std::string& project, const std::string& plot, const std::string& format,
                     const std::optional<std::string>& size, const std::string& out) {
     const std::string app = pictureApp();
-    std::vector<std::string> args{app, "--export-plot", plot, "--format", format, "--out", out};
+    // The app reads its arguments as UTF-8 (Qt): a path that is not valid UTF-8 would name
+    // another file. Such a path goes through a folder of our own: the project as a link with a
+    // name the app can read (the name a picture's title may take), the picture written there
+    // and then put in its place by the core's writer.
+    std::optional<PrivateFolder> folder;
+    std::string appProject = project, appOut = out;
+    if (!isValidUtf8(project) || !isValidUtf8(out)) {
+        folder.emplace();
+        if (!isValidUtf8(project)) {
+            std::string stem = std::filesystem::path(project).filename().string();
+            for (const char* suffix : {".cam.json", ".json"}) {
+                const std::string s = suffix;
+                if (stem.size() > s.size() && stem.ends_with(s)) {
+                    stem.resize(stem.size() - s.size());
+                    break;
+                }
+            }
+            std::string readable = oneLine(stem);
+            std::replace(readable.begin(), readable.end(), '/', '_');
+            if (readable.empty()) readable = "project";
+            appProject = (folder->path() / (readable + ".cam.json")).string();
+            std::error_code ec;
+            std::filesystem::create_symlink(std::filesystem::absolute(project, ec), appProject, ec);
+            if (ec) throw CliError{kNotComputable, project, "cannot be linked: " + ec.message()};
+        }
+        if (!isValidUtf8(out)) appOut = (folder->path() / ("picture." + format)).string();
+    }
+    std::vector<std::string> args{app, "--export-plot", plot, "--format", format, "--out", appOut};
     if (size) {
         args.push_back("--size");
         args.push_back(*size);
     }
-    args.push_back(project);
+    args.push_back(appProject);
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -78,7 +138,18 @@ int drawPlotWithApp(const std::string& project, const std::string& plot, const s
     while (::waitpid(pid, &status, 0) < 0) {
         if (errno != EINTR) throw CliError{kNotComputable, app, std::strerror(errno)};
     }
-    if (WIFEXITED(status)) return WEXITSTATUS(status);
+    if (WIFEXITED(status)) {
+        const int code = WEXITSTATUS(status);
+        if (code == kOk && appOut != out) {
+            std::ifstream in(appOut, std::ios::binary);
+            const std::string picture{std::istreambuf_iterator<char>(in),
+                                      std::istreambuf_iterator<char>()};
+            if (!in) throw CliError{kNotComputable, out, "the picture drawn cannot be read back"};
+            const Diagnostics written = writeFileAtomically(out, picture);
+            if (!written.empty()) throw CliError{kInvalidInput, out, written.front().message};
+        }
+        return code;
+    }
     throw CliError{
         kNotComputable, app,
         "stopped by signal " + std::to_string(WTERMSIG(status)) + " while drawing " + plot};

@@ -227,7 +227,7 @@ TEST(ExportInWindow, APlotPictureFromTheWindow) {
     const auto check =
         test::run("/usr/bin/python3",
                   {std::string(CAMWRIGHT_SOURCE_DIR) + "/tests/reference/check_picture.py", "pdf",
-                   request.path.toStdString(), "--title", "six-lobe-arc-cam — Acceleration",
+                   request.path.toStdString(), "--title", "Six-lobe arc cam (seed document, Table 1) — Acceleration",
                    "--size", "700x400", "--text", "Acceleration [mm/s²]", "--text", "φ [°]"});
     EXPECT_EQ(check.exitCode, 0) << check.out << check.err;
 }
@@ -271,7 +271,7 @@ TEST(ExportInWindow, RightClickOnAPlotExportsIt) {
     const auto check =
         test::run("/usr/bin/python3",
                   {std::string(CAMWRIGHT_SOURCE_DIR) + "/tests/reference/check_picture.py", "svg",
-                   path.toStdString(), "--title", "six-lobe-arc-cam — Jerk", "--size",
+                   path.toStdString(), "--title", "Six-lobe arc cam (seed document, Table 1) — Jerk", "--size",
                    std::to_string(std::max(plot->width(), 640)) + "x" +
                        std::to_string(std::max(plot->height(), 400)),
                    "--text", "Jerk [mm/s³]"});

@@ -11,6 +11,7 @@
 #include <QImage>
 #include <QSignalSpy>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "app_test_support.h"
 #include "mainwindow.h"
@@ -64,9 +65,13 @@ const PlotCase kPlots[] = {{"contour", "y [mm]"},
                            {"acceleration", "Acceleration [mm/s²]"},
                            {"jerk", "Jerk [mm/s³]"}};
 
+/// "PROJECT — Plot": the project's name (README), or without one its file's base name.
 std::string titleOf(const std::string& project, const std::string& plot) {
-    std::string base = std::filesystem::path(project).filename().string();
-    base = base.substr(0, base.size() - std::string(".cam.json").size());
+    std::string base = nlohmann::json::parse(test::readFile(project)).value("name", "");
+    if (base.empty()) {
+        base = std::filesystem::path(project).filename().string();
+        base = base.substr(0, base.size() - std::string(".cam.json").size());
+    }
     std::string name = plot;
     name[0] = static_cast<char>(std::toupper(name[0]));
     return base + " — " + name;

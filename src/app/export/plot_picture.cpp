@@ -9,6 +9,8 @@
 #include <QStringList>
 #include <QSvgGenerator>
 
+#include "export/free_text.h"
+
 namespace cam {
 namespace {
 
@@ -61,6 +63,18 @@ private:
 };
 
 QString creator() { return QStringLiteral("Camwright " CAMWRIGHT_VERSION); }
+
+/// QSvgGenerator's document with its <title> and <desc> replaced by `title` and `description`,
+/// escaped for XML (export/free_text.h); empty when the generator wrote neither where expected.
+QByteArray withSvgTitle(const QByteArray& svg, const QString& title, const QString& description) {
+    const qsizetype titleAt = svg.indexOf("<title>");
+    const qsizetype descEnd = svg.indexOf("</desc>", titleAt);
+    if (titleAt < 0 || descEnd < 0) return {};
+    const QByteArray ours =
+        "<title>" + QByteArray::fromStdString(xmlText(title.toStdString())) + "</title>\n<desc>" +
+        QByteArray::fromStdString(xmlText(description.toStdString())) + "</desc>";
+    return svg.left(titleAt) + ours + svg.mid(descEnd + qsizetype(sizeof "</desc>") - 1);
+}
 
 }  // namespace
 
@@ -146,7 +160,10 @@ QSize defaultPictureSize(PictureFormat format) {
 }
 
 QByteArray renderPlotPicture(QCustomPlot& plot, PictureFormat format, QSize size,
-                             const PictureText& text, const std::function<void()>& fit) {
+                             const PictureText& given, const std::function<void()>& fit) {
+    // The title is free text (a project or file name): one line, in every format.
+    PictureText text = given;
+    text.title = QString::fromStdString(oneLine(given.title.toStdString()));
     const PictureState state(plot, size, text);
     if (fit) fit();
     QByteArray bytes;
@@ -180,15 +197,17 @@ QByteArray renderPlotPicture(QCustomPlot& plot, PictureFormat format, QSize size
             generator.setOutputDevice(&buffer);
             generator.setSize(size);
             generator.setViewBox(QRect(QPoint(0, 0), size));
-            generator.setTitle(text.title);
-            generator.setDescription(creator());
+            // QSvgGenerator writes its title and description as they are, unescaped: "&" in a
+            // file name made an SVG no XML reader accepts. Ours go in escaped afterwards.
+            generator.setDescription(QStringLiteral("Camwright"));
             QCPPainter painter;
             if (!painter.begin(&generator)) return {};
             painter.setMode(QCPPainter::pmVectorized);
             painter.setMode(QCPPainter::pmNoCaching);
             plot.toPainter(&painter, w, h);
             painter.end();
-            break;
+            buffer.close();
+            return withSvgTitle(bytes, text.title, creator());
         }
     }
     return bytes;

@@ -1,10 +1,14 @@
 #include "export/cam_table.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <initializer_list>
+#include <iterator>
+#include <string_view>
 
 #include "common/angles.h"
+#include "export/free_text.h"
 #include "export/number_text.h"
 #include "follower/follower.h"
 
@@ -37,7 +41,8 @@ void appendRow(std::string& out, std::initializer_list<double> values) {
 std::string csvTable(const std::vector<CamKnot>& knots, const CamTableOptions& options) {
     const auto n = static_cast<double>(knots.size());
     std::string out = "# camwright cam table";
-    if (!options.name.empty()) out += " of " + options.name;
+    // The name is free text: one line, no formula cells (export/free_text.h).
+    if (!options.name.empty()) out += " of " + csvCommentText(options.name);
     const bool arm = options.follower.motion == FollowerMotion::Oscillating;
     out += arm ? ": master angle -> arm angle swung away from the cam (deg)\n"
                : ": master angle -> follower lift s(phi) - min s\n";
@@ -51,20 +56,235 @@ std::string csvTable(const std::vector<CamKnot>& knots, const CamTableOptions& o
     return out;
 }
 
-/// The name as an IEC 61131-3 identifier: letters, digits and single underscores, starting
-/// with a letter ("cam" if nothing is left).
+/// Words an identifier of ours must not be, compared without regard to case as IEC 61131-3
+/// does: the keywords of its third edition (Annex C), its elementary and generic data types,
+/// the operators of its Instruction List, CODESYS's own keywords and operators, and the two
+/// types the table declares.
+constexpr std::string_view kReservedWords[] = {"ABSTRACT",
+                                               "ACTION",
+                                               "ADD",
+                                               "ADR",
+                                               "AND",
+                                               "AND_THEN",
+                                               "ANDN",
+                                               "ANY",
+                                               "ANY_BIT",
+                                               "ANY_CHAR",
+                                               "ANY_CHARS",
+                                               "ANY_DATE",
+                                               "ANY_DERIVED",
+                                               "ANY_DURATION",
+                                               "ANY_ELEMENTARY",
+                                               "ANY_INT",
+                                               "ANY_MAGNITUDE",
+                                               "ANY_NUM",
+                                               "ANY_REAL",
+                                               "ANY_SIGNED",
+                                               "ANY_STRING",
+                                               "ANY_UNSIGNED",
+                                               "ARRAY",
+                                               "AT",
+                                               "BITADR",
+                                               "BOOL",
+                                               "BY",
+                                               "BYTE",
+                                               "CAL",
+                                               "CALC",
+                                               "CALCN",
+                                               "CASE",
+                                               "CHAR",
+                                               "CLASS",
+                                               "CONFIGURATION",
+                                               "CONSTANT",
+                                               "CONTINUE",
+                                               "D",
+                                               "DATE",
+                                               "DATE_AND_TIME",
+                                               "DINT",
+                                               "DIV",
+                                               "DO",
+                                               "DT",
+                                               "DWORD",
+                                               "ELSE",
+                                               "ELSIF",
+                                               "EN",
+                                               "END_ACTION",
+                                               "END_CASE",
+                                               "END_CLASS",
+                                               "END_CONFIGURATION",
+                                               "END_FOR",
+                                               "END_FUNCTION",
+                                               "END_FUNCTION_BLOCK",
+                                               "END_IF",
+                                               "END_INTERFACE",
+                                               "END_METHOD",
+                                               "END_NAMESPACE",
+                                               "END_PROGRAM",
+                                               "END_PROPERTY",
+                                               "END_REPEAT",
+                                               "END_RESOURCE",
+                                               "END_STEP",
+                                               "END_STRUCT",
+                                               "END_TRANSITION",
+                                               "END_TYPE",
+                                               "END_UNION",
+                                               "END_VAR",
+                                               "END_WHILE",
+                                               "ENO",
+                                               "EQ",
+                                               "EXIT",
+                                               "EXTENDS",
+                                               "F_EDGE",
+                                               "FALSE",
+                                               "FINAL",
+                                               "FOR",
+                                               "FROM",
+                                               "FUNCTION",
+                                               "FUNCTION_BLOCK",
+                                               "GE",
+                                               "GT",
+                                               "IF",
+                                               "IMPLEMENTS",
+                                               "INI",
+                                               "INITIAL_STEP",
+                                               "INT",
+                                               "INTERFACE",
+                                               "INTERNAL",
+                                               "INTERVAL",
+                                               "JMP",
+                                               "JMPC",
+                                               "JMPCN",
+                                               "L",
+                                               "LD",
+                                               "LDATE",
+                                               "LDATE_AND_TIME",
+                                               "LDN",
+                                               "LDT",
+                                               "LE",
+                                               "LINT",
+                                               "LREAL",
+                                               "LT",
+                                               "LTIME",
+                                               "LTIME_OF_DAY",
+                                               "LTOD",
+                                               "LWORD",
+                                               "MC_CAM_REF",
+                                               "METHOD",
+                                               "MOD",
+                                               "MUL",
+                                               "N",
+                                               "NAMESPACE",
+                                               "NE",
+                                               "NON_RETAIN",
+                                               "NOT",
+                                               "NULL",
+                                               "OF",
+                                               "ON",
+                                               "OR",
+                                               "OR_ELSE",
+                                               "ORN",
+                                               "OVERLAP",
+                                               "OVERRIDE",
+                                               "P",
+                                               "PERSISTENT",
+                                               "POINTER",
+                                               "PRIORITY",
+                                               "PRIVATE",
+                                               "PROGRAM",
+                                               "PROPERTY",
+                                               "PROTECTED",
+                                               "PUBLIC",
+                                               "R",
+                                               "R_EDGE",
+                                               "READ_ONLY",
+                                               "READ_WRITE",
+                                               "REAL",
+                                               "REF",
+                                               "REF_TO",
+                                               "REFERENCE",
+                                               "REPEAT",
+                                               "RESOURCE",
+                                               "RET",
+                                               "RETAIN",
+                                               "RETC",
+                                               "RETCN",
+                                               "RETURN",
+                                               "S",
+                                               "SINGLE",
+                                               "SINT",
+                                               "SIZEOF",
+                                               "SMC_CAMXYVA",
+                                               "ST",
+                                               "STEP",
+                                               "STN",
+                                               "STRING",
+                                               "STRUCT",
+                                               "SUB",
+                                               "SUPER",
+                                               "T",
+                                               "TASK",
+                                               "THEN",
+                                               "THIS",
+                                               "TIME",
+                                               "TIME_OF_DAY",
+                                               "TO",
+                                               "TOD",
+                                               "TRANSITION",
+                                               "TRUE",
+                                               "TYPE",
+                                               "UDINT",
+                                               "UINT",
+                                               "ULINT",
+                                               "UNION",
+                                               "UNTIL",
+                                               "USINT",
+                                               "USING",
+                                               "VAR",
+                                               "VAR_ACCESS",
+                                               "VAR_CONFIG",
+                                               "VAR_EXTERNAL",
+                                               "VAR_GLOBAL",
+                                               "VAR_IN_OUT",
+                                               "VAR_INPUT",
+                                               "VAR_INST",
+                                               "VAR_OUTPUT",
+                                               "VAR_STAT",
+                                               "VAR_TEMP",
+                                               "WCHAR",
+                                               "WHILE",
+                                               "WITH",
+                                               "WORD",
+                                               "WSTRING",
+                                               "XOR",
+                                               "XORN"};
+
+/// The longest identifier made of a name (the knots' array adds "_knots").
+constexpr std::size_t kMaxIdentifier = 64;
+
+bool isReserved(const std::string& id) {
+    std::string upper;
+    for (char c : id) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return std::find(std::begin(kReservedWords), std::end(kReservedWords), upper) !=
+           std::end(kReservedWords);
+}
+
+/// The name as an IEC 61131-3 identifier (letter {[_] (letter | digit)}): ASCII letters and
+/// digits kept, every run of other characters one underscore, none at either end, at most
+/// kMaxIdentifier characters; "cam_" in front of one that would begin with a digit or be a
+/// reserved word ("cam" when nothing is left).
 std::string identifier(const std::string& name) {
     std::string id;
     for (unsigned char c : name) {
-        if (std::isalnum(c) && c < 128) {
+        if (id.size() >= kMaxIdentifier) break;
+        if (c < 128 && std::isalnum(c)) {
             id += static_cast<char>(c);
         } else if (!id.empty() && id.back() != '_') {
             id += '_';
         }
     }
     while (!id.empty() && id.back() == '_') id.pop_back();
-    if (id.empty() || std::isdigit(static_cast<unsigned char>(id.front()))) id = "cam_" + id;
-    if (id.back() == '_') id.pop_back();
+    if (id.empty()) return "cam";
+    if (std::isdigit(static_cast<unsigned char>(id.front())) || isReserved(id)) id = "cam_" + id;
     return id;
 }
 
@@ -106,7 +326,7 @@ std::string codesysTable(const std::vector<CamKnot>& knots, const CamTableOption
     const std::string id = identifier(options.name);
     const std::size_t n = knots.size();
     std::string out = "(* Camwright electronic cam";
-    if (!options.name.empty()) out += ": " + commentText(options.name);
+    if (!options.name.empty()) out += ": " + commentText(oneLine(options.name));
     out +=
         options.follower.motion == FollowerMotion::Oscillating
             ? " *)\n(* master: cam angle in degrees, 0 .. 360, periodic; slave: the arm's angle\n"

@@ -5,34 +5,18 @@
 
 #include "common/angles.h"
 #include "export/export_checks.h"
+#include "export/free_text.h"
 #include "export/number_text.h"
 #include "timing/tool_path.h"
 
 namespace cam {
 namespace {
 
-/// The text with &, <, > and " escaped for XML.
-std::string escaped(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            default:
-                out += c;
-        }
-    }
-    return out;
+/// Characters (code points) of valid UTF-8 text.
+std::size_t characterCount(const std::string& text) {
+    return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char c) {
+        return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+    }));
 }
 
 void appendPoint(std::string& out, const Eigen::Vector3d& p) {
@@ -99,8 +83,12 @@ Result<std::string> svgDocument(const Contour& contour, const SvgOptions& option
     const double text = 0.04 * size + 1.0;  // title height, mm
     const double mark = 0.02 * size;
     const double stroke = 0.0025 * size;
-    // Wide enough for the title too (a sans-serif letter is at most about 0.6 em wide on average).
-    const double titleWidth = 0.6 * text * static_cast<double>(options.title.size());
+    // The title is free text: one line of at most kFreeTextMaxChars characters, escaped
+    // (export/free_text.h). The drawing is wide enough for it too (a sans-serif letter is at
+    // most about 0.6 em wide on average).
+    const std::string title = xmlText(options.title);
+    const double titleWidth =
+        0.6 * text * static_cast<double>(characterCount(oneLine(options.title)));
     const double x0 = lo.x() - margin, y0 = -hi.y() - margin - 1.5 * text;
     const double w = std::max(hi.x() - lo.x(), titleWidth) + 2 * margin;
     const double h = (hi.y() - lo.y()) + 2 * margin + 1.5 * text;
@@ -116,7 +104,7 @@ Result<std::string> svgDocument(const Contour& contour, const SvgOptions& option
         out += ' ';
     }
     out.back() = '"';
-    out += ">\n  <title>" + escaped(options.title) + "</title>\n";
+    out += ">\n  <title>" + title + "</title>\n";
     out +=
         "  <desc>Cam profile, 1:1 in millimetres (1 user unit = 1 mm, y up drawn up), "
         "written by Camwright</desc>\n";
@@ -160,7 +148,7 @@ Result<std::string> svgDocument(const Contour& contour, const SvgOptions& option
     appendExact(out, lo.x());
     out += "\" y=\"";
     appendExact(out, -hi.y() - margin);
-    out += "\">" + escaped(options.title) + "</text>\n</svg>\n";
+    out += "\">" + title + "</text>\n</svg>\n";
     return out;
 }
 
