@@ -34,6 +34,27 @@ TEST(ProjectJson, LoadsTheBundledExample) {
     EXPECT_DOUBLE_EQ(std::get<Arc>(p.value().contour[1].shape).radius, 8.103180550000001);
 }
 
+TEST(ProjectJson, AWholeNumberIsSavedAsTyped) {
+    // The probe's "rpm": 60 came back as 60.0.
+    const auto p = parseProject(kMinimal);
+    ASSERT_TRUE(p.ok());
+    const std::string saved = serializeProject(p.value());
+    EXPECT_NE(saved.find("\"rpm\": 120\n"), std::string::npos) << saved;
+    EXPECT_NE(saved.find("\"radius\": 20,"), std::string::npos) << saved;
+    EXPECT_EQ(saved.find(".0"), std::string::npos) << saved;
+    // What is not a whole number, or too large for every integer to be exact, stays as it is.
+    Project q = p.value();
+    q.motion.value = 0.5;
+    std::get<Arc>(q.contour[0].shape).center.x() = 1e300;
+    const std::string other = serializeProject(q);
+    EXPECT_NE(other.find("\"rpm\": 0.5\n"), std::string::npos) << other;
+    EXPECT_NE(other.find("1e+300"), std::string::npos) << other;
+    // And it reads back to the same doubles.
+    const auto back = parseProjectStructure(other);
+    ASSERT_TRUE(back.ok());
+    EXPECT_EQ(back.value(), q);
+}
+
 TEST(ProjectJson, SaveLoadSaveIsByteStable) {
     const auto p = loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json"));
     ASSERT_TRUE(p.ok());
@@ -131,7 +152,7 @@ TEST(ProjectJson, ConvertsMetresAndRadiansOnLoadAndKeepsThemOnSave) {
     for (const char* written :
          {R"("center": [
         0.005,
-        0.0
+        0
       ])",
           R"("radius": 0.02)", R"("phi_end": 3.141592653589793)", R"("phi_end": 6.283185307179586)",
           R"("tool_radius": 0.003)", R"("feed_max": 0.1)"}) {
@@ -381,7 +402,7 @@ TEST(ProjectJsonDesign, LengthsFollowTheFileUnitsAndAnArmsLiftIsInDegrees) {
     EXPECT_DOUBLE_EQ(arm.value().design->segments[2].v1, -0.01);
     const std::string out = serializeProject(arm.value());
     EXPECT_EQ(parseProject(out).value(), arm.value());
-    EXPECT_NE(out.find(R"("lift": 10.0)"), std::string::npos) << out;
+    EXPECT_NE(out.find(R"("lift": 10)"), std::string::npos) << out;
 }
 
 TEST(ProjectJsonDesign, EveryProblemIsNamedWithItsPlace) {

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 
 #include "design/motion_law.h"
 #include "io/json_syntax.h"
@@ -27,6 +28,23 @@ double fileValue(double internal, double factor) {
     }
     return guess;
 }
+
+namespace {
+
+/// Every number of the tree that is a whole number written as one ("rpm": 60, not 60.0, as
+/// the user typed it; "center": [25.7, 0]). Reading gives the same double back: |v| < 2^53.
+void wholeNumbersAsIntegers(Json& j) {
+    if (j.is_number_float()) {
+        const double v = j.get<double>();
+        if (std::isfinite(v) && v == std::trunc(v) && std::abs(v) < 9007199254740992.0) {
+            j = static_cast<std::int64_t>(v);
+        }
+    } else if (j.is_structured()) {
+        for (Json& child : j) wholeNumbersAsIntegers(child);
+    }
+}
+
+}  // namespace
 
 std::string serializeProject(const Project& p) {
     Json root;
@@ -131,6 +149,7 @@ std::string serializeProject(const Project& p) {
                           {"tolerance", length(d.tolerance)}};
         if (d.strictPressureAngle) root["design"]["strict_pressure_angle"] = true;
     }
+    wholeNumbersAsIntegers(root);
     for (const auto& [key, text] : p.extraKeys) root[key] = Json::parse(text);
     return root.dump(2) + "\n";
 }
