@@ -3,8 +3,13 @@
 // probe sent into every export. Each must leave every export valid in the program that reads
 // it. Kept here, in the tests, so a new export format is run through all of them.
 
+#include <gtest/gtest.h>
+
+#include <filesystem>
 #include <string>
 #include <vector>
+
+#include "test_support.h"
 
 namespace cam::test {
 
@@ -12,6 +17,25 @@ struct HostileName {
     const char* kind;  ///< what it tries, for a failure's message
     std::string text;
 };
+
+/// The checker that reads exports carrying such names with their consumers.
+inline std::string freeTextChecker() {
+    return std::string(CAMWRIGHT_SOURCE_DIR) + "/tests/reference/check_free_text.py";
+}
+
+/// Runs freeTextChecker on every export in `folder` (with LinuxCNC's rs274 for G-code where it
+/// is at hand): the problems it found, empty when there were none or `files` files were not
+/// all checked.
+inline ::testing::AssertionResult exportsAreValid(const std::string& folder, std::size_t files) {
+    const std::string rs274 = std::string(CAMWRIGHT_SOURCE_DIR) + "/../shared/tools/rs274";
+    std::vector<std::string> args{freeTextChecker(), folder, "--points", "360"};
+    if (std::filesystem::exists(rs274)) args.insert(args.end(), {"--rs274", rs274});
+    const auto r = run("/usr/bin/python3", args, 600);
+    if (r.exitCode != 0) return ::testing::AssertionFailure() << r.out << r.err;
+    if (r.err.find(std::to_string(files) + " files checked") == std::string::npos)
+        return ::testing::AssertionFailure() << "not " << files << " files: " << r.err;
+    return ::testing::AssertionSuccess();
+}
 
 inline std::vector<HostileName> hostileNames() {
     using namespace std::string_literals;

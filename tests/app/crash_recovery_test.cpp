@@ -195,6 +195,24 @@ protected:
         return QDir(m_recovery).entryList({"session-*.cam.json"}, QDir::Files);
     }
 
+    /// Presses `key` in the recovery question once it takes input (on a busy machine it may
+    /// not yet when it first appears: then again) until `answered()`.
+    bool answerRecoveryBox(const char* key, const std::function<bool()>& answered) {
+        for (int attempt = 0; attempt < 10; ++attempt) {
+            const QString box =
+                xdotool({"search", "--onlyvisible", "--name", "Recover Unsaved Changes"})
+                    .split('\n')
+                    .front();
+            if (!box.isEmpty()) {
+                QThread::msleep(300);
+                xdotool({"mousemove", "--window", box, "20", "20"});
+                xdotool({"key", key});
+            }
+            if (waitFor(answered, 2000)) return true;
+        }
+        return false;
+    }
+
     /// Opens the project, types 26.5 into row 0's "Centre x" cell, waits for the recovery copy
     /// to hold it and kills the application with SIGKILL; its process id.
     qint64 killAfterAnEdit() {
@@ -244,25 +262,10 @@ TEST_F(CrashRecovery, AKilledSessionsEditComesBackOnTheNextStart) {
         QProcess app;
         start(app, {});
         ASSERT_TRUE(waitForWindow("Recover Unsaved Changes")) << appLog();
-        // Return answers Restore, the default button, once the box takes input (on a busy
-        // machine it may not yet when it first appears: then press again).
-        bool restored = false;
-        for (int attempt = 0; attempt < 10 && !restored; ++attempt) {
-            const QString box =
-                xdotool({"search", "--onlyvisible", "--name", "Recover Unsaved Changes"})
-                    .split('\n')
-                    .front();
-            if (!box.isEmpty()) {
-                QThread::msleep(300);
-                xdotool({"mousemove", "--window", box, "20", "20"});
-                xdotool({"key", "Return"});
-            }
-            restored = waitFor(
-                [&] {
-                    return !xdotool({"search", "--name", "cam.cam.json"}).isEmpty();
-                },
-                2000);
-        }
+        // Return answers Restore, the default button.
+        const bool restored = answerRecoveryBox("Return", [&] {
+            return !xdotool({"search", "--name", "cam.cam.json"}).isEmpty();
+        });
         ASSERT_TRUE(restored) << "windows shown: " << visibleWindowNames().toStdString()
                               << "; log: " << appLog();
         QThread::msleep(1000);
@@ -311,24 +314,9 @@ TEST_F(CrashRecovery, TheNextSessionOffersTheCopyEvenWithTheKilledOnesProcessId)
     }
     ASSERT_TRUE(waitForWindow("Recover Unsaved Changes")) << appLog();
     // Escape answers Later: the copy stays for the next start; then a clean quit.
-    bool answered = false;
-    for (int attempt = 0; attempt < 10 && !answered; ++attempt) {
-        const QString box =
-            xdotool({"search", "--onlyvisible", "--name", "Recover Unsaved Changes"})
-                .split('\n')
-                .front();
-        if (!box.isEmpty()) {
-            QThread::msleep(300);
-            xdotool({"mousemove", "--window", box, "20", "20"});
-            xdotool({"key", "Escape"});
-        }
-        answered = waitFor(
-            [&] {
-                return xdotool({"search", "--onlyvisible", "--name", "Recover Unsaved Changes"})
-                    .isEmpty();
-            },
-            2000);
-    }
+    const bool answered = answerRecoveryBox("Escape", [&] {
+        return xdotool({"search", "--onlyvisible", "--name", "Recover Unsaved Changes"}).isEmpty();
+    });
     ASSERT_TRUE(answered) << visibleWindowNames().toStdString();
     ASSERT_TRUE(waitForWindow("Camwright")) << appLog();
     QThread::msleep(1000);

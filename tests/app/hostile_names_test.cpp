@@ -23,23 +23,6 @@ namespace cam {
 namespace {
 
 namespace fs = std::filesystem;
-const char* const kNamesPython = "/usr/bin/python3";
-
-std::string namesChecker() {
-    return std::string(CAMWRIGHT_SOURCE_DIR) + "/tests/reference/check_free_text.py";
-}
-
-std::string namesRs274() { return std::string(CAMWRIGHT_SOURCE_DIR) + "/../shared/tools/rs274"; }
-
-/// Runs the checker on a folder; a failure lists every problem.
-void expectValid(const fs::path& folder, std::size_t files) {
-    std::vector<std::string> args{namesChecker(), folder.string(), "--points", "360"};
-    if (fs::exists(namesRs274())) args.insert(args.end(), {"--rs274", namesRs274()});
-    const auto r = test::run(kNamesPython, args, 600);
-    EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
-    EXPECT_TRUE(test::contains(r.err, std::to_string(files) + " files checked")) << r.err;
-}
-
 TEST(HostileNames, EveryPlotPictureTitledWithAHostileNameIsValid) {
     QCustomPlot plot;
     plot.addGraph();
@@ -62,7 +45,7 @@ TEST(HostileNames, EveryPlotPictureTitledWithAHostileNameIsValid) {
             file.write(bytes);
         }
     }
-    expectValid(dir.path(), 2 * names.size());
+    EXPECT_TRUE(test::exportsAreValid(dir.path().string(), 2 * names.size()));
 }
 
 TEST(HostileNames, AnAmpersandInTheTitleReadsBackAsItself) {
@@ -136,7 +119,7 @@ TEST(HostileNames, AFileNameStandingInForTheProjectsNameBreaksNoExport) {
                                  "--plot", "velocity", "--out", odd});
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(fs::exists(odd));
-    expectValid(out, 6 * files.size() + 1);
+    EXPECT_TRUE(test::exportsAreValid(out.string(), 6 * files.size() + 1));
 }
 
 TEST(HostileNames, AHeadlessPictureLeavesTheUsersSettingsAlone) {
