@@ -4003,11 +4003,21 @@ Möchten Sie die Datei ersetzen?</translation>
     </message>
     <message>
         <location line="+2" />
-        <source>Overwrite</source>
-        <translation>Überschreiben</translation>
+        <source>&amp;Overwrite</source>
+        <translation>&amp;Überschreiben</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+37" />
+        <source>&amp;Reload</source>
+        <translation>Neu &amp;laden</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>&amp;Keep This Version</source>
+        <translation>Diese &amp;Fassung behalten</translation>
+    </message>
+    <message>
+        <location line="-34" />
         <source>Not saved: %1 keeps the changes made on disk</source>
         <translation>Nicht gespeichert: %1 behält die auf dem Datenträger gemachten Änderungen</translation>
     </message>
@@ -4038,17 +4048,7 @@ Möchten Sie die Datei ersetzen?</translation>
         <translation>Neu laden? Wird die Fassung dieses Fensters behalten, fragt Speichern, bevor es die Datei überschreibt.</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>Reload</source>
-        <translation>Neu laden</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Keep This Version</source>
-        <translation>Diese Fassung behalten</translation>
-    </message>
-    <message>
-        <location line="+15" />
+        <location line="+20" />
         <source>Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen</translation>
     </message>

@@ -282,7 +282,7 @@ bool ProjectFiles::mayOverwriteChangedFile() {
     box.setInformativeText(
         tr("Another program or Camwright window has written it. Overwrite "
            "its changes with this window's project?"));
-    QPushButton* overwrite = box.addButton(tr("Overwrite"), QMessageBox::DestructiveRole);
+    QPushButton* overwrite = box.addButton(tr("&Overwrite"), QMessageBox::DestructiveRole);
     box.addButton(QMessageBox::Cancel);
     box.setDefaultButton(QMessageBox::Cancel);
     box.exec();
@@ -319,9 +319,9 @@ void ProjectFiles::askAboutChangeOnDisk() {
                                : tr("Reload it? Keep this window's version, and Save asks "
                                     "before it overwrites the file."));
     QPushButton* reload =
-        box.addButton(tr("Reload"), m_document->isModified() ? QMessageBox::DestructiveRole
+        box.addButton(tr("&Reload"), m_document->isModified() ? QMessageBox::DestructiveRole
                                                              : QMessageBox::AcceptRole);
-    QPushButton* keep = box.addButton(tr("Keep This Version"), QMessageBox::RejectRole);
+    QPushButton* keep = box.addButton(tr("&Keep This Version"), QMessageBox::RejectRole);
     box.setDefaultButton(m_document->isModified() ? keep : reload);
     m_asking = true;
     box.exec();
