@@ -1240,9 +1240,19 @@
         <translation>die synthetisierte Bogentabelle ist keine gültige Kontur</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>cannot be met: no biarc joins two neighbouring points of the profile's sampling within it (the profile has a corner or a cusp there, or the tolerance is too small)</source>
-        <translation>ist nicht einzuhalten: kein Doppelbogen verbindet zwei benachbarte Abtastpunkte des Profils innerhalb dieser Toleranz (das Profil hat dort eine Ecke oder Spitze, oder die Toleranz ist zu klein)</translation>
+        <location line="+6" />
+        <source>cannot be met near %1°: no arcs come within it even on pieces of 2^-%2 of the profile's sampling step (the profile has a corner or a cusp there)</source>
+        <translation>ist bei %1° nicht einzuhalten: selbst auf Stücken von 2^-%2 der Abtastschrittweite des Profils kommen keine Bögen so nahe (das Profil hat dort eine Ecke oder Spitze)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 mm is below what double precision can certify for this cam: at least %2 mm, for a profile reaching %3 mm from the centre</source>
+        <translation>%1 mm liegt unter dem, was doppelte Genauigkeit für diesen Nocken bestätigen kann: mindestens %2 mm, bei einem Profil, das %3 mm vom Mittelpunkt reicht</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>cannot be met: the closest arc table found lies %2 mm from the exact profile (at %3° of cam angle), more than the %1 mm asked for</source>
+        <translation>ist nicht einzuhalten: die beste gefundene Bogentabelle liegt %2 mm vom exakten Profil entfernt (bei %3° Nockenwinkel), mehr als die verlangten %1 mm</translation>
     </message>
     <message>
         <location line="+5" />

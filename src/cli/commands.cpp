@@ -842,6 +842,12 @@ int runSynthesize(const Arguments& args, std::ostream& out) {
     const auto made = synthesize(project, tolerance);
     if (!made.ok()) {
         const Diagnostic& d = made.errors().front();
+        if (d.code == DiagnosticCode::ToleranceBelowPrecision) {
+            // A value no arc table can be certified to is bad input (exit 2), named where it
+            // came from: the option, or the project's design.
+            throw CliError{kInvalidInput, tolerance ? "--tolerance" : path + ": " + d.location,
+                           d.message};
+        }
         throw CliError{kNotComputable, path + ": " + d.location, d.message};
     }
     const SynthesisReport& r = made.value().report;

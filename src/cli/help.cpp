@@ -165,10 +165,12 @@ std::vector<CommandHelp> makeTable() {
                  "turn) for its follower, fits it with tangent-continuous arcs within the "
                  "tolerance and writes the project with that contour to NEW. A JSON report on "
                  "standard output says what the arcs cost the motion: segments, "
-                 "max_deviation_mm and the largest errors of lift, velocity and acceleration. "
-                 "Exit 3 with the reason when the design cannot be made (undercut, a roller "
-                 "larger than a concave part, a pressure angle beyond the limit of a strict "
-                 "design).",
+                 "max_deviation_mm (measured on the contour made, not the tolerance) and the "
+                 "largest errors of lift, velocity and acceleration. Exit 3 with the reason when "
+                 "the design cannot be made (undercut, a roller larger than a concave part, a "
+                 "pressure angle beyond the limit of a strict design); exit 2 for a tolerance "
+                 "below what double precision can certify for the cam (16 machine epsilons of "
+                 "its largest radius; the message gives the limit).",
                  {{"--out", "NEW", "the file for the new project (required)"},
                   {"--tolerance", "MM",
                    "the largest normal deviation from the exact profile (default: the design's "

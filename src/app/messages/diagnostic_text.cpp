@@ -944,9 +944,20 @@ QString translatedMessage(const Diagnostic& d) {
             return DiagnosticText::tr("the synthesised arc table is not a valid contour");
         case Code::ToleranceCannotBeMet:
             return DiagnosticText::tr(
-                "cannot be met: no biarc joins two neighbouring points of the profile's sampling "
-                "within it (the profile has a corner or a cusp there, or the tolerance is too "
-                "small)");
+                       "cannot be met near %1°: no arcs come within it even on pieces of 2^-%2 "
+                       "of the profile's sampling step (the profile has a corner or a cusp "
+                       "there)")
+                .arg(a(0), a(1));
+        case Code::ToleranceBelowPrecision:
+            return DiagnosticText::tr(
+                       "%1 mm is below what double precision can certify for this cam: at least "
+                       "%2 mm, for a profile reaching %3 mm from the centre")
+                .arg(a(0), a(1), a(2));
+        case Code::ToleranceNotReached:
+            return DiagnosticText::tr(
+                       "cannot be met: the closest arc table found lies %2 mm from the exact "
+                       "profile (at %3° of cam angle), more than the %1 mm asked for")
+                .arg(a(0), a(1), a(2));
         case Code::OffsetOutsideBaseCircle:
             return DiagnosticText::tr(
                        "the follower's line (offset %1 mm) passes outside the base circle of "

@@ -255,7 +255,9 @@ struct SegmentPlace {
     X(ContourNeverSynthesised, "")     /* is empty: the design's contour was never synthe… */             \
     X(NoDesign, "")                    /* the project has no design to synthesise a conto… */             \
     X(SynthesisedContourInvalid, "")   /* the synthesised arc table is not a valid contour */               \
-    X(ToleranceCannotBeMet, "")        /* cannot be met: no biarc joins two neighbouring … */             \
+    X(ToleranceCannotBeMet, "ni")      /* cannot be met near %1°: … 2^-%2 … */                         \
+    X(ToleranceBelowPrecision, "nnn")  /* %1 mm … at least %2 mm (… %3 mm) */                           \
+    X(ToleranceNotReached, "nnn")      /* … %2 mm … at %3° (asked %1 mm) */                            \
     X(OffsetOutsideBaseCircle, "nn") /* the follower's line (offset %1 mm) … radius %2 mm: … */         \
     X(OffsetOutsidePitchBaseCircle, "nn") /* … radius %2 mm (base radius + roller radius): … */         \
     X(ArmMissesBaseCircle, "nnn")      /* an arm of %1 mm from a pivot %2 mm … radius %3 mm */            \
