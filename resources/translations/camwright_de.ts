@@ -1236,8 +1236,13 @@
     </message>
     <message>
         <location line="+4" />
-        <source>the synthesised arc table is not a valid contour</source>
-        <translation>die synthetisierte Bogentabelle ist keine gültige Kontur</translation>
+        <source>the synthesised arc table is not a valid contour: %1</source>
+        <translation>die synthetisierte Bogentabelle ist keine gültige Kontur: %1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the synthesised arc table is not a valid contour: segment %1, made for the cam angles %2° to %3° of design segment %4 (%5)</source>
+        <translation>die synthetisierte Bogentabelle ist keine gültige Kontur: Segment %1, erzeugt für die Nockenwinkel %2° bis %3° des Entwurfssegments %4 (%5)</translation>
     </message>
     <message>
         <location line="+6" />

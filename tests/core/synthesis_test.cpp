@@ -337,6 +337,58 @@ TEST(Synthesis, AThousandLawSegmentsMakeAValidArcTable) {
     EXPECT_LE(worst, tolerance * (1.0 + 1e-3));
 }
 
+/// Issue 27 point 8: an arc table that does not validate says why and where — the validator's
+/// problem, the arc it names, the cam angles that arc was made for and the design segment they
+/// lie in (math.md §8's cam: 0–120° rise, 120–180° dwell, 180–300° return, 300–360° dwell) —
+/// where it said "not a valid contour" alone.
+TEST(Synthesis, AnArcTableThatDoesNotValidateNamesTheReasonAndThePlace) {
+    const MotionDesign design = MotionDesign::build(test::cycloidalDesign()).value();
+    std::vector<FittedArc> arcs(3);
+    const auto stretch = [&](std::size_t k, double fromDeg, double toDeg) {
+        arcs[k].t0 = degToRad(fromDeg);
+        arcs[k].t1 = degToRad(toDeg);
+    };
+    stretch(0, 0.5, 150.0);
+    stretch(1, 150.0, 151.0);
+    stretch(2, 359.5, 0.5);  // the last arc holds the turn's end and its start
+    // A problem whose code names the arc (RollerTooLargeForArc: radius, contour[k], roller).
+    const Diagnostic roller =
+        Diagnostic("follower.radius",
+                   "must be smaller than the radius 6.9 mm of the concave arc contour[1] (got "
+                   "8 mm): the roller cannot enter it")
+            .coded(DiagnosticCode::RollerTooLargeForArc, {6.9, 1.0, 8.0});
+    const Diagnostic joint = Diagnostic::atJoint(2, 0, "gap of 0.5°");
+    const Diagnostics placed = placeArcTableProblems({roller, joint}, arcs, design);
+    ASSERT_EQ(placed.size(), 2u);
+    const Diagnostic& d = placed.front();
+    EXPECT_EQ(d.location, "design.segments[1]");  // 150–151° lies in the dwell
+    EXPECT_EQ(d.code, DiagnosticCode::SynthesisedArcInvalid);
+    EXPECT_EQ(d.text(),
+              "design.segments[1]: the synthesised arc table is not a valid contour: contour[1], "
+              "made for the cam angles 150° to 151° (follower.radius: must be smaller than the "
+              "radius 6.9 mm of the concave arc contour[1] (got 8 mm): the roller cannot enter "
+              "it)");
+    ASSERT_EQ(d.reasons.size(), 1u);
+    EXPECT_EQ(d.reasons.front().code, DiagnosticCode::RollerTooLargeForArc);
+    EXPECT_EQ(placed[1].location, joint.location);
+    // A problem placed at a joint names its left arc; the wrapping arc runs 359.5° to 360.5°,
+    // around 360° = 0°: the rise.
+    const Diagnostics atJoint = placeArcTableProblems({joint}, arcs, design);
+    const Diagnostic& j = atJoint.front();
+    EXPECT_EQ(j.location, "design.segments[0]");
+    EXPECT_NE(j.message.find("contour[2], made for the cam angles 359.5° to 360.5°"),
+              std::string::npos)
+        << j.message;
+    // One that names no arc: the design, with the reason.
+    const Diagnostics unplaced =
+        placeArcTableProblems({Diagnostic("contour", "the windows cover 359°")}, arcs, design);
+    const Diagnostic& none = unplaced.front();
+    EXPECT_EQ(none.text(),
+              "design: the synthesised arc table is not a valid contour: contour: the windows "
+              "cover 359°");
+    EXPECT_EQ(none.code, DiagnosticCode::SynthesisedContourInvalid);
+}
+
 TEST(Synthesis, WhatCannotBeMadeIsNamed) {
     Project none = cycloidalCam();
     none.design.reset();

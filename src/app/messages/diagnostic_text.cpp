@@ -941,7 +941,14 @@ QString translatedMessage(const Diagnostic& d) {
                 "the project has no motion design to synthesise a contour "
                 "from");
         case Code::SynthesisedContourInvalid:
-            return DiagnosticText::tr("the synthesised arc table is not a valid contour");
+            return DiagnosticText::tr("the synthesised arc table is not a valid contour: %1")
+                .arg(d.reasons.empty() ? QString() : DiagnosticText::line(d.reasons[0]));
+        case Code::SynthesisedArcInvalid:
+            return DiagnosticText::tr(
+                       "the synthesised arc table is not a valid contour: segment %1, made for "
+                       "the cam angles %2° to %3° of design segment %4 (%5)")
+                .arg(a(0), a(1), a(2), a(3),
+                     d.reasons.empty() ? QString() : DiagnosticText::line(d.reasons[0]));
         case Code::ToleranceCannotBeMet:
             return DiagnosticText::tr(
                        "cannot be met near %1°: no arcs come within it even on pieces of 2^-%2 "

@@ -254,7 +254,8 @@ struct SegmentPlace {
     X(WindowsSegmentsDoNotMeet, "")    /* the neighbouring segments do not meet, so … */                  \
     X(ContourNeverSynthesised, "")     /* is empty: the design's contour was never synthe… */             \
     X(NoDesign, "")                    /* the project has no design to synthesise a conto… */             \
-    X(SynthesisedContourInvalid, "")   /* the synthesised arc table is not a valid contour */               \
+    X(SynthesisedContourInvalid, "")   /* … not a valid contour: reasons[0] */                            \
+    X(SynthesisedArcInvalid, "knni")   /* … contour[%1] … %2°–%3° … [%4]: … */                  \
     X(ToleranceCannotBeMet, "ni")      /* cannot be met near %1°: … 2^-%2 … */                         \
     X(ToleranceBelowPrecision, "nnn")  /* %1 mm … at least %2 mm (… %3 mm) */                           \
     X(ToleranceNotReached, "nnn")      /* … %2 mm … at %3° (asked %1 mm) */                            \

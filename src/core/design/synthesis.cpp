@@ -143,6 +143,44 @@ constexpr int kRefits = 3;
 
 }  // namespace
 
+Diagnostics placeArcTableProblems(const Diagnostics& problems, const std::vector<FittedArc>& arcs,
+                                  const MotionDesign& motion) {
+    const Diagnostic& first = problems.front();
+    std::optional<std::size_t> arc;
+    if (!first.places.empty()) {
+        arc = first.places.front().segment;
+    } else {
+        const std::string_view signature = diagnosticCodeSignature(first.code);
+        for (std::size_t i = 0; i < signature.size() && i < first.args.size(); ++i) {
+            if (signature[i] == 'k' && std::holds_alternative<double>(first.args[i])) {
+                arc = static_cast<std::size_t>(std::get<double>(first.args[i]));
+                break;
+            }
+        }
+    }
+    Diagnostics out;
+    const std::string what = "the synthesised arc table is not a valid contour: ";
+    if (arc && *arc < arcs.size()) {
+        const FittedArc& a = arcs[*arc];
+        const double t1 = a.t1 >= a.t0 ? a.t1 : a.t1 + kTwoPi;  // the first may wrap the turn
+        const double fromDeg = radToDeg(a.t0), toDeg = radToDeg(t1);
+        const std::size_t segment = motion.segmentAt(0.5 * (a.t0 + t1));
+        Diagnostic d("design.segments[" + std::to_string(segment) + "]",
+                     what + segmentLocation(*arc) + ", made for the cam angles " +
+                         formatNumber(fromDeg) + "° to " + formatNumber(toDeg) + "° (" +
+                         first.text() + ")");
+        out.push_back(std::move(d).coded(
+            DiagnosticCode::SynthesisedArcInvalid,
+            {static_cast<double>(*arc), fromDeg, toDeg, static_cast<double>(segment)}));
+    } else {
+        out.push_back(Diagnostic("design", what + first.text())
+                          .coded(DiagnosticCode::SynthesisedContourInvalid, {}));
+    }
+    out.back().reasons.push_back(first);
+    out.insert(out.end(), problems.begin() + 1, problems.end());
+    return out;
+}
+
 // Why 16 ε · extent (ε = 2^-52, the spacing of doubles relative to 1; an ulp of the extent is
 // between ε/2 and ε times it). The reported deviation is a distance between two points of size
 // up to the extent, each computed in double precision: the exact profile's point (cos and sin
@@ -222,13 +260,7 @@ Result<Synthesis> synthesize(const Project& project, std::optional<double> toler
         arcs = std::move(fit).value().arcs;
         made.contour = contourOf(arcs);
         auto contour = Contour::build(made);
-        if (!contour.ok()) {
-            Diagnostics why{
-                Diagnostic{"design", "the synthesised arc table is not a valid contour"}.coded(
-                    DiagnosticCode::SynthesisedContourInvalid, {})};
-            for (const Diagnostic& d : contour.errors()) why.push_back(d);
-            return why;
-        }
+        if (!contour.ok()) return placeArcTableProblems(contour.errors(), arcs, motion.value());
         built = std::move(contour).value();
         const std::optional<Measured> m = measureDeviation(profile, *built, arcs, cancel);
         if (!m) return Diagnostics{};

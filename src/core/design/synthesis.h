@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "common/diagnostic.h"
+#include "design/arc_fit.h"
+#include "design/motion_design.h"
 #include "project/project.h"
 
 namespace cam {
@@ -35,6 +37,15 @@ struct Synthesis {
     SynthesisReport report;
 };
 
+/// @brief The validator's problems with a synthesised arc table (`arcs`, contour[k] made from
+/// arcs[k]), the first placed: the arc it names (by its place, or the segment argument of its
+/// code), the cam angles that arc was made for and the design segment they lie in, located
+/// "design.segments[j]" (SynthesisedArcInvalid, the problem nested as its reason); located
+/// "design" when it names no arc (SynthesisedContourInvalid). Then the other problems.
+[[nodiscard]] Diagnostics placeArcTableProblems(const Diagnostics& problems,
+                                                const std::vector<FittedArc>& arcs,
+                                                const MotionDesign& design);
+
 /// @brief How many times the machine epsilon of the profile's extent the smallest tolerance is
 /// (certifiableTolerance).
 inline constexpr double kCertifiableEpsilons = 16.0;
@@ -51,7 +62,8 @@ inline constexpr double kCertifiableEpsilons = 16.0;
 /// certifiableTolerance of the profile's extent (DiagnosticCode::ToleranceBelowPrecision, the
 /// limit in the message), one no arcs can follow near a corner (ToleranceCannotBeMet) or one
 /// the measured contour does not come within after refitting (ToleranceNotReached); an arc
-/// table that does not validate. Empty errors: cancelled.
+/// table that does not validate, located at the design segment its first bad arc was made for
+/// (SynthesisedArcInvalid, the validator's reason nested). Empty errors: cancelled.
 [[nodiscard]] Result<Synthesis> synthesize(const Project& project,
                                            std::optional<double> tolerance = std::nullopt,
                                            bool strictPressureAngle = false,
