@@ -806,6 +806,11 @@
     </message>
     <message>
         <location line="+5" />
+        <source>no acceleration limit for the %1 axis, along which the path moves (segment %2): without one its speed would be unbounded and its time 0</source>
+        <translation>keine Beschleunigungsgrenze für die %1-Achse, entlang der die Bahn fährt (Segment %2): ohne sie wäre die Geschwindigkeit unbegrenzt und die Zeit 0</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>is empty</source>
         <translation>ist leer</translation>
     </message>

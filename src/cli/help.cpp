@@ -131,7 +131,9 @@ std::vector<CommandHelp> makeTable() {
            "every joint; seed: the seed document's stepwise method"},
           {"--path", "POINTS.csv", "time this point list instead of a project"},
           {"--accel", "AX,AY[,AZ]",
-           "axis accelerations in mm/s² (required without a project's machining section)"},
+           "axis accelerations in mm/s² (required without a project's machining section); "
+           "without AZ the path must stay in one plane z = const, a path that moves along z is "
+           "refused (exit 2)"},
           {"--vmax", "VX,VY[,VZ]", "axis speed limits in mm/s"},
           {"--feed", "F", "the path speed limit in mm/s"},
           {"--step", "L", "the seed method's step along the path in mm"},

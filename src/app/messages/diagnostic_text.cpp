@@ -647,6 +647,11 @@ QString translatedMessage(const Diagnostic& d) {
                        "%1 mm makes %2 steps on this %3 mm path; the seed method takes at most "
                        "%4: a step of at least %5 mm")
                 .arg(a(0), a(1), a(2), a(3), a(4));
+        case Code::AccelerationLimitMissing:
+            return DiagnosticText::tr(
+                       "no acceleration limit for the %1 axis, along which the path moves "
+                       "(segment %2): without one its speed would be unbounded and its time 0")
+                .arg(axisName(static_cast<int>(std::get<double>(d.args[0]))), a(1));
         case Code::PathEmpty:
             return DiagnosticText::tr("is empty");
         case Code::PathPointInvalid:

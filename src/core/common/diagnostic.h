@@ -168,7 +168,8 @@ struct SegmentPlace {
     X(ToolTrimsSegment, "n") /* the tool radius %1 mm is too large here: … trimmed beyond … */          \
     X(SeedStepTooSmall, "nn") /* must be a finite length of at least %1 mm (got %2) */                      \
     X(SeedStepTooMany, "nnnin") /* %1 mm makes %2 steps on this %3 mm path; … at most %4: … %5 */       \
-    X(PathEmpty, "")            /* is empty */                                                              \
+    X(AccelerationLimitMissing, "ii") /* no acceleration limit for the %1 axis … (segment %2) */          \
+    X(PathEmpty, "")                  /* is empty */                                                        \
     X(PathPointInvalid, "")  /* coordinates must be finite, at most 1e6 mm, and the bulge … */            \
     X(PathTooFewPoints, "")  /* a path needs at least two points */                                         \
     X(PathPointRepeated, "") /* repeats the previous point */                                               \
