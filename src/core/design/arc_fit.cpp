@@ -209,7 +209,7 @@ double deviation(const Samples& s, std::size_t i, std::size_t j,
 /// (μ ± √(μ² + R² − |c|²), whose rounding grows as ε·R) stays below a sixteenth of the
 /// tolerance, and, turning clockwise (concave on a curve that runs counter-clockwise round the
 /// centre), wider than `minConcaveRadius` (a roller's radius: it must fit into every concave arc).
-/// A stretch where a biarc's arc is none of these gets another junction, or a shorter biarc.
+/// Where a biarc's arc fails one of these, the search takes another junction, or a shorter biarc.
 bool representable(const FittedArc& arc, double tolerance, double minConcaveRadius) {
     if (arc.straight) return true;
     const double radiusLimit = tolerance / (16.0 * std::numeric_limits<double>::epsilon());
