@@ -121,7 +121,7 @@ TEST(CliTimingHostile, APlungeNeedsTheZAccelerationLimit) {
         }
     }
     // A path in a plane still needs only two.
-    const std::string flat = writeHostileTemp("flat.csv", "0,0,2\n100,0,2\n");
+    const std::string flat = writeHostileTemp("plane-z2.csv", "0,0,2\n100,0,2\n");
     const auto r =
         test::runCli({"timing", "--path", flat, "--accel", "500,500", "--method", "exact-stop"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
