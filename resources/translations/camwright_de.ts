@@ -806,6 +806,11 @@
     </message>
     <message>
         <location line="+5" />
+        <source>no acceleration limit for the %1 axis, along which the path moves (segment %2): without one its speed would be unbounded and its time 0</source>
+        <translation>keine Beschleunigungsgrenze für die %1-Achse, entlang der die Bahn fährt (Segment %2): ohne sie wäre die Geschwindigkeit unbegrenzt und die Zeit 0</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>is empty</source>
         <translation>ist leer</translation>
     </message>
@@ -1236,13 +1241,28 @@
     </message>
     <message>
         <location line="+4" />
-        <source>the synthesised arc table is not a valid contour</source>
-        <translation>die synthetisierte Bogentabelle ist keine gültige Kontur</translation>
+        <source>the synthesised arc table is not a valid contour: %1</source>
+        <translation>die synthetisierte Bogentabelle ist keine gültige Kontur: %1</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>cannot be met: no biarc joins two neighbouring points of the profile's sampling within it (the profile has a corner or a cusp there, or the tolerance is too small)</source>
-        <translation>ist nicht einzuhalten: kein Doppelbogen verbindet zwei benachbarte Abtastpunkte des Profils innerhalb dieser Toleranz (das Profil hat dort eine Ecke oder Spitze, oder die Toleranz ist zu klein)</translation>
+        <location line="+3" />
+        <source>the synthesised arc table is not a valid contour: segment %1, made for the cam angles %2° to %3° of design segment %4 (%5)</source>
+        <translation>die synthetisierte Bogentabelle ist keine gültige Kontur: Segment %1, erzeugt für die Nockenwinkel %2° bis %3° des Entwurfssegments %4 (%5)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>cannot be met near %1°: no arcs come within it even on pieces of 2^-%2 of the profile's sampling step (the profile has a corner or a cusp there)</source>
+        <translation>ist bei %1° nicht einzuhalten: selbst auf Stücken von 2^-%2 der Abtastschrittweite des Profils kommen keine Bögen so nahe (das Profil hat dort eine Ecke oder Spitze)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 mm is below what double precision can certify for this cam: at least %2 mm, for a profile reaching %3 mm from the centre</source>
+        <translation>%1 mm liegt unter dem, was doppelte Genauigkeit für diesen Nocken bestätigen kann: mindestens %2 mm, bei einem Profil, das %3 mm vom Mittelpunkt reicht</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>cannot be met: the closest arc table found lies %2 mm from the exact profile (at %3° of cam angle), more than the %1 mm asked for</source>
+        <translation>ist nicht einzuhalten: die beste gefundene Bogentabelle liegt %2 mm vom exakten Profil entfernt (bei %3° Nockenwinkel), mehr als die verlangten %1 mm</translation>
     </message>
     <message>
         <location line="+5" />

@@ -545,6 +545,27 @@ int runTiming(const Arguments& args, std::ostream& out) {
         throw CliError{kUsage, "--accel",
                        "is required: the project has no machining section or a point list is used"};
     }
+    if (!loaded) {
+        // Two values leave z without a limit, which is right for a path in a plane; a path that
+        // moves along z needs its limit given (issue 27: a plunge took 0 s by the seed method,
+        // whose speed then had no bound). No default: any number put in would be a guess at the
+        // machine, and a wrong one a wrong time.
+        const Diagnostics unlimited = checkMovingAxesLimited(given, job.limits);
+        if (!unlimited.empty()) {
+            const Diagnostic& d = unlimited.front();
+            const auto axis = static_cast<int>(std::get<double>(d.args[0]));
+            const auto k = static_cast<std::size_t>(std::get<double>(d.args[1]));
+            const char name = static_cast<char>('x' + axis);
+            throw CliError{
+                kInvalidInput, "--accel",
+                std::string("gives no limit for the ") + name +
+                    " axis, along which the path moves (segment " + std::to_string(k) +
+                    (args.option("--spline") ? std::string()
+                                             : ", from point[" + std::to_string(k) + "] to point[" +
+                                                   std::to_string(k + 1) + "]") +
+                    "): give all three, AX,AY,AZ"};
+        }
+    }
 
     const auto timed = loaded ? timeContour(loaded->contour, job) : timePath(std::move(given), job);
     if (!timed.ok()) {
@@ -842,6 +863,12 @@ int runSynthesize(const Arguments& args, std::ostream& out) {
     const auto made = synthesize(project, tolerance);
     if (!made.ok()) {
         const Diagnostic& d = made.errors().front();
+        if (d.code == DiagnosticCode::ToleranceBelowPrecision) {
+            // A value no arc table can be certified to is bad input (exit 2), named where it
+            // came from: the option, or the project's design.
+            throw CliError{kInvalidInput, tolerance ? "--tolerance" : path + ": " + d.location,
+                           d.message};
+        }
         throw CliError{kNotComputable, path + ": " + d.location, d.message};
     }
     const SynthesisReport& r = made.value().report;

@@ -131,7 +131,9 @@ std::vector<CommandHelp> makeTable() {
            "every joint; seed: the seed document's stepwise method"},
           {"--path", "POINTS.csv", "time this point list instead of a project"},
           {"--accel", "AX,AY[,AZ]",
-           "axis accelerations in mm/s² (required without a project's machining section)"},
+           "axis accelerations in mm/s² (required without a project's machining section); "
+           "without AZ the path must stay in one plane z = const, a path that moves along z is "
+           "refused (exit 2)"},
           {"--vmax", "VX,VY[,VZ]", "axis speed limits in mm/s"},
           {"--feed", "F", "the path speed limit in mm/s"},
           {"--step", "L", "the seed method's step along the path in mm"},
@@ -165,10 +167,12 @@ std::vector<CommandHelp> makeTable() {
                  "turn) for its follower, fits it with tangent-continuous arcs within the "
                  "tolerance and writes the project with that contour to NEW. A JSON report on "
                  "standard output says what the arcs cost the motion: segments, "
-                 "max_deviation_mm and the largest errors of lift, velocity and acceleration. "
-                 "Exit 3 with the reason when the design cannot be made (undercut, a roller "
-                 "larger than a concave part, a pressure angle beyond the limit of a strict "
-                 "design).",
+                 "max_deviation_mm (measured on the contour made, not the tolerance) and the "
+                 "largest errors of lift, velocity and acceleration. Exit 3 with the reason when "
+                 "the design cannot be made (undercut, a roller larger than a concave part, a "
+                 "pressure angle beyond the limit of a strict design); exit 2 for a tolerance "
+                 "below what double precision can certify for the cam (16 machine epsilons of "
+                 "its largest radius; the message gives the limit).",
                  {{"--out", "NEW", "the file for the new project (required)"},
                   {"--tolerance", "MM",
                    "the largest normal deviation from the exact profile (default: the design's "

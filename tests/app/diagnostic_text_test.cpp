@@ -72,7 +72,9 @@ Diagnostic sample(DiagnosticCode code) {
     Diagnostic d = Diagnostic("machining.step", "english text").coded(code, sampleArguments(code));
     // Codes that nest whole diagnostics carry one, worded too.
     if (code == DiagnosticCode::FilletRadiusInvalidContour ||
-        code == DiagnosticCode::TangentNoneFits) {
+        code == DiagnosticCode::TangentNoneFits ||
+        code == DiagnosticCode::SynthesisedContourInvalid ||
+        code == DiagnosticCode::SynthesisedArcInvalid) {
         d.reasons.push_back(Diagnostic("contour[2].radius", "nested english text")
                                 .coded(DiagnosticCode::NotPositive, {-2.5}));
     }

@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
 #include <QTest>
+#include <cmath>
 
 #include "app_test_support.h"
 #include "document/commands.h"
@@ -202,6 +204,52 @@ TEST(MachiningPanelFields, AnEditChangesOnlyItsOwnField) {
     expected.axisAccel = {500.25, 499.75};
     EXPECT_EQ(*window.document()->project().machining, expected);
     EXPECT_EQ(z->text(), "none");
+}
+
+// Issue 27 point 7: the panel's Z "none" leaves z unlimited. The panel times the contour offset
+// by the tool, a path in the plane, so z's limit cannot matter: every time equals the one the
+// core gives with the slowest z limit there is (1e-6 mm/s²), finite and positive, and the
+// plotted profile of every method is finite. (A path that moved along z would be refused by the
+// core, checked in core_tests TimingHostile.AnAxisThePathMovesAlong….)
+TEST(MachiningPanelFields, WithoutAZLimitEveryTimeAndProfileIsFinite) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kProject).isEmpty());
+    openPanel(window);
+    QApplication::setActiveWindow(&window);
+    auto* z = window.machiningPanel()->findChild<QDoubleSpinBox*>("accelZSpinBox");
+    ASSERT_NE(z, nullptr);
+    typeAndEnter(z, "0");
+    ASSERT_EQ(z->text(), "none");
+    ASSERT_EQ(window.document()->project().machining->axisAccel.size(), 2u);
+    const Project p = loadProjectFile(kProject.toStdString()).value();
+    const ToolPath path =
+        toolPathFromContour(Contour::build(p).value(), p.machining->toolRadius).value();
+    MachineLimits slowest = limitsFromProject(*p.machining);
+    slowest.accel[2] = 1e-6;
+    const TimingMethod methods[] = {TimingMethod::Seed, TimingMethod::ExactStop,
+                                    TimingMethod::Optimal};
+    auto* plotted = window.machiningPanel()->findChild<QComboBox*>("plotMethodComboBox");
+    ASSERT_NE(plotted, nullptr);
+    for (int m = 0; m < 3; ++m) {
+        SCOPED_TRACE(m);
+        plotted->setCurrentIndex(m);
+        ASSERT_TRUE(waitForTiming(window));
+        const auto outcome = window.engine()->latestTiming();
+        ASSERT_TRUE(outcome->errors.empty()) << diagnosticsText(outcome->errors).toStdString();
+        EXPECT_TRUE(std::isinf(outcome->limits.accel[2]));
+        for (int k = 0; k < 3; ++k) {
+            const double t = outcome->timesS[static_cast<std::size_t>(k)];
+            EXPECT_TRUE(std::isfinite(t) && t > 0.0) << t;
+            EXPECT_EQ(t, machiningTime(path, slowest, methods[k]).value().timeS) << k;
+        }
+        const TimingProfile& profile = outcome->profile;
+        ASSERT_FALSE(profile.s.empty());
+        for (std::size_t k = 0; k < profile.s.size(); ++k) {
+            ASSERT_TRUE(std::isfinite(profile.s[k]) && std::isfinite(profile.speed[k]) &&
+                        profile.accel[k].allFinite())
+                << k;
+        }
+    }
 }
 
 TEST(MachiningPanelFields, EnterOnEveryUnchangedFieldChangesNothing) {

@@ -75,7 +75,9 @@ double valueAt(const QCPGraph* graph, double x) {
     return best;
 }
 
-bool waitForResult(MainWindow& w) { return w.waitForCurrentResult(test::kSanitized ? 60000 : 20000); }
+bool waitForResult(MainWindow& w) {
+    return w.waitForCurrentResult(test::kSanitized ? 60000 : 20000);
+}
 
 /// Runs Synthesize and waits for its end; the problem (empty: the contour was replaced).
 QString synthesizeAndWait(MainWindow& w) {
@@ -121,11 +123,10 @@ TEST(MotionDesign, ADesignWithoutAContourOpensAndDrawsItsLaw) {
     }
     // Velocity and acceleration at the project's speed: ω s', ω² s''.
     for (double deg : {10.0, 30.0, 60.0, 90.0}) {
-        EXPECT_NEAR(valueAt(panel->plot(1)->graph(0), deg), omega * rise.ds(degToRad(deg)),
-                    1e-9)
+        EXPECT_NEAR(valueAt(panel->plot(1)->graph(0), deg), omega * rise.ds(degToRad(deg)), 1e-9)
             << deg;
-        EXPECT_NEAR(valueAt(panel->plot(2)->graph(0), deg),
-                    omega * omega * rise.dds(degToRad(deg)), 1e-8)
+        EXPECT_NEAR(valueAt(panel->plot(2)->graph(0), deg), omega * omega * rise.dds(degToRad(deg)),
+                    1e-8)
             << deg;
     }
     // Cv, Ca, Cj of the cycloid (math.md §8's table: 2, 2π, 4π²) in the table.
@@ -329,6 +330,29 @@ TEST(MotionDesign, ADesignThatCannotBeMadeIsRefusedAndChangesNothing) {
     const int steps = doc->undoStack()->count();
     const QString problem = synthesizeAndWait(window);
     EXPECT_NE(problem.indexOf("undercut"), -1) << problem.toStdString();
+    EXPECT_EQ(doc->project().contour, before.contour);
+    EXPECT_EQ(doc->undoStack()->count(), steps);
+}
+
+// Issue 27 point 6: a tolerance below what double precision can certify (a file may hold one;
+// the dock's box goes down to 1e-6 mm) is refused with the limit, and nothing changes. The
+// roller's profile reaches 40 + 10 = 50 mm from the centre: 16 machine epsilons of that is
+// 1.776356839e-13 mm.
+TEST(MotionDesign, AToleranceBelowDoublePrecisionIsRefusedWithTheLimit) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ProjectDocument* doc = window.document();
+    DesignSpec fine = *doc->project().design;
+    fine.tolerance = 1e-13;
+    doc->undoStack()->push(new SetDesign(doc, fine, "fine"));
+    ASSERT_TRUE(doc->isValid()) << diagnosticsText(doc->diagnostics()).toStdString();
+    const Project before = doc->project();
+    const int steps = doc->undoStack()->count();
+    const QString problem = synthesizeAndWait(window);
+    EXPECT_NE(problem.indexOf("Motion design, tolerance: 1e-13 mm is below what double precision "
+                              "can certify for this cam: at least 1.776356839e-13 mm"),
+              -1)
+        << problem.toStdString();
     EXPECT_EQ(doc->project().contour, before.contour);
     EXPECT_EQ(doc->undoStack()->count(), steps);
 }

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -105,6 +106,56 @@ TEST(CliSynthesize, TheToleranceOptionIsUsedAndKept) {
     EXPECT_EQ(Json::parse(test::readFile(made)).at("design").at("tolerance"), 0.05);
 }
 
+// Issue 27 point 6: at 1e-12 mm the old report said max_deviation_mm 9.95e-13 while its own
+// max_lift_error_mm said 1.05e-10 (the roller example). On a radial knife the lift error is the
+// radial gap between contour and profile, which exceeds the normal deviation by at most
+// 1/cos of the pressure angle (at most 12.1° on this design: the cycloidal rise's
+// atan(10·2/(2π/3) / 45)); so the two reported numbers must agree that way.
+TEST(CliSynthesize, TheDeviationReportedAt1e12IsTheOneReached) {
+    test::TempDir dir;
+    const std::string in = dir.file("design.cam.json"), made = dir.file("made.cam.json");
+    test::writeFileWithMode(in, designProject(R"({ "type": "knife" })"), 0644);
+    const auto r = test::runCli({"synthesize", in, "--out", made, "--tolerance", "1e-12"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Json report = Json::parse(r.out);
+    const double deviation = report.at("max_deviation_mm").get<double>();
+    const double lift = report.at("max_lift_error_mm").get<double>();
+    EXPECT_LE(deviation, 1e-12);
+    EXPECT_LE(lift, deviation / std::cos(12.2 * M_PI / 180.0) * 1.05);
+    EXPECT_GE(lift, deviation * 0.95);
+}
+
+// Issue 27 point 6: a tolerance below what double precision can certify for the cam's size
+// is bad input (cli.md: exit 2), named where it came from, with the limit: 16 machine epsilons
+// of the 50 mm the profile reaches (40 mm base radius + 10 mm lift), 1.776356839e-13 mm.
+TEST(CliSynthesize, AToleranceBelowDoublePrecisionIsRefusedWithTheLimit) {
+    test::TempDir dir;
+    const std::string in = dir.file("design.cam.json"), made = dir.file("made.cam.json");
+    const std::string limit = "at least 1.776356839e-13 mm";
+    test::writeFileWithMode(in, designProject(R"({ "type": "knife" })"), 0644);
+    test::writeFileWithMode(made, "old contents", 0644);
+    const auto r = test::runCli({"synthesize", in, "--out", made, "--tolerance", "1e-13"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("camwright-cli: --tolerance: 1e-13 mm is below what double precision "
+                          "can certify for this cam",
+                          0),
+              0u)
+        << r.err;
+    EXPECT_NE(r.err.find(limit), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_TRUE(test::readFile(made) == "old contents");
+    // The project's own tolerance: named in the project.
+    std::string project = designProject(R"({ "type": "knife" })");
+    project.replace(project.find(R"("tolerance": 0.001)"), 18, R"("tolerance": 1e-13)");
+    test::writeFileWithMode(in, project, 0644);
+    const auto own = test::runCli({"synthesize", in, "--out", made});
+    EXPECT_EQ(own.exitCode, 2) << own.err;
+    EXPECT_NE(own.err.find(in + ": design.tolerance: 1e-13 mm is below"), std::string::npos)
+        << own.err;
+    EXPECT_NE(own.err.find(limit), std::string::npos) << own.err;
+    EXPECT_TRUE(test::readFile(made) == "old contents");
+}
+
 TEST(CliSynthesize, WhatCannotBeMadeIsNamedAndTheOldFileStays) {
     test::TempDir dir;
     const std::string made = dir.file("made.cam.json");
@@ -191,8 +242,7 @@ TEST(CliSynthesize, ADesignWithoutAContourIsValidButHasNothingToComputeYet) {
     EXPECT_FALSE(fs::exists(dir.file("out.dxf")));
     // Without a design an empty contour stays a problem.
     test::writeFileWithMode(
-        in, R"({"format": "camwright", "version": 1, "motion": {"rpm": 60}, "contour": []})",
-        0644);
+        in, R"({"format": "camwright", "version": 1, "motion": {"rpm": 60}, "contour": []})", 0644);
     const auto invalid = test::runCli({"validate", in});
     EXPECT_EQ(invalid.exitCode, 2);
     EXPECT_NE(invalid.err.find("contour: must have at least one segment"), std::string::npos)

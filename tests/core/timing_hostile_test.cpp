@@ -356,7 +356,7 @@ TEST(TimingHostile, TheRangesEndsGiveTheClosedForms) {
 
 // Fact: no combination of valid extremes (limits at both ends of their ranges, unlimited axes,
 // the tiniest and largest paths and arcs a point list may hold) gives a non-finite number:
-// every time is finite and positive, or the input is refused.
+// every time is finite and positive, or the input is refused (a path along an unlimited axis).
 TEST(TimingHostile, ExtremeButValidInputsGiveFiniteTimes) {
     const std::vector<std::vector<PathPoint>> paths{
         {{{0, 0, 0}, 0.0}, {{1e-6, 0, 0}, 0.0}},                      // 1 µm line
@@ -387,10 +387,109 @@ TEST(TimingHostile, ExtremeButValidInputsGiveFiniteTimes) {
                 // need 8e6 to converge (a second each); finite they must be either way.
                 const Result<TimingResult> r =
                     machiningTime(path.value(), lim, method, nullptr, std::size_t{1} << 20);
+                if (p == 1 && l == 2) {
+                    // The workspace diagonal moves along z, which these limits leave unlimited:
+                    // refused (issue 27), never timed as if z were infinitely quick.
+                    ASSERT_FALSE(r.ok());
+                    EXPECT_EQ(r.errors().front().location, "accel[2]");
+                    continue;
+                }
                 ASSERT_TRUE(r.ok()) << textOf(r.errors());
                 EXPECT_TRUE(allFinite(r.value()));
                 EXPECT_GT(r.value().timeS, 0.0);
             }
+        }
+    }
+}
+
+// Issue 27 point 7: a plunge (0,0,0) → (0,0,−5) with accelerations 500, 500 and none for z
+// took 0 s by the seed method (its speed, bounded by the accelerations alone, was infinite and
+// so was its profile's), 1 s by exact stop (the z speed limit alone), and without a z speed
+// limit 0 s by exact stop and an infinite time by optimal. An axis the path moves along must
+// have an acceleration limit: every method and every profile refuse it, naming the axis and
+// the segment.
+TEST(TimingHostile, AnAxisThePathMovesAlongWithoutAnAccelerationLimitIsRefused) {
+    const ToolPath plunge{{PathSegment::line({0, 0, 0}, {0, 0, -5})}};
+    const ToolPath along{
+        {PathSegment::line({0, 0, 0}, {10, 0, 0}), PathSegment::line({10, 0, 0}, {10, 0, -5})}};
+    struct Case {
+        const ToolPath* path;
+        MachineLimits limits;
+        std::string location, message;
+    };
+    const std::vector<Case> cases{
+        {&plunge, limitsOf({500, 500, kUnlimited}, kUnlimited, {100, 100, 5}), "accel[2]",
+         "no acceleration limit for the z axis, along which the path moves (segment 0): without "
+         "one its speed would be unbounded and its time 0"},
+        {&plunge, limitsOf({500, 500, kUnlimited}), "accel[2]",
+         "no acceleration limit for the z axis, along which the path moves (segment 0): without "
+         "one its speed would be unbounded and its time 0"},
+        {&along, limitsOf({kUnlimited, 500, kUnlimited}, kUnlimited, {100, 100, 100}), "accel[0]",
+         "no acceleration limit for the x axis, along which the path moves (segment 0): without "
+         "one its speed would be unbounded and its time 0"},
+    };
+    for (const Case& c : cases) {
+        for (TimingMethod method :
+             {TimingMethod::Seed, TimingMethod::ExactStop, TimingMethod::Optimal}) {
+            SCOPED_TRACE(c.location + ", " + timingMethodName(method));
+            const Diagnostics errors = errorsOf(machiningTime(*c.path, c.limits, method));
+            ASSERT_FALSE(errors.empty());
+            EXPECT_EQ(errors.front().location, c.location);
+            EXPECT_EQ(errors.front().message, c.message);
+            EXPECT_EQ(errors.front().code, DiagnosticCode::AccelerationLimitMissing);
+            const Diagnostics profile = errorsOf(timingProfile(*c.path, c.limits, method, 100));
+            ASSERT_FALSE(profile.empty());
+            EXPECT_EQ(profile.front().location, c.location);
+        }
+    }
+    // The second path leaves x unlimited too, and moves along z only in its segment 1.
+    const Diagnostics both = checkMovingAxesLimited(along, limitsOf({kUnlimited, 500, kUnlimited}));
+    ASSERT_EQ(both.size(), 2u) << textOf(both);
+    EXPECT_EQ(both[1].location, "accel[2]");
+    EXPECT_NE(both[1].message.find("(segment 1)"), std::string::npos) << both[1].message;
+}
+
+// Issue 27 point 7: with z limited the plunge is the closed form, and a path in the plane does
+// not need z's limit: leaving it out gives the same times as any z limit at all (even the
+// slowest, 1e-6 mm/s²), all finite and positive, profiles included.
+TEST(TimingHostile, ThePlungeWithItsLimitIsTheClosedFormAndAPlaneNeedsNoZ) {
+    // Exact stop along z: a = 200, v = 5, L = 5 mm: v²/a = 0.125 mm <= 5 mm, the trapezoid
+    // t = L/v + v/a = 1 + 0.025 s; a single line from rest to rest, so optimal is the same.
+    const ToolPath plunge{{PathSegment::line({0, 0, 0}, {0, 0, -5})}};
+    const MachineLimits z = limitsOf({500, 500, 200}, kUnlimited, {100, 100, 5});
+    for (TimingMethod method : {TimingMethod::ExactStop, TimingMethod::Optimal}) {
+        const Result<TimingResult> r = machiningTime(plunge, z, method);
+        ASSERT_TRUE(r.ok()) << textOf(r.errors());
+        EXPECT_TRUE(relClose(r.value().timeS, 1.025, 1e-6)) << timingMethodName(method);
+    }
+    const Result<TimingResult> seed = machiningTime(plunge, z, TimingMethod::Seed);
+    ASSERT_TRUE(seed.ok());
+    EXPECT_TRUE(relClose(seed.value().timeS,
+                         test::seedReference(RefPiece::line({0, 0, 0}, {0, 0, -5}), z), 1e-12));
+    EXPECT_GT(seed.value().timeS, 0.0);
+
+    // A square in the plane z = 1 with a quarter arc: z never moves.
+    const ToolPath plane{{PathSegment::line({0, 0, 1}, {20, 0, 1}),
+                          PathSegment::arc({20, 10}, 10.0, -kPi / 2, kPi / 2, 1.0),
+                          PathSegment::line({30, 10, 1}, {30, 40, 1})}};
+    for (TimingMethod method :
+         {TimingMethod::Seed, TimingMethod::ExactStop, TimingMethod::Optimal}) {
+        SCOPED_TRACE(timingMethodName(method));
+        const MachineLimits none = limitsOf({500, 250, kUnlimited}, 80, {100, 60, kUnlimited});
+        const MachineLimits slow = limitsOf({500, 250, 1e-6}, 80, {100, 60, 1e-6});
+        const Result<TimingResult> a = machiningTime(plane, none, method);
+        const Result<TimingResult> b = machiningTime(plane, slow, method);
+        ASSERT_TRUE(a.ok() && b.ok()) << textOf(errorsOf(a)) << textOf(errorsOf(b));
+        EXPECT_TRUE(allFinite(a.value()));
+        EXPECT_GT(a.value().timeS, 0.0);
+        EXPECT_EQ(a.value().timeS, b.value().timeS);
+        const Result<TimingProfile> profile = timingProfile(plane, none, method, 200);
+        ASSERT_TRUE(profile.ok());
+        for (std::size_t k = 0; k < profile.value().s.size(); ++k) {
+            ASSERT_TRUE(std::isfinite(profile.value().s[k]) &&
+                        std::isfinite(profile.value().speed[k]) &&
+                        profile.value().accel[k].allFinite())
+                << k;
         }
     }
 }

@@ -647,6 +647,11 @@ QString translatedMessage(const Diagnostic& d) {
                        "%1 mm makes %2 steps on this %3 mm path; the seed method takes at most "
                        "%4: a step of at least %5 mm")
                 .arg(a(0), a(1), a(2), a(3), a(4));
+        case Code::AccelerationLimitMissing:
+            return DiagnosticText::tr(
+                       "no acceleration limit for the %1 axis, along which the path moves "
+                       "(segment %2): without one its speed would be unbounded and its time 0")
+                .arg(axisName(static_cast<int>(std::get<double>(d.args[0]))), a(1));
         case Code::PathEmpty:
             return DiagnosticText::tr("is empty");
         case Code::PathPointInvalid:
@@ -941,12 +946,30 @@ QString translatedMessage(const Diagnostic& d) {
                 "the project has no motion design to synthesise a contour "
                 "from");
         case Code::SynthesisedContourInvalid:
-            return DiagnosticText::tr("the synthesised arc table is not a valid contour");
+            return DiagnosticText::tr("the synthesised arc table is not a valid contour: %1")
+                .arg(d.reasons.empty() ? QString() : DiagnosticText::line(d.reasons[0]));
+        case Code::SynthesisedArcInvalid:
+            return DiagnosticText::tr(
+                       "the synthesised arc table is not a valid contour: segment %1, made for "
+                       "the cam angles %2° to %3° of design segment %4 (%5)")
+                .arg(a(0), a(1), a(2), a(3),
+                     d.reasons.empty() ? QString() : DiagnosticText::line(d.reasons[0]));
         case Code::ToleranceCannotBeMet:
             return DiagnosticText::tr(
-                "cannot be met: no biarc joins two neighbouring points of the profile's sampling "
-                "within it (the profile has a corner or a cusp there, or the tolerance is too "
-                "small)");
+                       "cannot be met near %1°: no arcs come within it even on pieces of 2^-%2 "
+                       "of the profile's sampling step (the profile has a corner or a cusp "
+                       "there)")
+                .arg(a(0), a(1));
+        case Code::ToleranceBelowPrecision:
+            return DiagnosticText::tr(
+                       "%1 mm is below what double precision can certify for this cam: at least "
+                       "%2 mm, for a profile reaching %3 mm from the centre")
+                .arg(a(0), a(1), a(2));
+        case Code::ToleranceNotReached:
+            return DiagnosticText::tr(
+                       "cannot be met: the closest arc table found lies %2 mm from the exact "
+                       "profile (at %3° of cam angle), more than the %1 mm asked for")
+                .arg(a(0), a(1), a(2));
         case Code::OffsetOutsideBaseCircle:
             return DiagnosticText::tr(
                        "the follower's line (offset %1 mm) passes outside the base circle of "

@@ -168,7 +168,8 @@ struct SegmentPlace {
     X(ToolTrimsSegment, "n") /* the tool radius %1 mm is too large here: … trimmed beyond … */          \
     X(SeedStepTooSmall, "nn") /* must be a finite length of at least %1 mm (got %2) */                      \
     X(SeedStepTooMany, "nnnin") /* %1 mm makes %2 steps on this %3 mm path; … at most %4: … %5 */       \
-    X(PathEmpty, "")            /* is empty */                                                              \
+    X(AccelerationLimitMissing, "ii") /* no acceleration limit for the %1 axis … (segment %2) */          \
+    X(PathEmpty, "")                  /* is empty */                                                        \
     X(PathPointInvalid, "")  /* coordinates must be finite, at most 1e6 mm, and the bulge … */            \
     X(PathTooFewPoints, "")  /* a path needs at least two points */                                         \
     X(PathPointRepeated, "") /* repeats the previous point */                                               \
@@ -254,8 +255,11 @@ struct SegmentPlace {
     X(WindowsSegmentsDoNotMeet, "")    /* the neighbouring segments do not meet, so … */                  \
     X(ContourNeverSynthesised, "")     /* is empty: the design's contour was never synthe… */             \
     X(NoDesign, "")                    /* the project has no design to synthesise a conto… */             \
-    X(SynthesisedContourInvalid, "")   /* the synthesised arc table is not a valid contour */               \
-    X(ToleranceCannotBeMet, "")        /* cannot be met: no biarc joins two neighbouring … */             \
+    X(SynthesisedContourInvalid, "")   /* … not a valid contour: reasons[0] */                            \
+    X(SynthesisedArcInvalid, "knni")   /* … contour[%1] … %2°–%3° … [%4]: … */                  \
+    X(ToleranceCannotBeMet, "ni")      /* cannot be met near %1°: … 2^-%2 … */                         \
+    X(ToleranceBelowPrecision, "nnn")  /* %1 mm … at least %2 mm (… %3 mm) */                           \
+    X(ToleranceNotReached, "nnn")      /* … %2 mm … at %3° (asked %1 mm) */                            \
     X(OffsetOutsideBaseCircle, "nn") /* the follower's line (offset %1 mm) … radius %2 mm: … */         \
     X(OffsetOutsidePitchBaseCircle, "nn") /* … radius %2 mm (base radius + roller radius): … */         \
     X(ArmMissesBaseCircle, "nnn")      /* an arm of %1 mm from a pivot %2 mm … radius %3 mm */            \

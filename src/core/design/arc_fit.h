@@ -33,17 +33,25 @@ struct FittedArc {
 
 struct ArcFit {
     std::vector<FittedArc> arcs;  ///< in the curve's order, closed: the last ends at the first
-    /// The largest distance from the curve to the arcs found over the dense check (mm).
+    /// The largest of the bounds on the distance from the curve to the biarcs the fit took (mm):
+    /// their distance at the points it checked plus what it can grow between them (arc_fit.cpp,
+    /// boundedDeviation). The fit's own figure: synthesize measures the contour apart from it.
     double maxDeviation = 0.0;
-    std::size_t checkedPoints = 0;  ///< how many curve points that check measured
 };
 
 /// @brief Fits the closed curve t ↦ curve(t), t over [t0, t0 + 2π) (the end meets the start
 /// with the same tangent direction), by G1 arcs whose distance from the curve is at most
-/// `tolerance` everywhere. Returns no value when cancelled (located "design.tolerance" when
-/// the tolerance cannot be met with arcs longer than the curve's sampling).
+/// `tolerance` everywhere: checked at 2^14 samples of the curve and, where that does not settle
+/// a biarc, at three points between each two, with a bound on what the distance can do between
+/// the points checked; where one interval of the sampling is not fine enough, it is halved (up
+/// to 2^-24 of it). No arc whose centre lies beyond kMaxLengthMm or whose radius is so large
+/// that its rounding would matter to the tolerance, and no arc turning clockwise (concave on a
+/// curve that runs counter-clockwise) of radius `minConcaveRadius` or less. Returns no value when
+/// cancelled; an error located "design.tolerance" (ToleranceCannotBeMet, with the parameter in
+/// degrees) when even the finest pieces do not come within the tolerance (a corner or a cusp).
 [[nodiscard]] Result<ArcFit> fitArcs(const std::function<CurveSample(double)>& curve, double t0,
-                                     double tolerance, const std::atomic<bool>* cancel = nullptr);
+                                     double tolerance, const std::atomic<bool>* cancel = nullptr,
+                                     double minConcaveRadius = 0.0);
 
 /// @brief The distance from x to one fitted arc (to its nearer end beyond its span).
 [[nodiscard]] double distanceToArc(const FittedArc& arc, const Eigen::Vector2d& x);

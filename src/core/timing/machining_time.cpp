@@ -695,12 +695,40 @@ Diagnostics checkMachineLimits(const MachineLimits& lim) {
     return errors;
 }
 
+Diagnostics checkMovingAxesLimited(const ToolPath& path, const MachineLimits& lim) {
+    Diagnostics errors;
+    static constexpr const char* kAxes[] = {"x", "y", "z"};
+    for (int i = 0; i < 3; ++i) {
+        if (!std::isinf(lim.accel[i])) continue;
+        for (std::size_t k = 0; k < path.segments.size(); ++k) {
+            const PathSegment& seg = path.segments[k];
+            const bool moves =
+                seg.kind == PathSegment::Kind::Arc ? i < 2 : std::abs(seg.tangent(0.0)[i]) > kTiny;
+            if (!moves) continue;
+            errors.push_back(
+                Diagnostic("accel[" + std::to_string(i) + "]",
+                           std::string("no acceleration limit for the ") + kAxes[i] +
+                               " axis, along which the path moves (segment " + std::to_string(k) +
+                               "): without one its speed would be unbounded and its time 0")
+                    .coded(DiagnosticCode::AccelerationLimitMissing,
+                           {static_cast<double>(i), static_cast<double>(k)}));
+            break;
+        }
+    }
+    return errors;
+}
+
 namespace {
 
-/// What every timing entry point refuses before any work: limits out of range, an empty path,
-/// a seed step that is no step for this path.
+/// What every timing entry point refuses before any work: limits out of range, an axis the path
+/// moves along without an acceleration limit, an empty path, a seed step that is no step for
+/// this path.
 Diagnostics checkTimingInputs(const ToolPath& path, const MachineLimits& lim, TimingMethod method) {
     Diagnostics errors = checkMachineLimits(lim);
+    if (errors.empty()) {
+        const Diagnostics unlimited = checkMovingAxesLimited(path, lim);
+        errors.insert(errors.end(), unlimited.begin(), unlimited.end());
+    }
     if (path.segments.empty()) {
         errors.push_back(Diagnostic("path", "is empty").coded(DiagnosticCode::PathEmpty, {}));
     }

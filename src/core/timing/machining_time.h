@@ -17,6 +17,8 @@ inline constexpr double kUnlimited = std::numeric_limits<double>::infinity();
 
 /// @brief Machine limits. Axes without a limit are +infinity; a finite limit lies within
 /// [kMinMachineLimit, kMaxAccelMmS2] (accelerations) or [kMinMachineLimit, kMaxSpeedMmS] (speeds).
+/// An axis without an acceleration limit is one the path must not move along (a contour in the
+/// plane leaves z alone): checkMovingAxesLimited, and every timing entry point, refuse it.
 struct MachineLimits {
     Eigen::Vector3d accel{500, 500, 200};                      ///< per axis, mm/s²
     Eigen::Vector3d vmax{kUnlimited, kUnlimited, kUnlimited};  ///< per axis, mm/s
@@ -27,6 +29,14 @@ struct MachineLimits {
 /// @brief The limits' errors, located `accel[i]`, `vmax[i]`, `feed`: each must be unlimited
 /// (+infinity) or within its range (a denormal or a zero would make times infinite or NaN).
 [[nodiscard]] Diagnostics checkMachineLimits(const MachineLimits& limits);
+
+/// @brief One error for every axis the path moves along without an acceleration limit, located
+/// `accel[i]` (DiagnosticCode::AccelerationLimitMissing: the axis and the first path segment
+/// that moves it): with none the seed's speed is infinite and exact stop and optimal take 0 s
+/// or never converge, whatever the other axes allow. A line moves an axis when its unit
+/// direction has a component above 1e-12 there (what the planner counts as moving); an arc
+/// moves x and y.
+[[nodiscard]] Diagnostics checkMovingAxesLimited(const ToolPath& path, const MachineLimits& limits);
 
 /// @brief The limits a project's `machining` section gives (2 axes: z unlimited).
 [[nodiscard]] MachineLimits limitsFromProject(const MachiningSpec& machining);
@@ -71,7 +81,8 @@ struct TimingResult {
 /// grid that starts from a 4096-point share (at least 4 intervals a segment) and doubles the
 /// intervals of every segment whose time is not yet converged (see TimingResult::converged).
 /// `maxPlanPoints` bounds one plan's grid (kMaxPlanPoints; smaller for less memory).
-/// Errors: the limits' (checkMachineLimits), an empty path, and for the seed a step too small
+/// Errors: the limits' (checkMachineLimits), an axis the path moves along without an
+/// acceleration limit (checkMovingAxesLimited), an empty path, and for the seed a step too small
 /// for the path (checkSeedStep, located `step`).
 /// If `cancel` is given it is polled within every loop (segments, seed steps, grid points), so a
 /// cancel is honoured within about a millisecond; a cancelled computation returns the error
