@@ -543,39 +543,44 @@ TEST(Autosave, EndedSessionsWithoutACopyLeaveNothingBehind) {
     EXPECT_FALSE(QFile::exists(autosave.lockPath()));
 }
 
-TEST(Autosave, RestoreWritesThisSessionsCopyBeforeTheOldOneGoes) {
-    QTemporaryDir home;
-    const QString folder = home.filePath("recovery");
-    leaveEndedSession(folder, "session-dead", 27.5, home.filePath("cam.cam.json"), lockTextOf(1));
-    ProjectDocument doc;
-    Autosave autosave(&doc, folder);
-    std::vector<Autosave::Orphan> orphans = autosave.orphans();
+/// A session that ended leaving the six-lobe project (first centre at 27.5) as a copy of
+/// cam.cam.json, and this session's document and autosave in the same folder.
+class Restore : public ::testing::Test {
+protected:
+    void SetUp() override {
+        leaveEndedSession(m_folder, "session-dead", 27.5, m_home.filePath("cam.cam.json"),
+                          lockTextOf(1));
+    }
+    QTemporaryDir m_home;
+    QString m_folder = m_home.filePath("recovery");
+    ProjectDocument m_doc;
+    Autosave m_autosave{&m_doc, m_folder};
+};
+
+TEST_F(Restore, ThisSessionsCopyIsWrittenBeforeTheOldOneGoes) {
+    std::vector<Autosave::Orphan> orphans = m_autosave.orphans();
     ASSERT_EQ(orphans.size(), 1u);
     QString problem;
-    ASSERT_TRUE(autosave.adopt(orphans.front(), &problem)) << problem.toStdString();
+    ASSERT_TRUE(m_autosave.adopt(orphans.front(), &problem)) << problem.toStdString();
     EXPECT_TRUE(problem.isEmpty()) << problem.toStdString();
-    EXPECT_EQ(doc.filePath(), home.filePath("cam.cam.json"));
-    EXPECT_TRUE(doc.isModified());
+    EXPECT_EQ(m_doc.filePath(), m_home.filePath("cam.cam.json"));
+    EXPECT_TRUE(m_doc.isModified());
     // The edit is safe in this session's copy, and the ended session's files are gone.
-    EXPECT_EQ(firstCentreX(autosave.recoveryPath()), 27.5);
+    EXPECT_EQ(firstCentreX(m_autosave.recoveryPath()), 27.5);
     EXPECT_FALSE(QFile::exists(orphans.front().project));
     EXPECT_FALSE(QFile::exists(orphans.front().meta));
     EXPECT_FALSE(QFile::exists(orphans.front().lock));
 }
 
-TEST(Autosave, ARestoreThatCannotWriteItsOwnCopyKeepsTheOldOne) {
-    QTemporaryDir home;
-    const QString folder = home.filePath("recovery");
-    leaveEndedSession(folder, "session-dead", 27.5, home.filePath("cam.cam.json"), lockTextOf(1));
-    ProjectDocument doc;
-    Autosave autosave(&doc, folder);
-    ASSERT_TRUE(QDir().mkpath(autosave.notePath()));  // a folder where the note goes
-    std::vector<Autosave::Orphan> orphans = autosave.orphans();
+TEST_F(Restore, ARestoreThatCannotWriteItsOwnCopyKeepsTheOldOne) {
+    ASSERT_TRUE(QDir().mkpath(m_autosave.notePath()));  // a folder where the note goes
+    std::vector<Autosave::Orphan> orphans = m_autosave.orphans();
     ASSERT_EQ(orphans.size(), 1u);
     QString problem;
-    EXPECT_TRUE(autosave.adopt(orphans.front(), &problem));
+    EXPECT_TRUE(m_autosave.adopt(orphans.front(), &problem));
     EXPECT_TRUE(problem.contains("kept")) << problem.toStdString();
     EXPECT_EQ(firstCentreX(orphans.front().project), 27.5);
 }
+
 }  // namespace
 }  // namespace cam
