@@ -18,10 +18,10 @@ packages=(
     # tests and benchmarks
     libgtest-dev libgmock-dev googletest libbenchmark-dev
     python3 python3-mpmath python3-numpy python3-ezdxf python3-svgelements
-    # the programs that read exports in the tests: LinuxCNC's rs274 (unpacked on first use by
-    # ../shared/tools/rs274) needs this library; poppler (pdfinfo, pdftotext, pdftoppm) and
-    # rsvg-convert read the pictures of the plots
-    libboost-python1.74.0 poppler-utils librsvg2-bin
+    # the programs that read exports in the tests: LinuxCNC's rs274 (tests/tools/rs274 unpacks
+    # Debian's linuxcnc-uspace below) needs these libraries; poppler (pdfinfo, pdftotext,
+    # pdftoppm) and rsvg-convert read the pictures of the plots
+    libboost-python1.74.0 libpython3.11 poppler-utils librsvg2-bin
     # headless rendering needs real fonts
     fonts-dejavu-core
     # a real X display and input for the crash-recovery test (app_tests CrashRecovery.*)
@@ -36,11 +36,15 @@ for p in "${packages[@]}"; do
         missing+=("$p")
     fi
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+if [ ${#missing[@]} -gt 0 ]; then
+    echo "install-deps: installing ${missing[*]}" >&2
+    sudo_cmd=()
+    [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+    export DEBIAN_FRONTEND=noninteractive
+    "${sudo_cmd[@]}" apt-get update -qq
+    "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
 
-echo "install-deps: installing ${missing[*]}" >&2
-sudo_cmd=()
-[ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
-export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+# LinuxCNC's G-code interpreter for the G-code tests: Debian's package unpacked into the user's
+# cache, not installed (quick when it is already there).
+bash "$(dirname "$0")/../tests/tools/rs274" --install

@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -23,13 +22,11 @@ inline std::string freeTextChecker() {
     return std::string(CAMWRIGHT_SOURCE_DIR) + "/tests/reference/check_free_text.py";
 }
 
-/// Runs freeTextChecker on every export in `folder` (with LinuxCNC's rs274 for G-code where it
-/// is at hand): the problems it found, empty when there were none or `files` files were not
-/// all checked.
+/// Runs freeTextChecker on every export in `folder`, G-code through LinuxCNC's rs274 too:
+/// success, or the problems it found, or that not `files` files were checked.
 inline ::testing::AssertionResult exportsAreValid(const std::string& folder, std::size_t files) {
-    const std::string rs274 = std::string(CAMWRIGHT_SOURCE_DIR) + "/../shared/tools/rs274";
-    std::vector<std::string> args{freeTextChecker(), folder, "--points", "360"};
-    if (std::filesystem::exists(rs274)) args.insert(args.end(), {"--rs274", rs274});
+    const std::vector<std::string> args{freeTextChecker(), folder, "--points", "360",
+                                        "--rs274",         kRs274};
     const auto r = run("/usr/bin/python3", args, 600);
     if (r.exitCode != 0) return ::testing::AssertionFailure() << r.out << r.err;
     if (r.err.find(std::to_string(files) + " files checked") == std::string::npos)

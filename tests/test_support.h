@@ -176,6 +176,11 @@ inline bool contains(const std::string& text, const std::string& part) {
 /// The bundled six-lobe arc cam, the example most tests start from.
 inline const std::string kExample = examplePath("six-lobe-arc-cam.cam.json");
 
+/// LinuxCNC's G-code interpreter as the project runs it (tests/tools/rs274: Debian's package,
+/// unpacked on first use; packaging/install-deps.sh unpacks it beforehand). It serialises its
+/// runs itself.
+inline const std::string kRs274 = std::string(CAMWRIGHT_SOURCE_DIR) + "/tests/tools/rs274";
+
 inline RunResult runCli(const std::vector<std::string>& args) { return run(CAMWRIGHT_CLI, args); }
 
 }  // namespace cam::test

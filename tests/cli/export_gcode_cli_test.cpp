@@ -334,14 +334,6 @@ std::vector<CanonMove> parseCanon(const std::string& text) {
 
 // ---- Running the export and the interpreter --------------------------------------------------
 
-std::string rs274Path() { return std::string(CAMWRIGHT_SOURCE_DIR) + "/../shared/tools/rs274"; }
-
-#define SKIP_WITHOUT_RS274()                                                                   \
-    if (!fs::exists(rs274Path()))                                                              \
-    GTEST_SKIP() << "LinuxCNC's interpreter wrapper " << rs274Path()                           \
-                 << " is missing: G-code is checked by rs274 only (platform-notes.md, Export " \
-                    "formats)"
-
 struct Milled {
     std::string program;
     std::vector<CanonMove> moves;
@@ -368,10 +360,7 @@ Milled interpret(const test::TempDir& dir, const std::string& program,
             << m.program.substr(lineEnd + 1);
     }
     fs::remove(canon);
-    // One rs274 at a time: LinuxCNC keeps its tool data in a memory-mapped file of a fixed name,
-    // and two interpreters at once (ctest -j) truncate it under each other's feet (SIGBUS).
-    const std::string lock = (fs::temp_directory_path() / "camwright-rs274.lock").string();
-    const auto r = test::run("/usr/bin/flock", {lock, rs274Path(), interpreted, canon}, 120);
+    const auto r = test::run(test::kRs274, {interpreted, canon}, 120);
     EXPECT_EQ(r.exitCode, 0) << "rs274 refused the program: " << r.err << "\n" << m.program;
     m.moves = parseCanon(test::readFile(canon));
     return m;
@@ -583,7 +572,6 @@ constexpr const char* kStar = R"json({"format": "camwright", "version": 1, "name
   {"type": "line", "from": [10.606601717798213, -10.606601717798213], "to": [30, 0]}]})json";
 
 TEST(CliExportGcode, SixLobeExampleIsMilledAtTheToolRadius) {
-    SKIP_WITHOUT_RS274();
     const test::TempDir dir;
     const std::string project = test::examplePath("six-lobe-arc-cam.cam.json");
     const Milled m = exportAndInterpret(dir, project, {"--tool-radius", "3", "--depth", "4"});
@@ -592,7 +580,6 @@ TEST(CliExportGcode, SixLobeExampleIsMilledAtTheToolRadius) {
 }
 
 TEST(CliExportGcode, ConvexArcCamRollsRoundItsCorners) {
-    SKIP_WITHOUT_RS274();
     const test::TempDir dir;
     const std::string project = writeProject(dir, "three.cam.json", kThreeArcs);
     const Milled m = exportAndInterpret(dir, project, {"--tool-radius", "2.5"});
@@ -600,7 +587,6 @@ TEST(CliExportGcode, ConvexArcCamRollsRoundItsCorners) {
 }
 
 TEST(CliExportGcode, OneArcCircleIsMilledInHalves) {
-    SKIP_WITHOUT_RS274();
     const test::TempDir dir;
     const std::string project = writeProject(dir, "circle.cam.json", kCircle);
     // The tool radius and feed come from the project's machining section.
@@ -614,7 +600,6 @@ TEST(CliExportGcode, OneArcCircleIsMilledInHalves) {
 }
 
 TEST(CliExportGcode, LinesAndConcaveArcs) {
-    SKIP_WITHOUT_RS274();
     const test::TempDir dir;
     const std::string project = writeProject(dir, "diamond.cam.json", kDentedDiamond);
     const Milled m = exportAndInterpret(dir, project, {"--tool-radius", "3"});
@@ -626,7 +611,6 @@ TEST(CliExportGcode, LinesAndConcaveArcs) {
 }
 
 TEST(CliExportGcode, ConcaveCornersKeepTheToolOutOfBothSides) {
-    SKIP_WITHOUT_RS274();
     const test::TempDir dir;
     const std::string project = writeProject(dir, "star.cam.json", kStar);
     const Profile profile = profileOfFile(project);
@@ -635,7 +619,6 @@ TEST(CliExportGcode, ConcaveCornersKeepTheToolOutOfBothSides) {
 }
 
 TEST(CliExportGcode, SplineCamsWithinTheDefaultTolerance) {
-    SKIP_WITHOUT_RS274();
     const test::TempDir dir;
     for (const char* name : {"reference/spline-mix.cam.json", "reference/spline-offset.cam.json"}) {
         const std::string project = test::dataPath(name);
@@ -648,7 +631,6 @@ TEST(CliExportGcode, SplineCamsWithinTheDefaultTolerance) {
 }
 
 TEST(CliExportGcode, StepDownsMakePassesAtEachDepth) {
-    SKIP_WITHOUT_RS274();
     const test::TempDir dir;
     const std::string project = test::examplePath("six-lobe-arc-cam.cam.json");
     const Profile profile = profileOfFile(project);
@@ -670,7 +652,6 @@ TEST(CliExportGcode, StepDownsMakePassesAtEachDepth) {
 }
 
 TEST(CliExportGcode, CompensationLetsTheControllerOffsetThePartContour) {
-    SKIP_WITHOUT_RS274();
     const test::TempDir dir;
     const Expect e{3.0, 2};
     for (const std::string& project : {test::examplePath("six-lobe-arc-cam.cam.json"),
@@ -698,7 +679,6 @@ TEST(CliExportGcode, CompensationLetsTheControllerOffsetThePartContour) {
 }
 
 TEST(CliExportGcode, CompensationIsRefusedWhereTheControllerWouldCutIntoThePart) {
-    SKIP_WITHOUT_RS274();
     const test::TempDir dir;
     // With arcs within 1e-5 mm the crossing at the concave corner between the Bézier and the
     // arc (contour[0]/contour[1]) lies several short arcs into the Bézier. LinuxCNC, offsetting
@@ -715,7 +695,6 @@ TEST(CliExportGcode, CompensationIsRefusedWhereTheControllerWouldCutIntoThePart)
 }
 
 TEST(GcodeProgram, ConventionalMillingGoesCounterClockwiseWithG42) {
-    SKIP_WITHOUT_RS274();
     const test::TempDir dir;
     for (const std::string& path : {test::examplePath("six-lobe-arc-cam.cam.json"),
                                     test::dataPath("reference/spline-offset.cam.json")}) {

@@ -78,15 +78,12 @@ TEST(CliSynthesize, ADesignBecomesArcsThatExportAndMill) {
     ASSERT_EQ(counted.exitCode, 0) << counted.err;
     EXPECT_EQ(counted.out, std::to_string(segments) + " " + std::to_string(segments) + "\n");
     // G-code that LinuxCNC's own interpreter accepts.
-    const std::string rs274 = std::string(CAMWRIGHT_SOURCE_DIR) + "/../shared/tools/rs274";
-    if (!fs::exists(rs274)) GTEST_SKIP() << "rs274 missing: " << rs274;
     const std::string ngc = dir.file("made.ngc"), canon = dir.file("canon.txt");
     ASSERT_EQ(
         test::runCli({"export", made, "--format", "gcode", "--tool-radius", "3", "--out", ngc})
             .exitCode,
         0);
-    const std::string lock = (fs::temp_directory_path() / "camwright-rs274.lock").string();
-    const auto milled = test::run("/usr/bin/flock", {lock, rs274, ngc, canon}, 120);
+    const auto milled = test::run(test::kRs274, {ngc, canon}, 120);
     EXPECT_EQ(milled.exitCode, 0) << milled.err;
     EXPECT_NE(test::readFile(canon).find("ARC_FEED"), std::string::npos);
 }
