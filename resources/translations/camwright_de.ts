@@ -275,12 +275,12 @@
     </message>
     <message>
         <location line="+5" />
-        <location line="+716" />
+        <location line="+739" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-715" />
+        <location line="-738" />
         <source>Points</source>
         <translation>Punkte</translation>
     </message>
@@ -1315,8 +1315,8 @@
         <translation>Übergang zwischen Segment %1 und %2</translation>
     </message>
     <message>
-        <location line="-725" />
-        <location line="+732" />
+        <location line="-748" />
+        <location line="+755" />
         <source>Segment %1</source>
         <translation>Segment %1</translation>
     </message>
@@ -1362,6 +1362,24 @@
         <location line="+2" />
         <source>Picture of a plot (PNG, PDF, SVG)</source>
         <translation>Bild eines Diagramms (PNG, PDF, SVG)</translation>
+    </message>
+</context>
+<context>
+    <name>FollowerKind</name>
+    <message>
+        <location filename="../../src/core/project/follower_kind.cpp" line="+12" />
+        <source>Knife edge</source>
+        <translation>Spitze (Messerkante)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Roller</source>
+        <translation>Rolle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Flat face</source>
+        <translation>Flachstößel</translation>
     </message>
 </context>
 <context>
@@ -1585,6 +1603,49 @@
         <location line="+0" />
         <source>About Camwright</source>
         <translation>Über Camwright</translation>
+    </message>
+</context>
+<context>
+    <name>MotionLaw</name>
+    <message>
+        <location filename="../../src/core/design/motion_law.cpp" line="+133" />
+        <source>Dwell</source>
+        <translation>Rast</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Harmonic</source>
+        <translation>Harmonisch (Kosinus)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Cycloidal</source>
+        <translation>Zykloide</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Modified trapezoid</source>
+        <translation>Modifiziertes Beschleunigungstrapez</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Modified sine</source>
+        <translation>Modifizierte Sinuslinie</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Poly 3-4-5</source>
+        <translation>Polynom 3-4-5</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Poly 4-5-6-7</source>
+        <translation>Polynom 4-5-6-7</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Poly 5 (boundary values)</source>
+        <translation>Polynom 5 (Randwerte)</translation>
     </message>
 </context>
 <context>
@@ -1886,7 +1947,7 @@
 <context>
     <name>cam::ContourView</name>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="+50" />
+        <location filename="../../src/app/views/contour_view.cpp" line="+51" />
         <source>x [mm]</source>
         <translation>x [mm]</translation>
     </message>
@@ -2008,47 +2069,7 @@
 <context>
     <name>cam::DesignTableModel</name>
     <message>
-        <location filename="../../src/app/models/design_table_model.cpp" line="+61" />
-        <source>Dwell</source>
-        <translation>Rast</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Harmonic</source>
-        <translation>Harmonisch (Kosinus)</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Cycloidal</source>
-        <translation>Zykloide</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Modified trapezoid</source>
-        <translation>Modifiziertes Beschleunigungstrapez</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Modified sine</source>
-        <translation>Modifizierte Sinuslinie</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Poly 3-4-5</source>
-        <translation>Polynom 3-4-5</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Poly 4-5-6-7</source>
-        <translation>Polynom 4-5-6-7</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Poly 5 (boundary values)</source>
-        <translation>Polynom 5 (Randwerte)</translation>
-    </message>
-    <message>
-        <location line="+74" />
+        <location filename="../../src/app/models/design_table_model.cpp" line="+139" />
         <source>How the follower moves over this segment (VDI 2143)</source>
         <translation>Wie sich der Stößel über diesen Abschnitt bewegt (VDI 2143)</translation>
     </message>
@@ -2427,22 +2448,7 @@
 <context>
     <name>cam::FollowerPanel</name>
     <message>
-        <location filename="../../src/app/views/follower_panel.cpp" line="+46" />
-        <source>Knife edge</source>
-        <translation>Spitze (Messerkante)</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Roller</source>
-        <translation>Rolle</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Flat face</source>
-        <translation>Flachstößel</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location filename="../../src/app/views/follower_panel.cpp" line="+51" />
         <source>What touches the cam (math.md §7)</source>
         <translation>Was die Kurvenscheibe berührt (math.md §7)</translation>
     </message>
@@ -2587,7 +2593,12 @@
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+26" />
+        <source>No design checks: no contour yet. Synthesize (F6) makes it from the design.</source>
+        <translation>Keine Auslegungsprüfungen: noch keine Kontur. Synthetisieren (F6) erzeugt sie aus dem Entwurf.</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>No design checks: %1</source>
         <translation>Keine Auslegungsprüfung: %1</translation>
     </message>

@@ -21,6 +21,9 @@ import xml.etree.ElementTree as ET
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 LUPDATE = os.environ.get("LUPDATE", "/usr/lib/qt6/bin/lupdate")
+# The core marks the English text the app translates with a Qt-free no-op of its own
+# (src/core/common/translate_marker.h).
+ALIAS = ["-tr-function-alias", "QT_TRANSLATE_NOOP+=CAM_TRANSLATE_NOOP"]
 
 
 def key(message):
@@ -51,7 +54,7 @@ def check(ts_path):
     with tempfile.TemporaryDirectory() as tmp:
         fresh_path = os.path.join(tmp, os.path.basename(ts_path))
         shutil.copy(ts_path, fresh_path)
-        subprocess.run([LUPDATE, "-no-obsolete", "-locations", "none", os.path.join(ROOT, "src"),
+        subprocess.run([LUPDATE, *ALIAS, "-no-obsolete", "-locations", "none", os.path.join(ROOT, "src"),
                         os.path.join(ROOT, "ui"), "-ts", fresh_path], check=True,
                        stdout=subprocess.DEVNULL)
         fresh = ET.parse(fresh_path)
@@ -66,7 +69,7 @@ def check(ts_path):
 
 def update(ts_path):
     before = known_translations(ET.parse(ts_path))
-    subprocess.run([LUPDATE, "-no-obsolete", "-locations", "relative", "src", "ui", "-ts",
+    subprocess.run([LUPDATE, *ALIAS, "-no-obsolete", "-locations", "relative", "src", "ui", "-ts",
                     os.path.relpath(ts_path, ROOT)], cwd=ROOT, check=True,
                    stdout=subprocess.DEVNULL)
     tree = ET.parse(ts_path)

@@ -906,12 +906,12 @@ void MainWindow::showResult(const ComputeResultPtr& result) {
         showBesidePlots(result);
         const QString first = diagnosticText(result->errors.front());
         // The problems themselves are in the validation label beside it.
-        m_computeLabel->setText(result->failed ? tr("not computed: %1").arg(first)
+        m_computeLabel->setText(result->failed() ? tr("not computed: %1").arg(first)
                                 : m_document->awaitsSynthesis()
                                     ? tr("no contour yet")
                                     : tr("not computed: the project has problems"));
         m_computeLabel->setStyleSheet("color: #b00020;");
-        if (result->failed) statusBar()->showMessage(tr("Computation failed: %1").arg(first));
+        if (result->failed()) statusBar()->showMessage(tr("Computation failed: %1").arg(first));
         m_readout->clear();  // no state of the project as it is
         // A design without a contour yet: the views drew nothing, and nothing of an earlier
         // project may be exported as this one's.

@@ -13,6 +13,7 @@
 #include "common/angles.h"
 #include "contour/contour.h"
 #include "design/synthesis.h"
+#include "evaluation/evaluation.h"
 #include "export/cam_table.h"
 #include "export/dxf.h"
 #include "export/gcode.h"
@@ -26,6 +27,7 @@
 #include "io/path_csv.h"
 #include "io/project_json.h"
 #include "kinematics/kinematics.h"
+#include "project/follower_kind.h"
 #include "project/validate.h"
 #include "spline/biarc.h"
 #include "spline/teach_in.h"
@@ -46,40 +48,46 @@ struct Loaded {
     FollowerModel follower;
 };
 
-/// The project's follower placed on its contour, or its problems ("follower.pivot", …).
-Result<FollowerModel> placeFollower(const Project& project, const Contour& contour) {
-    return FollowerModel::build(contour, project.follower.value_or(FollowerSpec{}));
+/// "PATH: LOCATION: MESSAGE" as the CLI names a project's problem (a problem of the file as a
+/// whole is located at the path itself).
+std::string placeOf(const std::string& path, const Diagnostic& d) {
+    return d.location == path ? path : path + ": " + d.location;
 }
 
-/// Loads and compiles PROJECT or throws its first problem (exit 2); the rest go to stderr via
-/// `validate`, which is the command for seeing them all.
+/// Loads PROJECT and evaluates it (evaluation.h: the verdict the window has too) or throws its
+/// first problem (exit 2); the rest go to stderr via `validate`, which is the command for
+/// seeing them all.
 Loaded load(const std::string& path) {
-    auto project = loadProjectFile(path);
-    if (!project.ok()) {
-        const Diagnostic& d = project.errors().front();
+    auto project = loadProjectStructure(path);
+    Diagnostics problems = project.ok() ? Diagnostics{} : project.errors();
+    std::optional<ProjectEvaluation> evaluation;
+    if (project.ok()) {
+        evaluation = evaluateProject(project.value());
+        switch (evaluation->status) {
+            case EvaluationStatus::Computed:
+                break;
+            case EvaluationStatus::AwaitsContour:
+                problems = {contourNeverSynthesised()};
+                break;
+            case EvaluationStatus::Invalid:
+            case EvaluationStatus::Failed:
+                for (const Diagnostic& d : evaluation->problems) {
+                    if (d.severity == Severity::Error) problems.push_back(d);
+                }
+                break;
+        }
+    }
+    if (!problems.empty()) {
+        const Diagnostic& d = problems.front();
         std::string message = d.message;
-        if (project.errors().size() > 1) {
-            message += " (and " + std::to_string(project.errors().size() - 1) +
+        if (problems.size() > 1) {
+            message += " (and " + std::to_string(problems.size() - 1) +
                        " more problems; run 'camwright-cli validate' for all)";
         }
-        throw CliError{kInvalidInput, d.location == path ? path : path + ": " + d.location,
-                       message};
+        throw CliError{kInvalidInput, placeOf(path, d), message};
     }
-    auto contour = Contour::build(project.value());
-    if (!contour.ok()) {  // cannot happen after a successful load, which validates
-        const Diagnostic& d = contour.errors().front();
-        throw CliError{kInvalidInput, path + ": " + d.location, d.message};
-    }
-    const double omega = project.value().motion.omegaRadS();
-    // A follower that cannot ride this cam (a pivot inside it, an arm that cannot reach it)
-    // makes the project invalid, as a roller too wide for a concave arc does.
-    auto follower = placeFollower(project.value(), contour.value());
-    if (!follower.ok()) {
-        const Diagnostic& d = follower.errors().front();
-        throw CliError{kInvalidInput, path + ": " + d.location, d.message};
-    }
-    return {std::move(project).value(), std::move(contour).value(), omega,
-            std::move(follower).value()};
+    return {std::move(project).value(), std::move(*evaluation->contour), evaluation->omega,
+            *evaluation->follower};
 }
 
 Json stateJson(const KinematicState& s) {
@@ -99,18 +107,6 @@ Json stateJson(const KinematicState& s) {
                 {"j", m.j}};
 }
 
-const char* followerTypeName(FollowerType type) {
-    switch (type) {
-        case FollowerType::Knife:
-            return "knife";
-        case FollowerType::Roller:
-            return "roller";
-        case FollowerType::Flat:
-            return "flat";
-    }
-    return "";
-}
-
 /// A radius of curvature: null where the curve is straight (an infinite radius).
 Json radiusJson(double rho) { return std::isfinite(rho) ? Json(rho) : Json(nullptr); }
 
@@ -121,7 +117,7 @@ const char* motionName(const FollowerModel& model) {
 /// cli.md's `follower` object of `state`; a swinging arm gives psi_deg, omega_arm, alpha_arm
 /// and jerk_arm (rad/s…) in place of s, v, a, j, and its lift in degrees.
 Json followerJson(const FollowerModel& model, const FollowerState& f) {
-    Json json{{"type", followerTypeName(model.spec().type)}, {"motion", motionName(model)}};
+    Json json{{"type", followerKind(model.spec().type).name}, {"motion", motionName(model)}};
     if (model.oscillating()) {
         json.update(Json{{"psi_deg", radToDeg(f.s)},
                          {"lift", model.lift(f)},
@@ -169,7 +165,7 @@ Json followerAnalysisJson(const Loaded& loaded) {
         e.value = radToDeg(e.value);
         return e;
     };
-    Json f{{"type", followerTypeName(model.spec().type)}, {"motion", motionName(model)}};
+    Json f{{"type", followerKind(model.spec().type).name}, {"motion", motionName(model)}};
     if (arm) {
         f["psi_deg"] = range(degrees(a.sMin), degrees(a.sMax));
         f["lift"] = radToDeg(a.sMax.value - a.sMin.value);
@@ -235,36 +231,23 @@ constexpr double kMaxTurns = 1e15;
 
 int runValidate(const Arguments& args, std::ostream& out, std::ostream& err) {
     const std::string& path = args.positional.at(0);
-    const auto project = loadProjectFile(path);
-    if (!project.ok()) {
+    const auto project = loadProjectStructure(path);
+    std::optional<ProjectEvaluation> evaluation;
+    if (project.ok()) evaluation = evaluateProject(project.value());
+    if (!evaluation || !evaluation->valid()) {
         // One write for all: stderr is unbuffered, and a file can have a problem per segment.
         std::string lines;
-        for (const Diagnostic& d : project.errors()) {
-            lines += "camwright-cli: ";
-            lines += d.location == path ? path : path + ": " + d.location;
-            lines += ": ";
-            lines += d.message;
-            lines += '\n';
+        for (const Diagnostic& d : evaluation ? evaluation->problems : project.errors()) {
+            if (d.severity != Severity::Error) continue;
+            lines += "camwright-cli: " + placeOf(path, d) + ": " + d.message + '\n';
         }
         err << lines;
         return kInvalidInput;
     }
-    if (project.value().contour.empty()) {
+    if (evaluation->status == EvaluationStatus::AwaitsContour) {
         // Valid (project-format.md): a design whose contour was never synthesised.
         out << "valid: a design, no contour yet (camwright-cli synthesize makes it)\n";
         return kOk;
-    }
-    // The follower must be able to ride the cam (Contour::build cannot fail after validation).
-    const auto contour = Contour::build(project.value());
-    const auto follower =
-        contour.ok() ? placeFollower(project.value(), contour.value()) : contour.errors();
-    if (!follower.ok()) {
-        std::string lines;
-        for (const Diagnostic& d : follower.errors()) {
-            lines += "camwright-cli: " + path + ": " + d.location + ": " + d.message + '\n';
-        }
-        err << lines;
-        return kInvalidInput;
     }
     out << "valid: " << project.value().contour.size() << " segments\n";
     return kOk;
@@ -856,9 +839,11 @@ int runSynthesize(const Arguments& args, std::ostream& out) {
         throw CliError{kInvalidInput, path + ": design",
                        "the project has no design to synthesise a contour from"};
     }
+    // The project's problems, but not the verdict's last check (evaluation.h): whether the
+    // follower rides the contour Synthesize is about to replace does not matter.
     for (const Diagnostic& d : validateProject(project)) {
         if (d.severity != Severity::Error) continue;
-        throw CliError{kInvalidInput, path + ": " + d.location, d.message};
+        throw CliError{kInvalidInput, placeOf(path, d), d.message};
     }
     const auto made = synthesize(project, tolerance);
     if (!made.ok()) {

@@ -236,7 +236,7 @@ TEST(ComputeEngine, AComputationThatThrowsBecomesAMessageAndTheNextRequestWorks)
     engine.request(test::loadExample(), PlotAxis::Angle);
     ASSERT_TRUE(answered(1));
     EXPECT_FALSE(engine.latestResult()->ok());
-    EXPECT_TRUE(engine.latestResult()->failed);
+    EXPECT_TRUE(engine.latestResult()->failed());
     ASSERT_EQ(engine.latestResult()->errors.size(), 1u);
     EXPECT_NE(engine.latestResult()->errors.front().message.find("out of memory"),
               std::string::npos);
@@ -244,7 +244,7 @@ TEST(ComputeEngine, AComputationThatThrowsBecomesAMessageAndTheNextRequestWorks)
     preparer->mode = ScriptedPreparer::Mode::ThrowError;
     engine.request(test::loadExample(), PlotAxis::Angle);
     ASSERT_TRUE(answered(2));
-    EXPECT_TRUE(engine.latestResult()->failed);
+    EXPECT_TRUE(engine.latestResult()->failed());
     EXPECT_NE(engine.latestResult()->errors.front().message.find("scripted failure"),
               std::string::npos);
 
@@ -252,7 +252,7 @@ TEST(ComputeEngine, AComputationThatThrowsBecomesAMessageAndTheNextRequestWorks)
     engine.request(test::loadExample(), PlotAxis::Angle);
     ASSERT_TRUE(answered(3));
     EXPECT_TRUE(engine.latestResult()->ok());
-    EXPECT_FALSE(engine.latestResult()->failed);
+    EXPECT_FALSE(engine.latestResult()->failed());
     EXPECT_EQ(preparer->calls.load(), 3);
 }
 

@@ -46,7 +46,7 @@ TEST(MainWindow, AFailedComputationIsReportedAndTheAppCarriesOn) {
     SegmentTableModel* model = window.tableModel();
     ASSERT_TRUE(model->setData(model->index(1, SegmentTableModel::Radius), 8.2, Qt::EditRole));
     ASSERT_TRUE(window.waitForCurrentResult(10000));
-    EXPECT_TRUE(window.engine()->latestResult()->failed);
+    EXPECT_TRUE(window.engine()->latestResult()->failed());
     EXPECT_TRUE(computeLabel->text().contains("out of memory"))
         << computeLabel->text().toStdString();
     EXPECT_TRUE(window.plots()->staleReason().contains("out of memory"));

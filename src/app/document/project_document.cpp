@@ -2,15 +2,15 @@
 
 #include <QFileInfo>
 
+#include "evaluation/evaluation.h"
 #include "messages/diagnostic_text.h"
-#include "project/validate.h"
 
 namespace cam {
 
 ProjectDocument::ProjectDocument(QObject* parent) : QObject(parent) {
     connect(&m_undoStack, &QUndoStack::cleanChanged, this,
             [this](bool clean) { emit modifiedChanged(!clean); });
-    m_diagnostics = validateProject(m_project);
+    m_diagnostics = projectProblems(m_project);
 }
 
 ProjectDocument::~ProjectDocument() {
@@ -23,7 +23,7 @@ QString ProjectDocument::displayName() const {
 }
 
 void ProjectDocument::reset(Project project, QString filePath) {
-    Diagnostics diagnostics = validateProject(project);
+    Diagnostics diagnostics = projectProblems(project);
     reset(std::move(project), std::move(filePath), std::move(diagnostics));
 }
 
@@ -151,9 +151,10 @@ QString diagnosticsText(const Diagnostics& diagnostics, int limit) {
 }
 
 void ProjectDocument::afterChange() {
-    // Validation is linear in the number of segments (microseconds), so it runs here; the
-    // kinematics run in the compute engine's thread.
-    m_diagnostics = validateProject(m_project);
+    // The verdict (validation, compiling the contour, placing the follower) is linear in the
+    // number of segments (microseconds for a table), so it runs here; the kinematics run in the
+    // compute engine's thread.
+    m_diagnostics = projectProblems(m_project);
     emit changed();
 }
 

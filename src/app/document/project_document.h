@@ -33,7 +33,7 @@ public:
 
     /// @brief Replaces the whole project (New, Open): clears the undo history.
     void reset(Project project, QString filePath);
-    /// @brief The same, with the project's diagnostics already computed (validateProject, off
+    /// @brief The same, with the project's problems already computed (projectProblems, off
     /// the GUI thread for a big file), and the digest of the file's content it was read from.
     void reset(Project project, QString filePath, Diagnostics diagnostics,
                QByteArray fileDigest = {});

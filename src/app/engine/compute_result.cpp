@@ -8,8 +8,6 @@
 #include <cmath>
 
 #include "common/angles.h"
-#include "design/exact_profile.h"
-#include "design/motion_design.h"
 #include "engine/background_priority.h"
 #include "engine/plot_data_preparer.h"
 #include "follower/follower_turn.h"
@@ -104,27 +102,18 @@ ContourPart computeContourPart(const Contour* contour, double omega,
     return part;
 }
 
-/// The follower on the contour: placed, its design checks and its pressure-angle curve.
+/// The follower the evaluation placed: its design checks and its pressure-angle curve.
 struct FollowerPart {
-    std::shared_ptr<const FollowerModel> model;
-    Diagnostics errors;
     FollowerAnalysis checks;
     std::vector<double> x, pressureDeg;
 };
 
-FollowerPart computeFollower(const Contour* contour, const FollowerSpec& spec, double omega,
-                             double period, PlotAxis axis, bool checks,
+FollowerPart computeFollower(const FollowerModel* model, double omega, double period,
+                             double phiBegin, PlotAxis axis, bool checks,
                              const std::atomic<bool>* cancel) {
     runInTheBackground();
     FollowerPart part;
-    auto follower = FollowerModel::build(*contour, spec);
-    if (!follower.ok()) {
-        part.errors = follower.errors();
-        return part;
-    }
-    auto model = std::make_shared<const FollowerModel>(std::move(follower).value());
-    if (cancel->load()) return part;
-    if (checks) part.checks = analyzeFollower(*model, omega, contour->phiBegin());
+    if (checks) part.checks = analyzeFollower(*model, omega, phiBegin);
     constexpr std::size_t n = ComputeResult::kFollowerCurvePoints;
     FollowerTurn turn;
     if (!sampleFollowerTurn(*model, omega, n, turn, cancel)) return part;
@@ -136,18 +125,7 @@ FollowerPart computeFollower(const Contour* contour, const FollowerSpec& spec, d
         // The turn's end closes the curve: the angle of its start, one turn on.
         part.pressureDeg[k] = radToDeg(turn.pressureAngle[k % n]);
     }
-    part.model = std::move(model);
     return part;
-}
-
-/// The turning speed, when the project gives one a computation can use.
-std::optional<double> usableOmega(const MotionSpec& motion) {
-    if (!std::isfinite(motion.value) || motion.value == 0.0) return std::nullopt;
-    const double omega = motion.omegaRadS();
-    if (!(std::abs(omega) >= kOmegaRadSRange.lo && std::abs(omega) <= kOmegaRadSRange.hi)) {
-        return std::nullopt;
-    }
-    return omega;
 }
 
 /// x of sample k of n over the turn (t_k = k·T/n), as the plots show it.
@@ -156,92 +134,34 @@ double plotX(std::size_t k, std::size_t n, double omega, double period, PlotAxis
     return axis == PlotAxis::Angle ? radToDeg(omega * t) : t;
 }
 
-/// The design's law over the turn; the follower on `contour` against it when there is one.
-std::shared_ptr<DesignCurves> computeDesign(const Project& project, const Contour* contour,
-                                            double omega, double period, PlotAxis axis,
+/// The design's curves (evaluateDesign) on the plots' x axis; null when cancelled.
+std::shared_ptr<DesignCurves> computeDesign(const Project& project,
+                                            const ProjectEvaluation& evaluation, PlotAxis axis,
                                             const std::atomic<bool>& cancel) {
     auto out = std::make_shared<DesignCurves>();
-    auto motion = MotionDesign::build(*project.design);
-    if (!motion.ok()) {
-        out->errors = motion.errors();
-        return out;
-    }
-    const MotionDesign& design = motion.value();
-    const FollowerSpec follower = project.follower.value_or(FollowerSpec{});
-    out->swinging = follower.motion == FollowerMotion::Oscillating;
-    out->notes = design.jumps();
-    for (std::size_t k = 0; k < project.design->segments.size(); ++k) {
-        out->coefficients.push_back(design.coefficients(k));
-        const double phi = degToRad(project.design->segments[k].toDeg);
+    constexpr std::size_t n = ComputeResult::kFollowerCurvePoints;
+    if (!evaluateDesign(project, evaluation, n, *out, &cancel)) return nullptr;
+    const double omega = evaluation.omega, period = evaluation.period;
+    if (out->law[0].empty()) return out;  // the design itself has problems
+    for (const DesignSegmentSpec& segment : project.design->segments) {
+        const double phi = degToRad(segment.toDeg);
         out->jointsX.push_back(axis == PlotAxis::Angle ? radToDeg(omega > 0 ? phi : -phi)
                                                        : phi / std::abs(omega));
     }
-    constexpr std::size_t n = ComputeResult::kFollowerCurvePoints;
     out->x.resize(n + 1);
-    for (auto& curve : out->law) curve.resize(n + 1);
-    for (std::size_t k = 0; k <= n; ++k) {
-        out->x[k] = plotX(k, n, omega, period, axis);
-        const double phi = omega * period * static_cast<double>(k % n) / static_cast<double>(n);
-        const std::array<double, 4> q = design.liftAt(phi);
-        // d/dt = ω d/dφ: the lift's unit (mm or °) per second.
-        out->law[0][k] = q[0];
-        out->law[1][k] = omega * q[1];
-        out->law[2][k] = omega * omega * q[2];
-        out->law[3][k] = omega * omega * omega * q[3];
-    }
-    const auto measure = [&out] {
-        for (std::size_t d = 0; d < 4; ++d) {
-            double lo = out->law[d].front(), hi = lo;
-            // The follower's jerk on an arc table spikes at every joint (its acceleration
-            // jumps there): the jerk's range is the law's.
-            for (const auto* curve : {&out->law[d], d < 3 ? &out->onContour[d] : &out->law[d]}) {
-                for (double v : *curve) {
-                    lo = std::min(lo, v);
-                    hi = std::max(hi, v);
-                }
-            }
-            out->yRanges[d] = {lo, hi};
-        }
-    };
-    measure();
-    auto exact = ExactProfile::build(design, follower);
-    if (!exact.ok()) {
-        out->errors = exact.errors();
-        return out;
-    }
-    if (cancel.load()) return nullptr;
-    for (const ProfileProblem& problem :
-         exact.value().problems(project.design->strictPressureAngle)) {
-        out->notes.push_back(problem.what);
-    }
-    if (!contour || cancel.load()) return out;
-    auto placed = FollowerModel::build(*contour, follower);
-    if (!placed.ok()) {
-        out->onContourErrors = placed.errors();
-        return out;
-    }
-    FollowerTurn turn;
-    if (!sampleFollowerTurn(placed.value(), omega, n, turn, &cancel)) return nullptr;
-    // The follower's coordinate (mm, or the arm's angle in rad) against the one the design
-    // asks for, turned into the lift's unit and sense.
-    const double unit =
-        out->swinging ? (follower.arm == ArmSide::Cw ? -1.0 : 1.0) * 180.0 / kPi : 1.0;
-    for (auto& curve : out->onContour) curve.resize(n + 1);
-    for (std::size_t k = 0; k <= n; ++k) {
-        const std::size_t i = k % n;
-        const double phi = omega * period * static_cast<double>(i) / static_cast<double>(n);
-        const std::array<double, 4> q = exact.value().followerCoordinate(phi);
-        const double w[4] = {1.0, omega, omega * omega, omega * omega * omega};
-        const double actual[4] = {turn.s[i], turn.v[i], turn.a[i], turn.j[i]};
-        for (std::size_t d = 0; d < 4; ++d) {
-            out->onContour[d][k] = out->law[d][k] + unit * (actual[d] - w[d] * q[d]);
-            if (d < 3) {
-                out->maxError[d] =
-                    std::max(out->maxError[d], std::abs(out->onContour[d][k] - out->law[d][k]));
+    for (std::size_t k = 0; k <= n; ++k) out->x[k] = plotX(k, n, omega, period, axis);
+    for (std::size_t d = 0; d < 4; ++d) {
+        double lo = out->law[d].front(), hi = lo;
+        // The follower's jerk on an arc table spikes at every joint (its acceleration jumps
+        // there): the jerk's range is the law's.
+        for (const auto* curve : {&out->law[d], d < 3 ? &out->onContour[d] : &out->law[d]}) {
+            for (double v : *curve) {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
             }
         }
+        out->yRanges[d] = {lo, hi};
     }
-    measure();
     return out;
 }
 
@@ -255,15 +175,21 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     result->generation = request.generation;
     result->project = request.project;
     result->axis = request.axis;
-    // Joints that do not meet are drawn (r jumps there) rather than blanking the plots while
-    // the designer edits; the document still reports them and refuses to save.
     const Project& project = *request.project;
-    if (project.contour.empty() && project.design) {
-        // A design waiting for its first synthesis: its law is drawn, nothing else.
-        result->errors = {Diagnostic{"contour", kNoContourYet}};
-        if (const auto omega = usableOmega(project.motion)) {
-            auto design = computeDesign(project, nullptr, *omega, kTwoPi / std::abs(*omega),
-                                        request.axis, cancel);
+    // The one verdict (evaluation.h), as the document and the CLI have it. An invalid project
+    // whose contour compiles (joints that do not meet, a follower that cannot ride it) is still
+    // drawn while the designer edits; the document reports its problems and nothing exports it.
+    ProjectEvaluation evaluation = evaluateProject(project);
+    result->status = evaluation.status;
+    result->problems = evaluation.problems;
+    if (!evaluation.contour) {
+        // Nothing to draw but the design's law, if the speed allows (a design waiting for its
+        // first synthesis, or one whose contour has problems).
+        result->errors = evaluation.status == EvaluationStatus::AwaitsContour
+                             ? Diagnostics{contourNeverSynthesised()}
+                             : evaluation.problems;
+        if (project.design && evaluation.omega != 0.0) {
+            auto design = computeDesign(project, evaluation, request.axis, cancel);
             if (!design) return nullptr;
             result->design = std::move(design);
             if (preparer) result->prepared = preparer->prepare(*result, cancel);
@@ -271,33 +197,23 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
         result->computeMs = static_cast<double>(timer.nsecsElapsed()) / 1e6;
         return result;
     }
-    auto contour =
-        Contour::build(project, ValidationOptions{.checkJoints = false, .checkDesign = false});
-    if (!contour.ok()) {
-        result->errors = contour.errors();
-        const auto omega = usableOmega(project.motion);
-        if (project.design && omega) {
-            auto design = computeDesign(project, nullptr, *omega, kTwoPi / std::abs(*omega),
-                                        request.axis, cancel);
-            if (!design) return nullptr;
-            result->design = std::move(design);
-            if (preparer) result->prepared = preparer->prepare(*result, cancel);
-        }
-        result->computeMs = static_cast<double>(timer.nsecsElapsed()) / 1e6;
-        return result;
+    result->contour = std::move(evaluation.contour);
+    result->omega = evaluation.omega;
+    result->period = evaluation.period;
+    if (project.follower) {
+        result->follower = evaluation.follower;
+        result->followerErrors = evaluation.followerProblems;
     }
-    result->contour = std::move(contour).value();
-    result->omega = request.project->motion.omegaRadS();
-    result->period = kTwoPi / std::abs(result->omega);
-    // The follower needs only the contour: on the pool's other core while this thread samples
-    // the turn (a swinging arm's pressure-angle curve costs about as much as the kinematics).
-    // A first picture leaves its design checks (two to three times that) to refineResult().
+    // The follower's checks and curve need only the contour: on the pool's other core while
+    // this thread samples the turn (a swinging arm's pressure-angle curve costs about as much
+    // as the kinematics). A first picture leaves its design checks (two to three times that)
+    // to refineResult().
     QFuture<FollowerPart> follower;
     const bool checksNow = request.firstPictureBuckets == 0;
-    if (request.project->follower) {
-        follower =
-            QtConcurrent::run(computeFollower, &*result->contour, *request.project->follower,
-                              result->omega, result->period, request.axis, checksNow, &cancel);
+    if (result->follower) {
+        follower = QtConcurrent::run(computeFollower, result->follower.get(), result->omega,
+                                     result->period, result->contour->phiBegin(), request.axis,
+                                     checksNow, &cancel);
     }
     // So are the analysis and the outlines, on the pool too (the GUI thread waits idle for
     // the first picture: its core is free).
@@ -308,7 +224,7 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
         if (follower.isValid()) follower.waitForFinished();
         contourPart.waitForFinished();
     });
-    result->sampleCount = static_cast<std::size_t>(request.project->samplesPerTurnOrDefault());
+    result->sampleCount = static_cast<std::size_t>(project.samplesPerTurnOrDefault());
     if (!buildPlotCurves(*result->contour, result->omega, result->sampleCount, request.axis,
                          result->curves, cancel, request.firstPictureBuckets)) {
         return nullptr;
@@ -320,14 +236,15 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
         result->outlines = std::move(part.outlines);
     }
     std::vector<CubicBezier> splines;
-    for (const SegmentSpec& spec : request.project->contour) {
+    for (const SegmentSpec& spec : project.contour) {
         if (isSpline(spec.type())) splines.push_back(bezierOf(spec));
     }
     if (!splines.empty()) result->pathStudy = studyPath(splines, 100);
     if (cancel.load()) return nullptr;
     if (project.design) {
-        auto design = computeDesign(project, &*result->contour, result->omega, result->period,
-                                    request.axis, cancel);
+        // The design's follower on the contour is the evaluation's (a radial knife when the
+        // project names none).
+        auto design = computeDesign(project, evaluation, request.axis, cancel);
         if (!design) return nullptr;
         result->design = std::move(design);
     }
@@ -335,10 +252,8 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
         // The follower was computed beside all of the above; it has finished or stops soon.
         FollowerPart part = follower.result();
         if (cancel.load()) return nullptr;
-        result->follower = std::move(part.model);
-        result->followerErrors = std::move(part.errors);
         result->followerChecks = std::move(part.checks);
-        result->followerChecksPending = result->follower && !checksNow;
+        result->followerChecksPending = !checksNow;
         result->followerX = std::move(part.x);
         result->followerPressureDeg = std::move(part.pressureDeg);
     }
@@ -384,7 +299,8 @@ ComputeResultPtr failedResult(const ComputeRequest& request, const std::string& 
     result->project = request.project;
     result->axis = request.axis;
     result->errors = {Diagnostic{"", message}};
-    result->failed = true;
+    result->problems = result->errors;
+    result->status = EvaluationStatus::Failed;
     return result;
 }
 

@@ -15,8 +15,9 @@
 #include "analysis/analysis.h"
 #include "common/diagnostic.h"
 #include "contour/contour.h"
-#include "design/motion_law.h"
 #include "engine/plot_levels.h"
+#include "evaluation/design_curves.h"
+#include "evaluation/evaluation.h"
 #include "follower/follower.h"
 #include "follower/follower_analysis.h"
 #include "kinematics/kinematics.h"
@@ -48,33 +49,16 @@ struct ComputeRequest {
     std::size_t firstPictureBuckets = 0;
 };
 
-/// @brief The project's motion design over the turn (math.md §8), on the plots' x axis: the
-/// law, and the follower placed by contact on the contour as it is (after Synthesize: what the
-/// arcs cost the motion).
-struct DesignCurves {
-    /// Why the design cannot be drawn (then nothing below is filled): its own problems, or a
-    /// base circle the follower cannot reach.
-    Diagnostics errors;
-    /// Velocity or acceleration jumps at joints; undercut and pressure angles beyond the limit
-    /// of the exact profile with this follower (undercut is an error: Synthesize refuses it).
-    Diagnostics notes;
-    std::vector<LawCoefficients> coefficients;  ///< per design segment
-    bool swinging = false;                      ///< lifts in degrees (a swinging arm), else mm
+/// @brief The project's motion design over the turn (evaluation/design_curves.h), on the plots'
+/// x axis.
+struct DesignCurves : DesignEvaluation {
     /// The design's segment ends (to_deg) on the plots' x axis.
     std::vector<double> jointsX;
     /// kFollowerCurvePoints + 1 equal time steps, as followerX.
     std::vector<double> x;
-    /// Lift (mm or °), velocity, acceleration, jerk (per s, s², s³) at the project's speed.
-    std::array<std::vector<double>, 4> law;
-    /// The same for the follower on the contour (empty without a contour it can ride).
-    std::array<std::vector<double>, 4> onContour;
     /// Per quantity, the smallest and largest value of law and onContour together (jerk: the
     /// law's only).
     std::array<PlotRange, 4> yRanges{};
-    /// The largest |onContour − law| of lift, velocity and acceleration over those samples.
-    std::array<double, 3> maxError{};
-    /// Why onContour is empty while there is a contour (the follower cannot ride it).
-    Diagnostics onContourErrors;
 };
 
 /// @brief One finished computation. Never modified after it leaves the worker.
@@ -82,10 +66,16 @@ struct ComputeResult {
     std::uint64_t generation = 0;
     std::shared_ptr<const Project> project;
     PlotAxis axis = PlotAxis::Angle;
-    /// Non-empty: nothing was computed — the project has problems, or the computation failed
-    /// (`failed`); the views mark what they still show as out of date.
+    /// The verdict on the project (evaluation/evaluation.h): Failed when the computation itself
+    /// failed (e.g. out of memory).
+    EvaluationStatus status = EvaluationStatus::Invalid;
+    /// Every problem of the project, as the document and the CLI report them.
+    Diagnostics problems;
+    /// Non-empty: nothing was computed — the contour cannot be compiled, it awaits its first
+    /// synthesis, or the computation failed; the views mark what they still show as out of
+    /// date. (An invalid project whose contour compiles — an open joint, a follower that
+    /// cannot ride it — is still computed and drawn while the designer edits.)
     Diagnostics errors;
-    bool failed = false;  ///< the computation itself failed (e.g. out of memory)
     std::optional<Contour> contour;
     double omega = 0.0;           ///< rad/s
     double period = 0.0;          ///< s
@@ -122,18 +112,12 @@ struct ComputeResult {
     /// @brief Nothing of it is left for refineResult(): every plot level, every check.
     [[nodiscard]] bool complete() const { return !curves.partial && !followerChecksPending; }
     /// @brief A design whose contour was never synthesised: nothing to draw but the design.
-    [[nodiscard]] bool awaitsContour() const;
+    [[nodiscard]] bool awaitsContour() const { return status == EvaluationStatus::AwaitsContour; }
+    /// @brief The computation itself failed (e.g. out of memory).
+    [[nodiscard]] bool failed() const { return status == EvaluationStatus::Failed; }
 };
 
 using ComputeResultPtr = std::shared_ptr<const ComputeResult>;
-
-/// @brief The error of a result for a design whose contour was never synthesised.
-inline constexpr const char* kNoContourYet =
-    "no contour yet: press Synthesize in the Motion Design dock to make it from the design";
-
-inline bool ComputeResult::awaitsContour() const {
-    return errors.size() == 1 && errors.front().message == kNoContourYet;
-}
 
 /// @brief The machining times of one request: computed after its kinematics, reported apart so
 /// the plots never wait for them.

@@ -20,11 +20,11 @@
 #include <optional>
 
 #include "document/project_document.h"
+#include "evaluation/evaluation.h"
 #include "files/file_watch.h"
 #include "io/atomic_file.h"
 #include "io/project_json.h"
 #include "messages/diagnostic_text.h"
-#include "project/validate.h"
 #include "widgets/icons.h"
 
 namespace cam {
@@ -86,7 +86,7 @@ QString ProjectFiles::load(const QString& path) {
         } else {
             outcome->digest = FileWatch::digest(QByteArray::fromStdString(text.value()));
             auto loaded = parseProjectStructure(text.value());
-            if (loaded.ok()) outcome->diagnostics = validateProject(loaded.value());
+            if (loaded.ok()) outcome->diagnostics = projectProblems(loaded.value());
             outcome->project.emplace(std::move(loaded));
         }
         outcome->done = true;
@@ -320,7 +320,7 @@ void ProjectFiles::askAboutChangeOnDisk() {
                                     "before it overwrites the file."));
     QPushButton* reload =
         box.addButton(tr("&Reload"), m_document->isModified() ? QMessageBox::DestructiveRole
-                                                             : QMessageBox::AcceptRole);
+                                                              : QMessageBox::AcceptRole);
     QPushButton* keep = box.addButton(tr("&Keep This Version"), QMessageBox::RejectRole);
     box.setDefaultButton(m_document->isModified() ? keep : reload);
     m_asking = true;

@@ -1,6 +1,7 @@
 #include "models/design_table_model.h"
 
 #include <QColor>
+#include <QCoreApplication>
 #include <QRegularExpression>
 
 #include "document/commands.h"
@@ -57,9 +58,11 @@ DesignTableModel::DesignTableModel(ProjectDocument* document, QObject* parent)
 }
 
 QStringList DesignTableModel::lawNames() {
-    return {
-        tr("Dwell"),         tr("Harmonic"),   tr("Cycloidal"),    tr("Modified trapezoid"),
-        tr("Modified sine"), tr("Poly 3-4-5"), tr("Poly 4-5-6-7"), tr("Poly 5 (boundary values)")};
+    QStringList names;
+    for (const MotionLawKind& law : motionLaws()) {
+        names << QCoreApplication::translate("MotionLaw", law.title);
+    }
+    return names;
 }
 
 bool DesignTableModel::swinging() const {
@@ -108,7 +111,7 @@ QVariant DesignTableModel::data(const QModelIndex& index, int role) const {
     const auto row = static_cast<std::size_t>(index.row());
     const DesignSegmentSpec& s = segments[row];
     const int c = index.column();
-    const bool poly5 = s.law == MotionLawType::Poly5;
+    const bool poly5 = motionLaw(s.law).shape == LawShape::BoundaryValues;
     if (role == SegmentTableModel::ChoicesRole && c == Law) return lawNames();
     if (role == kEditorSuffixRole) {
         const QString unit = swinging() ? QStringLiteral("°") : QStringLiteral(" mm");
@@ -169,7 +172,7 @@ QVariant DesignTableModel::data(const QModelIndex& index, int role) const {
         return edit ? QVariant(v) : QVariant(formatQuantityValue(DisplayQuantity::Input, v));
     };
     const auto coefficient = [&](double LawCoefficients::*field) -> QVariant {
-        if (s.law == MotionLawType::Dwell) return {};
+        if (motionLaw(s.law).shape == LawShape::Dwell) return {};
         double value = 0.0;
         if (row < m_coefficients.size() && m_coefficients.size() == segments.size()) {
             value = m_coefficients[row].*field;
@@ -249,8 +252,8 @@ Qt::ItemFlags DesignTableModel::flags(const QModelIndex& index) const {
     const int c = index.column();
     if (c == Law || c == ToDeg || c == Lift) return f | Qt::ItemIsEditable;
     if (isPoly5Column(c) && index.row() < rowCount() &&
-        m_document->project().design->segments[static_cast<std::size_t>(index.row())].law ==
-            MotionLawType::Poly5) {
+        motionLaw(m_document->project().design->segments[static_cast<std::size_t>(index.row())].law)
+                .shape == LawShape::BoundaryValues) {
         return f | Qt::ItemIsEditable;
     }
     return f;
@@ -274,10 +277,10 @@ bool DesignTableModel::setData(const QModelIndex& index, const QVariant& value, 
     bool ok = false;
     if (c == Law) {
         const int law = v.toInt(&ok);
-        if (!ok || law < 0 || law > static_cast<int>(MotionLawType::Poly5)) return false;
+        if (!ok || law < 0 || law >= static_cast<int>(kMotionLawCount)) return false;
         s.law = static_cast<MotionLawType>(law);
         // A dwell keeps the lift it starts with: switching to one takes that lift at once.
-        if (s.law == MotionLawType::Dwell) {
+        if (motionLaw(s.law).shape == LawShape::Dwell) {
             s.lift = index.row() == 0 ? 0.0 : design.segments[index.row() - 1].lift;
         }
     } else {

@@ -7,6 +7,7 @@
 
 #include "document/commands.h"
 #include "models/delegates.h"
+#include "project/follower_kind.h"
 #include "views/axis_format.h"
 #include "views/palette.h"
 #include "views/plot_redraw.h"
@@ -353,7 +354,7 @@ void ContourView::placeFollower(double phi) {
     const FollowerSpec& spec = model->spec();
     const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), n(-u.y(), u.x());
     const double size = std::max(st.center.norm(), 1.0);
-    const double rho = spec.type == FollowerType::Roller ? spec.radius : 0.0;
+    const double rho = contactRadius(spec);
     if (model->oscillating()) {
         const Eigen::Vector2d pivot(u.x() * spec.pivot.x() + n.x() * spec.pivot.y(),
                                     u.y() * spec.pivot.x() + n.y() * spec.pivot.y());

@@ -3,6 +3,7 @@
 #include <qcustomplot.h>
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QFormLayout>
 #include <QLabel>
 #include <QListWidget>
@@ -13,6 +14,7 @@
 #include "document/commands.h"
 #include "messages/diagnostic_text.h"
 #include "models/delegates.h"
+#include "project/follower_kind.h"
 #include "views/axis_format.h"
 #include "views/plot_redraw.h"
 #include "widgets/number_spin_box.h"
@@ -43,7 +45,9 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     auto* form = new QFormLayout;
     m_type = new QComboBox(this);
     m_type->setObjectName("followerTypeComboBox");
-    m_type->addItems({tr("Knife edge"), tr("Roller"), tr("Flat face")});
+    for (const FollowerKind& kind : followerKinds()) {
+        m_type->addItem(QCoreApplication::translate("FollowerKind", kind.title));
+    }
     m_type->setToolTip(tr("What touches the cam (math.md §7)"));
     m_motion = new QComboBox(this);
     m_motion->setObjectName("followerMotionComboBox");
@@ -143,14 +147,14 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     };
     choice(m_type, [fittingRadius](FollowerSpec& f, int i) {
         f.type = static_cast<FollowerType>(i);
-        if (f.type == FollowerType::Roller && !(f.radius > 0.0)) f.radius = fittingRadius();
-        if (f.type == FollowerType::Flat) f.motion = FollowerMotion::Translating;
+        if (followerKind(f.type).hasRadius && !(f.radius > 0.0)) f.radius = fittingRadius();
+        if (!followerKind(f.type).canSwing) f.motion = FollowerMotion::Translating;
     });
     choice(m_motion, [fittingRadius](FollowerSpec& f, int i) {
         f.motion = static_cast<FollowerMotion>(i);
         if (f.motion == FollowerMotion::Oscillating) {
-            if (f.type == FollowerType::Flat) f.type = FollowerType::Roller;
-            if (f.type == FollowerType::Roller && !(f.radius > 0.0)) f.radius = fittingRadius();
+            if (!followerKind(f.type).canSwing) f.type = FollowerType::Roller;
+            if (followerKind(f.type).hasRadius && !(f.radius > 0.0)) f.radius = fittingRadius();
         }
     });
     choice(m_side, [](FollowerSpec& f, int i) { f.arm = static_cast<ArmSide>(i); });
@@ -193,7 +197,7 @@ void FollowerPanel::refresh() {
     m_type->setCurrentIndex(static_cast<int>(f.type));
     m_motion->setCurrentIndex(static_cast<int>(f.motion));
     const bool arm = f.motion == FollowerMotion::Oscillating;
-    m_radius->setValue(f.type == FollowerType::Roller ? f.radius : m_radius->value());
+    m_radius->setValue(followerKind(f.type).hasRadius ? f.radius : m_radius->value());
     m_offset->setValue(f.offset);
     if (arm || m_document->project().follower) {
         if (f.armLength > 0.0) {
@@ -210,7 +214,7 @@ void FollowerPanel::refresh() {
     }
     m_side->setCurrentIndex(static_cast<int>(f.arm));
     m_limit->setValue(f.maxPressureAngleDeg.value_or(0.0));
-    m_radius->setEnabled(f.type == FollowerType::Roller);
+    m_radius->setEnabled(followerKind(f.type).hasRadius);
     m_offset->setEnabled(!arm);
     m_pivotX->setEnabled(arm);
     m_pivotY->setEnabled(arm);
@@ -266,6 +270,11 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
             ++m_problems;
         }
     };
+    if (result && result->awaitsContour()) {
+        m_summary->setText(
+            tr("No design checks: no contour yet. Synthesize (F6) makes it from the design."));
+        return;
+    }
     if (!result || !result->ok()) {
         m_summary->setText(
             result && !result->errors.empty()

@@ -31,7 +31,6 @@ bool isCircle(const Arc& arc) {
 
 /// +1 on the outer branch, -1 on the inner: as phi grows the far intersection moves
 /// counter-clockwise about the centre and the near one clockwise.
-double arcSense(const Arc& arc) { return arc.branch == Branch::Outer ? 1.0 : -1.0; }
 
 /// Which intersection of the ray through p (a point of the circle) p is: with r = |p| and
 /// r = mu ± sqrt(D) (math.md §1), p·(p − c) = r² − r·mu = ±r·sqrt(D). So the sign of
@@ -42,7 +41,7 @@ bool onBranch(const Vec& p, const Vec& center, double sense) {
 }
 
 /// Six significant digits: enough to tell the user which point is meant.
-std::string rounded(double v) {
+std::string sixDigits(double v) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.6g", v == 0.0 ? 0.0 : v);  // no "-0"
     return buffer;
@@ -51,7 +50,7 @@ std::string rounded(double v) {
 /// Components below 1e-12 of the point's size are round-off (cos 90° = 6e-17) and shown as 0.
 std::string pointText(const Vec& p) {
     const double tiny = 1e-12 * std::max(std::abs(p.x()), std::abs(p.y()));
-    auto component = [&](double v) { return rounded(std::abs(v) <= tiny ? 0.0 : v); };
+    auto component = [&](double v) { return sixDigits(std::abs(v) <= tiny ? 0.0 : v); };
     // Appended piece by piece: "(" + std::string trips GCC 12's -Wrestrict false positive.
     std::string text = "(";
     text += component(p.x());
@@ -65,13 +64,13 @@ std::string pointText(const Vec& p) {
 std::vector<DiagnosticArg> pointArgs(const Vec& p) {
     const double tiny = 1e-12 * std::max(std::abs(p.x()), std::abs(p.y()));
     auto component = [&](double v) {
-        return std::strtod(rounded(std::abs(v) <= tiny ? 0.0 : v).c_str(), nullptr);
+        return std::strtod(sixDigits(std::abs(v) <= tiny ? 0.0 : v).c_str(), nullptr);
     };
     return {component(p.x()), component(p.y())};
 }
 
-/// The number rounded() shows.
-double shown(double v) { return std::strtod(rounded(v).c_str(), nullptr); }
+/// The number sixDigits() shows.
+double shown(double v) { return std::strtod(sixDigits(v).c_str(), nullptr); }
 
 std::string deg(double value) { return formatNumber(value) + "°"; }
 
@@ -138,7 +137,7 @@ std::vector<DiagnosticArg> tangentArgs(const CircleTangent& t, const Joint& k) {
 }
 
 std::string branchReason(const Arc& arc, std::size_t index) {
-    const double sense = arcSense(arc);
+    const double sense = arc.sense();
     return "touches " + segmentLocation(index) + " on the " + sideName(-sense) +
            " side of its circle, but the arc follows the " + sideName(sense) + " side (" +
            branchName(sense) + " branch)";
@@ -149,7 +148,7 @@ Dropped wrongSide(const CircleTangent& t, const Joint& k, const Arc& arc, std::s
     // On the outer branch (sense > 0) it touches the near side, on the inner the far one.
     return {
         tangentName(t, k) + " " + branchReason(arc, index), false,
-        arcSense(arc) > 0.0 ? DiagnosticCode::TangentOnNearSide : DiagnosticCode::TangentOnFarSide,
+        arc.sense() > 0.0 ? DiagnosticCode::TangentOnNearSide : DiagnosticCode::TangentOnFarSide,
         joined(tangentArgs(t, k), {segmentArg(index)})};
 }
 
@@ -240,7 +239,7 @@ std::variant<RowEnd, Refusal> rowEnd(const SegmentSpec& s, std::size_t row) {
                            DiagnosticCode::ArcRayMissesEnd,
                            {s.phiEndDeg, segmentArg(row)}};
         }
-        end.travel = arcSense(*arc) * perp(end.point - arc->center);
+        end.travel = arc->sense() * perp(end.point - arc->center);
     } else if (const auto* line = s.as<Line>()) {
         end.point = line->to;
         end.travel = line->to - line->from;
@@ -410,7 +409,7 @@ Result<TangentLineChoices> tangentLineJoint(const std::vector<SegmentSpec>& cont
         }
         // (b) The line runs as the arcs travel there, and (c) its ends are on the arcs'
         // branches. With (a) the two are the same condition; both are checked for clarity.
-        const double senseA = arcSense(arcA), senseB = arcSense(arcB);
+        const double senseA = arcA.sense(), senseB = arcB.sense();
         const bool travelA = dir.dot(senseA * perp(t.onA - arcA.center)) > 0.0;
         const bool travelB = dir.dot(senseB * perp(t.onB - arcB.center)) > 0.0;
         const bool branchA = onBranch(t.onA, arcA.center, senseA);
@@ -517,7 +516,7 @@ Result<ArcThroughPointResult> arcThroughPoint(const std::vector<SegmentSpec>& co
     // s > 0: centre on the left, the arc turns counter-clockwise about it: outer.
     const double sense = sc > 0.0 ? 1.0 : -1.0;
     const std::string circle =
-        "the circle (centre " + pointText(center) + ", radius " + rounded(radius) + " mm)";
+        "the circle (centre " + pointText(center) + ", radius " + sixDigits(radius) + " mm)";
     const std::vector<DiagnosticArg> circleArgs = joined(pointArgs(center), {shown(radius)});
     const bool outer = sense > 0.0;
     if (!onBranch(t, center, sense)) {  // guarded by cross(T, t) > 0 up to rounding

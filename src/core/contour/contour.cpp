@@ -15,14 +15,19 @@ PolarDerivatives ContourSegment::evaluate(double phi) const {
 Result<Contour> Contour::build(const Project& project, ValidationOptions options) {
     Diagnostics errors = validateProject(project, options);
     if (hasErrors(errors)) return errors;
-    if (project.contour.empty()) {
-        // Valid only as a design waiting for its synthesis: nothing to compute yet.
-        return Diagnostics{Diagnostic{"contour",
-                                      "is empty: the design's contour was never synthesised "
-                                      "(camwright-cli synthesize makes it)"}
-                               .coded(DiagnosticCode::ContourNeverSynthesised, {})};
-    }
+    return buildValidated(project);
+}
 
+Diagnostic contourNeverSynthesised() {
+    return Diagnostic{"contour",
+                      "is empty: the design's contour was never synthesised "
+                      "(camwright-cli synthesize makes it)"}
+        .coded(DiagnosticCode::ContourNeverSynthesised, {});
+}
+
+Result<Contour> Contour::buildValidated(const Project& project) {
+    // Valid only as a design waiting for its synthesis: nothing to compute yet.
+    if (project.contour.empty()) return Diagnostics{contourNeverSynthesised()};
     Contour contour;
     contour.m_segments.reserve(project.contour.size());
     for (const SegmentSpec& spec : project.contour) {

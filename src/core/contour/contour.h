@@ -52,12 +52,19 @@ struct ContourSegment {
     [[nodiscard]] PolarDerivatives evaluate(double phi) const;
 };
 
+/// @brief Why a project with no segments (a design waiting for its synthesis) has no contour:
+/// "contour: is empty: the design's contour was never synthesised …".
+[[nodiscard]] Diagnostic contourNeverSynthesised();
+
 /// @brief A closed chain of segments whose windows are contiguous and cover one turn.
 class Contour {
 public:
     /// @brief Validates the document and compiles it; the errors are located.
     [[nodiscard]] static Result<Contour> build(const Project& project,
                                                ValidationOptions options = {});
+    /// @brief Compiles a document whose segments validateProject found sound (with or without
+    /// its joints checked); one with no segments gives contourNeverSynthesised().
+    [[nodiscard]] static Result<Contour> buildValidated(const Project& project);
 
     [[nodiscard]] std::size_t size() const { return m_segments.size(); }
     [[nodiscard]] const ContourSegment& segment(std::size_t k) const { return m_segments[k]; }

@@ -8,6 +8,7 @@
 #include "common/angles.h"
 #include "follower/jet.h"
 #include "geometry/planar.h"
+#include "project/follower_kind.h"
 
 namespace cam {
 namespace {
@@ -29,7 +30,7 @@ Eigen::Vector2d derivative2(const JetVec& v) { return {2.0 * v.x.c[2], 2.0 * v.y
 Result<ExactProfile> ExactProfile::build(const MotionDesign& design, const FollowerSpec& follower) {
     ExactProfile profile(design, follower);
     const double Rb = design.spec().baseRadius;
-    const double rho = follower.type == FollowerType::Roller ? follower.radius : 0.0;
+    const double rho = contactRadius(follower);
     const double Rp = Rb + rho;  // the pitch curve's base circle
     if (follower.motion == FollowerMotion::Translating) {
         if (follower.type != FollowerType::Flat && !(std::abs(follower.offset) < Rp)) {
@@ -117,7 +118,7 @@ ProfilePoint ExactProfile::at(double phi) const {
     const double curvature = cross(c1, c2) / (speed2 * speed);
     const double curvature1 = cross(c1, c3) / (speed2 * speed) -
                               3.0 * cross(c1, c2) * c1.dot(c2) / (speed2 * speed2 * speed);
-    const double rho = f.type == FollowerType::Roller ? f.radius : 0.0;
+    const double rho = contactRadius(f);
     p.pitch = c0;
     p.point = c0 - rho * normal;
     // The inner offset P = C − ρN: P' = (1 − ρκ)·C', P'' = (1 − ρκ)·C'' − ρκ'·C'.
@@ -150,7 +151,7 @@ std::vector<ProfileProblem> ExactProfile::problems(bool strictPressureAngle, int
     std::vector<ProfileProblem> out;
     const int n = std::max(samples, 64);
     const double h = kTwoPi / n;
-    const double rho = m_follower.type == FollowerType::Roller ? m_follower.radius : 0.0;
+    const double rho = contactRadius(m_follower);
     const double limit = degToRad(m_follower.maxPressureAngleOrDefault());
     // Undercut: the profile folds where its tangent turns back, (1 − ρκ) < 0 for a roller
     // (pitch radius below the roller's), h + h'' < 0 for a flat face, never for a knife.

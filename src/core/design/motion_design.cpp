@@ -56,13 +56,12 @@ Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
             error(at + ".to_deg", "must be at most 360° (got " + formatNumber(s.toDeg) + "°)",
                   DiagnosticCode::DesignEndBeyondTurn, {s.toDeg});
         }
-        if (s.law == MotionLawType::Dwell && s.lift != startLift) {
+        if (motionLaw(s.law).shape == LawShape::Dwell && s.lift != startLift) {
             error(at + ".lift",
                   "a dwell keeps the lift it starts with (" + formatNumber(startLift) + "), got " +
                       formatNumber(s.lift),
                   DiagnosticCode::DwellLiftChanges, {startLift, s.lift});
-        } else if (s.law != MotionLawType::Dwell && s.law != MotionLawType::Poly5 &&
-                   s.lift == startLift) {
+        } else if (motionLaw(s.law).shape == LawShape::Normalised && s.lift == startLift) {
             error(at + ".lift",
                   "must differ from the lift it starts with (" + formatNumber(startLift) +
                       ") for " + std::string(lawName(s.law)) +
@@ -132,8 +131,8 @@ std::array<double, 4> MotionDesign::inSegment(std::size_t k, double phi) const {
     const DesignSegmentSpec& s = m_spec.segments[k];
     const double h = m_endRad[k] - m_startRad[k], y0 = m_startLift[k], d = s.lift - y0;
     const double x = (phi - m_startRad[k]) / h;
-    if (s.law == MotionLawType::Dwell) return {y0, 0.0, 0.0, 0.0};
-    if (s.law == MotionLawType::Poly5) {
+    if (motionLaw(s.law).shape == LawShape::Dwell) return {y0, 0.0, 0.0, 0.0};
+    if (motionLaw(s.law).shape == LawShape::BoundaryValues) {
         // The file's slopes are per degree; the polynomial works per radian.
         const double perRad = 180.0 / kPi;
         const Poly5Law law(h, y0, s.lift, s.v0 * perRad, s.a0 * perRad * perRad, s.v1 * perRad,
@@ -161,7 +160,7 @@ std::array<double, 4> MotionDesign::liftAt(double phi) const {
 
 LawCoefficients MotionDesign::coefficients(std::size_t k) const {
     const DesignSegmentSpec& s = m_spec.segments[k];
-    if (s.law != MotionLawType::Poly5) return lawCoefficients(s.law);
+    if (motionLaw(s.law).shape != LawShape::BoundaryValues) return lawCoefficients(s.law);
     // Sampled finely, normalised by the stretch: y' · h/Δ, y'' · h²/Δ, y''' · h³/Δ.
     const double h = m_endRad[k] - m_startRad[k], d = s.lift - m_startLift[k];
     const double scale = d != 0.0 ? 1.0 / std::abs(d) : 1.0;

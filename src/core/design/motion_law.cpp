@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/angles.h"
+#include "common/translate_marker.h"
 
 namespace cam {
 namespace {
@@ -94,80 +95,97 @@ LawPoint polynomial(const std::array<double, 8>& c, double x) {
     return r;
 }
 
-constexpr std::array<std::pair<MotionLawType, std::string_view>, 8> kNames{{
-    {MotionLawType::Dwell, "dwell"},
-    {MotionLawType::Harmonic, "harmonic"},
-    {MotionLawType::Cycloidal, "cycloidal"},
-    {MotionLawType::ModifiedTrapezoid, "modified-trapezoid"},
-    {MotionLawType::ModifiedSine, "modified-sine"},
-    {MotionLawType::Poly345, "poly345"},
-    {MotionLawType::Poly4567, "poly4567"},
-    {MotionLawType::Poly5, "poly5"},
+LawPoint harmonic(double x) {
+    const double s = std::sin(kPi * x), c = std::cos(kPi * x);
+    return {(1.0 - c) / 2.0, kPi / 2.0 * s, kPi * kPi / 2.0 * c, -kPi * kPi * kPi / 2.0 * s};
+}
+
+LawPoint cycloidal(double x) {
+    const double s = std::sin(kTwoPi * x), c = std::cos(kTwoPi * x);
+    return {x - s / kTwoPi, 1.0 - c, kTwoPi * s, kTwoPi * kTwoPi * c};
+}
+
+LawPoint modifiedTrapezoidAt(double x) { return modifiedTrapezoid().at(x); }
+LawPoint modifiedSineAt(double x) { return modifiedSine().at(x); }
+LawPoint poly345(double x) { return polynomial({0, 0, 0, 10, -15, 6, 0, 0}, x); }
+LawPoint poly4567(double x) { return polynomial({0, 0, 0, 0, 35, -84, 70, -20}, x); }
+
+// Closed forms: the velocity peaks mid-way; the acceleration of the piecewise laws is their
+// plateau or crest; poly4567's where its jerk vanishes, x = (5 − √5)/10.
+LawCoefficients harmonicCoefficients() {
+    return {kPi / 2.0, kPi * kPi / 2.0, kPi * kPi * kPi / 2.0};
+}
+LawCoefficients cycloidalCoefficients() { return {2.0, kTwoPi, kTwoPi * kTwoPi}; }
+/// A law of sine ramps of 1/8: its crest at 1/8, its jerk there a quarter wave of it.
+template <LawPoint (*law)(double)>
+LawCoefficients rampedCoefficients() {
+    const LawPoint crest = law(0.125);
+    return {law(0.5).v, crest.a, kQuarterWave * crest.a};
+}
+LawCoefficients poly345Coefficients() { return {1.875, 10.0 / std::sqrt(3.0), 60.0}; }
+LawCoefficients poly4567Coefficients() {
+    return {2.1875, std::abs(poly4567((5.0 - std::sqrt(5.0)) / 10.0).a), 52.5};
+}
+
+/// Every law, one row each, in MotionLawType order. The titles are marked for the app's
+/// translations (context "MotionLaw").
+constexpr std::array<MotionLawKind, kMotionLawCount> kLaws{{
+    {MotionLawType::Dwell, "dwell", CAM_TRANSLATE_NOOP("MotionLaw", "Dwell"), LawShape::Dwell,
+     nullptr, nullptr},
+    {MotionLawType::Harmonic, "harmonic", CAM_TRANSLATE_NOOP("MotionLaw", "Harmonic"),
+     LawShape::Normalised, harmonic, harmonicCoefficients},
+    {MotionLawType::Cycloidal, "cycloidal", CAM_TRANSLATE_NOOP("MotionLaw", "Cycloidal"),
+     LawShape::Normalised, cycloidal, cycloidalCoefficients},
+    {MotionLawType::ModifiedTrapezoid, "modified-trapezoid",
+     CAM_TRANSLATE_NOOP("MotionLaw", "Modified trapezoid"), LawShape::Normalised,
+     modifiedTrapezoidAt, rampedCoefficients<modifiedTrapezoidAt>},
+    {MotionLawType::ModifiedSine, "modified-sine", CAM_TRANSLATE_NOOP("MotionLaw", "Modified sine"),
+     LawShape::Normalised, modifiedSineAt, rampedCoefficients<modifiedSineAt>},
+    {MotionLawType::Poly345, "poly345", CAM_TRANSLATE_NOOP("MotionLaw", "Poly 3-4-5"),
+     LawShape::Normalised, poly345, poly345Coefficients},
+    {MotionLawType::Poly4567, "poly4567", CAM_TRANSLATE_NOOP("MotionLaw", "Poly 4-5-6-7"),
+     LawShape::Normalised, poly4567, poly4567Coefficients},
+    {MotionLawType::Poly5, "poly5", CAM_TRANSLATE_NOOP("MotionLaw", "Poly 5 (boundary values)"),
+     LawShape::BoundaryValues, nullptr, nullptr},
 }};
+
+constexpr bool rowsInOrder() {
+    for (std::size_t k = 0; k < kLaws.size(); ++k) {
+        if (static_cast<std::size_t>(kLaws[k].type) != k) return false;
+        if ((kLaws[k].shape == LawShape::Normalised) != (kLaws[k].normalised != nullptr)) {
+            return false;
+        }
+        if ((kLaws[k].normalised == nullptr) != (kLaws[k].coefficients == nullptr)) return false;
+    }
+    return true;
+}
+static_assert(rowsInOrder(),
+              "one row per law, in MotionLawType order, a function for each "
+              "normalised law and only for those");
 
 }  // namespace
 
+std::span<const MotionLawKind> motionLaws() { return kLaws; }
+
+const MotionLawKind& motionLaw(MotionLawType law) {
+    return kLaws.at(static_cast<std::size_t>(law));
+}
+
 LawPoint normalisedLaw(MotionLawType law, double x) {
-    x = std::clamp(x, 0.0, 1.0);
-    switch (law) {
-        case MotionLawType::Dwell:
-        case MotionLawType::Poly5:
-            return {};
-        case MotionLawType::Harmonic: {
-            const double s = std::sin(kPi * x), c = std::cos(kPi * x);
-            return {(1.0 - c) / 2.0, kPi / 2.0 * s, kPi * kPi / 2.0 * c,
-                    -kPi * kPi * kPi / 2.0 * s};
-        }
-        case MotionLawType::Cycloidal: {
-            const double s = std::sin(kTwoPi * x), c = std::cos(kTwoPi * x);
-            return {x - s / kTwoPi, 1.0 - c, kTwoPi * s, kTwoPi * kTwoPi * c};
-        }
-        case MotionLawType::ModifiedTrapezoid:
-            return modifiedTrapezoid().at(x);
-        case MotionLawType::ModifiedSine:
-            return modifiedSine().at(x);
-        case MotionLawType::Poly345:
-            return polynomial({0, 0, 0, 10, -15, 6, 0, 0}, x);
-        case MotionLawType::Poly4567:
-            return polynomial({0, 0, 0, 0, 35, -84, 70, -20}, x);
-    }
-    return {};
+    const MotionLawKind& kind = motionLaw(law);
+    return kind.normalised ? kind.normalised(std::clamp(x, 0.0, 1.0)) : LawPoint{};
 }
 
 LawCoefficients lawCoefficients(MotionLawType law) {
-    // Closed forms: the velocity peaks mid-way; the acceleration of the piecewise laws is their
-    // plateau or crest; poly4567's where its jerk vanishes, x = (5 − √5)/10.
-    switch (law) {
-        case MotionLawType::Dwell:
-        case MotionLawType::Poly5:
-            return {};
-        case MotionLawType::Harmonic:
-            return {kPi / 2.0, kPi * kPi / 2.0, kPi * kPi * kPi / 2.0};
-        case MotionLawType::Cycloidal:
-            return {2.0, kTwoPi, kTwoPi * kTwoPi};
-        case MotionLawType::ModifiedTrapezoid:
-        case MotionLawType::ModifiedSine: {
-            const LawPoint crest = normalisedLaw(law, 0.125);
-            return {normalisedLaw(law, 0.5).v, crest.a, kQuarterWave * crest.a};
-        }
-        case MotionLawType::Poly345:
-            return {1.875, 10.0 / std::sqrt(3.0), 60.0};
-        case MotionLawType::Poly4567:
-            return {2.1875, std::abs(normalisedLaw(law, (5.0 - std::sqrt(5.0)) / 10.0).a), 52.5};
-    }
-    return {};
+    const MotionLawKind& kind = motionLaw(law);
+    return kind.coefficients ? kind.coefficients() : LawCoefficients{};
 }
 
-std::string_view lawName(MotionLawType law) {
-    for (const auto& [type, name] : kNames) {
-        if (type == law) return name;
-    }
-    return "dwell";
-}
+std::string_view lawName(MotionLawType law) { return motionLaw(law).name; }
 
 std::optional<MotionLawType> lawFromName(std::string_view name) {
-    for (const auto& [type, known] : kNames) {
-        if (known == name) return type;
+    for (const MotionLawKind& kind : kLaws) {
+        if (kind.name == name) return kind.type;
     }
     return std::nullopt;
 }

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <string_view>
 
 #include "project/project.h"
@@ -16,19 +17,49 @@ struct LawPoint {
     double y = 0.0, v = 0.0, a = 0.0, j = 0.0;
 };
 
-/// @brief A rise law normalised to y(0) = 0, y(1) = 1; Dwell is y ≡ 0. Requires law != Poly5
-/// (see Poly5Law). x outside [0, 1] is clamped.
-[[nodiscard]] LawPoint normalisedLaw(MotionLawType law, double x);
-
 /// @brief A law's characteristic values: the largest |y'|, |y''|, |y'''| over [0, 1] (for
 /// Harmonic cj is the largest |y'''| inside the interval: its acceleration jumps at the ends).
 struct LawCoefficients {
     double cv = 0.0, ca = 0.0, cj = 0.0;
 };
+
+/// @brief How a law's stretch is shaped.
+enum class LawShape {
+    Dwell,           ///< keeps the lift it starts with
+    Normalised,      ///< a rise (or return) law y(x) on [0, 1] scaled to the stretch
+    BoundaryValues,  ///< poly5: slopes and curvatures given at both ends (Poly5Law)
+};
+
+/// @brief A motion law, described once. Adding a law: its enumerator in CAM_MOTION_LAWS
+/// (project/project.h), its row of the table in motion_law.cpp (name, title, shape, function,
+/// coefficients in closed form), the title's German in the translations, and a reference test
+/// of its coefficients (tests/core/motion_law_test.cpp). Nothing else lists laws.
+struct MotionLawKind {
+    MotionLawType type;
+    std::string_view name;  ///< in project files: "modified-trapezoid"
+    /// English, for the window's law column; the app translates it in context "MotionLaw".
+    const char* title;
+    LawShape shape;
+    /// Normalised: y and its derivatives on x ∈ [0, 1], y(0) = 0, y(1) = 1; null otherwise.
+    LawPoint (*normalised)(double x);
+    /// Normalised: its coefficients in closed form; null otherwise (a dwell has none, a
+    /// poly5's depend on its segment: MotionDesign::coefficients).
+    LawCoefficients (*coefficients)();
+};
+
+/// @brief Every law, in MotionLawType order.
+[[nodiscard]] std::span<const MotionLawKind> motionLaws();
+/// @brief The row of a law.
+[[nodiscard]] const MotionLawKind& motionLaw(MotionLawType law);
+
+/// @brief A rise law normalised to y(0) = 0, y(1) = 1; zero for a law that is not normalised
+/// (the dwell, poly5: see Poly5Law). x outside [0, 1] is clamped.
+[[nodiscard]] LawPoint normalisedLaw(MotionLawType law, double x);
+/// @brief A normalised law's coefficients; zero for the others.
 [[nodiscard]] LawCoefficients lawCoefficients(MotionLawType law);
 
-/// @brief The name in project files ("dwell", "harmonic", "cycloidal", "modified-trapezoid",
-/// "modified-sine", "poly345", "poly4567", "poly5") and back (none for an unknown name).
+/// @brief The name in project files ("dwell", "harmonic", …) and back (none for an unknown
+/// name: a file that names one is refused, never read as a dwell).
 [[nodiscard]] std::string_view lawName(MotionLawType law);
 [[nodiscard]] std::optional<MotionLawType> lawFromName(std::string_view name);
 

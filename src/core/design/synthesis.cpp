@@ -13,6 +13,7 @@
 #include "design/motion_design.h"
 #include "follower/follower.h"
 #include "follower/follower_turn.h"
+#include "project/follower_kind.h"
 
 namespace cam {
 namespace {
@@ -243,7 +244,7 @@ Result<Synthesis> synthesize(const Project& project, std::optional<double> toler
     // that measurement exceeds the tolerance the fit is made again with a smaller target.
     // A roller must fit into every concave arc (the validator's rule): the exact profile's
     // concave radius exceeds the roller's by its pitch curve's, so only a stray arc would not.
-    const double rollerRadius = follower.type == FollowerType::Roller ? follower.radius : 0.0;
+    const double rollerRadius = contactRadius(follower);
     Project made = project;
     std::optional<Contour> built;
     std::vector<FittedArc> arcs;

@@ -21,13 +21,12 @@ using Vec = Eigen::Vector2d;
 
 /// As phi grows the ray's far intersection ("outer") moves counter-clockwise about the circle's
 /// centre and the near one clockwise, so the branch is the direction of travel.
-double arcSense(const Arc& arc) { return arc.branch == Branch::Outer ? 1.0 : -1.0; }
 
 /// Unit tangent in the direction of travel (growing phi) at a point of the segment.
 Vec travelDirection(const SegmentSpec& s, const Vec& p) {
     if (const auto* line = s.as<Line>()) return (line->to - line->from).normalized();
     const Arc& arc = *s.as<Arc>();
-    return (arcSense(arc) * perp(p - arc.center)).normalized();
+    return (arc.sense() * perp(p - arc.center)).normalized();
 }
 
 /// Joint K, seen along the direction of travel: `a` ends there, `b` starts there.
@@ -69,7 +68,7 @@ Offset offsetOf(const SegmentSpec& s, double side, double rho) {
     if (const auto* arc = s.as<Arc>()) {
         o.isLine = false;
         o.center = arc->center;
-        o.signedRadius = arc->radius - side * arcSense(*arc) * rho;
+        o.signedRadius = arc->radius - side * arc->sense() * rho;
     } else {
         const Line& line = *s.as<Line>();
         o.dir = (line.to - line.from).normalized();
@@ -206,7 +205,7 @@ std::string reason(const Corner& k, Failure f, bool atBound) {
 }
 
 /// Ten significant digits: the bound is computed to ~1e-13, the message need not show noise.
-std::string rounded(double v) {
+std::string tenDigits(double v) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.10g", v);
     return buffer;
@@ -426,7 +425,7 @@ Result<FilletResult> filletJoint(const std::vector<SegmentSpec>& contour, std::s
                      DiagnosticCode::FilletRadiusNothingFits,
                      {rho, kMinLengthMm, reasonName(bound.why, bound.maxRadius > 0.0)})};
     }
-    const std::string below = "radii below " + rounded(bound.maxRadius) + " mm";
+    const std::string below = "radii below " + tenDigits(bound.maxRadius) + " mm";
     if (!(rho > 0.0) || !std::isfinite(rho)) {
         return Diagnostics{atCorner(k, asked + " must be a number > 0: " + below + " fit",
                                     DiagnosticCode::FilletRadiusNotPositive,

@@ -10,6 +10,7 @@
 #include "follower/jet.h"
 #include "follower/piece_geometry.h"
 #include "geometry/bezier.h"
+#include "project/follower_kind.h"
 
 namespace cam {
 
@@ -25,7 +26,7 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
     model.m_spec = spec;
     model.m_pivotDirection = std::atan2(-spec.pivot.y(), -spec.pivot.x());
     model.m_phiBegin = contour.phiBegin();
-    const double rho = spec.type == FollowerType::Roller ? spec.radius : 0.0;
+    const double rho = contactRadius(spec);
     const std::size_t n = contour.size();
     Diagnostics errors;
     std::vector<Eigen::Vector2d> ends(n), startTravel(n), endTravel(n);
@@ -207,7 +208,7 @@ std::vector<std::pair<double, double>> FollowerModel::reach(const Piece& piece) 
                 break;
             default: {
                 const double t = piece.tLow + f * (piece.tHigh - piece.tLow);
-                const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
+                const double rho = contactRadius(m_spec);
                 p = splinePitch(piece.coeff, piece.orientation * rho, t);
                 const Eigen::Vector2d d =
                     (3.0 * piece.coeff[3] * t + 2.0 * piece.coeff[2]) * t + piece.coeff[1];
@@ -316,7 +317,7 @@ std::span<const std::uint32_t> FollowerModel::piecesAt(double phi) const {
 void FollowerModel::crossings(double phi, const Eigen::Vector2d& u,
                               std::vector<Candidate>& out) const {
     const double e = m_spec.offset;
-    const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
+    const double rho = contactRadius(m_spec);
     const Eigen::Vector2d nn(-u.y(), u.x());
     for (const std::uint32_t index : piecesAt(phi)) {
         const Piece& piece = m_pieces[index];
@@ -546,7 +547,7 @@ FollowerState FollowerModel::at(double phi, double omega) const {
     const Eigen::Vector2d c2 = (s2 - s) * u + (2.0 * s1 - e) * nn;
     st.normal = Eigen::Vector2d(c1.y(), -c1.x()).normalized();
     st.pressureAngle = std::atan2(s1 - e, s);
-    const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
+    const double rho = contactRadius(m_spec);
     st.contact = st.center - rho * st.normal;
     const double speed = c1.norm();
     // A straight stretch (a knife or roller on a line) has no finite radius: +∞, not the

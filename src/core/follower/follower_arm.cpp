@@ -14,6 +14,7 @@
 #include "follower/jet.h"
 #include "follower/piece_geometry.h"
 #include "geometry/planar.h"
+#include "project/follower_kind.h"
 
 namespace cam {
 
@@ -39,7 +40,7 @@ double FollowerModel::armRank(const Piece& piece, double phi) const {
     // The same intersections as armContacts, in plain doubles: only to find the piece whose
     // contact comes first; its jets are made for that piece alone.
     const double L = m_spec.armLength;
-    const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
+    const double rho = contactRadius(m_spec);
     const double sigma = awaySign();
     const double c = std::cos(phi), s = std::sin(phi);
     const Eigen::Vector2d& A = m_spec.pivot;
@@ -110,7 +111,7 @@ void FollowerModel::armContacts(double phi, std::vector<Candidate>& out) const {
     }
     if (!(firstRank > -std::numeric_limits<double>::infinity())) return;
     const double L = m_spec.armLength;
-    const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
+    const double rho = contactRadius(m_spec);
     const double sigma = awaySign();
     const Jet cu = cosJet(phi), su = sinJet(phi);
     const Eigen::Vector2d& A = m_spec.pivot;
@@ -231,7 +232,7 @@ FollowerState FollowerModel::armState(double phi, double omega, const Candidate&
     const Eigen::Vector2d c2(c.point.x.derivative(2), c.point.y.derivative(2));
     st.center = c0;
     st.normal = Eigen::Vector2d(c1.y(), -c1.x()).normalized();
-    const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
+    const double rho = contactRadius(m_spec);
     st.contact = st.center - rho * st.normal;
     // The pressure angle: between the normal and the direction the tip moves away from the cam
     // (across the arm), signed like the translating follower's: positive where the normal leans
@@ -298,7 +299,7 @@ Diagnostics FollowerModel::checkPivot(const Contour& contour) const {
 
 Diagnostics FollowerModel::armUnreachable(const Contour& contour, double phi) const {
     const double h = kTwoPi / kProfileSamples;
-    const double rho = m_spec.type == FollowerType::Roller ? m_spec.radius : 0.0;
+    const double rho = contactRadius(m_spec);
     const double L = m_spec.armLength;
     // How near and how far the cam is from the pivot at this angle.
     const Eigen::Vector2d pivot(

@@ -11,6 +11,7 @@
 #include "common/angles.h"
 #include "common/simd.h"
 #include "common/turn_angles.h"
+#include "project/follower_kind.h"
 
 namespace cam {
 
@@ -341,7 +342,7 @@ public:
           m_angles(omega, m_dt, 0, n) {
         const FollowerSpec& spec = model.spec();
         m_e = spec.offset;
-        m_rho = spec.type == FollowerType::Roller ? spec.radius : 0.0;
+        m_rho = contactRadius(spec);
         m_flat = spec.type == FollowerType::Flat;
     }
 

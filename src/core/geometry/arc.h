@@ -21,6 +21,9 @@ struct Arc {
     double radius = 1.0;
     Branch branch = Branch::Outer;
 
+    /// @brief +1 on the outer branch, −1 on the inner.
+    [[nodiscard]] double sense() const { return branch == Branch::Outer ? 1.0 : -1.0; }
+
     /// @brief The arc reduced to the scalars its r(phi) needs, for tight (vectorised) loops.
     struct Kernel {
         double cx = 0.0, cy = 0.0;  ///< centre

@@ -2,9 +2,13 @@
 
 #include <cmath>
 #include <set>
+#include <span>
+#include <string_view>
+#include <vector>
 
 #include "common/angles.h"
 #include "design/motion_law.h"
+#include "project/follower_kind.h"
 #include "project/validate.h"
 
 namespace cam {
@@ -38,12 +42,16 @@ public:
     }
 
     /// "must be "a", "b" or "c" (got "d")"; the arguments list the choices without the "or".
-    void notOneOf(const std::string& location, std::initializer_list<const char*> choices,
+    void notOneOf(const std::string& location, std::initializer_list<std::string_view> choices,
+                  const std::string& got) {
+        notOneOf(location, std::span<const std::string_view>(choices.begin(), choices.size()), got);
+    }
+    void notOneOf(const std::string& location, std::span<const std::string_view> choices,
                   const std::string& got) {
         std::string english, list;
         std::size_t i = 0;
-        for (const char* choice : choices) {
-            const std::string quoted = std::string("\"") + choice + '"';
+        for (const std::string_view choice : choices) {
+            const std::string quoted = "\"" + std::string(choice) + '"';
             if (i > 0) {
                 english += i + 1 == choices.size() ? " or " : ", ";
                 list += ", ";
@@ -281,14 +289,12 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
                  "max_pressure_angle_deg"});
     FollowerSpec spec;
     if (const auto type = rd.string(*f, "follower", "type", false)) {
-        if (*type == "knife") {
-            spec.type = FollowerType::Knife;
-        } else if (*type == "roller") {
-            spec.type = FollowerType::Roller;
-        } else if (*type == "flat") {
-            spec.type = FollowerType::Flat;
+        if (const auto known = followerTypeFromName(*type)) {
+            spec.type = *known;
         } else {
-            rd.notOneOf("follower.type", {"knife", "roller", "flat"}, *type);
+            std::vector<std::string_view> names;
+            for (const FollowerKind& kind : followerKinds()) names.push_back(kind.name);
+            rd.notOneOf("follower.type", names, *type);
         }
     }
     if (const auto motion = rd.string(*f, "follower", "motion", false)) {
@@ -302,7 +308,7 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
     }
     const double mm = units.lengthFactor();
     if (const auto v = rd.number(*f, "follower", "offset", false)) spec.offset = *v * mm;
-    const bool needsRadius = spec.type == FollowerType::Roller;
+    const bool needsRadius = followerKind(spec.type).hasRadius;
     if (const auto v = rd.number(*f, "follower", "radius", needsRadius)) spec.radius = *v * mm;
     const bool swinging = spec.motion == FollowerMotion::Oscillating;
     if (const auto v = rd.point(*f, "follower", "pivot", swinging)) spec.pivot = *v * mm;
@@ -359,10 +365,10 @@ void readMachining(Reader& rd, const Json& root, const UnitsSpec& units, Project
 /// "\"dwell\", \"harmonic\", …" for messages.
 std::string knownLawNames() {
     std::string out;
-    for (int k = 0; k <= static_cast<int>(MotionLawType::Poly5); ++k) {
+    for (const MotionLawKind& law : motionLaws()) {
         if (!out.empty()) out += ", ";
         out += '"';
-        out += lawName(static_cast<MotionLawType>(k));
+        out += law.name;
         out += '"';
     }
     return out;
@@ -401,15 +407,16 @@ void readDesign(Reader& rd, const Json& root, const UnitsSpec& units, Project& p
                                  DiagnosticCode::UnknownLaw, {*name, knownLawNames()});
                     }
                 }
-                if (s.law == MotionLawType::Poly5) {
+                if (motionLaw(s.law).shape == LawShape::BoundaryValues) {
                     rd.onlyKeys(j, at, {"law", "to_deg", "lift", "v0", "a0", "v1", "a1"});
                 } else {
                     rd.onlyKeys(j, at, {"law", "to_deg", "lift"});
                 }
                 if (const auto v = rd.number(j, at, "to_deg", true)) s.toDeg = *v;
-                if (const auto v = rd.number(j, at, "lift", s.law != MotionLawType::Dwell)) {
+                if (const auto v =
+                        rd.number(j, at, "lift", motionLaw(s.law).shape != LawShape::Dwell)) {
                     s.lift = *v * liftUnit;
-                } else if (s.law == MotionLawType::Dwell) {
+                } else if (motionLaw(s.law).shape == LawShape::Dwell) {
                     s.lift = spec.segments.empty() ? 0.0 : spec.segments.back().lift;
                 }
                 for (auto [key, value] : {std::pair{"v0", &s.v0}, std::pair{"a0", &s.a0},

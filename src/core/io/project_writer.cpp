@@ -8,6 +8,7 @@
 #include "io/json_syntax.h"
 #include "io/project_json.h"
 #include "io/project_reader.h"
+#include "project/follower_kind.h"
 
 namespace cam {
 
@@ -95,9 +96,7 @@ std::string serializeProject(const Project& p) {
     if (p.follower) {
         const FollowerSpec& f = *p.follower;
         Json j;
-        j["type"] = f.type == FollowerType::Knife    ? "knife"
-                    : f.type == FollowerType::Roller ? "roller"
-                                                     : "flat";
+        j["type"] = std::string(followerKind(f.type).name);
         if (f.motion == FollowerMotion::Oscillating) {
             j["motion"] = "oscillating";
             j["pivot"] = {length(f.pivot.x()), length(f.pivot.y())};
@@ -106,7 +105,7 @@ std::string serializeProject(const Project& p) {
         } else {
             j["offset"] = length(f.offset);
         }
-        if (f.type == FollowerType::Roller) j["radius"] = length(f.radius);
+        if (followerKind(f.type).hasRadius) j["radius"] = length(f.radius);
         if (f.maxPressureAngleDeg) j["max_pressure_angle_deg"] = *f.maxPressureAngleDeg;
         root["follower"] = std::move(j);
     }
@@ -136,7 +135,7 @@ std::string serializeProject(const Project& p) {
             j["law"] = std::string(lawName(s.law));
             j["to_deg"] = s.toDeg;
             j["lift"] = lift(s.lift);
-            if (s.law == MotionLawType::Poly5) {
+            if (motionLaw(s.law).shape == LawShape::BoundaryValues) {
                 j["v0"] = lift(s.v0);
                 j["a0"] = lift(s.a0);
                 j["v1"] = lift(s.v1);

@@ -104,6 +104,8 @@ struct MotionSpec {
     friend bool operator==(const MotionSpec&, const MotionSpec&) = default;
 };
 
+/// @brief The follower's contact with the cam. Everything else about a kind (its name, title,
+/// contact circle, whether it swings) is its row in project/follower_kind.cpp.
 enum class FollowerType { Knife, Roller, Flat };
 /// @brief How the follower moves (math.md §7): along a line, or swinging on an arm.
 enum class FollowerMotion { Translating, Oscillating };
@@ -161,6 +163,12 @@ struct ValueRange {
 inline constexpr ValueRange kOmegaRadSRange{1e-6, 1e6};
 inline constexpr ValueRange kRpmRange{1e-5, 1e7};
 inline constexpr ValueRange kPeriodSRange{1e-5, 1e7};
+/// @brief The range of a speed's magnitude in its own unit.
+[[nodiscard]] constexpr ValueRange speedRange(SpeedUnit unit) {
+    return unit == SpeedUnit::OmegaRadS ? kOmegaRadSRange
+           : unit == SpeedUnit::Rpm     ? kRpmRange
+                                        : kPeriodSRange;
+}
 /// @brief At a window end the follower ray crosses the curve at least this steeply (rad).
 inline constexpr double kMinRayAngleRad = 1e-6;
 /// @brief Machine limits: accelerations in mm/s², speeds in mm/s.
@@ -168,17 +176,28 @@ inline constexpr double kMinMachineLimit = 1e-6;
 inline constexpr double kMaxAccelMmS2 = 1e12;
 inline constexpr double kMaxSpeedMmS = 1e9;
 
-/// @brief The laws a design segment can follow (math.md §8, VDI 2143).
-enum class MotionLawType {
-    Dwell,
-    Harmonic,
-    Cycloidal,
-    ModifiedTrapezoid,
-    ModifiedSine,
-    Poly345,
-    Poly4567,
-    Poly5,
-};
+/// @brief The laws a design segment can follow (math.md §8, VDI 2143), in the order the window
+/// lists them. Everything else about a law (its name in files, its title, its function, its
+/// coefficients) is its row of the table in design/motion_law.cpp, which must have one row
+/// per law in this order (a static_assert checks it).
+#define CAM_MOTION_LAWS(X) \
+    X(Dwell)               \
+    X(Harmonic)            \
+    X(Cycloidal)           \
+    X(ModifiedTrapezoid)   \
+    X(ModifiedSine)        \
+    X(Poly345)             \
+    X(Poly4567)            \
+    X(Poly5)
+
+#define CAM_MOTION_LAW_ENUM(name) name,
+enum class MotionLawType { CAM_MOTION_LAWS(CAM_MOTION_LAW_ENUM) };
+#undef CAM_MOTION_LAW_ENUM
+
+/// @brief How many laws there are (MotionLawType values are 0 .. kMotionLawCount - 1).
+#define CAM_MOTION_LAW_COUNT(name) +1
+inline constexpr std::size_t kMotionLawCount = 0 CAM_MOTION_LAWS(CAM_MOTION_LAW_COUNT);
+#undef CAM_MOTION_LAW_COUNT
 
 /// @brief One stretch of the follower's motion: from where the previous segment ends (the
 /// first from 0°) to `toDeg`, from the previous segment's lift (the first from 0) to `lift`.

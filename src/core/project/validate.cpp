@@ -5,6 +5,7 @@
 #include "common/angles.h"
 #include "design/motion_design.h"
 #include "geometry/planar.h"
+#include "project/follower_kind.h"
 
 namespace cam {
 namespace {
@@ -137,9 +138,7 @@ private:
             error(key, "must not be 0 (its sign gives the turning direction)",
                   DiagnosticCode::SpeedIsZero);
         } else {
-            const ValueRange range = m.unit == SpeedUnit::OmegaRadS ? kOmegaRadSRange
-                                     : m.unit == SpeedUnit::Rpm     ? kRpmRange
-                                                                    : kPeriodSRange;
+            const ValueRange range = speedRange(m.unit);
             const double lo = range.lo;
             const double hi = range.hi;
             const char* unit = m.unit == SpeedUnit::OmegaRadS ? " rad/s"
@@ -426,13 +425,13 @@ private:
         const FollowerSpec& f = *m_project.follower;
         checkLength("follower.offset", f.offset);
         bool radiusOk = true;
-        if (f.type == FollowerType::Roller)
-            radiusOk = checkPositiveLength("follower.radius", f.radius);
+        const FollowerKind& kind = followerKind(f.type);
+        if (kind.hasRadius) radiusOk = checkPositiveLength("follower.radius", f.radius);
         if (f.maxPressureAngleDeg) {
             checkRange("follower.max_pressure_angle_deg", *f.maxPressureAngleDeg, 1e-6, 89.0, "°");
         }
         if (f.motion == FollowerMotion::Oscillating) {
-            if (f.type == FollowerType::Flat) {
+            if (!kind.canSwing) {
                 error("follower.type",
                       "a flat face moves only translating (math.md §7); use a knife or a roller "
                       "on an oscillating arm",
@@ -442,7 +441,7 @@ private:
             checkPositiveLength("follower.arm_length", f.armLength);
         }
         // A roller must fit into every concave arc it rides (its pitch circle R − ρ > 0).
-        if (f.type != FollowerType::Roller || !radiusOk) return;
+        if (!kind.hasRadius || !radiusOk) return;
         for (std::size_t k = 0; k < m_project.contour.size(); ++k) {
             const SegmentSpec& segment = m_project.contour[k];
             const Arc* arc = segment.as<Arc>();

@@ -1,0 +1,74 @@
+#include "evaluation/evaluation.h"
+
+#include <cmath>
+
+#include "common/angles.h"
+#include "project/validate.h"
+
+namespace cam {
+
+const char* evaluationStatusName(EvaluationStatus status) {
+    switch (status) {
+        case EvaluationStatus::Computed:
+            return "computed";
+        case EvaluationStatus::Invalid:
+            return "invalid";
+        case EvaluationStatus::AwaitsContour:
+            return "awaits contour";
+        case EvaluationStatus::Failed:
+            return "failed";
+    }
+    return "";
+}
+
+std::optional<double> usableOmega(const MotionSpec& motion) {
+    // What validateProject accepts, so that a valid project always has its speed.
+    const ValueRange range = speedRange(motion.unit);
+    if (motion.unit == SpeedUnit::PeriodS && !(motion.value > 0.0)) return std::nullopt;
+    if (!(std::abs(motion.value) >= range.lo && std::abs(motion.value) <= range.hi)) {
+        return std::nullopt;
+    }
+    return motion.omegaRadS();
+}
+
+ProjectEvaluation evaluateProject(const Project& project) {
+    ProjectEvaluation e;
+    e.problems = validateProject(project);
+    if (const auto omega = usableOmega(project.motion)) {
+        e.omega = *omega;
+        e.period = kTwoPi / std::abs(*omega);
+    }
+    const bool sound = !hasErrors(e.problems);
+    if (project.contour.empty()) {
+        e.status = sound ? EvaluationStatus::AwaitsContour : EvaluationStatus::Invalid;
+        return e;
+    }
+    // A contour whose only problems are joints that do not meet or its design's is still
+    // compiled: the window draws it (r jumps at the open joint) while the designer edits.
+    const bool compilable =
+        sound || !hasErrors(validateProject(
+                     project, ValidationOptions{.checkJoints = false, .checkDesign = false}));
+    if (compilable) {
+        auto contour = Contour::buildValidated(project);
+        if (contour.ok()) e.contour = std::move(contour).value();
+    }
+    if (e.contour) {
+        // A follower that cannot ride this cam (a pivot inside it, an arm that cannot reach it,
+        // a roller wider than a concave arc) makes the project invalid.
+        auto follower = FollowerModel::build(*e.contour, project.follower.value_or(FollowerSpec{}));
+        if (follower.ok()) {
+            e.follower = std::make_shared<const FollowerModel>(std::move(follower).value());
+        } else {
+            e.followerProblems = follower.errors();
+        }
+    }
+    // Only once nothing else is wrong: a follower placed on a contour with problems says little.
+    if (sound)
+        e.problems.insert(e.problems.end(), e.followerProblems.begin(), e.followerProblems.end());
+    e.status = hasErrors(e.problems) ? EvaluationStatus::Invalid : EvaluationStatus::Computed;
+    return e;
+}
+
+Diagnostics projectProblems(const Project& project) { return evaluateProject(project).problems; }
+
+}  // namespace cam
