@@ -15,7 +15,7 @@
 
 #include "contour/contour.h"
 #include "timing/machining_time.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 
 namespace cam::test {
 

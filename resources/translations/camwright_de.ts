@@ -3,7 +3,7 @@
 <context>
     <name>DiagnosticText</name>
     <message>
-        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+81" />
+        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+80" />
         <source>a number</source>
         <translation>eine Zahl</translation>
     </message>
@@ -219,7 +219,7 @@
         <translation>%1, y</translation>
     </message>
     <message>
-        <location line="+54" />
+        <location line="+53" />
         <source>law</source>
         <translation>Gesetz</translation>
     </message>
@@ -1687,6 +1687,64 @@
     </message>
 </context>
 <context>
+    <name>SegmentColumn</name>
+    <message>
+        <location filename="../../src/app/messages/field_titles.cpp" line="+11" />
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Centre x [mm]</source>
+        <translation>Mittelpunkt x [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Centre y [mm]</source>
+        <translation>Mittelpunkt y [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Radius [mm]</source>
+        <translation>Radius [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Branch</source>
+        <translation>Zweig</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>From x [mm]</source>
+        <translation>Von x [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>From y [mm]</source>
+        <translation>Von y [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>To x [mm]</source>
+        <translation>Bis x [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>To y [mm]</source>
+        <translation>Bis y [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>φ start [°]</source>
+        <translation>φ Anfang [°]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>φ end [°]</source>
+        <translation>φ Ende [°]</translation>
+    </message>
+</context>
+<context>
     <name>cam::Autosave</name>
     <message>
         <location filename="../../src/app/files/autosave.cpp" line="+184" />
@@ -2069,7 +2127,7 @@
 <context>
     <name>cam::DesignTableModel</name>
     <message>
-        <location filename="../../src/app/models/design_table_model.cpp" line="+139" />
+        <location filename="../../src/app/models/design_table_model.cpp" line="+134" />
         <source>How the follower moves over this segment (VDI 2143)</source>
         <translation>Wie sich der Stößel über diesen Abschnitt bewegt (VDI 2143)</translation>
     </message>
@@ -4208,62 +4266,7 @@ Möchten Sie die Datei ersetzen?</translation>
         <translation>Polares Fenster [φ Anfang, φ Ende), Grad</translation>
     </message>
     <message>
-        <location line="+13" />
-        <source>Type</source>
-        <translation>Typ</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Centre x [mm]</source>
-        <translation>Mittelpunkt x [mm]</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Centre y [mm]</source>
-        <translation>Mittelpunkt y [mm]</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Radius [mm]</source>
-        <translation>Radius [mm]</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Branch</source>
-        <translation>Zweig</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>From x [mm]</source>
-        <translation>Von x [mm]</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>From y [mm]</source>
-        <translation>Von y [mm]</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>To x [mm]</source>
-        <translation>Bis x [mm]</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>To y [mm]</source>
-        <translation>Bis y [mm]</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>φ start [°]</source>
-        <translation>φ Anfang [°]</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>φ end [°]</source>
-        <translation>φ Ende [°]</translation>
-    </message>
-    <message>
-        <location line="+84" />
+        <location line="+90" />
         <source>Edit %1 of segment %2</source>
         <translation>%1 von Segment %2 ändern</translation>
     </message>

@@ -29,11 +29,11 @@
 #include "kinematics/kinematics.h"
 #include "project/follower_kind.h"
 #include "project/validate.h"
-#include "spline/biarc.h"
 #include "spline/teach_in.h"
 #include "timing/machining_time.h"
 #include "timing/timing_job.h"
-#include "timing/tool_path.h"
+#include "toolpath/biarc.h"
+#include "toolpath/tool_path.h"
 
 namespace cam::cli {
 namespace {
@@ -839,9 +839,9 @@ int runSynthesize(const Arguments& args, std::ostream& out) {
         throw CliError{kInvalidInput, path + ": design",
                        "the project has no design to synthesise a contour from"};
     }
-    // The project's problems, but not the verdict's last check (evaluation.h): whether the
+    // The document's problems, but not the verdict's last check (evaluation.h): whether the
     // follower rides the contour Synthesize is about to replace does not matter.
-    for (const Diagnostic& d : validateProject(project)) {
+    for (const Diagnostic& d : documentProblems(project)) {
         if (d.severity != Severity::Error) continue;
         throw CliError{kInvalidInput, placeOf(path, d), d.message};
     }

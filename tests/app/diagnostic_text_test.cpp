@@ -24,7 +24,7 @@
 #include "project/validate.h"
 #include "spline/circle_approximation.h"
 #include "spline/teach_in.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 #include "translations.h"
 #include "views/kinematics_plots.h"
 

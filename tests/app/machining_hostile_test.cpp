@@ -16,7 +16,7 @@
 #include "engine/compute_engine.h"
 #include "mainwindow.h"
 #include "timing/machining_time.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 #include "views/machining_panel.h"
 
 namespace cam {

@@ -13,7 +13,7 @@
 #include "contour/contour.h"
 #include "io/project_json.h"
 #include "timing/machining_time.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 
 namespace {
 

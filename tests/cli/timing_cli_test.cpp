@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/project_json.h"
-#include "spline/biarc.h"
+#include "toolpath/biarc.h"
 #include "spline/teach_in.h"
 #include "test_support.h"
 #include "timing_reference.h"

@@ -6,7 +6,7 @@
 
 #include "common/angles.h"
 #include "contour/contour.h"
-#include "spline/biarc.h"
+#include "toolpath/biarc.h"
 #include "spline/teach_in.h"
 #include "timing/machining_time.h"
 

@@ -19,7 +19,7 @@
 #include "io/project_json.h"
 #include "test_support.h"
 #include "timing/machining_time.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 
 namespace cam {
 namespace {

@@ -23,7 +23,7 @@
 #include "timing/machining_time.h"
 #include "timing/seed_method.h"
 #include "timing/timing_job.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 #include "timing_reference.h"
 
 namespace cam {

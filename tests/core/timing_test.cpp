@@ -28,7 +28,7 @@
 
 #include "test_support.h"
 #include "timing/machining_time.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 #include "timing_reference.h"
 
 namespace cam {

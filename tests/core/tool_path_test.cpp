@@ -12,7 +12,7 @@
 #include "project/validate.h"
 #include "test_support.h"
 #include "timing/machining_time.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 
 namespace cam {
 namespace {

@@ -22,7 +22,7 @@
 #include "spline/teach_in.h"
 #include "timing/machining_time.h"
 #include "timing/timing_job.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 
 namespace cam::fuzz {
 namespace {

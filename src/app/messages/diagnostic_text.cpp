@@ -7,8 +7,7 @@
 
 #include "design/motion_law.h"
 #include "fillet/fillet.h"
-#include "models/design_table_model.h"
-#include "models/segment_table_model.h"
+#include "messages/field_titles.h"
 #include "widgets/quantity_format.h"
 
 namespace cam {
@@ -42,7 +41,7 @@ QString wholeNumber(double value) {
 /// sentence whose numbers carry their units.
 QString columnName(int column) {
     static const QRegularExpression unit(QStringLiteral(R"(\s*\[[^\]]*\]$)"));
-    return SegmentTableModel::columnTitle(column).remove(unit);
+    return segmentColumnTitle(column).remove(unit);
 }
 
 /// The arguments' signature letters and types agree with the code's.
@@ -107,7 +106,7 @@ QString term(const std::string& name) {
     if (name == "the safe height") return DiagnosticText::tr("the safe height");
     if (name == "the step-down") return DiagnosticText::tr("the step-down");
     if (const auto law = lawFromName(name)) {
-        const QStringList names = DesignTableModel::lawNames();
+        const QStringList names = motionLawTitles();
         const auto index = static_cast<qsizetype>(*law);
         if (index < names.size()) return names[index];
     }
@@ -204,30 +203,29 @@ QString pointPart(const SegmentPlace& p) {
 /// The table column(s) or the control point a segment place names.
 QString partName(const SegmentPlace& p) {
     auto pair = [&](int x, int y) {
-        if (p.axis == 0) return SegmentTableModel::columnTitle(x);
-        if (p.axis == 1) return SegmentTableModel::columnTitle(y);
-        return SegmentTableModel::columnTitle(x) + QStringLiteral(" / ") +
-               SegmentTableModel::columnTitle(y);
+        if (p.axis == 0) return segmentColumnTitle(x);
+        if (p.axis == 1) return segmentColumnTitle(y);
+        return segmentColumnTitle(x) + QStringLiteral(" / ") + segmentColumnTitle(y);
     };
     switch (p.part) {
         case SegmentPart::Whole:
             return {};
         case SegmentPart::Type:
-            return SegmentTableModel::columnTitle(SegmentTableModel::Type);
+            return segmentColumnTitle(SegmentColumns::Type);
         case SegmentPart::Center:
-            return pair(SegmentTableModel::CenterX, SegmentTableModel::CenterY);
+            return pair(SegmentColumns::CenterX, SegmentColumns::CenterY);
         case SegmentPart::Radius:
-            return SegmentTableModel::columnTitle(SegmentTableModel::Radius);
+            return segmentColumnTitle(SegmentColumns::Radius);
         case SegmentPart::Branch:
-            return SegmentTableModel::columnTitle(SegmentTableModel::Branch);
+            return segmentColumnTitle(SegmentColumns::Branch);
         case SegmentPart::From:
-            return pair(SegmentTableModel::FromX, SegmentTableModel::FromY);
+            return pair(SegmentColumns::FromX, SegmentColumns::FromY);
         case SegmentPart::To:
-            return pair(SegmentTableModel::ToX, SegmentTableModel::ToY);
+            return pair(SegmentColumns::ToX, SegmentColumns::ToY);
         case SegmentPart::PhiStart:
-            return SegmentTableModel::columnTitle(SegmentTableModel::PhiStart);
+            return segmentColumnTitle(SegmentColumns::PhiStart);
         case SegmentPart::PhiEnd:
-            return SegmentTableModel::columnTitle(SegmentTableModel::PhiEnd);
+            return segmentColumnTitle(SegmentColumns::PhiEnd);
         case SegmentPart::Points:
         case SegmentPart::P0:
         case SegmentPart::T0:
@@ -347,8 +345,8 @@ QString translatedMessage(const Diagnostic& d) {
     auto a = [&](std::size_t i) { return argument(d, i); };
     const QString tangent =
         diagnosticCodeSignature(d.code).starts_with("snnknnk") ? tangentName(d, 0) : QString();
-    const QString phiStart = columnName(SegmentTableModel::PhiStart);
-    const QString phiEnd = columnName(SegmentTableModel::PhiEnd);
+    const QString phiStart = columnName(SegmentColumns::PhiStart);
+    const QString phiEnd = columnName(SegmentColumns::PhiEnd);
     switch (d.code) {
         case Code::Unspecified:
             return {};

@@ -1,8 +1,8 @@
 #include "models/delegates.h"
 
 #include <QComboBox>
-#include <algorithm>
 #include <QPersistentModelIndex>
+#include <algorithm>
 
 #include "models/segment_table_model.h"
 #include "widgets/number_spin_box.h"

@@ -6,6 +6,7 @@
 
 #include "document/commands.h"
 #include "messages/diagnostic_text.h"
+#include "messages/field_titles.h"
 #include "models/delegates.h"
 #include "models/segment_table_model.h"
 #include "widgets/quantity_format.h"
@@ -57,13 +58,7 @@ DesignTableModel::DesignTableModel(ProjectDocument* document, QObject* parent)
     rebuild();
 }
 
-QStringList DesignTableModel::lawNames() {
-    QStringList names;
-    for (const MotionLawKind& law : motionLaws()) {
-        names << QCoreApplication::translate("MotionLaw", law.title);
-    }
-    return names;
-}
+QStringList DesignTableModel::lawNames() { return motionLawTitles(); }
 
 bool DesignTableModel::swinging() const {
     const auto& f = m_document->project().follower;

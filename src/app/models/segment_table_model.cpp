@@ -220,34 +220,7 @@ QVariant SegmentTableModel::headerData(int section, Qt::Orientation orientation,
     return title.isEmpty() ? QVariant() : QVariant(title);
 }
 
-QString SegmentTableModel::columnTitle(int column) {
-    switch (column) {
-        case Type:
-            return tr("Type");
-        case CenterX:
-            return tr("Centre x [mm]");
-        case CenterY:
-            return tr("Centre y [mm]");
-        case Radius:
-            return tr("Radius [mm]");
-        case Branch:
-            return tr("Branch");
-        case FromX:
-            return tr("From x [mm]");
-        case FromY:
-            return tr("From y [mm]");
-        case ToX:
-            return tr("To x [mm]");
-        case ToY:
-            return tr("To y [mm]");
-        case PhiStart:
-            return tr("φ start [°]");
-        case PhiEnd:
-            return tr("φ end [°]");
-        default:
-            return {};
-    }
-}
+QString SegmentTableModel::columnTitle(int column) { return segmentColumnTitle(column); }
 
 Qt::ItemFlags SegmentTableModel::flags(const QModelIndex& index) const {
     if (!index.isValid()) return Qt::NoItemFlags;

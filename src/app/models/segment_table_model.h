@@ -9,26 +9,14 @@
 
 #include "document/commands.h"
 #include "document/project_document.h"
+#include "messages/field_titles.h"
 
 namespace cam {
 
-class SegmentTableModel : public QAbstractTableModel {
+/// The columns are SegmentColumns' (messages/field_titles.h): SegmentTableModel::Radius.
+class SegmentTableModel : public QAbstractTableModel, public SegmentColumns {
     Q_OBJECT
 public:
-    enum Column {
-        Type,
-        CenterX,
-        CenterY,
-        Radius,
-        Branch,
-        FromX,
-        FromY,
-        ToX,
-        ToY,
-        PhiStart,
-        PhiEnd,
-        ColumnCount
-    };
     /// setData with this role takes QVariantList{value, gesture}: edits of one cell that carry
     /// the same non-zero gesture (one spin-box session, one drag) merge into one undo step.
     static constexpr int MergingEditRole = Qt::UserRole + 1;

@@ -5,8 +5,24 @@
 #include <string>
 
 #include "common/angles.h"
+#include "project/validate.h"
 
 namespace cam {
+
+Diagnostics designProblems(const Project& project) {
+    if (!project.design) return {};
+    const DesignSpec& d = *project.design;
+    Diagnostics out;
+    // Not finite or not positive: MotionDesign says so; here only the upper bound.
+    for (const auto& [location, value] : {std::pair{"design.base_radius", d.baseRadius},
+                                          std::pair{"design.tolerance", d.tolerance}}) {
+        if (!std::isfinite(value)) continue;
+        if (auto problem = lengthProblem(location, value)) out.push_back(std::move(*problem));
+    }
+    const Result<MotionDesign> motion = MotionDesign::build(d);
+    for (const Diagnostic& problem : motion.errors()) out.push_back(problem);
+    return out;
+}
 namespace {
 
 std::string segmentPlace(std::size_t k) { return "design.segments[" + std::to_string(k) + "]"; }

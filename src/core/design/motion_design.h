@@ -14,6 +14,11 @@
 
 namespace cam {
 
+/// @brief Every problem of a project's motion design (none without one), each located: what
+/// MotionDesign::build finds, and lengths beyond the file's range. validateProject checks the
+/// rest of the project.
+[[nodiscard]] Diagnostics designProblems(const Project& project);
+
 class MotionDesign {
 public:
     /// @brief Errors, each located "design.FIELD" or "design.segments[k].FIELD": no segments;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "design/motion_design.h"
 #include "project/validate.h"
 
 namespace cam {
@@ -31,9 +32,16 @@ std::optional<double> usableOmega(const MotionSpec& motion) {
     return motion.omegaRadS();
 }
 
+Diagnostics documentProblems(const Project& project) {
+    Diagnostics problems = validateProject(project);
+    Diagnostics design = designProblems(project);
+    problems.insert(problems.end(), design.begin(), design.end());
+    return problems;
+}
+
 ProjectEvaluation evaluateProject(const Project& project) {
     ProjectEvaluation e;
-    e.problems = validateProject(project);
+    e.problems = documentProblems(project);
     if (const auto omega = usableOmega(project.motion)) {
         e.omega = *omega;
         e.period = kTwoPi / std::abs(*omega);
@@ -46,8 +54,7 @@ ProjectEvaluation evaluateProject(const Project& project) {
     // A contour whose only problems are joints that do not meet or its design's is still
     // compiled: the window draws it (r jumps at the open joint) while the designer edits.
     const bool compilable =
-        sound || !hasErrors(validateProject(
-                     project, ValidationOptions{.checkJoints = false, .checkDesign = false}));
+        sound || !hasErrors(validateProject(project, ValidationOptions{.checkJoints = false}));
     if (compilable) {
         auto contour = Contour::buildValidated(project);
         if (contour.ok()) e.contour = std::move(contour).value();

@@ -41,7 +41,7 @@ enum class EvaluationStatus {
 /// @brief The verdict on a project and what follows from the project alone.
 struct ProjectEvaluation {
     EvaluationStatus status = EvaluationStatus::Invalid;
-    /// Every problem that makes the project invalid (validateProject's, then, when those leave
+    /// Every problem that makes the project invalid (documentProblems', then, when those leave
     /// none, why the follower cannot ride the cam), in that order; informational notes of
     /// validateProject too. Empty for Computed and AwaitsContour unless notes.
     Diagnostics problems;
@@ -64,6 +64,10 @@ struct ProjectEvaluation {
 
 /// @brief Validates the project, compiles its contour and places its follower on it.
 [[nodiscard]] ProjectEvaluation evaluateProject(const Project& project);
+
+/// @brief Every problem of the document itself: validateProject's, then its motion design's
+/// (designProblems). What evaluateProject adds is whether the follower rides the contour.
+[[nodiscard]] Diagnostics documentProblems(const Project& project);
 
 /// @brief evaluateProject(project).problems: what a document lists and refuses to export.
 [[nodiscard]] Diagnostics projectProblems(const Project& project);

@@ -8,7 +8,7 @@
 #include "common/angles.h"
 #include "export/export_checks.h"
 #include "export/number_text.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 
 namespace cam {
 namespace {

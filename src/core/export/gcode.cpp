@@ -11,7 +11,7 @@
 #include "export/export_checks.h"
 #include "export/number_text.h"
 #include "geometry/planar.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 
 namespace cam {
 namespace {

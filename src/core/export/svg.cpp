@@ -7,7 +7,7 @@
 #include "export/export_checks.h"
 #include "export/free_text.h"
 #include "export/number_text.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 
 namespace cam {
 namespace {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "common/diagnostic.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 
 namespace cam {
 

@@ -10,8 +10,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "evaluation/evaluation.h"
 #include "io/json_syntax.h"
-#include "project/validate.h"
 
 namespace cam {
 namespace {
@@ -56,7 +56,7 @@ Result<Project> parseProjectStructure(std::string_view text) {
 Result<Project> parseProject(std::string_view text) {
     auto project = parseProjectStructure(text);
     if (!project.ok()) return project;
-    Diagnostics problems = validateProject(project.value());
+    Diagnostics problems = documentProblems(project.value());
     if (hasErrors(problems)) return problems;
     return project;
 }

@@ -14,11 +14,11 @@
 namespace cam {
 
 /// @brief A project file's text → the project, checked for syntax and structure only (see
-/// readProject): an unfinished design with geometric problems reads, and validateProject then
+/// readProject): an unfinished design with geometric problems reads, and evaluateProject then
 /// lists its problems. Syntax errors are located `line L, column C`, the rest by JSON path.
 [[nodiscard]] Result<Project> parseProjectStructure(std::string_view text);
 
-/// @brief parseProjectStructure, then validateProject: only a project the engine can compute
+/// @brief parseProjectStructure, then documentProblems: only a project the engine can compute
 /// comes back; otherwise every problem, located (`contour[3].radius`, `contour[4]/contour[5]`).
 [[nodiscard]] Result<Project> parseProject(std::string_view text);
 

@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "common/angles.h"
-#include "design/motion_design.h"
 #include "geometry/planar.h"
 #include "project/follower_kind.h"
 
@@ -42,7 +41,6 @@ public:
         checkFollower();
         checkSampling();
         checkMachining();
-        if (m_options.checkDesign) checkDesign();
         return std::move(m_out);
     }
 
@@ -57,17 +55,11 @@ private:
 
     /// Finite with |value| <= 1e6 mm; returns false (and reports) otherwise.
     bool checkLength(const Where& where, double value) {
-        if (!std::isfinite(value)) {
-            error(where, "must be a finite number (got " + formatNumber(value) + ")",
-                  DiagnosticCode::NotFinite, {value});
-            return false;
-        }
-        if (std::abs(value) > kMaxLengthMm) {
-            error(where, "magnitude must be at most 1e6 mm (got " + formatNumber(value) + ")",
-                  DiagnosticCode::LengthTooLarge, {value});
-            return false;
-        }
-        return true;
+        std::optional<Diagnostic> problem = lengthProblem(where.location, value);
+        if (!problem) return true;
+        problem->places = where.places;
+        m_out.push_back(std::move(*problem));
+        return false;
     }
 
     bool checkPoint(const Where& where, const Eigen::Vector2d& p) {
@@ -494,18 +486,6 @@ private:
         checkPositiveLength("machining.step", m.step);
     }
 
-    /// The motion it describes (design/motion_design.h finds every problem with its place);
-    /// lengths within the file's range.
-    void checkDesign() {
-        if (!m_project.design) return;
-        const DesignSpec& d = *m_project.design;
-        // Not finite or not positive: MotionDesign says so; here only the upper bound.
-        if (std::isfinite(d.baseRadius)) checkLength("design.base_radius", d.baseRadius);
-        if (std::isfinite(d.tolerance)) checkLength("design.tolerance", d.tolerance);
-        const Result<MotionDesign> motion = MotionDesign::build(d);
-        for (const Diagnostic& problem : motion.errors()) m_out.push_back(problem);
-    }
-
     const Project& m_project;
     ValidationOptions m_options;
     Diagnostics m_out;
@@ -538,6 +518,19 @@ std::optional<Diagnostic> jointIndexProblem(std::size_t segmentCount, std::size_
                                          std::to_string(segmentCount - 1)}
             .coded(DiagnosticCode::NoSuchJoint,
                    {static_cast<double>(joint), static_cast<double>(segmentCount - 1)});
+    }
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> lengthProblem(const std::string& location, double value) {
+    if (!std::isfinite(value)) {
+        return Diagnostic(location, "must be a finite number (got " + formatNumber(value) + ")")
+            .coded(DiagnosticCode::NotFinite, {value});
+    }
+    if (std::abs(value) > kMaxLengthMm) {
+        return Diagnostic(location,
+                          "magnitude must be at most 1e6 mm (got " + formatNumber(value) + ")")
+            .coded(DiagnosticCode::LengthTooLarge, {value});
     }
     return std::nullopt;
 }

@@ -16,13 +16,14 @@ struct ValidationOptions {
     /// Check that neighbouring segments meet (C0). The editor's engine turns this off so that a
     /// contour with an opened joint is still drawn (its r jumps there) while it is being edited.
     bool checkJoints = true;
-    /// Check the motion design. The editor's engine turns this off: the contour's kinematics
-    /// do not depend on a design being edited (the design's own problems go to its dock).
-    bool checkDesign = true;
 };
 
-/// @brief All problems of the document; empty when it is valid.
+/// @brief All problems of the document but its motion design's (design/motion_design.h:
+/// designProblems; evaluation/evaluation.h asks both); empty when it is valid.
 [[nodiscard]] Diagnostics validateProject(const Project& project, ValidationOptions options = {});
+
+/// @brief Why a length (mm) cannot be in a project: not finite, or beyond 1e6 mm.
+[[nodiscard]] std::optional<Diagnostic> lengthProblem(const std::string& location, double value);
 
 /// @brief Polar window of a line from its end points, in degrees; the start is unwrapped to lie
 /// within 180° of `nearDeg` (the previous segment's end, or 0).

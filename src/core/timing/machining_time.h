@@ -9,7 +9,7 @@
 
 #include "common/diagnostic.h"
 #include "project/project.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 
 namespace cam {
 

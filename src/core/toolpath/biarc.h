@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "geometry/bezier.h"
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 
 namespace cam {
 

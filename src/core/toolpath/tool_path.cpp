@@ -1,4 +1,4 @@
-#include "timing/tool_path.h"
+#include "toolpath/tool_path.h"
 #include "geometry/planar.h"
 
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "common/angles.h"
 #include "common/cancel.h"
 #include "project/validate.h"
-#include "spline/biarc.h"
+#include "toolpath/biarc.h"
 
 namespace cam {
 namespace {

@@ -1,4 +1,4 @@
-#include "spline/biarc.h"
+#include "toolpath/biarc.h"
 
 #include <algorithm>
 #include <cmath>
