@@ -1334,32 +1334,57 @@
 <context>
     <name>ExportFormat</name>
     <message>
-        <location filename="../../src/app/export/export_request.cpp" line="+13" />
+        <location filename="../../src/core/export/export_formats.cpp" line="+25" />
+        <source>CSV</source>
+        <translation>CSV</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>CODESYS Structured Text (SMC_CAMXYVA)</source>
+        <translation>CODESYS Strukturierter Text (SMC_CAMXYVA)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>PNG image</source>
+        <translation>PNG-Bild</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>PDF document (vector)</source>
+        <translation>PDF-Dokument (Vektor)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>SVG drawing (vector)</source>
+        <translation>SVG-Zeichnung (Vektor)</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>CSV: the sampled turn</source>
         <translation>CSV: die abgetastete Umdrehung</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+7" />
         <source>DXF drawing (R2000, mm)</source>
         <translation>DXF-Zeichnung (R2000, mm)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+7" />
         <source>SVG drawing, 1:1 in mm</source>
         <translation>SVG-Zeichnung, 1:1 in mm</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+7" />
         <source>G-code for milling the cam</source>
         <translation>G-Code zum Fräsen der Kurvenscheibe</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+7" />
         <source>Servo cam table</source>
         <translation>Kurvenscheibentabelle für Servoantriebe</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+9" />
         <source>Picture of a plot (PNG, PDF, SVG)</source>
         <translation>Bild eines Diagramms (PNG, PDF, SVG)</translation>
     </message>
@@ -1651,7 +1676,7 @@
 <context>
     <name>PlotKind</name>
     <message>
-        <location filename="../../src/app/export/plot_picture.cpp" line="+117" />
+        <location filename="../../src/app/export/plot_picture.cpp" line="+118" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
@@ -2293,12 +2318,12 @@
     <name>cam::ExportDialog</name>
     <message>
         <location filename="../../src/app/export/export_dialog.cpp" line="+52" />
-        <location line="+244" />
+        <location line="+248" />
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location line="-235" />
+        <location line="-239" />
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
@@ -2423,17 +2448,7 @@
         <translation>&amp;Punkte:</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>CSV</source>
-        <translation>CSV</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>CODESYS Structured Text (SMC_CAMXYVA)</source>
-        <translation>CODESYS Strukturierter Text (SMC_CAMXYVA)</translation>
-    </message>
-    <message>
-        <location line="+2" />
+        <location line="+8" />
         <source>&amp;Dialect:</source>
         <translation>&amp;Dialekt:</translation>
     </message>
@@ -2443,22 +2458,7 @@
         <translation>&amp;Diagramm:</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>PNG image</source>
-        <translation>PNG-Bild</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>PDF document (vector)</source>
-        <translation>PDF-Dokument (Vektor)</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>SVG drawing (vector)</source>
-        <translation>SVG-Zeichnung (Vektor)</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+8" />
         <source>&amp;Type:</source>
         <translation>&amp;Art:</translation>
     </message>

@@ -189,7 +189,7 @@ void MainWindow::askExportPlot(PlotKind kind) {
     settings.setValue("export/folder", QFileInfo(path).absolutePath());
     settings.setValue("export/plotSuffix", pictureSuffix(*format));
     ExportRequest request;
-    request.format = ExportFormat::Plot;
+    request.format = ExportFormat::Picture;
     request.plot = kind;
     request.picture = *format;
     request.path = path;
@@ -199,10 +199,10 @@ void MainWindow::askExportPlot(PlotKind kind) {
 }
 
 void MainWindow::exportFile(const ExportRequest& request) {
-    const QString what = request.format == ExportFormat::Plot
+    const QString what = request.format == ExportFormat::Picture
                              ? tr("%1 plot").arg(plotKindTitle(request.plot))
                              : exportFormatTitle(request.format);
-    if (request.format == ExportFormat::Plot) {
+    if (request.format == ExportFormat::Picture) {
         QString problem;
         const QSize size = request.pictureSize.isEmpty() ? defaultPictureSize(request.picture)
                                                          : request.pictureSize;

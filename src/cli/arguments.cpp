@@ -149,6 +149,12 @@ double parseFiniteNumber(const std::string& option, const std::string& text, con
     return value;
 }
 
+double parsePositive(const std::string& option, const std::string& text, const char* unit) {
+    const double v = parseFiniteNumber(option, text, unit);
+    if (!(v > 0)) throw CliError{kInvalidInput, option, "must be > 0 (got \"" + text + "\")"};
+    return v;
+}
+
 long long parseCount(const std::string& option, const std::string& text, long long lo,
                      long long hi) {
     long long value = 0;

@@ -54,6 +54,9 @@ Arguments parseArguments(const std::vector<std::string>& args,
 /// @brief A finite double, the whole text. Throws CliError (exit 2) naming `option`.
 double parseFiniteNumber(const std::string& option, const std::string& text, const char* what);
 
+/// @brief A finite number > 0. Throws CliError (exit 2) naming `option`.
+double parsePositive(const std::string& option, const std::string& text, const char* unit);
+
 /// @brief A whole number in [lo, hi]. Throws CliError (exit 2) naming `option`.
 long long parseCount(const std::string& option, const std::string& text, long long lo,
                      long long hi);

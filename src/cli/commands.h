@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// @brief The camwright-cli commands (cli.md). Each returns an exit code or throws CliError.
+/// @brief The camwright-cli commands (cli.md), one file each in cli/commands/. Each returns an
+/// exit code or throws CliError; the command table (cli/help.cpp) names the function of each.
 
 #include <iosfwd>
 
@@ -9,13 +10,13 @@
 namespace cam::cli {
 
 int runValidate(const Arguments& args, std::ostream& out, std::ostream& err);
-int runState(const Arguments& args, std::ostream& out);
-int runSample(const Arguments& args, std::ostream& out);
-int runAnalyze(const Arguments& args, std::ostream& out);
-int runTiming(const Arguments& args, std::ostream& out);
-int runFillet(const Arguments& args, std::ostream& out);
-int runExport(const Arguments& args, std::ostream& out);
+int runState(const Arguments& args, std::ostream& out, std::ostream& err);
+int runSample(const Arguments& args, std::ostream& out, std::ostream& err);
+int runAnalyze(const Arguments& args, std::ostream& out, std::ostream& err);
+int runTiming(const Arguments& args, std::ostream& out, std::ostream& err);
+int runFillet(const Arguments& args, std::ostream& out, std::ostream& err);
+int runExport(const Arguments& args, std::ostream& out, std::ostream& err);
 /// @brief `synthesize`: the design → an arc table (math.md §8), written to --out; a report.
-int runSynthesize(const Arguments& args, std::ostream& out);
+int runSynthesize(const Arguments& args, std::ostream& out, std::ostream& err);
 
 }  // namespace cam::cli

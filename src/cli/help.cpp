@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "cli/commands.h"
+#include "cli/export_choice.h"
 #include "common/diagnostic.h"
 #include "export/cam_table.h"
 #include "export/dxf.h"
@@ -61,6 +63,19 @@ std::string wrap(const std::string& text, std::size_t indent, std::size_t firstC
 const std::string kExitCodes =
     "exit codes: 0 ok, 1 usage error, 2 invalid input (or results that cannot be\n"
     "            written), 3 not computable.\n";
+
+/// The function that runs the command called `name` (cli/commands.h).
+auto commandRunner(const std::string& name) -> decltype(CommandHelp::run) {
+    static const std::pair<const char*, decltype(CommandHelp::run)> kRunners[] = {
+        {"validate", runValidate},     {"state", runState},   {"sample", runSample},
+        {"analyze", runAnalyze},       {"timing", runTiming}, {"fillet", runFillet},
+        {"synthesize", runSynthesize}, {"export", runExport},
+    };
+    for (const auto& [known, run] : kRunners) {
+        if (name == known) return run;
+    }
+    return nullptr;
+}
 
 std::vector<CommandHelp> makeTable() {
     std::vector<CommandHelp> t;
@@ -181,7 +196,8 @@ std::vector<CommandHelp> makeTable() {
                  {"synthesize design.cam.json --out cam.cam.json --tolerance 0.001"}});
     t.push_back(
         {"export",
-         "export PROJECT --format csv|dxf|svg|png|pdf|gcode|camtable\n--out FILE [options]",
+         "export PROJECT --format " + joinNames(exportFormatNames(), "|") +
+             "\n--out FILE [options]",
          "the profile for CAD, CNC and servo drives, or a plot",
          "Writes the profile for another program. dxf: one exact LINE or ARC entity per "
          "segment on layer CONTOUR (splines as tangent arcs within the tolerance). svg: the "
@@ -192,7 +208,7 @@ std::vector<CommandHelp> makeTable() {
          "the desktop application draws it (drawn by the program camwright beside this "
          "one).\n\n"
          "Each option belongs to the formats named with it; another is refused.",
-         {{"--format", "FORMAT", "csv, dxf, svg, png, pdf, gcode or camtable (required)"},
+         {{"--format", "FORMAT", joinNames(exportFormatNames(), ", ", " or ") + " (required)"},
           {"--out", "FILE", "the file to write (required); replaced whole or not at all"},
           {"--tolerance", "MM",
            "dxf, svg, gcode: how far arcs standing in for splines may deviate (default " +
@@ -204,7 +220,8 @@ std::vector<CommandHelp> makeTable() {
            "rows, " +
                std::to_string(kMinCamTablePoints) + " to " + std::to_string(kMaxCamTablePoints) +
                " (default " + std::to_string(kDefaultCamTablePoints) + ")"},
-          {"--dialect", "csv|codesys", "camtable: plain CSV (default) or a CODESYS cam table"},
+          {"--dialect", joinNames(dialectNames(ExportFormatId::CamTable), "|"),
+           "camtable: plain CSV (default) or a CODESYS cam table"},
           {"--tool-radius", "MM",
            "dxf: add the tool-centre path on layer TOOLPATH; gcode: the cutter radius "
            "(default: the project's machining.tool_radius)"},
@@ -226,6 +243,7 @@ std::vector<CommandHelp> makeTable() {
          {"export cam.cam.json --format dxf --out cam.dxf",
           "export cam.cam.json --format gcode --tool-radius 3 --out cam.ngc",
           "export cam.cam.json --format png --plot velocity --out v.png"}});
+    for (CommandHelp& command : t) command.run = commandRunner(command.name);
     return t;
 }
 
@@ -257,11 +275,12 @@ std::string overviewHelp() {
     for (const CommandHelp& c : commandTable()) {
         out += "  " + c.name + std::string(12 - c.name.size(), ' ') + c.summary + "\n";
     }
-    out += "\nunits: mm, s, degrees; v in mm/s, a in mm/s², j in mm/s³.\n"
-           "--out FILE: written to a temporary file beside it, then renamed over it: FILE\n"
-           "    is the old file or the whole new one; a symlink stays a symlink, mode and\n"
-           "    owner are kept, but a hard link to the old FILE keeps the old content.\n" +
-           kExitCodes;
+    out +=
+        "\nunits: mm, s, degrees; v in mm/s, a in mm/s², j in mm/s³.\n"
+        "--out FILE: written to a temporary file beside it, then renamed over it: FILE\n"
+        "    is the old file or the whole new one; a symlink stays a symlink, mode and\n"
+        "    owner are kept, but a hard link to the old FILE keeps the old content.\n" +
+        kExitCodes;
     return out;
 }
 

@@ -4,6 +4,7 @@
 /// which the parser takes each command's options and `--help` its text, so the two cannot
 /// disagree.
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,9 @@ struct CommandHelp {
     std::vector<std::string> examples;  ///< after "camwright-cli "
     std::size_t positionals = 1;        ///< at most this many positional arguments
     std::size_t minPositionals = 1;     ///< at least this many
+    /// Runs the command (cli/commands.h): results to `out`, problems to `err` or thrown as
+    /// CliError; returns the exit code.
+    int (*run)(const Arguments& args, std::ostream& out, std::ostream& err) = nullptr;
 
     /// @brief What the parser accepts: the options with a value and the flags above.
     [[nodiscard]] CommandSyntax syntax() const;

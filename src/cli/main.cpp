@@ -44,15 +44,8 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
             out << commandHelp(*findCommand(parsed.command));
             return kOk;
         }
-        if (parsed.command == "validate") return runValidate(parsed, out, std::cerr);
-        if (parsed.command == "state") return runState(parsed, out);
-        if (parsed.command == "sample") return runSample(parsed, out);
-        if (parsed.command == "analyze") return runAnalyze(parsed, out);
-        if (parsed.command == "timing") return runTiming(parsed, out);
-        if (parsed.command == "fillet") return runFillet(parsed, out);
-        if (parsed.command == "synthesize") return runSynthesize(parsed, out);
-        if (parsed.command == "export") return runExport(parsed, out);
-        return kUsage;
+        const CommandHelp* command = findCommand(parsed.command);
+        return command && command->run ? command->run(parsed, out, std::cerr) : kUsage;
     } catch (const CliError& e) {
         out.flush();
         std::cerr << "camwright-cli: " << e.location << ": " << e.message << "\n";

@@ -218,7 +218,7 @@ TEST(ExportInWindow, APlotPictureFromTheWindow) {
     ASSERT_TRUE(showExample(window));
     test::TempDir dir;
     ExportRequest request;
-    request.format = ExportFormat::Plot;
+    request.format = ExportFormat::Picture;
     request.plot = PlotKind::Acceleration;
     request.picture = PictureFormat::Pdf;
     request.pictureSize = QSize(700, 400);
@@ -227,8 +227,9 @@ TEST(ExportInWindow, APlotPictureFromTheWindow) {
     const auto check =
         test::run("/usr/bin/python3",
                   {std::string(CAMWRIGHT_SOURCE_DIR) + "/tests/reference/check_picture.py", "pdf",
-                   request.path.toStdString(), "--title", "Six-lobe arc cam (seed document, Table 1) — Acceleration",
-                   "--size", "700x400", "--text", "Acceleration [mm/s²]", "--text", "φ [°]"});
+                   request.path.toStdString(), "--title",
+                   "Six-lobe arc cam (seed document, Table 1) — Acceleration", "--size", "700x400",
+                   "--text", "Acceleration [mm/s²]", "--text", "φ [°]"});
     EXPECT_EQ(check.exitCode, 0) << check.out << check.err;
 }
 
@@ -271,7 +272,8 @@ TEST(ExportInWindow, RightClickOnAPlotExportsIt) {
     const auto check =
         test::run("/usr/bin/python3",
                   {std::string(CAMWRIGHT_SOURCE_DIR) + "/tests/reference/check_picture.py", "svg",
-                   path.toStdString(), "--title", "Six-lobe arc cam (seed document, Table 1) — Jerk", "--size",
+                   path.toStdString(), "--title",
+                   "Six-lobe arc cam (seed document, Table 1) — Jerk", "--size",
                    std::to_string(std::max(plot->width(), 640)) + "x" +
                        std::to_string(std::max(plot->height(), 400)),
                    "--text", "Jerk [mm/s³]"});
@@ -279,6 +281,40 @@ TEST(ExportInWindow, RightClickOnAPlotExportsIt) {
     // The folder is remembered for the next export.
     EXPECT_EQ(QSettings().value("export/folder").toString(),
               QString::fromStdString(dir.path().string()));
+}
+
+// The dialog lists the formats and dialects of the core's table (export/export_formats.h), in
+// its order, by their titles: a new row is a new choice without a change here.
+TEST(ExportDialogTest, ListsEveryFormatAndDialectOfTheTable) {
+    Project project;
+    ExportDialog dialog(project, "x.cam.json", "x", {PlotKind::Contour});
+    const auto titles = [&](const char* box) {
+        QStringList out;
+        auto* combo = dialog.findChild<QComboBox*>(box);
+        for (int k = 0; combo && k < combo->count(); ++k) out << combo->itemText(k);
+        return out;
+    };
+    QStringList formats, tables, pictures;
+    for (const ExportFormatKind& kind : exportFormats()) formats << QString::fromUtf8(kind.title);
+    for (const ExportDialectKind& d : exportFormat(ExportFormat::CamTable).dialects) {
+        tables << QString::fromUtf8(d.title);
+    }
+    for (const ExportDialectKind& d : exportFormat(ExportFormat::Picture).dialects) {
+        pictures << QString::fromUtf8(d.title);
+    }
+    EXPECT_EQ(titles("exportFormat"), formats);
+    EXPECT_EQ(titles("tableDialect"), tables);
+    EXPECT_EQ(titles("pictureFormat"), pictures);
+    EXPECT_EQ(formats.size(), 6);
+    EXPECT_EQ(tables.size(), 2);
+    EXPECT_EQ(pictures.size(), 3);
+    // Each picture dialect is the PictureFormat of its place in the table.
+    for (int k = 0; k < pictures.size(); ++k) {
+        const auto named = pictureFormatNamed(
+            QString::fromUtf8(exportFormat(ExportFormat::Picture).dialects[k].name.data()));
+        ASSERT_TRUE(named);
+        EXPECT_EQ(static_cast<int>(*named), k);
+    }
 }
 
 TEST(ExportDialogTest, StartsFromTheProjectAndTheLastExport) {
@@ -306,7 +342,7 @@ TEST(ExportDialogTest, StartsFromTheProjectAndTheLastExport) {
     EXPECT_TRUE(dialog.request().path.endsWith("six-lobe-machining.csv"));
     dialog.findChild<QComboBox*>("tableDialect")->setCurrentIndex(1);
     EXPECT_TRUE(dialog.request().path.endsWith("six-lobe-machining.st"));
-    dialog.setFormat(ExportFormat::Plot);
+    dialog.setFormat(ExportFormat::Picture);
     EXPECT_TRUE(dialog.request().path.endsWith("six-lobe-machining-contour.png"));
     dialog.findChild<QComboBox*>("plotKind")->setCurrentIndex(1);
     dialog.findChild<QComboBox*>("pictureFormat")->setCurrentIndex(1);

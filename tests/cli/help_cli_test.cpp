@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "export/export_formats.h"
 #include "test_support.h"
 
 namespace cam {
@@ -149,6 +150,51 @@ TEST(CliHelp, TheManPageNamesEveryCommandAndOption) {
         }
     }
     EXPECT_NE(man.find("camwright-cli COMMAND --help"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+// Every export format and dialect is one row of the core's table (export/export_formats.h):
+// the command accepts, refuses and documents exactly what the table says.
+TEST(CliHelp, ExportTakesAndDocumentsEveryFormatAndDialectOfTheTable) {
+    const test::RunResult help = test::runCli({"export", "--help"});
+    ASSERT_EQ(help.exitCode, 0) << help.err;
+    const test::RunResult unknown = test::runCli(
+        {"export", test::kExample, "--format", "no-such-format", "--out", "/nonexistent/x"});
+    EXPECT_EQ(unknown.exitCode, 1);
+    std::vector<std::string> names;
+    for (const ExportFormatKind& format : exportFormats()) {
+        if (!format.name.empty()) names.emplace_back(format.name);
+        for (const ExportDialectKind& dialect : format.dialects) {
+            if (format.id == ExportFormatId::Picture) names.emplace_back(dialect.name);
+            // Every dialect is named on the help page.
+            EXPECT_TRUE(test::contains(help.out, std::string(dialect.name))) << dialect.name;
+        }
+        // Every option a format takes is explained on the help page.
+        for (std::string_view option : format.options) {
+            EXPECT_TRUE(test::contains(help.out, std::string(option))) << option;
+        }
+        for (std::string_view flag : format.flags) {
+            EXPECT_TRUE(test::contains(help.out, std::string(flag))) << flag;
+        }
+    }
+    for (const std::string& name : names) {
+        SCOPED_TRACE(name);
+        EXPECT_TRUE(test::contains(help.out, name));
+        // The refusal of an unknown format lists it as a choice.
+        EXPECT_TRUE(test::contains(unknown.err, name)) << unknown.err;
+    }
+    // An option of one format is refused for another: each row's list is what the command
+    // checks.
+    const test::RunResult wrong = test::runCli({"export", test::kExample, "--format", "svg",
+                                                "--dialect", "csv", "--out", "/nonexistent/x"});
+    EXPECT_EQ(wrong.exitCode, 1);
+    EXPECT_TRUE(test::contains(wrong.err, "--dialect: is not an option of --format svg"))
+        << wrong.err;
 }
 
 }  // namespace

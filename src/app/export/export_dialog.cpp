@@ -55,8 +55,8 @@ ExportDialog::ExportDialog(const Project& project, const QString& fileName, cons
     auto* top = new QFormLayout;
     m_format = new QComboBox(this);
     m_format->setObjectName("exportFormat");
-    for (ExportFormat f : kExportFormats) {
-        m_format->addItem(exportFormatTitle(f), static_cast<int>(f));
+    for (const ExportFormatKind& kind : exportFormats()) {
+        m_format->addItem(exportFormatTitle(kind.id), static_cast<int>(kind.id));
     }
     top->addRow(tr("&Format:"), m_format);
     layout->addLayout(top);
@@ -149,9 +149,11 @@ ExportDialog::ExportDialog(const Project& project, const QString& fileName, cons
     form->addRow(tr("&Points:"), m_tablePoints);
     m_tableDialect = new QComboBox(this);
     m_tableDialect->setObjectName("tableDialect");
-    m_tableDialect->addItem(tr("CSV"), static_cast<int>(CamTableDialect::Csv));
-    m_tableDialect->addItem(tr("CODESYS Structured Text (SMC_CAMXYVA)"),
-                            static_cast<int>(CamTableDialect::Codesys));
+    // The table lists a cam table's dialects in CamTableDialect's order.
+    int dialect = 0;
+    for (const ExportDialectKind& kind : exportFormat(ExportFormat::CamTable).dialects) {
+        m_tableDialect->addItem(exportDialectTitle(kind), dialect++);
+    }
     form->addRow(tr("&Dialect:"), m_tableDialect);
     connect(m_tableDialect, &QComboBox::currentIndexChanged, this, &ExportDialog::matchSuffix);
 
@@ -163,9 +165,11 @@ ExportDialog::ExportDialog(const Project& project, const QString& fileName, cons
     form->addRow(tr("&Plot:"), m_plot);
     m_picture = new QComboBox(this);
     m_picture->setObjectName("pictureFormat");
-    m_picture->addItem(tr("PNG image"), static_cast<int>(PictureFormat::Png));
-    m_picture->addItem(tr("PDF document (vector)"), static_cast<int>(PictureFormat::Pdf));
-    m_picture->addItem(tr("SVG drawing (vector)"), static_cast<int>(PictureFormat::Svg));
+    // … and a picture's in PictureFormat's.
+    int type = 0;
+    for (const ExportDialectKind& kind : exportFormat(ExportFormat::Picture).dialects) {
+        m_picture->addItem(exportDialectTitle(kind), type++);
+    }
     form->addRow(tr("&Type:"), m_picture);
     m_width = new QSpinBox(this);
     m_width->setObjectName("pictureWidth");
@@ -284,7 +288,7 @@ void ExportDialog::matchSuffix() {
         const QString tail = "-" + plotKindName(kind);
         if (base.endsWith(tail)) base.chop(tail.size());
     }
-    if (format() == ExportFormat::Plot && m_plot->count() > 0) {
+    if (format() == ExportFormat::Picture && m_plot->count() > 0) {
         base += "-" + plotKindName(static_cast<PlotKind>(m_plot->currentData().toInt()));
     }
     m_file->setText(info.dir().filePath(base + "." + suffix));
@@ -336,7 +340,7 @@ void ExportDialog::accept() {
             tr("The folder %1 does not exist.").arg(QDir::toNativeSeparators(info.absolutePath()));
     } else if (info.isDir()) {
         problem = tr("%1 is a folder; name a file in it.").arg(QDir::toNativeSeparators(path));
-    } else if (format() == ExportFormat::Plot && m_plot->count() == 0) {
+    } else if (format() == ExportFormat::Picture && m_plot->count() == 0) {
         problem = tr("No plot can be drawn yet.");
     }
     if (!problem.isEmpty()) {

@@ -8,39 +8,26 @@
 namespace cam {
 
 QString exportFormatTitle(ExportFormat format) {
-    switch (format) {
-        case ExportFormat::Csv:
-            return QCoreApplication::translate("ExportFormat", "CSV: the sampled turn");
-        case ExportFormat::Dxf:
-            return QCoreApplication::translate("ExportFormat", "DXF drawing (R2000, mm)");
-        case ExportFormat::Svg:
-            return QCoreApplication::translate("ExportFormat", "SVG drawing, 1:1 in mm");
-        case ExportFormat::Gcode:
-            return QCoreApplication::translate("ExportFormat", "G-code for milling the cam");
-        case ExportFormat::CamTable:
-            return QCoreApplication::translate("ExportFormat", "Servo cam table");
-        case ExportFormat::Plot:
-            return QCoreApplication::translate("ExportFormat", "Picture of a plot (PNG, PDF, SVG)");
-    }
-    return {};
+    return QCoreApplication::translate("ExportFormat", exportFormat(format).title);
+}
+
+QString exportDialectTitle(const ExportDialectKind& dialect) {
+    return QCoreApplication::translate("ExportFormat", dialect.title);
 }
 
 QString exportSuffix(const ExportRequest& request) {
-    switch (request.format) {
-        case ExportFormat::Csv:
-            return "csv";
-        case ExportFormat::Dxf:
-            return "dxf";
-        case ExportFormat::Svg:
-            return "svg";
-        case ExportFormat::Gcode:
-            return "ngc";
-        case ExportFormat::CamTable:
-            return request.camTable.dialect == CamTableDialect::Codesys ? "st" : "csv";
-        case ExportFormat::Plot:
-            return pictureSuffix(request.picture);
+    // A dialect's suffix wins; the table lists them in CamTableDialect's and PictureFormat's
+    // order.
+    const ExportFormatKind& kind = exportFormat(request.format);
+    std::size_t dialect = 0;
+    if (request.format == ExportFormat::CamTable) {
+        dialect = static_cast<std::size_t>(request.camTable.dialect);
+    } else if (request.format == ExportFormat::Picture) {
+        dialect = static_cast<std::size_t>(request.picture);
     }
-    return {};
+    const std::string_view suffix =
+        dialect < kind.dialects.size() ? kind.dialects[dialect].suffix : kind.suffix;
+    return QString::fromUtf8(suffix.data(), static_cast<qsizetype>(suffix.size()));
 }
 
 Result<std::string> exportText(const Project& project, const ExportRequest& request) {
@@ -68,7 +55,7 @@ Result<std::string> exportText(const Project& project, const ExportRequest& requ
             options.follower = project.follower.value_or(FollowerSpec{});
             return camTableText(contour.value(), options);
         }
-        case ExportFormat::Plot:
+        case ExportFormat::Picture:
             break;
     }
     return Diagnostics{{"format", "a plot is drawn by the app, not written as text"}};

@@ -11,6 +11,7 @@
 #include "common/diagnostic.h"
 #include "export/cam_table.h"
 #include "export/dxf.h"
+#include "export/export_formats.h"
 #include "export/gcode.h"
 #include "export/plot_picture.h"
 #include "export/svg.h"
@@ -18,17 +19,8 @@
 
 namespace cam {
 
-enum class ExportFormat {
-    Csv,       ///< the sampled turn (exports.md `csv`)
-    Dxf,       ///< the DXF drawing
-    Svg,       ///< the 1:1 SVG drawing
-    Gcode,     ///< the milling program
-    CamTable,  ///< the servo cam table (CSV or CODESYS Structured Text)
-    Plot,      ///< a picture of one of the app's plots (PNG, PDF, SVG)
-};
-inline constexpr ExportFormat kExportFormats[] = {ExportFormat::Csv,      ExportFormat::Dxf,
-                                                  ExportFormat::Svg,      ExportFormat::Gcode,
-                                                  ExportFormat::CamTable, ExportFormat::Plot};
+/// The formats and their dialects are the core's table (export/export_formats.h).
+using ExportFormat = ExportFormatId;
 
 struct ExportRequest {
     ExportFormat format = ExportFormat::Dxf;
@@ -45,6 +37,8 @@ struct ExportRequest {
 
 /// @brief "DXF drawing (R2000)", … (translated).
 [[nodiscard]] QString exportFormatTitle(ExportFormat format);
+/// @brief "CODESYS Structured Text (SMC_CAMXYVA)", … (translated).
+[[nodiscard]] QString exportDialectTitle(const ExportDialectKind& dialect);
 /// @brief The file suffix a request's file gets by default: csv, dxf, svg, ngc, csv or st,
 /// png/pdf/svg.
 [[nodiscard]] QString exportSuffix(const ExportRequest& request);

@@ -9,6 +9,7 @@
 #include <QStringList>
 #include <QSvgGenerator>
 
+#include "export/export_formats.h"
 #include "export/free_text.h"
 
 namespace cam {
@@ -132,10 +133,11 @@ QString plotKindTitle(PlotKind kind) {
 }
 
 std::optional<PictureFormat> pictureFormatNamed(const QString& name) {
-    const QString n = name.toLower();
-    if (n == "png") return PictureFormat::Png;
-    if (n == "pdf") return PictureFormat::Pdf;
-    if (n == "svg") return PictureFormat::Svg;
+    // The core's table lists a picture's dialects in PictureFormat's order.
+    const auto dialects = exportFormat(ExportFormatId::Picture).dialects;
+    for (std::size_t k = 0; k < dialects.size(); ++k) {
+        if (name.toLower().toStdString() == dialects[k].name) return static_cast<PictureFormat>(k);
+    }
     return std::nullopt;
 }
 
@@ -144,15 +146,9 @@ std::optional<PictureFormat> pictureFormatOfFile(const QString& fileName) {
 }
 
 QString pictureSuffix(PictureFormat format) {
-    switch (format) {
-        case PictureFormat::Png:
-            return "png";
-        case PictureFormat::Pdf:
-            return "pdf";
-        case PictureFormat::Svg:
-            return "svg";
-    }
-    return {};
+    const std::string_view suffix =
+        exportFormat(ExportFormatId::Picture).dialects[static_cast<std::size_t>(format)].suffix;
+    return QString::fromUtf8(suffix.data(), static_cast<qsizetype>(suffix.size()));
 }
 
 QSize defaultPictureSize(PictureFormat format) {

@@ -1,0 +1,132 @@
+#include "cli/command_support.h"
+
+#include "cli/arguments.h"
+#include "evaluation/evaluation.h"
+#include "export/sample_csv.h"
+#include "follower/follower_turn.h"
+#include "io/atomic_file.h"
+#include "io/project_json.h"
+
+namespace cam::cli {
+
+std::string placeOf(const std::string& path, const Diagnostic& d) {
+    return d.location == path ? path : path + ": " + d.location;
+}
+
+Loaded load(const std::string& path) {
+    auto project = loadProjectStructure(path);
+    Diagnostics problems = project.ok() ? Diagnostics{} : project.errors();
+    std::optional<ProjectEvaluation> evaluation;
+    if (project.ok()) {
+        evaluation = evaluateProject(project.value());
+        switch (evaluation->status) {
+            case EvaluationStatus::Computed:
+                break;
+            case EvaluationStatus::AwaitsContour:
+                problems = {contourNeverSynthesised()};
+                break;
+            case EvaluationStatus::Invalid:
+            case EvaluationStatus::Failed:
+                for (const Diagnostic& d : evaluation->problems) {
+                    if (d.severity == Severity::Error) problems.push_back(d);
+                }
+                break;
+        }
+    }
+    if (!problems.empty()) {
+        const Diagnostic& d = problems.front();
+        std::string message = d.message;
+        if (problems.size() > 1) {
+            message += " (and " + std::to_string(problems.size() - 1) +
+                       " more problems; run 'camwright-cli validate' for all)";
+        }
+        throw CliError{kInvalidInput, placeOf(path, d), message};
+    }
+    return {std::move(project).value(), std::move(*evaluation->contour), evaluation->omega,
+            *evaluation->follower};
+}
+
+void requireFinite(const Json& value, const std::string& where) {
+    if (value.is_number_float() && !std::isfinite(value.get<double>())) {
+        throw CliError{kNotComputable, where,
+                       "is not a finite number (" + formatNumber(value.get<double>()) +
+                           "): the result is beyond what a double can hold"};
+    }
+    if (value.is_object()) {
+        for (const auto& [key, item] : value.items()) {
+            requireFinite(item, where.empty() ? key : where + "/" + key);
+        }
+    } else if (value.is_array()) {
+        for (std::size_t i = 0; i < value.size(); ++i) {
+            requireFinite(value[i], where + "[" + std::to_string(i) + "]");
+        }
+    }
+}
+
+void printJson(std::ostream& out, const Json& result) {
+    requireFinite(result, "");
+    out << result.dump(2) << "\n";
+}
+
+void requireFiniteColumns(const SampledTurn& turn) {
+    if (const auto problem = firstNonFiniteSample(turn)) {
+        throw CliError{kNotComputable, problem->location, problem->message};
+    }
+}
+
+void writeSampleCsv(const Loaded& loaded, long long n, std::ostream& out,
+                    const std::optional<std::string>& outPath, const FollowerModel* follower) {
+    std::optional<AtomicFileWriter> file;
+    if (outPath) {
+        file.emplace(*outPath);
+        if (!file->ok()) {
+            throw CliError{kInvalidInput, *outPath, file->errors().front().message};
+        }
+    }
+    SampledTurn turn;
+    sampleTurn(loaded.contour, loaded.omega, static_cast<std::size_t>(n), turn);
+    requireFiniteColumns(turn);
+
+    FollowerTurn followerTurn;
+    std::string chunk(kSampleCsvHeader);
+    if (follower) {
+        sampleFollowerTurn(*follower, loaded.omega, static_cast<std::size_t>(n), followerTurn);
+        chunk.pop_back();
+        chunk += ',';
+        chunk += followerCsvColumns(*follower);
+        chunk += '\n';
+    }
+    auto flush = [&] {
+        if (file) {
+            file->write(chunk);
+        } else {
+            out << chunk;
+        }
+        chunk.clear();
+    };
+    for (std::size_t k = 0; k < turn.size(); ++k) {
+        appendSampleCsvRow(chunk, turn, k);
+        if (follower) {
+            chunk.pop_back();
+            appendFollowerCsvColumns(chunk, *follower, followerTurn, k);
+            chunk += '\n';
+        }
+        if (chunk.size() > (1u << 20)) flush();
+        // A failed stdout (full disk, closed) is reported by main; a failed --out file below.
+        if (!out || (file && !file->ok())) break;
+    }
+    flush();
+    if (file) {
+        const Diagnostics problems = file->commit();
+        if (!problems.empty()) throw CliError{kInvalidInput, *outPath, problems.front().message};
+    }
+}
+
+void writeExport(const std::string& path, const std::string& text) {
+    AtomicFileWriter file(path);
+    file.write(text);
+    Diagnostics problems = file.commit();
+    if (!problems.empty()) throw CliError{kInvalidInput, path, problems.front().message};
+}
+
+}  // namespace cam::cli

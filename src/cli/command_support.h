@@ -1,0 +1,58 @@
+#pragma once
+/// @file
+/// @brief What the camwright-cli commands share: the project loaded and evaluated (the one
+/// verdict of evaluation/evaluation.h, which the window has too), JSON results checked for
+/// finite numbers, and files written whole or not at all.
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include "common/diagnostic.h"
+#include "contour/contour.h"
+#include "follower/follower.h"
+#include "kinematics/kinematics.h"
+#include "project/project.h"
+
+namespace cam::cli {
+
+using Json = nlohmann::ordered_json;
+
+struct Loaded {
+    Project project;
+    Contour contour;
+    double omega;
+    /// The project's follower placed on the contour (a radial knife when it names none).
+    FollowerModel follower;
+};
+
+/// @brief "PATH: LOCATION" as the CLI names a project's problem (a problem of the file as a
+/// whole is located at the path itself).
+[[nodiscard]] std::string placeOf(const std::string& path, const Diagnostic& d);
+
+/// @brief Loads PROJECT and evaluates it, or throws its first problem (exit 2); the rest go to
+/// stderr via `validate`, which is the command for seeing them all.
+[[nodiscard]] Loaded load(const std::string& path);
+
+/// @brief No command prints a non-finite number with exit 0: a result that is not a finite
+/// number is "not computable" (exit 3), named by its place in the output
+/// ("extremes/j/max/value").
+void requireFinite(const Json& value, const std::string& where);
+
+/// @brief Prints a JSON result after checking every number in it.
+void printJson(std::ostream& out, const Json& result);
+
+/// @brief Every sampled value is finite, checked before the first row is written.
+void requireFiniteColumns(const SampledTurn& turn);
+
+/// @brief One turn at n instants as CSV (the `sample` columns, then the follower's when one is
+/// given), to `outPath` (atomically) or `out`.
+void writeSampleCsv(const Loaded& loaded, long long n, std::ostream& out,
+                    const std::optional<std::string>& outPath,
+                    const FollowerModel* follower = nullptr);
+
+/// @brief Writes `text` to `path` atomically (io/atomic_file.h); a failure throws (exit 2).
+void writeExport(const std::string& path, const std::string& text);
+
+}  // namespace cam::cli

@@ -1,0 +1,83 @@
+#include "cli/commands.h"
+
+#include <ostream>
+
+#include "cli/command_support.h"
+#include "design/synthesis.h"
+#include "evaluation/evaluation.h"
+#include "io/atomic_file.h"
+#include "io/project_json.h"
+
+namespace cam::cli {
+
+int runSynthesize(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
+    const std::string& path = args.positional.front();
+    const auto outPath = args.option("--out");
+    if (!outPath) throw CliError{kUsage, "--out", "is required (the file for the new project)"};
+    if (const auto output = args.option("--output"); output && *output != "arcs") {
+        throw CliError{kInvalidInput, "--output",
+                       *output == "bezier"
+                           ? std::string("\"bezier\" is not available yet: this version "
+                                         "synthesises arc tables only (--output arcs)")
+                           : "must be \"arcs\" (got \"" + *output + "\")"};
+    }
+    std::optional<double> tolerance;
+    if (const auto text = args.option("--tolerance")) {
+        tolerance = parsePositive("--tolerance", *text, "mm");
+    }
+    // A design whose contour was never synthesised is valid with an empty contour
+    // (project-format.md), but not a contour to compute: the project is checked here, not by
+    // load().
+    auto loaded = loadProjectStructure(path);
+    if (!loaded.ok()) {
+        const Diagnostic& d = loaded.errors().front();
+        throw CliError{kInvalidInput, d.location == path ? path : path + ": " + d.location,
+                       d.message};
+    }
+    Project project = std::move(loaded).value();
+    if (!project.design) {
+        throw CliError{kInvalidInput, path + ": design",
+                       "the project has no design to synthesise a contour from"};
+    }
+    // The document's problems, but not the verdict's last check (evaluation.h): whether the
+    // follower rides the contour Synthesize is about to replace does not matter.
+    for (const Diagnostic& d : documentProblems(project)) {
+        if (d.severity != Severity::Error) continue;
+        throw CliError{kInvalidInput, placeOf(path, d), d.message};
+    }
+    const auto made = synthesize(project, tolerance);
+    if (!made.ok()) {
+        const Diagnostic& d = made.errors().front();
+        if (d.code == DiagnosticCode::ToleranceBelowPrecision) {
+            // A value no arc table can be certified to is bad input (exit 2), named where it
+            // came from: the option, or the project's design.
+            throw CliError{kInvalidInput, tolerance ? "--tolerance" : path + ": " + d.location,
+                           d.message};
+        }
+        throw CliError{kNotComputable, path + ": " + d.location, d.message};
+    }
+    const SynthesisReport& r = made.value().report;
+    project.contour = made.value().contour;
+    if (tolerance) project.design->tolerance = *tolerance;
+    const bool swinging =
+        project.follower && project.follower->motion == FollowerMotion::Oscillating;
+    Json notes = Json::array();
+    for (const Diagnostic& d : r.notes) notes.push_back(d.text());
+    const Json report{{"segments", r.segments},
+                      {"max_deviation_mm", r.maxDeviationMm},
+                      {swinging ? "max_lift_error_deg" : "max_lift_error_mm", r.maxLiftError},
+                      {"max_velocity_error", r.maxVelocityError},
+                      {"max_acceleration_error", r.maxAccelerationError},
+                      {"velocity_unit", swinging ? "deg/s" : "mm/s"},
+                      {"acceleration_unit", swinging ? "deg/s^2" : "mm/s^2"},
+                      {"tolerance_mm", tolerance.value_or(project.design->tolerance)},
+                      {"notes", notes},
+                      {"out", *outPath}};
+    requireFinite(report, "");
+    const Diagnostics written = writeFileAtomically(*outPath, serializeProject(project));
+    if (!written.empty()) throw CliError{kInvalidInput, *outPath, written.front().message};
+    printJson(out, report);
+    return kOk;
+}
+
+}  // namespace cam::cli

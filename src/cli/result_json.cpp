@@ -1,0 +1,113 @@
+#include "cli/result_json.h"
+
+#include <cmath>
+
+#include "common/angles.h"
+#include "follower/follower_analysis.h"
+#include "project/follower_kind.h"
+
+namespace cam::cli {
+namespace {
+
+/// A radius of curvature: null where the curve is straight (an infinite radius).
+Json radiusJson(double rho) { return std::isfinite(rho) ? Json(rho) : Json(nullptr); }
+
+const char* motionName(const FollowerModel& model) {
+    return model.oscillating() ? "oscillating" : "translating";
+}
+
+}  // namespace
+
+Json stateJson(const KinematicState& s) {
+    const PolarMotion& m = s.motion;
+    return Json{{"t", s.t},
+                {"phi_deg", radToDeg(s.phi)},
+                {"segment", s.segment},
+                {"r", s.polar.r},
+                {"v_r", m.vR},
+                {"v_phi", m.vPhi},
+                {"v", m.v},
+                {"a_r", m.aR},
+                {"a_phi", m.aPhi},
+                {"a", m.a},
+                {"j_r", m.jR},
+                {"j_phi", m.jPhi},
+                {"j", m.j}};
+}
+
+Json followerJson(const FollowerModel& model, const FollowerState& f) {
+    Json json{{"type", followerKind(model.spec().type).name}, {"motion", motionName(model)}};
+    if (model.oscillating()) {
+        json.update(Json{{"psi_deg", radToDeg(f.s)},
+                         {"lift", model.lift(f)},
+                         {"omega_arm", f.v},
+                         {"alpha_arm", f.a},
+                         {"jerk_arm", f.j}});
+    } else {
+        json.update(Json{{"s", f.s}, {"lift", model.lift(f)}, {"v", f.v}, {"a", f.a}, {"j", f.j}});
+    }
+    json.update(Json{{"center", {f.center.x(), f.center.y()}},
+                     {"contact", {f.contact.x(), f.contact.y()}},
+                     {"pressure_angle_deg", radToDeg(f.pressureAngle)},
+                     {"rho_profile", radiusJson(f.rhoProfile)},
+                     {"rho_pitch", radiusJson(f.rhoPitch)}});
+    return json;
+}
+
+/// cli.md's `follower` object of `analyze`: the design checks of math.md §7.
+Json followerAnalysisJson(const Loaded& loaded) {
+    const FollowerModel& model = loaded.follower;
+    const FollowerAnalysis a = analyzeFollower(model, loaded.omega, loaded.contour.phiBegin());
+    const auto one = [](const FollowerExtremum& e) {
+        return Json{{"value", radiusJson(e.value)}, {"phi_deg", radToDeg(e.phi)}};
+    };
+    const auto angle = [](const FollowerExtremum& e) {
+        return Json{{"value_deg", radToDeg(e.value)}, {"phi_deg", radToDeg(e.phi)}};
+    };
+    Json exceeded = Json::array();
+    for (const AngleRange& r : a.pressureExceeded) {
+        exceeded.push_back({{"from_deg", radToDeg(r.from)}, {"to_deg", radToDeg(r.to)}});
+    }
+    Json undercut = Json::array();
+    for (const NonContact& c : a.undercut) {
+        undercut.push_back({{"phi_deg", radToDeg(c.phi)},
+                            {"from", {c.from.x(), c.from.y()}},
+                            {"to", {c.to.x(), c.to.y()}},
+                            {"profile_from_deg", radToDeg(std::atan2(c.from.y(), c.from.x()))},
+                            {"profile_to_deg", radToDeg(std::atan2(c.to.y(), c.to.x()))}});
+    }
+    const bool arm = model.oscillating();
+    const auto range = [&](const FollowerExtremum& lo, const FollowerExtremum& hi) {
+        return Json{{"min", one(lo)}, {"max", one(hi)}};
+    };
+    const auto degrees = [](FollowerExtremum e) {
+        e.value = radToDeg(e.value);
+        return e;
+    };
+    Json f{{"type", followerKind(model.spec().type).name}, {"motion", motionName(model)}};
+    if (arm) {
+        f["psi_deg"] = range(degrees(a.sMin), degrees(a.sMax));
+        f["lift"] = radToDeg(a.sMax.value - a.sMin.value);
+        f["omega_arm"] = range(a.vMin, a.vMax);
+        f["alpha_arm"] = range(a.aMin, a.aMax);
+        f["jerk_arm"] = range(a.jMin, a.jMax);
+    } else {
+        f["s"] = range(a.sMin, a.sMax);
+        f["lift"] = a.sMax.value - a.sMin.value;
+        f["v"] = range(a.vMin, a.vMax);
+        f["a"] = range(a.aMin, a.aMax);
+        f["j"] = range(a.jMin, a.jMax);
+    }
+    f.update(Json{{"pressure_angle",
+                   {{"rise", angle(a.pressureRise)},
+                    {"return", angle(a.pressureReturn)},
+                    {"limit_deg", radToDeg(a.limitRad)},
+                    {"exceeded", std::move(exceeded)}}},
+                  {"rho_profile_min", one(a.rhoProfileMin)},
+                  {"rho_pitch_min", one(a.rhoPitchMin)},
+                  {"undercut", std::move(undercut)}});
+    if (model.spec().type == FollowerType::Flat) f["face_width"] = a.faceWidth;
+    return f;
+}
+
+}  // namespace cam::cli

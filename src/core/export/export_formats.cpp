@@ -1,0 +1,107 @@
+#include "export/export_formats.h"
+
+#include <array>
+
+#include "common/translate_marker.h"
+#include "export/cam_table.h"
+
+namespace cam {
+namespace {
+
+using Names = std::string_view;
+
+constexpr Names kCsvOptions[] = {"--points"};
+constexpr Names kDxfOptions[] = {"--tolerance", "--tool-radius"};
+constexpr Names kDxfFlags[] = {"--polyline", "--spline-entities", "--centres"};
+constexpr Names kSvgOptions[] = {"--tolerance"};
+constexpr Names kGcodeOptions[] = {"--tolerance", "--tool-radius", "--depth", "--step-down"};
+constexpr Names kGcodeFlags[] = {"--compensation"};
+constexpr Names kCamTableOptions[] = {"--points", "--dialect"};
+constexpr Names kPictureOptions[] = {"--plot", "--size"};
+
+/// The first dialect is the default; a cam table's are in CamTableDialect's order, a
+/// picture's in the app's PictureFormat order (Png, Pdf, Svg).
+constexpr ExportDialectKind kCamTableDialects[] = {
+    {"csv", CAM_TRANSLATE_NOOP("ExportFormat", "CSV"), "csv"},
+    {"codesys", CAM_TRANSLATE_NOOP("ExportFormat", "CODESYS Structured Text (SMC_CAMXYVA)"), "st"},
+};
+static_assert(kCamTableDialects[static_cast<int>(CamTableDialect::Csv)].name == "csv" &&
+              kCamTableDialects[static_cast<int>(CamTableDialect::Codesys)].name == "codesys");
+constexpr ExportDialectKind kPictureDialects[] = {
+    {"png", CAM_TRANSLATE_NOOP("ExportFormat", "PNG image"), "png"},
+    {"pdf", CAM_TRANSLATE_NOOP("ExportFormat", "PDF document (vector)"), "pdf"},
+    {"svg", CAM_TRANSLATE_NOOP("ExportFormat", "SVG drawing (vector)"), "svg"},
+};
+
+/// Every format, one row each, in ExportFormatId order.
+constexpr std::array<ExportFormatKind, 6> kFormats{{
+    {ExportFormatId::Csv,
+     "csv",
+     CAM_TRANSLATE_NOOP("ExportFormat", "CSV: the sampled turn"),
+     "csv",
+     kCsvOptions,
+     {},
+     {}},
+    {ExportFormatId::Dxf,
+     "dxf",
+     CAM_TRANSLATE_NOOP("ExportFormat", "DXF drawing (R2000, mm)"),
+     "dxf",
+     kDxfOptions,
+     kDxfFlags,
+     {}},
+    {ExportFormatId::Svg,
+     "svg",
+     CAM_TRANSLATE_NOOP("ExportFormat", "SVG drawing, 1:1 in mm"),
+     "svg",
+     kSvgOptions,
+     {},
+     {}},
+    {ExportFormatId::Gcode,
+     "gcode",
+     CAM_TRANSLATE_NOOP("ExportFormat", "G-code for milling the cam"),
+     "ngc",
+     kGcodeOptions,
+     kGcodeFlags,
+     {}},
+    {ExportFormatId::CamTable,
+     "camtable",
+     CAM_TRANSLATE_NOOP("ExportFormat", "Servo cam table"),
+     "csv",
+     kCamTableOptions,
+     {},
+     kCamTableDialects},
+    // The CLI names a picture by its dialect (`--format png`); an SVG picture is `--format svg`
+    // with `--plot`, the drawing without.
+    {ExportFormatId::Picture,
+     "",
+     CAM_TRANSLATE_NOOP("ExportFormat", "Picture of a plot (PNG, PDF, SVG)"),
+     "png",
+     kPictureOptions,
+     {},
+     kPictureDialects},
+}};
+
+constexpr bool rowsInOrder() {
+    for (std::size_t k = 0; k < kFormats.size(); ++k) {
+        if (static_cast<std::size_t>(kFormats[k].id) != k) return false;
+    }
+    return true;
+}
+static_assert(rowsInOrder(), "one row per export format, in ExportFormatId order");
+
+}  // namespace
+
+std::span<const ExportFormatKind> exportFormats() { return kFormats; }
+
+const ExportFormatKind& exportFormat(ExportFormatId id) {
+    return kFormats.at(static_cast<std::size_t>(id));
+}
+
+const ExportDialectKind* findDialect(const ExportFormatKind& format, std::string_view name) {
+    for (const ExportDialectKind& dialect : format.dialects) {
+        if (dialect.name == name) return &dialect;
+    }
+    return nullptr;
+}
+
+}  // namespace cam
