@@ -2315,6 +2315,94 @@
     </message>
 </context>
 <context>
+    <name>cam::DockLayout</name>
+    <message>
+        <location filename="../../src/app/window/dock_layout.cpp" line="+74" />
+        <source>Control Points</source>
+        <translation>Kontrollpunkte</translation>
+    </message>
+    <message>
+        <location line="+32" />
+        <source>Machining limits and times (Ctrl+M)</source>
+        <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Follower</source>
+        <translation>Stößel</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>The follower and its design checks (Ctrl+L)</source>
+        <translation>Der Stößel und seine Auslegungsprüfungen (Strg+L)</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Motion Design</source>
+        <translation>Bewegungsentwurf</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Design the contour from the follower's motion (Ctrl+D)</source>
+        <translation>Die Kontur aus der Bewegung des Stößels entwerfen (Strg+D)</translation>
+    </message>
+    <message>
+        <location line="+100" />
+        <source>&lt;b&gt;Segments&lt;/b&gt;: the contour as a table, one row per arc, line or spline piece. Each owns a polar window [φ start, φ end) of the turn; together they cover one turn. Type into a cell and press Enter; Ins inserts, Del deletes. A red cell's tooltip names its problem. F1: the user guide's section on the table.</source>
+        <translation>&lt;b&gt;Segmente&lt;/b&gt;: die Kontur als Tabelle, eine Zeile je Bogen, Gerade oder Spline-Stück. Jedes besitzt ein Polarfenster [φ Anfang, φ Ende) der Umdrehung; zusammen decken sie eine Umdrehung ab. In eine Zelle tippen und Eingabe drücken; Einfg fügt ein, Entf löscht. Der Tooltip einer roten Zelle nennt ihr Problem. F1: der Abschnitt des Handbuchs über die Tabelle.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>&lt;b&gt;Joints&lt;/b&gt;: where neighbouring segments meet, with their continuity (position, tangent, curvature) and the jumps of velocity and acceleration. Click a joint to go to it.</source>
+        <translation>&lt;b&gt;Übergänge&lt;/b&gt;: wo benachbarte Segmente aufeinandertreffen, mit ihrer Stetigkeit (Lage, Tangente, Krümmung) und den Sprüngen von Geschwindigkeit und Beschleunigung. Ein Klick auf einen Übergang springt dorthin.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>&lt;b&gt;Control Points&lt;/b&gt;: the selected Bézier or Hermite row by value: every control point's x and y, and each end's handle as length and angle. Every edit is one undo step.</source>
+        <translation>&lt;b&gt;Kontrollpunkte&lt;/b&gt;: die gewählte Bézier- oder Hermite-Zeile in Zahlen: x und y jedes Kontrollpunkts und der Griff jedes Endes als Länge und Winkel. Jede Änderung ist ein Rückgängig-Schritt.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>&lt;b&gt;Motion&lt;/b&gt;: how fast the cam turns (a period, rpm or rad/s) and how many samples per turn the plots and exports use.</source>
+        <translation>&lt;b&gt;Bewegung&lt;/b&gt;: wie schnell sich die Scheibe dreht (Periode, U/min oder rad/s) und wie viele Abtastwerte je Umdrehung Diagramme und Exporte verwenden.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;b&gt;State at Cursor&lt;/b&gt;: the follower's values at the cursor's instant: angle, segment, r and the polar components of velocity, acceleration and jerk.</source>
+        <translation>&lt;b&gt;Zustand am Cursor&lt;/b&gt;: die Werte des Stößels im Augenblick des Cursors: Winkel, Segment, r und die Polarkomponenten von Geschwindigkeit, Beschleunigung und Ruck.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;b&gt;Machining&lt;/b&gt;: the axes' limits and the tool, and the time it takes to machine the contour with its feed profile.</source>
+        <translation>&lt;b&gt;Zerspanung&lt;/b&gt;: die Grenzen der Achsen und das Werkzeug sowie die Zeit, die das Fräsen der Kontur dauert, mit ihrem Vorschubverlauf.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;b&gt;Path Study&lt;/b&gt;: how evenly the spline segments are parametrised, and their curvature.</source>
+        <translation>&lt;b&gt;Bahnstudie&lt;/b&gt;: wie gleichmäßig die Spline-Segmente parametrisiert sind, und ihre Krümmung.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;b&gt;Follower&lt;/b&gt;: knife, roller or flat face, translating or on a swinging arm, and its checks: pressure angle, curvature, undercut, reach.</source>
+        <translation>&lt;b&gt;Stößel&lt;/b&gt;: Schneide, Rolle oder Flachstößel, geradegeführt oder am Schwinghebel, und seine Prüfungen: Druckwinkel, Krümmung, Unterschnitt, Erreichbarkeit.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>&lt;b&gt;Motion Design&lt;/b&gt;: the follower's motion as motion laws over the turn; Synthesize Contour (F6) makes the cam from it.</source>
+        <translation>&lt;b&gt;Bewegungsentwurf&lt;/b&gt;: die Bewegung des Stößels als Bewegungsgesetze über der Umdrehung; Kontur synthetisieren (F6) macht daraus die Scheibe.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;b&gt;Contour&lt;/b&gt;: the cam as seen from above. Drag a square or diamond handle to move a centre, a radius or a spline handle; dragged points snap to centres, joints and the grid (Shift keeps an axis, Alt places freely).</source>
+        <translation>&lt;b&gt;Kontur&lt;/b&gt;: die Scheibe von oben gesehen. Einen quadratischen oder rautenförmigen Griff ziehen, um einen Mittelpunkt, einen Radius oder einen Spline-Griff zu verschieben; gezogene Punkte rasten an Mittelpunkten, Übergängen und am Raster ein (Umschalt hält eine Achse fest, Alt platziert frei).</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&lt;b&gt;Plots&lt;/b&gt;: velocity, acceleration and jerk over the angle or the time; the dashed line is the cursor.</source>
+        <translation>&lt;b&gt;Diagramme&lt;/b&gt;: Geschwindigkeit, Beschleunigung und Ruck über dem Winkel oder der Zeit; die gestrichelte Linie ist der Cursor.</translation>
+    </message>
+</context>
+<context>
     <name>cam::ExportDialog</name>
     <message>
         <location filename="../../src/app/export/export_dialog.cpp" line="+52" />
@@ -3051,479 +3139,22 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+87" />
+        <location filename="../../src/app/mainwindow.cpp" line="+51" />
         <source>The recovery copy could not be written: %1</source>
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+27" />
-        <source>computing…</source>
-        <translation>wird berechnet…</translation>
-    </message>
-    <message>
-        <location line="+66" />
-        <location line="+32" />
-        <source>Play</source>
-        <translation>Abspielen</translation>
-    </message>
-    <message>
-        <location line="-28" />
-        <source>Turn the cam with the follower riding it (F5)</source>
-        <translation>Die Scheibe drehen, der Stößel fährt mit (F5)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Play at this fraction of the cam's real speed</source>
-        <translation>Mit diesem Bruchteil der wirklichen Drehzahl abspielen</translation>
-    </message>
-    <message>
-        <location line="+25" />
-        <source>Pause</source>
-        <translation>Pause</translation>
-    </message>
-    <message>
-        <location line="+11" />
-        <source>Motion Design</source>
-        <translation>Bewegungsentwurf</translation>
-    </message>
-    <message>
-        <location line="+15" />
-        <source>Design the contour from the follower's motion (Ctrl+D)</source>
-        <translation>Die Kontur aus der Bewegung des Stößels entwerfen (Strg+D)</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>S&amp;ynthesize Contour</source>
-        <translation>Kontur s&amp;ynthetisieren</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Replace the contour by tangent arcs fitted to the design's exact profile within its tolerance (F6; one undo step)</source>
-        <translation>Die Kontur durch tangentiale Bögen ersetzen, die das exakte Profil des Entwurfs innerhalb seiner Toleranz annähern (F6; ein Rückgängig-Schritt)</translation>
-    </message>
-    <message>
-        <location line="+27" />
-        <source>Synthesizing the contour…</source>
-        <translation>Kontur wird synthetisiert …</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Synthesizing the contour from the design…</source>
-        <translation>Die Kontur wird aus dem Entwurf synthetisiert …</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <location line="+38" />
-        <source>Synthesize</source>
-        <translation>Synthetisieren</translation>
-    </message>
-    <message>
-        <location line="-13" />
-        <source>Synthesis cancelled: the contour is unchanged.</source>
-        <translation>Synthese abgebrochen: die Kontur ist unverändert.</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>The design, follower or speed changed while synthesizing: press Synthesize again.</source>
-        <translation>Entwurf, Stößel oder Drehzahl haben sich während der Synthese geändert: bitte erneut synthetisieren.</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>The contour cannot be made from this design:
-%1</source>
-        <translation>Aus diesem Entwurf lässt sich keine Kontur erzeugen:
-%1</translation>
-    </message>
-    <message>
-        <location line="+14" />
-        <source>Synthesized: the contour already is this design's.</source>
-        <translation>Synthetisiert: die Kontur ist bereits die dieses Entwurfs.</translation>
-    </message>
-    <message>
-        <location line="+33" />
-        <source>Control Points</source>
-        <translation>Kontrollpunkte</translation>
-    </message>
-    <message>
-        <location line="+34" />
-        <source>Machining limits and times (Ctrl+M)</source>
-        <translation>Bearbeitungsgrenzen und -zeiten (Strg+M)</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>Follower</source>
-        <translation>Stößel</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>The follower and its design checks (Ctrl+L)</source>
-        <translation>Der Stößel und seine Auslegungsprüfungen (Strg+L)</translation>
-    </message>
-    <message numerus="yes">
-        <location line="-76" />
-        <source>Synthesized %n segment(s) within %1 in %2</source>
-        <translation>
-            <numerusform>%n Abschnitt innerhalb %1 in %2 synthetisiert</numerusform>
-            <numerusform>%n Abschnitte innerhalb %1 in %2 synthetisiert</numerusform>
-        </translation>
-    </message>
-    <message>
-        <location line="+82" />
+        <location line="+114" />
         <source>Cursor at %1</source>
         <translation>Cursor bei %1</translation>
     </message>
     <message>
-        <location line="+29" />
-        <source>&amp;Undo</source>
-        <translation>&amp;Rückgängig</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>&amp;Redo</source>
-        <translation>&amp;Wiederholen</translation>
-    </message>
-    <message>
         <location line="+15" />
-        <source>Closed %1</source>
-        <translation>%1 geschlossen</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>Project Name</source>
-        <translation>Projektname</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>Name of the project:</source>
-        <translation>Name des Projekts:</translation>
-    </message>
-    <message>
-        <location line="+18" />
-        <source>Approximate Arc by &amp;Béziers…</source>
-        <translation>Bogen durch &amp;Béziers annähern …</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Replace the selected arc by cubic Bézier pieces within a radial error you give</source>
-        <translation>Den ausgewählten Bogen durch kubische Bézierstücke innerhalb einer vorgegebenen Radialabweichung ersetzen</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>New Contour Through &amp;Points…</source>
-        <translation>Neue Kontur durch &amp;Punkte …</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>A closed Bézier spline through teach-in points, with automatic handles</source>
-        <translation>Ein geschlossener Bézierspline durch Teach-in-Punkte mit automatischen Griffen</translation>
-    </message>
-    <message>
-        <location line="+7" />
-        <source>New Contour Through Points</source>
-        <translation>Neue Kontur durch Punkte</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>R&amp;ound Corner…</source>
-        <translation>E&amp;cke verrunden …</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Replace the corner before the selected segment by a tangent switch arc</source>
-        <translation>Die Ecke vor dem ausgewählten Segment durch einen tangentialen Schaltbogen ersetzen</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <location line="+7" />
-        <location line="+4" />
-        <source>Round Corner</source>
-        <translation>Ecke verrunden</translation>
-    </message>
-    <message>
-        <location line="-10" />
-        <source>Select the segment after the corner to round.</source>
-        <translation>Das Segment nach der zu verrundenden Ecke auswählen.</translation>
-    </message>
-    <message>
-        <location line="+13" />
-        <source>Tangent &amp;Line to Next Arc</source>
-        <translation>&amp;Tangente zum nächsten Bogen</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Join the selected arc to the next one by the line tangent to both; the windows follow from the tangent points</source>
-        <translation>Den gewählten Bogen mit dem nächsten durch die Gerade verbinden, die beide berührt; die Fenster ergeben sich aus den Berührpunkten</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Tangent Line</source>
-        <translation>Tangente</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Tangent &amp;Arc Through Point</source>
-        <translation>Tangentenbo&amp;gen durch Punkt</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Continue the selected segment by a tangent arc through a point you click in the contour view (Esc cancels)</source>
-        <translation>Das gewählte Segment durch einen tangentialen Bogen durch einen in der Konturansicht angeklickten Punkt fortsetzen (Esc bricht ab)</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <location line="+14" />
-        <source>Tangent Arc</source>
-        <translation>Tangentenbogen</translation>
-    </message>
-    <message>
-        <location line="-13" />
-        <source>Select the segment the arc continues first.</source>
-        <translation>Zuerst das Segment auswählen, das der Bogen fortsetzt.</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>Click the point the tangent arc passes through (Esc cancels)</source>
-        <translation>Den Punkt anklicken, durch den der Tangentenbogen geht (Esc bricht ab)</translation>
-    </message>
-    <message>
-        <location line="+11" />
-        <source>Tangent arc cancelled</source>
-        <translation>Tangentenbogen abgebrochen</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>Approximate Arc</source>
-        <translation>Bogen annähern</translation>
-    </message>
-    <message>
-        <location line="+8" />
-        <source>&amp;Radius Plot r(φ)</source>
-        <translation>&amp;Radiusdiagramm r(φ)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Show the contour's radius r over the turn above the velocity</source>
-        <translation>Den Radius r der Kontur über die Umdrehung über der Geschwindigkeit zeigen</translation>
-    </message>
-    <message>
-        <location line="+15" />
-        <source>About Camwright</source>
-        <translation>Über Camwright</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>&amp;Keyboard Shortcuts</source>
-        <translation>&amp;Tastenkürzel</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Every shortcut of the window</source>
-        <translation>Alle Tastenkürzel des Fensters</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>User &amp;Guide</source>
-        <translation>Benutzer&amp;handbuch</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>A short guide to Camwright, opened at the part you are working in: the table, construction, followers, exports, the command line</source>
-        <translation>Eine kurze Anleitung zu Camwright, geöffnet bei dem Teil, in dem Sie arbeiten: Tabelle, Konstruktion, Stößel, Exporte, Kommandozeile</translation>
-    </message>
-    <message>
-        <location line="+14" />
-        <source>What's &amp;This?</source>
-        <translation>&amp;Direkthilfe</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Click a dock or view to learn what it is for</source>
-        <translation>Auf ein Dock oder eine Ansicht klicken, um zu erfahren, wofür es da ist</translation>
-    </message>
-    <message>
-        <location line="+16" />
-        <source>&lt;h3&gt;Camwright %1&lt;/h3&gt;&lt;p&gt;Design and inspect cam contours: exact polar kinematics of the follower, design from motion laws, machining time, exports for CAD, CNC and servo drives.&lt;/p&gt;&lt;p&gt;License: GPL-3.0-or-later.&lt;/p&gt;&lt;p&gt;Built with&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (LGPL-3.0)&lt;/li&gt;&lt;li&gt;QCustomPlot %3 (GPL-3.0)&lt;/li&gt;&lt;li&gt;Eigen %4 (MPL-2.0)&lt;/li&gt;&lt;li&gt;JSON for Modern C++ (nlohmann-json) %5 (MIT)&lt;/li&gt;&lt;/ul&gt;</source>
-        <translation>&lt;h3&gt;Camwright %1&lt;/h3&gt;&lt;p&gt;Kurvenscheiben entwerfen und prüfen: exakte Polarkinematik des Stößels, Entwurf aus Bewegungsgesetzen, Bearbeitungszeit, Export für CAD, CNC und Servoantriebe.&lt;/p&gt;&lt;p&gt;Lizenz: GPL-3.0-or-later.&lt;/p&gt;&lt;p&gt;Erstellt mit&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (LGPL-3.0)&lt;/li&gt;&lt;li&gt;QCustomPlot %3 (GPL-3.0)&lt;/li&gt;&lt;li&gt;Eigen %4 (MPL-2.0)&lt;/li&gt;&lt;li&gt;JSON for Modern C++ (nlohmann-json) %5 (MIT)&lt;/li&gt;&lt;/ul&gt;</translation>
-    </message>
-    <message>
-        <location line="+14" />
-        <source>&lt;b&gt;Segments&lt;/b&gt;: the contour as a table, one row per arc, line or spline piece. Each owns a polar window [φ start, φ end) of the turn; together they cover one turn. Type into a cell and press Enter; Ins inserts, Del deletes. A red cell's tooltip names its problem. F1: the user guide's section on the table.</source>
-        <translation>&lt;b&gt;Segmente&lt;/b&gt;: die Kontur als Tabelle, eine Zeile je Bogen, Gerade oder Spline-Stück. Jedes besitzt ein Polarfenster [φ Anfang, φ Ende) der Umdrehung; zusammen decken sie eine Umdrehung ab. In eine Zelle tippen und Eingabe drücken; Einfg fügt ein, Entf löscht. Der Tooltip einer roten Zelle nennt ihr Problem. F1: der Abschnitt des Handbuchs über die Tabelle.</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>&lt;b&gt;Joints&lt;/b&gt;: where neighbouring segments meet, with their continuity (position, tangent, curvature) and the jumps of velocity and acceleration. Click a joint to go to it.</source>
-        <translation>&lt;b&gt;Übergänge&lt;/b&gt;: wo benachbarte Segmente aufeinandertreffen, mit ihrer Stetigkeit (Lage, Tangente, Krümmung) und den Sprüngen von Geschwindigkeit und Beschleunigung. Ein Klick auf einen Übergang springt dorthin.</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>&lt;b&gt;Control Points&lt;/b&gt;: the selected Bézier or Hermite row by value: every control point's x and y, and each end's handle as length and angle. Every edit is one undo step.</source>
-        <translation>&lt;b&gt;Kontrollpunkte&lt;/b&gt;: die gewählte Bézier- oder Hermite-Zeile in Zahlen: x und y jedes Kontrollpunkts und der Griff jedes Endes als Länge und Winkel. Jede Änderung ist ein Rückgängig-Schritt.</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>&lt;b&gt;Motion&lt;/b&gt;: how fast the cam turns (a period, rpm or rad/s) and how many samples per turn the plots and exports use.</source>
-        <translation>&lt;b&gt;Bewegung&lt;/b&gt;: wie schnell sich die Scheibe dreht (Periode, U/min oder rad/s) und wie viele Abtastwerte je Umdrehung Diagramme und Exporte verwenden.</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>&lt;b&gt;State at Cursor&lt;/b&gt;: the follower's values at the cursor's instant: angle, segment, r and the polar components of velocity, acceleration and jerk.</source>
-        <translation>&lt;b&gt;Zustand am Cursor&lt;/b&gt;: die Werte des Stößels im Augenblick des Cursors: Winkel, Segment, r und die Polarkomponenten von Geschwindigkeit, Beschleunigung und Ruck.</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>&lt;b&gt;Machining&lt;/b&gt;: the axes' limits and the tool, and the time it takes to machine the contour with its feed profile.</source>
-        <translation>&lt;b&gt;Zerspanung&lt;/b&gt;: die Grenzen der Achsen und das Werkzeug sowie die Zeit, die das Fräsen der Kontur dauert, mit ihrem Vorschubverlauf.</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>&lt;b&gt;Path Study&lt;/b&gt;: how evenly the spline segments are parametrised, and their curvature.</source>
-        <translation>&lt;b&gt;Bahnstudie&lt;/b&gt;: wie gleichmäßig die Spline-Segmente parametrisiert sind, und ihre Krümmung.</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>&lt;b&gt;Follower&lt;/b&gt;: knife, roller or flat face, translating or on a swinging arm, and its checks: pressure angle, curvature, undercut, reach.</source>
-        <translation>&lt;b&gt;Stößel&lt;/b&gt;: Schneide, Rolle oder Flachstößel, geradegeführt oder am Schwinghebel, und seine Prüfungen: Druckwinkel, Krümmung, Unterschnitt, Erreichbarkeit.</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>&lt;b&gt;Motion Design&lt;/b&gt;: the follower's motion as motion laws over the turn; Synthesize Contour (F6) makes the cam from it.</source>
-        <translation>&lt;b&gt;Bewegungsentwurf&lt;/b&gt;: die Bewegung des Stößels als Bewegungsgesetze über der Umdrehung; Kontur synthetisieren (F6) macht daraus die Scheibe.</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>&lt;b&gt;Contour&lt;/b&gt;: the cam as seen from above. Drag a square or diamond handle to move a centre, a radius or a spline handle; dragged points snap to centres, joints and the grid (Shift keeps an axis, Alt places freely).</source>
-        <translation>&lt;b&gt;Kontur&lt;/b&gt;: die Scheibe von oben gesehen. Einen quadratischen oder rautenförmigen Griff ziehen, um einen Mittelpunkt, einen Radius oder einen Spline-Griff zu verschieben; gezogene Punkte rasten an Mittelpunkten, Übergängen und am Raster ein (Umschalt hält eine Achse fest, Alt platziert frei).</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>&lt;b&gt;Plots&lt;/b&gt;: velocity, acceleration and jerk over the angle or the time; the dashed line is the cursor.</source>
-        <translation>&lt;b&gt;Diagramme&lt;/b&gt;: Geschwindigkeit, Beschleunigung und Ruck über dem Winkel oder der Zeit; die gestrichelte Linie ist der Cursor.</translation>
-    </message>
-    <message>
-        <location line="+69" />
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <location line="+11" />
-        <location line="+31" />
-        <source>an untitled project</source>
-        <translation>einem unbenannten Projekt</translation>
-    </message>
-    <message>
-        <location line="-28" />
-        <location line="+24" />
-        <source>Recover Unsaved Changes</source>
-        <translation>Ungesicherte Änderungen wiederherstellen</translation>
-    </message>
-    <message>
-        <location line="-23" />
-        <source>Camwright did not close properly. Unsaved changes to %1, autosaved %2, can be restored.</source>
-        <translation>Camwright wurde nicht ordnungsgemäß beendet. Ungesicherte Änderungen an %1, automatisch gesichert %2, können wiederhergestellt werden.</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>Restore</source>
-        <translation>Wiederherstellen</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Discard</source>
-        <translation>Verwerfen</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Later</source>
-        <translation>Später</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Later keeps the copy and asks again at the next start.</source>
-        <translation>„Später“ behält die Kopie und fragt beim nächsten Start erneut.</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>The recovery copy was discarded.</source>
-        <translation>Die Wiederherstellungskopie wurde verworfen.</translation>
-    </message>
-    <message>
-        <location line="+13" />
-        <source>Restored the unsaved changes of %1: save them to keep them.</source>
-        <translation>Ungesicherte Änderungen an %1 wiederhergestellt: speichern, um sie zu behalten.</translation>
-    </message>
-    <message>
-        <location line="+51" />
-        <source>Project renamed to “%1”</source>
-        <translation>Projekt in „%1“ umbenannt</translation>
-    </message>
-    <message>
-        <location line="+58" />
-        <source>not computed: %1</source>
-        <translation>nicht berechnet: %1</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>no contour yet</source>
-        <translation>noch keine Kontur</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>not computed: the project has problems</source>
-        <translation>nicht berechnet: das Projekt hat Fehler</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Computation failed: %1</source>
-        <translation>Berechnung fehlgeschlagen: %1</translation>
-    </message>
-    <message>
-        <location line="+23" />
-        <source>%1 samples computed in %2</source>
-        <translation>%1 Abtastpunkte in %2 berechnet</translation>
-    </message>
-    <message>
-        <location line="+68" />
-        <source>Valid · no contour yet: Synthesize (F6) makes it</source>
-        <translation>Gültig · noch keine Kontur: Synthetisieren (F6) erzeugt sie</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Valid · 1 segment</source>
-        <translation>Gültig · 1 Segment</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Valid · %1 segments</source>
-        <translation>Gültig · %1 Segmente</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>1 problem: </source>
-        <translation>1 Fehler: </translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>%1 problems: </source>
-        <translation>%1 Fehler: </translation>
-    </message>
-    <message>
-        <location line="+8" />
         <source>%1[*] — Camwright</source>
         <translation>%1[*] — Camwright</translation>
     </message>
     <message>
-        <location line="-539" />
-        <source>Fit Windows</source>
-        <translation>Fenster anpassen</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow_exports.cpp" line="+50" />
+        <location filename="../../src/app/mainwindow_exports.cpp" line="+53" />
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
@@ -3933,6 +3564,30 @@ T = %3</translation>
     </message>
 </context>
 <context>
+    <name>cam::PlayController</name>
+    <message>
+        <location filename="../../src/app/window/play_controller.cpp" line="+16" />
+        <location line="+26" />
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <location line="-22" />
+        <source>Turn the cam with the follower riding it (F5)</source>
+        <translation>Die Scheibe drehen, der Stößel fährt mit (F5)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Play at this fraction of the cam's real speed</source>
+        <translation>Mit diesem Bruchteil der wirklichen Drehzahl abspielen</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+</context>
+<context>
     <name>cam::ProjectDocument</name>
     <message>
         <location filename="../../src/app/document/project_document.cpp" line="+22" />
@@ -4178,6 +3833,56 @@ Möchten Sie die Datei ersetzen?</translation>
     </message>
 </context>
 <context>
+    <name>cam::RecoveryPrompt</name>
+    <message>
+        <location filename="../../src/app/files/recovery_prompt.cpp" line="+18" />
+        <location line="+31" />
+        <source>an untitled project</source>
+        <translation>einem unbenannten Projekt</translation>
+    </message>
+    <message>
+        <location line="-28" />
+        <location line="+24" />
+        <source>Recover Unsaved Changes</source>
+        <translation>Ungesicherte Änderungen wiederherstellen</translation>
+    </message>
+    <message>
+        <location line="-23" />
+        <source>Camwright did not close properly. Unsaved changes to %1, autosaved %2, can be restored.</source>
+        <translation>Camwright wurde nicht ordnungsgemäß beendet. Ungesicherte Änderungen an %1, automatisch gesichert %2, können wiederhergestellt werden.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Restore</source>
+        <translation>Wiederherstellen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Discard</source>
+        <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Later</source>
+        <translation>Später</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Later keeps the copy and asks again at the next start.</source>
+        <translation>„Später“ behält die Kopie und fragt beim nächsten Start erneut.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The recovery copy was discarded.</source>
+        <translation>Die Wiederherstellungskopie wurde verworfen.</translation>
+    </message>
+    <message>
+        <location line="+13" />
+        <source>Restored the unsaved changes of %1: save them to keep them.</source>
+        <translation>Ungesicherte Änderungen an %1 wiederhergestellt: speichern, um sie zu behalten.</translation>
+    </message>
+</context>
+<context>
     <name>cam::SegmentTableModel</name>
     <message>
         <location filename="../../src/app/models/segment_table_model.cpp" line="+104" />
@@ -4416,6 +4121,128 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     </message>
 </context>
 <context>
+    <name>cam::StatusLabels</name>
+    <message>
+        <location filename="../../src/app/window/status_labels.cpp" line="+37" />
+        <source>computing…</source>
+        <translation>wird berechnet…</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Valid · no contour yet: Synthesize (F6) makes it</source>
+        <translation>Gültig · noch keine Kontur: Synthetisieren (F6) erzeugt sie</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Valid · 1 segment</source>
+        <translation>Gültig · 1 Segment</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Valid · %1 segments</source>
+        <translation>Gültig · %1 Segmente</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>1 problem: </source>
+        <translation>1 Fehler: </translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>%1 problems: </source>
+        <translation>%1 Fehler: </translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>not computed: %1</source>
+        <translation>nicht berechnet: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>no contour yet</source>
+        <translation>noch keine Kontur</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>not computed: the project has problems</source>
+        <translation>nicht berechnet: das Projekt hat Fehler</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Computation failed: %1</source>
+        <translation>Berechnung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 samples computed in %2</source>
+        <translation>%1 Abtastpunkte in %2 berechnet</translation>
+    </message>
+</context>
+<context>
+    <name>cam::SynthesisController</name>
+    <message>
+        <location filename="../../src/app/window/synthesis_controller.cpp" line="+20" />
+        <source>S&amp;ynthesize Contour</source>
+        <translation>Kontur s&amp;ynthetisieren</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Replace the contour by tangent arcs fitted to the design's exact profile within its tolerance (F6; one undo step)</source>
+        <translation>Die Kontur durch tangentiale Bögen ersetzen, die das exakte Profil des Entwurfs innerhalb seiner Toleranz annähern (F6; ein Rückgängig-Schritt)</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>Synthesizing the contour…</source>
+        <translation>Kontur wird synthetisiert …</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Synthesizing the contour from the design…</source>
+        <translation>Die Kontur wird aus dem Entwurf synthetisiert …</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <location line="+38" />
+        <source>Synthesize</source>
+        <translation>Synthetisieren</translation>
+    </message>
+    <message>
+        <location line="-13" />
+        <source>Synthesis cancelled: the contour is unchanged.</source>
+        <translation>Synthese abgebrochen: die Kontur ist unverändert.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The design, follower or speed changed while synthesizing: press Synthesize again.</source>
+        <translation>Entwurf, Stößel oder Drehzahl haben sich während der Synthese geändert: bitte erneut synthetisieren.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The contour cannot be made from this design:
+%1</source>
+        <translation>Aus diesem Entwurf lässt sich keine Kontur erzeugen:
+%1</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Synthesized: the contour already is this design's.</source>
+        <translation>Synthetisiert: die Kontur ist bereits die dieses Entwurfs.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6" />
+        <source>Synthesized %n segment(s) within %1 in %2</source>
+        <translation>
+            <numerusform>%n Abschnitt innerhalb %1 in %2 synthetisiert</numerusform>
+            <numerusform>%n Abschnitte innerhalb %1 in %2 synthetisiert</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>cam::UserGuide</name>
     <message>
         <location filename="../../src/app/dialogs/user_guide.cpp" line="+11" />
@@ -4426,6 +4253,197 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <location line="+15" />
         <source>user-guide.en.html</source>
         <translation>user-guide.de.html</translation>
+    </message>
+</context>
+<context>
+    <name>cam::WindowActions</name>
+    <message>
+        <location filename="../../src/app/window/window_actions.cpp" line="+52" />
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Closed %1</source>
+        <translation>%1 geschlossen</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Project Name</source>
+        <translation>Projektname</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Name of the project:</source>
+        <translation>Name des Projekts:</translation>
+    </message>
+    <message>
+        <location line="+17" />
+        <source>Fit Windows</source>
+        <translation>Fenster anpassen</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Approximate Arc by &amp;Béziers…</source>
+        <translation>Bogen durch &amp;Béziers annähern …</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Replace the selected arc by cubic Bézier pieces within a radial error you give</source>
+        <translation>Den ausgewählten Bogen durch kubische Bézierstücke innerhalb einer vorgegebenen Radialabweichung ersetzen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>New Contour Through &amp;Points…</source>
+        <translation>Neue Kontur durch &amp;Punkte …</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>A closed Bézier spline through teach-in points, with automatic handles</source>
+        <translation>Ein geschlossener Bézierspline durch Teach-in-Punkte mit automatischen Griffen</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>New Contour Through Points</source>
+        <translation>Neue Kontur durch Punkte</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>R&amp;ound Corner…</source>
+        <translation>E&amp;cke verrunden …</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Replace the corner before the selected segment by a tangent switch arc</source>
+        <translation>Die Ecke vor dem ausgewählten Segment durch einen tangentialen Schaltbogen ersetzen</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+7" />
+        <location line="+5" />
+        <source>Round Corner</source>
+        <translation>Ecke verrunden</translation>
+    </message>
+    <message>
+        <location line="-11" />
+        <source>Select the segment after the corner to round.</source>
+        <translation>Das Segment nach der zu verrundenden Ecke auswählen.</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Tangent &amp;Line to Next Arc</source>
+        <translation>&amp;Tangente zum nächsten Bogen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Join the selected arc to the next one by the line tangent to both; the windows follow from the tangent points</source>
+        <translation>Den gewählten Bogen mit dem nächsten durch die Gerade verbinden, die beide berührt; die Fenster ergeben sich aus den Berührpunkten</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Tangent Line</source>
+        <translation>Tangente</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Tangent &amp;Arc Through Point</source>
+        <translation>Tangentenbo&amp;gen durch Punkt</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Continue the selected segment by a tangent arc through a point you click in the contour view (Esc cancels)</source>
+        <translation>Das gewählte Segment durch einen tangentialen Bogen durch einen in der Konturansicht angeklickten Punkt fortsetzen (Esc bricht ab)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <location line="+14" />
+        <source>Tangent Arc</source>
+        <translation>Tangentenbogen</translation>
+    </message>
+    <message>
+        <location line="-13" />
+        <source>Select the segment the arc continues first.</source>
+        <translation>Zuerst das Segment auswählen, das der Bogen fortsetzt.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Click the point the tangent arc passes through (Esc cancels)</source>
+        <translation>Den Punkt anklicken, durch den der Tangentenbogen geht (Esc bricht ab)</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Tangent arc cancelled</source>
+        <translation>Tangentenbogen abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Approximate Arc</source>
+        <translation>Bogen annähern</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>&amp;Radius Plot r(φ)</source>
+        <translation>&amp;Radiusdiagramm r(φ)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Show the contour's radius r over the turn above the velocity</source>
+        <translation>Den Radius r der Kontur über die Umdrehung über der Geschwindigkeit zeigen</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>About Camwright</source>
+        <translation>Über Camwright</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>&amp;Tastenkürzel</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Every shortcut of the window</source>
+        <translation>Alle Tastenkürzel des Fensters</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>User &amp;Guide</source>
+        <translation>Benutzer&amp;handbuch</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>A short guide to Camwright, opened at the part you are working in: the table, construction, followers, exports, the command line</source>
+        <translation>Eine kurze Anleitung zu Camwright, geöffnet bei dem Teil, in dem Sie arbeiten: Tabelle, Konstruktion, Stößel, Exporte, Kommandozeile</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>What's &amp;This?</source>
+        <translation>&amp;Direkthilfe</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Click a dock or view to learn what it is for</source>
+        <translation>Auf ein Dock oder eine Ansicht klicken, um zu erfahren, wofür es da ist</translation>
+    </message>
+    <message>
+        <location line="+72" />
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>&lt;h3&gt;Camwright %1&lt;/h3&gt;&lt;p&gt;Design and inspect cam contours: exact polar kinematics of the follower, design from motion laws, machining time, exports for CAD, CNC and servo drives.&lt;/p&gt;&lt;p&gt;License: GPL-3.0-or-later.&lt;/p&gt;&lt;p&gt;Built with&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (LGPL-3.0)&lt;/li&gt;&lt;li&gt;QCustomPlot %3 (GPL-3.0)&lt;/li&gt;&lt;li&gt;Eigen %4 (MPL-2.0)&lt;/li&gt;&lt;li&gt;JSON for Modern C++ (nlohmann-json) %5 (MIT)&lt;/li&gt;&lt;/ul&gt;</source>
+        <translation>&lt;h3&gt;Camwright %1&lt;/h3&gt;&lt;p&gt;Kurvenscheiben entwerfen und prüfen: exakte Polarkinematik des Stößels, Entwurf aus Bewegungsgesetzen, Bearbeitungszeit, Export für CAD, CNC und Servoantriebe.&lt;/p&gt;&lt;p&gt;Lizenz: GPL-3.0-or-later.&lt;/p&gt;&lt;p&gt;Erstellt mit&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (LGPL-3.0)&lt;/li&gt;&lt;li&gt;QCustomPlot %3 (GPL-3.0)&lt;/li&gt;&lt;li&gt;Eigen %4 (MPL-2.0)&lt;/li&gt;&lt;li&gt;JSON for Modern C++ (nlohmann-json) %5 (MIT)&lt;/li&gt;&lt;/ul&gt;</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>Project renamed to “%1”</source>
+        <translation>Projekt in „%1“ umbenannt</translation>
     </message>
 </context>
 <context>

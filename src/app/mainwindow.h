@@ -1,21 +1,19 @@
 #pragma once
 /// @file
-/// @brief The main window: actions, docks and wiring. Views draw; the engine computes.
+/// @brief The main window: the wiring of the document, the engine and the views. What each
+/// part does lives in its own class: the docks and views (window/dock_layout), the actions
+/// (window/window_actions), the results handed to the views (window/result_hub), the cursor
+/// (window/cursor_model), the status labels, Play, Synthesize, recovery and the exports. The
+/// accessors below are for the tests, which drive the very same window.
 
-#include <QElapsedTimer>
 #include <QMainWindow>
-#include <QTimer>
 #include <memory>
 
-#include "design/synthesis.h"
 #include "engine/compute_result.h"
 #include "export/export_request.h"
 #include "files/autosave.h"
 
 class QCustomPlot;
-class QComboBox;
-class QLabel;
-class QProgressDialog;
 
 namespace Ui {
 class MainWindow;
@@ -35,11 +33,17 @@ class FollowerPanel;
 class MachiningPanel;
 class MotionPanel;
 class MotionDesignPanel;
-class SynthesisRunner;
 class ProjectDocument;
 class ProjectFiles;
-struct EditOutcome;
 class StateReadout;
+class DockLayout;
+class WindowActions;
+class ResultHub;
+class CursorModel;
+class StatusLabels;
+class PlayController;
+class SynthesisController;
+class RecoveryPrompt;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -63,23 +67,23 @@ public:
     [[nodiscard]] ProjectDocument* document() const { return m_document; }
     [[nodiscard]] ComputeEngine* engine() const { return m_engine; }
     [[nodiscard]] SegmentTableModel* tableModel() const { return m_model; }
-    [[nodiscard]] KinematicsPlots* plots() const { return m_plots; }
-    [[nodiscard]] ContourView* contourView() const { return m_contour; }
-    [[nodiscard]] StateReadout* readout() const { return m_readout; }
-    [[nodiscard]] FollowerPanel* followerPanel() const { return m_follower; }
-    [[nodiscard]] ControlPointsPanel* controlPointsPanel() const { return m_controlPoints; }
+    [[nodiscard]] KinematicsPlots* plots() const;
+    [[nodiscard]] ContourView* contourView() const;
+    [[nodiscard]] StateReadout* readout() const;
+    [[nodiscard]] FollowerPanel* followerPanel() const;
+    [[nodiscard]] ControlPointsPanel* controlPointsPanel() const;
+    [[nodiscard]] MachiningPanel* machiningPanel() const;
+    [[nodiscard]] JointsPanel* jointsPanel() const;
+    [[nodiscard]] PathStudyPanel* pathStudyPanel() const;
+    [[nodiscard]] MotionDesignPanel* motionDesignPanel() const;
     /// @brief The user guide, once F1 has opened it (else null).
-    [[nodiscard]] UserGuide* userGuide() const { return m_guide; }
+    [[nodiscard]] UserGuide* userGuide() const;
     /// @brief The cursor's instant (s, within the turn).
-    [[nodiscard]] double cursorTime() const { return m_cursorT; }
-    [[nodiscard]] QAction* playAction() const { return m_playAction; }
+    [[nodiscard]] double cursorTime() const;
+    [[nodiscard]] QAction* playAction() const;
     /// @brief The fraction of the real speed Play turns the cam at.
     [[nodiscard]] double playSpeedFactor() const;
-    [[nodiscard]] MachiningPanel* machiningPanel() const { return m_machining; }
-    [[nodiscard]] JointsPanel* jointsPanel() const { return m_joints; }
-    [[nodiscard]] PathStudyPanel* pathStudyPanel() const { return m_pathStudy; }
-    [[nodiscard]] MotionDesignPanel* motionDesignPanel() const { return m_design; }
-    [[nodiscard]] QAction* synthesizeAction() const { return m_synthesizeAction; }
+    [[nodiscard]] QAction* synthesizeAction() const;
 
     [[nodiscard]] Autosave* autosave() const { return m_autosave; }
     [[nodiscard]] ProjectFiles* files() const { return m_files; }
@@ -134,7 +138,7 @@ public:
     /// every plot level.
     bool waitForCurrentResult(int timeoutMs);
     /// @brief The last result that could be computed: what the views draw (null before one).
-    [[nodiscard]] const ComputeResultPtr& shownResult() const { return m_shown; }
+    [[nodiscard]] const ComputeResultPtr& shownResult() const;
 
 signals:
     /// The plots show this result (emitted after they were updated); a first picture's result
@@ -151,8 +155,10 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
-    void setUpActions();
-    /// File → Export… and right-click → Export Plot… on every plot.
+    void wireResults();
+    void wireCursor();
+    void requestCompute();
+    /// File → Export… and right-click → Export Plot… on every plot (mainwindow_exports.cpp).
     void setUpExports();
     void askExportPlot(PlotKind kind);
     void finishExport(const QString& path, const QString& what, qint64 bytes,
@@ -161,74 +167,22 @@ private:
     [[nodiscard]] QString exportBaseName() const;
     /// The project's name, or without one its file's base name: the title of a picture.
     [[nodiscard]] QString exportTitle() const;
-    void setUpDocks();
-    /// Shows what a contour edit did (status bar, selection) or why not (a message box titled
-    /// `title`; none when empty).
-    void report(const EditOutcome& outcome, const QString& title = {});
-    void requestCompute();
-    void showResult(const ComputeResultPtr& result);
-    /// The views beside the plots: contour, Joints tab, path study, motion design.
-    void showBesidePlots(const ComputeResultPtr& result);
-    void updateStatus();
     void updateTitle();
-    int selectedRow() const;
 
     std::unique_ptr<Ui::MainWindow> m_ui;
     ProjectDocument* m_document;
-    ProjectFiles* m_files = nullptr;
     SegmentTableModel* m_model;
     ComputeEngine* m_engine;
-    ContourView* m_contour;
-    KinematicsPlots* m_plots;
-    StateReadout* m_readout;
-    MotionPanel* m_motion;
-    MachiningPanel* m_machining;
-    FollowerPanel* m_follower;
-    QDockWidget* m_followerDock;
-    JointsPanel* m_joints;
-    ControlPointsPanel* m_controlPoints;
-    QDockWidget* m_controlPointsDock;
-    PathStudyPanel* m_pathStudy;
-    QLabel* m_validationLabel;
-    QLabel* m_computeLabel;
-    /// Fires when a request has waited kBusyAfterMs without its result: the label then says
-    /// "computing…" instead of describing a result of the project as it was.
-    QTimer* m_busyTimer;
-    /// Play: turns the cam at a fraction of its real speed, the cursor (and the follower on
-    /// the contour) moving with it; only markers move, nothing is computed.
-    QAction* m_playAction = nullptr;
-    int m_pickRow = -1;
-    UserGuide* m_guide = nullptr;  ///< made when first asked for  ///< the row a tangent arc
-                                   ///< continues, while a point is being picked
-    QComboBox* m_playSpeed = nullptr;
-    QTimer* m_playTimer = nullptr;
-    QElapsedTimer m_playClock;
-    void setUpPlay();
-    void setUpDesign();
-    /// Icons of every action and dock toggle; every tooltip names its shortcut.
-    void setUpIcons();
-    void setUpWhatsThis();
-    /// @brief Sizes the Segments dock (and its tabs) to the contour's rows, at least
-    /// kMinSegmentRowsShown, when a project is opened or made: a short contour leaves the
-    /// plots the room it does not need; a long one gets back the height the dock had.
-    void fitSegmentsDock();
-    static constexpr int kMinSegmentRowsShown = 4;
-    int m_segmentsDockRoom = 0;     ///< the dock's height before fitting (layout or user)
-    int m_segmentsDockFitted = -1;  ///< its height after the last fit
-    void finishSynthesis(const std::shared_ptr<const Result<Synthesis>>& result, bool cancelled);
+    ProjectFiles* m_files = nullptr;
     Autosave* m_autosave = nullptr;
-    MotionDesignPanel* m_design = nullptr;
-    QDockWidget* m_designDock = nullptr;
-    QAction* m_synthesizeAction = nullptr;
-    SynthesisRunner* m_synthesis = nullptr;
-    QProgressDialog* m_synthesisProgress = nullptr;
-    QElapsedTimer m_synthesisClock;
-    bool m_synthesisInteractive = false;
-    double m_cursorT = 0.0;
-    ComputeResultPtr m_shown;  ///< the last result that could be computed: what the views draw
-    /// The request of the last result handed to the views (computable or not; its refinement
-    /// has the same).
-    std::uint64_t m_handedGeneration = 0;
+    DockLayout* m_views = nullptr;
+    ResultHub* m_results = nullptr;
+    CursorModel* m_cursor = nullptr;
+    StatusLabels* m_labels = nullptr;
+    WindowActions* m_actions = nullptr;
+    PlayController* m_play = nullptr;
+    SynthesisController* m_synthesis = nullptr;
+    RecoveryPrompt* m_recovery = nullptr;
 };
 
 }  // namespace cam

@@ -11,6 +11,7 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTableView>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "document/project_document.h"
@@ -24,6 +25,8 @@
 #include "views/follower_panel.h"
 #include "views/kinematics_plots.h"
 #include "views/machining_panel.h"
+#include "window/dock_layout.h"
+#include "window/result_hub.h"
 
 namespace cam {
 
@@ -94,19 +97,19 @@ QString MainWindow::exportBaseName() const {
 QCustomPlot* MainWindow::plotWidget(PlotKind kind) const {
     switch (kind) {
         case PlotKind::Contour:
-            return m_contour;
+            return m_views->contour;
         case PlotKind::Velocity:
-            return m_plots->plot(0);
+            return m_views->plots->plot(0);
         case PlotKind::Acceleration:
-            return m_plots->plot(1);
+            return m_views->plots->plot(1);
         case PlotKind::Jerk:
-            return m_plots->plot(2);
+            return m_views->plots->plot(2);
         case PlotKind::Feed:
-            return m_machining->feedPlot();
+            return m_views->machining->feedPlot();
         case PlotKind::AxisAcceleration:
-            return m_machining->accelerationPlot();
+            return m_views->machining->accelerationPlot();
         case PlotKind::PressureAngle:
-            return m_follower->pressurePlot();
+            return m_views->follower->pressurePlot();
     }
     return nullptr;
 }
@@ -115,13 +118,13 @@ void MainWindow::showMachiningPanel() { m_ui->machiningDock->show(); }
 
 std::vector<PlotKind> MainWindow::drawablePlots() const {
     std::vector<PlotKind> kinds;
-    if (!m_shown) return kinds;
+    if (!m_results->shown()) return kinds;
     const bool machining = !m_ui->machiningDock->isHidden() &&
                            m_document->project().machining.has_value() &&
                            m_engine->latestTiming() != nullptr;
     for (PlotKind kind : kPlotKinds) {
         if (kind == PlotKind::PressureAngle) {
-            if (m_shown->follower) kinds.push_back(kind);
+            if (m_results->shown()->follower) kinds.push_back(kind);
         } else if (!isMachiningPlot(kind) || machining) {
             kinds.push_back(kind);
         }
@@ -134,7 +137,7 @@ QByteArray MainWindow::plotPicture(PlotKind kind, PictureFormat format, QSize si
     const std::vector<PlotKind> drawable = drawablePlots();
     if (std::find(drawable.begin(), drawable.end(), kind) == drawable.end()) {
         if (problem) {
-            *problem = !m_shown ? tr("Nothing has been computed yet.")
+            *problem = !m_results->shown() ? tr("Nothing has been computed yet.")
                        : kind == PlotKind::PressureAngle
                            ? tr("The project has no follower that rides its cam: there is no "
                                 "pressure-angle plot.")
@@ -153,16 +156,16 @@ QByteArray MainWindow::plotPicture(PlotKind kind, PictureFormat format, QSize si
     text.title = tr("%1 — %2").arg(exportTitle(), plotKindTitle(kind));
     // The stacked plots share the bottom one's x axis label.
     if (kind == PlotKind::Velocity || kind == PlotKind::Acceleration) {
-        text.xLabel = m_plots->plot(2)->xAxis->label();
+        text.xLabel = m_views->plots->plot(2)->xAxis->label();
     }
     std::function<void()> fit;
     if (kind == PlotKind::Contour) {
         // The drag handles of the selected segment are for editing, not for the picture.
-        m_contour->setSelectedSegment(-1);
-        fit = [this] { m_contour->fitToViewport(); };
+        m_views->contour->setSelectedSegment(-1);
+        fit = [this] { m_views->contour->fitToViewport(); };
     }
     QByteArray bytes = renderPlotPicture(*plot, format, size, text, fit);
-    if (kind == PlotKind::Contour) m_contour->setSelectedSegment(selectedRow());
+    if (kind == PlotKind::Contour) m_views->contour->setSelectedSegment(m_ui->segmentTable->currentIndex().row());
     if (bytes.isEmpty() && problem) *problem = tr("The picture could not be drawn.");
     return bytes;
 }

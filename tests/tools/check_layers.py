@@ -25,14 +25,15 @@ CORE_LAYERS = [
     ["timing", "export", "evaluation"],
     ["io"],
 ]
-# The app's folders sit on the whole core; the window (mainwindow.*, main.cpp, screenshot.*)
-# on top of them all.
+# The app's folders sit on the whole core; the main window's parts (window/) on them all, and
+# mainwindow.*, main.cpp and screenshot.* on top.
 APP_LAYERS = [
     ["widgets"],
     ["messages"],
     ["document", "engine"],
     ["models", "files", "export"],
     ["views", "dialogs"],
+    ["window"],
 ]
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/', re.M)

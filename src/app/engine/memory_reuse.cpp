@@ -1,5 +1,10 @@
 #include "engine/memory_reuse.h"
 
+// Any C library header defines __GLIBC__ (through <features.h>); without one before the test
+// below, the function compiled to nothing unless a unity build happened to put another file's
+// includes in front of it.
+#include <cstdlib>
+
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif

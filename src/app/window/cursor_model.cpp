@@ -1,0 +1,43 @@
+#include "window/cursor_model.h"
+
+#include <cmath>
+
+#include "common/angles.h"
+#include "engine/compute_engine.h"
+#include "window/result_hub.h"
+
+namespace cam {
+
+CursorModel::CursorModel(const ResultHub* results, const ComputeEngine* engine, QObject* parent)
+    : QObject(parent), m_results(results), m_engine(engine) {}
+
+void CursorModel::setAtAngle(double phi) {
+    const ComputeResultPtr& r = m_results->shown();
+    if (r) setTime(phi / r->omega);  // the instant the ray points there
+}
+
+void CursorModel::setAtPlotX(double x) {
+    const ComputeResultPtr& r = m_results->shown();
+    if (r) setTime(r->axis == PlotAxis::Angle ? degToRad(x) / r->omega : x);
+}
+
+void CursorModel::setTime(double t) {
+    const ComputeResultPtr& r = m_results->shown();
+    const ComputeResultPtr& latest = m_engine->latestResult();
+    if (!r || !latest || !latest->ok()) {
+        // Nothing computed for the project as it is: no state to read out.
+        m_t = t;
+        emit cleared();
+        return;
+    }
+    // Any instant, the mouse's or a joint's, is read within the turn: 0 <= t < T.
+    t = std::fmod(t, r->period);
+    if (t < 0.0) t += r->period;
+    if (t >= r->period) t = 0.0;
+    m_t = t;
+    // One state from the shared, immutable contour of the result: a few hundred nanoseconds.
+    const KinematicState s = stateAt(*r->contour, r->omega, t);
+    emit moved(s, r->axis == PlotAxis::Angle ? radToDeg(s.phi) : t);
+}
+
+}  // namespace cam
