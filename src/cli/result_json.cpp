@@ -106,7 +106,7 @@ Json followerAnalysisJson(const Loaded& loaded) {
                   {"rho_profile_min", one(a.rhoProfileMin)},
                   {"rho_pitch_min", one(a.rhoPitchMin)},
                   {"undercut", std::move(undercut)}});
-    if (model.spec().type == FollowerType::Flat) f["face_width"] = a.faceWidth;
+    if (followerKind(model.spec().type).flatFace) f["face_width"] = a.faceWidth;
     return f;
 }
 

@@ -313,11 +313,11 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
                      formatPoint(c.to.x(), c.to.y())),
             c.phi, true);
     }
-    const bool flat = result->follower->spec().type == FollowerType::Flat;
+    const bool flat = followerKind(result->follower->spec().type).flatFace;
     add(tr("Smallest radius of curvature of the profile: %1 at %2")
             .arg(millimetres(a.rhoProfileMin.value), degrees(a.rhoProfileMin.phi)),
         a.rhoProfileMin.phi, flat && a.rhoProfileMin.value <= 0.0);
-    if (result->follower->spec().type == FollowerType::Roller) {
+    if (followerKind(result->follower->spec().type).hasRadius) {
         add(tr("Smallest radius of curvature of the pitch curve: %1 at %2")
                 .arg(millimetres(a.rhoPitchMin.value), degrees(a.rhoPitchMin.phi)),
             a.rhoPitchMin.phi, false);

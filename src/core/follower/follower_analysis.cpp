@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "common/angles.h"
+#include "project/follower_kind.h"
 
 namespace cam {
 namespace {
@@ -77,7 +78,7 @@ FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega, doubl
     a.pressureReturn = extreme([](const FollowerState& s) { return s.pressureAngle; }, false);
     a.rhoProfileMin = extreme([](const FollowerState& s) { return s.rhoProfile; }, false);
     a.rhoPitchMin = extreme([](const FollowerState& s) { return s.rhoPitch; }, false);
-    if (model.spec().type == FollowerType::Flat) {
+    if (followerKind(model.spec().type).flatFace) {
         const double lo = extreme([](const FollowerState& s) { return s.sPhi[1]; }, false).value;
         const double hi = extreme([](const FollowerState& s) { return s.sPhi[1]; }, true).value;
         a.faceWidth = hi - lo;

@@ -9,9 +9,13 @@ namespace {
 
 /// Every kind, one row each, in FollowerType order.
 constexpr std::array<FollowerKind, 3> kKinds{{
-    {FollowerType::Knife, "knife", CAM_TRANSLATE_NOOP("FollowerKind", "Knife edge"), false, true},
-    {FollowerType::Roller, "roller", CAM_TRANSLATE_NOOP("FollowerKind", "Roller"), true, true},
-    {FollowerType::Flat, "flat", CAM_TRANSLATE_NOOP("FollowerKind", "Flat face"), false, false},
+    // type, name, title, hasRadius, canSwing, flatFace
+    {FollowerType::Knife, "knife", CAM_TRANSLATE_NOOP("FollowerKind", "Knife edge"), false, true,
+     false},
+    {FollowerType::Roller, "roller", CAM_TRANSLATE_NOOP("FollowerKind", "Roller"), true, true,
+     false},
+    {FollowerType::Flat, "flat", CAM_TRANSLATE_NOOP("FollowerKind", "Flat face"), false, false,
+     true},
 }};
 
 constexpr bool rowsInOrder() {

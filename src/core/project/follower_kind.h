@@ -23,6 +23,9 @@ struct FollowerKind {
     bool hasRadius;
     /// May ride a swinging arm (math.md §7: a flat face only translates).
     bool canSwing;
+    /// Touches the cam with a flat face: its checks report the face width the contact needs,
+    /// and a profile radius ≤ 0 (a concave stretch) is a problem.
+    bool flatFace;
 };
 
 /// @brief Every kind, in FollowerType order.
