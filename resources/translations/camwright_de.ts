@@ -1392,17 +1392,17 @@
 <context>
     <name>FollowerKind</name>
     <message>
-        <location filename="../../src/core/project/follower_kind.cpp" line="+12" />
+        <location filename="../../src/core/project/follower_kind.cpp" line="+13" />
         <source>Knife edge</source>
         <translation>Spitze (Messerkante)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>Roller</source>
         <translation>Rolle</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>Flat face</source>
         <translation>Flachstößel</translation>
     </message>
@@ -2403,6 +2403,116 @@
     </message>
 </context>
 <context>
+    <name>cam::ExportController</name>
+    <message>
+        <location filename="../../src/app/window/export_controller.cpp" line="+61" />
+        <source>E&amp;xport…</source>
+        <translation>E&amp;xportieren…</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Write the profile as CSV, DXF, SVG, G-code or a servo cam table, or a plot as a picture (Ctrl+E)</source>
+        <translation>Das Profil als CSV, DXF, SVG, G-Code oder Servo-Kurventabelle schreiben, oder ein Diagramm als Bild (Strg+E)</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Export Plot…</source>
+        <translation>Diagramm exportieren…</translation>
+    </message>
+    <message>
+        <location line="+67" />
+        <source>Nothing has been computed yet.</source>
+        <translation>Es wurde noch nichts berechnet.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The project has no follower that rides its cam: there is no pressure-angle plot.</source>
+        <translation>Das Projekt hat keinen Stößel, der seine Scheibe abtastet: es gibt kein Druckwinkel-Diagramm.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The project has no machining section: there is no %1 plot.</source>
+        <translation>Das Projekt hat keinen Bearbeitungsabschnitt: es gibt kein Diagramm „%1“.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The %1 plot is drawn only while the Machining panel is open (Ctrl+M).</source>
+        <translation>Das Diagramm „%1“ wird nur gezeichnet, während das Dock Zerspanung offen ist (Strg+M).</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>The picture could not be drawn.</source>
+        <translation>Das Bild konnte nicht gezeichnet werden.</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>PNG image (*.png)</source>
+        <translation>PNG-Bild (*.png)</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF-Dokument (*.pdf)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>SVG drawing (*.svg)</source>
+        <translation>SVG-Zeichnung (*.svg)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Export Plot</source>
+        <translation>Diagramm exportieren</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>%1 plot</source>
+        <translation>Diagramm „%1“</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>The project has no contour yet: Synthesize (F6) makes it from the design.</source>
+        <translation>Das Projekt hat noch keine Kontur: Synthetisieren (F6) erzeugt sie aus dem Entwurf.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The project has problems; correct them first:
+%1</source>
+        <translation>Das Projekt hat Fehler; beheben Sie sie zuerst:
+%1</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Exporting %1 to %2…</source>
+        <translation>Exportiere %1 nach %2…</translation>
+    </message>
+    <message>
+        <location line="+22" />
+        <source>Exported %1 to %2 (%3)</source>
+        <translation>%1 nach %2 exportiert (%3)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Export failed: %1</source>
+        <translation>Export fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 was not written.</source>
+        <translation>%1 wurde nicht geschrieben.</translation>
+    </message>
+</context>
+<context>
     <name>cam::ExportDialog</name>
     <message>
         <location filename="../../src/app/export/export_dialog.cpp" line="+52" />
@@ -3139,12 +3249,12 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+51" />
+        <location filename="../../src/app/mainwindow.cpp" line="+52" />
         <source>The recovery copy could not be written: %1</source>
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+114" />
+        <location line="+115" />
         <source>Cursor at %1</source>
         <translation>Cursor bei %1</translation>
     </message>
@@ -3152,113 +3262,6 @@
         <location line="+15" />
         <source>%1[*] — Camwright</source>
         <translation>%1[*] — Camwright</translation>
-    </message>
-    <message>
-        <location filename="../../src/app/mainwindow_exports.cpp" line="+53" />
-        <source>E&amp;xport…</source>
-        <translation>E&amp;xportieren…</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Write the profile as CSV, DXF, SVG, G-code or a servo cam table, or a plot as a picture (Ctrl+E)</source>
-        <translation>Das Profil als CSV, DXF, SVG, G-Code oder Servo-Kurventabelle schreiben, oder ein Diagramm als Bild (Strg+E)</translation>
-    </message>
-    <message>
-        <location line="+14" />
-        <source>Export Plot…</source>
-        <translation>Diagramm exportieren…</translation>
-    </message>
-    <message>
-        <location line="+69" />
-        <source>Nothing has been computed yet.</source>
-        <translation>Es wurde noch nichts berechnet.</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>The project has no follower that rides its cam: there is no pressure-angle plot.</source>
-        <translation>Das Projekt hat keinen Stößel, der seine Scheibe abtastet: es gibt kein Druckwinkel-Diagramm.</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>The project has no machining section: there is no %1 plot.</source>
-        <translation>Das Projekt hat keinen Bearbeitungsabschnitt: es gibt kein Diagramm „%1“.</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>The %1 plot is drawn only while the Machining panel is open (Ctrl+M).</source>
-        <translation>Das Diagramm „%1“ wird nur gezeichnet, während das Dock Zerspanung offen ist (Strg+M).</translation>
-    </message>
-    <message>
-        <location line="+9" />
-        <source>%1 — %2</source>
-        <translation>%1 — %2</translation>
-    </message>
-    <message>
-        <location line="+13" />
-        <source>The picture could not be drawn.</source>
-        <translation>Das Bild konnte nicht gezeichnet werden.</translation>
-    </message>
-    <message>
-        <location line="+10" />
-        <source>PNG image (*.png)</source>
-        <translation>PNG-Bild (*.png)</translation>
-    </message>
-    <message>
-        <location line="+0" />
-        <source>PDF document (*.pdf)</source>
-        <translation>PDF-Dokument (*.pdf)</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>SVG drawing (*.svg)</source>
-        <translation>SVG-Zeichnung (*.svg)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Export Plot</source>
-        <translation>Diagramm exportieren</translation>
-    </message>
-    <message>
-        <location line="+24" />
-        <source>%1 plot</source>
-        <translation>Diagramm „%1“</translation>
-    </message>
-    <message>
-        <location line="+18" />
-        <source>The project has no contour yet: Synthesize (F6) makes it from the design.</source>
-        <translation>Das Projekt hat noch keine Kontur: Synthetisieren (F6) erzeugt sie aus dem Entwurf.</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>The project has problems; correct them first:
-%1</source>
-        <translation>Das Projekt hat Fehler; beheben Sie sie zuerst:
-%1</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>Exporting %1 to %2…</source>
-        <translation>Exportiere %1 nach %2…</translation>
-    </message>
-    <message>
-        <location line="+22" />
-        <source>Exported %1 to %2 (%3)</source>
-        <translation>%1 nach %2 exportiert (%3)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Export failed: %1</source>
-        <translation>Export fehlgeschlagen: %1</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>Export</source>
-        <translation>Exportieren</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>%1 was not written.</source>
-        <translation>%1 wurde nicht geschrieben.</translation>
     </message>
 </context>
 <context>

@@ -25,6 +25,7 @@
 #include "views/state_readout.h"
 #include "window/cursor_model.h"
 #include "window/dock_layout.h"
+#include "window/export_controller.h"
 #include "window/play_controller.h"
 #include "window/result_hub.h"
 #include "window/status_labels.h"
@@ -62,7 +63,8 @@ MainWindow::MainWindow(QWidget* parent)
     m_labels = new StatusLabels(statusBar(), m_document, m_engine);
     m_actions = new WindowActions(this, *m_ui, m_document, m_files, *m_views);
     connect(m_actions, &WindowActions::viewChanged, this, &MainWindow::requestCompute);
-    setUpExports();
+    m_exports = new ExportController(this, *m_ui, m_document, m_engine, *m_views, m_results);
+    connect(m_exports, &ExportController::finished, this, &MainWindow::exportFinished);
     m_play = new PlayController(m_cursor, this);
     m_ui->mainToolBar->addSeparator();
     m_ui->mainToolBar->addAction(m_play->action());
@@ -233,6 +235,15 @@ MachiningPanel* MainWindow::machiningPanel() const { return m_views->machining; 
 JointsPanel* MainWindow::jointsPanel() const { return m_views->joints; }
 PathStudyPanel* MainWindow::pathStudyPanel() const { return m_views->pathStudy; }
 MotionDesignPanel* MainWindow::motionDesignPanel() const { return m_views->design; }
+
+void MainWindow::showMachiningPanel() { m_ui->machiningDock->show(); }
+QCustomPlot* MainWindow::plotWidget(PlotKind kind) const { return m_exports->plotWidget(kind); }
+std::vector<PlotKind> MainWindow::drawablePlots() const { return m_exports->drawablePlots(); }
+QByteArray MainWindow::plotPicture(PlotKind kind, PictureFormat format, QSize size,
+                                   QString* problem) {
+    return m_exports->plotPicture(kind, format, size, problem);
+}
+void MainWindow::exportFile(const ExportRequest& request) { m_exports->exportFile(request); }
 
 QString MainWindow::contourThroughPoints(const QString& pointsText, int rule, double bulge) {
     const EditOutcome outcome = ContourEdits::contourThroughPoints(

@@ -44,6 +44,7 @@ class StatusLabels;
 class PlayController;
 class SynthesisController;
 class RecoveryPrompt;
+class ExportController;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -158,15 +159,6 @@ private:
     void wireResults();
     void wireCursor();
     void requestCompute();
-    /// File → Export… and right-click → Export Plot… on every plot (mainwindow_exports.cpp).
-    void setUpExports();
-    void askExportPlot(PlotKind kind);
-    void finishExport(const QString& path, const QString& what, qint64 bytes,
-                      const QString& problem);
-    /// The project's file name without .cam.json ("untitled" before it has one).
-    [[nodiscard]] QString exportBaseName() const;
-    /// The project's name, or without one its file's base name: the title of a picture.
-    [[nodiscard]] QString exportTitle() const;
     void updateTitle();
 
     std::unique_ptr<Ui::MainWindow> m_ui;
@@ -183,6 +175,7 @@ private:
     PlayController* m_play = nullptr;
     SynthesisController* m_synthesis = nullptr;
     RecoveryPrompt* m_recovery = nullptr;
+    ExportController* m_exports = nullptr;
 };
 
 }  // namespace cam

@@ -1,5 +1,4 @@
-// The main window's exports: File → Export…, right-click → Export Plot… and the pictures of
-// the plots (mainwindow.h).
+#include "window/export_controller.h"
 
 #include <qcustomplot.h>
 #include <QApplication>
@@ -7,6 +6,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFutureWatcher>
+#include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
@@ -19,7 +19,6 @@
 #include "engine/compute_engine.h"
 #include "export/export_dialog.h"
 #include "io/atomic_file.h"
-#include "mainwindow.h"
 #include "ui_mainwindow.h"
 #include "views/contour_view.h"
 #include "views/follower_panel.h"
@@ -49,25 +48,34 @@ ExportOutcome writeExport(const QString& path, std::string_view content) {
 
 }  // namespace
 
-void MainWindow::setUpExports() {
-    auto* exportAction = new QAction(tr("E&xport…"), this);
+ExportController::ExportController(QMainWindow* window, Ui::MainWindow& ui,
+                                   ProjectDocument* document, const ComputeEngine* engine,
+                                   DockLayout& views, const ResultHub* results)
+    : QObject(window),
+      m_window(window),
+      m_ui(ui),
+      m_document(document),
+      m_engine(engine),
+      m_views(views),
+      m_results(results) {
+    auto* exportAction = new QAction(tr("E&xport…"), m_window);
     exportAction->setObjectName("actionExport");
     exportAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
     exportAction->setToolTip(
         tr("Write the profile as CSV, DXF, SVG, G-code or a servo cam table, or a plot as a "
            "picture (Ctrl+E)"));
-    m_ui->menuFile->insertAction(m_ui->actionQuit, exportAction);
-    m_ui->menuFile->insertSeparator(m_ui->actionQuit);
+    m_ui.menuFile->insertAction(m_ui.actionQuit, exportAction);
+    m_ui.menuFile->insertSeparator(m_ui.actionQuit);
     connect(exportAction, &QAction::triggered, this, [this] {
         ExportDialog dialog(m_document->project(), m_document->displayName(), exportBaseName(),
-                            drawablePlots(), this);
+                            drawablePlots(), m_window);
         if (dialog.exec() == QDialog::Accepted) exportFile(dialog.request());
     });
     for (PlotKind kind : kPlotKinds) {
         QCustomPlot* plot = plotWidget(kind);
         plot->setContextMenuPolicy(Qt::CustomContextMenu);
         connect(plot, &QWidget::customContextMenuRequested, this, [this, kind, plot](QPoint at) {
-            QMenu menu(this);
+            QMenu menu(m_window);
             QAction* a = menu.addAction(tr("Export Plot…"));
             a->setObjectName("actionExportPlot");
             connect(a, &QAction::triggered, this, [this, kind] { askExportPlot(kind); });
@@ -76,12 +84,12 @@ void MainWindow::setUpExports() {
     }
 }
 
-QString MainWindow::exportTitle() const {
+QString ExportController::exportTitle() const {
     const std::string& name = m_document->project().name;
     return name.empty() ? exportBaseName() : QString::fromStdString(name);
 }
 
-QString MainWindow::exportBaseName() const {
+QString ExportController::exportBaseName() const {
     const QString path = m_document->filePath();
     if (path.isEmpty()) return "untitled";
     QString name = QFileInfo(path).fileName();
@@ -94,32 +102,30 @@ QString MainWindow::exportBaseName() const {
     return name;
 }
 
-QCustomPlot* MainWindow::plotWidget(PlotKind kind) const {
+QCustomPlot* ExportController::plotWidget(PlotKind kind) const {
     switch (kind) {
         case PlotKind::Contour:
-            return m_views->contour;
+            return m_views.contour;
         case PlotKind::Velocity:
-            return m_views->plots->plot(0);
+            return m_views.plots->plot(0);
         case PlotKind::Acceleration:
-            return m_views->plots->plot(1);
+            return m_views.plots->plot(1);
         case PlotKind::Jerk:
-            return m_views->plots->plot(2);
+            return m_views.plots->plot(2);
         case PlotKind::Feed:
-            return m_views->machining->feedPlot();
+            return m_views.machining->feedPlot();
         case PlotKind::AxisAcceleration:
-            return m_views->machining->accelerationPlot();
+            return m_views.machining->accelerationPlot();
         case PlotKind::PressureAngle:
-            return m_views->follower->pressurePlot();
+            return m_views.follower->pressurePlot();
     }
     return nullptr;
 }
 
-void MainWindow::showMachiningPanel() { m_ui->machiningDock->show(); }
-
-std::vector<PlotKind> MainWindow::drawablePlots() const {
+std::vector<PlotKind> ExportController::drawablePlots() const {
     std::vector<PlotKind> kinds;
     if (!m_results->shown()) return kinds;
-    const bool machining = !m_ui->machiningDock->isHidden() &&
+    const bool machining = !m_ui.machiningDock->isHidden() &&
                            m_document->project().machining.has_value() &&
                            m_engine->latestTiming() != nullptr;
     for (PlotKind kind : kPlotKinds) {
@@ -132,8 +138,8 @@ std::vector<PlotKind> MainWindow::drawablePlots() const {
     return kinds;
 }
 
-QByteArray MainWindow::plotPicture(PlotKind kind, PictureFormat format, QSize size,
-                                   QString* problem) {
+QByteArray ExportController::plotPicture(PlotKind kind, PictureFormat format, QSize size,
+                                         QString* problem) {
     const std::vector<PlotKind> drawable = drawablePlots();
     if (std::find(drawable.begin(), drawable.end(), kind) == drawable.end()) {
         if (problem) {
@@ -156,21 +162,22 @@ QByteArray MainWindow::plotPicture(PlotKind kind, PictureFormat format, QSize si
     text.title = tr("%1 — %2").arg(exportTitle(), plotKindTitle(kind));
     // The stacked plots share the bottom one's x axis label.
     if (kind == PlotKind::Velocity || kind == PlotKind::Acceleration) {
-        text.xLabel = m_views->plots->plot(2)->xAxis->label();
+        text.xLabel = m_views.plots->plot(2)->xAxis->label();
     }
     std::function<void()> fit;
     if (kind == PlotKind::Contour) {
         // The drag handles of the selected segment are for editing, not for the picture.
-        m_views->contour->setSelectedSegment(-1);
-        fit = [this] { m_views->contour->fitToViewport(); };
+        m_views.contour->setSelectedSegment(-1);
+        fit = [this] { m_views.contour->fitToViewport(); };
     }
     QByteArray bytes = renderPlotPicture(*plot, format, size, text, fit);
-    if (kind == PlotKind::Contour) m_views->contour->setSelectedSegment(m_ui->segmentTable->currentIndex().row());
+    if (kind == PlotKind::Contour)
+        m_views.contour->setSelectedSegment(m_ui.segmentTable->currentIndex().row());
     if (bytes.isEmpty() && problem) *problem = tr("The picture could not be drawn.");
     return bytes;
 }
 
-void MainWindow::askExportPlot(PlotKind kind) {
+void ExportController::askExportPlot(PlotKind kind) {
     QSettings settings;
     const QString folder = settings.value("export/folder", QDir::homePath()).toString();
     const QString suffix = settings.value("export/plotSuffix", "png").toString();
@@ -179,7 +186,7 @@ void MainWindow::askExportPlot(PlotKind kind) {
     const QString png = tr("PNG image (*.png)"), pdf = tr("PDF document (*.pdf)"),
                   svg = tr("SVG drawing (*.svg)");
     QString selected = suffix == "pdf" ? pdf : suffix == "svg" ? svg : png;
-    QString path = QFileDialog::getSaveFileName(this, tr("Export Plot"), proposed,
+    QString path = QFileDialog::getSaveFileName(m_window, tr("Export Plot"), proposed,
                                                 png + ";;" + pdf + ";;" + svg, &selected);
     if (path.isEmpty()) return;
     std::optional<PictureFormat> format = pictureFormatOfFile(path);
@@ -201,7 +208,7 @@ void MainWindow::askExportPlot(PlotKind kind) {
     exportFile(request);
 }
 
-void MainWindow::exportFile(const ExportRequest& request) {
+void ExportController::exportFile(const ExportRequest& request) {
     const QString what = request.format == ExportFormat::Picture
                              ? tr("%1 plot").arg(plotKindTitle(request.plot))
                              : exportFormatTitle(request.format);
@@ -231,7 +238,7 @@ void MainWindow::exportFile(const ExportRequest& request) {
                          .arg(problemText(m_document->diagnostics())));
         return;
     }
-    statusBar()->showMessage(
+    m_window->statusBar()->showMessage(
         tr("Exporting %1 to %2…").arg(what, QDir::toNativeSeparators(request.path)));
     // The worker gets a copy of the project: edits meanwhile do not reach it.
     auto* watcher = new QFutureWatcher<ExportOutcome>(this);
@@ -249,24 +256,25 @@ void MainWindow::exportFile(const ExportRequest& request) {
     }));
 }
 
-void MainWindow::finishExport(const QString& path, const QString& what, qint64 bytes,
-                              const QString& problem) {
+void ExportController::finishExport(const QString& path, const QString& what, qint64 bytes,
+                                    const QString& problem) {
     const QString shown = QDir::toNativeSeparators(path);
     if (problem.isEmpty()) {
-        statusBar()->showMessage(
+        m_window->statusBar()->showMessage(
             tr("Exported %1 to %2 (%3)").arg(what, shown, QLocale().formattedDataSize(bytes)),
             10000);
     } else {
-        statusBar()->showMessage(tr("Export failed: %1").arg(shown), 10000);
+        m_window->statusBar()->showMessage(tr("Export failed: %1").arg(shown), 10000);
         // Not modal for the event loop: the window stays live, tests can read and close it.
-        auto* box = new QMessageBox(QMessageBox::Warning, tr("Export"),
-                                    tr("%1 was not written.").arg(shown), QMessageBox::Ok, this);
+        auto* box =
+            new QMessageBox(QMessageBox::Warning, tr("Export"),
+                            tr("%1 was not written.").arg(shown), QMessageBox::Ok, m_window);
         box->setObjectName("exportProblemBox");
         box->setInformativeText(problem);
         box->setAttribute(Qt::WA_DeleteOnClose);
         box->open();
     }
-    emit exportFinished(path, problem);
+    emit finished(path, problem);
 }
 
 }  // namespace cam
