@@ -6,8 +6,9 @@ set -euo pipefail
 packages=(
     # toolchain
     build-essential cmake ninja-build pkg-config
-    # the sanitizer and fuzzing builds (the debug and fuzz presets): clang with its runtimes
-    clang libclang-rt-14-dev
+    # the sanitizer and fuzzing builds (the debug and fuzz presets): clang with its runtimes;
+    # clang-format, whose style .ci/check-format enforces
+    clang libclang-rt-14-dev clang-format
     # libraries
     qt6-base-dev qt6-base-dev-tools qt6-svg-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     libqt6svg6 qt6-qpa-plugins libgl-dev

@@ -94,9 +94,10 @@ TEST(DesktopManners, KeyboardShortcutsListsEveryShortcut) {
 TEST(DesktopManners, AboutNamesTheVersionLicenseAndLibraries) {
     MainWindow window;
     const QString about = window.aboutText();
-    for (const char* word : {"GPL-3.0-or-later", "Qt ", "QCustomPlot 2.", "Eigen 3.",
-                             "nlohmann-json) 3."}) {
-        EXPECT_TRUE(about.contains(QLatin1String(word))) << word << " not in " << about.toStdString();
+    for (const char* word :
+         {"GPL-3.0-or-later", "Qt ", "QCustomPlot 2.", "Eigen 3.", "nlohmann-json) 3."}) {
+        EXPECT_TRUE(about.contains(QLatin1String(word)))
+            << word << " not in " << about.toStdString();
     }
     EXPECT_TRUE(about.contains(QString::fromLatin1(qVersion())));
 }

@@ -7,10 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "io/project_json.h"
-#include "toolpath/biarc.h"
 #include "spline/teach_in.h"
 #include "test_support.h"
 #include "timing_reference.h"
+#include "toolpath/biarc.h"
 
 namespace cam {
 namespace {

@@ -6,9 +6,9 @@
 
 #include "common/angles.h"
 #include "contour/contour.h"
-#include "toolpath/biarc.h"
 #include "spline/teach_in.h"
 #include "timing/machining_time.h"
+#include "toolpath/biarc.h"
 
 namespace cam {
 namespace {

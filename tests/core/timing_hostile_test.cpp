@@ -23,8 +23,8 @@
 #include "timing/machining_time.h"
 #include "timing/seed_method.h"
 #include "timing/timing_job.h"
-#include "toolpath/tool_path.h"
 #include "timing_reference.h"
+#include "toolpath/tool_path.h"
 
 namespace cam {
 namespace {

@@ -28,8 +28,8 @@
 
 #include "test_support.h"
 #include "timing/machining_time.h"
-#include "toolpath/tool_path.h"
 #include "timing_reference.h"
+#include "toolpath/tool_path.h"
 
 namespace cam {
 namespace {

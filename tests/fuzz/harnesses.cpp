@@ -283,9 +283,9 @@ void checkTiming(const TimingResult& r, const ToolPath& path, const std::string&
                who + " length " + formatNumber(r.lengthMm));
     // Moving takes time (issue 27: a plunge along an axis without an acceleration limit took
     // 0 s). Only below 2e-12 mm may a path be too short for the seed to take a step.
-    FUZZ_CHECK(!(r.lengthMm > 1e-9) || r.timeS > 0.0,
-               who + " takes " + formatNumber(r.timeS) + " s for " + formatNumber(r.lengthMm) +
-                   " mm");
+    FUZZ_CHECK(
+        !(r.lengthMm > 1e-9) || r.timeS > 0.0,
+        who + " takes " + formatNumber(r.timeS) + " s for " + formatNumber(r.lengthMm) + " mm");
     FUZZ_CHECK(r.segments.size() == path.segments.size(), who + ": one timing per segment");
     for (const SegmentTiming& s : r.segments) {
         FUZZ_CHECK(std::isfinite(s.timeS) && s.timeS >= 0.0,

@@ -48,7 +48,8 @@ TEST(ValidFiles, ReferenceCamsAndExamplesLoad) {
 }
 
 TEST(ValidFiles, TheCorpusControlsLoad) {
-    for (const char* name : {"valid-base.cam.json", "valid-bom.cam.json", "valid-design.cam.json"}) {
+    for (const char* name :
+         {"valid-base.cam.json", "valid-bom.cam.json", "valid-design.cam.json"}) {
         const auto p = loadProjectFile(test::dataPath(std::string("invalid/") + name));
         EXPECT_TRUE(p.ok()) << name << ": " << (p.ok() ? "" : p.errors().front().text());
     }
