@@ -157,7 +157,7 @@ void BM_EditToRedraw(benchmark::State& state) {
         state.counters["all_views_ms"] = allViewsMs;
     }
 }
-// 40 edits, each timed alone: the median is the figure the README reports.
+// 40 edits, each timed alone: the median is the figure docs/performance.md reports.
 // Args: follower (0: the six-lobe cam as it is; 1: with a swinging roller and the Follower dock
 // shown), warm (1: edits of a window edited before; 0: the first edit of a window just opened).
 BENCHMARK(BM_EditToRedraw)

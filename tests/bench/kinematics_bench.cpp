@@ -1,5 +1,5 @@
 // Kinematics of one full turn of the six-lobe cam into every array of SampledTurn.
-// Compare with tests/bench/numpy_baseline.py, run in the same session (see README).
+// Compare with tests/bench/numpy_baseline.py, run in the same session (see docs/performance.md).
 
 #include <benchmark/benchmark.h>
 

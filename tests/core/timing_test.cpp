@@ -379,9 +379,9 @@ TEST(TimingSeed, NonDefaultStep) {
                          seedReferenceLine(a, {30, 40, 120}, diag), 1e-12));
 }
 
-// Fact (for the README): the seed charges every step at its END speed, l/x, although the
-// speed rises during the step, so on a long line it is faster than the exact trapezoid.
-// 100 mm, a = 500, F = 100: exact stop 100/100 + 100/500 = 1.2 s.
+// Fact (for docs/machining-time.md): the seed charges every step at its END speed, l/x, although
+// the speed rises during the step, so on a long line it is faster than the exact trapezoid. 100 mm,
+// a = 500, F = 100: exact stop 100/100 + 100/500 = 1.2 s.
 TEST(TimingSeed, FasterThanExactStopOnLongLines) {
     const MachineLimits limits = limitsOf({500, 500, 200}, 100);
     const PathSegment line = PathSegment::line({0, 0, 0}, {100, 0, 0});

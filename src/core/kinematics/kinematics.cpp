@@ -123,8 +123,8 @@ void runSegment(const Evaluate& evaluate, const Outputs& o, const TurnAngles& an
     }
 }
 
-// The loops above are compiled once per instruction set (common/simd.h); see the README for
-// the figures.
+// The loops above are compiled once per instruction set (common/simd.h); see docs/performance.md
+// for the figures.
 CAMWRIGHT_MULTIVERSION
 void runArcSegment(const Arc::Kernel& kernel, const Outputs& o, const TurnAngles& angles,
                    std::size_t k0, std::size_t k1, double omega, double dt, std::int32_t seg) {
