@@ -164,6 +164,19 @@ inline std::string writeTempFile(const std::string& name, const std::string& tex
     return p.string();
 }
 
+/// The same, in a file of the running test's own ("PREFIX_Suite_Test_NAME"): ctest runs a
+/// file's tests side by side, and one rewriting a file that another's program is reading
+/// hands that one a truncated file.
+inline std::string writeTestTempFile(const std::string& prefix, const std::string& name,
+                                     const std::string& text) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string unique = prefix + "_" + info->test_suite_name() + "_" + info->name() + "_" + name;
+    for (char& c : unique) {
+        if (c == '/') c = '-';  // parameterised tests: "Cams/ExportEveryCam"
+    }
+    return writeTempFile(unique, text);
+}
+
 /// Writes `text` to `path` byte for byte.
 inline void writeText(const std::string& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;

@@ -7,6 +7,7 @@
 #include <QTableView>
 #include <QToolBar>
 
+#include "common/angles.h"
 #include "document/contour_edits.h"
 #include "document/project_document.h"
 #include "engine/compute_engine.h"
@@ -23,6 +24,7 @@
 #include "views/path_study_panel.h"
 #include "views/plot_data.h"
 #include "views/state_readout.h"
+#include "widgets/quantity_format.h"
 #include "window/cursor_model.h"
 #include "window/dock_layout.h"
 #include "window/export_controller.h"

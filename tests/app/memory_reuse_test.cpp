@@ -21,8 +21,18 @@
 #endif
 #endif
 
+// The policy is glibc's; the address sanitizer brings its own allocator.
+#if defined(__GLIBC__) && !defined(CAMWRIGHT_ADDRESS_SANITIZER)
+#define CAMWRIGHT_GLIBC_ALLOCATOR 1
+#else
+#define CAMWRIGHT_GLIBC_ALLOCATOR 0
+#endif
+
 namespace cam {
 namespace {
+
+constexpr bool kGlibcAllocator = CAMWRIGHT_GLIBC_ALLOCATOR;
+constexpr const char* kNotGlibcAllocator = "tunes glibc's allocator only (not the sanitizer's)";
 
 long minorFaults() {
     rusage usage{};
@@ -34,11 +44,8 @@ long minorFaults() {
 // heap (below its break) instead of a mapping of its own. It once compiled to nothing in a
 // build whose unity batch put no C library header before its glibc test.
 TEST(MemoryReuse, BigBlocksComeFromTheHeapOnceTheProcessKeepsFreedMemory) {
-#if defined(CAMWRIGHT_ADDRESS_SANITIZER)
-    GTEST_SKIP() << "the address sanitizer brings its own allocator";
-#elif !defined(__GLIBC__)
-    GTEST_SKIP() << "tunes glibc's allocator only";
-#else
+    if (!kGlibcAllocator) GTEST_SKIP() << kNotGlibcAllocator;
+#if CAMWRIGHT_GLIBC_ALLOCATOR
     keepFreedMemoryForReuse();
     void* block = std::malloc(1 << 20);
     ASSERT_NE(block, nullptr);
@@ -49,11 +56,8 @@ TEST(MemoryReuse, BigBlocksComeFromTheHeapOnceTheProcessKeepsFreedMemory) {
 }
 
 TEST(MemoryReuse, AnEditsComputationTouchesFewNewPages) {
-#if defined(CAMWRIGHT_ADDRESS_SANITIZER)
-    GTEST_SKIP() << "the address sanitizer brings its own allocator";
-#elif !defined(__GLIBC__)
-    GTEST_SKIP() << "tunes glibc's allocator only";
-#else
+    if (!kGlibcAllocator) GTEST_SKIP() << kNotGlibcAllocator;
+#if CAMWRIGHT_GLIBC_ALLOCATOR
     keepFreedMemoryForReuse();
     Project p = test::loadExample();
     p.samplesPerTurn = 100'000;

@@ -16,7 +16,7 @@ namespace cam {
 namespace {
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-    return test::writeTempFile("camwright_timing_" + name, text);
+    return test::writeTestTempFile("camwright_timing", name, text);
 }
 
 // The reference path as a point list: the bulge tan(π/8) makes the 90° arc.

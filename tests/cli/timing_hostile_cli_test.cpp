@@ -21,7 +21,7 @@ namespace cam {
 namespace {
 
 std::string writeHostileTemp(const std::string& name, const std::string& text) {
-    return test::writeTempFile("camwright_hostile_" + name, text);
+    return test::writeTestTempFile("camwright_hostile", name, text);
 }
 
 /// A point list of the arcs: (10k, 0, 0) with bulge `bulge` (or ±bulge in turn).

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/angles.h"
+#include "common/kind_table.h"
 #include "common/translate_marker.h"
 
 namespace cam {
@@ -149,19 +150,17 @@ constexpr std::array<MotionLawKind, kMotionLawCount> kLaws{{
      LawShape::BoundaryValues, nullptr, nullptr},
 }};
 
-constexpr bool rowsInOrder() {
-    for (std::size_t k = 0; k < kLaws.size(); ++k) {
-        if (static_cast<std::size_t>(kLaws[k].type) != k) return false;
-        if ((kLaws[k].shape == LawShape::Normalised) != (kLaws[k].normalised != nullptr)) {
-            return false;
-        }
-        if ((kLaws[k].normalised == nullptr) != (kLaws[k].coefficients == nullptr)) return false;
+/// A function and coefficients for each normalised law, and only for those.
+constexpr bool lawFunctionsMatchShapes() {
+    for (const MotionLawKind& law : kLaws) {
+        if ((law.shape == LawShape::Normalised) != (law.normalised != nullptr)) return false;
+        if ((law.normalised == nullptr) != (law.coefficients == nullptr)) return false;
     }
     return true;
 }
-static_assert(rowsInOrder(),
-              "one row per law, in MotionLawType order, a function for each "
-              "normalised law and only for those");
+static_assert(rowsFollowTheirEnum(kLaws, &MotionLawKind::type),
+              "one row per law, in MotionLawType order");
+static_assert(lawFunctionsMatchShapes(), "a function for each normalised law and only for those");
 
 }  // namespace
 

@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "common/kind_table.h"
 #include "common/translate_marker.h"
 #include "export/cam_table.h"
 
@@ -81,13 +82,8 @@ constexpr std::array<ExportFormatKind, 6> kFormats{{
      kPictureDialects},
 }};
 
-constexpr bool rowsInOrder() {
-    for (std::size_t k = 0; k < kFormats.size(); ++k) {
-        if (static_cast<std::size_t>(kFormats[k].id) != k) return false;
-    }
-    return true;
-}
-static_assert(rowsInOrder(), "one row per export format, in ExportFormatId order");
+static_assert(rowsFollowTheirEnum(kFormats, &ExportFormatKind::id),
+              "one row per export format, in ExportFormatId order");
 
 }  // namespace
 

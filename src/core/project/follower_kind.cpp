@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "common/kind_table.h"
 #include "common/translate_marker.h"
 
 namespace cam {
@@ -18,13 +19,8 @@ constexpr std::array<FollowerKind, 3> kKinds{{
      true},
 }};
 
-constexpr bool rowsInOrder() {
-    for (std::size_t k = 0; k < kKinds.size(); ++k) {
-        if (static_cast<std::size_t>(kKinds[k].type) != k) return false;
-    }
-    return true;
-}
-static_assert(rowsInOrder(), "one row per follower kind, in FollowerType order");
+static_assert(rowsFollowTheirEnum(kKinds, &FollowerKind::type),
+              "one row per follower kind, in FollowerType order");
 
 }  // namespace
 
