@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
+#include <vector>
 
 #include "document/commands.h"
 #include "models/delegates.h"
 #include "project/follower_kind.h"
 #include "views/axis_format.h"
+#include "views/contour_snapping.h"
 #include "views/palette.h"
 #include "views/plot_redraw.h"
 #include "views/stale_label.h"
@@ -16,31 +17,6 @@
 namespace cam {
 namespace {
 constexpr double kHandlePickPixels = 9.0;
-
-/// The grid step as mantissa × 10^exponent, mantissa 1, 2 or 5.
-struct GridStep {
-    double mantissa = 1.0;
-    int exponent = 0;
-    [[nodiscard]] double value() const { return multiple(1.0); }
-    /// n steps, the double nearest the decimal n·mantissa·10^exponent (0.3, not
-    /// 0.30000000000000004).
-    [[nodiscard]] double multiple(double n) const {
-        const double scale = std::pow(10.0, std::abs(exponent));
-        return exponent >= 0 ? n * mantissa * scale : n * mantissa / scale;
-    }
-    [[nodiscard]] double round(double v) const { return multiple(std::round(v / value())); }
-};
-
-GridStep gridStepFor(double minimumMm) {
-    if (!(minimumMm > 0.0) || !std::isfinite(minimumMm)) return {};
-    const int exponent = static_cast<int>(std::floor(std::log10(minimumMm)));
-    for (double mantissa : {1.0, 2.0, 5.0}) {
-        const GridStep step{mantissa, exponent};
-        if (step.value() >= minimumMm) return step;
-    }
-    return {1.0, exponent + 1};
-}
-
 }  // namespace
 
 ContourView::ContourView(ProjectDocument* document, QWidget* parent)
@@ -471,54 +447,34 @@ ContourView::Handle ContourView::handleAt(const QPointF& pixel) const {
     return Handle::None;
 }
 
-double ContourView::gridStep() const {
-    const double mmPerPixel = std::abs(xAxis->pixelToCoord(1.0) - xAxis->pixelToCoord(0.0));
-    return gridStepFor(kGridPixels * mmPerPixel).value();
+double ContourView::mmPerPixel() const {
+    return std::abs(xAxis->pixelToCoord(1.0) - xAxis->pixelToCoord(0.0));
 }
+
+GridStep ContourView::grid() const { return gridStepFor(kGridPixels * mmPerPixel()); }
+
+double ContourView::gridStep() const { return grid().value(); }
 
 Eigen::Vector2d ContourView::snap(const QPointF& pixel, Qt::KeyboardModifiers modifiers,
                                   const Eigen::Vector2d* origin, int skipSegment) const {
-    Eigen::Vector2d p(xAxis->pixelToCoord(pixel.x()), yAxis->pixelToCoord(pixel.y()));
-    if (!(modifiers & Qt::AltModifier)) {
-        const double mmPerPixel = std::abs(xAxis->pixelToCoord(1.0) - xAxis->pixelToCoord(0.0));
-        // The nearest of the rotation centre, the arcs' centres and the joints, if close.
-        std::optional<Eigen::Vector2d> nearest;
-        double best = kSnapPixels * mmPerPixel;
-        const auto consider = [&](const Eigen::Vector2d& q) {
-            const double d = (q - p).norm();
-            if (std::isfinite(d) && d <= best) {
-                best = d;
-                nearest = q;
-            }
-        };
-        consider(Eigen::Vector2d::Zero());
-        // The centres from the document (current while dragging); the joints as the engine
-        // computed and drew them, so that a mouse move evaluates no segment on this thread.
-        const auto& contour = m_document->project().contour;
-        for (std::size_t k = 0; k < contour.size(); ++k) {
-            if (static_cast<int>(k) == skipSegment) continue;
-            if (const Arc* arc = contour[k].as<Arc>()) consider(arc->center);
-        }
-        for (auto it = m_joints->data()->constBegin(); it != m_joints->data()->constEnd(); ++it) {
-            consider({it->key, it->value});
-        }
-        if (nearest) {
-            p = *nearest;
-        } else {
-            const GridStep step = gridStepFor(kGridPixels * mmPerPixel);
-            p = {step.round(p.x()), step.round(p.y())};
-        }
+    const Eigen::Vector2d p(xAxis->pixelToCoord(pixel.x()), yAxis->pixelToCoord(pixel.y()));
+    // The rotation centre; the centres from the document (current while dragging); the joints
+    // as the engine computed and drew them, so that a mouse move evaluates no segment on this
+    // thread.
+    const auto& contour = m_document->project().contour;
+    std::vector<Eigen::Vector2d> candidates;
+    candidates.reserve(1 + contour.size() + static_cast<std::size_t>(m_joints->data()->size()));
+    candidates.emplace_back(0.0, 0.0);
+    for (std::size_t k = 0; k < contour.size(); ++k) {
+        if (static_cast<int>(k) == skipSegment) continue;
+        if (const Arc* arc = contour[k].as<Arc>()) candidates.push_back(arc->center);
     }
-    if (origin && (modifiers & Qt::ShiftModifier)) {
-        // Keep the axis along which the mouse moved less.
-        const Eigen::Vector2d raw(xAxis->pixelToCoord(pixel.x()), yAxis->pixelToCoord(pixel.y()));
-        if (std::abs(raw.x() - origin->x()) >= std::abs(raw.y() - origin->y())) {
-            p.y() = origin->y();
-        } else {
-            p.x() = origin->x();
-        }
+    for (auto it = m_joints->data()->constBegin(); it != m_joints->data()->constEnd(); ++it) {
+        candidates.emplace_back(it->key, it->value);
     }
-    return p;
+    return snapPoint(p, candidates, kSnapPixels * mmPerPixel(), grid(), modifiers,
+                     origin ? std::optional<Eigen::Vector2d>(*origin) : std::nullopt)
+        .point;
 }
 
 void ContourView::beginPointPick() {
@@ -597,12 +553,8 @@ void ContourView::mouseMoveEvent(QMouseEvent* event) {
             text = tr("Move centre of segment %1").arg(m_selected);
         } else if (arc) {
             // The radius itself snaps to the grid (Alt: not at all).
-            double radius = std::hypot(x - arc->center.x(), y - arc->center.y());
-            if (!(event->modifiers() & Qt::AltModifier)) {
-                radius = gridStepFor(kGridPixels *
-                                     std::abs(xAxis->pixelToCoord(1.0) - xAxis->pixelToCoord(0.0)))
-                             .round(radius);
-            }
+            const double radius = snapLength(std::hypot(x - arc->center.x(), y - arc->center.y()),
+                                             grid(), event->modifiers());
             arc->radius = std::max(1e-3, radius);
             text = tr("Change radius of segment %1").arg(m_selected);
         }

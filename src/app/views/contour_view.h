@@ -10,6 +10,7 @@
 #include <array>
 
 #include "engine/compute_result.h"
+#include "views/contour_snapping.h"
 #include "views/palette.h"
 
 namespace cam {
@@ -87,6 +88,8 @@ private:
     void updateHandles();
     [[nodiscard]] Handle handleAt(const QPointF& pixel) const;
     [[nodiscard]] QPointF secondHandlePosition(int row) const;
+    [[nodiscard]] double mmPerPixel() const;
+    [[nodiscard]] GridStep grid() const;
     void keepEqualAspect();
     void setStale(const QString& reason);
 
