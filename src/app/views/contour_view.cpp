@@ -7,7 +7,6 @@
 
 #include "document/commands.h"
 #include "models/delegates.h"
-#include "project/follower_kind.h"
 #include "views/axis_format.h"
 #include "views/contour_snapping.h"
 #include "views/palette.h"
@@ -58,38 +57,7 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     m_rayPoint->setSize(7);
     m_rayPoint->setPen(QPen(Qt::black));
     m_rayPoint->setBrush(Qt::white);
-    {
-        FollowerItems& f = m_followerItems;
-        const QColor follower(20, 90, 160);
-        f.guide = new QCPItemLine(this);
-        f.guide->setPen(QPen(follower, 2.0));
-        f.pivot = new QCPItemTracer(this);
-        f.pivot->setStyle(QCPItemTracer::tsCircle);
-        f.pivot->setSize(9);
-        f.pivot->setPen(QPen(follower, 1.5));
-        f.pivot->setBrush(Qt::white);
-        f.roller = new QCPItemEllipse(this);
-        f.roller->setPen(QPen(follower, 1.5));
-        f.roller->setBrush(QColor(20, 90, 160, 40));
-        f.face = new QCPItemLine(this);
-        f.face->setPen(QPen(follower, 2.5));
-        f.contact = new QCPItemTracer(this);
-        f.contact->setStyle(QCPItemTracer::tsCircle);
-        f.contact->setSize(6);
-        f.contact->setPen(QPen(QColor(200, 40, 40)));
-        f.contact->setBrush(QColor(200, 40, 40));
-        f.normal = new QCPItemLine(this);
-        f.normal->setPen(QPen(QColor(200, 40, 40), 1.2));
-        f.normal->setHead(QCPLineEnding::esSpikeArrow);
-        for (QCPAbstractItem* item :
-             {static_cast<QCPAbstractItem*>(f.guide), static_cast<QCPAbstractItem*>(f.pivot),
-              static_cast<QCPAbstractItem*>(f.roller), static_cast<QCPAbstractItem*>(f.face),
-              static_cast<QCPAbstractItem*>(f.contact), static_cast<QCPAbstractItem*>(f.normal)}) {
-            item->setLayer(m_cursorLayer);
-            item->setVisible(false);
-            item->setSelectable(false);
-        }
-    }
+    m_follower = std::make_unique<FollowerGlyph>(this, m_cursorLayer);
 
     // No legend here: the table names the segments. (QCustomPlot would otherwise add a legend
     // item per plottable, and removing items one by one is quadratic.)
@@ -290,81 +258,14 @@ void ContourView::setCursorAngle(double phi) {
     const double reach = std::max(r * 1.25, r + 5.0);
     m_ray->end->setCoords(reach * std::cos(phi), reach * std::sin(phi));
     m_rayPoint->position->setCoords(r * std::cos(phi), r * std::sin(phi));
-    placeFollower(phi);
+    const FollowerModel* follower = m_result->follower.get();
+    m_follower->show(follower && !m_staleLabel->isStale()
+                         ? followerGlyphAt(*follower, phi, m_result->omega)
+                         : std::nullopt);
     replotLayer(m_cursorLayer);
 }
 
-ContourView::FollowerMarkers ContourView::followerMarkers() const {
-    const FollowerItems& items = m_followerItems;
-    FollowerMarkers m;
-    m.shown = items.contact->visible();
-    m.pivotShown = items.pivot->visible();
-    m.pivot = items.pivot->position->coords();
-    m.contact = items.contact->position->coords();
-    m.normalTip = items.normal->end->coords();
-    if (items.roller->visible()) {
-        const QPointF a = items.roller->topLeft->coords(), b = items.roller->bottomRight->coords();
-        m.center = (a + b) / 2.0;
-        m.rollerRadius = (b.x() - a.x()) / 2.0;
-    } else {
-        m.center = items.guide->end->coords();
-    }
-    return m;
-}
-
-void ContourView::placeFollower(double phi) {
-    FollowerItems& items = m_followerItems;
-    const FollowerModel* model = m_result ? m_result->follower.get() : nullptr;
-    const bool stale = m_staleLabel->isStale();
-    for (QCPAbstractItem* item :
-         {static_cast<QCPAbstractItem*>(items.guide), static_cast<QCPAbstractItem*>(items.pivot),
-          static_cast<QCPAbstractItem*>(items.roller), static_cast<QCPAbstractItem*>(items.face),
-          static_cast<QCPAbstractItem*>(items.contact),
-          static_cast<QCPAbstractItem*>(items.normal)}) {
-        item->setVisible(false);
-    }
-    if (!model || stale) return;
-    // One state of the shared model: a few hundred nanoseconds, like the ray's r(φ).
-    const FollowerState st = model->at(phi, m_result->omega);
-    if (!std::isfinite(st.center.x())) return;
-    const FollowerSpec& spec = model->spec();
-    const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), n(-u.y(), u.x());
-    const double size = std::max(st.center.norm(), 1.0);
-    const double rho = contactRadius(spec);
-    if (model->oscillating()) {
-        const Eigen::Vector2d pivot(u.x() * spec.pivot.x() + n.x() * spec.pivot.y(),
-                                    u.y() * spec.pivot.x() + n.y() * spec.pivot.y());
-        items.guide->start->setCoords(pivot.x(), pivot.y());
-        items.pivot->position->setCoords(pivot.x(), pivot.y());
-        items.pivot->setVisible(true);
-    } else {
-        // The line of motion, from behind the contact out past the follower.
-        const Eigen::Vector2d out = st.center + (rho + 0.25 * size) * u;
-        items.guide->start->setCoords(st.center.x(), st.center.y());
-        items.guide->end->setCoords(out.x(), out.y());
-    }
-    if (model->oscillating()) items.guide->end->setCoords(st.center.x(), st.center.y());
-    items.guide->setVisible(true);
-    if (spec.type == FollowerType::Roller) {
-        items.roller->topLeft->setCoords(st.center.x() - rho, st.center.y() + rho);
-        items.roller->bottomRight->setCoords(st.center.x() + rho, st.center.y() - rho);
-        items.roller->setVisible(true);
-    } else if (spec.type == FollowerType::Flat) {
-        // The face through the contact, perpendicular to the line of motion, a little wider
-        // than the contact's distance from the axis either side.
-        const double half = std::max(std::abs(st.sPhi[1]) * 1.3, 0.1 * size);
-        const Eigen::Vector2d a = st.center - half * n, b = st.center + half * n;
-        items.face->start->setCoords(a.x(), a.y());
-        items.face->end->setCoords(b.x(), b.y());
-        items.face->setVisible(true);
-    }
-    items.contact->position->setCoords(st.contact.x(), st.contact.y());
-    items.contact->setVisible(true);
-    const Eigen::Vector2d tip = st.contact + 0.12 * size * st.normal;
-    items.normal->start->setCoords(st.contact.x(), st.contact.y());
-    items.normal->end->setCoords(tip.x(), tip.y());
-    items.normal->setVisible(true);
-}
+ContourView::FollowerMarkers ContourView::followerMarkers() const { return m_follower->markers(); }
 
 QString ContourView::staleReason() const { return m_staleLabel->reason(); }
 

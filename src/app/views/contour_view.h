@@ -8,9 +8,11 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 
 #include "engine/compute_result.h"
 #include "views/contour_snapping.h"
+#include "views/follower_glyph.h"
 #include "views/palette.h"
 
 namespace cam {
@@ -38,12 +40,7 @@ public:
     /// or panned, else widens one axis (what a resize does; a picture at another size too).
     void fitToViewport();
     /// @brief Where the follower is drawn now (mm, the cam frame): for tests and pictures.
-    struct FollowerMarkers {
-        bool shown = false;
-        bool pivotShown = false;
-        QPointF pivot, center, contact, normalTip;
-        double rollerRadius = 0.0;  ///< 0 unless a roller is drawn
-    };
+    using FollowerMarkers = cam::FollowerMarkers;
     [[nodiscard]] FollowerMarkers followerMarkers() const;
     /// @brief Why the contour shown is out of date; empty when it is the current project's.
     [[nodiscard]] QString staleReason() const;
@@ -111,17 +108,8 @@ private:
     QCPItemTracer* m_rayPoint = nullptr;
     QCPLayer* m_cursorLayer = nullptr;   ///< buffered: the ray, its point and the follower
     QCPLayer* m_handlesLayer = nullptr;  ///< buffered: the drag handles and control polygon
-    /// The follower at the cursor angle (math.md §7): its line of motion or arm and pivot, the
-    /// roller or the face, the contact point and the contact normal.
-    struct FollowerItems {
-        QCPItemLine* guide = nullptr;  ///< the line of motion, or the arm
-        QCPItemTracer* pivot = nullptr;
-        QCPItemEllipse* roller = nullptr;
-        QCPItemLine* face = nullptr;
-        QCPItemTracer* contact = nullptr;
-        QCPItemLine* normal = nullptr;
-    } m_followerItems;
-    void placeFollower(double phi);
+    /// The follower at the cursor angle, on the cursor layer.
+    std::unique_ptr<FollowerGlyph> m_follower;
     StaleLabel* m_staleLabel = nullptr;
     int m_selected = -1;
     Handle m_dragging = Handle::None;
