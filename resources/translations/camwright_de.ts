@@ -1909,6 +1909,25 @@
     </message>
 </context>
 <context>
+    <name>cam::ContourEditTool</name>
+    <message>
+        <location filename="../../src/app/views/contour_edit_tool.cpp" line="+218" />
+        <location line="+8" />
+        <source>Shape segment %1</source>
+        <translation>Segment %1 formen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Move centre of segment %1</source>
+        <translation>Mittelpunkt von Segment %1 verschieben</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Change radius of segment %1</source>
+        <translation>Radius von Segment %1 ändern</translation>
+    </message>
+</context>
+<context>
     <name>cam::ContourEdits</name>
     <message>
         <location filename="../../src/app/document/contour_edits.cpp" line="+16" />
@@ -2030,7 +2049,7 @@
 <context>
     <name>cam::ContourView</name>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="+51" />
+        <location filename="../../src/app/views/contour_view.cpp" line="+20" />
         <source>x [mm]</source>
         <translation>x [mm]</translation>
     </message>
@@ -2045,7 +2064,7 @@
         <translation>Mausrad: zoomen · Ziehen: verschieben · quadratischen/rautenförmigen Griff ziehen: Mittelpunkt verschieben oder Radius des gewählten Bogens ändern. Gezogene Punkte rasten an Mittelpunkten, Übergängen und am Raster ein; Umschalt hält eine Achse fest, Alt rastet nicht ein.</translation>
     </message>
     <message>
-        <location line="+66" />
+        <location line="+35" />
         <source>centres</source>
         <translation>Mittelpunkte</translation>
     </message>
@@ -2053,22 +2072,6 @@
         <location line="+5" />
         <source>joints</source>
         <translation>Übergänge</translation>
-    </message>
-    <message>
-        <location line="+452" />
-        <location line="+8" />
-        <source>Shape segment %1</source>
-        <translation>Segment %1 formen</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>Move centre of segment %1</source>
-        <translation>Mittelpunkt von Segment %1 verschieben</translation>
-    </message>
-    <message>
-        <location line="+10" />
-        <source>Change radius of segment %1</source>
-        <translation>Radius von Segment %1 ändern</translation>
     </message>
 </context>
 <context>

@@ -1,50 +1,19 @@
 #include "views/contour_view.h"
 
+#include <QKeyEvent>
+#include <QMouseEvent>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 
-#include "document/commands.h"
-#include "models/delegates.h"
-#include "project/follower_kind.h"
 #include "views/axis_format.h"
 #include "views/palette.h"
 #include "views/plot_redraw.h"
 #include "views/stale_label.h"
 
 namespace cam {
-namespace {
-constexpr double kHandlePickPixels = 9.0;
 
-/// The grid step as mantissa × 10^exponent, mantissa 1, 2 or 5.
-struct GridStep {
-    double mantissa = 1.0;
-    int exponent = 0;
-    [[nodiscard]] double value() const { return multiple(1.0); }
-    /// n steps, the double nearest the decimal n·mantissa·10^exponent (0.3, not
-    /// 0.30000000000000004).
-    [[nodiscard]] double multiple(double n) const {
-        const double scale = std::pow(10.0, std::abs(exponent));
-        return exponent >= 0 ? n * mantissa * scale : n * mantissa / scale;
-    }
-    [[nodiscard]] double round(double v) const { return multiple(std::round(v / value())); }
-};
-
-GridStep gridStepFor(double minimumMm) {
-    if (!(minimumMm > 0.0) || !std::isfinite(minimumMm)) return {};
-    const int exponent = static_cast<int>(std::floor(std::log10(minimumMm)));
-    for (double mantissa : {1.0, 2.0, 5.0}) {
-        const GridStep step{mantissa, exponent};
-        if (step.value() >= minimumMm) return step;
-    }
-    return {1.0, exponent + 1};
-}
-
-}  // namespace
-
-ContourView::ContourView(ProjectDocument* document, QWidget* parent)
-    : QCustomPlot(parent), m_document(document) {
+ContourView::ContourView(ProjectDocument* document, QWidget* parent) : QCustomPlot(parent) {
     setObjectName("contourView");
     setFocusPolicy(Qt::StrongFocus);  // Escape must reach it while a point is being picked
     setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
@@ -82,38 +51,7 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     m_rayPoint->setSize(7);
     m_rayPoint->setPen(QPen(Qt::black));
     m_rayPoint->setBrush(Qt::white);
-    {
-        FollowerItems& f = m_followerItems;
-        const QColor follower(20, 90, 160);
-        f.guide = new QCPItemLine(this);
-        f.guide->setPen(QPen(follower, 2.0));
-        f.pivot = new QCPItemTracer(this);
-        f.pivot->setStyle(QCPItemTracer::tsCircle);
-        f.pivot->setSize(9);
-        f.pivot->setPen(QPen(follower, 1.5));
-        f.pivot->setBrush(Qt::white);
-        f.roller = new QCPItemEllipse(this);
-        f.roller->setPen(QPen(follower, 1.5));
-        f.roller->setBrush(QColor(20, 90, 160, 40));
-        f.face = new QCPItemLine(this);
-        f.face->setPen(QPen(follower, 2.5));
-        f.contact = new QCPItemTracer(this);
-        f.contact->setStyle(QCPItemTracer::tsCircle);
-        f.contact->setSize(6);
-        f.contact->setPen(QPen(QColor(200, 40, 40)));
-        f.contact->setBrush(QColor(200, 40, 40));
-        f.normal = new QCPItemLine(this);
-        f.normal->setPen(QPen(QColor(200, 40, 40), 1.2));
-        f.normal->setHead(QCPLineEnding::esSpikeArrow);
-        for (QCPAbstractItem* item :
-             {static_cast<QCPAbstractItem*>(f.guide), static_cast<QCPAbstractItem*>(f.pivot),
-              static_cast<QCPAbstractItem*>(f.roller), static_cast<QCPAbstractItem*>(f.face),
-              static_cast<QCPAbstractItem*>(f.contact), static_cast<QCPAbstractItem*>(f.normal)}) {
-            item->setLayer(m_cursorLayer);
-            item->setVisible(false);
-            item->setSelectable(false);
-        }
-    }
+    m_follower = std::make_unique<FollowerGlyph>(this, m_cursorLayer);
 
     // No legend here: the table names the segments. (QCustomPlot would otherwise add a legend
     // item per plottable, and removing items one by one is quadratic.)
@@ -135,23 +73,6 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     m_joints->setLineStyle(QCPGraph::lsNone);
     m_joints->setScatterStyle(
         QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black), QBrush(Qt::white), 5));
-    for (auto [graph, shape] : {std::pair{&m_firstHandle, QCPScatterStyle::ssSquare},
-                                std::pair{&m_secondHandle, QCPScatterStyle::ssDiamond}}) {
-        *graph = addGraph();
-        (*graph)->setLineStyle(QCPGraph::lsNone);
-        (*graph)->setScatterStyle(QCPScatterStyle(shape, QPen(QColor(0, 90, 200), 1.5),
-                                                  QBrush(QColor(120, 180, 255)), 10));
-    }
-    m_controlPolygon = new QCPCurve(xAxis, yAxis);
-    m_controlPolygon->setPen(QPen(QColor(0, 90, 200, 160), 1, Qt::DashLine));
-    m_controlPolygon->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 4));
-    // The drag handles above the markers: a centre cross never hides the handle on it.
-    // Buffered (see above): an edit moves them at once, while the contour waits for the
-    // engine's result.
-    for (QCPAbstractPlottable* p : std::initializer_list<QCPAbstractPlottable*>{
-             m_firstHandle, m_secondHandle, m_controlPolygon}) {
-        p->setLayer("handles");
-    }
     // Origin: the rotation centre.
     auto* origin = new QCPItemTracer(this);
     origin->position->setCoords(0, 0);
@@ -159,19 +80,13 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
     origin->setSize(12);
     origin->setPen(QPen(Qt::black));
 
-    m_pickMarker = new QCPItemTracer(this);
-    m_pickMarker->setLayer(m_cursorLayer);
-    m_pickMarker->setStyle(QCPItemTracer::tsCrosshair);
-    m_pickMarker->setPen(QPen(QColor(0, 90, 200), 1, Qt::DotLine));
-    m_pickMarker->setVisible(false);
+    m_editTool = new ContourEditTool(this, document, m_joints, m_handlesLayer, m_cursorLayer);
+    connect(m_editTool, &ContourEditTool::pointPicked, this, &ContourView::pointPicked);
+    connect(m_editTool, &ContourEditTool::pickCancelled, this, &ContourView::pickCancelled);
 
     m_staleLabel = new StaleLabel(this);
 
     connect(this, &QCustomPlot::mouseWheel, this, [this] { m_autoFit = false; });
-    connect(document, &ProjectDocument::changed, this, [this] {
-        updateHandles();
-        replotLayer(m_handlesLayer);  // the contour follows with the result
-    });
 }
 
 void ContourView::setResult(const ComputeResultPtr& result) {
@@ -314,81 +229,14 @@ void ContourView::setCursorAngle(double phi) {
     const double reach = std::max(r * 1.25, r + 5.0);
     m_ray->end->setCoords(reach * std::cos(phi), reach * std::sin(phi));
     m_rayPoint->position->setCoords(r * std::cos(phi), r * std::sin(phi));
-    placeFollower(phi);
+    const FollowerModel* follower = m_result->follower.get();
+    m_follower->show(follower && !m_staleLabel->isStale()
+                         ? followerGlyphAt(*follower, phi, m_result->omega)
+                         : std::nullopt);
     replotLayer(m_cursorLayer);
 }
 
-ContourView::FollowerMarkers ContourView::followerMarkers() const {
-    const FollowerItems& items = m_followerItems;
-    FollowerMarkers m;
-    m.shown = items.contact->visible();
-    m.pivotShown = items.pivot->visible();
-    m.pivot = items.pivot->position->coords();
-    m.contact = items.contact->position->coords();
-    m.normalTip = items.normal->end->coords();
-    if (items.roller->visible()) {
-        const QPointF a = items.roller->topLeft->coords(), b = items.roller->bottomRight->coords();
-        m.center = (a + b) / 2.0;
-        m.rollerRadius = (b.x() - a.x()) / 2.0;
-    } else {
-        m.center = items.guide->end->coords();
-    }
-    return m;
-}
-
-void ContourView::placeFollower(double phi) {
-    FollowerItems& items = m_followerItems;
-    const FollowerModel* model = m_result ? m_result->follower.get() : nullptr;
-    const bool stale = m_staleLabel->isStale();
-    for (QCPAbstractItem* item :
-         {static_cast<QCPAbstractItem*>(items.guide), static_cast<QCPAbstractItem*>(items.pivot),
-          static_cast<QCPAbstractItem*>(items.roller), static_cast<QCPAbstractItem*>(items.face),
-          static_cast<QCPAbstractItem*>(items.contact),
-          static_cast<QCPAbstractItem*>(items.normal)}) {
-        item->setVisible(false);
-    }
-    if (!model || stale) return;
-    // One state of the shared model: a few hundred nanoseconds, like the ray's r(φ).
-    const FollowerState st = model->at(phi, m_result->omega);
-    if (!std::isfinite(st.center.x())) return;
-    const FollowerSpec& spec = model->spec();
-    const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), n(-u.y(), u.x());
-    const double size = std::max(st.center.norm(), 1.0);
-    const double rho = contactRadius(spec);
-    if (model->oscillating()) {
-        const Eigen::Vector2d pivot(u.x() * spec.pivot.x() + n.x() * spec.pivot.y(),
-                                    u.y() * spec.pivot.x() + n.y() * spec.pivot.y());
-        items.guide->start->setCoords(pivot.x(), pivot.y());
-        items.pivot->position->setCoords(pivot.x(), pivot.y());
-        items.pivot->setVisible(true);
-    } else {
-        // The line of motion, from behind the contact out past the follower.
-        const Eigen::Vector2d out = st.center + (rho + 0.25 * size) * u;
-        items.guide->start->setCoords(st.center.x(), st.center.y());
-        items.guide->end->setCoords(out.x(), out.y());
-    }
-    if (model->oscillating()) items.guide->end->setCoords(st.center.x(), st.center.y());
-    items.guide->setVisible(true);
-    if (spec.type == FollowerType::Roller) {
-        items.roller->topLeft->setCoords(st.center.x() - rho, st.center.y() + rho);
-        items.roller->bottomRight->setCoords(st.center.x() + rho, st.center.y() - rho);
-        items.roller->setVisible(true);
-    } else if (spec.type == FollowerType::Flat) {
-        // The face through the contact, perpendicular to the line of motion, a little wider
-        // than the contact's distance from the axis either side.
-        const double half = std::max(std::abs(st.sPhi[1]) * 1.3, 0.1 * size);
-        const Eigen::Vector2d a = st.center - half * n, b = st.center + half * n;
-        items.face->start->setCoords(a.x(), a.y());
-        items.face->end->setCoords(b.x(), b.y());
-        items.face->setVisible(true);
-    }
-    items.contact->position->setCoords(st.contact.x(), st.contact.y());
-    items.contact->setVisible(true);
-    const Eigen::Vector2d tip = st.contact + 0.12 * size * st.normal;
-    items.normal->start->setCoords(st.contact.x(), st.contact.y());
-    items.normal->end->setCoords(tip.x(), tip.y());
-    items.normal->setVisible(true);
-}
+ContourView::FollowerMarkers ContourView::followerMarkers() const { return m_follower->markers(); }
 
 QString ContourView::staleReason() const { return m_staleLabel->reason(); }
 
@@ -413,219 +261,31 @@ void ContourView::setStale(const QString& reason) {
 }
 
 void ContourView::setSelectedSegment(int row) {
-    m_selected = row;
-    updateHandles();
+    m_editTool->setSelectedSegment(row);
     queueReplot(this);
 }
 
-QPointF ContourView::secondHandlePosition(int row) const {
-    const SegmentSpec& s = m_document->project().contour.at(static_cast<std::size_t>(row));
-    const Arc& arc = *s.as<Arc>();
-    // On the circle, in the direction of the middle of the window as seen from the centre.
-    const double mid = (s.phiStartDeg + s.phiEndDeg) / 2.0 * M_PI / 180.0;
-    const double r = arc.evaluate(mid).r;
-    Eigen::Vector2d dir = Eigen::Vector2d(r * std::cos(mid), r * std::sin(mid)) - arc.center;
-    if (!std::isfinite(dir.x()) || dir.norm() < 1e-12) dir = {1.0, 0.0};
-    const Eigen::Vector2d p = arc.center + arc.radius * dir.normalized();
-    return {p.x(), p.y()};
-}
-
-void ContourView::updateHandles() {
-    const auto& c = m_document->project().contour;
-    m_controlPolygon->data()->clear();
-    if (m_selected < 0 || m_selected >= static_cast<int>(c.size()) ||
-        c[static_cast<std::size_t>(m_selected)].type() == SegmentType::Line) {
-        m_firstHandle->data()->clear();
-        m_secondHandle->data()->clear();
-        return;
-    }
-    const SegmentSpec& s = c[static_cast<std::size_t>(m_selected)];
-    if (isSpline(s.type())) {
-        // Handles on the inner control points; the ends stay on the neighbours' joints.
-        const CubicBezier b = bezierOf(s);
-        m_firstHandle->setData({b.p[1].x()}, {b.p[1].y()}, true);
-        m_secondHandle->setData({b.p[2].x()}, {b.p[2].y()}, true);
-        QVector<double> x, y;
-        for (const auto& p : b.p) {
-            x << p.x();
-            y << p.y();
-        }
-        m_controlPolygon->setData(x, y);
-        return;
-    }
-    const Arc& arc = *s.as<Arc>();
-    const QPointF second = secondHandlePosition(m_selected);
-    m_firstHandle->setData({arc.center.x()}, {arc.center.y()}, true);
-    m_secondHandle->setData({second.x()}, {second.y()}, true);
-}
-
-ContourView::Handle ContourView::handleAt(const QPointF& pixel) const {
-    auto distance = [&](const QCPGraph* g) {
-        if (g->data()->isEmpty()) return kHandlePickPixels + 1.0;
-        const auto it = g->data()->constBegin();
-        return QLineF(pixel, QPointF(xAxis->coordToPixel(it->key), yAxis->coordToPixel(it->value)))
-            .length();
-    };
-    if (distance(m_firstHandle) <= kHandlePickPixels) return Handle::First;
-    if (distance(m_secondHandle) <= kHandlePickPixels) return Handle::Second;
-    return Handle::None;
-}
-
-double ContourView::gridStep() const {
-    const double mmPerPixel = std::abs(xAxis->pixelToCoord(1.0) - xAxis->pixelToCoord(0.0));
-    return gridStepFor(kGridPixels * mmPerPixel).value();
-}
-
-Eigen::Vector2d ContourView::snap(const QPointF& pixel, Qt::KeyboardModifiers modifiers,
-                                  const Eigen::Vector2d* origin, int skipSegment) const {
-    Eigen::Vector2d p(xAxis->pixelToCoord(pixel.x()), yAxis->pixelToCoord(pixel.y()));
-    if (!(modifiers & Qt::AltModifier)) {
-        const double mmPerPixel = std::abs(xAxis->pixelToCoord(1.0) - xAxis->pixelToCoord(0.0));
-        // The nearest of the rotation centre, the arcs' centres and the joints, if close.
-        std::optional<Eigen::Vector2d> nearest;
-        double best = kSnapPixels * mmPerPixel;
-        const auto consider = [&](const Eigen::Vector2d& q) {
-            const double d = (q - p).norm();
-            if (std::isfinite(d) && d <= best) {
-                best = d;
-                nearest = q;
-            }
-        };
-        consider(Eigen::Vector2d::Zero());
-        // The centres from the document (current while dragging); the joints as the engine
-        // computed and drew them, so that a mouse move evaluates no segment on this thread.
-        const auto& contour = m_document->project().contour;
-        for (std::size_t k = 0; k < contour.size(); ++k) {
-            if (static_cast<int>(k) == skipSegment) continue;
-            if (const Arc* arc = contour[k].as<Arc>()) consider(arc->center);
-        }
-        for (auto it = m_joints->data()->constBegin(); it != m_joints->data()->constEnd(); ++it) {
-            consider({it->key, it->value});
-        }
-        if (nearest) {
-            p = *nearest;
-        } else {
-            const GridStep step = gridStepFor(kGridPixels * mmPerPixel);
-            p = {step.round(p.x()), step.round(p.y())};
-        }
-    }
-    if (origin && (modifiers & Qt::ShiftModifier)) {
-        // Keep the axis along which the mouse moved less.
-        const Eigen::Vector2d raw(xAxis->pixelToCoord(pixel.x()), yAxis->pixelToCoord(pixel.y()));
-        if (std::abs(raw.x() - origin->x()) >= std::abs(raw.y() - origin->y())) {
-            p.y() = origin->y();
-        } else {
-            p.x() = origin->x();
-        }
-    }
-    return p;
-}
-
-void ContourView::beginPointPick() {
-    m_picking = true;
-    setCursor(Qt::CrossCursor);
-    setFocus(Qt::OtherFocusReason);
-}
-
-void ContourView::cancelPointPick() {
-    if (!m_picking) return;
-    m_picking = false;
-    unsetCursor();
-    m_pickMarker->setVisible(false);
-    replotLayer(m_cursorLayer);
-    emit pickCancelled();
-}
-
 void ContourView::keyPressEvent(QKeyEvent* event) {
-    if (m_picking && event->key() == Qt::Key_Escape) {
-        cancelPointPick();
-        event->accept();
-        return;
-    }
+    if (m_editTool->keyPress(event)) return;
     QCustomPlot::keyPressEvent(event);
 }
 
 void ContourView::mousePressEvent(QMouseEvent* event) {
-    if (m_picking && event->button() == Qt::LeftButton) {
-        const Eigen::Vector2d p = snap(event->position(), event->modifiers());
-        m_picking = false;
-        unsetCursor();
-        m_pickMarker->setVisible(false);
-        replotLayer(m_cursorLayer);
-        event->accept();
-        emit pointPicked(QPointF(p.x(), p.y()));
-        return;
-    }
-    if (event->button() == Qt::LeftButton) {
-        m_dragging = handleAt(event->position());
-        if (m_dragging != Handle::None) {
-            m_gesture = nextGestureId();
-            setInteraction(QCP::iRangeDrag, false);
-            const QCPGraph* handle = m_dragging == Handle::First ? m_firstHandle : m_secondHandle;
-            const auto it = handle->data()->constBegin();
-            m_dragOrigin = {it->key, it->value};
-        }
-    }
+    if (m_editTool->mousePress(event)) return;
     QCustomPlot::mousePressEvent(event);
 }
 
 void ContourView::mouseMoveEvent(QMouseEvent* event) {
+    if (event->buttons() & Qt::LeftButton && !m_editTool->isDragging()) m_autoFit = false;
+    if (m_editTool->mouseMove(event)) return;
     const double x = xAxis->pixelToCoord(event->position().x());
     const double y = yAxis->pixelToCoord(event->position().y());
-    if (event->buttons() & Qt::LeftButton && m_dragging == Handle::None) m_autoFit = false;
-    if (m_dragging != Handle::None && m_selected >= 0) {
-        SegmentSpec s = m_document->project().contour.at(static_cast<std::size_t>(m_selected));
-        const bool first = m_dragging == Handle::First;
-        const EditedField field =
-            first ? EditedField::FirstHandleDrag : EditedField::SecondHandleDrag;
-        QString text;
-        const Eigen::Vector2d at =
-            snap(event->position(), event->modifiers(), &m_dragOrigin, first ? m_selected : -1);
-        if (CubicBezier* b = s.as<CubicBezier>()) {
-            b->p[first ? 1 : 2] = at;  // P1 (square) or P2 (diamond)
-            text = tr("Shape segment %1").arg(m_selected);
-        } else if (HermiteCurve* h = s.as<HermiteCurve>()) {
-            // The same handles as tangents (t = 3·handle); the other tangent stays bit-equal.
-            if (first) {
-                h->t0 = 3.0 * (at - h->p0);
-            } else {
-                h->t1 = 3.0 * (h->p3 - at);
-            }
-            text = tr("Shape segment %1").arg(m_selected);
-        } else if (Arc* arc = s.as<Arc>(); arc && first) {
-            arc->center = at;
-            text = tr("Move centre of segment %1").arg(m_selected);
-        } else if (arc) {
-            // The radius itself snaps to the grid (Alt: not at all).
-            double radius = std::hypot(x - arc->center.x(), y - arc->center.y());
-            if (!(event->modifiers() & Qt::AltModifier)) {
-                radius = gridStepFor(kGridPixels *
-                                     std::abs(xAxis->pixelToCoord(1.0) - xAxis->pixelToCoord(0.0)))
-                             .round(radius);
-            }
-            arc->radius = std::max(1e-3, radius);
-            text = tr("Change radius of segment %1").arg(m_selected);
-        }
-        m_document->undoStack()->push(
-            new EditSegment(m_document, m_selected, s, field, text, m_gesture));
-        event->accept();
-        return;
-    }
-    if (m_picking) {
-        const Eigen::Vector2d p = snap(event->position(), event->modifiers());
-        m_pickMarker->position->setCoords(p.x(), p.y());
-        m_pickMarker->setVisible(true);
-        replotLayer(m_cursorLayer);
-    }
     if (x != 0.0 || y != 0.0) emit cursorAngleChanged(std::atan2(y, x));
     QCustomPlot::mouseMoveEvent(event);
 }
 
 void ContourView::mouseReleaseEvent(QMouseEvent* event) {
-    if (m_dragging != Handle::None) {
-        m_dragging = Handle::None;
-        setInteraction(QCP::iRangeDrag, true);
-    }
+    m_editTool->mouseRelease();
     QCustomPlot::mouseReleaseEvent(event);
 }
 

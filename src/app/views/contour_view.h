@@ -3,13 +3,20 @@
 /// @brief The contour in the cam's plane: segments coloured, centres and joints marked, the
 /// follower ray at the cursor angle; drag an arc's centre or radius handle to edit it, or pick
 /// a point for a construction. Dragged and picked points snap (see snap()).
+///
+/// The widget draws the result, keeps equal scales and follows the cursor; its parts:
+/// the editing tool (views/contour_edit_tool.h: handles, dragging, point picking), snapping
+/// (views/contour_snapping.h) and the follower's glyph (views/follower_glyph.h).
 
 #include <qcustomplot.h>
 
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 
 #include "engine/compute_result.h"
+#include "views/contour_edit_tool.h"
+#include "views/follower_glyph.h"
 #include "views/palette.h"
 
 namespace cam {
@@ -37,12 +44,7 @@ public:
     /// or panned, else widens one axis (what a resize does; a picture at another size too).
     void fitToViewport();
     /// @brief Where the follower is drawn now (mm, the cam frame): for tests and pictures.
-    struct FollowerMarkers {
-        bool shown = false;
-        bool pivotShown = false;
-        QPointF pivot, center, contact, normalTip;
-        double rollerRadius = 0.0;  ///< 0 unless a roller is drawn
-    };
+    using FollowerMarkers = cam::FollowerMarkers;
     [[nodiscard]] FollowerMarkers followerMarkers() const;
     /// @brief Why the contour shown is out of date; empty when it is the current project's.
     [[nodiscard]] QString staleReason() const;
@@ -55,17 +57,19 @@ public:
     /// began): only the axis the mouse moved farther along changes.
     [[nodiscard]] Eigen::Vector2d snap(const QPointF& pixel, Qt::KeyboardModifiers modifiers,
                                        const Eigen::Vector2d* origin = nullptr,
-                                       int skipSegment = -1) const;
+                                       int skipSegment = -1) const {
+        return m_editTool->snap(pixel, modifiers, origin, skipSegment);
+    }
     /// @brief The grid step snap() uses at the current zoom, mm.
-    [[nodiscard]] double gridStep() const;
-    static constexpr double kSnapPixels = 10.0;
-    static constexpr double kGridPixels = 8.0;
+    [[nodiscard]] double gridStep() const { return m_editTool->gridStep(); }
+    static constexpr double kSnapPixels = ContourEditTool::kSnapPixels;
+    static constexpr double kGridPixels = ContourEditTool::kGridPixels;
 
     /// @brief The next left click picks a point (snapped): pointPicked, or pickCancelled on
     /// Escape. The mouse shows a cross where the point would land.
-    void beginPointPick();
-    [[nodiscard]] bool isPickingPoint() const { return m_picking; }
-    void cancelPointPick();
+    void beginPointPick() { m_editTool->beginPointPick(); }
+    [[nodiscard]] bool isPickingPoint() const { return m_editTool->isPickingPoint(); }
+    void cancelPointPick() { m_editTool->cancelPointPick(); }
 
 signals:
     /// A point was picked (mm) after beginPointPick.
@@ -83,14 +87,9 @@ protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
-    enum class Handle { None, First, Second };
-    void updateHandles();
-    [[nodiscard]] Handle handleAt(const QPointF& pixel) const;
-    [[nodiscard]] QPointF secondHandlePosition(int row) const;
     void keepEqualAspect();
     void setStale(const QString& reason);
 
-    ProjectDocument* m_document;
     ComputeResultPtr m_result;
     /// One curve per segment colour: segment k is a run of colourCurves[k mod 10], the runs
     /// separated by a NaN point (a gap). Ten curves whatever the number of segments: drawing,
@@ -101,31 +100,14 @@ private:
     std::vector<std::pair<int, int>> m_runs;  ///< per segment: first index, count in its curve
     QCPGraph* m_centers = nullptr;
     QCPGraph* m_joints = nullptr;
-    QCPGraph* m_firstHandle = nullptr;     ///< square: the arc's centre, or a spline's P1
-    QCPGraph* m_secondHandle = nullptr;    ///< diamond: the arc's radius, or a spline's P2
-    QCPCurve* m_controlPolygon = nullptr;  ///< P0–P1–P2–P3 of the selected spline
     QCPItemLine* m_ray = nullptr;
     QCPItemTracer* m_rayPoint = nullptr;
     QCPLayer* m_cursorLayer = nullptr;   ///< buffered: the ray, its point and the follower
     QCPLayer* m_handlesLayer = nullptr;  ///< buffered: the drag handles and control polygon
-    /// The follower at the cursor angle (math.md §7): its line of motion or arm and pivot, the
-    /// roller or the face, the contact point and the contact normal.
-    struct FollowerItems {
-        QCPItemLine* guide = nullptr;  ///< the line of motion, or the arm
-        QCPItemTracer* pivot = nullptr;
-        QCPItemEllipse* roller = nullptr;
-        QCPItemLine* face = nullptr;
-        QCPItemTracer* contact = nullptr;
-        QCPItemLine* normal = nullptr;
-    } m_followerItems;
-    void placeFollower(double phi);
+    /// The follower at the cursor angle, on the cursor layer.
+    std::unique_ptr<FollowerGlyph> m_follower;
+    ContourEditTool* m_editTool = nullptr;  ///< a child: handles, dragging, point picking
     StaleLabel* m_staleLabel = nullptr;
-    int m_selected = -1;
-    Handle m_dragging = Handle::None;
-    int m_gesture = 0;
-    Eigen::Vector2d m_dragOrigin{0.0, 0.0};  ///< where the dragged handle was when it was taken
-    bool m_picking = false;
-    QCPItemTracer* m_pickMarker = nullptr;  ///< where a picked point would land
     double m_cursorPhi = 0.0;
     bool m_autoFit = true;  ///< refit on resize until the user zooms or pans
 };

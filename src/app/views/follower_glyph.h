@@ -1,0 +1,74 @@
+#pragma once
+/// @file
+/// @brief The follower drawn in the contour view at the cursor angle (math.md §7): its line of
+/// motion, or its arm and pivot; the roller's circle or the flat face; the contact point and the
+/// contact normal. followerGlyphShape() says where each part goes (plane geometry, no Qt);
+/// FollowerGlyph holds the QCustomPlot items that show it.
+
+#include <qcustomplot.h>
+
+#include <Eigen/Core>
+#include <array>
+#include <optional>
+
+#include "follower/follower.h"
+
+namespace cam {
+
+/// @brief Where each part of the follower glyph lies (mm, the cam frame).
+struct FollowerGlyphShape {
+    /// A translating follower's line of motion, from its follower point (FollowerState::center)
+    /// out past the follower; or a swinging arm, from its pivot to that point.
+    Eigen::Vector2d guideStart{0.0, 0.0}, guideEnd{0.0, 0.0};
+    std::optional<Eigen::Vector2d> pivot;  ///< a swinging arm's pivot, turned with the cam
+    /// A roller: its circle of this radius about the follower point.
+    std::optional<double> rollerRadius;
+    Eigen::Vector2d center{0.0, 0.0};  ///< the follower point (the roller's centre)
+    /// A flat face: its ends, either side of the follower point across the line of motion.
+    std::optional<std::array<Eigen::Vector2d, 2>> face;
+    Eigen::Vector2d contact{0.0, 0.0};
+    Eigen::Vector2d normalTip{0.0, 0.0};  ///< the contact normal's arrow runs contact → tip
+};
+
+/// @brief The glyph of follower `spec` in `state`, at cam angle `phi` (rad); none when the state
+/// is not finite (no contact at this angle). Lengths scale with the follower point's distance
+/// d from the centre (at least 1 mm): the line of motion reaches 0.25·d past the follower, the
+/// normal is 0.12·d long, and a flat face reaches 1.3 times the contact's distance from the
+/// line of motion (|ds/dφ|) either side, at least 0.1·d.
+[[nodiscard]] std::optional<FollowerGlyphShape> followerGlyphShape(const FollowerSpec& spec,
+                                                                   const FollowerState& state,
+                                                                   double phi);
+/// @brief The glyph of the follower on its cam at angle `phi`, turning at `omega` rad/s.
+[[nodiscard]] std::optional<FollowerGlyphShape> followerGlyphAt(const FollowerModel& model,
+                                                                double phi, double omega);
+
+/// @brief Where the follower is drawn now (mm, the cam frame): for tests and pictures.
+struct FollowerMarkers {
+    bool shown = false;
+    bool pivotShown = false;
+    QPointF pivot, center, contact, normalTip;
+    double rollerRadius = 0.0;  ///< 0 unless a roller is drawn
+};
+
+/// @brief The plot items that draw a FollowerGlyphShape; the plot owns them.
+class FollowerGlyph {
+public:
+    /// @brief Adds the items to `plot` on `layer`, hidden and not selectable.
+    FollowerGlyph(QCustomPlot* plot, QCPLayer* layer);
+    /// @brief Draws `shape`; none hides the follower. (Redrawing the layer is the caller's.)
+    void show(const std::optional<FollowerGlyphShape>& shape);
+    /// @brief What the items show, read back from them.
+    [[nodiscard]] FollowerMarkers markers() const;
+
+private:
+    [[nodiscard]] std::array<QCPAbstractItem*, 6> items() const;
+
+    QCPItemLine* m_guide = nullptr;  ///< the line of motion, or the arm
+    QCPItemTracer* m_pivot = nullptr;
+    QCPItemEllipse* m_roller = nullptr;
+    QCPItemLine* m_face = nullptr;
+    QCPItemTracer* m_contact = nullptr;
+    QCPItemLine* m_normal = nullptr;
+};
+
+}  // namespace cam
