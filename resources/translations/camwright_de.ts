@@ -1,69 +1,1019 @@
 <?xml version='1.0' encoding='utf-8'?>
 <TS version="2.1" language="de_DE">
 <context>
-    <name>DiagnosticText</name>
+    <name>Diagnostic</name>
     <message>
-        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+80" />
-        <source>a number</source>
-        <translation>eine Zahl</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>a string</source>
-        <translation>ein Text</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>a boolean</source>
-        <translation>ein Wahrheitswert</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>an array</source>
-        <translation>ein Array</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>an object</source>
-        <translation>ein Objekt</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>true or false</source>
-        <translation>true oder false</translation>
+        <location filename="../../src/core/common/diagnostic_catalogue.cpp" line="+19" />
+        <source>must be a finite number (got %1)</source>
+        <translation>muss eine endliche Zahl sein (ist %1)</translation>
     </message>
     <message>
         <location line="+2" />
-        <source>an array [x, y] of two numbers</source>
-        <translation>ein Array [x, y] aus zwei Zahlen</translation>
+        <source>magnitude must be at most 1e6 mm (got %1)</source>
+        <translation>Betrag darf höchstens 10⁶ mm sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be between %1 and %2%3 (got %4)</source>
+        <translation>muss zwischen %1 und %2%3 liegen (ist %4)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be at least %1 mm (got %2): a smaller circle or step is below the precision of the joints</source>
+        <translation>muss mindestens %1 mm sein (ist %2): ein kleinerer Kreis oder Schritt liegt unter der Genauigkeit der Übergänge</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>must be &gt; 0 (got %1)</source>
+        <translation>muss &gt; 0 sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must not be 0 (its sign gives the turning direction)</source>
+        <translation>darf nicht 0 sein (das Vorzeichen gibt die Drehrichtung an)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>magnitude must be between %1 and %2%3 (got %4)</source>
+        <translation>Betrag muss zwischen %1 und %2%3 liegen (ist %4)</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>an array of numbers</source>
-        <translation>ein Array aus Zahlen</translation>
+        <source>must have at least one segment</source>
+        <translation>muss mindestens ein Segment haben</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be a finite angle of magnitude at most 1e6° (got %1)</source>
+        <translation>muss ein endlicher Winkel mit einem Betrag von höchstens 10⁶° sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be greater than %1 %2° (got %3°)</source>
+        <translation>muss größer als %1 %2° sein (ist %3°)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>at %1° the follower ray only grazes the curve (it must cross it at an angle of at least %2 rad, or the follower would need an unbounded speed); the window must end before it</source>
+        <translation>bei %1° streift der Strahl des Stößels die Kurve nur (er muss sie unter einem Winkel von mindestens %2 rad schneiden, sonst bräuchte der Stößel eine unbegrenzte Geschwindigkeit); das Fenster muss vorher enden</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>window %1° .. %2° disagrees with the polar angles of from/to (%3° .. %4°)</source>
+        <translation>das Fenster %1° .. %2° passt nicht zu den Polarwinkeln von Anfangs- und Endpunkt der Geraden (%3° .. %4°)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>window %1° .. %2° disagrees with the polar angles of its end points (%3° .. %4°)</source>
+        <translation>das Fenster %1° .. %2° passt nicht zu den Polarwinkeln der Endpunkte der Kurve (%3° .. %4°)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>must differ from `from` (the line has no length)</source>
+        <translation>muss sich vom Anfangspunkt unterscheiden (die Gerade hat keine Länge)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the line passes through the rotation centre, so the follower ray meets it at no angle or at every point</source>
+        <translation>die Gerade geht durch das Drehzentrum, daher trifft der Strahl des Stößels sie unter keinem Winkel oder in jedem Punkt</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the line runs clockwise around the rotation centre (from %1° to %2°); swap `from` and `to`</source>
+        <translation>die Gerade läuft im Uhrzeigersinn um das Drehzentrum (von %1° bis %2°); Anfangs- und Endpunkt tauschen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>an end point lies on the rotation centre</source>
+        <translation>ein Endpunkt liegt im Drehzentrum</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the curve runs clockwise around the rotation centre (from %1° to %2°); reverse its points</source>
+        <translation>die Kurve läuft im Uhrzeigersinn um das Drehzentrum (von %1° bis %2°); ihre Punkte umkehren</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the follower ray meets the curve %1 times at %2°; inside its window it must meet it exactly once</source>
+        <translation>der Strahl des Stößels trifft die Kurve bei %2° %1-mal; innerhalb ihres Fensters muss er sie genau einmal treffen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the rotation centre lies inside this circle, so the inner intersection is behind the follower (r &lt;= 0); use "outer"</source>
+        <translation>das Drehzentrum liegt in diesem Kreis, daher liegt der innere Schnittpunkt hinter dem Stößel (r ≤ 0); den Zweig „außen“ wählen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the follower ray misses the circle inside the window %1° .. %2°; it meets it only for phi in %3° .. %4°</source>
+        <translation>der Strahl des Stößels verfehlt den Kreis im Fenster %1° .. %2°; er trifft ihn nur für φ in %3° .. %4°</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>gap of %1° between %2 %3 and %4 %5</source>
+        <translation>Lücke von %1° zwischen %2 %3° und %4 %5°</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>overlap of %1° between %2 %3 and %4 %5</source>
+        <translation>Überlappung von %1° zwischen %2 %3° und %4 %5°</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the windows cover %1° (from %2° to %3°); they must cover exactly one turn, 360°</source>
+        <translation>die Fenster überdecken %1° (von %2° bis %3°); sie müssen genau eine Umdrehung überdecken, 360°</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the segments do not meet at %1°: gap of %2 mm (at most 1e-06 mm allowed)</source>
+        <translation>die Segmente treffen sich bei %1° nicht: Lücke von %2 mm (höchstens 10⁻⁶ mm erlaubt)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>a flat face moves only translating (math.md §7); use a knife or a roller on an oscillating arm</source>
+        <translation>ein Flachstößel bewegt sich nur geradgeführt; auf einem Schwinghebel eine Spitze oder eine Rolle verwenden</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>must be smaller than the radius %1 mm of the concave arc %2 (got %3 mm): the roller cannot enter it</source>
+        <translation>muss kleiner sein als der Radius %1 mm des konkaven Bogens %2 (ist %3 mm): die Rolle passt nicht hinein</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>must be between 16 and 10000000 (got %1)</source>
+        <translation>muss zwischen 16 und 10000000 liegen (ist %1)</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>an array of segments</source>
-        <translation>ein Array aus Segmenten</translation>
+        <source>must list 2 or 3 axes (got %1)</source>
+        <translation>muss 2 oder 3 Achsen angeben (sind %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 needs a joint between two segments (the contour has %2)</source>
+        <translation>%1 braucht einen Übergang zwischen zwei Segmenten (die Kontur hat %2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>there is no joint %1: joints are numbered 0 .. %2</source>
+        <translation>es gibt keinen Übergang %1: die Übergänge sind von 0 bis %2 nummeriert</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be after %1°, where this segment starts (got %2°)</source>
+        <translation>muss nach %1° liegen, wo dieses Segment beginnt (ist %2°)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be at most 360° (got %1°)</source>
+        <translation>darf höchstens 360° sein (ist %1°)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a dwell keeps the lift it starts with (%1), got %2</source>
+        <translation>eine Rast behält den Hub, mit dem sie beginnt (%1), ist aber %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must differ from the lift it starts with (%1) for %2; a stretch without motion is a dwell</source>
+        <translation>muss sich für %2 vom Hub am Anfang (%1) unterscheiden; ein Abschnitt ohne Bewegung ist eine Rast</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the last segment must end at 360° (got %1°)</source>
+        <translation>das letzte Segment muss bei 360° enden (ist %1°)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the motion must return to the start: the last lift must be 0 (got %1)</source>
+        <translation>die Bewegung muss zum Anfang zurückkehren: der letzte Hub muss 0 sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the velocity jumps from %1 to %2 per degree</source>
+        <translation>die Geschwindigkeit springt von %1 auf %2 pro Grad</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the acceleration jumps from %1 to %2 per degree²</source>
+        <translation>die Beschleunigung springt von %1 auf %2 pro Grad²</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the velocity jumps from %1 to %2 per degree; the acceleration jumps from %3 to %4 per degree²</source>
+        <translation>die Geschwindigkeit springt von %1 auf %2 pro Grad; die Beschleunigung springt von %3 auf %4 pro Grad²</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>missing</source>
+        <translation>fehlt</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>a whole number</source>
-        <translation>eine ganze Zahl</translation>
+        <source>unknown key</source>
+        <translation>unbekannter Schlüssel</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>a fillet</source>
-        <translation>eine Verrundung</translation>
+        <source>must be %1 (got %2)</source>
+        <translation>muss %1 sein (ist %2)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be an array [x, y] of two numbers (got %1 elements)</source>
+        <translation>muss ein Array [x, y] aus zwei Zahlen sein (hat %1 Elemente)</translation>
     </message>
     <message>
         <location line="+1" />
+        <source>must be %1 or %2 (got "%3")</source>
+        <translation>muss %1 oder %2 sein (ist „%3“)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>must be %1 (got "%2")</source>
+        <translation>muss %1 sein (ist „%2“)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>unknown segment type "%1" (expected "arc", "line", "bezier" or "hermite")</source>
+        <translation>unbekannter Segmenttyp „%1“ (erwartet „arc“, „line“, „bezier“ oder „hermite“)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>unknown law "%1" (expected one of %2)</source>
+        <translation>unbekanntes Bewegungsgesetz „%1“ (erwartet eines von %2)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must give exactly one of omega_rad_s, rpm, period_s (got %1)</source>
+        <translation>muss genau eines von omega_rad_s, rpm, period_s angeben (sind %1)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>must be a whole number between 16 and 10000000 (got %1)</source>
+        <translation>muss eine ganze Zahl zwischen 16 und 10000000 sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>this file has format version %1; this Camwright reads version 1 only — open it with a newer Camwright</source>
+        <translation>diese Datei hat die Formatversion %1; dieses Camwright liest nur Version 1 – bitte mit einem neueren Camwright öffnen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>must be 1 (got %1)</source>
+        <translation>muss 1 sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be an array of four points [x, y]</source>
+        <translation>muss ein Array aus vier Punkten [x, y] sein</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>duplicated key</source>
+        <translation>doppelter Schlüssel</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>number %1 is too large for a double</source>
+        <translation>die Zahl %1 ist zu groß für eine Gleitkommazahl (double)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1</source>
+        <translation>kein gültiges JSON: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>nesting deeper than %1 levels</source>
+        <translation>Verschachtelung tiefer als %1 Ebenen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a NUL byte (at byte offset %1): a project file is text</source>
+        <translation>ein NUL-Byte (bei Byte-Position %1): eine Projektdatei ist Text</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>not valid JSON</source>
+        <translation>kein gültiges JSON</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>expected %1 or %2 (got %3 values)</source>
+        <translation>erwartet %1 oder %2 (%3 Werte erhalten)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>expected %1 (got %2 values)</source>
+        <translation>erwartet %1 (%2 Werte erhalten)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 must be a finite number (got "%2")</source>
+        <translation>%1 muss eine endliche Zahl sein (ist „%2“)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the contour is not valid, so the joint cannot be rounded</source>
+        <translation>die Kontur ist nicht gültig, daher kann der Übergang nicht verrundet werden</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>fillets join arcs and lines; %1 is neither</source>
+        <translation>Verrundungen verbinden Bögen und Geraden; %1 ist keins von beiden</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the segments already meet tangentially (their tangents differ by %1°, at most %2° counts as tangent); there is no corner to round</source>
+        <translation>die Segmente treffen sich bereits tangential (ihre Tangenten unterscheiden sich um %1°, bis %2° gilt als tangential); es gibt keine Ecke zu verrunden</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>radius %1 mm does not fit: fillets join arcs and lines; %2 is neither</source>
+        <translation>Radius %1 mm passt nicht: Verrundungen verbinden Bögen und Geraden; %2 ist keins von beiden</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>radius %1 mm does not fit: the segments already meet tangentially (their tangents differ by %2°, at most %3° counts as tangent); there is no corner to round</source>
+        <translation>Radius %1 mm passt nicht: die Segmente treffen sich bereits tangential (ihre Tangenten unterscheiden sich um %2°, bis %3° gilt als tangential); es gibt keine Ecke zu verrunden</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>no fillet radius of at least %1 mm fits at this joint (%2)</source>
+        <translation>an diesem Übergang passt kein Verrundungsradius von mindestens %1 mm (%2)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>radius %1 mm does not fit: no fillet radius of at least %2 mm fits at this joint (%3)</source>
+        <translation>Radius %1 mm passt nicht: an diesem Übergang passt kein Verrundungsradius von mindestens %2 mm (%3)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>radius %1 mm is too small: a fillet radius is at least %2 mm, the smallest radius a project holds</source>
+        <translation>Radius %1 mm ist zu klein: ein Verrundungsradius beträgt mindestens %2 mm, den kleinsten Radius, den ein Projekt fasst</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>radius %1 mm must be a number &gt; 0: radii below %2 mm fit</source>
+        <translation>Radius %1 mm muss eine Zahl &gt; 0 sein: Radien unter %2 mm passen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>radius %1 mm is too large: only radii below %2 mm fit (%3)</source>
+        <translation>Radius %1 mm ist zu groß: nur Radien unter %2 mm passen (%3)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>radius %1 mm does not fit (%2), although most radii below %3 mm do</source>
+        <translation>Radius %1 mm passt nicht (%2), obwohl die meisten Radien unter %3 mm passen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the tangent point would leave %1</source>
+        <translation>der Berührpunkt würde %1 verlassen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>no circle of that radius touches both neighbours inside the corner</source>
+        <translation>kein Kreis dieses Radius berührt beide Nachbarn innerhalb der Ecke</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>no larger circle touches both neighbours inside the corner</source>
+        <translation>kein größerer Kreis berührt beide Nachbarn innerhalb der Ecke</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the follower ray would not meet the fillet arc exactly once: it would pass the rotation centre or turn back as seen from it</source>
+        <translation>der Strahl des Stößels träfe den Verrundungsbogen nicht genau einmal: er ginge durch das Drehzentrum oder liefe, von dort gesehen, zurück</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>radii are limited to 1e6 mm</source>
+        <translation>Radien sind auf 10⁶ mm begrenzt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the roller radius %1 mm is not smaller than this concave arc's radius %2 mm: the roller cannot follow it</source>
+        <translation>der Rollenradius %1 mm ist nicht kleiner als der Radius %2 mm dieses konkaven Bogens: die Rolle kann ihm nicht folgen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>is inside the cam: the pivot turns on a circle of radius %1 mm round the cam centre, but the profile reaches %2 mm at %3°; move it farther out</source>
+        <translation>liegt in der Kurvenscheibe: der Drehpunkt läuft auf einem Kreis mit Radius %1 mm um die Mitte der Kurvenscheibe, aber das Profil reicht bei %3° bis %2 mm; ihn weiter nach außen legen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>is too short: at %1° the cam is %2 mm from the pivot, and %3 reaches only %4 mm</source>
+        <translation>ist zu kurz: bei %1° ist die Kurvenscheibe %2 mm vom Drehpunkt entfernt, und %3 reicht nur %4 mm weit</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>is too long: at %1° %2 passes beyond the whole cam (at most %3 mm from the pivot)</source>
+        <translation>ist zu lang: bei %1° reicht %2 über die ganze Kurvenscheibe hinaus (sie ist höchstens %3 mm vom Drehpunkt entfernt)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>does not let %1 touch the cam at %2° (no contact on the chosen side of the arm)</source>
+        <translation>lässt %1 die Kurvenscheibe bei %2° nicht berühren (kein Kontakt auf der gewählten Seite des Hebels)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the tool radius %1 mm is larger than this curve's tightest concave radius %2 mm: the offset path degenerates</source>
+        <translation>der Werkzeugradius %1 mm ist größer als der engste konkave Radius %2 mm dieser Kurve: die versetzte Bahn entartet</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the tool radius %1 mm is not smaller than the radius %2 mm of this concave arc: the offset path degenerates</source>
+        <translation>der Werkzeugradius %1 mm ist nicht kleiner als der Radius %2 mm dieses konkaven Bogens: die versetzte Bahn entartet</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the offset segments do not meet at this corner</source>
+        <translation>die versetzten Segmente treffen sich an dieser Ecke nicht</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the tool radius %1 mm is too large here: at its concave corners the offset of this segment would have to be trimmed beyond its ends</source>
+        <translation>der Werkzeugradius %1 mm ist hier zu groß: an seinen konkaven Ecken müsste die versetzte Bahn dieses Segments über seine Enden hinaus gekürzt werden</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>must be a finite length of at least %1 mm (got %2)</source>
+        <translation>muss eine endliche Länge von mindestens %1 mm sein (ist %2)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 mm makes %2 steps on this %3 mm path; the seed method takes at most %4: a step of at least %5 mm</source>
+        <translation>%1 mm ergibt %2 Schritte auf dieser %3 mm langen Bahn; das Ausgangsverfahren nimmt höchstens %4: eine Schrittweite von mindestens %5 mm</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>no acceleration limit for the %1 axis, along which the path moves (segment %2): without one its speed would be unbounded and its time 0</source>
+        <translation>keine Beschleunigungsgrenze für die %1-Achse, entlang der die Bahn fährt (Segment %2): ohne sie wäre die Geschwindigkeit unbegrenzt und die Zeit 0</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>is empty</source>
+        <translation>ist leer</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>coordinates must be finite, at most 1e6 mm, and the bulge finite</source>
+        <translation>die Koordinaten müssen endlich und höchstens 10⁶ mm sein, die Wölbung endlich</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>a path needs at least two points</source>
+        <translation>eine Bahn braucht mindestens zwei Punkte</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>repeats the previous point</source>
+        <translation>wiederholt den vorigen Punkt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>an arc (bulge %1) must keep its height, but z goes from %2 to %3</source>
+        <translation>ein Bogen (Bulge %1) muss seine Höhe halten, aber z geht von %2 auf %3</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>an arc needs two distinct points in the XY plane</source>
+        <translation>ein Bogen braucht zwei verschiedene Punkte in der XY-Ebene</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the arc (bulge %1) reaches %2 mm from the origin; a path must stay within %3 mm</source>
+        <translation>der Bogen (Bulge %1) reicht %2 mm vom Ursprung weg; eine Bahn muss innerhalb von %3 mm bleiben</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>a tangent line joins two arcs; %1 is %2</source>
+        <translation>eine Tangente verbindet zwei Bögen; %1 ist %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 is not a circle (its radius must be a finite number &gt; 0, its centre finite)</source>
+        <translation>%1 ist kein Kreis (sein Radius muss eine endliche Zahl &gt; 0 sein, sein Mittelpunkt endlich)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>both arcs lie on the same circle, so they already meet tangentially: no line fits between them</source>
+        <translation>beide Bögen liegen auf demselben Kreis und treffen sich daher bereits tangential: keine Gerade passt dazwischen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the circle of %1 lies inside that of %2, so the two circles have no common tangent</source>
+        <translation>der Kreis von %1 liegt in dem von %2, daher haben die beiden Kreise keine gemeinsame Tangente</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>no tangent line fits: %1</source>
+        <translation>keine Tangente passt: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the circles touch at (%1, %2): the arcs can meet there directly, without a line</source>
+        <translation>die Kreise berühren sich in (%1; %2): die Bögen können sich dort direkt treffen, ohne Gerade</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 from (%2, %3) on %4 to (%5, %6) on %7 runs clockwise around the rotation centre (its polar angle would not grow from %4 to %7)</source>
+        <translation>%1 von (%2; %3) auf %4 nach (%5; %6) auf %7 läuft im Uhrzeigersinn um das Drehzentrum (ihr Polarwinkel würde von %4 bis %7 nicht wachsen)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 from (%2, %3) on %4 to (%5, %6) on %7 touches %8 on the near side of its circle, but the arc follows the far side (outer branch)</source>
+        <translation>%1 von (%2; %3) auf %4 nach (%5; %6) auf %7 berührt %8 auf der nahen Seite seines Kreises, aber der Bogen folgt der fernen Seite (Zweig „außen“)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 from (%2, %3) on %4 to (%5, %6) on %7 touches %8 on the far side of its circle, but the arc follows the near side (inner branch)</source>
+        <translation>%1 von (%2; %3) auf %4 nach (%5; %6) auf %7 berührt %8 auf der fernen Seite seines Kreises, aber der Bogen folgt der nahen Seite (Zweig „innen“)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>with %1 from (%2, %3) on %4 to (%5, %6) on %7 the window of %4 would be empty: its end would move onto its start %8°</source>
+        <translation>nähme man %1 von (%2; %3) auf %4 nach (%5; %6) auf %7, wäre das Fenster von %4 leer: sein Ende rückte auf seinen Anfang %8°</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>with %1 from (%2, %3) on %4 to (%5, %6) on %7 the window of %7 would be empty or reversed: its start would move to %8°, not before its end %9°</source>
+        <translation>nähme man %1 von (%2; %3) auf %4 nach (%5; %6) auf %7, wäre das Fenster von %7 leer oder umgekehrt: sein Anfang rückte auf %8°, nicht vor sein Ende %9°</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>has no segment to continue</source>
+        <translation>hat kein Segment, das sich fortsetzen ließe</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>there is no %1: rows are 0 .. %2</source>
+        <translation>es gibt kein %1: die Zeilen sind 0 .. %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a contour of one segment must be a circle; %1 is %2</source>
+        <translation>eine Kontur aus einem Segment muss ein Kreis sein; %1 ist %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is not a circle</source>
+        <translation>%1 ist kein Kreis</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the follower ray at the end %1° of %2 misses its circle, so it has no end point</source>
+        <translation>der Strahl des Stößels am Ende %1° von %2 verfehlt dessen Kreis, daher hat es keinen Endpunkt</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 has no direction at its end point</source>
+        <translation>%1 hat an seinem Endpunkt keine Richtung</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 does not run counter-clockwise around the rotation centre at its end point (%2, %3) (its polar angle does not grow there)</source>
+        <translation>%1 läuft an seinem Endpunkt (%2; %3) nicht gegen den Uhrzeigersinn um das Drehzentrum (sein Polarwinkel wächst dort nicht)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the point must be finite (got (%1, %2))</source>
+        <translation>der Punkt muss endlich sein (ist (%1; %2))</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the point is the rotation centre, which no arc of the contour can reach</source>
+        <translation>der Punkt ist das Drehzentrum, das kein Bogen der Kontur erreichen kann</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the point is the end point (%1, %2) of %3: an arc needs a second point</source>
+        <translation>der Punkt ist der Endpunkt (%1; %2) von %3: ein Bogen braucht einen zweiten Punkt</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the point is on the tangent: use a line (an arc through it would need a radius or centre beyond 1e6 mm, the largest length a project holds)</source>
+        <translation>der Punkt liegt auf der Tangente: eine Gerade verwenden (ein Bogen durch ihn bräuchte einen Radius oder Mittelpunkt jenseits von 10⁶ mm, der größten Länge, die ein Projekt fasst)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the arc's radius would be %1 mm, below %2 mm, the smallest a project holds</source>
+        <translation>der Radius des Bogens wäre %1 mm, unter %2 mm, dem kleinsten, den ein Projekt fasst</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the end point of %1 is not on the outer branch of the circle (centre (%2, %3), radius %4 mm)</source>
+        <translation>der Endpunkt von %1 liegt nicht auf dem Zweig „außen“ des Kreises (Mittelpunkt (%2; %3), Radius %4 mm)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the end point of %1 is not on the inner branch of the circle (centre (%2, %3), radius %4 mm)</source>
+        <translation>der Endpunkt von %1 liegt nicht auf dem Zweig „innen“ des Kreises (Mittelpunkt (%2; %3), Radius %4 mm)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the point lies on the near side of the circle (centre (%1, %2), radius %3 mm) as seen from the rotation centre, but the arc leaves %4 on its far side (outer branch): the follower ray would not meet the arc at the point</source>
+        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, auf der nahen Seite des Kreises (Mittelpunkt (%1; %2), Radius %3 mm), aber der Bogen verlässt %4 auf dessen ferner Seite (Zweig „außen“): der Strahl des Stößels träfe den Bogen nicht im Punkt</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the point lies on the far side of the circle (centre (%1, %2), radius %3 mm) as seen from the rotation centre, but the arc leaves %4 on its near side (inner branch): the follower ray would not meet the arc at the point</source>
+        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, auf der fernen Seite des Kreises (Mittelpunkt (%1; %2), Radius %3 mm), aber der Bogen verlässt %4 auf dessen naher Seite (Zweig „innen“): der Strahl des Stößels träfe den Bogen nicht im Punkt</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>the point lies behind the end point of %1 as seen from the rotation centre: the arc along the circle (centre (%2, %3), radius %4 mm) would pass to its near side and run back before reaching it</source>
+        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, hinter dem Endpunkt von %1: der Bogen entlang des Kreises (Mittelpunkt (%2; %3), Radius %4 mm) ginge auf dessen nahe Seite über und liefe zurück, bevor er ihn erreicht</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the point lies behind the end point of %1 as seen from the rotation centre: the arc along the circle (centre (%2, %3), radius %4 mm) would pass to its far side and run back before reaching it</source>
+        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, hinter dem Endpunkt von %1: der Bogen entlang des Kreises (Mittelpunkt (%2; %3), Radius %4 mm) ginge auf dessen ferne Seite über und liefe zurück, bevor er ihn erreicht</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>the point lies on the follower ray at the end %1° of %2: the arc's window would be empty</source>
+        <translation>der Punkt liegt auf dem Strahl des Stößels am Ende %1° von %2: das Fenster des Bogens wäre leer</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the arc would end at %1° (the polar angle of the point), not before the end %2° of %3, whose window would be empty or reversed</source>
+        <translation>der Bogen endete bei %1° (dem Polarwinkel des Punkts), nicht vor dem Ende %2° von %3, dessen Fenster leer oder umgekehrt wäre</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the point is the end point of %1, which would have no length left</source>
+        <translation>der Punkt ist der Endpunkt von %1, dem keine Länge bliebe</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>with its start point moved to the point, %1 would no longer run counter-clockwise from %2° to its end %3°</source>
+        <translation>mit seinem Anfangspunkt im Punkt liefe %1 nicht mehr gegen den Uhrzeigersinn von %2° bis zu seinem Ende %3°</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the tolerance must be between %1 and %2 mm, not %3</source>
+        <translation>die Toleranz muss zwischen %1 und %2 mm liegen, nicht %3</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the tool radius must be above 0 and at most %1 mm, not %2</source>
+        <translation>der Werkzeugradius muss über 0 und höchstens %1 mm sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>with cutter compensation the tool would have to reach past the next programmed arc at a concave corner of this segment, which a controller offsetting one move at a time turns into a cut through the part; export the tool-centre path (without --compensation) or use a coarser --tolerance</source>
+        <translation>mit Werkzeugradiuskorrektur müsste das Werkzeug an einer konkaven Ecke dieses Segments über den nächsten programmierten Bogen hinausreichen, was eine Steuerung, die Satz für Satz versetzt, in einen Schnitt durch das Werkstück verwandelt; die Werkzeugmittelpunktsbahn exportieren (ohne --compensation) oder eine gröbere --tolerance verwenden</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>%1 must be above 0 and at most %2 mm, not %3</source>
+        <translation>%1 muss über 0 und höchstens %2 mm sein, nicht %3</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the feed must be above 0 and at most %1 mm/min, not %2</source>
+        <translation>der Vorschub muss über 0 und höchstens %1 mm/min sein, nicht %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the tool number must be from 1 to 99999, not %1</source>
+        <translation>die Werkzeugnummer muss zwischen 1 und 99999 liegen, nicht %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a step-down of %1 mm makes %2 passes for a depth of %3 mm; at most %4 are made</source>
+        <translation>eine Zustellung von %1 mm ergibt %2 Durchgänge für eine Tiefe von %3 mm; höchstens %4 werden gefahren</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>a cam table has from %1 to %2 points, not %3</source>
+        <translation>eine Kurvenscheibentabelle hat %1 bis %2 Punkte, nicht %3</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is not a finite number (%1): the result is beyond what a double can hold</source>
+        <translation>ist keine endliche Zahl (%1): das Ergebnis übersteigt, was ein double fassen kann</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be at least 1 (got 0)</source>
+        <translation>muss mindestens 1 sein (ist 0)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is not a finite number, which a file cannot hold</source>
+        <translation>ist keine endliche Zahl; eine Datei kann sie nicht speichern</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cannot open: %1</source>
+        <translation>kann nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cannot examine: %1</source>
+        <translation>kann nicht untersucht werden: %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cannot read: %1</source>
+        <translation>kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is %1, not a regular file: not read</source>
+        <translation>ist %1, keine reguläre Datei: nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is %1 MiB (%2 bytes): files larger than %3 MiB are not read</source>
+        <translation>ist %1 MiB groß (%2 Bytes): Dateien über %3 MiB werden nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>grew past %1 MiB while it was read: larger files are not read</source>
+        <translation>wuchs beim Lesen über %1 MiB: größere Dateien werden nicht gelesen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>no file name given</source>
+        <translation>kein Dateiname angegeben</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cannot examine %1: %2</source>
+        <translation>%1 kann nicht untersucht werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot follow its symbolic links: %1</source>
+        <translation>ihren symbolischen Links kann nicht gefolgt werden: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot read the symbolic link %1: %2</source>
+        <translation>der symbolische Link %1 kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is a link to an open file descriptor, not a file: not replaced</source>
+        <translation>ist ein Link auf einen offenen Dateideskriptor, keine Datei: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1 is a link to an open file descriptor, not a file: not replaced</source>
+        <translation>%1 ist ein Link auf einen offenen Dateideskriptor, keine Datei: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>is %1, not a regular file: not replaced</source>
+        <translation>ist %1, keine reguläre Datei: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 is %2, not a regular file: not replaced</source>
+        <translation>%1 ist %2, keine reguläre Datei: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>names a folder, not a file</source>
+        <translation>bezeichnet einen Ordner, keine Datei</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot create a temporary file in %1: %2</source>
+        <translation>in %1 kann keine temporäre Datei angelegt werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot give the new file the owner of %1: %2</source>
+        <translation>die neue Datei kann nicht den Eigentümer von %1 erhalten: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>cannot give the new file the permissions of %1: %2</source>
+        <translation>die neue Datei kann nicht die Zugriffsrechte von %1 erhalten: %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cannot flush %1 to disk: %2</source>
+        <translation>%1 kann nicht auf den Datenträger geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>%1 became %2 while it was written: not replaced</source>
+        <translation>%1 ist während des Schreibens %2 geworden: nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cannot replace %1: %2</source>
+        <translation>%1 kann nicht ersetzt werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>replaced, but cannot close %1: %2</source>
+        <translation>ersetzt, aber %1 kann nicht geschlossen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>replaced, but cannot flush the folder %1 to disk: %2</source>
+        <translation>ersetzt, aber der Ordner %1 kann nicht auf den Datenträger geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>no such segment</source>
+        <translation>dieses Segment gibt es nicht</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>is not an arc</source>
+        <translation>ist kein Bogen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the admissible radial error must be &gt; 0 mm</source>
+        <translation>der zulässige radiale Fehler muss &gt; 0 mm sein</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the ray at the window's start does not meet the arc</source>
+        <translation>der Strahl des Stößels am Anfang des Fensters trifft den Bogen nicht</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the ray at the window's end does not meet the arc</source>
+        <translation>der Strahl des Stößels am Ende des Fensters trifft den Bogen nicht</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a spline needs at least two points</source>
+        <translation>ein Spline braucht mindestens zwei Stützpunkte</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a closed spline needs at least three points</source>
+        <translation>ein geschlossener Spline braucht mindestens drei Stützpunkte</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>must be a finite factor &gt; 0 (got %1)</source>
+        <translation>muss ein endlicher Faktor &gt; 0 sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the neighbouring segments do not meet, so there is no boundary to fit</source>
+        <translation>die benachbarten Segmente treffen sich nicht, daher gibt es keine Grenze, an die sich die Fenster anpassen ließen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>is empty: the design's contour was never synthesised (camwright-cli synthesize makes it)</source>
+        <translation>ist leer: die Kontur des Entwurfs wurde noch nie synthetisiert (camwright-cli synthesize erzeugt sie)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the project has no design to synthesise a contour from</source>
+        <translation>das Projekt hat keinen Bewegungsentwurf, aus dem sich eine Kontur synthetisieren ließe</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the synthesised arc table is not a valid contour: %1</source>
+        <translation>die synthetisierte Bogentabelle ist keine gültige Kontur: %1</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the synthesised arc table is not a valid contour: %1, made for the cam angles %2° to %3° (%4)</source>
+        <translation>die synthetisierte Bogentabelle ist keine gültige Kontur: %1, erzeugt für die Nockenwinkel %2° bis %3° (%4)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>cannot be met near %1°: no arcs come within it even on pieces of 2^-%2 of the profile's sampling step (the profile has a corner or a cusp there)</source>
+        <translation>ist bei %1° nicht einzuhalten: selbst auf Stücken von 2^-%2 der Abtastschrittweite des Profils kommen keine Bögen so nahe (das Profil hat dort eine Ecke oder Spitze)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 mm is below what double precision can certify for this cam: at least %2 mm, for a profile reaching %3 mm from the centre</source>
+        <translation>%1 mm liegt unter dem, was doppelte Genauigkeit für diesen Nocken bestätigen kann: mindestens %2 mm, bei einem Profil, das %3 mm vom Mittelpunkt reicht</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>cannot be met: the closest arc table found lies %2 mm from the exact profile (at %3° of cam angle), more than the %1 mm asked for</source>
+        <translation>ist nicht einzuhalten: die beste gefundene Bogentabelle liegt %2 mm vom exakten Profil entfernt (bei %3° Nockenwinkel), mehr als die verlangten %1 mm</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the follower's line (offset %1 mm) passes outside the base circle of radius %2 mm: make the base radius larger than the offset</source>
+        <translation>die Stößelgerade (Versatz %1 mm) verläuft außerhalb des Grundkreises mit Radius %2 mm: den Grundkreisradius größer als den Versatz wählen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the follower's line (offset %1 mm) passes outside the base circle of radius %2 mm (base radius + roller radius): make the base radius larger than the offset</source>
+        <translation>die Stößelgerade (Versatz %1 mm) verläuft außerhalb des Grundkreises mit Radius %2 mm (Grundkreisradius + Rollenradius): den Grundkreisradius größer als den Versatz wählen</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>an arm of %1 mm from a pivot %2 mm from the centre cannot touch the base circle of radius %3 mm</source>
+        <translation>ein Schwinghebel von %1 mm Länge, dessen Drehpunkt %2 mm vom Scheibenmittelpunkt entfernt ist, kann den Grundkreis mit Radius %3 mm nicht berühren</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>an arm of %1 mm from a pivot %2 mm from the centre cannot touch the base circle of radius %3 mm (base radius + roller radius)</source>
+        <translation>ein Schwinghebel von %1 mm Länge, dessen Drehpunkt %2 mm vom Scheibenmittelpunkt entfernt ist, kann den Grundkreis mit Radius %3 mm (Grundkreisradius + Rollenradius) nicht berühren</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>undercut: the pitch curve bends tighter than the roller radius %1 mm from %2° to %3°</source>
+        <translation>Unterschnitt: von %2° bis %3° ist die Rollenmittelpunktsbahn enger gekrümmt als der Rollenradius %1 mm</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>undercut: the face's envelope folds back (h + h'' &lt; 0) from %1° to %2°</source>
+        <translation>Unterschnitt: von %1° bis %2° schlägt die Hüllkurve des Flachstößels zurück (h + h'' &lt; 0)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the pressure angle exceeds %1° from %2° to %3°</source>
+        <translation>von %2° bis %3° überschreitet der Druckwinkel %1°</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>radius %1 mm gives a contour that does not validate (%2)</source>
+        <translation>Radius %1 mm ergibt eine ungültige Kontur (%2)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../../src/core/construction/tangents.cpp" line="+78" />
+        <source>an arc</source>
+        <translation>ein Bogen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a line</source>
+        <translation>eine Gerade</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a Bézier spline</source>
+        <translation>ein Bézier-Spline</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a Hermite spline</source>
+        <translation>ein Hermite-Spline</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a segment</source>
+        <translation>ein Segment</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>the outer tangent</source>
+        <translation>die äußere Tangente</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>the inner tangent</source>
+        <translation>die innere Tangente</translation>
+    </message>
+    <message>
+        <location line="+190" />
         <source>a tangent line</source>
         <translation>eine Tangente</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location filename="../../src/core/export/gcode.cpp" line="+335" />
+        <source>the depth</source>
+        <translation>die Tiefe</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>the safe height</source>
+        <translation>die sichere Höhe</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>the step-down</source>
+        <translation>die Zustellung</translation>
+    </message>
+    <message>
+        <location filename="../../src/core/fillet/fillet.cpp" line="+195" />
+        <source>a fillet</source>
+        <translation>eine Verrundung</translation>
+    </message>
+    <message>
+        <location filename="../../src/core/follower/follower_arm.cpp" line="+310" />
         <source>the roller</source>
         <translation>die Rolle</translation>
     </message>
@@ -73,27 +1023,7 @@
         <translation>die Spitze</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>an arc</source>
-        <translation>ein Bogen</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>a line</source>
-        <translation>eine Gerade</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>a Bézier spline</source>
-        <translation>ein Bézier-Spline</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>a Hermite spline</source>
-        <translation>ein Hermite-Spline</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location filename="../../src/core/io/atomic_file.cpp" line="+138" />
         <source>a folder</source>
         <translation>ein Ordner</translation>
     </message>
@@ -123,63 +1053,65 @@
         <translation>eine Spezialdatei</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>the depth</source>
-        <translation>die Tiefe</translation>
+        <location filename="../../src/core/io/project_reader.cpp" line="+20" />
+        <location line="+94" />
+        <source>a string</source>
+        <translation>ein Text</translation>
+    </message>
+    <message>
+        <location line="-93" />
+        <source>a boolean</source>
+        <translation>ein Wahrheitswert</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>the safe height</source>
-        <translation>die sichere Höhe</translation>
+        <location line="+63" />
+        <source>a number</source>
+        <translation>eine Zahl</translation>
+    </message>
+    <message>
+        <location line="-62" />
+        <source>an array</source>
+        <translation>ein Array</translation>
     </message>
     <message>
         <location line="+1" />
-        <source>the step-down</source>
-        <translation>die Zustellung</translation>
+        <location line="+141" />
+        <location line="+264" />
+        <source>an object</source>
+        <translation>ein Objekt</translation>
     </message>
     <message>
-        <location line="+15" />
-        <location line="+4" />
-        <source>the tangent point would leave segment %1</source>
-        <translation>der Berührpunkt würde Segment %1 verlassen</translation>
+        <location line="-327" />
+        <source>true or false</source>
+        <translation>true oder false</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>no circle of that radius touches both neighbours inside the corner</source>
-        <translation>kein Kreis dieses Radius berührt beide Nachbarn innerhalb der Ecke</translation>
+        <location line="+28" />
+        <source>an array [x, y] of two numbers</source>
+        <translation>ein Array [x, y] aus zwei Zahlen</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>no larger circle touches both neighbours inside the corner</source>
-        <translation>kein größerer Kreis berührt beide Nachbarn innerhalb der Ecke</translation>
+        <location line="+20" />
+        <source>an array of numbers</source>
+        <translation>ein Array aus Zahlen</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>the follower ray would not meet the fillet arc exactly once: it would pass the rotation centre or turn back as seen from it</source>
-        <translation>der Strahl des Stößels träfe den Verrundungsbogen nicht genau einmal: er ginge durch das Drehzentrum oder liefe, von dort gesehen, zurück</translation>
+        <location line="+237" />
+        <location line="+87" />
+        <source>an array of segments</source>
+        <translation>ein Array aus Segmenten</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>radii are limited to 10⁶ mm</source>
-        <translation>Radien sind auf 10⁶ mm begrenzt</translation>
+        <location line="-36" />
+        <source>a whole number</source>
+        <translation>eine ganze Zahl</translation>
     </message>
+</context>
+<context>
+    <name>DiagnosticText</name>
     <message>
-        <location line="+12" />
-        <source>the outer tangent from (%1, %2) on segment %3 to (%4, %5) on segment %6</source>
-        <translation>die äußere Tangente von (%1; %2) auf Segment %3 nach (%4; %5) auf Segment %6</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>the inner tangent from (%1, %2) on segment %3 to (%4, %5) on segment %6</source>
-        <translation>die innere Tangente von (%1; %2) auf Segment %3 nach (%4; %5) auf Segment %6</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the tangent “%1” from (%2, %3) on segment %4 to (%5, %6) on segment %7</source>
-        <translation>die Tangente „%1“ von (%2; %3) auf Segment %4 nach (%5; %6) auf Segment %7</translation>
-    </message>
-    <message>
-        <location line="+19" />
+        <location filename="../../src/app/messages/diagnostic_text.cpp" line="+70" />
         <source>control point P%1</source>
         <translation>Kontrollpunkt P%1</translation>
     </message>
@@ -219,27 +1151,27 @@
         <translation>%1, y</translation>
     </message>
     <message>
-        <location line="+53" />
+        <location line="+163" />
         <source>law</source>
         <translation>Gesetz</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>end angle</source>
         <translation>Endwinkel</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>lift</source>
         <translation>Hub</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+25" />
         <source>Motion design, segment %1</source>
         <translation>Bewegungsentwurf, Segment %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Motion design, segment %1, %2</source>
         <translation>Bewegungsentwurf, Segment %1, %2</translation>
     </message>
@@ -249,17 +1181,22 @@
         <translation>Bewegungsentwurf, Übergang zwischen Segment %1 und %2</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="-95" />
         <source>Machining, acceleration of axis %1</source>
         <translation>Zerspanung, Beschleunigung der Achse %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="-45" />
+        <source>segment %1</source>
+        <translation>Segment %1</translation>
+    </message>
+    <message>
+        <location line="+49" />
         <source>Machining, speed limit of axis %1</source>
         <translation>Zerspanung, Geschwindigkeitsgrenze der Achse %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>Follower, pivot x</source>
         <translation>Stößel, Drehpunkt des Hebels x</translation>
     </message>
@@ -269,18 +1206,18 @@
         <translation>Stößel, Drehpunkt des Hebels y</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Point %1</source>
         <translation>Punkt %1</translation>
     </message>
     <message>
-        <location line="+5" />
-        <location line="+739" />
+        <location line="+6" />
+        <location line="+65" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-738" />
+        <location line="-64" />
         <source>Points</source>
         <translation>Punkte</translation>
     </message>
@@ -375,7 +1312,7 @@
         <translation>Bewegungsentwurf</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>Motion design, base radius</source>
         <translation>Bewegungsentwurf, Grundkreisradius</translation>
     </message>
@@ -390,933 +1327,17 @@
         <translation>Bewegungsentwurf, Segmente</translation>
     </message>
     <message>
-        <location line="+43" />
-        <source>must be a finite number (got %1)</source>
-        <translation>muss eine endliche Zahl sein (ist %1)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>magnitude must be at most 10⁶ mm (got %1)</source>
-        <translation>Betrag darf höchstens 10⁶ mm sein (ist %1)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>must be between %1 and %2%3 (got %4)</source>
-        <translation>muss zwischen %1 und %2%3 liegen (ist %4)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>must be at least %1 mm (got %2): a smaller circle or step is below the precision of the joints</source>
-        <translation>muss mindestens %1 mm sein (ist %2): ein kleinerer Kreis oder Schritt liegt unter der Genauigkeit der Übergänge</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>must be &gt; 0 (got %1)</source>
-        <translation>muss &gt; 0 sein (ist %1)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>must not be 0 (its sign gives the turning direction)</source>
-        <translation>darf nicht 0 sein (das Vorzeichen gibt die Drehrichtung an)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>magnitude must be between %1 and %2%3 (got %4)</source>
-        <translation>Betrag muss zwischen %1 und %2%3 liegen (ist %4)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>must have at least one segment</source>
-        <translation>muss mindestens ein Segment haben</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>must be a finite angle of magnitude at most 10⁶° (got %1)</source>
-        <translation>muss ein endlicher Winkel mit einem Betrag von höchstens 10⁶° sein (ist %1)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>must be greater than %1 %2° (got %3°)</source>
-        <translation>muss größer als %1 %2° sein (ist %3°)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>at %1° the follower ray only grazes the curve (it must cross it at an angle of at least %2 rad, or the follower would need an unbounded speed); the window must end before it</source>
-        <translation>bei %1° streift der Strahl des Stößels die Kurve nur (er muss sie unter einem Winkel von mindestens %2 rad schneiden, sonst bräuchte der Stößel eine unbegrenzte Geschwindigkeit); das Fenster muss vorher enden</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>window %1° .. %2° disagrees with the polar angles of the line's end points (%3° .. %4°)</source>
-        <translation>das Fenster %1° .. %2° passt nicht zu den Polarwinkeln der Endpunkte der Geraden (%3° .. %4°)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>window %1° .. %2° disagrees with the polar angles of the curve's end points (%3° .. %4°)</source>
-        <translation>das Fenster %1° .. %2° passt nicht zu den Polarwinkeln der Endpunkte der Kurve (%3° .. %4°)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the end point must differ from the start point (the line has no length)</source>
-        <translation>der Endpunkt muss sich vom Anfangspunkt unterscheiden (die Gerade hat keine Länge)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the line passes through the rotation centre, so the follower ray meets it at no angle or at every point</source>
-        <translation>die Gerade geht durch das Drehzentrum, daher trifft der Strahl des Stößels sie unter keinem Winkel oder in jedem Punkt</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>the line runs clockwise around the rotation centre (from %1° to %2°); swap its start and end points</source>
-        <translation>die Gerade läuft im Uhrzeigersinn um das Drehzentrum (von %1° bis %2°); Anfangs- und Endpunkt tauschen</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>an end point lies on the rotation centre</source>
-        <translation>ein Endpunkt liegt im Drehzentrum</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>the curve runs clockwise around the rotation centre (from %1° to %2°); reverse its points</source>
-        <translation>die Kurve läuft im Uhrzeigersinn um das Drehzentrum (von %1° bis %2°); ihre Punkte umkehren</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the follower ray meets the curve %1 times at %2°; inside its window it must meet it exactly once</source>
-        <translation>der Strahl des Stößels trifft die Kurve bei %2° %1-mal; innerhalb ihres Fensters muss er sie genau einmal treffen</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the rotation centre lies inside this circle, so the inner intersection is behind the follower (r ≤ 0); choose the outer branch</source>
-        <translation>das Drehzentrum liegt in diesem Kreis, daher liegt der innere Schnittpunkt hinter dem Stößel (r ≤ 0); den Zweig „außen“ wählen</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>the follower ray misses the circle inside the window %1° .. %2°; it meets it only for φ in %3° .. %4°</source>
-        <translation>der Strahl des Stößels verfehlt den Kreis im Fenster %1° .. %2°; er trifft ihn nur für φ in %3° .. %4°</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>gap of %1° between %2 %3° and %4 %5°</source>
-        <translation>Lücke von %1° zwischen %2 %3° und %4 %5°</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>overlap of %1° between %2 %3° and %4 %5°</source>
-        <translation>Überlappung von %1° zwischen %2 %3° und %4 %5°</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the windows cover %1° (from %2° to %3°); they must cover exactly one turn, 360°</source>
-        <translation>die Fenster überdecken %1° (von %2° bis %3°); sie müssen genau eine Umdrehung überdecken, 360°</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the segments do not meet at %1°: gap of %2 mm (at most 10⁻⁶ mm allowed)</source>
-        <translation>die Segmente treffen sich bei %1° nicht: Lücke von %2 mm (höchstens 10⁻⁶ mm erlaubt)</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>a flat face moves only translating; use a knife edge or a roller on a swinging arm</source>
-        <translation>ein Flachstößel bewegt sich nur geradgeführt; auf einem Schwinghebel eine Spitze oder eine Rolle verwenden</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>must be smaller than the radius %1 mm of the concave arc in segment %2 (got %3 mm): the roller cannot enter it</source>
-        <translation>muss kleiner sein als der Radius %1 mm des konkaven Bogens in Segment %2 (ist %3 mm): die Rolle passt nicht hinein</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>must be between 16 and 10000000 (got %1)</source>
-        <translation>muss zwischen 16 und 10000000 liegen (ist %1)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>must list 2 or 3 axes (got %1)</source>
-        <translation>muss 2 oder 3 Achsen angeben (sind %1)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>%1 needs a joint between two segments (the contour has %2)</source>
-        <translation>%1 braucht einen Übergang zwischen zwei Segmenten (die Kontur hat %2)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>there is no joint %1: joints are numbered 0 .. %2</source>
-        <translation>es gibt keinen Übergang %1: die Übergänge sind von 0 bis %2 nummeriert</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>must be after %1°, where this segment starts (got %2°)</source>
-        <translation>muss nach %1° liegen, wo dieses Segment beginnt (ist %2°)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>must be at most 360° (got %1°)</source>
-        <translation>darf höchstens 360° sein (ist %1°)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>a dwell keeps the lift it starts with (%1), got %2</source>
-        <translation>eine Rast behält den Hub, mit dem sie beginnt (%1), ist aber %2</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>must differ from the lift it starts with (%1) for %2; a stretch without motion is a dwell</source>
-        <translation>muss sich für %2 vom Hub am Anfang (%1) unterscheiden; ein Abschnitt ohne Bewegung ist eine Rast</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the last segment must end at 360° (got %1°)</source>
-        <translation>das letzte Segment muss bei 360° enden (ist %1°)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>the motion must return to the start: the last lift must be 0 (got %1)</source>
-        <translation>die Bewegung muss zum Anfang zurückkehren: der letzte Hub muss 0 sein (ist %1)</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>the velocity jumps from %1 to %2 per degree</source>
-        <translation>die Geschwindigkeit springt von %1 auf %2 pro Grad</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the acceleration jumps from %1 to %2 per degree²</source>
-        <translation>die Beschleunigung springt von %1 auf %2 pro Grad²</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the velocity jumps from %1 to %2 per degree; the acceleration jumps from %3 to %4 per degree²</source>
-        <translation>die Geschwindigkeit springt von %1 auf %2 pro Grad; die Beschleunigung springt von %3 auf %4 pro Grad²</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>missing</source>
-        <translation>fehlt</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>unknown key</source>
-        <translation>unbekannter Schlüssel</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>must be %1 (got %2)</source>
-        <translation>muss %1 sein (ist %2)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>must be an array [x, y] of two numbers (got %1 elements)</source>
-        <translation>muss ein Array [x, y] aus zwei Zahlen sein (hat %1 Elemente)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>must be one of %1 (got “%2”)</source>
-        <translation>muss eines von %1 sein (ist „%2“)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>unknown segment type “%1” (expected “arc”, “line”, “bezier” or “hermite”)</source>
-        <translation>unbekannter Segmenttyp „%1“ (erwartet „arc“, „line“, „bezier“ oder „hermite“)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>unknown law “%1” (expected one of %2)</source>
-        <translation>unbekanntes Bewegungsgesetz „%1“ (erwartet eines von %2)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>must give exactly one of omega_rad_s, rpm, period_s (got %1)</source>
-        <translation>muss genau eines von omega_rad_s, rpm, period_s angeben (sind %1)</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>must be a whole number between 16 and 10000000 (got %1)</source>
-        <translation>muss eine ganze Zahl zwischen 16 und 10000000 sein (ist %1)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>this file has format version %1; this Camwright reads version 1 only — open it with a newer Camwright</source>
-        <translation>diese Datei hat die Formatversion %1; dieses Camwright liest nur Version 1 – bitte mit einem neueren Camwright öffnen</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>must be 1 (got %1)</source>
-        <translation>muss 1 sein (ist %1)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>must be an array of four points [x, y]</source>
-        <translation>muss ein Array aus vier Punkten [x, y] sein</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>duplicated key</source>
-        <translation>doppelter Schlüssel</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>line %1, column %2: number %3 is too large for a double</source>
-        <translation>Zeile %1, Spalte %2: die Zahl %3 ist zu groß für eine Gleitkommazahl (double)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>line %1, column %2: not valid JSON: %3</source>
-        <translation>Zeile %1, Spalte %2: kein gültiges JSON: %3</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>nesting deeper than %1 levels</source>
-        <translation>Verschachtelung tiefer als %1 Ebenen</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>line %1, column %2: a NUL byte (at byte offset %3): a project file is text</source>
-        <translation>Zeile %1, Spalte %2: ein NUL-Byte (bei Byte-Position %3): eine Projektdatei ist Text</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>not valid JSON</source>
-        <translation>kein gültiges JSON</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>line %1: expected %2 (got %3 values)</source>
-        <translation>Zeile %1: erwartet %2 (%3 Werte erhalten)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>line %1: expected %2 or %3 (got %4 values)</source>
-        <translation>Zeile %1: erwartet %2 oder %3 (%4 Werte erhalten)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>line %1: %2 must be a finite number (got “%3”)</source>
-        <translation>Zeile %1: %2 muss eine endliche Zahl sein (ist „%3“)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the contour is not valid, so the joint cannot be rounded</source>
-        <translation>die Kontur ist nicht gültig, daher kann der Übergang nicht verrundet werden</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>fillets join arcs and lines; segment %1 is neither</source>
-        <translation>Verrundungen verbinden Bögen und Geraden; Segment %1 ist keins von beiden</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the segments already meet tangentially (their tangents differ by %1°, at most %2° counts as tangent); there is no corner to round</source>
-        <translation>die Segmente treffen sich bereits tangential (ihre Tangenten unterscheiden sich um %1°, bis %2° gilt als tangential); es gibt keine Ecke zu verrunden</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>radius %1 mm does not fit: fillets join arcs and lines; segment %2 is neither</source>
-        <translation>Radius %1 mm passt nicht: Verrundungen verbinden Bögen und Geraden; Segment %2 ist keins von beiden</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>radius %1 mm does not fit: the segments already meet tangentially (their tangents differ by %2°, at most %3° counts as tangent); there is no corner to round</source>
-        <translation>Radius %1 mm passt nicht: die Segmente treffen sich bereits tangential (ihre Tangenten unterscheiden sich um %2°, bis %3° gilt als tangential); es gibt keine Ecke zu verrunden</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>no fillet radius of at least %1 mm fits at this joint (%2)</source>
-        <translation>an diesem Übergang passt kein Verrundungsradius von mindestens %1 mm (%2)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>radius %1 mm does not fit: no fillet radius of at least %2 mm fits at this joint (%3)</source>
-        <translation>Radius %1 mm passt nicht: an diesem Übergang passt kein Verrundungsradius von mindestens %2 mm (%3)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>radius %1 mm is too small: a fillet radius is at least %2 mm, the smallest radius a project holds</source>
-        <translation>Radius %1 mm ist zu klein: ein Verrundungsradius beträgt mindestens %2 mm, den kleinsten Radius, den ein Projekt fasst</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>radius %1 mm must be a number &gt; 0: radii below %2 mm fit</source>
-        <translation>Radius %1 mm muss eine Zahl &gt; 0 sein: Radien unter %2 mm passen</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>radius %1 mm is too large: only radii below %2 mm fit (%3)</source>
-        <translation>Radius %1 mm ist zu groß: nur Radien unter %2 mm passen (%3)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>radius %1 mm does not fit (%2), although most radii below %3 mm do</source>
-        <translation>Radius %1 mm passt nicht (%2), obwohl die meisten Radien unter %3 mm passen</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>the roller radius %1 mm is not smaller than this concave arc's radius %2 mm: the roller cannot follow it</source>
-        <translation>der Rollenradius %1 mm ist nicht kleiner als der Radius %2 mm dieses konkaven Bogens: die Rolle kann ihm nicht folgen</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>is inside the cam: the pivot turns on a circle of radius %1 mm round the cam centre, but the profile reaches %2 mm at %3°; move it farther out</source>
-        <translation>liegt in der Kurvenscheibe: der Drehpunkt läuft auf einem Kreis mit Radius %1 mm um die Mitte der Kurvenscheibe, aber das Profil reicht bei %3° bis %2 mm; ihn weiter nach außen legen</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>is too short: at %1° the cam is %2 mm from the pivot, and %3 reaches only %4 mm</source>
-        <translation>ist zu kurz: bei %1° ist die Kurvenscheibe %2 mm vom Drehpunkt entfernt, und %3 reicht nur %4 mm weit</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>is too long: at %1° %2 passes beyond the whole cam (at most %3 mm from the pivot)</source>
-        <translation>ist zu lang: bei %1° reicht %2 über die ganze Kurvenscheibe hinaus (sie ist höchstens %3 mm vom Drehpunkt entfernt)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>does not let %1 touch the cam at %2° (no contact on the chosen side of the arm)</source>
-        <translation>lässt %1 die Kurvenscheibe bei %2° nicht berühren (kein Kontakt auf der gewählten Seite des Hebels)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the tool radius %1 mm is larger than this curve's tightest concave radius %2 mm: the offset path degenerates</source>
-        <translation>der Werkzeugradius %1 mm ist größer als der engste konkave Radius %2 mm dieser Kurve: die versetzte Bahn entartet</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the tool radius %1 mm is not smaller than the radius %2 mm of this concave arc: the offset path degenerates</source>
-        <translation>der Werkzeugradius %1 mm ist nicht kleiner als der Radius %2 mm dieses konkaven Bogens: die versetzte Bahn entartet</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the offset segments do not meet at this corner</source>
-        <translation>die versetzten Segmente treffen sich an dieser Ecke nicht</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>the tool radius %1 mm is too large here: at its concave corners the offset of this segment would have to be trimmed beyond its ends</source>
-        <translation>der Werkzeugradius %1 mm ist hier zu groß: an seinen konkaven Ecken müsste die versetzte Bahn dieses Segments über seine Enden hinaus gekürzt werden</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>must be a finite length of at least %1 mm (got %2)</source>
-        <translation>muss eine endliche Länge von mindestens %1 mm sein (ist %2)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>%1 mm makes %2 steps on this %3 mm path; the seed method takes at most %4: a step of at least %5 mm</source>
-        <translation>%1 mm ergibt %2 Schritte auf dieser %3 mm langen Bahn; das Ausgangsverfahren nimmt höchstens %4: eine Schrittweite von mindestens %5 mm</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>no acceleration limit for the %1 axis, along which the path moves (segment %2): without one its speed would be unbounded and its time 0</source>
-        <translation>keine Beschleunigungsgrenze für die %1-Achse, entlang der die Bahn fährt (Segment %2): ohne sie wäre die Geschwindigkeit unbegrenzt und die Zeit 0</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>is empty</source>
-        <translation>ist leer</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>coordinates must be finite, at most 10⁶ mm, and the bulge finite</source>
-        <translation>die Koordinaten müssen endlich und höchstens 10⁶ mm sein, der Bulge endlich</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>a path needs at least two points</source>
-        <translation>eine Bahn braucht mindestens zwei Punkte</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>repeats the previous point</source>
-        <translation>wiederholt den vorigen Punkt</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>an arc (bulge %1) must keep its height, but z goes from %2 to %3</source>
-        <translation>ein Bogen (Bulge %1) muss seine Höhe halten, aber z geht von %2 auf %3</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>an arc needs two distinct points in the XY plane</source>
-        <translation>ein Bogen braucht zwei verschiedene Punkte in der XY-Ebene</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>the arc (bulge %1) reaches %2 mm from the origin; a path must stay within %3 mm</source>
-        <translation>der Bogen (Bulge %1) reicht %2 mm vom Ursprung weg; eine Bahn muss innerhalb von %3 mm bleiben</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>a tangent line joins two arcs; segment %1 is %2</source>
-        <translation>eine Tangente verbindet zwei Bögen; Segment %1 ist %2</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>segment %1 is not a circle (its radius must be a finite number &gt; 0, its centre finite)</source>
-        <translation>Segment %1 ist kein Kreis (sein Radius muss eine endliche Zahl &gt; 0 sein, sein Mittelpunkt endlich)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>both arcs lie on the same circle, so they already meet tangentially: no line fits between them</source>
-        <translation>beide Bögen liegen auf demselben Kreis und treffen sich daher bereits tangential: keine Gerade passt dazwischen</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>the circle of segment %1 lies inside that of segment %2, so the two circles have no common tangent</source>
-        <translation>der Kreis von Segment %1 liegt in dem von Segment %2, daher haben die beiden Kreise keine gemeinsame Tangente</translation>
-    </message>
-    <message>
-        <location line="+7" />
-        <source>no tangent line fits: %1</source>
-        <translation>keine Tangente passt: %1</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>the circles touch at (%1, %2): the arcs can meet there directly, without a line</source>
-        <translation>die Kreise berühren sich in (%1; %2): die Bögen können sich dort direkt treffen, ohne Gerade</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>%1 runs clockwise around the rotation centre (its polar angle would not grow from segment %2 to segment %3)</source>
-        <translation>%1 läuft im Uhrzeigersinn um das Drehzentrum (ihr Polarwinkel würde von Segment %2 bis Segment %3 nicht wachsen)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>%1 touches segment %2 on the near side of its circle, but the arc follows the far side (outer branch)</source>
-        <translation>%1 berührt Segment %2 auf der nahen Seite seines Kreises, aber der Bogen folgt der fernen Seite (Zweig „außen“)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>%1 touches segment %2 on the far side of its circle, but the arc follows the near side (inner branch)</source>
-        <translation>%1 berührt Segment %2 auf der fernen Seite seines Kreises, aber der Bogen folgt der nahen Seite (Zweig „innen“)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>with %1 the window of segment %2 would be empty: its end would move onto its start %3°</source>
-        <translation>mit %1 wäre das Fenster von Segment %2 leer: sein Ende rückte auf seinen Anfang %3°</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>with %1 the window of segment %2 would be empty or reversed: its start would move to %3°, not before its end %4°</source>
-        <translation>mit %1 wäre das Fenster von Segment %2 leer oder umgekehrt: sein Anfang rückte auf %3°, nicht vor sein Ende %4°</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>has no segment to continue</source>
-        <translation>hat kein Segment, das sich fortsetzen ließe</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>there is no segment %1: rows are 0 .. %2</source>
-        <translation>es gibt kein Segment %1: die Zeilen sind 0 .. %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>a contour of one segment must be a circle; segment %1 is %2</source>
-        <translation>eine Kontur aus einem Segment muss ein Kreis sein; Segment %1 ist %2</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>segment %1 is not a circle</source>
-        <translation>Segment %1 ist kein Kreis</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>the follower ray at the end %1° of segment %2 misses its circle, so it has no end point</source>
-        <translation>der Strahl des Stößels am Ende %1° von Segment %2 verfehlt dessen Kreis, daher hat es keinen Endpunkt</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>segment %1 has no direction at its end point</source>
-        <translation>Segment %1 hat an seinem Endpunkt keine Richtung</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>segment %1 does not run counter-clockwise around the rotation centre at its end point (%2, %3) (its polar angle does not grow there)</source>
-        <translation>Segment %1 läuft an seinem Endpunkt (%2; %3) nicht gegen den Uhrzeigersinn um das Drehzentrum (sein Polarwinkel wächst dort nicht)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the point must be finite (got (%1, %2))</source>
-        <translation>der Punkt muss endlich sein (ist (%1; %2))</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>the point is the rotation centre, which no arc of the contour can reach</source>
-        <translation>der Punkt ist das Drehzentrum, das kein Bogen der Kontur erreichen kann</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the point is the end point (%1, %2) of segment %3: an arc needs a second point</source>
-        <translation>der Punkt ist der Endpunkt (%1; %2) von Segment %3: ein Bogen braucht einen zweiten Punkt</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the point is on the tangent: use a line (an arc through it would need a radius or centre beyond 10⁶ mm, the largest length a project holds)</source>
-        <translation>der Punkt liegt auf der Tangente: eine Gerade verwenden (ein Bogen durch ihn bräuchte einen Radius oder Mittelpunkt jenseits von 10⁶ mm, der größten Länge, die ein Projekt fasst)</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>the arc's radius would be %1 mm, below %2 mm, the smallest a project holds</source>
-        <translation>der Radius des Bogens wäre %1 mm, unter %2 mm, dem kleinsten, den ein Projekt fasst</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the end point of segment %1 is not on the outer branch of the circle (centre (%2, %3), radius %4 mm)</source>
-        <translation>der Endpunkt von Segment %1 liegt nicht auf dem Zweig „außen“ des Kreises (Mittelpunkt (%2; %3), Radius %4 mm)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the end point of segment %1 is not on the inner branch of the circle (centre (%2, %3), radius %4 mm)</source>
-        <translation>der Endpunkt von Segment %1 liegt nicht auf dem Zweig „innen“ des Kreises (Mittelpunkt (%2; %3), Radius %4 mm)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the point lies on the near side of the circle (centre (%1, %2), radius %3 mm) as seen from the rotation centre, but the arc leaves segment %4 on its far side (outer branch): the follower ray would not meet the arc at the point</source>
-        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, auf der nahen Seite des Kreises (Mittelpunkt (%1; %2), Radius %3 mm), aber der Bogen verlässt Segment %4 auf dessen ferner Seite (Zweig „außen“): der Strahl des Stößels träfe den Bogen nicht im Punkt</translation>
-    </message>
-    <message>
-        <location line="+7" />
-        <source>the point lies on the far side of the circle (centre (%1, %2), radius %3 mm) as seen from the rotation centre, but the arc leaves segment %4 on its near side (inner branch): the follower ray would not meet the arc at the point</source>
-        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, auf der fernen Seite des Kreises (Mittelpunkt (%1; %2), Radius %3 mm), aber der Bogen verlässt Segment %4 auf dessen naher Seite (Zweig „innen“): der Strahl des Stößels träfe den Bogen nicht im Punkt</translation>
-    </message>
-    <message>
-        <location line="+7" />
-        <source>the point lies behind the end point of segment %1 as seen from the rotation centre: the arc along the circle (centre (%2, %3), radius %4 mm) would pass to its near side and run back before reaching it</source>
-        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, hinter dem Endpunkt von Segment %1: der Bogen entlang des Kreises (Mittelpunkt (%2; %3), Radius %4 mm) ginge auf dessen nahe Seite über und liefe zurück, bevor er ihn erreicht</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>the point lies behind the end point of segment %1 as seen from the rotation centre: the arc along the circle (centre (%2, %3), radius %4 mm) would pass to its far side and run back before reaching it</source>
-        <translation>der Punkt liegt, vom Drehzentrum aus gesehen, hinter dem Endpunkt von Segment %1: der Bogen entlang des Kreises (Mittelpunkt (%2; %3), Radius %4 mm) ginge auf dessen ferne Seite über und liefe zurück, bevor er ihn erreicht</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>the point lies on the follower ray at the end %1° of segment %2: the arc's window would be empty</source>
-        <translation>der Punkt liegt auf dem Strahl des Stößels am Ende %1° von Segment %2: das Fenster des Bogens wäre leer</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the arc would end at %1° (the polar angle of the point), not before the end %2° of segment %3, whose window would be empty or reversed</source>
-        <translation>der Bogen endete bei %1° (dem Polarwinkel des Punkts), nicht vor dem Ende %2° von Segment %3, dessen Fenster leer oder umgekehrt wäre</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the point is the end point of segment %1, which would have no length left</source>
-        <translation>der Punkt ist der Endpunkt von Segment %1, dem keine Länge bliebe</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>with its start point moved to the point, segment %1 would no longer run counter-clockwise from %2° to its end %3°</source>
-        <translation>mit seinem Anfangspunkt im Punkt liefe Segment %1 nicht mehr gegen den Uhrzeigersinn von %2° bis zu seinem Ende %3°</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the tolerance must be between %1 and %2 mm, not %3</source>
-        <translation>die Toleranz muss zwischen %1 und %2 mm liegen, nicht %3</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the tool radius must be above 0 and at most %1 mm, not %2</source>
-        <translation>der Werkzeugradius muss über 0 und höchstens %1 mm sein, nicht %2</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>with cutter compensation the tool would have to reach past the next programmed arc at a concave corner of this segment, which a controller offsetting one move at a time turns into a cut through the part; export the tool-centre path (without --compensation) or use a coarser --tolerance</source>
-        <translation>mit Werkzeugradiuskorrektur müsste das Werkzeug an einer konkaven Ecke dieses Segments über den nächsten programmierten Bogen hinausreichen, was eine Steuerung, die Satz für Satz versetzt, in einen Schnitt durch das Werkstück verwandelt; die Werkzeugmittelpunktsbahn exportieren (ohne --compensation) oder eine gröbere --tolerance verwenden</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>%1 must be above 0 and at most %2 mm, not %3</source>
-        <translation>%1 muss über 0 und höchstens %2 mm sein, nicht %3</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the feed must be above 0 and at most %1 mm/min, not %2</source>
-        <translation>der Vorschub muss über 0 und höchstens %1 mm/min sein, nicht %2</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the tool number must be from 1 to 99999, not %1</source>
-        <translation>die Werkzeugnummer muss zwischen 1 und 99999 liegen, nicht %1</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>a step-down of %1 mm makes %2 passes for a depth of %3 mm; at most %4 are made</source>
-        <translation>eine Zustellung von %1 mm ergibt %2 Durchgänge für eine Tiefe von %3 mm; höchstens %4 werden gefahren</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>a cam table has from %1 to %2 points, not %3</source>
-        <translation>eine Kurvenscheibentabelle hat %1 bis %2 Punkte, nicht %3</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>is not a finite number (%1): the result is beyond what a double can hold</source>
-        <translation>ist keine endliche Zahl (%1): das Ergebnis übersteigt, was ein double fassen kann</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>must be at least 1 (got 0)</source>
-        <translation>muss mindestens 1 sein (ist 0)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>is not a finite number, which a file cannot hold</source>
-        <translation>ist keine endliche Zahl; eine Datei kann sie nicht speichern</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>cannot open: %1</source>
-        <translation>kann nicht geöffnet werden: %1</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>cannot examine: %1</source>
-        <translation>kann nicht untersucht werden: %1</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>cannot read: %1</source>
-        <translation>kann nicht gelesen werden: %1</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>is %1, not a regular file: not read</source>
-        <translation>ist %1, keine reguläre Datei: nicht gelesen</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>is %1 MiB (%2 bytes): files larger than %3 MiB are not read</source>
-        <translation>ist %1 MiB groß (%2 Bytes): Dateien über %3 MiB werden nicht gelesen</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>grew past %1 MiB while it was read: larger files are not read</source>
-        <translation>wuchs beim Lesen über %1 MiB: größere Dateien werden nicht gelesen</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>no file name given</source>
-        <translation>kein Dateiname angegeben</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>cannot examine %1: %2</source>
-        <translation>%1 kann nicht untersucht werden: %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>cannot follow its symbolic links: %1</source>
-        <translation>ihren symbolischen Links kann nicht gefolgt werden: %1</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>cannot read the symbolic link %1: %2</source>
-        <translation>der symbolische Link %1 kann nicht gelesen werden: %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>is a link to an open file descriptor, not a file: not replaced</source>
-        <translation>ist ein Link auf einen offenen Dateideskriptor, keine Datei: nicht ersetzt</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>%1 is a link to an open file descriptor, not a file: not replaced</source>
-        <translation>%1 ist ein Link auf einen offenen Dateideskriptor, keine Datei: nicht ersetzt</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>is %1, not a regular file: not replaced</source>
-        <translation>ist %1, keine reguläre Datei: nicht ersetzt</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>%1 is %2, not a regular file: not replaced</source>
-        <translation>%1 ist %2, keine reguläre Datei: nicht ersetzt</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>cannot write %1: %2</source>
-        <translation>%1 kann nicht geschrieben werden: %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>names a folder, not a file</source>
-        <translation>bezeichnet einen Ordner, keine Datei</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>cannot create a temporary file in %1: %2</source>
-        <translation>in %1 kann keine temporäre Datei angelegt werden: %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>cannot give the new file the owner of %1: %2</source>
-        <translation>die neue Datei kann nicht den Eigentümer von %1 erhalten: %2</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>cannot give the new file the permissions of %1: %2</source>
-        <translation>die neue Datei kann nicht die Zugriffsrechte von %1 erhalten: %2</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>cannot flush %1 to disk: %2</source>
-        <translation>%1 kann nicht auf den Datenträger geschrieben werden: %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>%1 became %2 while it was written: not replaced</source>
-        <translation>%1 ist während des Schreibens %2 geworden: nicht ersetzt</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>cannot replace %1: %2</source>
-        <translation>%1 kann nicht ersetzt werden: %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>replaced, but cannot close %1: %2</source>
-        <translation>ersetzt, aber %1 kann nicht geschlossen werden: %2</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>replaced, but cannot flush the folder %1 to disk: %2</source>
-        <translation>ersetzt, aber der Ordner %1 kann nicht auf den Datenträger geschrieben werden: %2</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>there is no such segment</source>
-        <translation>dieses Segment gibt es nicht</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>is not an arc</source>
-        <translation>ist kein Bogen</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>the admissible radial error must be &gt; 0 mm</source>
-        <translation>der zulässige radiale Fehler muss &gt; 0 mm sein</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>the follower ray at the start of the window does not meet the arc</source>
-        <translation>der Strahl des Stößels am Anfang des Fensters trifft den Bogen nicht</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the follower ray at the end of the window does not meet the arc</source>
-        <translation>der Strahl des Stößels am Ende des Fensters trifft den Bogen nicht</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>a spline needs at least two points</source>
-        <translation>ein Spline braucht mindestens zwei Stützpunkte</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>a closed spline needs at least three points</source>
-        <translation>ein geschlossener Spline braucht mindestens drei Stützpunkte</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>must be a finite factor &gt; 0 (got %1)</source>
-        <translation>muss ein endlicher Faktor &gt; 0 sein (ist %1)</translation>
-    </message>
-    <message>
-        <location line="+2" />
-        <source>the neighbouring segments do not meet, so there is no boundary to fit the windows to</source>
-        <translation>die benachbarten Segmente treffen sich nicht, daher gibt es keine Grenze, an die sich die Fenster anpassen ließen</translation>
-    </message>
-    <message>
-        <location line="+4" />
+        <location line="-68" />
         <source>is empty: the design's contour was never synthesised (Synthesize Contour, F6, makes it)</source>
         <translation>ist leer: die Kontur des Entwurfs wurde noch nie synthetisiert (Kontur synthetisieren, F6, erzeugt sie)</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>the project has no motion design to synthesise a contour from</source>
-        <translation>das Projekt hat keinen Bewegungsentwurf, aus dem sich eine Kontur synthetisieren ließe</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>the synthesised arc table is not a valid contour: %1</source>
-        <translation>die synthetisierte Bogentabelle ist keine gültige Kontur: %1</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>the synthesised arc table is not a valid contour: segment %1, made for the cam angles %2° to %3° of design segment %4 (%5)</source>
-        <translation>die synthetisierte Bogentabelle ist keine gültige Kontur: Segment %1, erzeugt für die Nockenwinkel %2° bis %3° des Entwurfssegments %4 (%5)</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>cannot be met near %1°: no arcs come within it even on pieces of 2^-%2 of the profile's sampling step (the profile has a corner or a cusp there)</source>
-        <translation>ist bei %1° nicht einzuhalten: selbst auf Stücken von 2^-%2 der Abtastschrittweite des Profils kommen keine Bögen so nahe (das Profil hat dort eine Ecke oder Spitze)</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>%1 mm is below what double precision can certify for this cam: at least %2 mm, for a profile reaching %3 mm from the centre</source>
-        <translation>%1 mm liegt unter dem, was doppelte Genauigkeit für diesen Nocken bestätigen kann: mindestens %2 mm, bei einem Profil, das %3 mm vom Mittelpunkt reicht</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>cannot be met: the closest arc table found lies %2 mm from the exact profile (at %3° of cam angle), more than the %1 mm asked for</source>
-        <translation>ist nicht einzuhalten: die beste gefundene Bogentabelle liegt %2 mm vom exakten Profil entfernt (bei %3° Nockenwinkel), mehr als die verlangten %1 mm</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the follower's line (offset %1 mm) passes outside the base circle of radius %2 mm: make the base radius larger than the offset</source>
-        <translation>die Stößelgerade (Versatz %1 mm) verläuft außerhalb des Grundkreises mit Radius %2 mm: den Grundkreisradius größer als den Versatz wählen</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>the follower's line (offset %1 mm) passes outside the base circle of radius %2 mm (base radius + roller radius): make the base radius larger than the offset</source>
-        <translation>die Stößelgerade (Versatz %1 mm) verläuft außerhalb des Grundkreises mit Radius %2 mm (Grundkreisradius + Rollenradius): den Grundkreisradius größer als den Versatz wählen</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>an arm of %1 mm from a pivot %2 mm from the cam centre cannot touch the base circle of radius %3 mm</source>
-        <translation>ein Schwinghebel von %1 mm Länge, dessen Drehpunkt %2 mm vom Scheibenmittelpunkt entfernt ist, kann den Grundkreis mit Radius %3 mm nicht berühren</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>an arm of %1 mm from a pivot %2 mm from the cam centre cannot touch the base circle of radius %3 mm (base radius + roller radius)</source>
-        <translation>ein Schwinghebel von %1 mm Länge, dessen Drehpunkt %2 mm vom Scheibenmittelpunkt entfernt ist, kann den Grundkreis mit Radius %3 mm (Grundkreisradius + Rollenradius) nicht berühren</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>undercut: from %2° to %3° the pitch curve bends tighter than the roller radius %1 mm</source>
-        <translation>Unterschnitt: von %2° bis %3° ist die Rollenmittelpunktsbahn enger gekrümmt als der Rollenradius %1 mm</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>undercut: from %1° to %2° the envelope of the flat face folds back (h + h'' &lt; 0)</source>
-        <translation>Unterschnitt: von %1° bis %2° schlägt die Hüllkurve des Flachstößels zurück (h + h'' &lt; 0)</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>from %2° to %3° the pressure angle exceeds %1°</source>
-        <translation>von %2° bis %3° überschreitet der Druckwinkel %1°</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>radius %1 mm gives a contour that does not validate (%2)</source>
-        <translation>Radius %1 mm ergibt eine ungültige Kontur (%2)</translation>
-    </message>
-    <message>
-        <location line="+3" />
-        <source>cancelled</source>
-        <translation>abgebrochen</translation>
-    </message>
-    <message>
-        <location line="+18" />
+        <location line="+104" />
         <source>Joint between segments %1 and %2</source>
         <translation>Übergang zwischen Segment %1 und %2</translation>
     </message>
     <message>
-        <location line="-748" />
-        <location line="+755" />
+        <location line="-5" />
         <source>Segment %1</source>
         <translation>Segment %1</translation>
     </message>
@@ -1326,7 +1347,22 @@
         <translation>Segment %1, %2</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+25" />
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>line %1, column %2</source>
+        <translation>Zeile %1, Spalte %2</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>sample %1, %2</source>
+        <translation>Abtastpunkt %1, %2</translation>
+    </message>
+    <message>
+        <location line="+33" />
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1334,7 +1370,7 @@
 <context>
     <name>ExportFormat</name>
     <message>
-        <location filename="../../src/core/export/export_formats.cpp" line="+25" />
+        <location filename="../../src/core/export/export_formats.cpp" line="+26" />
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
@@ -1392,7 +1428,7 @@
 <context>
     <name>FollowerKind</name>
     <message>
-        <location filename="../../src/core/project/follower_kind.cpp" line="+13" />
+        <location filename="../../src/core/project/follower_kind.cpp" line="+14" />
         <source>Knife edge</source>
         <translation>Spitze (Messerkante)</translation>
     </message>
@@ -1633,7 +1669,7 @@
 <context>
     <name>MotionLaw</name>
     <message>
-        <location filename="../../src/core/design/motion_law.cpp" line="+133" />
+        <location filename="../../src/core/design/motion_law.cpp" line="+134" />
         <source>Dwell</source>
         <translation>Rast</translation>
     </message>
@@ -2155,7 +2191,7 @@
 <context>
     <name>cam::DesignTableModel</name>
     <message>
-        <location filename="../../src/app/models/design_table_model.cpp" line="+134" />
+        <location filename="../../src/app/models/design_table_model.cpp" line="+145" />
         <source>How the follower moves over this segment (VDI 2143)</source>
         <translation>Wie sich der Stößel über diesen Abschnitt bewegt (VDI 2143)</translation>
     </message>
@@ -3252,7 +3288,7 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+52" />
+        <location filename="../../src/app/mainwindow.cpp" line="+54" />
         <source>The recovery copy could not be written: %1</source>
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>

@@ -13,6 +13,8 @@
 #include "app_test_support.h"
 #include "common/cancel.h"
 #include "construction/tangents.h"
+#include "contour/contour.h"
+#include "core/diagnostic_samples.h"
 #include "core/test_projects.h"
 #include "design/exact_profile.h"
 #include "design/synthesis.h"
@@ -41,57 +43,86 @@ struct Language {
     Translations translations;
 };
 
-/// Sample arguments for a code's signature, each one recognisable in the text: numbers
-/// 1000.25, 1001.25, …, whole numbers 71, 72, …, names «s0», «s1», ….
-std::vector<DiagnosticArg> sampleArguments(DiagnosticCode code) {
-    std::vector<DiagnosticArg> args;
-    int i = 0;
-    for (const char kind : diagnosticCodeSignature(code)) {
-        if (kind == 's') {
-            args.emplace_back("«s" + std::to_string(i) + "»");
-        } else if (kind == 'n') {
-            args.emplace_back(1000.25 + i);
-        } else {
-            args.emplace_back(71.0 + i);
+/// How the window shows a sample argument (core/diagnostic_samples.h): in English or in
+/// German. Written from what the table and the panels show, not from the program's output.
+QString windowForm(char kind, const DiagnosticArg& arg, bool german) {
+    if (const auto* text = std::get_if<std::string>(&arg)) {
+        if (kind == 'l') return german ? QStringLiteral("Zykloide") : QStringLiteral("Cycloidal");
+        return QString::fromStdString(*text);
+    }
+    if (std::holds_alternative<SegmentPart>(arg)) {
+        return german ? QStringLiteral("φ Anfang") : QStringLiteral("φ start");
+    }
+    const double v = std::get<double>(arg);
+    switch (kind) {
+        case 'k':
+            return (german ? QStringLiteral("Segment %1") : QStringLiteral("segment %1")).arg(v);
+        case 'a':
+            return QStringLiteral("Z");
+        case 'i':
+            return QString::number(v);
+        default: {
+            const QString text = QString::number(v, 'f', kind == 'd' ? 1 : 2);
+            return german ? QString(text).replace('.', ',') : text;
         }
-        ++i;
     }
-    return args;
 }
 
-/// How an argument must appear in German.
-QString germanForm(DiagnosticCode code, std::size_t i) {
-    const char kind = diagnosticCodeSignature(code)[i];
-    const int k = static_cast<int>(i);
-    if (kind == 's') return QStringLiteral("«s%1»").arg(k);
-    if (kind == 'n') return QStringLiteral("%1,25").arg(1000 + k);
-    return QString::number(71 + k);
-}
-
-Diagnostic sample(DiagnosticCode code) {
-    Diagnostic d = Diagnostic("machining.step", "english text").coded(code, sampleArguments(code));
-    // Codes that nest whole diagnostics carry one, worded too.
-    if (code == DiagnosticCode::FilletRadiusInvalidContour ||
-        code == DiagnosticCode::TangentNoneFits ||
-        code == DiagnosticCode::SynthesisedContourInvalid ||
-        code == DiagnosticCode::SynthesisedArcInvalid) {
-        d.reasons.push_back(Diagnostic("contour[2].radius", "nested english text")
-                                .coded(DiagnosticCode::NotPositive, {-2.5}));
+/// The window's forms of a diagnostic's arguments, a reason as its line, in signature order.
+std::vector<QString> windowForms(const Diagnostic& d, bool german) {
+    std::vector<QString> out;
+    std::size_t next = 0;
+    for (const char kind : diagnosticCodeSignature(d.code)) {
+        out.push_back(kind == 'r'
+                          ? (german ? QStringLiteral("Segment 2, Radius [mm]: muss > 0 sein "
+                                                     "(ist -2,5)")
+                                    : QStringLiteral("Segment 2, Radius [mm]: must be > 0 "
+                                                     "(got -2.5)"))
+                          : windowForm(kind, d.args[next++], german));
     }
-    return d;
+    return out;
 }
 
-QString englishLine(const Diagnostic& d) {
+/// The codes whose window wording is the window's own, not the catalogue's template.
+bool wordedByTheWindow(DiagnosticCode code) {
+    return code == DiagnosticCode::ContourNeverSynthesised;
+}
+
+QString englishMessage(const Diagnostic& d) {
     const Language english(kEnglish);
-    return DiagnosticText::line(d);
+    return DiagnosticText::message(d);
+}
+
+TEST(DiagnosticText, TheEnglishWindowSaysWhatTheCoreSaysWithItsOwnArgumentForms) {
+    for (std::size_t c = 1; c < kDiagnosticCodeCount; ++c) {
+        const auto code = static_cast<DiagnosticCode>(c);
+        if (wordedByTheWindow(code)) continue;
+        const std::string name(diagnosticCodeName(code));
+        const Diagnostic d = test::sampleDiagnostic(code);
+        ASSERT_TRUE(DiagnosticText::translatable(d)) << name;
+        // The core fills the template with its forms of the arguments, the window with its own.
+        std::vector<std::string> core, window;
+        std::size_t next = 0;
+        for (const char kind : diagnosticCodeSignature(code)) {
+            core.push_back(kind == 'r' ? test::sampleReason().text()
+                                       : englishArgument(kind, d.args[next++]));
+        }
+        for (const QString& form : windowForms(d, false)) window.push_back(form.toStdString());
+        const std::string text = diagnosticTemplate(code);
+        EXPECT_EQ(d.message, fillPlaceholders(text, core)) << name;
+        EXPECT_EQ(englishMessage(d).toStdString(), fillPlaceholders(text, window)) << name;
+    }
+    const Diagnostic never = contourNeverSynthesised();
+    EXPECT_EQ(englishMessage(never),
+              "is empty: the design's contour was never synthesised (Synthesize Contour, F6, "
+              "makes it)");
 }
 
 TEST(DiagnosticText, EveryCodeHasAGermanTextThatUsesAllItsArguments) {
-    ASSERT_GT(kDiagnosticCodeCount, 50u);
     std::map<DiagnosticCode, QString> english;
     for (std::size_t c = 1; c < kDiagnosticCodeCount; ++c) {
         const auto code = static_cast<DiagnosticCode>(c);
-        english[code] = englishLine(sample(code));
+        english[code] = englishMessage(test::sampleDiagnostic(code));
     }
     const Language german(kGerman);
     ASSERT_TRUE(german.translations.appTranslated());
@@ -99,27 +130,13 @@ TEST(DiagnosticText, EveryCodeHasAGermanTextThatUsesAllItsArguments) {
     for (std::size_t c = 1; c < kDiagnosticCodeCount; ++c) {
         const auto code = static_cast<DiagnosticCode>(c);
         const std::string name(diagnosticCodeName(code));
-        const Diagnostic d = sample(code);
-        ASSERT_TRUE(DiagnosticText::translatable(d)) << name;
-        const QString text = DiagnosticText::line(d);
+        const Diagnostic d = test::sampleDiagnostic(code);
+        const QString text = DiagnosticText::message(d);
         EXPECT_NE(text, english[code]) << name << ": no German text";
-        EXPECT_FALSE(text.contains(QStringLiteral("english text"))) << name;
-        if (!d.reasons.empty()) {
-            EXPECT_TRUE(text.contains(QStringLiteral("-2,5")))
-                << name << ": " << text.toStdString();
-        }
         EXPECT_FALSE(placeholder.match(text).hasMatch()) << name << ": " << text.toStdString();
-        for (std::size_t i = 0; i < d.args.size(); ++i) {
-            EXPECT_TRUE(text.contains(germanForm(code, i)))
-                << name << " does not show argument " << i << ": " << text.toStdString();
-        }
-        // The English window uses every argument too.
-        for (std::size_t i = 0; i < d.args.size(); ++i) {
-            QString form = germanForm(code, i);
-            form.replace(QStringLiteral(",25"), QStringLiteral(".25"));
-            EXPECT_TRUE(english[code].contains(form))
-                << name << " (English) does not show argument " << i << ": "
-                << english[code].toStdString();
+        for (const QString& form : windowForms(d, true)) {
+            EXPECT_TRUE(text.contains(form))
+                << name << " does not show " << form.toStdString() << ": " << text.toStdString();
         }
     }
 }
@@ -128,10 +145,39 @@ TEST(DiagnosticText, WithoutACodeOrWithArgumentsThatDoNotFitItIsTheCoreText) {
     const Language german(kGerman);
     const Diagnostic plain("contour[2]", "some problem");
     EXPECT_EQ(DiagnosticText::line(plain), QStringLiteral("contour[2]: some problem"));
-    const Diagnostic wrong =
-        Diagnostic("contour[2]", "some problem").coded(DiagnosticCode::NotPositive, {"x"});
+    Diagnostic wrong("contour[2]", "some problem");
+    wrong.code = DiagnosticCode::NotPositive;
+    wrong.args = {std::string("x")};
     EXPECT_EQ(DiagnosticText::line(wrong), QStringLiteral("contour[2]: some problem"));
     EXPECT_EQ(DiagnosticText::message(wrong), QStringLiteral("some problem"));
+}
+
+TEST(DiagnosticText, EveryKindOfPlaceIsNamedAsTheWindowShowsIt) {
+    const Language english(kEnglish);
+    const auto where = [](Place place) {
+        return DiagnosticText::location(
+            Diagnostic::make(std::move(place), DiagnosticCode::NotPositive, {1.0}));
+    };
+    EXPECT_EQ(where(SegmentPlace{3, SegmentPart::Radius}), "Segment 3, Radius [mm]");
+    EXPECT_EQ(where(SegmentPlace{3, SegmentPart::Points, 2, 0}), "Segment 3, control point P2, x");
+    EXPECT_EQ(where(JointPlace{4, 5}), "Joint between segments 4 and 5");
+    EXPECT_EQ(where(TurnPlace{7}), "Contour");
+    EXPECT_EQ(where(FieldPlace{Field::MachiningAxisAccel, 1}), "Machining, acceleration of axis Y");
+    EXPECT_EQ(where(FieldPlace{Field::FollowerRadius}), "Follower, roller radius");
+    EXPECT_EQ(where(FieldPlace{Field::Point, 2}), "Point 2");
+    EXPECT_EQ(where(FieldPlace{Field::ToleranceOption}), "--tolerance");
+    EXPECT_EQ(where(DesignSegmentPlace{2, DesignPart::Lift}), "Motion design, segment 2, lift");
+    EXPECT_EQ(where(DesignSegmentPlace{2, DesignPart::V0}), "Motion design, segment 2, v0");
+    EXPECT_EQ(where(DesignSegmentPlace{2}), "Motion design, segment 2");
+    EXPECT_EQ(where(DesignJointPlace{2, 3}), "Motion design, joint between segments 2 and 3");
+    EXPECT_EQ(where(FilePositionPlace{3, 14}), "line 3, column 14");
+    EXPECT_EQ(where(FileKeyPlace{"contour[3].radius"}), "contour[3].radius");
+    EXPECT_EQ(where(FilePlace{"/tmp/a.cam.json"}), "/tmp/a.cam.json");
+    EXPECT_EQ(where(SamplePlace{12, "r"}), "sample 12, r");
+    EXPECT_EQ(where(std::monostate{}), "");
+    const Language german(kGerman);
+    EXPECT_EQ(where(FilePositionPlace{3, 14}), "Zeile 3, Spalte 14");
+    EXPECT_EQ(where(DesignSegmentPlace{2, DesignPart::Lift}), "Bewegungsentwurf, Segment 2, Hub");
 }
 
 /// A three-arc contour whose second arc has a negative radius and whose first joint has a gap
@@ -218,7 +264,7 @@ TEST(DiagnosticText, TheEnglishWindowNamesTheTableColumnsToo) {
 
     const QString radius = QStringLiteral("Segment 1, Radius [mm]: must be > 0 (got -2.5)");
     const QString gap = QStringLiteral(
-        "Joint between segments 0 and 1: gap of 0.5° between φ end 120° and φ start 120.5°");
+        "Joint between segments 0 and 1: gap of 0.5° between φ end 120 and φ start 120.5");
     EXPECT_TRUE(shown.labelTip.contains(radius)) << shown.labelTip.toStdString();
     EXPECT_TRUE(shown.labelTip.contains(gap)) << shown.labelTip.toStdString();
     EXPECT_EQ(shown.radiusTip, radius);

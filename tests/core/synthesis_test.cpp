@@ -352,12 +352,11 @@ TEST(Synthesis, AnArcTableThatDoesNotValidateNamesTheReasonAndThePlace) {
     stretch(1, 150.0, 151.0);
     stretch(2, 359.5, 0.5);  // the last arc holds the turn's end and its start
     // A problem whose code names the arc (RollerTooLargeForArc: radius, contour[k], roller).
-    const Diagnostic roller =
-        Diagnostic("follower.radius",
-                   "must be smaller than the radius 6.9 mm of the concave arc contour[1] (got "
-                   "8 mm): the roller cannot enter it")
-            .coded(DiagnosticCode::RollerTooLargeForArc, {6.9, 1.0, 8.0});
-    const Diagnostic joint = Diagnostic::atJoint(2, 0, "gap of 0.5°");
+    const Diagnostic roller = Diagnostic::make(
+        FieldPlace{Field::FollowerRadius}, DiagnosticCode::RollerTooLargeForArc, {6.9, 1.0, 8.0});
+    const Diagnostic joint =
+        Diagnostic::make(JointPlace{2, 0}, DiagnosticCode::WindowGap,
+                         {0.5, SegmentPart::PhiEnd, 359.5, SegmentPart::PhiStart, 0.0});
     const Diagnostics placed = placeArcTableProblems({roller, joint}, arcs, design);
     ASSERT_EQ(placed.size(), 2u);
     const Diagnostic& d = placed.front();

@@ -62,9 +62,11 @@ void expectTangentAt(const Vec& t, const Vec& otherEnd, const Vec& center, doubl
 void expectAtJoint(const Diagnostic& d, std::size_t left, std::size_t right) {
     EXPECT_EQ(d.location,
               "contour[" + std::to_string(left) + "]/contour[" + std::to_string(right) + "]");
-    ASSERT_EQ(d.places.size(), 2u);
-    EXPECT_EQ(d.places[0], (SegmentPlace{left, SegmentPart::PhiEnd}));
-    EXPECT_EQ(d.places[1], (SegmentPlace{right, SegmentPart::PhiStart}));
+    EXPECT_EQ(d.place, Place(JointPlace{left, right}));
+    const std::vector<SegmentPlace> fields = d.segmentFields();
+    ASSERT_EQ(fields.size(), 2u);
+    EXPECT_EQ(fields[0], (SegmentPlace{left, SegmentPart::PhiEnd}));
+    EXPECT_EQ(fields[1], (SegmentPlace{right, SegmentPart::PhiStart}));
 }
 
 // ---- the lobe cam: base circle R20 at the origin, nose R6 at (0, 24) ----

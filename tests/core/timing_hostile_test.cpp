@@ -155,7 +155,7 @@ TEST(TimingHostile, TheJobNamesTheStepAfterItsSource) {
     ASSERT_EQ(errors.size(), 1u) << textOf(errors);
     EXPECT_EQ(errors.front().location, "machining.step");
     EXPECT_NE(errors.front().message.find("10000000"), std::string::npos) << textOf(errors);
-    job.stepLocation = "--step";
+    job.stepField = Field::StepOption;
     errors = errorsOf(timeContour(contour, job));
     ASSERT_EQ(errors.size(), 1u) << textOf(errors);
     EXPECT_EQ(errors.front().location, "--step");

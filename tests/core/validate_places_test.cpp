@@ -39,9 +39,8 @@ TEST(ValidationPlaces, ABezierPointCoordinateIsLocatedAsData) {
     const Diagnostics problems = validateProject(p);
     const Diagnostic* d = find(problems, "contour[2].points[2][0]");
     ASSERT_NE(d, nullptr) << problems.front().text();
-    ASSERT_EQ(d->places.size(), 1u);
-    EXPECT_EQ(d->places.front(), (SegmentPlace{2, SegmentPart::Points, 2, 0}));
-    EXPECT_EQ(locationText(d->places.front()), d->location);
+    EXPECT_EQ(d->place, Place(SegmentPlace{2, SegmentPart::Points, 2, 0}));
+    EXPECT_EQ(locationText(d->place), d->location);
 }
 
 TEST(ValidationPlaces, AHermiteTangentCoordinateIsLocatedAsData) {
@@ -53,7 +52,7 @@ TEST(ValidationPlaces, AHermiteTangentCoordinateIsLocatedAsData) {
     const Diagnostics problems = validateProject(p);
     const Diagnostic* d = find(problems, "contour[1].t1[1]");
     ASSERT_NE(d, nullptr) << problems.front().text();
-    EXPECT_EQ(d->places, (std::vector<SegmentPlace>{{1, SegmentPart::T1, -1, 1}}));
+    EXPECT_EQ(d->segmentFields(), (std::vector<SegmentPlace>{{1, SegmentPart::T1, -1, 1}}));
 }
 
 TEST(ValidationPlaces, AGapNamesBothSidesOfTheJoint) {
@@ -62,18 +61,19 @@ TEST(ValidationPlaces, AGapNamesBothSidesOfTheJoint) {
     const Diagnostics problems = validateProject(p);
     const Diagnostic* d = find(problems, "contour[2]/contour[3]");
     ASSERT_NE(d, nullptr) << problems.front().text();
-    EXPECT_EQ(d->places,
+    EXPECT_EQ(d->place, Place(JointPlace{2, 3}));
+    EXPECT_EQ(d->segmentFields(),
               (std::vector<SegmentPlace>{{2, SegmentPart::PhiEnd}, {3, SegmentPart::PhiStart}}));
 }
 
 TEST(ValidationPlaces, EveryPlaceSpellsItsLocation) {
-    EXPECT_EQ(locationText({7}), "contour[7]");
-    EXPECT_EQ(locationText({7, SegmentPart::Center, -1, 1}), "contour[7].center[1]");
-    EXPECT_EQ(locationText({7, SegmentPart::Radius}), "contour[7].radius");
-    EXPECT_EQ(locationText({0, SegmentPart::Points, 3}), "contour[0].points[3]");
-    EXPECT_EQ(locationText({0, SegmentPart::P0, -1, 0}), "contour[0].p0[0]");
-    EXPECT_EQ(locationText({12, SegmentPart::PhiEnd}), "contour[12].phi_end");
-    EXPECT_EQ(jointLocation(12, 0), "contour[12]/contour[0]");
+    EXPECT_EQ(locationText(SegmentPlace{7}), "contour[7]");
+    EXPECT_EQ(locationText(SegmentPlace{7, SegmentPart::Center, -1, 1}), "contour[7].center[1]");
+    EXPECT_EQ(locationText(SegmentPlace{7, SegmentPart::Radius}), "contour[7].radius");
+    EXPECT_EQ(locationText(SegmentPlace{0, SegmentPart::Points, 3}), "contour[0].points[3]");
+    EXPECT_EQ(locationText(SegmentPlace{0, SegmentPart::P0, -1, 0}), "contour[0].p0[0]");
+    EXPECT_EQ(locationText(SegmentPlace{12, SegmentPart::PhiEnd}), "contour[12].phi_end");
+    EXPECT_EQ(locationText(JointPlace{12, 0}), "contour[12]/contour[0]");
 }
 
 TEST(ResultValue, ReadingAnEmptyResultAbortsWithAMessage) {

@@ -1,7 +1,9 @@
 #pragma once
 /// @file
-/// @brief The window's wording of the core's diagnostics: a tr() template per DiagnosticCode,
-/// numbers in the user's locale, places named as the window shows them ("Segment 4, Radius
+/// @brief The window's wording of the core's diagnostics: each code's template from the core's
+/// catalogue (common/diagnostic_catalogue.h), translated, with its arguments in the window's
+/// terms (numbers in the user's locale, segments and columns as the table names them, terms
+/// and laws translated), and the typed place named as the window shows it ("Segment 4, Radius
 /// [mm]", "Joint between segments 4 and 5") instead of the file's keys ("contour[4].radius").
 /// A diagnostic without a code (or with arguments that do not fit its code) is shown in the
 /// core's English, so nothing is ever lost. The CLI keeps printing the core's English.

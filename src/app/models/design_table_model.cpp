@@ -2,7 +2,6 @@
 
 #include <QColor>
 #include <QCoreApplication>
-#include <QRegularExpression>
 
 #include "document/commands.h"
 #include "messages/diagnostic_text.h"
@@ -23,14 +22,27 @@ bool isPoly5Column(int c) {
            c == DesignTableModel::A1;
 }
 
-/// The column a diagnostic's field names ("to_deg" → ToDeg); -1 for the whole row.
-int columnOfField(const QString& field) {
-    static const QHash<QString, int> columns{
-        {"law", DesignTableModel::Law},   {"to_deg", DesignTableModel::ToDeg},
-        {"lift", DesignTableModel::Lift}, {"v0", DesignTableModel::V0},
-        {"a0", DesignTableModel::A0},     {"v1", DesignTableModel::V1},
-        {"a1", DesignTableModel::A1}};
-    return columns.value(field, -1);
+/// The column a diagnostic's design field is in; -1 for the whole row.
+int columnOfPart(DesignPart part) {
+    switch (part) {
+        case DesignPart::Whole:
+            return -1;
+        case DesignPart::Law:
+            return DesignTableModel::Law;
+        case DesignPart::ToDeg:
+            return DesignTableModel::ToDeg;
+        case DesignPart::Lift:
+            return DesignTableModel::Lift;
+        case DesignPart::V0:
+            return DesignTableModel::V0;
+        case DesignPart::A0:
+            return DesignTableModel::A0;
+        case DesignPart::V1:
+            return DesignTableModel::V1;
+        case DesignPart::A1:
+            return DesignTableModel::A1;
+    }
+    return -1;
 }
 
 }  // namespace
@@ -81,12 +93,11 @@ void DesignTableModel::setCoefficients(const std::vector<LawCoefficients>& coeff
 
 void DesignTableModel::rebuild() {
     m_problems.clear();
-    static const QRegularExpression place(R"(^design\.segments\[(\d+)\](?:\.(\w+))?$)");
     for (const Diagnostic& d : m_document->diagnostics()) {
-        const auto match = place.match(QString::fromStdString(d.location));
-        if (!match.hasMatch()) continue;
-        const int row = match.captured(1).toInt();
-        const int column = columnOfField(match.captured(2));
+        const auto* place = std::get_if<DesignSegmentPlace>(&d.place);
+        if (!place) continue;
+        const int row = static_cast<int>(place->segment);
+        const int column = columnOfPart(place->part);
         const QString text = DiagnosticText::message(d);
         if (column >= 0) {
             m_problems[cellKey(row, column)] << text;

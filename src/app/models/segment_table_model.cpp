@@ -352,7 +352,7 @@ void SegmentTableModel::rebuildProblems() {
     const int rows = rowCount();
     for (const Diagnostic& d : m_document->diagnostics()) {
         const QString message = diagnosticText(d);
-        for (const SegmentPlace& place : d.places) {
+        for (const SegmentPlace& place : d.segmentFields()) {
             if (place.segment >= static_cast<std::size_t>(rows)) continue;
             const int row = static_cast<int>(place.segment);
             for (int c : columnsOf(place)) {

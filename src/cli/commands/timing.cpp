@@ -146,7 +146,7 @@ int runTiming(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
         job.limits.seedStep = checkInRange("--step", parseFiniteNumber("--step", *v, "mm"),
                                            kMinLengthMm, kMaxLengthMm, "mm");
     }
-    if (!loaded || args.option("--step")) job.stepLocation = "--step";
+    if (!loaded || args.option("--step")) job.stepField = Field::StepOption;
     if (!haveAccel) {
         throw CliError{kUsage, "--accel",
                        "is required: the project has no machining section or a point list is used"};

@@ -20,7 +20,7 @@ inline constexpr std::size_t kCancelPollInterval = 4096;
 
 /// @brief What a computation stopped by its cancel flag returns.
 [[nodiscard]] inline Diagnostics cancelledDiagnostics() {
-    return {Diagnostic{"", "cancelled"}.coded(DiagnosticCode::Cancelled, {})};
+    return {Diagnostic::make({}, DiagnosticCode::Cancelled)};
 }
 
 }  // namespace cam

@@ -5,99 +5,37 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "common/diagnostic_catalogue.h"
+
 namespace cam {
-namespace {
 
-/// "[i]", built by appends: GCC 12 warns falsely on "[" + string (PR105651).
-std::string bracketed(int i) {
-    std::string out = "[";
-    out += std::to_string(i);
-    out += ']';
-    return out;
+Diagnostic Diagnostic::make(Place place, DiagnosticCode code, std::vector<DiagnosticArg> args,
+                            Severity severity) {
+    Diagnostic d;
+    d.location = locationText(place);
+    d.message = englishMessage(code, args, {});
+    d.severity = severity;
+    d.place = std::move(place);
+    d.code = code;
+    d.args = std::move(args);
+    return d;
 }
 
-}  // namespace
-
-std::string segmentLocation(std::size_t index) {
-    std::string out = "contour";
-    out += bracketed(static_cast<int>(index));
-    return out;
-}
-
-std::string jointLocation(std::size_t left, std::size_t right) {
-    return segmentLocation(left) + "/" + segmentLocation(right);
-}
-
-std::string locationText(const SegmentPlace& place) {
-    std::string text = segmentLocation(place.segment);
-    switch (place.part) {
-        case SegmentPart::Whole:
-            return text;
-        case SegmentPart::Type:
-            text += ".type";
-            break;
-        case SegmentPart::Center:
-            text += ".center";
-            break;
-        case SegmentPart::Radius:
-            text += ".radius";
-            break;
-        case SegmentPart::Branch:
-            text += ".branch";
-            break;
-        case SegmentPart::From:
-            text += ".from";
-            break;
-        case SegmentPart::To:
-            text += ".to";
-            break;
-        case SegmentPart::Points:
-            text += ".points";
-            if (place.point >= 0) text += bracketed(place.point);
-            break;
-        case SegmentPart::P0:
-            text += ".p0";
-            break;
-        case SegmentPart::T0:
-            text += ".t0";
-            break;
-        case SegmentPart::P3:
-            text += ".p3";
-            break;
-        case SegmentPart::T1:
-            text += ".t1";
-            break;
-        case SegmentPart::PhiStart:
-            text += ".phi_start";
-            break;
-        case SegmentPart::PhiEnd:
-            text += ".phi_end";
-            break;
-    }
-    if (place.axis >= 0) text += bracketed(place.axis);
-    return text;
+Diagnostic Diagnostic::because(Diagnostics reasons_) && {
+    reasons = std::move(reasons_);
+    message = englishMessage(code, args, reasons);
+    return std::move(*this);
 }
 
 std::string_view diagnosticCodeName(DiagnosticCode code) {
     switch (code) {
-#define CAM_DIAGNOSTIC_NAME(name, signature) \
-    case DiagnosticCode::name:               \
+#define CAM_DIAGNOSTIC_NAME(name) \
+    case DiagnosticCode::name:    \
         return #name;
         CAM_DIAGNOSTIC_CODES(CAM_DIAGNOSTIC_NAME)
 #undef CAM_DIAGNOSTIC_NAME
     }
     return "?";
-}
-
-std::string_view diagnosticCodeSignature(DiagnosticCode code) {
-    switch (code) {
-#define CAM_DIAGNOSTIC_SIGNATURE(name, signature) \
-    case DiagnosticCode::name:                    \
-        return signature;
-        CAM_DIAGNOSTIC_CODES(CAM_DIAGNOSTIC_SIGNATURE)
-#undef CAM_DIAGNOSTIC_SIGNATURE
-    }
-    return "";
 }
 
 void internalError(const std::string& what) {

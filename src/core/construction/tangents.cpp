@@ -11,6 +11,7 @@
 
 #include "common/angles.h"
 #include "common/tolerances.h"
+#include "common/translate_marker.h"
 #include "geometry/line.h"
 #include "geometry/planar.h"
 #include "project/validate.h"
@@ -47,20 +48,9 @@ std::string sixDigits(double v) {
     return buffer;
 }
 
-/// Components below 1e-12 of the point's size are round-off (cos 90° = 6e-17) and shown as 0.
-std::string pointText(const Vec& p) {
-    const double tiny = 1e-12 * std::max(std::abs(p.x()), std::abs(p.y()));
-    auto component = [&](double v) { return sixDigits(std::abs(v) <= tiny ? 0.0 : v); };
-    // Appended piece by piece: "(" + std::string trips GCC 12's -Wrestrict false positive.
-    std::string text = "(";
-    text += component(p.x());
-    text += ", ";
-    text += component(p.y());
-    text += ")";
-    return text;
-}
-
-/// The two numbers pointText shows, as numbers (for a diagnostic's arguments).
+/// A point's two coordinates as a diagnostic's arguments, to six digits: enough to tell the
+/// user which point is meant. Components below 1e-12 of the point's size are round-off
+/// (cos 90° = 6e-17) and shown as 0.
 std::vector<DiagnosticArg> pointArgs(const Vec& p) {
     const double tiny = 1e-12 * std::max(std::abs(p.x()), std::abs(p.y()));
     auto component = [&](double v) {
@@ -72,8 +62,6 @@ std::vector<DiagnosticArg> pointArgs(const Vec& p) {
 /// The number sixDigits() shows.
 double shown(double v) { return std::strtod(sixDigits(v).c_str(), nullptr); }
 
-std::string deg(double value) { return formatNumber(value) + "°"; }
-
 /// Arguments one after another: {a, b} + {c}.
 std::vector<DiagnosticArg> joined(std::vector<DiagnosticArg> head,
                                   const std::vector<DiagnosticArg>& tail) {
@@ -83,24 +71,20 @@ std::vector<DiagnosticArg> joined(std::vector<DiagnosticArg> head,
 
 DiagnosticArg segmentArg(std::size_t index) { return static_cast<double>(index); }
 
+/// The segment's type as a term of the diagnostic catalogue: "a line".
 const char* typeName(SegmentType type) {
     switch (type) {
         case SegmentType::Arc:
-            return "an arc";
+            return CAM_TRANSLATE_NOOP("Diagnostic", "an arc");
         case SegmentType::Line:
-            return "a line";
+            return CAM_TRANSLATE_NOOP("Diagnostic", "a line");
         case SegmentType::Bezier:
-            return "a Bézier spline";
+            return CAM_TRANSLATE_NOOP("Diagnostic", "a Bézier spline");
         case SegmentType::Hermite:
-            return "a Hermite spline";
+            return CAM_TRANSLATE_NOOP("Diagnostic", "a Hermite spline");
     }
-    return "a segment";
+    return CAM_TRANSLATE_NOOP("Diagnostic", "a segment");
 }
-
-const char* branchName(double sense) { return sense > 0.0 ? "outer" : "inner"; }
-
-/// "far" or "near" side of a circle as seen from the rotation centre.
-const char* sideName(double sense) { return sense > 0.0 ? "far" : "near"; }
 
 // ---- tangent line at a joint ----
 
@@ -114,21 +98,17 @@ struct Joint {
 
 /// A candidate that was dropped, and why (for the message when none is left).
 struct Dropped {
-    std::string reason;
     bool window = false;  ///< dropped only for its windows
     DiagnosticCode code = DiagnosticCode::Unspecified;
     std::vector<DiagnosticArg> args;
 };
 
-std::string tangentName(const CircleTangent& t, const Joint& k) {
-    return std::string(t.kind == TangentKind::Outer ? "the outer" : "the inner") +
-           " tangent from " + pointText(t.onA) + " on " + segmentLocation(k.left) + " to " +
-           pointText(t.onB) + " on " + segmentLocation(k.right);
-}
-
-/// tangentName's arguments: "outer" or "inner", the point on A, left, the point on B, right.
+/// The arguments that name a tangent ("the outer tangent from (1, 2) on contour[3] to (4, 5)
+/// on contour[6]"): which one it is, the point on A, left, the point on B, right.
 std::vector<DiagnosticArg> tangentArgs(const CircleTangent& t, const Joint& k) {
-    std::vector<DiagnosticArg> args{std::string(t.kind == TangentKind::Outer ? "outer" : "inner")};
+    std::vector<DiagnosticArg> args{t.kind == TangentKind::Outer
+                                        ? CAM_TRANSLATE_NOOP("Diagnostic", "the outer tangent")
+                                        : CAM_TRANSLATE_NOOP("Diagnostic", "the inner tangent")};
     args = joined(std::move(args), pointArgs(t.onA));
     args.push_back(segmentArg(k.left));
     args = joined(std::move(args), pointArgs(t.onB));
@@ -136,18 +116,11 @@ std::vector<DiagnosticArg> tangentArgs(const CircleTangent& t, const Joint& k) {
     return args;
 }
 
-std::string branchReason(const Arc& arc, std::size_t index) {
-    const double sense = arc.sense();
-    return "touches " + segmentLocation(index) + " on the " + sideName(-sense) +
-           " side of its circle, but the arc follows the " + sideName(sense) + " side (" +
-           branchName(sense) + " branch)";
-}
-
 /// The tangent t dropped because it touches the arc of `index` on the wrong side.
 Dropped wrongSide(const CircleTangent& t, const Joint& k, const Arc& arc, std::size_t index) {
     // On the outer branch (sense > 0) it touches the near side, on the inner the far one.
     return {
-        tangentName(t, k) + " " + branchReason(arc, index), false,
+        false,
         arc.sense() > 0.0 ? DiagnosticCode::TangentOnNearSide : DiagnosticCode::TangentOnFarSide,
         joined(tangentArgs(t, k), {segmentArg(index)})};
 }
@@ -161,10 +134,8 @@ std::variant<TangentLineChoice, Dropped> buildChoice(const std::vector<SegmentSp
     // Within one turn after A's start: no other representative can leave A a window.
     const double aEnd = a.phiStartDeg + mod360(polarDeg(t.onA) - a.phiStartDeg);
     if (!(aEnd > a.phiStartDeg)) {
-        return Dropped{
-            "with " + tangentName(t, k) + " the window of " + segmentLocation(k.left) +
-                " would be empty: its end would move onto its start " + deg(a.phiStartDeg),
-            true, DiagnosticCode::TangentEmptiesLeft, joined(tangentArgs(t, k), {a.phiStartDeg})};
+        return Dropped{true, DiagnosticCode::TangentEmptiesLeft,
+                       joined(tangentArgs(t, k), {a.phiStartDeg})};
     }
     SegmentSpec line{Line{t.onA, t.onB}};
     const auto [start, end] = lineWindowDeg(line, aEnd);
@@ -173,10 +144,7 @@ std::variant<TangentLineChoice, Dropped> buildChoice(const std::vector<SegmentSp
     line.phiEndDeg = aEnd + (end - start);
     const double bStart = line.phiEndDeg - k.shift;
     if (!(bStart < b.phiEndDeg)) {
-        return Dropped{"with " + tangentName(t, k) + " the window of " + segmentLocation(k.right) +
-                           " would be empty or reversed: its start would move to " + deg(bStart) +
-                           ", not before its end " + deg(b.phiEndDeg),
-                       true, DiagnosticCode::TangentReversesRight,
+        return Dropped{true, DiagnosticCode::TangentReversesRight,
                        joined(tangentArgs(t, k), {bStart, b.phiEndDeg})};
     }
     std::vector<SegmentSpec> out = contour;
@@ -193,24 +161,17 @@ Diagnostic noTangentReason(const Arc& a, const Arc& b, const Joint& k) {
     const double d = (b.center - a.center).norm();
     const double scale = std::max({d, a.radius, b.radius});
     if (d <= kTouchRel * scale && std::abs(a.radius - b.radius) <= kTouchRel * scale) {
-        return Diagnostic::atJoint(k.left, k.right,
-                                   "both arcs lie on the same circle, so they already meet "
-                                   "tangentially: no line fits between them")
-            .coded(DiagnosticCode::TangentSameCircle, {});
+        return Diagnostic::make(JointPlace{k.left, k.right}, DiagnosticCode::TangentSameCircle);
     }
     const bool aInside = a.radius < b.radius;
     const std::size_t inner = aInside ? k.left : k.right;
     const std::size_t outer = aInside ? k.right : k.left;
-    return Diagnostic::atJoint(k.left, k.right,
-                               "the circle of " + segmentLocation(inner) + " lies inside that of " +
-                                   segmentLocation(outer) +
-                                   ", so the two circles have no common tangent")
-        .coded(DiagnosticCode::TangentCircleInside, {segmentArg(inner), segmentArg(outer)});
+    return Diagnostic::make(JointPlace{k.left, k.right}, DiagnosticCode::TangentCircleInside,
+                            {segmentArg(inner), segmentArg(outer)});
 }
 
-/// A message with its code: where the arc-through-a-point construction stops.
+/// A code with its arguments: where the arc-through-a-point construction stops.
 struct Refusal {
-    std::string message;
     DiagnosticCode code = DiagnosticCode::Unspecified;
     std::vector<DiagnosticArg> args;
 };
@@ -228,16 +189,11 @@ std::variant<RowEnd, Refusal> rowEnd(const SegmentSpec& s, std::size_t row) {
     RowEnd end;
     if (const auto* arc = s.as<Arc>()) {
         if (!isCircle(*arc)) {
-            return Refusal{segmentLocation(row) + " is not a circle",
-                           DiagnosticCode::ArcRowNotCircle,
-                           {segmentArg(row)}};
+            return Refusal{DiagnosticCode::ArcRowNotCircle, {segmentArg(row)}};
         }
         end.point = pointOnSegment(s, s.phiEndDeg);
         if (!finite(end.point)) {
-            return Refusal{"the follower ray at the end " + deg(s.phiEndDeg) + " of " +
-                               segmentLocation(row) + " misses its circle, so it has no end point",
-                           DiagnosticCode::ArcRayMissesEnd,
-                           {s.phiEndDeg, segmentArg(row)}};
+            return Refusal{DiagnosticCode::ArcRayMissesEnd, {s.phiEndDeg, segmentArg(row)}};
         }
         end.travel = arc->sense() * perp(end.point - arc->center);
     } else if (const auto* line = s.as<Line>()) {
@@ -255,17 +211,12 @@ std::variant<RowEnd, Refusal> rowEnd(const SegmentSpec& s, std::size_t row) {
     }
     const double length = end.travel.norm();
     if (!finite(end.point) || !(length > 0.0) || !std::isfinite(length)) {
-        return Refusal{segmentLocation(row) + " has no direction at its end point",
-                       DiagnosticCode::ArcNoEndDirection,
-                       {segmentArg(row)}};
+        return Refusal{DiagnosticCode::ArcNoEndDirection, {segmentArg(row)}};
     }
     end.travel /= length;
     if (!(cross(end.point, end.travel) > 0.0)) {
-        return Refusal{
-            segmentLocation(row) + " does not run counter-clockwise around the rotation " +
-                "centre at its end point " + pointText(end.point) +
-                " (its polar angle does not grow there)",
-            DiagnosticCode::ArcEndClockwise, joined({segmentArg(row)}, pointArgs(end.point))};
+        return Refusal{DiagnosticCode::ArcEndClockwise,
+                       joined({segmentArg(row)}, pointArgs(end.point))};
     }
     return end;
 }
@@ -275,11 +226,7 @@ std::variant<RowEnd, Refusal> rowEnd(const SegmentSpec& s, std::size_t row) {
 std::optional<Refusal> moveStart(SegmentSpec& next, std::size_t index, double startDeg,
                                  const Vec& p) {
     if (!(startDeg < next.phiEndDeg)) {
-        return Refusal{"the arc would end at " + deg(startDeg) +
-                           " (the polar angle of the point), not before the end " +
-                           deg(next.phiEndDeg) + " of " + segmentLocation(index) +
-                           ", whose window would be empty or reversed",
-                       DiagnosticCode::ArcEndsAfterNext,
+        return Refusal{DiagnosticCode::ArcEndsAfterNext,
                        {startDeg, next.phiEndDeg, segmentArg(index)}};
     }
     if (next.as<Arc>()) {
@@ -289,10 +236,7 @@ std::optional<Refusal> moveStart(SegmentSpec& next, std::size_t index, double st
     if (auto* line = next.as<Line>()) {
         line->from = p;
         if ((line->to - p).norm() <= kJointToleranceMm) {
-            return Refusal{"the point is the end point of " + segmentLocation(index) +
-                               ", which would have no length left",
-                           DiagnosticCode::ArcPointIsNextEnd,
-                           {segmentArg(index)}};
+            return Refusal{DiagnosticCode::ArcPointIsNextEnd, {segmentArg(index)}};
         }
     } else if (auto* bez = next.as<CubicBezier>()) {
         const Vec offset = p - bez->p[0];
@@ -305,10 +249,7 @@ std::optional<Refusal> moveStart(SegmentSpec& next, std::size_t index, double st
     const auto [start, end] = lineWindowDeg(next, startDeg);
     const double width = next.phiEndDeg - startDeg;
     if (!(end > start) || std::abs((end - start) - width) > kLineWindowToleranceDeg) {
-        return Refusal{"with its start point moved to the point, " + segmentLocation(index) +
-                           " would no longer run counter-clockwise from " + deg(startDeg) +
-                           " to its end " + deg(next.phiEndDeg),
-                       DiagnosticCode::ArcNextClockwise,
+        return Refusal{DiagnosticCode::ArcNextClockwise,
                        {segmentArg(index), startDeg, next.phiEndDeg}};
     }
     next.phiStartDeg = startDeg;
@@ -356,30 +297,27 @@ std::vector<CircleTangent> circleTangentLines(const Arc& a, const Arc& b) {
 Result<TangentLineChoices> tangentLineJoint(const std::vector<SegmentSpec>& contour,
                                             std::size_t joint) {
     const std::size_t n = contour.size();
-    if (auto problem = jointIndexProblem(n, joint, "tangent line")) return Diagnostics{*problem};
+    if (auto problem =
+            jointIndexProblem(n, joint, CAM_TRANSLATE_NOOP("Diagnostic", "a tangent line"))) {
+        return Diagnostics{*problem};
+    }
     Joint k;
     k.left = (joint + n - 1) % n;
     k.right = joint;
     k.a = &contour[k.left];
     k.b = &contour[k.right];
     k.shift = joint == 0 ? 360.0 : 0.0;
-    auto fail = [&](std::string message, DiagnosticCode code, std::vector<DiagnosticArg> args) {
-        return Diagnostics{
-            Diagnostic::atJoint(k.left, k.right, std::move(message)).coded(code, std::move(args))};
+    auto fail = [&](DiagnosticCode code, std::vector<DiagnosticArg> args = {}) {
+        return Diagnostics{Diagnostic::make(JointPlace{k.left, k.right}, code, std::move(args))};
     };
     for (std::size_t i : {k.left, k.right}) {
         const SegmentSpec& s = contour[i];
         if (!s.as<Arc>()) {
-            return fail(std::string("a tangent line joins two arcs; ") + segmentLocation(i) +
-                            " is " + typeName(s.type()),
-                        DiagnosticCode::TangentNeedsArcs,
+            return fail(DiagnosticCode::TangentNeedsArcs,
                         {segmentArg(i), std::string(typeName(s.type()))});
         }
         if (!isCircle(*s.as<Arc>())) {
-            return fail(segmentLocation(i) +
-                            " is not a circle (its radius must be a finite number > 0, its "
-                            "centre finite)",
-                        DiagnosticCode::TangentNotCircle, {segmentArg(i)});
+            return fail(DiagnosticCode::TangentNotCircle, {segmentArg(i)});
         }
     }
     const Arc& arcA = *k.a->as<Arc>();
@@ -392,19 +330,12 @@ Result<TangentLineChoices> tangentLineJoint(const std::vector<SegmentSpec>& cont
     for (const CircleTangent& t : tangents) {
         const Vec dir = t.onB - t.onA;
         if (dir.norm() <= kJointToleranceMm) {
-            dropped.push_back({"the circles touch at " + pointText(t.onA) +
-                                   ": the arcs can meet there directly, without a line",
-                               false, DiagnosticCode::TangentTouch, pointArgs(t.onA)});
+            dropped.push_back({false, DiagnosticCode::TangentTouch, pointArgs(t.onA)});
             continue;
         }
         // (a) The polar angle grows from t_A to t_B.
         if (!(cross(t.onA, dir) > 0.0)) {
-            dropped.push_back({tangentName(t, k) +
-                                   " runs clockwise around the rotation centre (its polar "
-                                   "angle would not grow from " +
-                                   segmentLocation(k.left) + " to " + segmentLocation(k.right) +
-                                   ")",
-                               false, DiagnosticCode::TangentClockwise, tangentArgs(t, k)});
+            dropped.push_back({false, DiagnosticCode::TangentClockwise, tangentArgs(t, k)});
             continue;
         }
         // (b) The line runs as the arcs travel there, and (c) its ends are on the arcs'
@@ -432,43 +363,35 @@ Result<TangentLineChoices> tangentLineJoint(const std::vector<SegmentSpec>& cont
     if (!result.choices.empty()) return result;
     // A tangent that fits but for its windows says most; otherwise every tangent's reason.
     for (const Dropped& d : dropped) {
-        if (d.window) return fail(d.reason, d.code, d.args);
+        if (d.window) return fail(d.code, d.args);
     }
-    std::string message = "no tangent line fits: ";
-    std::vector<Diagnostic> reasons;
-    for (std::size_t i = 0; i < dropped.size(); ++i) {
-        message += (i ? "; " : "") + dropped[i].reason;
-        reasons.push_back(
-            Diagnostic("", dropped[i].reason).coded(dropped[i].code, dropped[i].args));
-    }
-    Diagnostics none = fail(std::move(message), DiagnosticCode::TangentNoneFits, {});
-    none.front().reasons = std::move(reasons);
-    return none;
+    Diagnostics reasons;
+    for (const Dropped& d : dropped) reasons.push_back(Diagnostic::make({}, d.code, d.args));
+    return Diagnostics{
+        Diagnostic::make(JointPlace{k.left, k.right}, DiagnosticCode::TangentNoneFits)
+            .because(std::move(reasons))};
 }
 
 Result<ArcThroughPointResult> arcThroughPoint(const std::vector<SegmentSpec>& contour,
                                               std::size_t row, Eigen::Vector2d point) {
     const std::size_t n = contour.size();
     if (n == 0) {
-        return Diagnostics{Diagnostic("contour", "has no segment to continue")
-                               .coded(DiagnosticCode::ArcNoSegment, {})};
+        return Diagnostics{
+            Diagnostic::make(FieldPlace{Field::Contour}, DiagnosticCode::ArcNoSegment)};
     }
     if (row >= n) {
-        return Diagnostics{Diagnostic("contour", "there is no " + segmentLocation(row) +
-                                                     ": rows are 0 .. " + std::to_string(n - 1))
-                               .coded(DiagnosticCode::ArcNoSuchRow,
-                                      {segmentArg(row), static_cast<double>(n - 1)})};
+        return Diagnostics{Diagnostic::make(FieldPlace{Field::Contour},
+                                            DiagnosticCode::ArcNoSuchRow,
+                                            {segmentArg(row), static_cast<double>(n - 1)})};
     }
     const std::size_t next = (row + 1) % n;
     auto fail = [&](Refusal refusal) {
-        return Diagnostics{Diagnostic::atJoint(row, next, std::move(refusal.message))
-                               .coded(refusal.code, std::move(refusal.args))};
+        return Diagnostics{
+            Diagnostic::make(JointPlace{row, next}, refusal.code, std::move(refusal.args))};
     };
     const SegmentSpec& s = contour[row];
     if (n == 1 && !s.as<Arc>()) {
-        return fail({"a contour of one segment must be a circle; " + segmentLocation(row) + " is " +
-                         typeName(s.type()),
-                     DiagnosticCode::ArcSingleNotCircle,
+        return fail({DiagnosticCode::ArcSingleNotCircle,
                      {segmentArg(row), std::string(typeName(s.type()))}});
     }
     const auto end = rowEnd(s, row);
@@ -478,19 +401,14 @@ Result<ArcThroughPointResult> arcThroughPoint(const std::vector<SegmentSpec>& co
     const Vec& p = point;
 
     if (!finite(p)) {
-        return fail({"the point must be finite (got " + pointText(p) + ")",
-                     DiagnosticCode::ArcPointNotFinite, pointArgs(p)});
+        return fail({DiagnosticCode::ArcPointNotFinite, pointArgs(p)});
     }
     if (p.norm() <= kJointToleranceMm) {
-        return fail({"the point is the rotation centre, which no arc of the contour can reach",
-                     DiagnosticCode::ArcPointAtCentre,
-                     {}});
+        return fail({DiagnosticCode::ArcPointAtCentre, {}});
     }
     const Vec w = p - t;
     if (w.norm() <= kJointToleranceMm) {
-        return fail({"the point is the end point " + pointText(t) + " of " + segmentLocation(row) +
-                         ": an arc needs a second point",
-                     DiagnosticCode::ArcPointIsEnd, joined(pointArgs(t), {segmentArg(row)})});
+        return fail({DiagnosticCode::ArcPointIsEnd, joined(pointArgs(t), {segmentArg(row)})});
     }
     // The centre c = T + s·n on the normal is as far from P as from T:
     // |T − P + s·n|² = s²  <=>  |P − T|² = 2·s·n·(P − T).
@@ -501,56 +419,34 @@ Result<ArcThroughPointResult> arcThroughPoint(const std::vector<SegmentSpec>& co
     const double radius = std::abs(sc);
     if (!(std::abs(q) > 1e-12 * w.norm()) || !(radius <= kMaxLengthMm) ||
         !(std::abs(center.x()) <= kMaxLengthMm && std::abs(center.y()) <= kMaxLengthMm)) {
-        return fail(
-            {"the point is on the tangent: use a line (an arc through it would need a "
-             "radius or centre beyond 1e6 mm, the largest length a project holds)",
-             DiagnosticCode::ArcPointOnTangent,
-             {}});
+        return fail({DiagnosticCode::ArcPointOnTangent, {}});
     }
     if (radius < kMinLengthMm) {
-        return fail({"the arc's radius would be " + formatNumber(radius) + " mm, below " +
-                         formatNumber(kMinLengthMm) + " mm, the smallest a project holds",
-                     DiagnosticCode::ArcRadiusTooSmall,
-                     {radius, kMinLengthMm}});
+        return fail({DiagnosticCode::ArcRadiusTooSmall, {radius, kMinLengthMm}});
     }
     // s > 0: centre on the left, the arc turns counter-clockwise about it: outer.
     const double sense = sc > 0.0 ? 1.0 : -1.0;
-    const std::string circle =
-        "the circle (centre " + pointText(center) + ", radius " + sixDigits(radius) + " mm)";
+    // The circle's centre and radius, as the messages name it.
     const std::vector<DiagnosticArg> circleArgs = joined(pointArgs(center), {shown(radius)});
     const bool outer = sense > 0.0;
     if (!onBranch(t, center, sense)) {  // guarded by cross(T, t) > 0 up to rounding
-        return fail({"the end point of " + segmentLocation(row) + " is not on the " +
-                         branchName(sense) + " branch of " + circle,
-                     outer ? DiagnosticCode::ArcEndOffOuter : DiagnosticCode::ArcEndOffInner,
+        return fail({outer ? DiagnosticCode::ArcEndOffOuter : DiagnosticCode::ArcEndOffInner,
                      joined({segmentArg(row)}, circleArgs)});
     }
     if (!onBranch(p, center, sense)) {
         // The outer branch (sense > 0) leaves on the far side, so the point is on the near one.
-        return fail({"the point lies on the " + std::string(sideName(-sense)) + " side of " +
-                         circle + " as seen from the rotation centre, but the arc leaves " +
-                         segmentLocation(row) + " on its " + sideName(sense) + " side (" +
-                         branchName(sense) +
-                         " branch): the follower ray would not meet the arc at the point",
-                     outer ? DiagnosticCode::ArcPointOnNearSide : DiagnosticCode::ArcPointOnFarSide,
+        return fail({outer ? DiagnosticCode::ArcPointOnNearSide : DiagnosticCode::ArcPointOnFarSide,
                      joined(circleArgs, {segmentArg(row)})});
     }
     const double sweep = sweepRad(t - center, p - center, sense);
     if (!arcSweepOnBranch(center, radius, t, sweep, sense)) {
-        return fail({"the point lies behind the end point of " + segmentLocation(row) +
-                         " as seen from the rotation centre: the arc along " + circle +
-                         " would pass to its " + sideName(-sense) +
-                         " side and run back before reaching it",
-                     outer ? DiagnosticCode::ArcRunsBackNear : DiagnosticCode::ArcRunsBackFar,
+        return fail({outer ? DiagnosticCode::ArcRunsBackNear : DiagnosticCode::ArcRunsBackFar,
                      joined({segmentArg(row)}, circleArgs)});
     }
     const double startDeg = s.phiEndDeg;
     const double endDeg = startDeg + mod360(polarDeg(p) - startDeg);
     if (!(endDeg > startDeg)) {
-        return fail({"the point lies on the follower ray at the end " + deg(startDeg) + " of " +
-                         segmentLocation(row) + ": the arc's window would be empty",
-                     DiagnosticCode::ArcPointOnEndRay,
-                     {startDeg, segmentArg(row)}});
+        return fail({DiagnosticCode::ArcPointOnEndRay, {startDeg, segmentArg(row)}});
     }
 
     std::vector<SegmentSpec> out = contour;

@@ -19,10 +19,7 @@ Result<Contour> Contour::build(const Project& project, ValidationOptions options
 }
 
 Diagnostic contourNeverSynthesised() {
-    return Diagnostic{"contour",
-                      "is empty: the design's contour was never synthesised "
-                      "(camwright-cli synthesize makes it)"}
-        .coded(DiagnosticCode::ContourNeverSynthesised, {});
+    return Diagnostic::make(FieldPlace{Field::Contour}, DiagnosticCode::ContourNeverSynthesised);
 }
 
 Result<Contour> Contour::buildValidated(const Project& project) {

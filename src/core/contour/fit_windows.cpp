@@ -119,10 +119,8 @@ Result<std::vector<SegmentSpec>> fitWindows(const std::vector<SegmentSpec>& cont
             }
         }
         if (!best) {
-            errors.push_back(Diagnostic::atJoint(k, (k + 1) % n,
-                                                 "the neighbouring segments do not meet, so "
-                                                 "there is no boundary to fit")
-                                 .coded(DiagnosticCode::WindowsSegmentsDoNotMeet, {}));
+            errors.push_back(Diagnostic::make(JointPlace{k, (k + 1) % n},
+                                              DiagnosticCode::WindowsSegmentsDoNotMeet));
         }
         joints[k] = best;
     }

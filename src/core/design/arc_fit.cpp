@@ -415,15 +415,9 @@ Result<ArcFit> fitArcs(const std::function<CurveSample(double)>& curve, double t
                           pieces, fit.maxDeviation, where, cancel)) {
                 if (cancelled(cancel)) return Diagnostics{};
                 const double deg = radToDeg(where);
-                return Diagnostics{
-                    Diagnostic{"design.tolerance",
-                               "cannot be met near " + formatNumber(deg) +
-                                   "°: no arcs come within it even on pieces of 2^-" +
-                                   std::to_string(kMaxHalvings) +
-                                   " of the profile's sampling step (the profile has a corner "
-                                   "or a cusp there)"}
-                        .coded(DiagnosticCode::ToleranceCannotBeMet,
-                               {deg, static_cast<double>(kMaxHalvings)})};
+                return Diagnostics{Diagnostic::make(FieldPlace{Field::DesignTolerance},
+                                                    DiagnosticCode::ToleranceCannotBeMet,
+                                                    {deg, static_cast<double>(kMaxHalvings)})};
             }
             for (const FittedArc& arc : pieces) append(arc);
             ++i;

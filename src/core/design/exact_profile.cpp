@@ -34,15 +34,11 @@ Result<ExactProfile> ExactProfile::build(const MotionDesign& design, const Follo
     const double Rp = Rb + rho;  // the pitch curve's base circle
     if (follower.motion == FollowerMotion::Translating) {
         if (follower.type != FollowerType::Flat && !(std::abs(follower.offset) < Rp)) {
-            return Diagnostics{
-                Diagnostic{"design.base_radius",
-                           "the follower's line (offset " + formatNumber(follower.offset) +
-                               " mm) passes outside the base circle of radius " + formatNumber(Rp) +
-                               " mm" + (rho > 0.0 ? " (base radius + roller radius)" : "") +
-                               ": make the base radius larger than the offset"}
-                    .coded(rho > 0.0 ? DiagnosticCode::OffsetOutsidePitchBaseCircle
-                                     : DiagnosticCode::OffsetOutsideBaseCircle,
-                           {follower.offset, Rp})};
+            return Diagnostics{Diagnostic::make(FieldPlace{Field::DesignBaseRadius},
+                                                rho > 0.0
+                                                    ? DiagnosticCode::OffsetOutsidePitchBaseCircle
+                                                    : DiagnosticCode::OffsetOutsideBaseCircle,
+                                                {follower.offset, Rp})};
         }
         profile.m_s0 = follower.type == FollowerType::Flat
                            ? Rb
@@ -54,15 +50,10 @@ Result<ExactProfile> ExactProfile::build(const MotionDesign& design, const Follo
     const double a = follower.pivot.norm(), L = follower.armLength;
     const double cosine = (a * a + L * L - Rp * Rp) / (2.0 * a * L);
     if (!(a > Rp) || !(std::abs(cosine) < 1.0)) {
-        return Diagnostics{Diagnostic{
-            "design.base_radius",
-            "an arm of " + formatNumber(L) + " mm from a pivot " + formatNumber(a) +
-                " mm from the centre cannot touch the base "
-                "circle of radius " +
-                formatNumber(Rp) + " mm" + (rho > 0.0 ? " (base radius + roller radius)" : "")}
-                               .coded(rho > 0.0 ? DiagnosticCode::ArmMissesPitchBaseCircle
-                                                : DiagnosticCode::ArmMissesBaseCircle,
-                                      {L, a, Rp})};
+        return Diagnostics{Diagnostic::make(FieldPlace{Field::DesignBaseRadius},
+                                            rho > 0.0 ? DiagnosticCode::ArmMissesPitchBaseCircle
+                                                      : DiagnosticCode::ArmMissesBaseCircle,
+                                            {L, a, Rp})};
     }
     profile.m_theta0 = std::acos(cosine);
     profile.m_beta = std::atan2(-follower.pivot.y(), -follower.pivot.x());
@@ -163,10 +154,9 @@ std::vector<ProfileProblem> ExactProfile::problems(bool strictPressureAngle, int
     const auto steep = [&](const ProfilePoint& p) { return std::abs(p.pressureAngle) > limit; };
     std::vector<ProfilePoint> sampled(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) sampled[static_cast<std::size_t>(i)] = at(i * h);
-    // `what` and `args` say what is wrong; the stretch's ends (in degrees) follow as the
+    // `code` and `args` say what is wrong; the stretch's ends (in degrees) follow as the
     // code's last two arguments.
-    const auto ranges = [&](const std::function<bool(const ProfilePoint&)>& bad,
-                            const std::string& location, const std::string& what,
+    const auto ranges = [&](const std::function<bool(const ProfilePoint&)>& bad, const Place& place,
                             DiagnosticCode code, const std::vector<DiagnosticArg>& args,
                             Severity severity) {
         // Stretches of bad samples, their ends bisected to 1e-12 rad.
@@ -190,28 +180,20 @@ std::vector<ProfileProblem> ExactProfile::problems(bool strictPressureAngle, int
             const double to = j == n - 1 ? kTwoPi : edge((j + 1) * h, j * h);
             std::vector<DiagnosticArg> coded = args;
             coded.insert(coded.end(), {radToDeg(from), radToDeg(to)});
-            out.push_back({from, to,
-                           Diagnostic(location,
-                                      what + " from " + formatNumber(radToDeg(from)) + "° to " +
-                                          formatNumber(radToDeg(to)) + "°",
-                                      severity)
-                               .coded(code, std::move(coded))});
+            out.push_back({from, to, Diagnostic::make(place, code, std::move(coded), severity)});
             i = j + 1;
         }
     };
     if (m_follower.type == FollowerType::Roller) {
-        ranges(folds, "follower.radius",
-               "undercut: the pitch curve bends tighter than the roller radius " +
-                   formatNumber(rho) + " mm",
-               DiagnosticCode::UndercutRoller, {rho}, Severity::Error);
+        ranges(folds, FieldPlace{Field::FollowerRadius}, DiagnosticCode::UndercutRoller, {rho},
+               Severity::Error);
     } else {
-        ranges(folds, "design", "undercut: the face's envelope folds back (h + h'' < 0)",
-               DiagnosticCode::UndercutFlatFace, {}, Severity::Error);
+        ranges(folds, FieldPlace{Field::Design}, DiagnosticCode::UndercutFlatFace, {},
+               Severity::Error);
     }
     if (m_follower.type != FollowerType::Flat) {
         const double limitDeg = m_follower.maxPressureAngleOrDefault();
-        ranges(steep, "follower.max_pressure_angle_deg",
-               "the pressure angle exceeds " + formatNumber(limitDeg) + "°",
+        ranges(steep, FieldPlace{Field::FollowerMaxPressureAngle},
                DiagnosticCode::PressureAngleExceeded, {limitDeg},
                strictPressureAngle ? Severity::Error : Severity::Info);
     }

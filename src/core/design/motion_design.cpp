@@ -14,76 +14,59 @@ Diagnostics designProblems(const Project& project) {
     const DesignSpec& d = *project.design;
     Diagnostics out;
     // Not finite or not positive: MotionDesign says so; here only the upper bound.
-    for (const auto& [location, value] : {std::pair{"design.base_radius", d.baseRadius},
-                                          std::pair{"design.tolerance", d.tolerance}}) {
+    for (const auto& [field, value] : {std::pair{Field::DesignBaseRadius, d.baseRadius},
+                                       std::pair{Field::DesignTolerance, d.tolerance}}) {
         if (!std::isfinite(value)) continue;
-        if (auto problem = lengthProblem(location, value)) out.push_back(std::move(*problem));
+        if (auto problem = lengthProblem(FieldPlace{field}, value)) {
+            out.push_back(std::move(*problem));
+        }
     }
     const Result<MotionDesign> motion = MotionDesign::build(d);
     for (const Diagnostic& problem : motion.errors()) out.push_back(problem);
     return out;
 }
-namespace {
-
-std::string segmentPlace(std::size_t k) { return "design.segments[" + std::to_string(k) + "]"; }
-
-}  // namespace
-
 Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
     Diagnostics errors;
-    const auto error = [&](std::string location, std::string message, DiagnosticCode code,
-                           std::vector<DiagnosticArg> args) {
-        errors.push_back(
-            Diagnostic(std::move(location), std::move(message)).coded(code, std::move(args)));
+    const auto error = [&](Place place, DiagnosticCode code, std::vector<DiagnosticArg> args) {
+        errors.push_back(Diagnostic::make(std::move(place), code, std::move(args)));
     };
-    const auto positive = [&](const char* location, double value) {
+    const auto positive = [&](Field field, double value) {
         if (!std::isfinite(value) || !(value > 0.0)) {
-            error(location, "must be > 0 (got " + formatNumber(value) + ")",
-                  DiagnosticCode::NotPositive, {value});
+            error(FieldPlace{field}, DiagnosticCode::NotPositive, {value});
         }
     };
-    positive("design.base_radius", spec.baseRadius);
-    positive("design.tolerance", spec.tolerance);
+    positive(Field::DesignBaseRadius, spec.baseRadius);
+    positive(Field::DesignTolerance, spec.tolerance);
     if (spec.segments.empty()) {
-        error("design.segments", "must have at least one segment", DiagnosticCode::NoSegments, {});
+        error(FieldPlace{Field::DesignSegments}, DiagnosticCode::NoSegments, {});
     }
     double startDeg = 0.0, startLift = 0.0;
     MotionDesign design(spec);
     for (std::size_t k = 0; k < spec.segments.size(); ++k) {
         const DesignSegmentSpec& s = spec.segments[k];
-        const std::string at = segmentPlace(k);
+        const auto at = [k](DesignPart part) { return DesignSegmentPlace{k, part}; };
         bool finite = true;
-        for (auto [key, v] :
-             {std::pair{".to_deg", s.toDeg}, std::pair{".lift", s.lift}, std::pair{".v0", s.v0},
-              std::pair{".a0", s.a0}, std::pair{".v1", s.v1}, std::pair{".a1", s.a1}}) {
+        for (auto [part, v] :
+             {std::pair{DesignPart::ToDeg, s.toDeg}, std::pair{DesignPart::Lift, s.lift},
+              std::pair{DesignPart::V0, s.v0}, std::pair{DesignPart::A0, s.a0},
+              std::pair{DesignPart::V1, s.v1}, std::pair{DesignPart::A1, s.a1}}) {
             if (!std::isfinite(v)) {
-                error(at + key, "must be a finite number (got " + formatNumber(v) + ")",
-                      DiagnosticCode::NotFinite, {v});
+                error(at(part), DiagnosticCode::NotFinite, {v});
                 finite = false;
             }
         }
         if (!finite) continue;
         if (!(s.toDeg > startDeg)) {
-            error(at + ".to_deg",
-                  "must be after " + formatNumber(startDeg) + "°, where this segment starts (got " +
-                      formatNumber(s.toDeg) + "°)",
-                  DiagnosticCode::DesignEndNotAfterStart, {startDeg, s.toDeg});
+            error(at(DesignPart::ToDeg), DiagnosticCode::DesignEndNotAfterStart,
+                  {startDeg, s.toDeg});
         } else if (s.toDeg > 360.0) {
-            error(at + ".to_deg", "must be at most 360° (got " + formatNumber(s.toDeg) + "°)",
-                  DiagnosticCode::DesignEndBeyondTurn, {s.toDeg});
+            error(at(DesignPart::ToDeg), DiagnosticCode::DesignEndBeyondTurn, {s.toDeg});
         }
         if (motionLaw(s.law).shape == LawShape::Dwell && s.lift != startLift) {
-            error(at + ".lift",
-                  "a dwell keeps the lift it starts with (" + formatNumber(startLift) + "), got " +
-                      formatNumber(s.lift),
-                  DiagnosticCode::DwellLiftChanges, {startLift, s.lift});
+            error(at(DesignPart::Lift), DiagnosticCode::DwellLiftChanges, {startLift, s.lift});
         } else if (motionLaw(s.law).shape == LawShape::Normalised && s.lift == startLift) {
-            error(at + ".lift",
-                  "must differ from the lift it starts with (" + formatNumber(startLift) +
-                      ") for " + std::string(lawName(s.law)) +
-                      "; a stretch without motion "
-                      "is a dwell",
-                  DiagnosticCode::LiftUnchanged, {startLift, std::string(lawName(s.law))});
+            error(at(DesignPart::Lift), DiagnosticCode::LiftUnchanged,
+                  {startLift, std::string(lawName(s.law))});
         }
         design.m_startRad.push_back(degToRad(startDeg));
         design.m_endRad.push_back(degToRad(s.toDeg));
@@ -92,19 +75,14 @@ Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
         startLift = s.lift;
     }
     if (!spec.segments.empty()) {
-        const std::string last = segmentPlace(spec.segments.size() - 1);
+        const std::size_t last = spec.segments.size() - 1;
         if (std::isfinite(spec.segments.back().toDeg) && spec.segments.back().toDeg != 360.0) {
-            error(last + ".to_deg",
-                  "the last segment must end at 360° (got " +
-                      formatNumber(spec.segments.back().toDeg) + "°)",
-                  DiagnosticCode::DesignLastNot360, {spec.segments.back().toDeg});
+            error(DesignSegmentPlace{last, DesignPart::ToDeg}, DiagnosticCode::DesignLastNot360,
+                  {spec.segments.back().toDeg});
         }
         if (std::isfinite(startLift) && startLift != 0.0) {
-            error(last + ".lift",
-                  "the motion must return to the start: the last lift must be "
-                  "0 (got " +
-                      formatNumber(startLift) + ")",
-                  DiagnosticCode::DesignNotReturning, {startLift});
+            error(DesignSegmentPlace{last, DesignPart::Lift}, DiagnosticCode::DesignNotReturning,
+                  {startLift});
         }
     }
     if (!errors.empty()) return errors;
@@ -116,28 +94,20 @@ Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
         const std::array<double, 4> right = design.inSegment(next, design.m_startRad[next]);
         const double stroke = std::max({std::abs(left[0]), 1.0});
         const double perDeg = kPi / 180.0;
-        std::string message;
+        const bool velocity = std::abs(left[1] - right[1]) > 1e-9 * stroke;
+        const bool acceleration = std::abs(left[2] - right[2]) > 1e-9 * stroke;
         std::vector<DiagnosticArg> args;
-        if (std::abs(left[1] - right[1]) > 1e-9 * stroke) {
-            args = {left[1] * perDeg, right[1] * perDeg};
-            message += "the velocity jumps from " + formatNumber(left[1] * perDeg) + " to " +
-                       formatNumber(right[1] * perDeg) + " per degree";
-        }
-        if (std::abs(left[2] - right[2]) > 1e-9 * stroke) {
-            if (!message.empty()) message += "; ";
+        if (velocity) args = {left[1] * perDeg, right[1] * perDeg};
+        if (acceleration) {
             args.insert(args.end(), {left[2] * perDeg * perDeg, right[2] * perDeg * perDeg});
-            message += "the acceleration jumps from " + formatNumber(left[2] * perDeg * perDeg) +
-                       " to " + formatNumber(right[2] * perDeg * perDeg) + " per degree²";
         }
-        if (!message.empty()) {
-            const bool velocity = std::abs(left[1] - right[1]) > 1e-9 * stroke;
-            const DiagnosticCode code = args.size() == 4
+        if (velocity || acceleration) {
+            const DiagnosticCode code = velocity && acceleration
                                             ? DiagnosticCode::DesignVelocityAndAccelerationJump
                                         : velocity ? DiagnosticCode::DesignVelocityJump
                                                    : DiagnosticCode::DesignAccelerationJump;
             design.m_jumps.push_back(
-                Diagnostic(segmentPlace(k) + "/" + segmentPlace(next), message, Severity::Info)
-                    .coded(code, std::move(args)));
+                Diagnostic::make(DesignJointPlace{k, next}, code, std::move(args), Severity::Info));
         }
     }
     return design;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common/angles.h"
+#include "common/diagnostic_catalogue.h"
 #include "contour/contour.h"
 #include "design/arc_fit.h"
 #include "design/exact_profile.h"
@@ -148,8 +149,8 @@ Diagnostics placeArcTableProblems(const Diagnostics& problems, const std::vector
                                   const MotionDesign& motion) {
     const Diagnostic& first = problems.front();
     std::optional<std::size_t> arc;
-    if (!first.places.empty()) {
-        arc = first.places.front().segment;
+    if (const std::vector<SegmentPlace> fields = first.segmentFields(); !fields.empty()) {
+        arc = fields.front().segment;
     } else {
         const std::string_view signature = diagnosticCodeSignature(first.code);
         for (std::size_t i = 0; i < signature.size() && i < first.args.size(); ++i) {
@@ -160,24 +161,20 @@ Diagnostics placeArcTableProblems(const Diagnostics& problems, const std::vector
         }
     }
     Diagnostics out;
-    const std::string what = "the synthesised arc table is not a valid contour: ";
     if (arc && *arc < arcs.size()) {
         const FittedArc& a = arcs[*arc];
         const double t1 = a.t1 >= a.t0 ? a.t1 : a.t1 + kTwoPi;  // the first may wrap the turn
         const double fromDeg = radToDeg(a.t0), toDeg = radToDeg(t1);
         const std::size_t segment = motion.segmentAt(0.5 * (a.t0 + t1));
-        Diagnostic d("design.segments[" + std::to_string(segment) + "]",
-                     what + segmentLocation(*arc) + ", made for the cam angles " +
-                         formatNumber(fromDeg) + "° to " + formatNumber(toDeg) + "° (" +
-                         first.text() + ")");
-        out.push_back(std::move(d).coded(
-            DiagnosticCode::SynthesisedArcInvalid,
-            {static_cast<double>(*arc), fromDeg, toDeg, static_cast<double>(segment)}));
+        out.push_back(Diagnostic::make(DesignSegmentPlace{segment},
+                                       DiagnosticCode::SynthesisedArcInvalid,
+                                       {static_cast<double>(*arc), fromDeg, toDeg})
+                          .because({first}));
     } else {
-        out.push_back(Diagnostic("design", what + first.text())
-                          .coded(DiagnosticCode::SynthesisedContourInvalid, {}));
+        out.push_back(
+            Diagnostic::make(FieldPlace{Field::Design}, DiagnosticCode::SynthesisedContourInvalid)
+                .because({first}));
     }
-    out.back().reasons.push_back(first);
     out.insert(out.end(), problems.begin() + 1, problems.end());
     return out;
 }
@@ -202,8 +199,7 @@ Result<Synthesis> synthesize(const Project& project, std::optional<double> toler
                              bool strictPressureAngle, const std::atomic<bool>* cancel) {
     if (!project.design) {
         return Diagnostics{
-            Diagnostic{"design", "the project has no design to synthesise a contour from"}.coded(
-                DiagnosticCode::NoDesign, {})};
+            Diagnostic::make(FieldPlace{Field::Design}, DiagnosticCode::NoDesign, {})};
     }
     DesignSpec spec = *project.design;
     if (tolerance) spec.tolerance = *tolerance;
@@ -229,14 +225,9 @@ Result<Synthesis> synthesize(const Project& project, std::optional<double> toler
     const double extent = profileExtent(profile);
     const double limit = certifiableTolerance(extent);
     if (!(spec.tolerance >= limit)) {
-        return Diagnostics{
-            Diagnostic{"design.tolerance",
-                       formatNumber(spec.tolerance) +
-                           " mm is below what double precision can certify for this cam: at "
-                           "least " +
-                           formatNumber(limit) + " mm, for a profile reaching " +
-                           formatNumber(extent) + " mm from the centre"}
-                .coded(DiagnosticCode::ToleranceBelowPrecision, {spec.tolerance, limit, extent})};
+        return Diagnostics{Diagnostic::make(FieldPlace{Field::DesignTolerance},
+                                            DiagnosticCode::ToleranceBelowPrecision,
+                                            {spec.tolerance, limit, extent})};
     }
 
     // The fit keeps its biarcs within its target at the points it checks; between them the
@@ -269,14 +260,9 @@ Result<Synthesis> synthesize(const Project& project, std::optional<double> toler
         if (measured.deviation <= spec.tolerance) break;
         if (round == kRefits) {
             const double atDeg = radToDeg(measured.atPhi);
-            return Diagnostics{Diagnostic{
-                "design.tolerance", "cannot be met: the closest arc table found lies " +
-                                        formatNumber(measured.deviation) +
-                                        " mm from the exact profile (at " + formatNumber(atDeg) +
-                                        "° of cam angle), more than the " +
-                                        formatNumber(spec.tolerance) + " mm asked for"}
-                                   .coded(DiagnosticCode::ToleranceNotReached,
-                                          {spec.tolerance, measured.deviation, atDeg})};
+            return Diagnostics{Diagnostic::make(FieldPlace{Field::DesignTolerance},
+                                                DiagnosticCode::ToleranceNotReached,
+                                                {spec.tolerance, measured.deviation, atDeg})};
         }
         // Aim as far below the tolerance as the last fit strayed above it, and a little more.
         target *= std::max(0.9 * spec.tolerance / measured.deviation, 0.25);

@@ -358,12 +358,9 @@ Result<std::string> camTableText(const Contour& contour, const CamTableOptions& 
     const auto n = static_cast<long long>(options.points);
     if (n < kMinCamTablePoints || n > kMaxCamTablePoints) {
         return Diagnostics{
-            Diagnostic("--points", "a cam table has from " + std::to_string(kMinCamTablePoints) +
-                                       " to " + std::to_string(kMaxCamTablePoints) +
-                                       " points, not " + std::to_string(n))
-                .coded(DiagnosticCode::CamTablePoints,
-                       {static_cast<double>(kMinCamTablePoints),
-                        static_cast<double>(kMaxCamTablePoints), static_cast<double>(n)})};
+            Diagnostic::make(FieldPlace{Field::PointsOption}, DiagnosticCode::CamTablePoints,
+                             {static_cast<double>(kMinCamTablePoints),
+                              static_cast<double>(kMaxCamTablePoints), static_cast<double>(n)})};
     }
     auto model = FollowerModel::build(contour, options.follower);
     if (!model.ok()) return model.errors();

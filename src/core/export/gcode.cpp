@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/angles.h"
+#include "common/translate_marker.h"
 #include "export/export_checks.h"
 #include "export/number_text.h"
 #include "geometry/planar.h"
@@ -176,13 +177,7 @@ Result<std::vector<Move>> compensatedLoop(const Contour& contour, const ContourO
         };
         if (piecesOf(centre.origin) != piecesOf(profile.value().origin)) {
             errors.push_back(
-                Diagnostic::at({k},
-                               "with cutter compensation the tool would have to reach past the "
-                               "next programmed arc at a concave corner of this segment, which a "
-                               "controller offsetting one move at a time turns into a cut "
-                               "through the part; export the tool-centre path (without "
-                               "--compensation) or use a coarser --tolerance")
-                    .coded(DiagnosticCode::GcodeCompensationCutsPart, {}));
+                Diagnostic::make(SegmentPlace{k}, DiagnosticCode::GcodeCompensationCutsPart));
         }
     }
     if (!errors.empty()) return errors;
@@ -323,13 +318,11 @@ std::string commentSafe(const std::string& name) {
     return out;
 }
 
-void checkLength(double value, const char* location, const char* what, Diagnostics& errors) {
+/// `what` is a term of the diagnostic catalogue ("the depth").
+void checkLength(double value, Field field, const char* what, Diagnostics& errors) {
     if (!(value > 0.0 && value <= kMaxLengthMm)) {
-        errors.push_back(Diagnostic(location, std::string(what) + " must be above 0 and at most " +
-                                                  formatNumber(kMaxLengthMm) + " mm, not " +
-                                                  formatNumber(value))
-                             .coded(DiagnosticCode::GcodeLengthOutOfRange,
-                                    {std::string(what), kMaxLengthMm, value}));
+        errors.push_back(Diagnostic::make(FieldPlace{field}, DiagnosticCode::GcodeLengthOutOfRange,
+                                          {std::string(what), kMaxLengthMm, value}));
     }
 }
 
@@ -339,36 +332,30 @@ Result<std::string> gcodeProgram(const Contour& contour, const GcodeOptions& opt
     Diagnostics errors;
     checkToolRadius(options.toolRadiusMm, errors);
     checkTolerance(options.toleranceMm, errors);
-    checkLength(options.depthMm, "--depth", "the depth", errors);
-    checkLength(options.safeZMm, "safeZMm", "the safe height", errors);
+    checkLength(options.depthMm, Field::DepthOption, CAM_TRANSLATE_NOOP("Diagnostic", "the depth"),
+                errors);
+    checkLength(options.safeZMm, Field::GcodeSafeZ,
+                CAM_TRANSLATE_NOOP("Diagnostic", "the safe height"), errors);
     if (!(options.feedMmMin > 0.0 && options.feedMmMin <= kMaxSpeedMmS * 60.0)) {
-        errors.push_back(Diagnostic("feedMmMin", "the feed must be above 0 and at most " +
-                                                     formatNumber(kMaxSpeedMmS * 60.0) +
-                                                     " mm/min, not " +
-                                                     formatNumber(options.feedMmMin))
-                             .coded(DiagnosticCode::GcodeFeedOutOfRange,
-                                    {kMaxSpeedMmS * 60.0, options.feedMmMin}));
+        errors.push_back(Diagnostic::make(FieldPlace{Field::GcodeFeed},
+                                          DiagnosticCode::GcodeFeedOutOfRange,
+                                          {kMaxSpeedMmS * 60.0, options.feedMmMin}));
     }
     if (!(options.toolNumber >= 1 && options.toolNumber <= 99999)) {
-        errors.push_back(
-            Diagnostic("toolNumber", "the tool number must be from 1 to 99999, not " +
-                                         std::to_string(options.toolNumber))
-                .coded(DiagnosticCode::GcodeToolNumber, {static_cast<double>(options.toolNumber)}));
+        errors.push_back(Diagnostic::make(FieldPlace{Field::GcodeToolNumber},
+                                          DiagnosticCode::GcodeToolNumber,
+                                          {static_cast<double>(options.toolNumber)}));
     }
     long long passes = 1;
     if (options.stepDownMm) {
-        checkLength(*options.stepDownMm, "--step-down", "the step-down", errors);
+        checkLength(*options.stepDownMm, Field::StepDownOption,
+                    CAM_TRANSLATE_NOOP("Diagnostic", "the step-down"), errors);
         const double count = std::ceil(options.depthMm / *options.stepDownMm - 1e-9);
         if (errors.empty() && count > static_cast<double>(kMaxGcodePasses)) {
-            errors.push_back(
-                Diagnostic("--step-down", "a step-down of " + formatNumber(*options.stepDownMm) +
-                                              " mm makes " + formatNumber(count) +
-                                              " passes for a depth of " +
-                                              formatNumber(options.depthMm) + " mm; at most " +
-                                              std::to_string(kMaxGcodePasses) + " are made")
-                    .coded(DiagnosticCode::GcodeTooManyPasses,
-                           {*options.stepDownMm, count, options.depthMm,
-                            static_cast<double>(kMaxGcodePasses)}));
+            errors.push_back(Diagnostic::make(FieldPlace{Field::StepDownOption},
+                                              DiagnosticCode::GcodeTooManyPasses,
+                                              {*options.stepDownMm, count, options.depthMm,
+                                               static_cast<double>(kMaxGcodePasses)}));
         }
         if (errors.empty()) passes = std::max(1LL, static_cast<long long>(count));
     }

@@ -18,15 +18,8 @@ std::optional<Diagnostic> firstNonFiniteSample(const SampledTurn& turn) {
     for (const auto& [name, values] : columns) {
         for (std::size_t k = 0; k < values->size(); ++k) {
             if (std::isfinite((*values)[k])) continue;
-            std::string message = "is not a finite number (";
-            appendExact(message, (*values)[k]);
-            message += "): the result is beyond what a double can hold";
-            std::string location = "sample ";
-            location += std::to_string(k);
-            location += ", ";
-            location += name;
-            return Diagnostic(std::move(location), std::move(message))
-                .coded(DiagnosticCode::SampleNotFinite, {(*values)[k]});
+            return Diagnostic::make(SamplePlace{k, name}, DiagnosticCode::SampleNotFinite,
+                                    {(*values)[k]});
         }
     }
     return std::nullopt;
@@ -66,8 +59,7 @@ void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower,
 Result<std::string> sampleCsv(const Contour& contour, double omega, std::size_t points,
                               const FollowerModel* follower) {
     if (points < 1) {
-        return Diagnostics{
-            Diagnostic("points", "must be at least 1 (got 0)").coded(DiagnosticCode::NoPoints, {})};
+        return Diagnostics{Diagnostic::make(FieldPlace{Field::Points}, DiagnosticCode::NoPoints)};
     }
     SampledTurn turn;
     sampleTurn(contour, omega, points, turn);

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <optional>
 #include <string>
 
 #include "analysis/analysis.h"
 #include "common/angles.h"
+#include "common/translate_marker.h"
 #include "geometry/arc.h"
 #include "geometry/line.h"
 #include "geometry/planar.h"
@@ -39,7 +39,6 @@ struct Corner {
     Vec joint{0.0, 0.0};
     double turn = 0.0;  ///< signed turn of the tangent at the joint, rad, in (-π, π)
     double side = 1.0;  ///< +1: fillet centre left of travel (left turn), -1: right
-    std::string location;
 };
 
 /// Why a radius does not fit.
@@ -163,61 +162,42 @@ Candidate solve(const Corner& k, double rho) {
     return Candidate{.failure = Failure::NoCircle};
 }
 
-/// Why rho fails, as a name of fillet_reason; `atBound` for the radius just beyond the largest
-/// that fits.
-std::string reasonName(Failure f, bool atBound) {
+/// Why rho fails, as a reason for a message to list; `atBound` for the radius just beyond the
+/// largest that fits.
+Diagnostic filletFailure(const Corner& k, Failure f, bool atBound) {
+    auto make = [](DiagnosticCode code, std::vector<DiagnosticArg> args = {}) {
+        return Diagnostic::make({}, code, std::move(args));
+    };
     switch (f) {
         case Failure::LeavesLeft:
-            return fillet_reason::kLeavesLeft;
+            return make(DiagnosticCode::FilletLeavesSegment, {static_cast<double>(k.left)});
         case Failure::LeavesRight:
-            return fillet_reason::kLeavesRight;
+            return make(DiagnosticCode::FilletLeavesSegment, {static_cast<double>(k.right)});
         case Failure::NoCircle:
-            return atBound ? fillet_reason::kNoLargerCircle : fillet_reason::kNoCircle;
+            return make(atBound ? DiagnosticCode::FilletNoLargerCircle
+                                : DiagnosticCode::FilletNoCircle);
         case Failure::RayTwice:
-            return fillet_reason::kRayNotOnce;
+            return make(DiagnosticCode::FilletRayNotOnce);
         case Failure::TooLarge:
-            return fillet_reason::kRadiusLimit;
         case Failure::None:
             break;
     }
-    return "";
+    return make(DiagnosticCode::FilletRadiusLimit);
 }
 
-/// Why rho fails; `atBound` words it for the radius just beyond the largest that fits.
-std::string reason(const Corner& k, Failure f, bool atBound) {
-    switch (f) {
-        case Failure::LeavesLeft:
-            return "the tangent point would leave " + segmentLocation(k.left);
-        case Failure::LeavesRight:
-            return "the tangent point would leave " + segmentLocation(k.right);
-        case Failure::NoCircle:
-            return atBound ? "no larger circle touches both neighbours inside the corner"
-                           : "no circle of that radius touches both neighbours inside the corner";
-        case Failure::RayTwice:
-            return "the follower ray would not meet the fillet arc exactly once: it would pass "
-                   "the rotation centre or turn back as seen from it";
-        case Failure::TooLarge:
-            return "radii are limited to 1e6 mm";
-        case Failure::None:
-            break;
-    }
-    return "";
-}
-
-/// Ten significant digits: the bound is computed to ~1e-13, the message need not show noise.
-std::string tenDigits(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.10g", v);
-    return buffer;
+/// A problem of the corner k, located at its joint.
+Diagnostic atCorner(const Corner& k, DiagnosticCode code, std::vector<DiagnosticArg> args = {}) {
+    return Diagnostic::make(JointPlace{k.left, k.right}, code, std::move(args));
 }
 
 Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t joint) {
     const std::size_t n = contour.size();
-    if (auto problem = jointIndexProblem(n, joint, "fillet")) return Diagnostics{*problem};
+    if (auto problem = jointIndexProblem(n, joint, CAM_TRANSLATE_NOOP("Diagnostic", "a fillet"))) {
+        return Diagnostics{*problem};
+    }
     Corner k;
     k.left = (joint + n - 1) % n;
     k.right = joint;
-    k.location = jointLocation(k.left, k.right);
     // Everything below relies on contiguous windows and closed joints.
     Project project;
     project.contour = contour;
@@ -226,11 +206,7 @@ Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t j
         if (d.severity == Severity::Error) problems.push_back(std::move(d));
     }
     if (!problems.empty()) {
-        problems.insert(
-            problems.begin(),
-            Diagnostic::atJoint(k.left, k.right,
-                                "the contour is not valid, so the joint cannot be rounded")
-                .coded(DiagnosticCode::FilletContourInvalid, {}));
+        problems.insert(problems.begin(), atCorner(k, DiagnosticCode::FilletContourInvalid));
         return problems;
     }
     k.a = contour[k.left];
@@ -238,10 +214,7 @@ Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t j
     for (std::size_t i : {k.left, k.right}) {
         if (isSpline(contour[i].type())) {
             return Diagnostics{
-                Diagnostic::atJoint(
-                    k.left, k.right,
-                    "fillets join arcs and lines; " + segmentLocation(i) + " is neither")
-                    .coded(DiagnosticCode::FilletNeedsArcsAndLines, {static_cast<double>(i)})};
+                atCorner(k, DiagnosticCode::FilletNeedsArcsAndLines, {static_cast<double>(i)})};
         }
     }
     k.phiJoint = k.a.phiEndDeg;
@@ -256,13 +229,7 @@ Result<Corner> makeCorner(const std::vector<SegmentSpec>& contour, std::size_t j
     const double turnDeg = radToDeg(std::abs(k.turn));
     if (turnDeg <= kTangentToleranceDeg) {
         return Diagnostics{
-            Diagnostic::atJoint(k.left, k.right,
-                                "the segments already meet tangentially (their tangents differ "
-                                "by " +
-                                    formatNumber(turnDeg) + "°, at most " +
-                                    formatNumber(kTangentToleranceDeg) +
-                                    "° counts as tangent); there is no corner to round")
-                .coded(DiagnosticCode::FilletAlreadyTangent, {turnDeg, kTangentToleranceDeg})};
+            atCorner(k, DiagnosticCode::FilletAlreadyTangent, {turnDeg, kTangentToleranceDeg})};
     }
     return k;
 }
@@ -308,15 +275,9 @@ Bound largestRadius(const Corner& k) {
 /// itself, which leaves the range [min, max) empty).
 bool nothingFits(const Bound& bound) { return bound.maxRadius <= kMinLengthMm; }
 
-std::string nothingFitsMessage(const Corner& k, const Bound& bound) {
-    return "no fillet radius of at least " + formatNumber(kMinLengthMm) +
-           " mm fits at this joint (" + reason(k, bound.why, bound.maxRadius > 0.0) + ")";
-}
-
-/// A problem of the corner k, located at its joint.
-Diagnostic atCorner(const Corner& k, std::string message, DiagnosticCode code,
-                    std::vector<DiagnosticArg> args) {
-    return Diagnostic::atJoint(k.left, k.right, std::move(message)).coded(code, std::move(args));
+/// Why no radius fits, for the message that says so.
+Diagnostic nothingFitsReason(const Corner& k, const Bound& bound) {
+    return filletFailure(k, bound.why, bound.maxRadius > 0.0);
 }
 
 FilletResult build(const Corner& k, const std::vector<SegmentSpec>& contour, std::size_t joint,
@@ -362,9 +323,8 @@ Result<FilletRange> filletRange(const std::vector<SegmentSpec>& contour, std::si
     const Corner& k = corner.value();
     const Bound bound = largestRadius(k);
     if (nothingFits(bound)) {
-        return Diagnostics{atCorner(k, nothingFitsMessage(k, bound),
-                                    DiagnosticCode::FilletNothingFits,
-                                    {kMinLengthMm, reasonName(bound.why, bound.maxRadius > 0.0)})};
+        return Diagnostics{atCorner(k, DiagnosticCode::FilletNothingFits, {kMinLengthMm})
+                               .because({nothingFitsReason(k, bound)})};
     }
     return FilletRange{kMinLengthMm, bound.maxRadius};
 }
@@ -375,28 +335,21 @@ Result<FilletResult> filletJoint(const std::vector<SegmentSpec>& contour, std::s
     if (!corner.ok()) {
         Diagnostics errors = corner.errors();
         // Name the radius too, so the message answers "why not this one?".
-        if (errors.size() == 1 && errors.front().location != "contour") {
+        if (errors.size() == 1) {
             Diagnostic& d = errors.front();
-            d.message = "radius " + formatNumber(rho) + " mm does not fit: " + d.message;
             std::vector<DiagnosticArg> args{rho};
             args.insert(args.end(), d.args.begin(), d.args.end());
             if (d.code == DiagnosticCode::FilletNeedsArcsAndLines) {
-                d = std::move(d).coded(DiagnosticCode::FilletRadiusNeedsArcsAndLines, args);
+                d = Diagnostic::make(d.place, DiagnosticCode::FilletRadiusNeedsArcsAndLines, args);
             } else if (d.code == DiagnosticCode::FilletAlreadyTangent) {
-                d = std::move(d).coded(DiagnosticCode::FilletRadiusAlreadyTangent, args);
-            } else {
-                d = std::move(d).coded(DiagnosticCode::Unspecified, {});
+                d = Diagnostic::make(d.place, DiagnosticCode::FilletRadiusAlreadyTangent, args);
             }
         }
         return errors;
     }
     const Corner& k = corner.value();
     if (std::isfinite(rho) && rho > 0.0 && rho < kMinLengthMm) {
-        return Diagnostics{atCorner(
-            k,
-            "radius " + formatNumber(rho) + " mm is too small: a fillet radius is at least " +
-                formatNumber(kMinLengthMm) + " mm, the smallest radius a project holds",
-            DiagnosticCode::FilletRadiusTooSmall, {rho, kMinLengthMm})};
+        return Diagnostics{atCorner(k, DiagnosticCode::FilletRadiusTooSmall, {rho, kMinLengthMm})};
     }
     const Candidate c = std::isfinite(rho) && rho > 0.0 ? solve(k, rho) : Candidate{};
     if (c.failure == Failure::None) {
@@ -407,42 +360,27 @@ Result<FilletResult> filletJoint(const std::vector<SegmentSpec>& contour, std::s
         // A safety net: every check above should prevent this. It nests the validator's
         // problem, which keeps its own code as the reason.
         if (hasErrors(problems)) {
-            Diagnostic d = Diagnostic::atJoint(k.left, k.right,
-                                               "radius " + formatNumber(rho) +
-                                                   " mm gives a contour that does not validate (" +
-                                                   problems.front().text() + ")")
-                               .coded(DiagnosticCode::FilletRadiusInvalidContour, {rho});
-            d.reasons.push_back(problems.front());
-            return Diagnostics{std::move(d)};
+            return Diagnostics{atCorner(k, DiagnosticCode::FilletRadiusInvalidContour, {rho})
+                                   .because({problems.front()})};
         }
         return result;
     }
-    const std::string asked = "radius " + formatNumber(rho) + " mm";
     const Bound bound = largestRadius(k);
     if (nothingFits(bound)) {
-        return Diagnostics{
-            atCorner(k, asked + " does not fit: " + nothingFitsMessage(k, bound),
-                     DiagnosticCode::FilletRadiusNothingFits,
-                     {rho, kMinLengthMm, reasonName(bound.why, bound.maxRadius > 0.0)})};
+        return Diagnostics{atCorner(k, DiagnosticCode::FilletRadiusNothingFits, {rho, kMinLengthMm})
+                               .because({nothingFitsReason(k, bound)})};
     }
-    const std::string below = "radii below " + tenDigits(bound.maxRadius) + " mm";
     if (!(rho > 0.0) || !std::isfinite(rho)) {
-        return Diagnostics{atCorner(k, asked + " must be a number > 0: " + below + " fit",
-                                    DiagnosticCode::FilletRadiusNotPositive,
-                                    {rho, bound.maxRadius})};
+        return Diagnostics{
+            atCorner(k, DiagnosticCode::FilletRadiusNotPositive, {rho, bound.maxRadius})};
     }
     if (rho >= bound.maxRadius) {
-        return Diagnostics{atCorner(
-            k, asked + " is too large: only " + below + " fit (" + reason(k, bound.why, true) + ")",
-            DiagnosticCode::FilletRadiusTooLarge,
-            {rho, bound.maxRadius, reasonName(bound.why, true)})};
+        return Diagnostics{atCorner(k, DiagnosticCode::FilletRadiusTooLarge, {rho, bound.maxRadius})
+                               .because({filletFailure(k, bound.why, true)})};
     }
     // Feasible radii need not form one interval; this one lies in a gap below the bound.
-    return Diagnostics{atCorner(k,
-                                asked + " does not fit (" + reason(k, c.failure, false) +
-                                    "), although most " + below + " do",
-                                DiagnosticCode::FilletRadiusInGap,
-                                {rho, reasonName(c.failure, false), bound.maxRadius})};
+    return Diagnostics{atCorner(k, DiagnosticCode::FilletRadiusInGap, {rho, bound.maxRadius})
+                           .because({filletFailure(k, c.failure, false)})};
 }
 
 }  // namespace cam

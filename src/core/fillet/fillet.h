@@ -17,18 +17,6 @@ namespace cam {
 /// (math.md §5, seed 002). NaN unless accel > 0 and admissibleError > 0.
 [[nodiscard]] double minimumSwitchRadius(double speed, double accel, double admissibleError);
 
-/// @brief Why a fillet radius fails: the closed vocabulary of the reason argument (`s`) of the
-/// Fillet… diagnostic codes (see CAM_DIAGNOSTIC_CODES). "leaves-left" names the segment before
-/// the joint, "leaves-right" the one after it; the diagnostic's places say which they are.
-namespace fillet_reason {
-inline constexpr const char* kLeavesLeft = "leaves-left";
-inline constexpr const char* kLeavesRight = "leaves-right";
-inline constexpr const char* kNoCircle = "no-circle";               ///< of the radius asked for
-inline constexpr const char* kNoLargerCircle = "no-larger-circle";  ///< beyond the largest
-inline constexpr const char* kRayNotOnce = "ray-not-once";
-inline constexpr const char* kRadiusLimit = "radius-limit";
-}  // namespace fillet_reason
-
 /// @brief The radii a fillet at one joint may have: minRadius <= rho < maxRadius.
 ///
 /// minRadius is always kMinLengthMm (1e-6 mm), the smallest radius a project holds: geometry

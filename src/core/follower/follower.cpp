@@ -52,12 +52,9 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
                 piece.center = c;
                 piece.convex = cross(a - c, travel) > 0.0;
                 if (!piece.convex && rho >= R) {
-                    errors.push_back(
-                        Diagnostic::at({k, SegmentPart::Radius},
-                                       "the roller radius " + formatNumber(rho) +
-                                           " mm is not smaller than this concave arc's radius " +
-                                           formatNumber(R) + " mm: the roller cannot follow it")
-                            .coded(DiagnosticCode::RollerNotSmallerThanArc, {rho, R}));
+                    errors.push_back(Diagnostic::make(SegmentPlace{k, SegmentPart::Radius},
+                                                      DiagnosticCode::RollerNotSmallerThanArc,
+                                                      {rho, R}));
                     continue;
                 }
                 piece.radius = piece.convex ? R + rho : R - rho;

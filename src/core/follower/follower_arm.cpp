@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "common/angles.h"
+#include "common/translate_marker.h"
 #include "follower/follower.h"
 #include "follower/follower_candidate.h"
 #include "follower/jet.h"
@@ -288,13 +289,8 @@ Diagnostics FollowerModel::checkPivot(const Contour& contour) const {
         }
     }
     if (pivotRadius > rFar) return {};
-    return {
-        Diagnostic("follower.pivot", "is inside the cam: the pivot turns on a circle of radius " +
-                                         formatNumber(pivotRadius) +
-                                         " mm round the cam centre, but the profile reaches " +
-                                         formatNumber(rFar) + " mm at " +
-                                         formatNumber(radToDeg(phiFar)) + "°; move it farther out")
-            .coded(DiagnosticCode::PivotInsideCam, {pivotRadius, rFar, radToDeg(phiFar)})};
+    return {Diagnostic::make(FieldPlace{Field::FollowerPivot}, DiagnosticCode::PivotInsideCam,
+                             {pivotRadius, rFar, radToDeg(phiFar)})};
 }
 
 Diagnostics FollowerModel::armUnreachable(const Contour& contour, double phi) const {
@@ -311,26 +307,17 @@ Diagnostics FollowerModel::armUnreachable(const Contour& contour, double phi) co
         nearest = std::min(nearest, distance);
         farthest = std::max(farthest, distance);
     }
-    const std::string where = "at " + formatNumber(radToDeg(phi)) + "°";
-    const std::string what = rho > 0.0 ? "the roller" : "the tip";
+    const std::string what = rho > 0.0 ? CAM_TRANSLATE_NOOP("Diagnostic", "the roller")
+                                       : CAM_TRANSLATE_NOOP("Diagnostic", "the tip");
+    const FieldPlace arm{Field::FollowerArmLength};
     if (L + rho <= nearest) {
-        return {Diagnostic("follower.arm_length",
-                           "is too short: " + where + " the cam is " + formatNumber(nearest) +
-                               " mm from the pivot, and " + what + " reaches only " +
-                               formatNumber(L + rho) + " mm")
-                    .coded(DiagnosticCode::ArmTooShort,
-                           {radToDeg(phi), nearest, std::string(what), L + rho})};
+        return {Diagnostic::make(arm, DiagnosticCode::ArmTooShort,
+                                 {radToDeg(phi), nearest, what, L + rho})};
     }
     if (L - rho >= farthest) {
-        return {
-            Diagnostic("follower.arm_length", "is too long: " + where + " " + what +
-                                                  " passes beyond the whole cam (at most " +
-                                                  formatNumber(farthest) + " mm from the pivot)")
-                .coded(DiagnosticCode::ArmTooLong, {radToDeg(phi), std::string(what), farthest})};
+        return {Diagnostic::make(arm, DiagnosticCode::ArmTooLong, {radToDeg(phi), what, farthest})};
     }
-    return {Diagnostic("follower.arm_length", "does not let " + what + " touch the cam " + where +
-                                                  " (no contact on the chosen side of the arm)")
-                .coded(DiagnosticCode::ArmNoContact, {std::string(what), radToDeg(phi)})};
+    return {Diagnostic::make(arm, DiagnosticCode::ArmNoContact, {what, radToDeg(phi)})};
 }
 
 }  // namespace cam

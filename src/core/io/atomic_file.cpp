@@ -15,6 +15,8 @@
 #include <random>
 #include <utility>
 
+#include "common/translate_marker.h"
+
 namespace cam {
 namespace {
 
@@ -120,15 +122,6 @@ std::string nameOf(const std::string& path) {
     return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-const char* kindOf(mode_t mode) {
-    if (S_ISDIR(mode)) return "a folder";
-    if (S_ISFIFO(mode)) return "a FIFO";
-    if (S_ISCHR(mode)) return "a character device";
-    if (S_ISBLK(mode)) return "a block device";
-    if (S_ISSOCK(mode)) return "a socket";
-    return "a special file";
-}
-
 std::string randomSuffix() {
     static constexpr char kChars[] =
         "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
@@ -141,6 +134,15 @@ std::string randomSuffix() {
 
 }  // namespace
 
+const char* fileKindName(mode_t mode) {
+    if (S_ISDIR(mode)) return CAM_TRANSLATE_NOOP("Diagnostic", "a folder");
+    if (S_ISFIFO(mode)) return CAM_TRANSLATE_NOOP("Diagnostic", "a FIFO");
+    if (S_ISCHR(mode)) return CAM_TRANSLATE_NOOP("Diagnostic", "a character device");
+    if (S_ISBLK(mode)) return CAM_TRANSLATE_NOOP("Diagnostic", "a block device");
+    if (S_ISSOCK(mode)) return CAM_TRANSLATE_NOOP("Diagnostic", "a socket");
+    return CAM_TRANSLATE_NOOP("Diagnostic", "a special file");
+}
+
 AtomicFileWriter::AtomicFileWriter(std::string path) : m_path(std::move(path)) {
     resolveTarget();
     if (ok()) createTemporary();
@@ -148,12 +150,10 @@ AtomicFileWriter::AtomicFileWriter(std::string path) : m_path(std::move(path)) {
 
 AtomicFileWriter::~AtomicFileWriter() { discardTemporary(); }
 
-void AtomicFileWriter::fail(const std::string& what, int error, DiagnosticCode code,
-                            std::vector<DiagnosticArg> args) {
+void AtomicFileWriter::fail(DiagnosticCode code, int error, std::vector<DiagnosticArg> args) {
     if (m_errors.empty()) {
-        const std::string reason = std::strerror(error);  // the OS's own words
-        args.emplace_back(reason);
-        m_errors.push_back(Diagnostic(m_path, what + ": " + reason).coded(code, std::move(args)));
+        args.emplace_back(std::strerror(error));  // the OS's own words
+        m_errors.push_back(Diagnostic::make(FilePlace{m_path}, code, std::move(args)));
     }
     discardTemporary();
 }
@@ -194,8 +194,7 @@ void AtomicFileWriter::removeStaleTemporaries(const std::string& folder,
 
 void AtomicFileWriter::resolveTarget() {
     if (m_path.empty()) {
-        m_errors.push_back(
-            Diagnostic(m_path, "no file name given").coded(DiagnosticCode::FileNoName, {}));
+        m_errors.push_back(Diagnostic::make(FilePlace{m_path}, DiagnosticCode::FileNoName));
         return;
     }
     std::string current = m_path;
@@ -203,8 +202,7 @@ void AtomicFileWriter::resolveTarget() {
         struct stat st {};
         if (::lstat(current.c_str(), &st) != 0) {
             if (errno != ENOENT) {
-                fail("cannot examine " + current, errno, DiagnosticCode::FileCannotExamine,
-                     {current});
+                fail(DiagnosticCode::FileCannotExamine, errno, {current});
                 return;
             }
             // Nothing there (also the end of a dangling symlink): a new file is created.
@@ -215,29 +213,26 @@ void AtomicFileWriter::resolveTarget() {
             struct statfs fs {};
             if (::statfs(folderOf(current).c_str(), &fs) == 0 &&
                 static_cast<long>(fs.f_type) == kProcSuperMagic) {
-                const std::string what =
-                    "is a link to an open file descriptor, not a file: not replaced";
                 m_errors.push_back(
                     current == m_path
-                        ? Diagnostic(m_path, what).coded(DiagnosticCode::FileIsDescriptorLink, {})
-                        : Diagnostic(m_path, current + " " + what)
-                              .coded(DiagnosticCode::FileLinkTargetIsDescriptorLink, {current}));
+                        ? Diagnostic::make(FilePlace{m_path}, DiagnosticCode::FileIsDescriptorLink)
+                        : Diagnostic::make(FilePlace{m_path},
+                                           DiagnosticCode::FileLinkTargetIsDescriptorLink,
+                                           {current}));
                 return;
             }
             if (hops == kMaxSymlinkHops) {
-                fail("cannot follow its symbolic links", ELOOP, DiagnosticCode::FileLinkLoop, {});
+                fail(DiagnosticCode::FileLinkLoop, ELOOP, {});
                 return;
             }
             std::string link(static_cast<std::size_t>(st.st_size > 0 ? st.st_size : 255) + 1, '\0');
             const ssize_t n = ::readlink(current.c_str(), link.data(), link.size());
             if (n < 0) {
-                fail("cannot read the symbolic link " + current, errno,
-                     DiagnosticCode::FileCannotReadLink, {current});
+                fail(DiagnosticCode::FileCannotReadLink, errno, {current});
                 return;
             }
             if (n == 0 || static_cast<std::size_t>(n) >= link.size()) {
-                fail("cannot read the symbolic link " + current, ENAMETOOLONG,
-                     DiagnosticCode::FileCannotReadLink, {current});
+                fail(DiagnosticCode::FileCannotReadLink, ENAMETOOLONG, {current});
                 return;
             }
             link.resize(static_cast<std::size_t>(n));
@@ -246,19 +241,18 @@ void AtomicFileWriter::resolveTarget() {
             continue;
         }
         if (!S_ISREG(st.st_mode)) {
-            const std::string kind = kindOf(st.st_mode);
-            const std::string what = "is " + kind + ", not a regular file: not replaced";
+            const std::string kind = fileKindName(st.st_mode);
             m_errors.push_back(
                 current == m_path
-                    ? Diagnostic(m_path, what).coded(DiagnosticCode::FileNotRegular, {kind})
-                    : Diagnostic(m_path, current + " " + what)
-                          .coded(DiagnosticCode::FileLinkTargetNotRegular, {current, kind}));
+                    ? Diagnostic::make(FilePlace{m_path}, DiagnosticCode::FileNotRegular, {kind})
+                    : Diagnostic::make(FilePlace{m_path}, DiagnosticCode::FileLinkTargetNotRegular,
+                                       {current, kind}));
             return;
         }
         // A read-only file says "do not change me"; the folder's permissions alone would allow
         // the rename.
         if (::faccessat(AT_FDCWD, current.c_str(), W_OK, AT_EACCESS) != 0) {
-            fail("cannot write " + current, errno, DiagnosticCode::FileCannotWrite, {current});
+            fail(DiagnosticCode::FileCannotWrite, errno, {current});
             return;
         }
         m_resolvedPath = current;
@@ -274,8 +268,7 @@ void AtomicFileWriter::createTemporary() {
     const std::string folder = folderOf(m_resolvedPath);
     const std::string name = nameOf(m_resolvedPath);
     if (name.empty() || name == "." || name == "..") {
-        m_errors.push_back(Diagnostic(m_path, "names a folder, not a file")
-                               .coded(DiagnosticCode::FileNamesFolder, {}));
+        m_errors.push_back(Diagnostic::make(FilePlace{m_path}, DiagnosticCode::FileNamesFolder));
         return;
     }
     removeStaleTemporaries(folder, name);
@@ -298,8 +291,7 @@ void AtomicFileWriter::createTemporary() {
         }
         if (fd < 0) {
             if (openError == EEXIST) continue;
-            fail("cannot create a temporary file in " + folder, openError,
-                 DiagnosticCode::FileCannotCreateTemporary, {folder});
+            fail(DiagnosticCode::FileCannotCreateTemporary, openError, {folder});
             return;
         }
         // Locked for as long as it is written. Another writer's cleanup may have locked and
@@ -320,8 +312,7 @@ void AtomicFileWriter::createTemporary() {
         m_tempPath = std::move(temp);
     }
     if (m_fd < 0) {
-        fail("cannot create a temporary file in " + folder, EEXIST,
-             DiagnosticCode::FileCannotCreateTemporary, {folder});
+        fail(DiagnosticCode::FileCannotCreateTemporary, EEXIST, {folder});
         return;
     }
     if (!m_targetExists) return;
@@ -329,8 +320,7 @@ void AtomicFileWriter::createTemporary() {
         // Not permitted to give the file away: keep at least the group if we may.
         if (errno != EPERM ||
             (::fchown(m_fd, static_cast<uid_t>(-1), m_gid) != 0 && errno != EPERM)) {
-            fail("cannot give the new file the owner of " + m_resolvedPath, errno,
-                 DiagnosticCode::FileCannotCopyOwner, {m_resolvedPath});
+            fail(DiagnosticCode::FileCannotCopyOwner, errno, {m_resolvedPath});
             return;
         }
     }
@@ -342,8 +332,7 @@ void AtomicFileWriter::write(std::string_view chunk) {
         const ssize_t n = ::write(m_fd, chunk.data(), chunk.size());
         if (n < 0) {
             if (errno == EINTR) continue;
-            fail("cannot write " + m_resolvedPath, errno, DiagnosticCode::FileCannotWrite,
-                 {m_resolvedPath});
+            fail(DiagnosticCode::FileCannotWrite, errno, {m_resolvedPath});
             return;
         }
         chunk.remove_prefix(static_cast<std::size_t>(n));
@@ -356,37 +345,31 @@ Diagnostics AtomicFileWriter::commit() {
     if (!ok()) return m_errors;
     // The mode is set last: a write by an unprivileged process clears set-id bits.
     if (m_targetExists && ::fchmod(m_fd, m_mode) != 0) {
-        fail("cannot give the new file the permissions of " + m_resolvedPath, errno,
-             DiagnosticCode::FileCannotCopyPermissions, {m_resolvedPath});
+        fail(DiagnosticCode::FileCannotCopyPermissions, errno, {m_resolvedPath});
         return m_errors;
     }
     if (::fsync(m_fd) != 0) {
-        fail("cannot flush " + m_resolvedPath + " to disk", errno, DiagnosticCode::FileCannotFlush,
-             {m_resolvedPath});
+        fail(DiagnosticCode::FileCannotFlush, errno, {m_resolvedPath});
         return m_errors;
     }
     // Something may have appeared in its place while we wrote; replace only a regular file.
     struct stat st {};
     if (::lstat(m_resolvedPath.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
-        const std::string kind = kindOf(st.st_mode);
-        m_errors.push_back(Diagnostic(m_path, m_resolvedPath + " became " + kind +
-                                                  " while it was written: not replaced")
-                               .coded(DiagnosticCode::FileBecameOther, {m_resolvedPath, kind}));
+        m_errors.push_back(Diagnostic::make(FilePlace{m_path}, DiagnosticCode::FileBecameOther,
+                                            {m_resolvedPath, fileKindName(st.st_mode)}));
         discardTemporary();
         return m_errors;
     }
     // Renamed while still open and locked: until then it must not look like a leftover.
     if (::rename(m_tempPath.c_str(), m_resolvedPath.c_str()) != 0) {
-        fail("cannot replace " + m_resolvedPath, errno, DiagnosticCode::FileCannotReplace,
-             {m_resolvedPath});
+        fail(DiagnosticCode::FileCannotReplace, errno, {m_resolvedPath});
         return m_errors;
     }
     m_tempPath.clear();  // it is the target now
     releaseSignalSlot(m_signalSlot);
     // fsync succeeded, so the content is on disk; a failing close would still be news.
     if (::close(std::exchange(m_fd, -1)) != 0 && errno != EINTR) {
-        fail("replaced, but cannot close " + m_resolvedPath, errno,
-             DiagnosticCode::FileReplacedCannotClose, {m_resolvedPath});
+        fail(DiagnosticCode::FileReplacedCannotClose, errno, {m_resolvedPath});
         return m_errors;
     }
     // Make the rename itself durable. Some file systems cannot fsync a folder (EINVAL): there is
@@ -394,8 +377,7 @@ Diagnostics AtomicFileWriter::commit() {
     const std::string folder = folderOf(m_resolvedPath);
     const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (dir < 0 || (::fsync(dir) != 0 && errno != EINVAL)) {
-        fail("replaced, but cannot flush the folder " + folder + " to disk", errno,
-             DiagnosticCode::FileReplacedCannotFlushFolder, {folder});
+        fail(DiagnosticCode::FileReplacedCannotFlushFolder, errno, {folder});
     }
     if (dir >= 0) ::close(dir);
     return m_errors;

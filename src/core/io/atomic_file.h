@@ -11,6 +11,10 @@
 
 namespace cam {
 
+/// @brief "a folder", "a FIFO", …: what a file of this mode is that is not a regular file, as a
+/// term of the diagnostic catalogue.
+[[nodiscard]] const char* fileKindName(mode_t mode);
+
 /// @brief Streams a file into a temporary sibling and renames it over the target on commit().
 ///
 /// - **Where**: the target is the path with every symlink followed (chains and relative links
@@ -66,10 +70,9 @@ public:
 private:
     void resolveTarget();
     void createTemporary();
-    /// Records "what: <the OS's error text>" (the first failure only) with its code, whose
-    /// arguments are `args` and then the OS's text.
-    void fail(const std::string& what, int error, DiagnosticCode code,
-              std::vector<DiagnosticArg> args);
+    /// Records the failure `code` (the first failure only), whose arguments are `args` and then
+    /// the OS's text for `error`.
+    void fail(DiagnosticCode code, int error, std::vector<DiagnosticArg> args);
     void discardTemporary();
     void removeStaleTemporaries(const std::string& folder, const std::string& name) const;
 

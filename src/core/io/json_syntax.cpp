@@ -66,7 +66,7 @@ public:
         f.key = key;
         if (!f.keys.insert(key).second) {
             m_problems.push_back(
-                Diagnostic{path(), "duplicated key"}.coded(DiagnosticCode::JsonDuplicatedKey, {}));
+                Diagnostic::make(FileKeyPlace{path()}, DiagnosticCode::JsonDuplicatedKey));
             return false;
         }
         // The key is new, so append without ordered_map's linear search for it.
@@ -82,12 +82,9 @@ public:
         if (ex.id == 406) {  // a number beyond the range of a double: point at its first digit
             const std::size_t start =
                 position >= lastToken.size() ? position - lastToken.size() : 0;
-            const auto [line, column] = linePosition(m_text, start);
-            m_problems.push_back(
-                Diagnostic{lineColumnOf(m_text, start),
-                           "number " + quotedToken(lastToken) + " is too large for a double"}
-                    .coded(DiagnosticCode::JsonNumberTooLarge,
-                           {line, column, quotedToken(lastToken)}));
+            m_problems.push_back(Diagnostic::make(filePosition(m_text, start),
+                                                  DiagnosticCode::JsonNumberTooLarge,
+                                                  {quotedToken(lastToken)}));
             return false;
         }
         // nlohmann's message reads "[json.exception.parse_error.101] parse error at line L,
@@ -101,9 +98,8 @@ public:
         if (last != std::string::npos) reason.resize(last);
         if (!lastToken.empty()) reason += "; last read: " + quotedToken(lastToken);
         const std::size_t at = position > 0 ? position - 1 : 0;
-        const auto [atLine, atColumn] = linePosition(m_text, at);
-        m_problems.push_back(Diagnostic{lineColumnOf(m_text, at), reason}.coded(
-            DiagnosticCode::JsonSyntax, {atLine, atColumn, reason}));
+        m_problems.push_back(
+            Diagnostic::make(filePosition(m_text, at), DiagnosticCode::JsonSyntax, {reason}));
         return false;
     }
 
@@ -136,10 +132,8 @@ private:
 
     bool open(Json container, bool isArray) {
         if (m_frames.size() >= static_cast<std::size_t>(kMaxJsonDepth)) {
-            m_problems.push_back(
-                Diagnostic{path(),
-                           "nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels"}
-                    .coded(DiagnosticCode::JsonTooDeep, {static_cast<double>(kMaxJsonDepth)}));
+            m_problems.push_back(Diagnostic::make(FileKeyPlace{path()}, DiagnosticCode::JsonTooDeep,
+                                                  {static_cast<double>(kMaxJsonDepth)}));
             return false;
         }
         Json* at = slot();
@@ -192,7 +186,7 @@ private:
 
 }  // namespace
 
-std::pair<double, double> linePosition(std::string_view text, std::size_t offset) {
+FilePositionPlace filePosition(std::string_view text, std::size_t offset) {
     offset = std::min(offset, text.size());
     std::size_t line = 1, lineStart = 0;
     for (std::size_t i = 0; i < offset; ++i) {
@@ -201,23 +195,14 @@ std::pair<double, double> linePosition(std::string_view text, std::size_t offset
             lineStart = i + 1;
         }
     }
-    return {static_cast<double>(line), static_cast<double>(offset - lineStart + 1)};
-}
-
-std::string lineColumnOf(std::string_view text, std::size_t offset) {
-    const auto [line, column] = linePosition(text, offset);
-    return "line " + std::to_string(static_cast<std::size_t>(line)) + ", column " +
-           std::to_string(static_cast<std::size_t>(column));
+    return {line, offset - lineStart + 1};
 }
 
 Diagnostics parseJson(std::string_view text, Json& out) {
     // nlohmann's lexer takes a NUL for the end of the input and would ignore what follows.
     if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
-        const auto [line, column] = linePosition(text, nul);
-        return {Diagnostic{
-            lineColumnOf(text, nul),
-            "a NUL byte (at byte offset " + std::to_string(nul) + "): a project file is text"}
-                    .coded(DiagnosticCode::JsonNulByte, {line, column, static_cast<double>(nul)})};
+        return {Diagnostic::make(filePosition(text, nul), DiagnosticCode::JsonNulByte,
+                                 {static_cast<double>(nul)})};
     }
     out = Json();
     LocatingDomBuilder builder(text, out);
@@ -226,7 +211,7 @@ Diagnostics parseJson(std::string_view text, Json& out) {
     Diagnostics problems = builder.problems();
     if (problems.empty()) {
         problems.push_back(
-            Diagnostic{"(top level)", "not valid JSON"}.coded(DiagnosticCode::JsonInvalid, {}));
+            Diagnostic::make(FileKeyPlace{"(top level)"}, DiagnosticCode::JsonInvalid));
     }
     out = Json();
     return problems;

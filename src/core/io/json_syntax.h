@@ -24,10 +24,8 @@ inline constexpr int kMaxJsonDepth = 64;
 /// Linear in the size of the text. At most the first 40 characters of a token are quoted.
 [[nodiscard]] Diagnostics parseJson(std::string_view text, Json& out);
 
-/// @brief "line 3, column 14" for a byte offset (0-based) into `text`.
-[[nodiscard]] std::string lineColumnOf(std::string_view text, std::size_t offset);
-/// @brief The line and column (both from 1) of byte `offset`, as numbers for a message's
-/// arguments.
-[[nodiscard]] std::pair<double, double> linePosition(std::string_view text, std::size_t offset);
+/// @brief The line and column (both from 1) of byte `offset` (0-based) into `text`: "line 3,
+/// column 14".
+[[nodiscard]] FilePositionPlace filePosition(std::string_view text, std::size_t offset);
 
 }  // namespace cam

@@ -35,21 +35,24 @@ std::vector<std::string_view> cellsOf(std::string_view line) {
     }
 }
 
-std::string expected(const RowShape& shape) {
+/// The first `count` names, "x,y,z".
+std::string namesList(const RowShape& shape, std::size_t count) {
     std::string out;
-    for (std::size_t i = 0; i < shape.names.size(); ++i) {
-        if (i == shape.required && i > 0) {
-            out += " or ";
-            for (std::size_t j = 0; j <= i; ++j) out += (j ? "," : "") + shape.names[j];
-            continue;
-        }
-        if (i > shape.required) {
-            out += "," + shape.names[i];
-            continue;
-        }
-        out += (i ? "," : "") + shape.names[i];
-    }
+    for (std::size_t i = 0; i < count; ++i) out += (i ? "," : "") + shape.names[i];
     return out;
+}
+
+/// A row of the wrong length: the lengths it may have, "x,y,z or x,y,z,bulge".
+Diagnostic wrongLength(const RowShape& shape, std::size_t line, std::size_t cells) {
+    const std::string longest = namesList(shape, shape.names.size());
+    const FilePositionPlace at{line};
+    if (shape.required == 0 || shape.required >= shape.names.size()) {
+        return Diagnostic::make(at, DiagnosticCode::RowValueCountExact,
+                                {longest, static_cast<double>(cells)});
+    }
+    return Diagnostic::make(
+        at, DiagnosticCode::RowValueCount,
+        {namesList(shape, shape.required), longest, static_cast<double>(cells)});
 }
 
 }  // namespace
@@ -74,32 +77,17 @@ Result<std::vector<std::vector<double>>> parseNumberRows(std::string_view text,
             for (std::string_view c : cells) anyNumber = anyNumber || number(c).has_value();
             if (!anyNumber) continue;  // a header line
         }
-        const std::string at = "line " + std::to_string(lineNumber);
         if (cells.size() < shape.required || cells.size() > shape.names.size()) {
-            // The shortest row and the longest, for a window that words "or" its own way.
-            std::string shortest, longest;
-            for (std::size_t i = 0; i < shape.names.size(); ++i) {
-                if (i < std::max<std::size_t>(shape.required, 1))
-                    shortest += (i ? "," : "") + shape.names[i];
-                longest += (i ? "," : "") + shape.names[i];
-            }
-            errors.push_back(Diagnostic{at, "expected " + expected(shape) + " (got " +
-                                                std::to_string(cells.size()) + " values)"}
-                                 .coded(DiagnosticCode::RowValueCount,
-                                        {static_cast<double>(lineNumber), shortest, longest,
-                                         static_cast<double>(cells.size())}));
+            errors.push_back(wrongLength(shape, lineNumber, cells.size()));
             continue;
         }
         std::vector<double> row;
         for (std::size_t c = 0; c < cells.size(); ++c) {
             const auto v = number(cells[c]);
             if (!v || !std::isfinite(*v)) {
-                errors.push_back(Diagnostic{at, shape.names[c] +
-                                                    " must be a finite number (got \"" +
-                                                    std::string(trim(cells[c])) + "\")"}
-                                     .coded(DiagnosticCode::RowValueNotFinite,
-                                            {static_cast<double>(lineNumber), shape.names[c],
-                                             std::string(trim(cells[c]))}));
+                errors.push_back(Diagnostic::make(FilePositionPlace{lineNumber},
+                                                  DiagnosticCode::RowValueNotFinite,
+                                                  {shape.names[c], std::string(trim(cells[c]))}));
                 break;
             }
             row.push_back(*v);

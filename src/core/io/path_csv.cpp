@@ -15,8 +15,8 @@ Result<std::vector<PathPoint>> parsePathCsv(std::string_view text) {
         points.push_back(p);
     }
     if (points.size() < 2) {
-        return Diagnostics{Diagnostic("points", "a path needs at least two points")
-                               .coded(DiagnosticCode::PathTooFewPoints, {})};
+        return Diagnostics{
+            Diagnostic::make(FieldPlace{Field::Points}, DiagnosticCode::PathTooFewPoints)};
     }
     return points;
 }

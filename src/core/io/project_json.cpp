@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "evaluation/evaluation.h"
+#include "io/atomic_file.h"
 #include "io/json_syntax.h"
 
 namespace cam {
@@ -23,25 +24,14 @@ struct FileDescriptor {
 };
 
 Diagnostic notARegularFile(const std::string& path, mode_t mode) {
-    const char* kind = S_ISDIR(mode)    ? "a folder"
-                       : S_ISFIFO(mode) ? "a FIFO"
-                       : S_ISCHR(mode)  ? "a character device"
-                       : S_ISBLK(mode)  ? "a block device"
-                       : S_ISSOCK(mode) ? "a socket"
-                                        : "a special file";
-    return Diagnostic(path, std::string("is ") + kind + ", not a regular file: not read")
-        .coded(DiagnosticCode::FileNotRegularToRead, {std::string(kind)});
+    return Diagnostic::make(FilePlace{path}, DiagnosticCode::FileNotRegularToRead,
+                            {fileKindName(mode)});
 }
 
 Diagnostic tooLarge(const std::string& path, off_t bytes) {
-    char mib[32];
-    std::snprintf(mib, sizeof mib, "%.1f", static_cast<double>(bytes) / (1 << 20));
-    return Diagnostic(path, "is " + std::string(mib) + " MiB (" + std::to_string(bytes) +
-                                " bytes): files larger than " +
-                                std::to_string(kMaxProjectFileBytes >> 20) + " MiB are not read")
-        .coded(DiagnosticCode::FileTooLargeToRead,
-               {std::strtod(mib, nullptr), static_cast<double>(bytes),
-                static_cast<double>(kMaxProjectFileBytes >> 20)});
+    return Diagnostic::make(FilePlace{path}, DiagnosticCode::FileTooLargeToRead,
+                            {static_cast<double>(bytes) / (1 << 20), static_cast<double>(bytes),
+                             static_cast<double>(kMaxProjectFileBytes >> 20)});
 }
 
 }  // namespace
@@ -63,25 +53,22 @@ Result<Project> parseProject(std::string_view text) {
 
 Result<std::string> readTextFile(const std::string& path) {
     auto refuse = [&](Diagnostic problem) { return Diagnostics{std::move(problem)}; };
-    // "cannot open: " and the OS's own words, which stay an argument as they are.
-    auto failed = [&](const char* what, DiagnosticCode code) {
-        const std::string reason = std::strerror(errno);
-        return refuse(Diagnostic(path, what + reason).coded(code, {reason}));
+    // The OS's own words stay an argument as they are.
+    auto failed = [&](DiagnosticCode code) {
+        return refuse(Diagnostic::make(FilePlace{path}, code, {std::strerror(errno)}));
     };
     // Look before opening: opening a device can have effects of its own, and reading /dev/zero
     // or a FIFO never ends.
     struct stat st {};
-    if (::stat(path.c_str(), &st) != 0)
-        return failed("cannot open: ", DiagnosticCode::FileCannotOpen);
+    if (::stat(path.c_str(), &st) != 0) return failed(DiagnosticCode::FileCannotOpen);
     if (!S_ISREG(st.st_mode)) return refuse(notARegularFile(path, st.st_mode));
     if (static_cast<std::uint64_t>(st.st_size) > kMaxProjectFileBytes)
         return refuse(tooLarge(path, st.st_size));
     // O_NONBLOCK: if a FIFO took the file's place since stat(), open must not wait for a writer.
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-    if (fd < 0) return failed("cannot open: ", DiagnosticCode::FileCannotOpen);
+    if (fd < 0) return failed(DiagnosticCode::FileCannotOpen);
     const FileDescriptor file{fd};
-    if (::fstat(fd, &st) != 0)
-        return failed("cannot examine: ", DiagnosticCode::FileCannotExamineOpen);
+    if (::fstat(fd, &st) != 0) return failed(DiagnosticCode::FileCannotExamineOpen);
     if (!S_ISREG(st.st_mode)) return refuse(notARegularFile(path, st.st_mode));
     if (static_cast<std::uint64_t>(st.st_size) > kMaxProjectFileBytes)
         return refuse(tooLarge(path, st.st_size));
@@ -93,18 +80,14 @@ Result<std::string> readTextFile(const std::string& path) {
     for (;;) {
         if (size == text.size()) {
             if (size > kMaxProjectFileBytes) {
-                return refuse(Diagnostic(path, "grew past " +
-                                                   std::to_string(kMaxProjectFileBytes >> 20) +
-                                                   " MiB while it was read: larger files are not "
-                                                   "read")
-                                  .coded(DiagnosticCode::FileGrewTooLarge,
-                                         {static_cast<double>(kMaxProjectFileBytes >> 20)}));
+                return refuse(Diagnostic::make(FilePlace{path}, DiagnosticCode::FileGrewTooLarge,
+                                               {static_cast<double>(kMaxProjectFileBytes >> 20)}));
             }
             text.resize(std::min<std::size_t>(2 * size, kMaxProjectFileBytes + 1));
         }
         const ssize_t n = ::read(fd, text.data() + size, text.size() - size);
         if (n < 0 && errno == EINTR) continue;
-        if (n < 0) return failed("cannot read: ", DiagnosticCode::FileCannotRead);
+        if (n < 0) return failed(DiagnosticCode::FileCannotRead);
         if (n == 0) break;
         size += static_cast<std::size_t>(n);
     }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/angles.h"
+#include "common/translate_marker.h"
 #include "design/motion_law.h"
 #include "project/follower_kind.h"
 #include "project/validate.h"
@@ -14,12 +15,13 @@
 namespace cam {
 namespace {
 
+/// What a JSON value is, as a term of the diagnostic catalogue (or the JSON literal null).
 const char* typeName(const Json& j) {
-    if (j.is_string()) return "a string";
-    if (j.is_boolean()) return "a boolean";
-    if (j.is_number()) return "a number";
-    if (j.is_array()) return "an array";
-    if (j.is_object()) return "an object";
+    if (j.is_string()) return CAM_TRANSLATE_NOOP("Diagnostic", "a string");
+    if (j.is_boolean()) return CAM_TRANSLATE_NOOP("Diagnostic", "a boolean");
+    if (j.is_number()) return CAM_TRANSLATE_NOOP("Diagnostic", "a number");
+    if (j.is_array()) return CAM_TRANSLATE_NOOP("Diagnostic", "an array");
+    if (j.is_object()) return CAM_TRANSLATE_NOOP("Diagnostic", "an object");
     return "null";
 }
 
@@ -28,46 +30,47 @@ class Reader {
 public:
     Diagnostics errors;
 
-    void error(const std::string& location, const std::string& message,
-               DiagnosticCode code = DiagnosticCode::Unspecified,
+    /// A problem of the file at the key `location` (its path in the file).
+    void error(const std::string& location, DiagnosticCode code,
                std::vector<DiagnosticArg> args = {}) {
-        errors.push_back(
-            Diagnostic{location, message, Severity::Error}.coded(code, std::move(args)));
+        errors.push_back(Diagnostic::make(FileKeyPlace{location}, code, std::move(args)));
     }
 
-    /// "must be <what> (got <a JSON type>)".
-    void wrongType(const std::string& location, const std::string& what, const std::string& got) {
-        error(location, "must be " + what + " (got " + got + ")", DiagnosticCode::WrongType,
-              {what, got});
+    /// "must be <what> (got <a JSON type>)": `what` is a term of the diagnostic catalogue.
+    void wrongType(const std::string& location, const char* what, const std::string& got) {
+        error(location, DiagnosticCode::WrongType, {what, got});
     }
 
-    /// "must be "a", "b" or "c" (got "d")"; the arguments list the choices without the "or".
+    /// "must be "a", "b" or "c" (got "d")".
     void notOneOf(const std::string& location, std::initializer_list<std::string_view> choices,
                   const std::string& got) {
         notOneOf(location, std::span<const std::string_view>(choices.begin(), choices.size()), got);
     }
     void notOneOf(const std::string& location, std::span<const std::string_view> choices,
                   const std::string& got) {
-        std::string english, list;
-        std::size_t i = 0;
-        for (const std::string_view choice : choices) {
-            const std::string quoted = "\"" + std::string(choice) + '"';
-            if (i > 0) {
-                english += i + 1 == choices.size() ? " or " : ", ";
-                list += ", ";
-            }
-            english += quoted;
-            list += quoted;
-            ++i;
+        // All but the last choice, quoted and listed with commas; the code words the "or".
+        // (Built by appends: GCC 12 warns falsely on "\"" + string, PR105651.)
+        const auto quoted = [](std::string_view choice) {
+            std::string out = "\"";
+            return out.append(choice).append(1, '"');
+        };
+        std::string others;
+        for (std::size_t i = 0; i + 1 < choices.size(); ++i) {
+            if (i > 0) others += ", ";
+            others += quoted(choices[i]);
         }
-        error(location, "must be " + english + " (got \"" + got + "\")", DiagnosticCode::NotOneOf,
-              {list, got});
+        const std::string last = quoted(choices.back());
+        if (others.empty()) {
+            error(location, DiagnosticCode::NotTheValue, {last, got});
+        } else {
+            error(location, DiagnosticCode::NotOneOf, {others, last, got});
+        }
     }
 
     const Json* field(const Json& obj, const std::string& at, const char* key, bool required) {
         const auto it = obj.find(key);
         if (it == obj.end()) {
-            if (required) error(join(at, key), "missing", DiagnosticCode::Missing);
+            if (required) error(join(at, key), DiagnosticCode::Missing);
             return nullptr;
         }
         return &*it;
@@ -79,7 +82,7 @@ public:
 
     std::optional<double> number(const Json& j, const std::string& at) {
         if (!j.is_number()) {
-            wrongType(at, "a number", typeName(j));
+            wrongType(at, CAM_TRANSLATE_NOOP("Diagnostic", "a number"), typeName(j));
             return std::nullopt;
         }
         return j.get<double>();
@@ -96,7 +99,8 @@ public:
         const Json* j = field(obj, at, key, required);
         if (!j) return std::nullopt;
         if (!j->is_boolean()) {
-            wrongType(join(at, key), "true or false", typeName(*j));
+            wrongType(join(at, key), CAM_TRANSLATE_NOOP("Diagnostic", "true or false"),
+                      typeName(*j));
             return std::nullopt;
         }
         return j->get<bool>();
@@ -107,7 +111,7 @@ public:
         const Json* j = field(obj, at, key, required);
         if (!j) return std::nullopt;
         if (!j->is_string()) {
-            wrongType(join(at, key), "a string", typeName(*j));
+            wrongType(join(at, key), CAM_TRANSLATE_NOOP("Diagnostic", "a string"), typeName(*j));
             return std::nullopt;
         }
         return j->get<std::string>();
@@ -123,14 +127,12 @@ public:
     /// A value that must be [x, y].
     std::optional<Eigen::Vector2d> pointValue(const Json& j, const std::string& loc) {
         if (!j.is_array()) {
-            wrongType(loc, "an array [x, y] of two numbers", typeName(j));
+            wrongType(loc, CAM_TRANSLATE_NOOP("Diagnostic", "an array [x, y] of two numbers"),
+                      typeName(j));
             return std::nullopt;
         }
         if (j.size() != 2) {
-            error(loc,
-                  "must be an array [x, y] of two numbers (got " + std::to_string(j.size()) +
-                      " elements)",
-                  DiagnosticCode::PointShape, {static_cast<double>(j.size())});
+            error(loc, DiagnosticCode::PointShape, {static_cast<double>(j.size())});
             return std::nullopt;
         }
         const auto x = number(j[0], loc + "[0]");
@@ -145,7 +147,7 @@ public:
         if (!j) return std::nullopt;
         const std::string loc = join(at, key);
         if (!j->is_array()) {
-            wrongType(loc, "an array of numbers", typeName(*j));
+            wrongType(loc, CAM_TRANSLATE_NOOP("Diagnostic", "an array of numbers"), typeName(*j));
             return std::nullopt;
         }
         std::vector<double> out;
@@ -160,7 +162,7 @@ public:
 
     bool object(const Json& j, const std::string& at) {
         if (!j.is_object()) {
-            wrongType(at, "an object", typeName(j));
+            wrongType(at, CAM_TRANSLATE_NOOP("Diagnostic", "an object"), typeName(j));
             return false;
         }
         return true;
@@ -171,7 +173,7 @@ public:
         for (const auto& [key, value] : obj.items()) {
             bool known = false;
             for (const char* k : keys) known = known || key == k;
-            if (!known) error(join(at, key.c_str()), "unknown key", DiagnosticCode::UnknownKey);
+            if (!known) error(join(at, key.c_str()), DiagnosticCode::UnknownKey);
         }
     }
 };
@@ -227,8 +229,7 @@ void readSegment(Reader& rd, const Json& j, const std::string& at, const UnitsSp
         bool complete = false;
         if (const Json* pts = rd.field(j, at, "points", true)) {
             if (!pts->is_array() || pts->size() != 4) {
-                rd.error(at + ".points", "must be an array of four points [x, y]",
-                         DiagnosticCode::BezierPointCount);
+                rd.error(at + ".points", DiagnosticCode::BezierPointCount);
             } else {
                 complete = true;
                 for (std::size_t i = 0; i < 4; ++i) {
@@ -254,10 +255,7 @@ void readSegment(Reader& rd, const Json& j, const std::string& at, const UnitsSp
         s.shape = curve;
         windowOrDefault(complete);
     } else {
-        rd.error(at + ".type",
-                 "unknown segment type \"" + *type +
-                     "\" (expected \"arc\", \"line\", \"bezier\" or \"hermite\")",
-                 DiagnosticCode::UnknownSegmentType, {*type});
+        rd.error(at + ".type", DiagnosticCode::UnknownSegmentType, {*type});
     }
 }
 
@@ -274,10 +272,7 @@ void readMotion(Reader& rd, const Json& root, Project& p) {
         if (const auto v = rd.number(*m, "motion", key, true)) p.motion = {unit, *v};
     }
     if (given != 1) {
-        rd.error("motion",
-                 "must give exactly one of omega_rad_s, rpm, period_s (got " +
-                     std::to_string(given) + ")",
-                 DiagnosticCode::SpeedNotExactlyOne, {static_cast<double>(given)});
+        rd.error("motion", DiagnosticCode::SpeedNotExactlyOne, {static_cast<double>(given)});
     }
 }
 
@@ -335,9 +330,7 @@ void readSampling(Reader& rd, const Json& root, Project& p) {
     const auto n = rd.number(*s, "sampling", "samples_per_turn", true);
     if (!n) return;
     if (!(std::floor(*n) == *n) || std::abs(*n) > 9e15) {
-        rd.error("sampling.samples_per_turn",
-                 "must be a whole number between 16 and 10000000 (got " + formatNumber(*n) + ")",
-                 DiagnosticCode::NotWholeSampleCount, {*n});
+        rd.error("sampling.samples_per_turn", DiagnosticCode::NotWholeSampleCount, {*n});
         return;
     }
     p.samplesPerTurn = static_cast<std::int64_t>(*n);
@@ -390,7 +383,8 @@ void readDesign(Reader& rd, const Json& root, const UnitsSpec& units, Project& p
     }
     if (const Json* list = rd.field(*d, "design", "segments", true)) {
         if (!list->is_array()) {
-            rd.wrongType("design.segments", "an array of segments", typeName(*list));
+            rd.wrongType("design.segments",
+                         CAM_TRANSLATE_NOOP("Diagnostic", "an array of segments"), typeName(*list));
         } else {
             for (std::size_t k = 0; k < list->size(); ++k) {
                 const Json& j = (*list)[k];
@@ -401,10 +395,7 @@ void readDesign(Reader& rd, const Json& root, const UnitsSpec& units, Project& p
                     if (const auto law = lawFromName(*name)) {
                         s.law = *law;
                     } else {
-                        rd.error(at + ".law",
-                                 "unknown law \"" + *name + "\" (expected one of " +
-                                     knownLawNames() + ")",
-                                 DiagnosticCode::UnknownLaw, {*name, knownLawNames()});
+                        rd.error(at + ".law", DiagnosticCode::UnknownLaw, {*name, knownLawNames()});
                     }
                 }
                 if (motionLaw(s.law).shape == LawShape::BoundaryValues) {
@@ -435,7 +426,7 @@ void readDesign(Reader& rd, const Json& root, const UnitsSpec& units, Project& p
 Result<Project> readProject(const Json& root) {
     Reader rd;
     if (!root.is_object()) {
-        rd.wrongType("(top level)", "an object", typeName(root));
+        rd.wrongType("(top level)", CAM_TRANSLATE_NOOP("Diagnostic", "an object"), typeName(root));
         return rd.errors;
     }
     const auto format = rd.string(root, "", "format", true);
@@ -444,16 +435,12 @@ Result<Project> readProject(const Json& root) {
     }
     if (const Json* v = rd.field(root, "", "version", true)) {
         if (!v->is_number_integer()) {
-            rd.wrongType("version", "a whole number", v->is_number() ? v->dump() : typeName(*v));
+            rd.wrongType("version", CAM_TRANSLATE_NOOP("Diagnostic", "a whole number"),
+                         v->is_number() ? v->dump() : typeName(*v));
         } else if (v->get<std::int64_t>() > kProjectFormatVersion) {
-            rd.error("version",
-                     "this file has format version " + v->dump() +
-                         "; this Camwright reads version 1 only — open it with a "
-                         "newer Camwright",
-                     DiagnosticCode::NewerFormatVersion, {v->dump()});
+            rd.error("version", DiagnosticCode::NewerFormatVersion, {v->dump()});
         } else if (v->get<std::int64_t>() < 1) {
-            rd.error("version", "must be 1 (got " + v->dump() + ")",
-                     DiagnosticCode::NotFormatVersion1, {v->dump()});
+            rd.error("version", DiagnosticCode::NotFormatVersion1, {v->dump()});
         }
     }
     if (hasErrors(rd.errors)) return rd.errors;  // not a Camwright v1 file: say only that
@@ -484,7 +471,8 @@ Result<Project> readProject(const Json& root) {
 
     if (const Json* c = rd.field(root, "", "contour", true)) {
         if (!c->is_array()) {
-            rd.wrongType("contour", "an array of segments", typeName(*c));
+            rd.wrongType("contour", CAM_TRANSLATE_NOOP("Diagnostic", "an array of segments"),
+                         typeName(*c));
         } else {
             std::optional<double> previousEnd;
             for (std::size_t k = 0; k < c->size(); ++k) {

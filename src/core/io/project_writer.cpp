@@ -155,25 +155,24 @@ std::string serializeProject(const Project& p) {
 
 Diagnostics nonFiniteValues(const Project& p) {
     Diagnostics out;
-    auto check = [&](double v, Diagnostic where) {
+    auto check = [&](double v, Place where) {
         if (std::isfinite(v)) return;
-        where.message = "is not a finite number, which a file cannot hold";
-        out.push_back(std::move(where).coded(DiagnosticCode::NotFiniteForFile, {}));
+        out.push_back(Diagnostic::make(std::move(where), DiagnosticCode::NotFiniteForFile));
     };
     auto checkPoint = [&](const Eigen::Vector2d& v, SegmentPlace place) {
         for (int axis = 0; axis < 2; ++axis) {
             place.axis = axis;
-            check(v[axis], Diagnostic::at(place, {}));
+            check(v[axis], place);
         }
     };
-    check(p.motion.value, Diagnostic{"motion", {}});
+    check(p.motion.value, FieldPlace{Field::Motion});
     for (std::size_t k = 0; k < p.contour.size(); ++k) {
         const SegmentSpec& s = p.contour[k];
-        check(s.phiStartDeg, Diagnostic::at({k, SegmentPart::PhiStart}, {}));
-        check(s.phiEndDeg, Diagnostic::at({k, SegmentPart::PhiEnd}, {}));
+        check(s.phiStartDeg, SegmentPlace{k, SegmentPart::PhiStart});
+        check(s.phiEndDeg, SegmentPlace{k, SegmentPart::PhiEnd});
         if (const auto* arc = s.as<Arc>()) {
             checkPoint(arc->center, {k, SegmentPart::Center});
-            check(arc->radius, Diagnostic::at({k, SegmentPart::Radius}, {}));
+            check(arc->radius, SegmentPlace{k, SegmentPart::Radius});
         } else if (const auto* line = s.as<Line>()) {
             checkPoint(line->from, {k, SegmentPart::From});
             checkPoint(line->to, {k, SegmentPart::To});
@@ -190,34 +189,33 @@ Diagnostics nonFiniteValues(const Project& p) {
         }
     }
     if (p.follower) {
-        check(p.follower->offset, Diagnostic{"follower.offset", {}});
-        check(p.follower->radius, Diagnostic{"follower.radius", {}});
+        check(p.follower->offset, FieldPlace{Field::FollowerOffset});
+        check(p.follower->radius, FieldPlace{Field::FollowerRadius});
     }
     if (p.design) {
-        check(p.design->baseRadius, Diagnostic{"design.base_radius", {}});
-        check(p.design->tolerance, Diagnostic{"design.tolerance", {}});
+        check(p.design->baseRadius, FieldPlace{Field::DesignBaseRadius});
+        check(p.design->tolerance, FieldPlace{Field::DesignTolerance});
         for (std::size_t k = 0; k < p.design->segments.size(); ++k) {
             const DesignSegmentSpec& s = p.design->segments[k];
-            const std::string at = "design.segments[" + std::to_string(k) + "].";
-            for (auto [key, v] :
-                 {std::pair{"to_deg", s.toDeg}, std::pair{"lift", s.lift}, std::pair{"v0", s.v0},
-                  std::pair{"a0", s.a0}, std::pair{"v1", s.v1}, std::pair{"a1", s.a1}}) {
-                check(v, Diagnostic{at + key, {}});
+            for (auto [part, v] :
+                 {std::pair{DesignPart::ToDeg, s.toDeg}, std::pair{DesignPart::Lift, s.lift},
+                  std::pair{DesignPart::V0, s.v0}, std::pair{DesignPart::A0, s.a0},
+                  std::pair{DesignPart::V1, s.v1}, std::pair{DesignPart::A1, s.a1}}) {
+                check(v, DesignSegmentPlace{k, part});
             }
         }
     }
     if (p.machining) {
         const MachiningSpec& m = *p.machining;
         for (std::size_t i = 0; i < m.axisAccel.size(); ++i) {
-            check(m.axisAccel[i],
-                  Diagnostic{"machining.axis_accel[" + std::to_string(i) + "]", {}});
+            check(m.axisAccel[i], FieldPlace{Field::MachiningAxisAccel, static_cast<int>(i)});
         }
         for (std::size_t i = 0; i < m.axisVmax.size(); ++i) {
-            check(m.axisVmax[i], Diagnostic{"machining.axis_vmax[" + std::to_string(i) + "]", {}});
+            check(m.axisVmax[i], FieldPlace{Field::MachiningAxisVmax, static_cast<int>(i)});
         }
-        check(m.feedMax, Diagnostic{"machining.feed_max", {}});
-        check(m.toolRadius, Diagnostic{"machining.tool_radius", {}});
-        check(m.step, Diagnostic{"machining.step", {}});
+        check(m.feedMax, FieldPlace{Field::MachiningFeedMax});
+        check(m.toolRadius, FieldPlace{Field::MachiningToolRadius});
+        check(m.step, FieldPlace{Field::MachiningStep});
     }
     return out;
 }

@@ -9,26 +9,19 @@
 namespace cam {
 namespace {
 
-std::string deg(double value) { return formatNumber(value) + "°"; }
+using Code = DiagnosticCode;
 
-/// Where a problem is: a place in the contour (located as data) or a project field by name.
-struct Where {
-    Where(std::string text) : location(std::move(text)) {}  // NOLINT(google-explicit-constructor)
-    Where(const char* text) : location(text) {}             // NOLINT(google-explicit-constructor)
-    Where(const SegmentPlace& place)                        // NOLINT(google-explicit-constructor)
-        : location(locationText(place)), places{place} {}
-
-    /// The x or y coordinate of this point.
-    [[nodiscard]] Where axis(int i) const {
-        if (places.empty()) return Where(location + "[" + std::to_string(i) + "]");
-        SegmentPlace p = places.front();
+/// The x (0) or y (1) coordinate of the point at `where`: a segment's point or a field's.
+Place pointCoordinate(const Place& where, int i) {
+    if (const auto* segment = std::get_if<SegmentPlace>(&where)) {
+        SegmentPlace p = *segment;
         p.axis = i;
-        return Where(p);
+        return p;
     }
-
-    std::string location;
-    std::vector<SegmentPlace> places;
-};
+    FieldPlace field = std::get<FieldPlace>(where);
+    field.index = i;
+    return field;
+}
 
 class Validator {
 public:
@@ -45,71 +38,55 @@ public:
     }
 
 private:
-    void error(const Where& where, std::string message,
-               DiagnosticCode code = DiagnosticCode::Unspecified,
-               std::vector<DiagnosticArg> args = {}) {
-        m_out.push_back(
-            Diagnostic{where.location, std::move(message), Severity::Error, where.places}.coded(
-                code, std::move(args)));
+    void error(const Place& where, DiagnosticCode code, std::vector<DiagnosticArg> args = {}) {
+        m_out.push_back(Diagnostic::make(where, code, std::move(args)));
     }
 
     /// Finite with |value| <= 1e6 mm; returns false (and reports) otherwise.
-    bool checkLength(const Where& where, double value) {
-        std::optional<Diagnostic> problem = lengthProblem(where.location, value);
+    bool checkLength(const Place& where, double value) {
+        std::optional<Diagnostic> problem = lengthProblem(where, value);
         if (!problem) return true;
-        problem->places = where.places;
         m_out.push_back(std::move(*problem));
         return false;
     }
 
-    bool checkPoint(const Where& where, const Eigen::Vector2d& p) {
-        const bool x = checkLength(where.axis(0), p.x());
-        const bool y = checkLength(where.axis(1), p.y());
+    bool checkPoint(const Place& where, const Eigen::Vector2d& p) {
+        const bool x = checkLength(pointCoordinate(where, 0), p.x());
+        const bool y = checkLength(pointCoordinate(where, 1), p.y());
         return x && y;
     }
 
     /// Finite and within [lo, hi]; returns false (and reports) otherwise.
-    bool checkRange(const Where& where, double value, double lo, double hi, const char* unit) {
+    bool checkRange(const Place& where, double value, double lo, double hi, const char* unit) {
         if (!std::isfinite(value)) {
-            error(where, "must be a finite number (got " + formatNumber(value) + ")",
-                  DiagnosticCode::NotFinite, {value});
+            error(where, Code::NotFinite, {value});
             return false;
         }
         if (!(value >= lo && value <= hi)) {
-            error(where,
-                  "must be between " + formatNumber(lo) + " and " + formatNumber(hi) + unit +
-                      " (got " + formatNumber(value) + ")",
-                  DiagnosticCode::OutOfRange, {lo, hi, std::string(unit), value});
+            error(where, Code::OutOfRange, {lo, hi, std::string(unit), value});
             return false;
         }
         return true;
     }
 
     /// A radius or step: > 0 (as project-format.md words it), and then at least kMinLengthMm.
-    bool checkPositiveLength(const Where& where, double value) {
+    bool checkPositiveLength(const Place& where, double value) {
         if (!checkPositive(where, value, true)) return false;
         if (value < kMinLengthMm) {
-            error(where,
-                  "must be at least " + formatNumber(kMinLengthMm) + " mm (got " +
-                      formatNumber(value) +
-                      "): a smaller circle or step is below the "
-                      "precision of the joints",
-                  DiagnosticCode::BelowMinimumLength, {kMinLengthMm, value});
+            error(where, Code::BelowMinimumLength, {kMinLengthMm, value});
             return false;
         }
         return true;
     }
 
-    bool checkPositive(const Where& where, double value, bool isLength) {
+    bool checkPositive(const Place& where, double value, bool isLength) {
         if (isLength && !checkLength(where, value)) return false;
         if (!std::isfinite(value)) {
-            error(where, "must be a finite number (got " + formatNumber(value) + ")",
-                  DiagnosticCode::NotFinite, {value});
+            error(where, Code::NotFinite, {value});
             return false;
         }
         if (!(value > 0.0)) {
-            error(where, "must be > 0 (got " + formatNumber(value) + ")",
-                  DiagnosticCode::NotPositive, {value});
+            error(where, Code::NotPositive, {value});
             return false;
         }
         return true;
@@ -117,18 +94,15 @@ private:
 
     void checkMotion() {
         const MotionSpec& m = m_project.motion;
-        const char* key = m.unit == SpeedUnit::OmegaRadS ? "motion.omega_rad_s"
-                          : m.unit == SpeedUnit::Rpm     ? "motion.rpm"
-                                                         : "motion.period_s";
+        const FieldPlace key{m.unit == SpeedUnit::OmegaRadS ? Field::MotionOmega
+                             : m.unit == SpeedUnit::Rpm     ? Field::MotionRpm
+                                                            : Field::MotionPeriod};
         if (!std::isfinite(m.value)) {
-            error(key, "must be a finite number (got " + formatNumber(m.value) + ")",
-                  DiagnosticCode::NotFinite, {m.value});
+            error(key, Code::NotFinite, {m.value});
         } else if (m.unit == SpeedUnit::PeriodS && !(m.value > 0.0)) {
-            error(key, "must be > 0 (got " + formatNumber(m.value) + ")",
-                  DiagnosticCode::NotPositive, {m.value});
+            error(key, Code::NotPositive, {m.value});
         } else if (m.value == 0.0) {
-            error(key, "must not be 0 (its sign gives the turning direction)",
-                  DiagnosticCode::SpeedIsZero);
+            error(key, Code::SpeedIsZero);
         } else {
             const ValueRange range = speedRange(m.unit);
             const double lo = range.lo;
@@ -137,10 +111,7 @@ private:
                                : m.unit == SpeedUnit::Rpm     ? " rpm"
                                                               : " s";
             if (!(std::abs(m.value) >= lo && std::abs(m.value) <= hi)) {
-                error(key,
-                      std::string("magnitude must be between ") + formatNumber(lo) + " and " +
-                          formatNumber(hi) + unit + " (got " + formatNumber(m.value) + ")",
-                      DiagnosticCode::SpeedOutOfRange, {lo, hi, std::string(unit), m.value});
+                error(key, Code::SpeedOutOfRange, {lo, hi, std::string(unit), m.value});
             }
         }
     }
@@ -149,8 +120,7 @@ private:
         const auto& segments = m_project.contour;
         if (segments.empty()) {
             // A design whose contour was never synthesised is valid (project-format.md).
-            if (!m_project.design)
-                error("contour", "must have at least one segment", DiagnosticCode::NoSegments);
+            if (!m_project.design) error(FieldPlace{Field::Contour}, Code::NoSegments);
             return;
         }
         bool allShapesValid = true;
@@ -172,18 +142,13 @@ private:
         for (auto [part, value] : {std::pair{SegmentPart::PhiStart, s.phiStartDeg},
                                    std::pair{SegmentPart::PhiEnd, s.phiEndDeg}}) {
             if (!std::isfinite(value) || std::abs(value) > 1e6) {
-                error(SegmentPlace{k, part},
-                      "must be a finite angle of magnitude at most 1e6° (got " +
-                          formatNumber(value) + ")",
-                      DiagnosticCode::AngleNotFinite, {value});
+                error(SegmentPlace{k, part}, Code::AngleNotFinite, {value});
                 ok = false;
             }
         }
         if (ok && !(s.phiEndDeg > s.phiStartDeg)) {
-            error(SegmentPlace{k, SegmentPart::PhiEnd},
-                  "must be greater than phi_start " + deg(s.phiStartDeg) + " (got " +
-                      deg(s.phiEndDeg) + ")",
-                  DiagnosticCode::WindowNotIncreasing, {s.phiStartDeg, s.phiEndDeg});
+            error(SegmentPlace{k, SegmentPart::PhiEnd}, Code::WindowNotIncreasing,
+                  {SegmentPart::PhiStart, s.phiStartDeg, s.phiEndDeg});
             ok = false;
         }
         return ok;
@@ -206,30 +171,20 @@ private:
             }
             error(SegmentPlace{k, phiDeg == s.phiStartDeg ? SegmentPart::PhiStart
                                                           : SegmentPart::PhiEnd},
-                  "at " + deg(phiDeg) +
-                      " the follower ray only grazes the curve (it must cross it at an angle of "
-                      "at least " +
-                      formatNumber(kMinRayAngleRad) +
-                      " rad, or the follower would need an unbounded speed); the window must "
-                      "end before it",
-                  DiagnosticCode::RayGrazes, {phiDeg, kMinRayAngleRad});
+                  Code::RayGrazes, {phiDeg, kMinRayAngleRad});
             return false;
         }
         return true;
     }
 
     /// The window of a line or spline must be the polar angles of its end points.
-    bool checkWindowFollowsEnds(std::size_t k, const char* whose, DiagnosticCode code) {
+    bool checkWindowFollowsEnds(std::size_t k, DiagnosticCode code) {
         const SegmentSpec& s = m_project.contour[k];
         const auto [start, end] = lineWindowDeg(s, s.phiStartDeg);
         if (std::abs(wrapDeg(s.phiStartDeg - start)) > kLineWindowToleranceDeg ||
             std::abs(wrapDeg(s.phiEndDeg - end)) > kLineWindowToleranceDeg ||
             std::abs((s.phiEndDeg - s.phiStartDeg) - (end - start)) > kLineWindowToleranceDeg) {
-            error(SegmentPlace{k},
-                  "window " + deg(s.phiStartDeg) + " .. " + deg(s.phiEndDeg) +
-                      " disagrees with the polar angles of " + whose + " (" + deg(start) + " .. " +
-                      deg(end) + ")",
-                  code, {s.phiStartDeg, s.phiEndDeg, start, end});
+            error(SegmentPlace{k}, code, {s.phiStartDeg, s.phiEndDeg, start, end});
             return false;
         }
         return true;
@@ -250,29 +205,20 @@ private:
         const bool to = checkPoint(SegmentPlace{k, SegmentPart::To}, line.to);
         if (!(from && to)) return false;
         if ((line.to - line.from).norm() <= kJointToleranceMm) {
-            error(SegmentPlace{k, SegmentPart::To},
-                  "must differ from `from` (the line has no length)",
-                  DiagnosticCode::LineHasNoLength);
+            error(SegmentPlace{k, SegmentPart::To}, Code::LineHasNoLength);
             return false;
         }
         if (line.distance() <= kJointToleranceMm) {
-            error(SegmentPlace{k},
-                  "the line passes through the rotation centre, so the follower ray meets "
-                  "it at no angle or at every point",
-                  DiagnosticCode::LineThroughCentre);
+            error(SegmentPlace{k}, Code::LineThroughCentre);
             return false;
         }
         if (cross(line.from, line.to) <= 0.0) {
             const double fromDeg = radToDeg(std::atan2(line.from.y(), line.from.x()));
             const double toDeg = radToDeg(std::atan2(line.to.y(), line.to.x()));
-            error(SegmentPlace{k},
-                  "the line runs clockwise around the rotation centre (from " + deg(fromDeg) +
-                      " to " + deg(toDeg) + "); swap `from` and `to`",
-                  DiagnosticCode::LineClockwise, {fromDeg, toDeg});
+            error(SegmentPlace{k}, Code::LineClockwise, {fromDeg, toDeg});
             return false;
         }
-        return !windowValid ||
-               checkWindowFollowsEnds(k, "from/to", DiagnosticCode::WindowDisagreesWithLineEnds);
+        return !windowValid || checkWindowFollowsEnds(k, Code::WindowDisagreesWithLineEnds);
     }
 
     /// Bézier and Hermite: finite points, the window on the polar angles of the end points, and
@@ -296,20 +242,15 @@ private:
         if (!ok || !windowValid) return false;
         const auto [from, to] = endPointsOf(s);
         if (from.norm() <= kJointToleranceMm || to.norm() <= kJointToleranceMm) {
-            error(SegmentPlace{k}, "an end point lies on the rotation centre",
-                  DiagnosticCode::SplineEndOnCentre);
+            error(SegmentPlace{k}, Code::SplineEndOnCentre);
             return false;
         }
         const auto [start, end] = lineWindowDeg(s, s.phiStartDeg);
         if (!(end > start)) {
-            error(SegmentPlace{k},
-                  "the curve runs clockwise around the rotation centre (from " + deg(start) +
-                      " to " + deg(end) + "); reverse its points",
-                  DiagnosticCode::SplineClockwise, {start, end});
+            error(SegmentPlace{k}, Code::SplineClockwise, {start, end});
             return false;
         }
-        if (!checkWindowFollowsEnds(k, "its end points",
-                                    DiagnosticCode::WindowDisagreesWithSplineEnds)) {
+        if (!checkWindowFollowsEnds(k, Code::WindowDisagreesWithSplineEnds)) {
             return false;
         }
         const CubicBezier curve = bezierOf(s);
@@ -319,10 +260,8 @@ private:
             const double phi = degToRad(phiDeg);
             const std::size_t hits = curve.rayParameters(std::cos(phi), std::sin(phi)).size();
             if (hits != 1) {
-                error(SegmentPlace{k},
-                      "the follower ray meets the curve " + std::to_string(hits) + " times at " +
-                          deg(phiDeg) + "; inside its window it must meet it exactly once",
-                      DiagnosticCode::RayMeetsSplineTimes, {static_cast<double>(hits), phiDeg});
+                error(SegmentPlace{k}, Code::RayMeetsSplineTimes,
+                      {static_cast<double>(hits), phiDeg});
                 return false;
             }
         }
@@ -335,10 +274,7 @@ private:
         const double dist = arc.center.norm();
         const double rel = (dist - arc.radius) / arc.radius;
         if (arc.branch == Branch::Inner && rel <= 1e-12) {
-            error(SegmentPlace{k, SegmentPart::Branch},
-                  "the rotation centre lies inside this circle, so the inner "
-                  "intersection is behind the follower (r <= 0); use \"outer\"",
-                  DiagnosticCode::InnerBranchBehindCentre);
+            error(SegmentPlace{k, SegmentPart::Branch}, Code::InnerBranchBehindCentre);
             return false;
         }
         if (rel < -1e-12) return true;  // centre inside the circle: the outer branch is total
@@ -349,11 +285,7 @@ private:
         const double hi = lo + (s.phiEndDeg - s.phiStartDeg);
         constexpr double kTangentTolDeg = 1e-7;
         if (lo < -alphaDeg - kTangentTolDeg || hi > alphaDeg + kTangentTolDeg) {
-            error(SegmentPlace{k},
-                  "the follower ray misses the circle inside the window " + deg(s.phiStartDeg) +
-                      " .. " + deg(s.phiEndDeg) + "; it meets it only for phi in " +
-                      deg(centerDeg - alphaDeg) + " .. " + deg(centerDeg + alphaDeg),
-                  DiagnosticCode::RayMissesArc,
+            error(SegmentPlace{k}, Code::RayMissesArc,
                   {s.phiStartDeg, s.phiEndDeg, centerDeg - alphaDeg, centerDeg + alphaDeg});
             return false;
         }
@@ -368,27 +300,15 @@ private:
             const double next = c[k + 1].phiStartDeg;
             const double diff = next - end;
             if (std::abs(diff) > kWindowToleranceDeg) {
-                m_out.push_back(
-                    Diagnostic::atJoint(k, k + 1,
-                                        std::string(diff > 0 ? "gap" : "overlap") + " of " +
-                                            deg(std::abs(diff)) + " between phi_end " +
-                                            formatNumber(end) + " and phi_start " +
-                                            formatNumber(next))
-                        .coded(diff > 0 ? DiagnosticCode::WindowGap : DiagnosticCode::WindowOverlap,
-                               {std::abs(diff), end, next}));
+                error(JointPlace{k, k + 1}, diff > 0 ? Code::WindowGap : Code::WindowOverlap,
+                      {std::abs(diff), SegmentPart::PhiEnd, end, SegmentPart::PhiStart, next});
                 ok = false;
             }
         }
         const double span = c.back().phiEndDeg - c.front().phiStartDeg;
         if (std::abs(span - 360.0) > kWindowToleranceDeg) {
-            Diagnostic d{"contour", "the windows cover " + deg(span) + " (from " +
-                                        deg(c.front().phiStartDeg) + " to " +
-                                        deg(c.back().phiEndDeg) +
-                                        "); they must cover exactly one turn, 360°"};
-            d.places = {{0, SegmentPart::PhiStart}, {c.size() - 1, SegmentPart::PhiEnd}};
-            d.code = DiagnosticCode::WindowsNotOneTurn;
-            d.args = {span, c.front().phiStartDeg, c.back().phiEndDeg};
-            m_out.push_back(std::move(d));
+            error(TurnPlace{c.size() - 1}, Code::WindowsNotOneTurn,
+                  {span, c.front().phiStartDeg, c.back().phiEndDeg});
             ok = false;
         }
         return ok;
@@ -403,11 +323,7 @@ private:
             const Eigen::Vector2d right = pointOnSegment(c[next], c[next].phiStartDeg);
             const double gap = (left - right).norm();
             if (!(gap <= kJointToleranceMm)) {
-                m_out.push_back(Diagnostic::atJoint(k, next,
-                                                    "the segments do not meet at " + deg(angle) +
-                                                        ": gap of " + formatNumber(gap) +
-                                                        " mm (at most 1e-06 mm allowed)")
-                                    .coded(DiagnosticCode::JointGap, {angle, gap}));
+                error(JointPlace{k, next}, Code::JointGap, {angle, gap});
             }
         }
     }
@@ -415,22 +331,19 @@ private:
     void checkFollower() {
         if (!m_project.follower) return;
         const FollowerSpec& f = *m_project.follower;
-        checkLength("follower.offset", f.offset);
+        checkLength(FieldPlace{Field::FollowerOffset}, f.offset);
         bool radiusOk = true;
         const FollowerKind& kind = followerKind(f.type);
-        if (kind.hasRadius) radiusOk = checkPositiveLength("follower.radius", f.radius);
+        if (kind.hasRadius)
+            radiusOk = checkPositiveLength(FieldPlace{Field::FollowerRadius}, f.radius);
         if (f.maxPressureAngleDeg) {
-            checkRange("follower.max_pressure_angle_deg", *f.maxPressureAngleDeg, 1e-6, 89.0, "°");
+            checkRange(FieldPlace{Field::FollowerMaxPressureAngle}, *f.maxPressureAngleDeg, 1e-6,
+                       89.0, "°");
         }
         if (f.motion == FollowerMotion::Oscillating) {
-            if (!kind.canSwing) {
-                error("follower.type",
-                      "a flat face moves only translating (math.md §7); use a knife or a roller "
-                      "on an oscillating arm",
-                      DiagnosticCode::FlatFaceOscillating);
-            }
-            checkPoint("follower.pivot", f.pivot);
-            checkPositiveLength("follower.arm_length", f.armLength);
+            if (!kind.canSwing) error(FieldPlace{Field::FollowerType}, Code::FlatFaceOscillating);
+            checkPoint(FieldPlace{Field::FollowerPivot}, f.pivot);
+            checkPositiveLength(FieldPlace{Field::FollowerArmLength}, f.armLength);
         }
         // A roller must fit into every concave arc it rides (its pitch circle R − ρ > 0).
         if (!kind.hasRadius || !radiusOk) return;
@@ -445,11 +358,7 @@ private:
             const Eigen::Vector2d fromCentre = point - arc->center;
             const bool concave = fromCentre.x() * travel.y() - fromCentre.y() * travel.x() < 0.0;
             if (!concave) continue;
-            error("follower.radius",
-                  "must be smaller than the radius " + formatNumber(arc->radius) +
-                      " mm of the concave arc " + segmentLocation(k) + " (got " +
-                      formatNumber(f.radius) + " mm): the roller cannot enter it",
-                  DiagnosticCode::RollerTooLargeForArc,
+            error(FieldPlace{Field::FollowerRadius}, Code::RollerTooLargeForArc,
                   {arc->radius, static_cast<double>(k), f.radius});
         }
     }
@@ -458,32 +367,31 @@ private:
         if (!m_project.samplesPerTurn) return;
         const auto n = *m_project.samplesPerTurn;
         if (n < kMinSamplesPerTurn || n > kMaxSamplesPerTurn) {
-            error("sampling.samples_per_turn",
-                  "must be between 16 and 10000000 (got " + std::to_string(n) + ")",
-                  DiagnosticCode::SamplesOutOfRange, {static_cast<double>(n)});
+            error(FieldPlace{Field::SamplesPerTurn}, Code::SamplesOutOfRange,
+                  {static_cast<double>(n)});
         }
     }
 
     void checkMachining() {
         if (!m_project.machining) return;
         const MachiningSpec& m = *m_project.machining;
-        auto checkAxes = [&](const std::string& key, const std::vector<double>& values, double hi,
+        auto checkAxes = [&](Field key, const std::vector<double>& values, double hi,
                              const char* unit) {
             if (values.size() < 2 || values.size() > 3) {
-                error(key, "must list 2 or 3 axes (got " + std::to_string(values.size()) + ")",
-                      DiagnosticCode::AxisCount, {static_cast<double>(values.size())});
+                error(FieldPlace{key}, Code::AxisCount, {static_cast<double>(values.size())});
             }
             for (std::size_t i = 0; i < values.size(); ++i) {
-                checkRange(key + "[" + std::to_string(i) + "]", values[i], kMinMachineLimit, hi,
+                checkRange(FieldPlace{key, static_cast<int>(i)}, values[i], kMinMachineLimit, hi,
                            unit);
             }
         };
-        checkAxes("machining.axis_accel", m.axisAccel, kMaxAccelMmS2, " mm/s²");
+        checkAxes(Field::MachiningAxisAccel, m.axisAccel, kMaxAccelMmS2, " mm/s²");
         if (!m.axisVmax.empty())
-            checkAxes("machining.axis_vmax", m.axisVmax, kMaxSpeedMmS, " mm/s");
-        checkRange("machining.feed_max", m.feedMax, kMinMachineLimit, kMaxSpeedMmS, " mm/s");
-        checkRange("machining.tool_radius", m.toolRadius, 0.0, kMaxLengthMm, " mm");
-        checkPositiveLength("machining.step", m.step);
+            checkAxes(Field::MachiningAxisVmax, m.axisVmax, kMaxSpeedMmS, " mm/s");
+        checkRange(FieldPlace{Field::MachiningFeedMax}, m.feedMax, kMinMachineLimit, kMaxSpeedMmS,
+                   " mm/s");
+        checkRange(FieldPlace{Field::MachiningToolRadius}, m.toolRadius, 0.0, kMaxLengthMm, " mm");
+        checkPositiveLength(FieldPlace{Field::MachiningStep}, m.step);
     }
 
     const Project& m_project;
@@ -504,34 +412,23 @@ std::pair<double, double> lineWindowDeg(const SegmentSpec& segment, double nearD
 }
 
 std::optional<Diagnostic> jointIndexProblem(std::size_t segmentCount, std::size_t joint,
-                                            const std::string& operation) {
+                                            const char* operation) {
     if (segmentCount < 2) {
-        return Diagnostic{"contour", "a " + operation +
-                                         " needs a joint between two segments (the contour has " +
-                                         std::to_string(segmentCount) + ")"}
-            .coded(DiagnosticCode::JointNeedsTwoSegments,
-                   {operation, static_cast<double>(segmentCount)});
+        return Diagnostic::make(FieldPlace{Field::Contour}, Code::JointNeedsTwoSegments,
+                                {operation, static_cast<double>(segmentCount)});
     }
     if (joint >= segmentCount) {
-        return Diagnostic{"contour", "there is no joint " + std::to_string(joint) +
-                                         ": joints are numbered 0 .. " +
-                                         std::to_string(segmentCount - 1)}
-            .coded(DiagnosticCode::NoSuchJoint,
-                   {static_cast<double>(joint), static_cast<double>(segmentCount - 1)});
+        return Diagnostic::make(
+            FieldPlace{Field::Contour}, Code::NoSuchJoint,
+            {static_cast<double>(joint), static_cast<double>(segmentCount - 1)});
     }
     return std::nullopt;
 }
 
-std::optional<Diagnostic> lengthProblem(const std::string& location, double value) {
-    if (!std::isfinite(value)) {
-        return Diagnostic(location, "must be a finite number (got " + formatNumber(value) + ")")
-            .coded(DiagnosticCode::NotFinite, {value});
-    }
-    if (std::abs(value) > kMaxLengthMm) {
-        return Diagnostic(location,
-                          "magnitude must be at most 1e6 mm (got " + formatNumber(value) + ")")
-            .coded(DiagnosticCode::LengthTooLarge, {value});
-    }
+std::optional<Diagnostic> lengthProblem(const Place& place, double value) {
+    if (!std::isfinite(value)) return Diagnostic::make(place, Code::NotFinite, {value});
+    if (std::abs(value) > kMaxLengthMm)
+        return Diagnostic::make(place, Code::LengthTooLarge, {value});
     return std::nullopt;
 }
 

@@ -46,18 +46,17 @@ Result<std::vector<SegmentSpec>> approximateArcSegment(const std::vector<Segment
                                                        std::size_t k, double maxErrorMm,
                                                        ArcApproximation* report) {
     if (k >= contour.size()) {
-        return Diagnostics{Diagnostic{segmentLocation(k), "no such segment"}.coded(
-            DiagnosticCode::NoSuchSegment, {})};
+        return Diagnostics{Diagnostic::make(SegmentPlace{k}, DiagnosticCode::NoSuchSegment)};
     }
     const SegmentSpec& s = contour[k];
     const Arc* arc = s.as<Arc>();
     if (!arc) {
-        return Diagnostics{Diagnostic::at({k, SegmentPart::Type}, "is not an arc")
-                               .coded(DiagnosticCode::NotAnArc, {})};
+        return Diagnostics{
+            Diagnostic::make(SegmentPlace{k, SegmentPart::Type}, DiagnosticCode::NotAnArc)};
     }
     if (!(maxErrorMm > 0) || !std::isfinite(maxErrorMm)) {
-        return Diagnostics{Diagnostic{"error", "the admissible radial error must be > 0 mm"}.coded(
-            DiagnosticCode::RadialErrorNotPositive, {})};
+        return Diagnostics{Diagnostic::make(FieldPlace{Field::ApproximationError},
+                                            DiagnosticCode::RadialErrorNotPositive)};
     }
     // The arc's piece inside the window, about its own centre, in the direction of travel.
     const Eigen::Vector2d p0 = pointOnSegment(s, s.phiStartDeg) - arc->center;
@@ -68,14 +67,12 @@ Result<std::vector<SegmentSpec>> approximateArcSegment(const std::vector<Segment
         return arc->discriminant(degToRad(phiDeg)) >= 0.0 && p.allFinite();
     };
     if (!meets(s.phiStartDeg, p0)) {
-        return Diagnostics{Diagnostic::at({k, SegmentPart::PhiStart},
-                                          "the ray at the window's start does not meet the arc")
-                               .coded(DiagnosticCode::ApproximationStartMissesArc, {})};
+        return Diagnostics{Diagnostic::make(SegmentPlace{k, SegmentPart::PhiStart},
+                                            DiagnosticCode::ApproximationStartMissesArc)};
     }
     if (!meets(s.phiEndDeg, p1)) {
-        return Diagnostics{Diagnostic::at({k, SegmentPart::PhiEnd},
-                                          "the ray at the window's end does not meet the arc")
-                               .coded(DiagnosticCode::ApproximationEndMissesArc, {})};
+        return Diagnostics{Diagnostic::make(SegmentPlace{k, SegmentPart::PhiEnd},
+                                            DiagnosticCode::ApproximationEndMissesArc)};
     }
     // Direction of travel about the arc's centre: that of the contour's tangent dP/dφ.
     const double phi0 = degToRad(s.phiStartDeg);

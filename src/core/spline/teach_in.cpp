@@ -40,24 +40,22 @@ Result<std::vector<CubicBezier>> splineThroughPoints(const std::vector<Vec>& k, 
     const std::size_t n = k.size();
     if (n < (closed ? 3u : 2u)) {
         if (closed) {
-            return Diagnostics{
-                Diagnostic{"points", "a closed spline needs at least three points"}.coded(
-                    DiagnosticCode::ClosedSplineTooFewPoints, {})};
+            return Diagnostics{Diagnostic::make(FieldPlace{Field::Points},
+                                                DiagnosticCode::ClosedSplineTooFewPoints)};
         }
-        return Diagnostics{Diagnostic{"points", "a spline needs at least two points"}.coded(
-            DiagnosticCode::SplineTooFewPoints, {})};
+        return Diagnostics{
+            Diagnostic::make(FieldPlace{Field::Points}, DiagnosticCode::SplineTooFewPoints)};
     }
     if (!(bulge > 0) || !std::isfinite(bulge)) {
         return Diagnostics{
-            Diagnostic{"bulge", "must be a finite factor > 0 (got " + formatNumber(bulge) + ")"}
-                .coded(DiagnosticCode::BulgeNotPositive, {bulge})};
+            Diagnostic::make(FieldPlace{Field::Bulge}, DiagnosticCode::BulgeNotPositive, {bulge})};
     }
     const std::size_t legs = closed ? n : n - 1;
     for (std::size_t i = 0; i < legs; ++i) {
         if ((k[(i + 1) % n] - k[i]).norm() < 1e-9) {
-            return Diagnostics{Diagnostic{"point[" + std::to_string((i + 1) % n) + "]",
-                                          "repeats the previous point"}
-                                   .coded(DiagnosticCode::PathPointRepeated, {})};
+            return Diagnostics{
+                Diagnostic::make(FieldPlace{Field::Point, static_cast<int>((i + 1) % n)},
+                                 DiagnosticCode::PathPointRepeated)};
         }
     }
     // Per knot: unit direction and the lengths of its incoming and outgoing handles.

@@ -677,27 +677,22 @@ OptimalProfile optimalProfile(const ToolPath& path, const MachineLimits& limits,
 Diagnostics checkMachineLimits(const MachineLimits& lim) {
     Diagnostics errors;
     // Unlimited (+infinity) or within the range in which the arithmetic is sound.
-    auto check = [&](const std::string& where, double value, double lo, double hi,
+    auto check = [&](const FieldPlace& where, double value, double lo, double hi,
                      const char* unit) {
         if (value == kUnlimited || (value >= lo && value <= hi)) return;
-        errors.push_back(
-            Diagnostic(where, "must be between " + formatNumber(lo) + " and " + formatNumber(hi) +
-                                  unit + " (got " + formatNumber(value) + ")")
-                .coded(DiagnosticCode::OutOfRange, {lo, hi, std::string(unit), value}));
+        errors.push_back(Diagnostic::make(where, DiagnosticCode::OutOfRange,
+                                          {lo, hi, std::string(unit), value}));
     };
     for (int i = 0; i < 3; ++i) {
-        check("accel[" + std::to_string(i) + "]", lim.accel[i], kMinMachineLimit, kMaxAccelMmS2,
-              " mm/s²");
-        check("vmax[" + std::to_string(i) + "]", lim.vmax[i], kMinMachineLimit, kMaxSpeedMmS,
-              " mm/s");
+        check({Field::MachineAccel, i}, lim.accel[i], kMinMachineLimit, kMaxAccelMmS2, " mm/s²");
+        check({Field::MachineVmax, i}, lim.vmax[i], kMinMachineLimit, kMaxSpeedMmS, " mm/s");
     }
-    check("feed", lim.feedMax, kMinMachineLimit, kMaxSpeedMmS, " mm/s");
+    check({Field::MachineFeed}, lim.feedMax, kMinMachineLimit, kMaxSpeedMmS, " mm/s");
     return errors;
 }
 
 Diagnostics checkMovingAxesLimited(const ToolPath& path, const MachineLimits& lim) {
     Diagnostics errors;
-    static constexpr const char* kAxes[] = {"x", "y", "z"};
     for (int i = 0; i < 3; ++i) {
         if (!std::isinf(lim.accel[i])) continue;
         for (std::size_t k = 0; k < path.segments.size(); ++k) {
@@ -705,13 +700,9 @@ Diagnostics checkMovingAxesLimited(const ToolPath& path, const MachineLimits& li
             const bool moves =
                 seg.kind == PathSegment::Kind::Arc ? i < 2 : std::abs(seg.tangent(0.0)[i]) > kTiny;
             if (!moves) continue;
-            errors.push_back(
-                Diagnostic("accel[" + std::to_string(i) + "]",
-                           std::string("no acceleration limit for the ") + kAxes[i] +
-                               " axis, along which the path moves (segment " + std::to_string(k) +
-                               "): without one its speed would be unbounded and its time 0")
-                    .coded(DiagnosticCode::AccelerationLimitMissing,
-                           {static_cast<double>(i), static_cast<double>(k)}));
+            errors.push_back(Diagnostic::make(FieldPlace{Field::MachineAccel, i},
+                                              DiagnosticCode::AccelerationLimitMissing,
+                                              {static_cast<double>(i), static_cast<double>(k)}));
             break;
         }
     }
@@ -730,10 +721,10 @@ Diagnostics checkTimingInputs(const ToolPath& path, const MachineLimits& lim, Ti
         errors.insert(errors.end(), unlimited.begin(), unlimited.end());
     }
     if (path.segments.empty()) {
-        errors.push_back(Diagnostic("path", "is empty").coded(DiagnosticCode::PathEmpty, {}));
+        errors.push_back(Diagnostic::make(FieldPlace{Field::Path}, DiagnosticCode::PathEmpty));
     }
     if (method == TimingMethod::Seed && errors.empty()) {
-        const Diagnostics step = checkSeedStep(path, lim.seedStep, "step");
+        const Diagnostics step = checkSeedStep(path, lim.seedStep, Field::SeedStep);
         errors.insert(errors.end(), step.begin(), step.end());
     }
     return errors;

@@ -10,25 +10,17 @@ constexpr double kTinyComponent = 1e-12;
 
 }  // namespace
 
-Diagnostics checkSeedStep(const ToolPath& path, double step, const std::string& location) {
+Diagnostics checkSeedStep(const ToolPath& path, double step, Field field) {
     if (!std::isfinite(step) || !(step >= kMinLengthMm)) {
-        return {Diagnostic(location, "must be a finite length of at least " +
-                                         formatNumber(kMinLengthMm) + " mm (got " +
-                                         formatNumber(step) + ")")
-                    .coded(DiagnosticCode::SeedStepTooSmall, {kMinLengthMm, step})};
+        return {Diagnostic::make(FieldPlace{field}, DiagnosticCode::SeedStepTooSmall,
+                                 {kMinLengthMm, step})};
     }
     const double length = path.length();
     const double steps = length / step;
     if (!(steps <= kMaxSeedSteps)) {
-        return {Diagnostic(location, formatNumber(step) + " mm makes " +
-                                         formatNumber(std::ceil(steps)) + " steps on this " +
-                                         formatNumber(length) +
-                                         " mm path; the seed method takes at most " +
-                                         formatNumber(kMaxSeedSteps) + ": a step of at least " +
-                                         formatNumber(length / kMaxSeedSteps) + " mm")
-                    .coded(DiagnosticCode::SeedStepTooMany,
-                           {step, std::ceil(steps), length, static_cast<double>(kMaxSeedSteps),
-                            length / kMaxSeedSteps})};
+        return {Diagnostic::make(
+            FieldPlace{field}, DiagnosticCode::SeedStepTooMany,
+            {step, std::ceil(steps), length, kMaxSeedSteps, length / kMaxSeedSteps})};
     }
     return {};
 }

@@ -20,11 +20,10 @@ namespace cam {
 inline constexpr double kMaxSeedSteps = 1e7;
 
 /// @brief A step the seed method can walk on `path`: finite, at least kMinLengthMm, and at most
-/// kMaxSeedSteps steps over the path's length. Errors are located `location` (the caller names
+/// kMaxSeedSteps steps over the path's length. Errors are located at `field` (the caller names
 /// where the step came from: `machining.step`, `--step`) and name the limit and the smallest
 /// step that would do.
-[[nodiscard]] Diagnostics checkSeedStep(const ToolPath& path, double step,
-                                        const std::string& location);
+[[nodiscard]] Diagnostics checkSeedStep(const ToolPath& path, double step, Field field);
 
 /// @brief The seed's speed for one step of length `step` in direction n after axis speeds
 /// vPrev: the largest x with |n_i·x − v_i|·x/step <= a_i on every axis, capped by the feed.

@@ -28,7 +28,7 @@ Result<TimedPath> timePath(ToolPath path, const TimingJob& job, const std::atomi
         std::find(job.methods.begin(), job.methods.end(), TimingMethod::Seed) != job.methods.end();
     if (seed) {
         // Refused before anything is computed, and named after where the step came from.
-        const Diagnostics step = checkSeedStep(path, job.limits.seedStep, job.stepLocation);
+        const Diagnostics step = checkSeedStep(path, job.limits.seedStep, job.stepField);
         if (!step.empty()) return step;
     }
     TimedPath timed;

@@ -26,7 +26,7 @@ struct TimingJob {
     std::optional<TimingMethod> profileMethod;
     std::size_t profilePoints = 4000;
     /// Where the seed step came from, for its errors: `machining.step` (a project's), `--step`.
-    std::string stepLocation = "machining.step";
+    Field stepField = Field::MachiningStep;
 };
 
 /// @brief The job a project's `machining` section describes: its tool radius and its limits.
@@ -43,7 +43,7 @@ struct TimedPath {
 /// @brief The contour's tool path (toolPathFromContour with the job's tool radius), then the
 /// job on it. Errors: the tool path's, located `contour[k]`; the limits', located as
 /// machiningTime does (`accel[i]`, `feed`, …); a seed step too small for the path (more than
-/// kMaxSeedSteps steps), located `stepLocation`, before any work; or {"", "cancelled"} once
+/// kMaxSeedSteps steps), located at `stepField`, before any work; or {"", "cancelled"} once
 /// `cancel` is set, which every step polls.
 [[nodiscard]] Result<TimedPath> timeContour(const Contour& contour, const TimingJob& job,
                                             const std::atomic<bool>* cancel = nullptr);

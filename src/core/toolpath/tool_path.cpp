@@ -107,20 +107,17 @@ double arcReach(const Vec2& center, double radius, const Vec2& from, double swee
 
 Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
     Diagnostics errors;
-    auto at = [](std::size_t k) { return "point[" + std::to_string(k) + "]"; };
+    auto at = [](std::size_t k) { return FieldPlace{Field::Point, static_cast<int>(k)}; };
     for (std::size_t k = 0; k < points.size(); ++k) {
         const PathPoint& p = points[k];
         if (!p.position.allFinite() || !std::isfinite(p.bulge) ||
             p.position.cwiseAbs().maxCoeff() > kMaxPathCoordinateMm) {
-            errors.push_back(Diagnostic(at(k),
-                                        "coordinates must be finite, at most 1e6 mm, and the "
-                                        "bulge finite")
-                                 .coded(DiagnosticCode::PathPointInvalid, {}));
+            errors.push_back(Diagnostic::make(at(k), DiagnosticCode::PathPointInvalid));
         }
     }
     if (points.size() < 2) {
-        errors.push_back(Diagnostic("points", "a path needs at least two points")
-                             .coded(DiagnosticCode::PathTooFewPoints, {}));
+        errors.push_back(
+            Diagnostic::make(FieldPlace{Field::Points}, DiagnosticCode::PathTooFewPoints));
     }
     if (!errors.empty()) return errors;
 
@@ -129,8 +126,7 @@ Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
         const Vec3& a = points[k].position;
         const Vec3& b = points[k + 1].position;
         if ((b - a).norm() < 1e-9) {
-            errors.push_back(Diagnostic(at(k + 1), "repeats the previous point")
-                                 .coded(DiagnosticCode::PathPointRepeated, {}));
+            errors.push_back(Diagnostic::make(at(k + 1), DiagnosticCode::PathPointRepeated));
             continue;
         }
         const double bulge = points[k].bulge;
@@ -139,19 +135,14 @@ Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
             continue;
         }
         if (std::abs(b.z() - a.z()) > 1e-9) {
-            errors.push_back(
-                Diagnostic(at(k), "an arc (bulge " + formatNumber(bulge) +
-                                      ") must keep its height, but z goes from " +
-                                      formatNumber(a.z()) + " to " + formatNumber(b.z()))
-                    .coded(DiagnosticCode::PathArcChangesHeight, {bulge, a.z(), b.z()}));
+            errors.push_back(Diagnostic::make(at(k), DiagnosticCode::PathArcChangesHeight,
+                                              {bulge, a.z(), b.z()}));
             continue;
         }
         const Vec2 chord = xy(b) - xy(a);
         const double c = chord.norm();
         if (c < 1e-9) {
-            errors.push_back(
-                Diagnostic(at(k + 1), "an arc needs two distinct points in the XY plane")
-                    .coded(DiagnosticCode::PathArcNoChord, {}));
+            errors.push_back(Diagnostic::make(at(k + 1), DiagnosticCode::PathArcNoChord));
             continue;
         }
         // DXF bulge b = tan(θ/4): the centre sits (c/4)·(1/b − b) to the left of the chord and
@@ -165,12 +156,8 @@ Result<ToolPath> toolPathFromPoints(const std::vector<PathPoint>& points) {
         // huge radius (bulge 1e9 on a 10 mm chord: 2.5e9 mm), with a length and times to match.
         const double reach = arcReach(center, radius, (xy(a) - center), theta);
         if (!(reach <= kMaxPathCoordinateMm)) {
-            errors.push_back(
-                Diagnostic(at(k), "the arc (bulge " + formatNumber(bulge) + ") reaches " +
-                                      formatNumber(reach) +
-                                      " mm from the origin; a path must stay within " +
-                                      formatNumber(kMaxPathCoordinateMm) + " mm")
-                    .coded(DiagnosticCode::PathArcTooFar, {bulge, reach, kMaxPathCoordinateMm}));
+            errors.push_back(Diagnostic::make(at(k), DiagnosticCode::PathArcTooFar,
+                                              {bulge, reach, kMaxPathCoordinateMm}));
             continue;
         }
         const Vec2 ra = xy(a) - center;
@@ -349,14 +336,9 @@ Result<ContourOffset> offsetContour(const Contour& contour, double toolRadius,
                  biarcsOf(CubicBezier{seg.bezierKernel.p}, splineToleranceMm, 0.0, cancel)) {
                 const auto shifted = offsetPiece(piece, toolRadius);
                 if (!shifted) {
-                    errors.push_back(
-                        Diagnostic::at({k}, "the tool radius " + formatNumber(toolRadius) +
-                                                " mm is larger than this curve's tightest "
-                                                "concave radius " +
-                                                formatNumber(piece.radius) +
-                                                " mm: the offset path degenerates")
-                            .coded(DiagnosticCode::ToolAboveCurveRadius,
-                                   {toolRadius, piece.radius}));
+                    errors.push_back(Diagnostic::make(SegmentPlace{k},
+                                                      DiagnosticCode::ToolAboveCurveRadius,
+                                                      {toolRadius, piece.radius}));
                     break;
                 }
                 offset[k].push_back(*shifted);
@@ -379,11 +361,8 @@ Result<ContourOffset> offsetContour(const Contour& contour, double toolRadius,
         const double convex = wa.dot(a.normal) >= 0 ? 1.0 : -1.0;
         const double radius = r + convex * toolRadius;
         if (radius <= 1e-9) {
-            errors.push_back(
-                Diagnostic::at({k}, "the tool radius " + formatNumber(toolRadius) +
-                                        " mm is not smaller than the radius " + formatNumber(r) +
-                                        " mm of this concave arc: the offset path degenerates")
-                    .coded(DiagnosticCode::ToolNotBelowArcRadius, {toolRadius, r}));
+            errors.push_back(Diagnostic::make(
+                SegmentPlace{k}, DiagnosticCode::ToolNotBelowArcRadius, {toolRadius, r}));
             continue;
         }
         const double direction = cross(wa, a.tangent) >= 0 ? 1.0 : -1.0;
@@ -456,8 +435,7 @@ Result<ContourOffset> offsetContour(const Contour& contour, double toolRadius,
         if (!best) best = nearest(before.back(), after.front(), false);
         if (!best) {
             errors.push_back(
-                Diagnostic::atJoint(k, next, "the offset segments do not meet at this corner")
-                    .coded(DiagnosticCode::OffsetCornerUnmet, {}));
+                Diagnostic::make(JointPlace{k, next}, DiagnosticCode::OffsetCornerUnmet));
             continue;
         }
         before.resize(keepBefore + 1);
@@ -472,12 +450,8 @@ Result<ContourOffset> offsetContour(const Contour& contour, double toolRadius,
         if (cancelRequested(cancel)) return cancelledDiagnostics();
         for (std::size_t i = 0; i < joined[k].size(); ++i) {
             if (!trimmedWithin(offset[k][i], joined[k][i])) {
-                errors.push_back(
-                    Diagnostic::at({k}, "the tool radius " + formatNumber(toolRadius) +
-                                            " mm is too large here: at its concave corners the "
-                                            "offset of this segment would have to be trimmed "
-                                            "beyond its ends")
-                        .coded(DiagnosticCode::ToolTrimsSegment, {toolRadius}));
+                errors.push_back(Diagnostic::make(SegmentPlace{k}, DiagnosticCode::ToolTrimsSegment,
+                                                  {toolRadius}));
                 break;
             }
         }
