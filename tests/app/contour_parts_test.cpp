@@ -250,6 +250,18 @@ TEST(ContourFollowerGlyph, ThePlotItemsShowTheShapeAndHideWithoutOne) {
     m = glyph.markers();
     EXPECT_TRUE(m.pivotShown);
     EXPECT_EQ(m.pivot, QPointF(0.0, 50.0));
+    // A translating knife's follower point is where it touches, not the far end of its
+    // line of motion.
+    FollowerGlyphShape knife;
+    knife.center = {20.0, 0.0};
+    knife.guideStart = {20.0, 0.0};
+    knife.guideEnd = {31.25, 0.0};
+    knife.contact = {20.0, 0.0};
+    knife.normalTip = {23.0, 0.0};
+    glyph.show(knife);
+    m = glyph.markers();
+    EXPECT_EQ(m.center, QPointF(20.0, 0.0));
+    EXPECT_EQ(m.rollerRadius, 0.0);
     glyph.show(std::nullopt);
     m = glyph.markers();
     EXPECT_FALSE(m.shown);

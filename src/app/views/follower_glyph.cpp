@@ -82,6 +82,7 @@ void FollowerGlyph::show(const std::optional<FollowerGlyphShape>& shape) {
     for (QCPAbstractItem* item : items()) item->setVisible(false);
     if (!shape) return;
     const FollowerGlyphShape& g = *shape;
+    m_center = QPointF(g.center.x(), g.center.y());
     if (g.pivot) {
         m_pivot->position->setCoords(g.pivot->x(), g.pivot->y());
         m_pivot->setVisible(true);
@@ -117,11 +118,11 @@ FollowerMarkers FollowerGlyph::markers() const {
     m.normalTip = m_normal->end->coords();
     if (m_roller->visible()) {
         const QPointF a = m_roller->topLeft->coords(), b = m_roller->bottomRight->coords();
-        m.center = (a + b) / 2.0;
         m.rollerRadius = (b.x() - a.x()) / 2.0;
-    } else {
-        m.center = m_guide->end->coords();
     }
+    // The follower point itself, not an end of the guide: a translating knife's or flat
+    // face's line of motion runs on past it.
+    m.center = m_center;
     return m;
 }
 

@@ -69,6 +69,7 @@ private:
     QCPItemLine* m_face = nullptr;
     QCPItemTracer* m_contact = nullptr;
     QCPItemLine* m_normal = nullptr;
+    QPointF m_center;  ///< the follower point of the shape shown last
 };
 
 }  // namespace cam
