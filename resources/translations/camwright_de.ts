@@ -3,7 +3,7 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <location filename="../../src/core/common/diagnostic_catalogue.cpp" line="+19" />
+        <location filename="../../src/core/common/diagnostic_catalogue.cpp" line="+20" />
         <source>must be a finite number (got %1)</source>
         <translation>muss eine endliche Zahl sein (ist %1)</translation>
     </message>
@@ -2386,7 +2386,7 @@
         <translation>Die Kontur aus der Bewegung des Stößels entwerfen (Strg+D)</translation>
     </message>
     <message>
-        <location line="+100" />
+        <location line="+101" />
         <source>&lt;b&gt;Segments&lt;/b&gt;: the contour as a table, one row per arc, line or spline piece. Each owns a polar window [φ start, φ end) of the turn; together they cover one turn. Type into a cell and press Enter; Ins inserts, Del deletes. A red cell's tooltip names its problem. F1: the user guide's section on the table.</source>
         <translation>&lt;b&gt;Segmente&lt;/b&gt;: die Kontur als Tabelle, eine Zeile je Bogen, Gerade oder Spline-Stück. Jedes besitzt ein Polarfenster [φ Anfang, φ Ende) der Umdrehung; zusammen decken sie eine Umdrehung ab. In eine Zelle tippen und Eingabe drücken; Einfg fügt ein, Entf löscht. Der Tooltip einer roten Zelle nennt ihr Problem. F1: der Abschnitt des Handbuchs über die Tabelle.</translation>
     </message>
@@ -2743,7 +2743,7 @@
 <context>
     <name>cam::FollowerPanel</name>
     <message>
-        <location filename="../../src/app/views/follower_panel.cpp" line="+51" />
+        <location filename="../../src/app/views/follower_panel.cpp" line="+52" />
         <source>What touches the cam (math.md §7)</source>
         <translation>Was die Kurvenscheibe berührt (math.md §7)</translation>
     </message>
@@ -2878,12 +2878,24 @@
         <translation>Druckwinkel [°]</translation>
     </message>
     <message>
-        <location line="+142" />
+        <location line="+22" />
+        <source>Radius of curvature over the turn, positive where convex, negative where hollow; clipped at twice the cam's largest radius (a straight stretch reads as the clip). Blue: the profile; grey: the roller's pitch curve; dashed: the roller's radius and minus the tool's</source>
+        <translation>Krümmungsradius über die Umdrehung, positiv wo konvex, negativ wo hohl; begrenzt auf den doppelten größten Radius der Kurvenscheibe (ein gerades Stück liegt auf der Grenze). Blau: das Profil; grau: die Rollenmittelpunktsbahn; gestrichelt: der Rollenradius und minus der Werkzeugradius</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>ρ [mm]</source>
+        <translation>ρ [mm]</translation>
+    </message>
+    <message>
+        <location line="+167" />
+        <location line="+28" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-28" />
+        <location line="+29" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
@@ -2918,37 +2930,62 @@
         <translation>Die Spitze der Vorlage auf der radialen Geraden: wählen Sie einen Stößel, um ihn zu prüfen.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+7" />
         <source>Largest pressure angle on rise: %1 at %2 (limit %3)</source>
         <translation>Größter Druckwinkel im Hub: %1 bei %2 (Grenze %3)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+5" />
         <source>Largest pressure angle on return: %1 at %2 (limit %3)</source>
         <translation>Größter Druckwinkel im Rückhub: %1 bei %2 (Grenze %3)</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>Pressure angle beyond the limit from %1 to %2</source>
-        <translation>Druckwinkel über der Grenze von %1 bis %2</translation>
+        <location line="+5" />
+        <source>Largest pressure angle in a dwell: %1 at %2 (limit %3)</source>
+        <translation>Größter Druckwinkel in einer Rast: %1 bei %2 (Grenze %3)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
+        <source>Pressure angle beyond the limit from %1 to %2: up to %3 at %4, %5 too much</source>
+        <translation>Druckwinkel über der Grenze von %1 bis %2: bis %3 bei %4, %5 zu viel</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>Smallest convex radius of the profile: %1 at %2</source>
+        <translation>Kleinster konvexer Radius des Profils: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Smallest concave radius of the profile: %1 at %2 (tool radius %3)</source>
+        <translation>Kleinster konkaver Radius des Profils: %1 bei %2 (Werkzeugradius %3)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Smallest concave radius of the profile: %1 at %2</source>
+        <translation>Kleinster konkaver Radius des Profils: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The profile has no concave stretch.</source>
+        <translation>Das Profil hat keine hohle Stelle.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Smallest convex radius of the pitch curve: %1 at %2 (roller radius %3)</source>
+        <translation>Kleinster konvexer Radius der Rollenmittelpunktsbahn: %1 bei %2 (Rollenradius %3)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Smallest concave radius of the pitch curve: %1 at %2</source>
+        <translation>Kleinster konkaver Radius der Rollenmittelpunktsbahn: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="-41" />
         <source>The follower cannot reach the profile at %1: it jumps from %2 to %3</source>
         <translation>Der Stößel erreicht das Profil bei %1 nicht: er springt von %2 nach %3</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>Smallest radius of curvature of the profile: %1 at %2</source>
-        <translation>Kleinster Krümmungsradius des Profils: %1 bei %2</translation>
-    </message>
-    <message>
-        <location line="+4" />
-        <source>Smallest radius of curvature of the pitch curve: %1 at %2</source>
-        <translation>Kleinster Krümmungsradius der Rollenmittelpunktsbahn: %1 bei %2</translation>
-    </message>
-    <message>
-        <location line="+4" />
+        <location line="+46" />
         <source>Face width needed: %1</source>
         <translation>Nötige Tellerbreite: %1</translation>
     </message>
@@ -3293,7 +3330,7 @@
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+115" />
+        <location line="+118" />
         <source>Cursor at %1</source>
         <translation>Cursor bei %1</translation>
     </message>

@@ -113,7 +113,9 @@ void MainWindow::wireResults() {
         m_labels->arrived();
         v.plots->setResult(result);
         v.follower->setResult(result);
-        v.follower->pressurePlot()->xAxis->setRange(v.plots->plot(0)->xAxis->range());
+        for (QCustomPlot* plot : v.follower->turnPlots()) {
+            plot->xAxis->setRange(v.plots->plot(0)->xAxis->range());
+        }
     });
     connect(m_results, &ResultHub::refined, this,
             [&v](const ComputeResultPtr& result, bool checks) {
@@ -153,10 +155,11 @@ void MainWindow::wireCursor() {
     // Whoever points at an instant moves the cursor.
     connect(v.contour, &ContourView::cursorAngleChanged, m_cursor, &CursorModel::setAtAngle);
     connect(v.plots, &KinematicsPlots::cursorMoved, m_cursor, &CursorModel::setAtPlotX);
-    QCustomPlot* pressure = v.follower->pressurePlot();
-    connect(pressure, &QCustomPlot::mouseMove, this, [this, pressure](QMouseEvent* e) {
-        m_cursor->setAtPlotX(pressure->xAxis->pixelToCoord(e->position().x()));
-    });
+    for (QCustomPlot* plot : v.follower->turnPlots()) {
+        connect(plot, &QCustomPlot::mouseMove, this, [this, plot](QMouseEvent* e) {
+            m_cursor->setAtPlotX(plot->xAxis->pixelToCoord(e->position().x()));
+        });
+    }
     connect(v.joints, &JointsPanel::jointPicked, this, [this](int, int right, double phi) {
         if (!m_results->shown()) return;
         m_cursor->setAtAngle(phi);

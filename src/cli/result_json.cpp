@@ -64,9 +64,23 @@ Json followerAnalysisJson(const Loaded& loaded) {
     const auto angle = [](const FollowerExtremum& e) {
         return Json{{"value_deg", radToDeg(e.value)}, {"phi_deg", radToDeg(e.phi)}};
     };
+    const auto angleOrNull = [&](const std::optional<FollowerExtremum>& e) {
+        return e ? angle(*e) : Json(nullptr);
+    };
+    const auto radiusOrNull = [&](const std::optional<FollowerExtremum>& e) {
+        return e ? one(*e) : Json(nullptr);
+    };
+    const auto curvature = [&](const CurvatureExtremes& c) {
+        return Json{{"min_convex", radiusOrNull(c.minConvex)},
+                    {"min_concave", radiusOrNull(c.minConcave)}};
+    };
     Json exceeded = Json::array();
     for (const AngleRange& r : a.pressureExceeded) {
-        exceeded.push_back({{"from_deg", radToDeg(r.from)}, {"to_deg", radToDeg(r.to)}});
+        exceeded.push_back({{"from_deg", radToDeg(r.from)},
+                            {"to_deg", radToDeg(r.to)},
+                            {"peak_deg", radToDeg(r.peak.value)},
+                            {"peak_phi_deg", radToDeg(r.peak.phi)},
+                            {"excess_deg", radToDeg(r.peak.value - a.limitRad)}});
     }
     Json undercut = Json::array();
     for (const NonContact& c : a.undercut) {
@@ -98,13 +112,26 @@ Json followerAnalysisJson(const Loaded& loaded) {
         f["a"] = range(a.aMin, a.aMax);
         f["j"] = range(a.jMin, a.jMax);
     }
+    Json curvatures{{"profile", curvature(a.profileCurvature)},
+                    {"pitch", curvature(a.pitchCurvature)}};
+    const double toolRadius = loaded.project.machining ? loaded.project.machining->toolRadius : 0.0;
+    const CurvatureVerdict verdict = curvatureVerdict(a, model.spec(), toolRadius);
+    if (verdict.rollerFits) {
+        curvatures["roller_radius"] = model.spec().radius;
+        curvatures["roller_fits"] = *verdict.rollerFits;
+    }
+    if (verdict.toolFits) {
+        curvatures["tool_radius"] = toolRadius;
+        curvatures["tool_fits"] = *verdict.toolFits;
+    }
     f.update(Json{{"pressure_angle",
-                   {{"rise", angle(a.pressureRise)},
-                    {"return", angle(a.pressureReturn)},
+                   {{"rise", angleOrNull(a.pressure.rise)},
+                    {"return", angleOrNull(a.pressure.fall)},
+                    {"dwell", angleOrNull(a.pressure.dwell)},
+                    {"max", angle(a.pressure.max)},
                     {"limit_deg", radToDeg(a.limitRad)},
                     {"exceeded", std::move(exceeded)}}},
-                  {"rho_profile_min", one(a.rhoProfileMin)},
-                  {"rho_pitch_min", one(a.rhoPitchMin)},
+                  {"curvature", std::move(curvatures)},
                   {"undercut", std::move(undercut)}});
     if (followerKind(model.spec().type).flatFace) f["face_width"] = a.faceWidth;
     return f;

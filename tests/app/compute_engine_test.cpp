@@ -138,11 +138,14 @@ TEST(ComputeEngine, AFirstPictureLeavesTheArmsDesignChecksToItsRefinement) {
     const FollowerModel model = FollowerModel::build(contour, *p.follower).value();
     const FollowerAnalysis expected =
         analyzeFollower(model, p.motion.omegaRadS(), contour.phiBegin());
-    EXPECT_GT(expected.pressureRise.value, 0.0);
-    EXPECT_EQ(whole.followerChecks.pressureRise.value, expected.pressureRise.value);
-    EXPECT_EQ(whole.followerChecks.pressureRise.phi, expected.pressureRise.phi);
-    EXPECT_EQ(whole.followerChecks.pressureReturn.value, expected.pressureReturn.value);
-    EXPECT_EQ(whole.followerChecks.rhoPitchMin.value, expected.rhoPitchMin.value);
+    ASSERT_TRUE(expected.pressure.rise && expected.pressure.fall);
+    EXPECT_GT(expected.pressure.rise->value, 0.0);
+    EXPECT_EQ(whole.followerChecks.pressure.rise->value, expected.pressure.rise->value);
+    EXPECT_EQ(whole.followerChecks.pressure.rise->phi, expected.pressure.rise->phi);
+    EXPECT_EQ(whole.followerChecks.pressure.fall->value, expected.pressure.fall->value);
+    ASSERT_TRUE(expected.pitchCurvature.minConvex);
+    EXPECT_EQ(whole.followerChecks.pitchCurvature.minConvex->value,
+              expected.pitchCurvature.minConvex->value);
     EXPECT_EQ(whole.followerChecks.limitRad, expected.limitRad);
     EXPECT_EQ(whole.followerChecks.undercut.size(), expected.undercut.size());
     // The curve is the first picture's.

@@ -151,14 +151,20 @@ TEST(FollowerPanel, TheChecksAreTheCoresAndAClickGoesToTheirAngle) {
     const QStringList lines = window.followerPanel()->checkLines();
     ASSERT_FALSE(lines.isEmpty());
     EXPECT_TRUE(
-        lines[0].contains(formatQuantity(DisplayQuantity::Angle, radToDeg(a.pressureRise.value))))
+        lines[0].contains(formatQuantity(DisplayQuantity::Angle, radToDeg(a.pressure.rise->value))))
         << lines[0].toStdString();
     // 45° is the swinging arm's default limit; it is exceeded in 12 ranges on this cam.
     EXPECT_TRUE(lines[0].contains("(limit 45°)")) << lines[0].toStdString();
     EXPECT_EQ(lines.filter("beyond the limit").size(),
               static_cast<qsizetype>(a.pressureExceeded.size()));
+    // Each phase whose largest angle is beyond the limit is a failed check, and each range.
+    int phases = 0;
+    for (const auto& phase : {a.pressure.rise, a.pressure.fall, a.pressure.dwell}) {
+        phases += phase && phase->value > a.limitRad ? 1 : 0;
+    }
+    EXPECT_GE(phases, 2);
     EXPECT_EQ(window.followerPanel()->problemCount(),
-              static_cast<int>(a.pressureExceeded.size()) + 2);
+              static_cast<int>(a.pressureExceeded.size()) + phases);
 
     // The pressure-angle plot: the core's angle at every point, the limit as two lines, red
     // exactly where it is beyond.
@@ -194,6 +200,54 @@ TEST(FollowerPanel, TheChecksAreTheCoresAndAClickGoesToTheirAngle) {
     EXPECT_NEAR(phi, a.pressureExceeded.front().from, 1e-12);
     const double expected = std::fmod(phi / result->omega + result->period, result->period);
     EXPECT_NEAR(window.cursorTime(), expected, 1e-12);
+}
+
+TEST(FollowerPanel, TheDockTellsConvexFromConcaveAndPlotsBothRadiiOverTheTurn) {
+    // The seed's six-lobe cam under a 2 mm roller (offset 3 mm): hollows of 4.84070597 mm,
+    // convex arcs of 8.10318055 mm (math.md §3); the pitch curve's are 2 mm less and more.
+    const QString path = QString::fromStdString(
+        test::dataPath("reference/followers/six-lobe-roller-offset.cam.json"));
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(path).isEmpty());
+    window.show();
+    ASSERT_TRUE(waitForResult(window));
+    const ComputeResultPtr result = window.engine()->latestResult();
+    ASSERT_TRUE(result->ok() && result->follower);
+    const QStringList lines = window.followerPanel()->checkLines();
+    const auto has = [&](const QString& start, double mm) {
+        const QString text = start + formatQuantity(DisplayQuantity::Length, mm);
+        return !lines.filter(text).isEmpty();
+    };
+    EXPECT_TRUE(has("Smallest convex radius of the profile: ", 8.10318055))
+        << lines.join('\n').toStdString();
+    EXPECT_TRUE(has("Smallest concave radius of the profile: ", 4.84070597));
+    EXPECT_TRUE(has("Smallest convex radius of the pitch curve: ", 10.10318055));
+    EXPECT_TRUE(has("Smallest concave radius of the pitch curve: ", 2.84070597));
+    EXPECT_TRUE(lines.filter("radius of curvature").isEmpty());  // no signed minimum any more
+    EXPECT_FALSE(lines.filter("Largest pressure angle on return").isEmpty());
+    EXPECT_TRUE(lines.filter("in a dwell").isEmpty());  // this cam has none
+
+    // The plot: the core's signed radii at every point, clipped at twice the cam's largest
+    // radius so that both signs read beside a straight stretch's +∞.
+    QCustomPlot* plot = window.followerPanel()->curvaturePlot();
+    ASSERT_TRUE(plot->isVisible());
+    const double clip = window.followerPanel()->curvatureClip();
+    EXPECT_GT(clip, 2.0 * 8.10318055);
+    const auto profile = plot->graph(0)->data(), pitch = plot->graph(1)->data();
+    ASSERT_EQ(profile->size(), static_cast<int>(ComputeResult::kFollowerCurvePoints + 1));
+    int convex = 0, concave = 0;
+    for (int k = 0; k < profile->size(); k += 11) {
+        const double t = result->period * k / ComputeResult::kFollowerCurvePoints;
+        const FollowerState st = result->follower->at(result->omega * t, result->omega);
+        EXPECT_NEAR(profile->at(k)->value, std::clamp(st.rhoProfile, -clip, clip), 1e-9) << k;
+        EXPECT_NEAR(pitch->at(k)->value, std::clamp(st.rhoPitch, -clip, clip), 1e-9) << k;
+        convex += profile->at(k)->value > 0 ? 1 : 0;
+        concave += profile->at(k)->value < 0 ? 1 : 0;
+    }
+    EXPECT_GT(convex, 10);
+    EXPECT_GT(concave, 10);
+    EXPECT_GE(plot->yAxis->range().lower, -1.1 * clip);
+    EXPECT_LE(plot->yAxis->range().upper, 1.1 * clip);
 }
 
 TEST(FollowerPanel, AnEditsChecksFollowItsFirstPictureAndTheListIsNeverEmptyMeanwhile) {

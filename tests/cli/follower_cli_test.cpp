@@ -280,6 +280,59 @@ TEST(CliFollower, WhatCannotBeComputedIsRefusedWithItsPlace) {
     EXPECT_EQ(test::runCli({"validate", path}).exitCode, 0);
 }
 
+// analyze's curvature tells convex from concave (each a magnitude, with its angle) and checks
+// them against the roller and the cutter; its pressure angle is a magnitude per phase. The
+// seed's six-lobe cam has two radii (math.md §3): convex arcs of 8.10318055 mm and hollows of
+// 4.84070597 mm; a 2 mm roller's pitch curve adds 2 mm to the first and takes it from the
+// second.
+TEST(CliAnalyze, CurvatureIsToldApartAndPressureAnglesArePerPhase) {
+    const std::string path = test::dataPath("reference/followers/six-lobe-roller-offset.cam.json");
+    const auto run = test::runCli({"analyze", path});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Json f = Json::parse(run.out)["follower"];
+    EXPECT_FALSE(f.contains("rho_profile_min"));
+    EXPECT_FALSE(f.contains("rho_pitch_min"));
+    const Json& c = f["curvature"];
+    EXPECT_NEAR(c["profile"]["min_convex"]["value"].get<double>(), 8.10318055, 1e-7);
+    EXPECT_NEAR(c["profile"]["min_concave"]["value"].get<double>(), 4.84070597, 1e-7);
+    EXPECT_NEAR(c["pitch"]["min_convex"]["value"].get<double>(), 8.10318055 + 2.0, 1e-7);
+    EXPECT_NEAR(c["pitch"]["min_concave"]["value"].get<double>(), 4.84070597 - 2.0, 1e-7);
+    EXPECT_TRUE(c["profile"]["min_concave"].contains("phi_deg"));
+    EXPECT_EQ(c["roller_radius"], 2.0);
+    EXPECT_EQ(c["roller_fits"], true);
+    EXPECT_FALSE(c.contains("tool_fits"));  // the project names no cutter
+
+    const Json& p = f["pressure_angle"];
+    EXPECT_TRUE(p["dwell"].is_null());  // no arc is centred on the axis: no dwell
+    const double rise = p["rise"]["value_deg"], fall = p["return"]["value_deg"];
+    EXPECT_GT(rise, 0.0);
+    EXPECT_GT(fall, 0.0);  // a magnitude, not the most negative angle
+    EXPECT_EQ(p["max"]["value_deg"].get<double>(), std::max(rise, fall));
+    const double limit = p["limit_deg"];
+    ASSERT_FALSE(p["exceeded"].empty());
+    for (const Json& r : p["exceeded"]) {
+        EXPECT_GT(r["peak_deg"].get<double>(), limit);
+        EXPECT_NEAR(r["excess_deg"].get<double>(), r["peak_deg"].get<double>() - limit, 1e-12);
+        EXPECT_GE(r["peak_phi_deg"].get<double>(), r["from_deg"].get<double>() - 1e-9);
+        EXPECT_LE(r["peak_phi_deg"].get<double>(), r["to_deg"].get<double>() + 1e-9);
+        EXPECT_LE(r["peak_deg"].get<double>(), p["max"]["value_deg"].get<double>() + 1e-12);
+    }
+
+    // A 5 mm cutter does not enter a 4.84 mm hollow; a 4.8 mm one does.
+    Json project = Json::parse(test::readFile(path));
+    for (const double tool : {5.0, 4.8}) {
+        project["machining"] = {
+            {"axis_accel", {500, 500, 200}}, {"feed_max", 100}, {"tool_radius", tool}};
+        const std::string with =
+            test::writeTestTempFile("analyze", "tool.cam.json", project.dump());
+        const auto again = test::runCli({"analyze", with});
+        ASSERT_EQ(again.exitCode, 0) << again.err;
+        const Json cc = Json::parse(again.out)["follower"]["curvature"];
+        EXPECT_EQ(cc["tool_radius"], tool);
+        EXPECT_EQ(cc["tool_fits"], tool < 4.84070597) << tool;
+    }
+}
+
 // Every bundled example is a cam a designer may build on: it validates, and its follower
 // rides it within the project's pressure-angle limit, with no undercut and no stretch it
 // cannot reach.

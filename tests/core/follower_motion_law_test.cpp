@@ -88,7 +88,7 @@ double largestPressureAngleDeg(const Contour& cam, double e) {
     spec.offset = e;
     const FollowerModel model = FollowerModel::build(cam, spec).value();
     const FollowerAnalysis a = analyzeFollower(model, 1.0, cam.phiBegin());
-    return radToDeg(std::max(a.pressureRise.value, -a.pressureReturn.value));
+    return radToDeg(a.pressure.max.value);
 }
 
 TEST(FollowerMotionLaw, TheKnifesLargestPressureAnglesAreMathSection7s) {
@@ -98,6 +98,84 @@ TEST(FollowerMotionLaw, TheKnifesLargestPressureAnglesAreMathSection7s) {
     EXPECT_NEAR(largestPressureAngleDeg(knifeCam(1.5, 0.25, 720), 0.25), 38.477, 1e-3);
     // The smallest prime circle for a 30° limit without offset.
     EXPECT_NEAR(largestPressureAngleDeg(knifeCam(1.75094, 0.0, 720), 0.0), 30.0, 1e-3);
+}
+
+TEST(FollowerMotionLaw, AnOffsetKnifesPressureAngleInEachPhaseIsTheClosedForm) {
+    // The tip P = e·n + (s0 + s)·u moves along u; the profile's tangent is P' = (s' − e)·u +
+    // (s0 + s)·n, so tan|α| = |s' − e| / (s0 + s) (math.md §7). In the dwells s' = 0: the
+    // largest |α| there is atan(e / s0), at the low dwell — not zero.
+    const double Rp = 1.5, e = 0.25, s0 = std::sqrt(Rp * Rp - e * e);
+    FollowerSpec spec;
+    spec.offset = e;
+    const Contour cam = knifeCam(Rp, e, 720);
+    const FollowerAnalysis a =
+        analyzeFollower(FollowerModel::build(cam, spec).value(), 1.0, cam.phiBegin());
+    double rise = 0.0, fall = 0.0;
+    for (int i = 1; i < 200000; ++i) {
+        const double phi = kTwoPi * i / 200000;
+        const Law l = cycloidal(phi);
+        const double alpha = std::atan(std::abs(l.s1 - e) / (s0 + l.s));
+        if (l.s1 > 1e-12) rise = std::max(rise, alpha);
+        if (l.s1 < -1e-12) fall = std::max(fall, alpha);
+    }
+    ASSERT_TRUE(a.pressure.rise && a.pressure.fall && a.pressure.dwell);
+    EXPECT_NEAR(a.pressure.rise->value, rise, 1e-6);
+    EXPECT_NEAR(a.pressure.fall->value, fall, 1e-6);
+    EXPECT_NEAR(radToDeg(a.pressure.fall->value), 38.477, 1e-3);  // math.md §7
+    EXPECT_NEAR(a.pressure.dwell->value, std::atan(e / s0), 1e-6);
+    EXPECT_NEAR(radToDeg(a.pressure.dwell->value), 9.594, 1e-3);
+    EXPECT_EQ(a.pressure.max.value, a.pressure.fall->value);
+    // The dwell's angle is where the law's ds/dφ is within the dwell's tolerance of its
+    // largest value 4/π.
+    const double dwellAt = std::fmod(a.pressure.dwell->phi + kTwoPi, kTwoPi);
+    EXPECT_LE(std::abs(cycloidal(dwellAt).s1), kDwellSlope * 4.0 / kPi) << dwellAt;
+}
+
+TEST(FollowerMotionLaw, ASwingingArmsPressureAngleIsNotZeroInItsDwells) {
+    // A knife on an arm of L = 2.5 about a pivot at d = 3 from the cam's axis, riding the
+    // same cam (base circle 1.5, lift 1). In a dwell the profile is a circle about the axis:
+    // the normal is radial, the tip moves perpendicular to the arm, so |α| = |90° − γ| with γ
+    // the angle at the tip between the axis and the pivot: cos γ = (R² + L² − d²) / (2RL).
+    // Low dwell R = 1.5: |α| = 3.822°; high dwell R = 2.5: |α| = 16.26°.
+    const double d = 3.0, L = 2.5;
+    FollowerSpec spec;
+    spec.motion = FollowerMotion::Oscillating;
+    spec.pivot = Eigen::Vector2d(d, 0.0);
+    spec.armLength = L;
+    const Contour cam = knifeCam(1.5, 0.0, 720);
+    const FollowerModel m = FollowerModel::build(cam, spec).value();
+    const FollowerAnalysis a = analyzeFollower(m, 1.0, cam.phiBegin());
+    const auto dwellAlpha = [&](double R) {
+        return std::abs(kPi / 2 - std::acos((R * R + L * L - d * d) / (2 * R * L)));
+    };
+    ASSERT_NEAR(radToDeg(dwellAlpha(2.5)), 16.26, 5e-3);
+    ASSERT_TRUE(a.pressure.rise && a.pressure.fall && a.pressure.dwell);
+    EXPECT_NEAR(a.pressure.dwell->value, std::max(dwellAlpha(1.5), dwellAlpha(2.5)), 1e-6);
+
+    // On rise and return: the angle between the normal of the tip's path C(φ) (the pitch
+    // curve, by central differences) and the direction the tip moves (perpendicular to the
+    // arm from the pivot turned by φ), largest where the tip moves away from the axis (rise)
+    // and towards it (return).
+    double rise = 0.0, fall = 0.0;
+    constexpr double h = 1e-5;
+    for (int i = 0; i < 100000; ++i) {
+        const double phi = cam.phiBegin() + kTwoPi * i / 100000;
+        const Eigen::Vector2d c = m.at(phi, 1.0).center;
+        const Eigen::Vector2d tangent = (m.at(phi + h, 1.0).center - m.at(phi - h, 1.0).center);
+        const double away = m.at(phi + h, 1.0).center.norm() - m.at(phi - h, 1.0).center.norm();
+        const Eigen::Vector2d pivot(std::cos(phi) * d, std::sin(phi) * d);
+        const Eigen::Vector2d arm = (c - pivot).normalized();
+        const Eigen::Vector2d normal = Eigen::Vector2d(tangent.y(), -tangent.x()).normalized();
+        const Eigen::Vector2d moves(-arm.y(), arm.x());
+        const double alpha = std::acos(std::min(1.0, std::abs(normal.dot(moves))));
+        if (away > 1e-9) rise = std::max(rise, alpha);
+        if (away < -1e-9) fall = std::max(fall, alpha);
+    }
+    EXPECT_NEAR(a.pressure.rise->value, rise, 1e-5);
+    EXPECT_NEAR(a.pressure.fall->value, fall, 1e-5);
+    // Both largest inside their phase, not at a dwell's edge.
+    EXPECT_GT(a.pressure.rise->value, a.pressure.dwell->value + 0.1);
+    EXPECT_GT(a.pressure.fall->value, a.pressure.dwell->value + 0.1);
 }
 
 /// The flat face's design checks on h = Rb + s, the cam a chain of n cubics.
@@ -129,8 +207,10 @@ TEST(FollowerMotionLaw, TheFlatFacesSmallestRadiusAndWidthAreMathSection7s) {
     const double Rb = 1.89263;
     const FollowerAnalysis fine = flatFaceChecks(Rb, 720);
     // min(s + s'') = −1.64263, so Rb = 1.89263 leaves 0.25 mm.
-    EXPECT_NEAR(fine.rhoProfileMin.value, 0.25, 3e-4);
-    EXPECT_LT(fine.rhoProfileMin.value, 0.25);  // the chain's error has this sign
+    ASSERT_TRUE(fine.profileCurvature.minConvex);
+    EXPECT_NEAR(fine.profileCurvature.minConvex->value, 0.25, 3e-4);
+    EXPECT_LT(fine.profileCurvature.minConvex->value, 0.25);  // the chain's error has this sign
+    EXPECT_FALSE(fine.profileCurvature.minConcave);           // convex all round
     // The face spans s' from −1.27324 to +1.27324.
     EXPECT_NEAR(fine.faceWidth, 2.54648, 1e-5);
     EXPECT_TRUE(fine.undercut.empty());

@@ -223,62 +223,121 @@ TEST(FollowerAnalysisTest, ACancelledAnalysisStopsAtOnceAndReturnsNothing) {
     const Contour contour = sixLobe();
     const FollowerModel m = model(contour, FollowerType::Roller, 2.0, 3.0);
     const FollowerAnalysis whole = analyzeFollower(m, 1.0, contour.phiBegin());
-    ASSERT_GT(whole.pressureRise.value, 0.0);
+    ASSERT_TRUE(whole.pressure.rise);
+    ASSERT_GT(whole.pressure.rise->value, 0.0);
     ASSERT_GT(whole.limitRad, 0.0);
     const std::atomic<bool> cancel{true};
     const FollowerAnalysis stopped =
         analyzeFollower(m, 1.0, contour.phiBegin(), kFollowerCheckSamples, &cancel);
-    EXPECT_EQ(stopped.pressureRise.value, 0.0);
+    EXPECT_FALSE(stopped.pressure.rise);
     EXPECT_EQ(stopped.limitRad, 0.0);
     EXPECT_TRUE(stopped.undercut.empty());
 }
 
 TEST(FollowerAnalysisTest, ExtremesAgreeWithADenseSampling) {
     // The refined extremes against the best of 200 000 evenly spaced angles: never worse, and
-    // within what that grid can resolve.
+    // within what that grid can resolve. The pressure angle per phase: the largest |α| while
+    // the roller rises (ds/dφ > 0) and while it returns.
     const Contour contour = sixLobe();
     const double omega = kTwoPi / 0.4;
     const FollowerModel m = model(contour, FollowerType::Roller, 2.0, 3.0);
     const FollowerAnalysis a = analyzeFollower(m, omega, contour.phiBegin());
-    double riseMax = -1e300, returnMin = 1e300, sMin = 1e300, rhoMin = 1e300;
+    double riseMax = 0.0, returnMax = 0.0, sMin = 1e300, slopeMax = 0.0;
     double riseAt = 0.0, returnAt = 0.0;
     constexpr int grid = 200000;
     const double step = kTwoPi / grid;
     for (int i = 0; i < grid; ++i) {
-        const double phi = contour.phiBegin() + step * i;
+        slopeMax = std::max(slopeMax, std::abs(m.at(contour.phiBegin() + step * i, omega).sPhi[1]));
+    }
+    const auto look = [&](double phi) {
         const FollowerState st = m.at(phi, omega);
-        if (st.pressureAngle > riseMax) {
-            riseMax = st.pressureAngle;
+        const double alpha = std::abs(st.pressureAngle);
+        if (st.sPhi[1] > kDwellSlope * slopeMax && alpha > riseMax) {
+            riseMax = alpha;
             riseAt = phi;
         }
-        if (st.pressureAngle < returnMin) {
-            returnMin = st.pressureAngle;
+        if (st.sPhi[1] < -kDwellSlope * slopeMax && alpha > returnMax) {
+            returnMax = alpha;
             returnAt = phi;
         }
         sMin = std::min(sMin, st.s);
-        rhoMin = std::min(rhoMin, st.rhoPitch);
-    }
+    };
+    for (int i = 0; i < grid; ++i) look(contour.phiBegin() + step * i);
     // Round a concave arc the roller centre swings fast: look again, 10 000 times finer, within
     // two steps of the best grid angle.
+    const double riseGrid = riseAt, returnGrid = returnAt;
     for (int i = -20000; i <= 20000; ++i) {
-        riseMax = std::max(riseMax, m.at(riseAt + step * i / 10000.0, omega).pressureAngle);
-        returnMin = std::min(returnMin, m.at(returnAt + step * i / 10000.0, omega).pressureAngle);
+        look(riseGrid + step * i / 10000.0);
+        look(returnGrid + step * i / 10000.0);
     }
     // The extremes sit at joints, where α turns sharply (about 8 rad per rad): the fine grid
     // (3e-9 rad) comes within 1e-7 rad of them, and never beyond.
-    EXPECT_GE(a.pressureRise.value, riseMax - 1e-15);
-    EXPECT_NEAR(a.pressureRise.value, riseMax, 1e-7);
-    EXPECT_LE(a.pressureReturn.value, returnMin + 1e-15);
-    EXPECT_NEAR(a.pressureReturn.value, returnMin, 1e-7);
+    ASSERT_TRUE(a.pressure.rise && a.pressure.fall);
+    EXPECT_FALSE(a.pressure.dwell);  // no arc of the six lobes is centred on the cam's axis
+    EXPECT_GE(a.pressure.rise->value, riseMax - 1e-15);
+    EXPECT_NEAR(a.pressure.rise->value, riseMax, 1e-7);
+    EXPECT_GE(a.pressure.fall->value, returnMax - 1e-15);
+    EXPECT_NEAR(a.pressure.fall->value, returnMax, 1e-7);
+    EXPECT_EQ(a.pressure.max.value, std::max(a.pressure.rise->value, a.pressure.fall->value));
     EXPECT_NEAR(a.sMin.value, sMin, 1e-8);
     EXPECT_NEAR(a.sMin.value, m.minS(), 1e-12);
-    // The pitch curve of a concave arc of radius 4.84 under a 3 mm roller: radius −1.84 mm.
-    EXPECT_NEAR(a.rhoPitchMin.value, -(4.84070597 - 3.0), 1e-7);
-    EXPECT_NEAR(a.rhoProfileMin.value, -4.84070597, 1e-7);
-    EXPECT_NEAR(rhoMin, a.rhoPitchMin.value, 1e-9);
     EXPECT_TRUE(a.undercut.empty());
-    // The value reported is the value at the angle reported.
-    EXPECT_NEAR(m.at(a.pressureRise.phi, omega).pressureAngle, a.pressureRise.value, 1e-15);
+    // The value reported is the value at the angle reported, and in its phase.
+    const FollowerState atRise = m.at(a.pressure.rise->phi, omega);
+    EXPECT_NEAR(std::abs(atRise.pressureAngle), a.pressure.rise->value, 1e-15);
+    EXPECT_GT(atRise.sPhi[1], 0.0);
+    EXPECT_LT(m.at(a.pressure.fall->phi, omega).sPhi[1], 0.0);
+}
+
+TEST(FollowerAnalysisTest, TheSmallestConvexAndConcaveRadiiAreThoseOfTheCurvesOwnShape) {
+    // The curvature of the pitch curve, the path of the roller centre C(φ), by central
+    // differences of C (not the follower's own radii): κ = (x'y'' − y'x'') / |C'|³, positive
+    // where it bends round the cam's axis. The profile is the pitch curve offset inwards by
+    // the roller: its signed radius is the pitch curve's minus 3 mm.
+    const Contour contour = sixLobe();
+    const FollowerModel m = model(contour, FollowerType::Roller, 2.0, 3.0);
+    const FollowerAnalysis a = analyzeFollower(m, 1.0, contour.phiBegin());
+    double convex = 0.0, concave = 0.0;  // the largest curvature of each sign
+    constexpr int grid = 20000;
+    constexpr double d = 1e-4;
+    for (int i = 0; i < grid; ++i) {
+        const double phi = contour.phiBegin() + kTwoPi * i / grid;
+        const FollowerState s0 = m.at(phi - d, 1.0), s1 = m.at(phi, 1.0), s2 = m.at(phi + d, 1.0);
+        // A stencil across a joint mixes two arcs' curvatures: not the curve's at any point.
+        if (s0.segment != s1.segment || s1.segment != s2.segment) continue;
+        const Eigen::Vector2d c0 = s0.center, c1 = s1.center, c2 = s2.center;
+        const Eigen::Vector2d v = (c2 - c0) / (2 * d), w = (c2 - 2 * c1 + c0) / (d * d);
+        const double kappa = (v.x() * w.y() - v.y() * w.x()) / std::pow(v.norm(), 3);
+        convex = std::max(convex, kappa);
+        concave = std::max(concave, -kappa);
+    }
+    ASSERT_GT(convex, 0.0);
+    ASSERT_GT(concave, 0.0);
+    ASSERT_TRUE(a.pitchCurvature.minConvex && a.pitchCurvature.minConcave);
+    ASSERT_TRUE(a.profileCurvature.minConvex && a.profileCurvature.minConcave);
+    // Arcs: each radius holds over a whole window, which the grid samples many times; central
+    // differences are exact to O(d²) on a circle.
+    EXPECT_NEAR(a.pitchCurvature.minConvex->value, 1.0 / convex, 1e-6);
+    EXPECT_NEAR(a.pitchCurvature.minConcave->value, 1.0 / concave, 1e-6);
+    EXPECT_NEAR(a.profileCurvature.minConvex->value, 1.0 / convex - 3.0, 1e-6);
+    EXPECT_NEAR(a.profileCurvature.minConcave->value, 1.0 / concave + 3.0, 1e-6);
+    // The seed's concave arc of radius 4.84 (math.md §3) under a 3 mm roller: 1.84 mm.
+    EXPECT_NEAR(a.pitchCurvature.minConcave->value, 4.84070597 - 3.0, 1e-7);
+    EXPECT_NEAR(a.profileCurvature.minConcave->value, 4.84070597, 1e-7);
+    // Reported as magnitudes, at an angle where the curve has that radius and sense.
+    EXPECT_NEAR(m.at(a.pitchCurvature.minConcave->phi, 1.0).rhoPitch,
+                -a.pitchCurvature.minConcave->value, 1e-9);
+    EXPECT_NEAR(m.at(a.profileCurvature.minConvex->phi, 1.0).rhoProfile,
+                a.profileCurvature.minConvex->value, 1e-9);
+    // The roller fits (no undercut: every convex pitch radius above 3 mm); a 5 mm cutter does
+    // not enter the 4.84 mm hollow, a 4.8 mm one does.
+    FollowerSpec spec = m.spec();
+    EXPECT_EQ(curvatureVerdict(a, spec, 0.0).rollerFits, std::optional<bool>(true));
+    EXPECT_FALSE(curvatureVerdict(a, spec, 0.0).toolFits);
+    EXPECT_EQ(curvatureVerdict(a, spec, 5.0).toolFits, std::optional<bool>(false));
+    EXPECT_EQ(curvatureVerdict(a, spec, 4.8).toolFits, std::optional<bool>(true));
+    spec.radius = a.pitchCurvature.minConvex->value + 0.01;
+    EXPECT_EQ(curvatureVerdict(a, spec, 0.0).rollerFits, std::optional<bool>(false));
 }
 
 TEST(FollowerAnalysisTest, TheRangesBeyondTheLimitEndWhereTheAngleIsTheLimit) {

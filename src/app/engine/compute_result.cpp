@@ -105,7 +105,7 @@ ContourPart computeContourPart(const Contour* contour, double omega,
 /// The follower the evaluation placed: its design checks and its pressure-angle curve.
 struct FollowerPart {
     FollowerAnalysis checks;
-    std::vector<double> x, pressureDeg;
+    std::vector<double> x, pressureDeg, rhoProfile, rhoPitch;
 };
 
 FollowerPart computeFollower(const FollowerModel* model, double omega, double period,
@@ -119,11 +119,15 @@ FollowerPart computeFollower(const FollowerModel* model, double omega, double pe
     if (!sampleFollowerTurn(*model, omega, n, turn, cancel)) return part;
     part.x.resize(n + 1);
     part.pressureDeg.resize(n + 1);
+    part.rhoProfile.resize(n + 1);
+    part.rhoPitch.resize(n + 1);
     for (std::size_t k = 0; k <= n; ++k) {
         const double t = period * static_cast<double>(k) / n;
         part.x[k] = axis == PlotAxis::Angle ? radToDeg(omega * t) : t;
         // The turn's end closes the curve: the angle of its start, one turn on.
         part.pressureDeg[k] = radToDeg(turn.pressureAngle[k % n]);
+        part.rhoProfile[k] = turn.rhoProfile[k % n];
+        part.rhoPitch[k] = turn.rhoPitch[k % n];
     }
     return part;
 }
@@ -256,6 +260,8 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
         result->followerChecksPending = !checksNow;
         result->followerX = std::move(part.x);
         result->followerPressureDeg = std::move(part.pressureDeg);
+        result->followerRhoProfile = std::move(part.rhoProfile);
+        result->followerRhoPitch = std::move(part.rhoPitch);
     }
     if (preparer) {
         result->prepared = preparer->prepare(*result, cancel);

@@ -101,6 +101,9 @@ struct ComputeResult {
     /// The pressure angle (deg) over the turn at kFollowerCurvePoints + 1 equal time steps, on
     /// the plots' x axis (degrees or seconds, as `curves`).
     std::vector<double> followerX, followerPressureDeg;
+    /// The signed radii of curvature (mm, positive where convex, +∞ where straight) of the
+    /// profile at the contact and of the pitch curve, at the same steps.
+    std::vector<double> followerRhoProfile, followerRhoPitch;
     static constexpr std::size_t kFollowerCurvePoints = 3600;
     /// The motion design's curves (null when the project has no design). Computed also when
     /// the contour is not (a design waiting for its first synthesis).

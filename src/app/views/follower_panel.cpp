@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "common/angles.h"
@@ -121,6 +122,28 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     m_cursor = addCursorLine(m_pressurePlot);
     layout->addWidget(m_pressurePlot, 1);
 
+    m_curvaturePlot = new QCustomPlot(this);
+    m_curvaturePlot->setObjectName("curvaturePlot");
+    m_curvaturePlot->setMinimumHeight(160);
+    m_curvaturePlot->setToolTip(
+        tr("Radius of curvature over the turn, positive where convex, negative where hollow; "
+           "clipped at twice the cam's largest radius (a straight stretch reads as the clip). "
+           "Blue: the profile; grey: the roller's pitch curve; dashed: the roller's radius and "
+           "minus the tool's"));
+    m_curvaturePlot->yAxis->setLabel(tr("ρ [mm]"));
+    m_curvaturePlot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    m_curvaturePlot->axisRect()->setRangeDrag(Qt::Horizontal);
+    m_curvaturePlot->axisRect()->setRangeZoom(Qt::Horizontal);
+    applyAxisFormat(m_curvaturePlot);
+    m_curvaturePlot->addGraph()->setPen(QPen(QColor(20, 90, 160), 1.0));
+    m_curvaturePlot->addGraph()->setPen(QPen(QColor(120, 120, 120), 1.0));
+    for (auto& line : m_radiusLines) {
+        line = new QCPItemStraightLine(m_curvaturePlot);
+        line->setPen(QPen(QColor(200, 30, 30), 1, Qt::DashLine));
+    }
+    m_curvatureCursor = addCursorLine(m_curvaturePlot);
+    layout->addWidget(m_curvaturePlot, 1);
+
     // A click, or Enter on the current line, goes to the check's angle.
     const auto pick = [this](QListWidgetItem* item) {
         const QVariant phi = item->data(Qt::UserRole);
@@ -223,12 +246,69 @@ void FollowerPanel::refresh() {
     m_refreshing = false;
 }
 
-void FollowerPanel::setCursorX(double x) { moveCursorLine(m_cursor, x); }
+void FollowerPanel::setCursorX(double x) {
+    moveCursorLine(m_cursor, x);
+    moveCursorLine(m_curvatureCursor, x);
+}
+
+void FollowerPanel::showCurvature(const ComputeResultPtr& result) {
+    // Clipped at twice the cam's largest radius: a radius beyond that is as good as straight
+    // for every check, and both signs stay readable beside the +∞ of a straight stretch.
+    double size = 1.0;
+    for (const QVector<QPointF>& outline : result->outlines) {
+        for (const QPointF& p : outline) size = std::max(size, std::hypot(p.x(), p.y()));
+    }
+    m_curvatureClip = 2.0 * size;
+    const double clip = m_curvatureClip;
+    const auto clipped = [clip](const std::vector<double>& rho) {
+        QVector<double> y(static_cast<qsizetype>(rho.size()));
+        for (std::size_t k = 0; k < rho.size(); ++k) {
+            y[static_cast<qsizetype>(k)] =
+                std::isnan(rho[k]) ? rho[k] : std::clamp(rho[k], -clip, clip);
+        }
+        return y;
+    };
+    const QVector<double> x(result->followerX.begin(), result->followerX.end());
+    const bool ascending = x.size() < 2 || x.front() <= x.back();
+    const FollowerSpec& spec = result->follower->spec();
+    const bool roller = followerKind(spec.type).hasRadius;
+    const QVector<double> profile = clipped(result->followerRhoProfile);
+    const QVector<double> pitch =
+        roller ? clipped(result->followerRhoPitch) : QVector<double>(x.size(), qQNaN());
+    m_curvaturePlot->graph(0)->setData(x, profile, ascending);
+    m_curvaturePlot->graph(1)->setData(x, pitch, ascending);
+    // The range the radii span (within the clip), and the lines at the roller and the tool.
+    double low = 0.0, high = 0.0;
+    for (const QVector<double>* y : {&profile, &pitch}) {
+        for (const double v : *y) {
+            if (std::isnan(v)) continue;
+            low = std::min(low, v);
+            high = std::max(high, v);
+        }
+    }
+    const double tool = result->project && result->project->machining
+                            ? result->project->machining->toolRadius
+                            : 0.0;
+    const std::array<double, 2> levels{roller ? spec.radius : 0.0, -tool};
+    for (std::size_t k = 0; k < 2; ++k) {
+        m_radiusLines[k]->setVisible(levels[k] != 0.0);
+        m_radiusLines[k]->point1->setCoords(0, levels[k]);
+        m_radiusLines[k]->point2->setCoords(1, levels[k]);
+        low = std::min(low, levels[k]);
+        high = std::max(high, levels[k]);
+    }
+    m_curvaturePlot->xAxis->setLabel(result->axis == PlotAxis::Angle ? tr("φ [°]") : tr("t [s]"));
+    const double pad = 0.08 * std::max(high - low, 1.0);
+    m_curvaturePlot->yAxis->setRange(low - pad, high + pad);
+    queueReplot(m_curvaturePlot);
+}
 
 void FollowerPanel::setResult(const ComputeResultPtr& result) {
     const bool curve = result && result->ok() && result->follower;
     m_pressurePlot->setVisible(curve);
+    m_curvaturePlot->setVisible(curve);
     if (curve) {
+        showCurvature(result);
         const QVector<double> x(result->followerX.begin(), result->followerX.end());
         const QVector<double> y(result->followerPressureDeg.begin(),
                                 result->followerPressureDeg.end());
@@ -297,14 +377,26 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
     }
     const FollowerAnalysis& a = result->followerChecks;
     const double limit = a.limitRad;
-    add(tr("Largest pressure angle on rise: %1 at %2 (limit %3)")
-            .arg(degrees(a.pressureRise.value), degrees(a.pressureRise.phi), degrees(limit)),
-        a.pressureRise.phi, a.pressureRise.value > limit);
-    add(tr("Largest pressure angle on return: %1 at %2 (limit %3)")
-            .arg(degrees(a.pressureReturn.value), degrees(a.pressureReturn.phi), degrees(limit)),
-        a.pressureReturn.phi, -a.pressureReturn.value > limit);
+    const PressurePhases& p = a.pressure;
+    if (p.rise) {
+        add(tr("Largest pressure angle on rise: %1 at %2 (limit %3)")
+                .arg(degrees(p.rise->value), degrees(p.rise->phi), degrees(limit)),
+            p.rise->phi, p.rise->value > limit);
+    }
+    if (p.fall) {
+        add(tr("Largest pressure angle on return: %1 at %2 (limit %3)")
+                .arg(degrees(p.fall->value), degrees(p.fall->phi), degrees(limit)),
+            p.fall->phi, p.fall->value > limit);
+    }
+    if (p.dwell) {
+        add(tr("Largest pressure angle in a dwell: %1 at %2 (limit %3)")
+                .arg(degrees(p.dwell->value), degrees(p.dwell->phi), degrees(limit)),
+            p.dwell->phi, p.dwell->value > limit);
+    }
     for (const AngleRange& r : a.pressureExceeded) {
-        add(tr("Pressure angle beyond the limit from %1 to %2").arg(degrees(r.from), degrees(r.to)),
+        add(tr("Pressure angle beyond the limit from %1 to %2: up to %3 at %4, %5 too much")
+                .arg(degrees(r.from), degrees(r.to), degrees(r.peak.value), degrees(r.peak.phi),
+                     degrees(r.peak.value - limit)),
             r.from, true);
     }
     for (const NonContact& c : a.undercut) {
@@ -313,14 +405,46 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
                      formatPoint(c.to.x(), c.to.y())),
             c.phi, true);
     }
-    const bool flat = followerKind(result->follower->spec().type).flatFace;
-    add(tr("Smallest radius of curvature of the profile: %1 at %2")
-            .arg(millimetres(a.rhoProfileMin.value), degrees(a.rhoProfileMin.phi)),
-        a.rhoProfileMin.phi, flat && a.rhoProfileMin.value <= 0.0);
-    if (followerKind(result->follower->spec().type).hasRadius) {
-        add(tr("Smallest radius of curvature of the pitch curve: %1 at %2")
-                .arg(millimetres(a.rhoPitchMin.value), degrees(a.rhoPitchMin.phi)),
-            a.rhoPitchMin.phi, false);
+    const FollowerSpec& spec = result->follower->spec();
+    const bool flat = followerKind(spec.type).flatFace;
+    const double toolRadius = result->project && result->project->machining
+                                  ? result->project->machining->toolRadius
+                                  : 0.0;
+    const CurvatureVerdict verdict = curvatureVerdict(a, spec, toolRadius);
+    const CurvatureExtremes& profile = a.profileCurvature;
+    if (profile.minConvex) {
+        add(tr("Smallest convex radius of the profile: %1 at %2")
+                .arg(millimetres(profile.minConvex->value), degrees(profile.minConvex->phi)),
+            profile.minConvex->phi, false);
+    }
+    if (profile.minConcave) {
+        // A flat face needs a convex profile; a cutter needs hollows at least as wide as it.
+        const bool toolTooWide = verdict.toolFits && !*verdict.toolFits;
+        const QString line =
+            verdict.toolFits
+                ? tr("Smallest concave radius of the profile: %1 at %2 (tool radius %3)")
+                      .arg(millimetres(profile.minConcave->value), degrees(profile.minConcave->phi),
+                           millimetres(toolRadius))
+                : tr("Smallest concave radius of the profile: %1 at %2")
+                      .arg(millimetres(profile.minConcave->value),
+                           degrees(profile.minConcave->phi));
+        add(line, profile.minConcave->phi, flat || toolTooWide);
+    } else {
+        add(tr("The profile has no concave stretch."), std::nullopt, false);
+    }
+    if (followerKind(spec.type).hasRadius) {
+        const CurvatureExtremes& pitch = a.pitchCurvature;
+        if (pitch.minConvex) {
+            add(tr("Smallest convex radius of the pitch curve: %1 at %2 (roller radius %3)")
+                    .arg(millimetres(pitch.minConvex->value), degrees(pitch.minConvex->phi),
+                         millimetres(spec.radius)),
+                pitch.minConvex->phi, verdict.rollerFits && !*verdict.rollerFits);
+        }
+        if (pitch.minConcave) {
+            add(tr("Smallest concave radius of the pitch curve: %1 at %2")
+                    .arg(millimetres(pitch.minConcave->value), degrees(pitch.minConcave->phi)),
+                pitch.minConcave->phi, false);
+        }
     }
     if (flat) add(tr("Face width needed: %1").arg(millimetres(a.faceWidth)), std::nullopt, false);
     m_summary->setText(m_problems == 0 ? tr("Every check passes.")

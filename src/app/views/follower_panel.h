@@ -39,6 +39,14 @@ public:
     /// @brief The pressure angle over the turn, on the kinematics plots' x axis, with the limit
     /// drawn and the stretches beyond it in red.
     [[nodiscard]] QCustomPlot* pressurePlot() const { return m_pressurePlot; }
+    /// @brief The radii of curvature over the turn, clipped at ±curvatureClip().
+    [[nodiscard]] QCustomPlot* curvaturePlot() const { return m_curvaturePlot; }
+    /// @brief Where the curvature plot clips: twice the cam's largest radius (mm).
+    [[nodiscard]] double curvatureClip() const { return m_curvatureClip; }
+    /// @brief The plots over the turn, which share the kinematics plots' x axis.
+    [[nodiscard]] std::array<QCustomPlot*, 2> turnPlots() const {
+        return {m_pressurePlot, m_curvaturePlot};
+    }
     /// @brief Moves the plot's cursor line to x (degrees or seconds).
     void setCursorX(double x);
 
@@ -47,6 +55,7 @@ signals:
     void anglePicked(double phi);
 
 private:
+    void showCurvature(const ComputeResultPtr& result);
     void refresh();
     void edit(const std::function<void(FollowerSpec&)>& change);
 
@@ -65,6 +74,12 @@ private:
     QCustomPlot* m_pressurePlot;
     std::array<QCPItemStraightLine*, 2> m_limitLines{};
     QCPItemStraightLine* m_cursor;
+    QCustomPlot* m_curvaturePlot;
+    /// At the roller's radius (the pitch curve's convex radius must stay above it) and at
+    /// minus the tool's (the profile's concave radius must stay beyond it).
+    std::array<QCPItemStraightLine*, 2> m_radiusLines{};
+    QCPItemStraightLine* m_curvatureCursor;
+    double m_curvatureClip = 0.0;
     int m_problems = 0;
     int m_gesture = 0;
     bool m_refreshing = false;

@@ -37,7 +37,7 @@ DockLayout::DockLayout(QMainWindow* window, Ui::MainWindow& ui, ProjectDocument*
     makeCentre();
     makeBottomDocks();
     makeRightDocks();
-    linkPressureAxis();
+    linkFollowerAxes();
     setWhatsThis();
     showWhatTheProjectHas();
 }
@@ -142,21 +142,22 @@ void DockLayout::makeRightDocks() {
     // Into the tool bar and the View menu by the window, after Play.
 }
 
-void DockLayout::linkPressureAxis() {
-    // The pressure-angle plot shares the kinematics plots' x axis: panning or zooming either
-    // moves the other.
-    QCustomPlot* pressure = follower->pressurePlot();
+void DockLayout::linkFollowerAxes() {
+    // The follower's plots over the turn (pressure angle, curvature) share the kinematics
+    // plots' x axis: panning or zooming one moves the others.
     QCustomPlot* velocity = plots->plot(0);
-    connect(velocity->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), pressure,
-            [pressure](const QCPRange& r) {
-                if (pressure->xAxis->range() == r) return;
-                pressure->xAxis->setRange(r);
-                queueReplot(pressure);
-            });
-    connect(pressure->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), velocity,
-            [velocity](const QCPRange& r) {
-                if (velocity->xAxis->range() != r) velocity->xAxis->setRange(r);
-            });
+    for (QCustomPlot* plot : follower->turnPlots()) {
+        connect(velocity->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), plot,
+                [plot](const QCPRange& r) {
+                    if (plot->xAxis->range() == r) return;
+                    plot->xAxis->setRange(r);
+                    queueReplot(plot);
+                });
+        connect(plot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), velocity,
+                [velocity](const QCPRange& r) {
+                    if (velocity->xAxis->range() != r) velocity->xAxis->setRange(r);
+                });
+    }
 }
 
 void DockLayout::showWhatTheProjectHas() {

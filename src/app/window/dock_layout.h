@@ -64,7 +64,7 @@ private:
     void makeCentre();
     void makeBottomDocks();
     void makeRightDocks();
-    void linkPressureAxis();
+    void linkFollowerAxes();
     void setWhatsThis();
     /// A project that names a follower or has a design opens with its dock shown.
     void showWhatTheProjectHas();

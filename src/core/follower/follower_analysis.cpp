@@ -1,8 +1,11 @@
 #include "follower/follower_analysis.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
+#include <optional>
 
 #include "common/angles.h"
 #include "project/follower_kind.h"
@@ -39,6 +42,105 @@ FollowerExtremum refine(const std::function<double(double)>& f, double phi, doub
     return e;
 }
 
+/// The largest value of f over [from, to] (f is −∞ where it does not count): the best of the
+/// samples a step h apart, refined by golden sections within a step either side.
+FollowerExtremum largestInside(const std::function<double(double)>& f, double from, double to,
+                               double h) {
+    const int n = std::max(2, static_cast<int>(std::ceil((to - from) / h)) + 1);
+    const double step = (to - from) / (n - 1);
+    FollowerExtremum best{f(from), from};
+    for (int i = 1; i < n; ++i) {
+        const double phi = from + i * step;
+        const double v = f(phi);
+        if (v > best.value) best = {v, phi};
+    }
+    const FollowerExtremum refined = refine(f, best.phi, step, true);
+    return refined.value > best.value ? refined : best;
+}
+
+/// The angle within the turn that begins at phiBegin.
+double inTurn(double phi, double phiBegin) {
+    return phiBegin + std::fmod(phi - phiBegin + 2 * kTwoPi, kTwoPi);
+}
+
+enum class Phase { Rise, Fall, Dwell };
+
+/// The largest |α| in each phase: the best sample of the phase, refined within a sample step
+/// either side while the phase holds (at a phase's end the refinement runs up to its border).
+PressurePhases pressurePhases(const FollowerModel& model, double omega, double phiBegin,
+                              const std::vector<FollowerState>& st) {
+    const int n = static_cast<int>(st.size());
+    const double h = kTwoPi / n;
+    double slopeMax = 0.0;
+    for (const FollowerState& s : st) slopeMax = std::max(slopeMax, std::abs(s.sPhi[1]));
+    const double dwellSlope = kDwellSlope * slopeMax;
+    const auto phaseOf = [&](const FollowerState& s) {
+        if (s.sPhi[1] > dwellSlope) return Phase::Rise;
+        if (s.sPhi[1] < -dwellSlope) return Phase::Fall;
+        return Phase::Dwell;
+    };
+    std::array<int, 3> best{-1, -1, -1};
+    for (int i = 0; i < n; ++i) {
+        int& b = best[static_cast<std::size_t>(phaseOf(st[static_cast<std::size_t>(i)]))];
+        if (b < 0 || std::abs(st[static_cast<std::size_t>(i)].pressureAngle) >
+                         std::abs(st[static_cast<std::size_t>(b)].pressureAngle)) {
+            b = i;
+        }
+    }
+    PressurePhases p;
+    std::array<std::optional<FollowerExtremum>*, 3> out{&p.rise, &p.fall, &p.dwell};
+    bool any = false;
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (best[k] < 0) continue;
+        const auto phase = static_cast<Phase>(k);
+        const auto f = [&](double phi) {
+            const FollowerState s = model.at(phi, omega);
+            return phaseOf(s) == phase ? std::abs(s.pressureAngle)
+                                       : -std::numeric_limits<double>::infinity();
+        };
+        const double phi0 = phiBegin + best[k] * h;
+        FollowerExtremum e = refine(f, phi0, h, true);
+        if (!(e.value >= f(phi0))) e = {f(phi0), phi0};
+        // Reported within the turn, with the value at exactly the angle reported.
+        e.phi = inTurn(e.phi, phiBegin);
+        e.value = std::abs(model.at(e.phi, omega).pressureAngle);
+        *out[k] = e;
+        if (!any || e.value > p.max.value) p.max = e;
+        any = true;
+    }
+    return p;
+}
+
+/// The smallest radius of each sense of the curve whose signed radius (positive where convex,
+/// +∞ where straight) `rho` gives: the largest curvature 1/ρ of each sign, which is smooth
+/// through an inflection where ρ is not, refined by golden sections.
+CurvatureExtremes curvatureExtremes(const FollowerModel& model, double omega, double phiBegin,
+                                    const std::vector<FollowerState>& st,
+                                    double FollowerState::*rho) {
+    const int n = static_cast<int>(st.size());
+    const double h = kTwoPi / n;
+    const auto kappa = [&](const FollowerState& s) { return 1.0 / (s.*rho); };
+    CurvatureExtremes c;
+    for (const double sign : {1.0, -1.0}) {
+        int best = -1;
+        for (int i = 0; i < n; ++i) {
+            const double k = sign * kappa(st[static_cast<std::size_t>(i)]);
+            if (k > 0.0 && (best < 0 || k > sign * kappa(st[static_cast<std::size_t>(best)]))) {
+                best = i;
+            }
+        }
+        if (best < 0) continue;
+        const auto f = [&](double phi) { return sign * kappa(model.at(phi, omega)); };
+        const double phi0 = phiBegin + best * h;
+        FollowerExtremum e = refine(f, phi0, h, true);
+        if (!(e.value >= f(phi0))) e = {f(phi0), phi0};
+        e.phi = inTurn(e.phi, phiBegin);
+        e.value = std::abs(model.at(e.phi, omega).*rho);
+        (sign > 0.0 ? c.minConvex : c.minConcave) = e;
+    }
+    return c;
+}
+
 }  // namespace
 
 FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega, double phiBegin,
@@ -61,7 +163,7 @@ FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega, doubl
         const auto f = [&](double phi) { return q(model.at(phi, omega)); };
         FollowerExtremum e = refine(f, phiBegin + best * h, h, max);
         // Reported within the turn, with the value at exactly the angle reported.
-        e.phi = phiBegin + std::fmod(e.phi - phiBegin + 2 * kTwoPi, kTwoPi);
+        e.phi = inTurn(e.phi, phiBegin);
         e.value = f(e.phi);
         return e;
     };
@@ -74,10 +176,9 @@ FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega, doubl
     a.aMax = extreme([](const FollowerState& s) { return s.a; }, true);
     a.jMin = extreme([](const FollowerState& s) { return s.j; }, false);
     a.jMax = extreme([](const FollowerState& s) { return s.j; }, true);
-    a.pressureRise = extreme([](const FollowerState& s) { return s.pressureAngle; }, true);
-    a.pressureReturn = extreme([](const FollowerState& s) { return s.pressureAngle; }, false);
-    a.rhoProfileMin = extreme([](const FollowerState& s) { return s.rhoProfile; }, false);
-    a.rhoPitchMin = extreme([](const FollowerState& s) { return s.rhoPitch; }, false);
+    a.pressure = pressurePhases(model, omega, phiBegin, st);
+    a.profileCurvature = curvatureExtremes(model, omega, phiBegin, st, &FollowerState::rhoProfile);
+    a.pitchCurvature = curvatureExtremes(model, omega, phiBegin, st, &FollowerState::rhoPitch);
     if (followerKind(model.spec().type).flatFace) {
         const double lo = extreme([](const FollowerState& s) { return s.sPhi[1]; }, false).value;
         const double hi = extreme([](const FollowerState& s) { return s.sPhi[1]; }, true).value;
@@ -118,10 +219,19 @@ FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega, doubl
                 while (dd < from) dd += kTwoPi;
                 to = std::min(to, dd);
             }
-            a.pressureExceeded.push_back({from, to});
+            a.pressureExceeded.push_back({from, to, {}});
         }
     } else if (std::abs(at(0).pressureAngle) > a.limitRad) {
-        a.pressureExceeded.push_back({phiBegin, phiBegin + kTwoPi});
+        a.pressureExceeded.push_back({phiBegin, phiBegin + kTwoPi, {}});
+    }
+    for (AngleRange& r : a.pressureExceeded) {
+        r.peak = largestInside(
+            [&](double phi) {
+                return phi >= r.from && phi <= r.to ? std::abs(model.at(phi, omega).pressureAngle)
+                                                    : -std::numeric_limits<double>::infinity();
+            },
+            r.from, r.to, h);
+        r.peak.phi = inTurn(r.peak.phi, phiBegin);
     }
 
     // Jumps of the contact point: a gap that does not shrink when the step is halved.
@@ -154,6 +264,20 @@ FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega, doubl
         }
     }
     return a;
+}
+
+CurvatureVerdict curvatureVerdict(const FollowerAnalysis& a, const FollowerSpec& spec,
+                                  double toolRadius) {
+    CurvatureVerdict v;
+    if (spec.type == FollowerType::Roller) {
+        v.rollerFits =
+            !a.pitchCurvature.minConvex || a.pitchCurvature.minConvex->value > spec.radius;
+    }
+    if (toolRadius > 0.0) {
+        v.toolFits =
+            !a.profileCurvature.minConcave || a.profileCurvature.minConcave->value >= toolRadius;
+    }
+    return v;
 }
 
 }  // namespace cam

@@ -5,6 +5,7 @@
 /// radii of curvature, the flat face's width, and where the follower cannot reach the profile.
 
 #include <atomic>
+#include <optional>
 #include <vector>
 
 #include "follower/follower.h"
@@ -25,23 +26,61 @@ struct NonContact {
     Eigen::Vector2d to{0.0, 0.0};
 };
 
-/// @brief An interval of cam angles [from, to] (rad) where |pressure angle| exceeds the limit.
+/// @brief An interval of cam angles [from, to] (rad) where |pressure angle| exceeds the limit,
+/// and the largest |pressure angle| inside it (rad, a magnitude: it exceeds the limit by
+/// peak.value − limit).
 struct AngleRange {
     double from = 0.0;
     double to = 0.0;
+    FollowerExtremum peak;
+};
+
+/// @brief The largest |pressure angle| (rad, a magnitude) in each phase of the motion, and
+/// where: while the follower rises (dq/dφ > 0), returns (dq/dφ < 0) and dwells (|dq/dφ| at most
+/// kDwellSlope of its largest value over the turn); none for a phase the motion does not have.
+/// The pressure angle is not zero in a dwell when the follower is offset or swings on an arm.
+struct PressurePhases {
+    std::optional<FollowerExtremum> rise, fall, dwell;
+    FollowerExtremum max;  ///< over the whole turn
+};
+
+/// @brief Where the follower dwells: |dq/dφ| ≤ kDwellSlope · max |dq/dφ| over the turn (an arc
+/// table's dwell arc, fitted to 1e-6 mm, is not exactly centred).
+inline constexpr double kDwellSlope = 1e-6;
+
+/// @brief The smallest radius of curvature of each sense over a turn, as magnitudes (mm), and
+/// where: convex (bending round the cam centre) and concave (hollow); none where the curve never
+/// bends that way. A signed minimum would mix them: it reads the flattest hollow near an
+/// inflection, not the tightest bend.
+struct CurvatureExtremes {
+    std::optional<FollowerExtremum> minConvex, minConcave;
 };
 
 struct FollowerAnalysis {
     FollowerExtremum sMin, sMax, vMin, vMax, aMin, aMax, jMin, jMax;
-    /// The largest pressure angle while rising (≥ 0) and the most negative while returning.
-    FollowerExtremum pressureRise, pressureReturn;
+    PressurePhases pressure;
     double limitRad = 0.0;
     std::vector<AngleRange> pressureExceeded;
-    FollowerExtremum rhoProfileMin, rhoPitchMin;
+    /// The profile's at the contact point; the pitch curve's at the roller centre (the
+    /// profile's for a knife and a flat face).
+    CurvatureExtremes profileCurvature, pitchCurvature;
     /// Flat face: the smallest face that always holds the contact, max h' − min h' (mm).
     double faceWidth = 0.0;
     std::vector<NonContact> undercut;
 };
+
+/// @brief What the curvature allows: a roller rolls without undercut where the pitch curve's
+/// convex radius stays above the roller's (else the offset profile folds), a cutter of radius
+/// r_t enters every hollow where the profile's concave radius is at least r_t. None where the
+/// check does not apply (no roller; no tool radius given).
+struct CurvatureVerdict {
+    std::optional<bool> rollerFits, toolFits;
+};
+
+/// @brief The curvature checks of `a` for the follower `spec` and a cutter of `toolRadius` mm
+/// (0: none).
+[[nodiscard]] CurvatureVerdict curvatureVerdict(const FollowerAnalysis& a, const FollowerSpec& spec,
+                                                double toolRadius);
 
 /// @brief How many angles the design checks sample per turn by default.
 inline constexpr int kFollowerCheckSamples = 7200;
