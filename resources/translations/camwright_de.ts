@@ -948,7 +948,12 @@
         <translation>Radius %1 mm ergibt eine ungültige Kontur (%2)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
+        <source>no base radius up to 1000000 mm passes every check: %1 fails at %2°</source>
+        <translation>kein Grundkreisradius bis 1000000 mm besteht alle Prüfungen: %1 scheitert bei %2°</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -1106,6 +1111,26 @@
         <location line="-36" />
         <source>a whole number</source>
         <translation>eine ganze Zahl</translation>
+    </message>
+    <message>
+        <location filename="../../src/core/design/sizing.cpp" line="+181" />
+        <source>the pressure angle on rise</source>
+        <translation>der Druckwinkel im Hub</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the pressure angle on return</source>
+        <translation>der Druckwinkel im Rückhub</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the profile's convex radius</source>
+        <translation>der konvexe Radius des Profils</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>the follower's reach</source>
+        <translation>die Reichweite des Stößels</translation>
     </message>
 </context>
 <context>

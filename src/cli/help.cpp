@@ -69,7 +69,7 @@ auto commandRunner(const std::string& name) -> decltype(CommandHelp::run) {
     static const std::pair<const char*, decltype(CommandHelp::run)> kRunners[] = {
         {"validate", runValidate},     {"state", runState},   {"sample", runSample},
         {"analyze", runAnalyze},       {"timing", runTiming}, {"fillet", runFillet},
-        {"synthesize", runSynthesize}, {"export", runExport},
+        {"synthesize", runSynthesize}, {"size", runSize},     {"export", runExport},
     };
     for (const auto& [known, run] : kRunners) {
         if (name == known) return run;
@@ -194,6 +194,24 @@ std::vector<CommandHelp> makeTable() {
                    "tolerance)"},
                   {"--output", "arcs", "arcs (the only output of this version)"}},
                  {"synthesize design.cam.json --out cam.cam.json --tolerance 0.001"}});
+    t.push_back({"size",
+                 "size PROJECT [--min-radius MM] [--out NEW]",
+                 "the smallest base radius of the design that passes every check",
+                 "Finds the smallest base radius of the project's motion design for which its "
+                 "follower (a radial knife when it names none) passes every check: the pressure "
+                 "angle within the follower's limit on rise and on return, no undercut (the "
+                 "profile does not fold), and the profile's convex radius at least --min-radius. "
+                 "It bisects on the exact checks of the exact profile to 1e-9 mm, and prints "
+                 "JSON: base_radius_mm, the binding check (pressure_angle_rise, "
+                 "pressure_angle_return, convex_radius) and the angle at_deg where it binds, the "
+                 "pressure angles and smallest convex radius at that base radius, and a flat "
+                 "face's face_width_mm. With --out, writes the project with that base radius to "
+                 "NEW (synthesize then makes its contour). Exit 3 when no base radius up to "
+                 "1000000 mm passes (an arm whose pivot is too near), naming the check.",
+                 {{"--min-radius", "MM",
+                   "the smallest convex radius of the profile, in mm (default 0: no cusp)"},
+                  {"--out", "NEW", "the file for the project with the base radius found"}},
+                 {"size design.cam.json --min-radius 2 --out sized.cam.json"}});
     t.push_back(
         {"export",
          "export PROJECT --format " + joinNames(exportFormatNames(), "|") +

@@ -223,6 +223,7 @@ enum class Severity { Error, Info };
     X(UndercutFlatFace)                  \
     X(PressureAngleExceeded)             \
     X(FilletRadiusInvalidContour)        \
+    X(NoBaseRadiusPasses)                \
     X(Cancelled)
 
 /// @brief What a diagnostic says, independent of the language it is shown in.

@@ -534,6 +534,9 @@ constexpr std::array<DiagnosticEntry, kDiagnosticCodeCount> kCatalogue{{
      CAM_TRANSLATE_NOOP("Diagnostic", "the pressure angle exceeds %1° from %2° to %3°")},
     {Code::FilletRadiusInvalidContour, "nr",
      CAM_TRANSLATE_NOOP("Diagnostic", "radius %1 mm gives a contour that does not validate (%2)")},
+    {Code::NoBaseRadiusPasses, "sn",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "no base radius up to 1000000 mm passes every check: %1 fails at %2°")},
     {Code::Cancelled, "", CAM_TRANSLATE_NOOP("Diagnostic", "cancelled")},
 }};
 

@@ -1,0 +1,73 @@
+#include "cli/commands.h"
+
+#include <ostream>
+
+#include "cli/command_support.h"
+#include "common/angles.h"
+#include "design/sizing.h"
+#include "evaluation/evaluation.h"
+#include "io/atomic_file.h"
+#include "io/project_json.h"
+
+namespace cam::cli {
+
+int runSize(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
+    const std::string& path = args.positional.front();
+    SizingOptions options;
+    if (const auto text = args.option("--min-radius")) {
+        options.minRadius = parseFiniteNumber("--min-radius", *text, "a radius in mm");
+        if (options.minRadius < 0.0) {
+            throw CliError{kInvalidInput, "--min-radius",
+                           "must be ≥ 0 mm (got " + formatNumber(options.minRadius) + ")"};
+        }
+    }
+    // A design whose contour was never synthesised is what sizing is for: the project is
+    // checked as synthesize checks it, not by load().
+    auto loaded = loadProjectStructure(path);
+    if (!loaded.ok()) {
+        const Diagnostic& d = loaded.errors().front();
+        throw CliError{kInvalidInput, d.location == path ? path : path + ": " + d.location,
+                       d.message};
+    }
+    Project project = std::move(loaded).value();
+    if (!project.design) {
+        throw CliError{kInvalidInput, path + ": design",
+                       "the project has no design to size (size finds its base radius)"};
+    }
+    for (const Diagnostic& d : designProblems(project)) {
+        if (d.severity != Severity::Error) continue;
+        throw CliError{kInvalidInput, placeOf(path, d), d.message};
+    }
+    const FollowerSpec follower = project.follower.value_or(FollowerSpec{});
+    const auto sized = sizeBaseRadius(*project.design, follower, options);
+    if (!sized.ok()) {
+        const Diagnostic& d = sized.errors().front();
+        throw CliError{kNotComputable, path + ": " + d.location, d.message};
+    }
+    const SizingResult& r = sized.value();
+    const auto degreesOrNull = [](const std::optional<double>& rad) {
+        return rad ? Json(radToDeg(*rad)) : Json(nullptr);
+    };
+    Json report{
+        {"base_radius_mm", r.baseRadius},
+        {"binding", sizingCheckName(r.binding)},
+        {"at_deg", radToDeg(r.bindingPhi)},
+        {"was_mm", project.design->baseRadius},
+        {"min_radius_mm", options.minRadius},
+        {"limit_deg", follower.maxPressureAngleOrDefault()},
+        {"pressure_angle_rise_deg", degreesOrNull(r.pressureRise)},
+        {"pressure_angle_return_deg", degreesOrNull(r.pressureReturn)},
+        {"min_convex_radius_mm", r.minConvexRadius ? Json(*r.minConvexRadius) : Json(nullptr)}};
+    if (r.faceWidth) report["face_width_mm"] = *r.faceWidth;
+    if (const auto outPath = args.option("--out")) {
+        report["out"] = *outPath;
+        project.design->baseRadius = r.baseRadius;
+        requireFinite(report, "");
+        const Diagnostics written = writeFileAtomically(*outPath, serializeProject(project));
+        if (!written.empty()) throw CliError{kInvalidInput, *outPath, written.front().message};
+    }
+    printJson(out, report);
+    return kOk;
+}
+
+}  // namespace cam::cli

@@ -1,0 +1,84 @@
+// camwright-cli size: the smallest base radius of a design, written back with --out, checked
+// end to end — the sized project synthesised and analysed meets the limit it was sized for.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "test_support.h"
+
+namespace cam {
+namespace {
+
+using Json = nlohmann::json;
+
+const std::string kDesign =
+    std::string(CAMWRIGHT_EXAMPLES) + "/synthesised-cycloidal-roller.cam.json";
+
+TEST(CliSize, TheSizedDesignMeetsItsLimitAndABitSmallerOneDoesNot) {
+    test::TempDir dir;
+    const std::string sized = dir.file("sized.cam.json");
+    const auto run = test::runCli({"size", kDesign, "--out", sized});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Json r = Json::parse(run.out);
+    const double base = r["base_radius_mm"];
+    EXPECT_LT(base, r["was_mm"].get<double>());
+    EXPECT_EQ(r["limit_deg"], 30.0);
+    // The binding check is at its limit; the other one within it.
+    const std::string binding = r["binding"];
+    ASSERT_TRUE(binding == "pressure_angle_rise" || binding == "pressure_angle_return") << binding;
+    const double rise = r["pressure_angle_rise_deg"], fall = r["pressure_angle_return_deg"];
+    EXPECT_NEAR(binding == "pressure_angle_rise" ? rise : fall, 30.0, 1e-6);
+    EXPECT_LE(std::max(rise, fall), 30.0 + 1e-9);
+    // NEW is the project with that base radius, nothing else changed.
+    Json original = Json::parse(test::readFile(kDesign));
+    const Json written = Json::parse(test::readFile(sized));
+    EXPECT_EQ(written["design"]["base_radius"].get<double>(), base);
+    original["design"]["base_radius"] = base;
+    EXPECT_EQ(written["design"], original["design"]);
+    EXPECT_EQ(written["follower"], original["follower"]);
+
+    // Synthesised, its follower's largest pressure angle (analyze, on the arc table) is the
+    // limit, to the arc fit's tolerance.
+    const std::string cam = dir.file("cam.cam.json");
+    const auto made = test::runCli({"synthesize", sized, "--out", cam});
+    ASSERT_EQ(made.exitCode, 0) << made.err;
+    const auto analyzed = test::runCli({"analyze", cam});
+    ASSERT_EQ(analyzed.exitCode, 0) << analyzed.err;
+    const Json p = Json::parse(analyzed.out)["follower"]["pressure_angle"];
+    EXPECT_NEAR(p["max"]["value_deg"].get<double>(), 30.0, 0.05);
+
+    // 10 % smaller, the same design is over its limit: the synthesised cam says so.
+    Json smaller = written;
+    smaller["design"]["base_radius"] = 0.9 * base;
+    const std::string small = dir.file("small.cam.json");
+    test::writeText(small, smaller.dump());
+    const std::string smallCam = dir.file("small-cam.cam.json");
+    ASSERT_EQ(test::runCli({"synthesize", small, "--out", smallCam}).exitCode, 0);
+    const auto over = test::runCli({"analyze", smallCam});
+    ASSERT_EQ(over.exitCode, 0) << over.err;
+    EXPECT_GT(Json::parse(over.out)["follower"]["pressure_angle"]["max"]["value_deg"].get<double>(),
+              30.1);
+}
+
+TEST(CliSize, AMinimumRadiusCanBindAndBadInputIsNamed) {
+    const auto run = test::runCli({"size", kDesign, "--min-radius", "20"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Json r = Json::parse(run.out);
+    EXPECT_EQ(r["binding"], "convex_radius");
+    EXPECT_NEAR(r["min_convex_radius_mm"].get<double>(), 20.0, 1e-6);
+    EXPECT_FALSE(r.contains("out"));
+
+    const auto negative = test::runCli({"size", kDesign, "--min-radius", "-1"});
+    EXPECT_EQ(negative.exitCode, 2);
+    EXPECT_NE(negative.err.find("--min-radius"), std::string::npos) << negative.err;
+    const auto notANumber = test::runCli({"size", kDesign, "--min-radius", "nan"});
+    EXPECT_EQ(notANumber.exitCode, 2);
+    const std::string noDesign = std::string(CAMWRIGHT_EXAMPLES) + "/six-lobe-arc-cam.cam.json";
+    const auto none = test::runCli({"size", noDesign});
+    EXPECT_EQ(none.exitCode, 2);
+    EXPECT_NE(none.err.find("design"), std::string::npos) << none.err;
+}
+
+}  // namespace
+}  // namespace cam

@@ -1,0 +1,168 @@
+// The smallest base radius (design/sizing.h) against closed forms written here: for a
+// translating knife or roller with offset e, tan|α| = |s' − e| / (s0 + s) with s0 = √(Rp² − e²),
+// so the limit holds everywhere when s0 ≥ max(|s' − e| / tan α_max − s), i.e.
+// Rp = √(e² + max(|s' − e| / tan α_max − s)²) (math.md §7: 1.75094 for 30° without offset);
+// a flat face's profile radius is Rb + s + s'' (math.md §7: Rb ≥ 1.89263 for ρ ≥ 0.25).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/angles.h"
+#include "design/exact_profile.h"
+#include "design/motion_design.h"
+#include "design/sizing.h"
+
+namespace cam {
+namespace {
+
+/// A cycloidal rise of 1 mm over 90°, dwell to 180°, cycloidal return over 90°, dwell.
+DesignSpec cycloidalDesign() {
+    DesignSpec d;
+    d.baseRadius = 10.0;
+    d.segments = {{MotionLawType::Cycloidal, 90.0, 1.0},
+                  {MotionLawType::Dwell, 180.0, 1.0},
+                  {MotionLawType::Cycloidal, 270.0, 0.0},
+                  {MotionLawType::Dwell, 360.0, 0.0}};
+    return d;
+}
+
+/// That motion in closed form: s, s', s'' per radian.
+std::array<double, 3> law(double phi) {
+    const double beta = kPi / 2.0;
+    const auto rise = [&](double x) {
+        return std::array<double, 3>{x - std::sin(kTwoPi * x) / kTwoPi,
+                                     (1.0 - std::cos(kTwoPi * x)) / beta,
+                                     kTwoPi * std::sin(kTwoPi * x) / (beta * beta)};
+    };
+    if (phi < beta) return rise(phi / beta);
+    if (phi < 2 * beta) return {1.0, 0.0, 0.0};
+    if (phi < 3 * beta) {
+        const auto r = rise((phi - 2 * beta) / beta);
+        return {1.0 - r[0], -r[1], -r[2]};
+    }
+    return {0.0, 0.0, 0.0};
+}
+
+/// The closed form's prime-circle radius for offset e and limit α_max (dense in φ).
+double primeRadius(double e, double limitDeg) {
+    double worst = -1e300;
+    for (int i = 0; i < 400000; ++i) {
+        const auto s = law(kTwoPi * i / 400000);
+        worst = std::max(worst, std::abs(s[1] - e) / std::tan(degToRad(limitDeg)) - s[0]);
+    }
+    return std::sqrt(e * e + worst * worst);
+}
+
+FollowerSpec translating(FollowerType type, double offset, double radius, double limitDeg) {
+    FollowerSpec f;
+    f.type = type;
+    f.offset = offset;
+    f.radius = radius;
+    f.maxPressureAngleDeg = limitDeg;
+    return f;
+}
+
+TEST(Sizing, AKnifesSmallestBaseRadiusIsMathSection7s) {
+    const auto r = sizeBaseRadius(cycloidalDesign(), translating(FollowerType::Knife, 0, 0, 30));
+    ASSERT_TRUE(r.ok());
+    EXPECT_NEAR(r.value().baseRadius, primeRadius(0.0, 30.0), 1e-7);
+    EXPECT_NEAR(r.value().baseRadius, 1.75094, 1e-5);
+    // Without offset rise and return are mirror images: either binds, at its steepest point.
+    ASSERT_TRUE(r.value().pressureRise && r.value().pressureReturn);
+    EXPECT_NEAR(*r.value().pressureRise, degToRad(30.0), 1e-8);
+    EXPECT_NEAR(*r.value().pressureReturn, degToRad(30.0), 1e-8);
+    EXPECT_TRUE(r.value().binding == SizingCheck::PressureRise ||
+                r.value().binding == SizingCheck::PressureReturn);
+}
+
+TEST(Sizing, AnOffsetRollerAndAnOffsetKnifeFollowTheClosedForm) {
+    // A roller 0.2 mm, offset +0.3, limit 35°: the return is steeper (|s' − e| = |s'| + e).
+    const auto roller =
+        sizeBaseRadius(cycloidalDesign(), translating(FollowerType::Roller, 0.3, 0.2, 35));
+    ASSERT_TRUE(roller.ok());
+    EXPECT_NEAR(roller.value().baseRadius + 0.2, primeRadius(0.3, 35.0), 1e-7);
+    EXPECT_EQ(roller.value().binding, SizingCheck::PressureReturn);
+    // Where it binds, the closed form's pressure angle is the limit.
+    const double phi = roller.value().bindingPhi;
+    const auto s = law(phi);
+    const double s0 = std::sqrt(std::pow(roller.value().baseRadius + 0.2, 2) - 0.09);
+    EXPECT_GT(phi, kPi);
+    EXPECT_LT(phi, 1.5 * kPi);
+    EXPECT_NEAR(std::atan(std::abs(s[1] - 0.3) / (s0 + s[0])), degToRad(35.0), 1e-7);
+
+    // A knife offset −0.2 with a 25° limit: the rise binds.
+    const auto knife =
+        sizeBaseRadius(cycloidalDesign(), translating(FollowerType::Knife, -0.2, 0.0, 25));
+    ASSERT_TRUE(knife.ok());
+    EXPECT_NEAR(knife.value().baseRadius, primeRadius(-0.2, 25.0), 1e-7);
+    EXPECT_EQ(knife.value().binding, SizingCheck::PressureRise);
+    EXPECT_LT(knife.value().bindingPhi, kPi / 2);
+}
+
+TEST(Sizing, AFlatFacesBaseRadiusIsSetByItsSmallestRadius) {
+    // min(s + s'') = −1.64263: Rb = 1.89263 leaves a radius of 0.25 mm (math.md §7); the face
+    // spans s' from −1.27324 to +1.27324 whatever the base radius.
+    SizingOptions options;
+    options.minRadius = 0.25;
+    const auto r =
+        sizeBaseRadius(cycloidalDesign(), translating(FollowerType::Flat, 0, 0, 30), options);
+    ASSERT_TRUE(r.ok());
+    EXPECT_NEAR(r.value().baseRadius, 1.89263, 1e-5);
+    double least = 1e300;
+    for (int i = 0; i < 400000; ++i) {
+        const auto s = law(kTwoPi * i / 400000);
+        least = std::min(least, s[0] + s[2]);
+    }
+    EXPECT_NEAR(r.value().baseRadius, 0.25 - least, 1e-8);
+    EXPECT_EQ(r.value().binding, SizingCheck::ConvexRadius);
+    EXPECT_FALSE(r.value().pressureRise);  // a flat face's pressure angle is 0
+    ASSERT_TRUE(r.value().faceWidth);
+    EXPECT_NEAR(*r.value().faceWidth, 2 * 4 / kPi, 1e-9);  // 2·max s' = 2·2/β
+    ASSERT_TRUE(r.value().minConvexRadius);
+    EXPECT_NEAR(*r.value().minConvexRadius, 0.25, 1e-8);
+}
+
+TEST(Sizing, ABigRollerIsSizedByItsPitchCurvesTightestBend) {
+    // A roller of 0.5 mm with a loose 85° limit and --min-radius 0.1: the pitch curve's convex
+    // radius must stay at 0.6 mm. The pitch curve P = e·n + (s0 + s)·u, its curvature from P'
+    // = (s' − e)u + S·n and P'' = (s'' − S)u + (2s' − e)n with S = s0 + s, in closed form.
+    SizingOptions options;
+    options.minRadius = 0.1;
+    const double e = 0.0;
+    const auto r =
+        sizeBaseRadius(cycloidalDesign(), translating(FollowerType::Roller, e, 0.5, 85), options);
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r.value().binding, SizingCheck::ConvexRadius);
+    const double s0 = r.value().baseRadius + 0.5;
+    double tightest = 1e300;
+    for (int i = 0; i < 400000; ++i) {
+        const auto s = law(kTwoPi * i / 400000);
+        const double S = s0 + s[0];
+        const double cross = (s[1] - e) * (2 * s[1] - e) + S * S - S * s[2];
+        const double speed = std::hypot(s[1] - e, S);
+        if (cross > 0) tightest = std::min(tightest, speed * speed * speed / cross);
+    }
+    EXPECT_NEAR(tightest, 0.6, 1e-7);
+    ASSERT_TRUE(r.value().minConvexRadius);
+    EXPECT_NEAR(*r.value().minConvexRadius, 0.1, 1e-7);
+}
+
+TEST(Sizing, AnArmThatNoBaseRadiusSuitsIsNamed) {
+    // An arm of 5 mm about a pivot 6 mm out: the pivot ends the radii the arm can reach, and
+    // a 10° limit is never met below that.
+    FollowerSpec arm;
+    arm.motion = FollowerMotion::Oscillating;
+    arm.pivot = Eigen::Vector2d(6.0, 0.0);
+    arm.armLength = 5.0;
+    arm.maxPressureAngleDeg = 10.0;
+    DesignSpec d = cycloidalDesign();
+    for (auto& s : d.segments) s.lift = s.lift * 20.0;  // degrees swung
+    const auto r = sizeBaseRadius(d, arm);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.errors().front().code, DiagnosticCode::NoBaseRadiusPasses);
+    EXPECT_EQ(r.errors().front().location, "design.base_radius");
+}
+
+}  // namespace
+}  // namespace cam
