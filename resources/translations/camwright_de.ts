@@ -3368,7 +3368,7 @@
 <context>
     <name>cam::MotionDesignPanel</name>
     <message>
-        <location filename="../../src/app/views/motion_design_panel.cpp" line="+63" />
+        <location filename="../../src/app/views/motion_design_panel.cpp" line="+70" />
         <source>New Design</source>
         <translation>Neuer Entwurf</translation>
     </message>
@@ -3393,7 +3393,17 @@
         <translation>Radius des Grundkreises, den der Stößel bei Hub 0 berührt</translation>
     </message>
     <message>
+        <location line="+2" />
+        <source>Smallest</source>
+        <translation>Kleinster</translation>
+    </message>
+    <message>
         <location line="+3" />
+        <source>Set the smallest base radius for which the follower passes every check: the pressure angle within its limit on rise and return, no undercut (one undo step)</source>
+        <translation>Den kleinsten Grundkreisradius setzen, bei dem der Stößel alle Prüfungen besteht: Druckwinkel im Hub und Rückhub innerhalb der Grenze, kein Unterschnitt (ein Rückgängig-Schritt)</translation>
+    </message>
+    <message>
+        <location line="+10" />
         <source>Largest distance of the arc table from the exact profile</source>
         <translation>Größter Abstand der Bogentabelle vom exakten Profil</translation>
     </message>
@@ -3413,7 +3423,7 @@
         <translation>Grundkreisradius</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>Tolerance</source>
         <translation>Toleranz</translation>
     </message>
@@ -3455,7 +3465,7 @@
         <translation>Entwurf entfernen</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+15" />
         <source>Change base radius</source>
         <translation>Grundkreisradius ändern</translation>
     </message>
@@ -3470,7 +3480,27 @@
         <translation>Strenge beim Druckwinkel ändern</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+34" />
+        <source>Finding the smallest base radius…</source>
+        <translation>Kleinster Grundkreisradius wird gesucht …</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>The design changed while it was sized: try again.</source>
+        <translation>Der Entwurf hat sich während der Suche geändert: bitte erneut versuchen.</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>Smallest base radius %1: %2 binds at %3.</source>
+        <translation>Kleinster Grundkreisradius %1: %2 begrenzt bei %3.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Smallest base radius</source>
+        <translation>Kleinster Grundkreisradius</translation>
+    </message>
+    <message>
+        <location line="+25" />
         <source>New design</source>
         <translation>Neuer Entwurf</translation>
     </message>
@@ -3485,7 +3515,7 @@
         <translation>Bewegungsabschnitt %1 löschen</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+23" />
         <source>This project has no motion design. New Design starts one: lay out the follower's motion, then Synthesize makes the contour from it.</source>
         <translation>Dieses Projekt hat keinen Bewegungsentwurf. „Neuer Entwurf“ legt einen an: die Bewegung des Stößels festlegen, dann erzeugt Synthetisieren daraus die Kontur.</translation>
     </message>

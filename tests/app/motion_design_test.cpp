@@ -11,6 +11,7 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTableView>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include "app_test_support.h"
 #include "common/angles.h"
 #include "contour/contour.h"
+#include "design/sizing.h"
 #include "document/commands.h"
 #include "document/project_document.h"
 #include "engine/compute_engine.h"
@@ -404,6 +406,56 @@ TEST(MotionDesign, TheLawFollowsTheTimeAxis) {
     EXPECT_NEAR(valueAt(lift, 0.25), liftDeg(90.0), 1e-12);
     window.findChild<QAction*>("actionAxisTime")->setChecked(false);
     ASSERT_TRUE(waitForResult(window));
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(MotionDesign, SmallestSetsTheSizedBaseRadiusInOneUndoStep) {
+    // The button sizes in the background and applies what design/sizing finds for the
+    // document's design and follower; the binding check is named; Undo restores the radius.
+    MainWindow window;
+    window.show();
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ASSERT_TRUE(waitForResult(window));
+    ProjectDocument* doc = window.document();
+    const double before = doc->project().design->baseRadius;
+    const auto expected =
+        sizeBaseRadius(*doc->project().design, doc->project().follower.value_or(FollowerSpec{}));
+    ASSERT_TRUE(expected.ok());
+    const int steps = doc->undoStack()->count();
+    MotionDesignPanel* panel = window.motionDesignPanel();
+    QSignalSpy finished(panel, &MotionDesignPanel::sizingFinished);
+    auto* button = panel->findChild<QPushButton*>("sizeBaseRadiusButton");
+    ASSERT_NE(button, nullptr);
+    button->click();
+    EXPECT_TRUE(panel->sizing());
+    EXPECT_FALSE(button->isEnabled());
+    ASSERT_TRUE(finished.wait(20000));
+    EXPECT_EQ(doc->project().design->baseRadius, expected.value().baseRadius);
+    EXPECT_NE(doc->project().design->baseRadius, before);
+    EXPECT_EQ(doc->undoStack()->count(), steps + 1);
+    EXPECT_TRUE(button->isEnabled());
+    EXPECT_NE(panel->sizingText().indexOf("binds at"), -1) << panel->sizingText().toStdString();
+    doc->undoStack()->undo();
+    EXPECT_EQ(doc->project().design->baseRadius, before);
+
+    // A change while it sizes drops the answer: nothing is applied.
+    button->click();
+    doc->undoStack()->push(new SetDesign(
+        doc,
+        [&] {
+            DesignSpec d = *doc->project().design;
+            d.tolerance = 0.002;
+            return d;
+        }(),
+        "tolerance"));
+    ASSERT_TRUE(finished.wait(20000));
+    EXPECT_EQ(doc->project().design->baseRadius, before);
+    EXPECT_NE(panel->sizingText().indexOf("changed"), -1) << panel->sizingText().toStdString();
 }
 
 }  // namespace

@@ -4,7 +4,9 @@
 
 #include <QAction>
 #include <QCheckBox>
+#include <QCoreApplication>
 #include <QFormLayout>
+#include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -12,10 +14,15 @@
 #include <QTableView>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 #include <array>
 #include <cmath>
 
+#include "common/angles.h"
+#include "common/diagnostic_catalogue.h"
+#include "design/sizing.h"
 #include "document/commands.h"
+#include "engine/background_priority.h"
 #include "messages/diagnostic_text.h"
 #include "models/delegates.h"
 #include "models/design_table_model.h"
@@ -76,6 +83,18 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
     m_baseRadius = lengthBox(this, "baseRadiusSpinBox",
                              tr("Radius of the base circle the follower touches at lift 0"));
     m_baseRadius->setSingleStep(1.0);
+    m_size = new QPushButton(tr("Smallest"), this);
+    m_size->setObjectName("sizeBaseRadiusButton");
+    m_size->setToolTip(
+        tr("Set the smallest base radius for which the follower passes every check: the "
+           "pressure angle within its limit on rise and return, no undercut (one undo step)"));
+    m_sizing = new QLabel(this);
+    m_sizing->setObjectName("sizingLabel");
+    m_sizing->setWordWrap(true);
+    m_sizing->setVisible(false);
+    auto* radiusRow = new QHBoxLayout;
+    radiusRow->addWidget(m_baseRadius, 1);
+    radiusRow->addWidget(m_size);
     m_tolerance = lengthBox(this, "toleranceSpinBox",
                             tr("Largest distance of the arc table from the exact profile"));
     m_tolerance->setSingleStep(0.001);
@@ -84,7 +103,8 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
     m_strict->setToolTip(
         tr("Synthesize refuses a design whose pressure angle exceeds the "
            "follower's limit (otherwise it is only reported)"));
-    form->addRow(tr("Base radius"), m_baseRadius);
+    form->addRow(tr("Base radius"), radiusRow);
+    form->addRow(QString(), m_sizing);
     form->addRow(tr("Tolerance"), m_tolerance);
     form->addRow(QString(), m_strict);
     layout->addLayout(form);
@@ -190,6 +210,7 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
     connect(m_removeDesign, &QPushButton::clicked, this, [this] {
         m_document->undoStack()->push(new SetDesign(m_document, std::nullopt, tr("Remove design")));
     });
+    connect(m_size, &QPushButton::clicked, this, &MotionDesignPanel::sizeBaseRadius);
     connect(m_split, &QPushButton::clicked, this, [this] { splitSegment(currentRow()); });
     connect(m_delete, &QPushButton::clicked, this, [this] { deleteSegment(currentRow()); });
     const auto number = [this](NumberSpinBox* box, std::function<void(DesignSpec&, double)> set,
@@ -231,6 +252,56 @@ void MotionDesignPanel::editDesign(const std::function<void(DesignSpec&)>& chang
     if (design == *m_document->project().design) return;
     m_document->undoStack()->push(new SetDesign(m_document, design, text, gesture));
 }
+
+void MotionDesignPanel::sizeBaseRadius() {
+    if (m_sizingRuns || !m_document->project().design) return;
+    // The GUI thread never computes: the design and follower are snapshotted, sized in the
+    // background, and the answer applied only if they are still what was sized.
+    const DesignSpec design = *m_document->project().design;
+    const FollowerSpec follower = m_document->project().follower.value_or(FollowerSpec{});
+    m_sizingRuns = true;
+    m_size->setEnabled(false);
+    m_sizing->setVisible(true);
+    m_sizing->setStyleSheet(QString());
+    m_sizing->setText(tr("Finding the smallest base radius…"));
+    auto* watcher = new QFutureWatcher<Result<SizingResult>>(this);
+    connect(watcher, &QFutureWatcher<Result<SizingResult>>::finished, this,
+            [this, watcher, design, follower] {
+                watcher->deleteLater();
+                m_sizingRuns = false;
+                m_size->setEnabled(m_document->project().design.has_value());
+                const Result<SizingResult> r = watcher->result();
+                const auto& now = m_document->project();
+                if (!now.design || *now.design != design ||
+                    now.follower.value_or(FollowerSpec{}) != follower) {
+                    m_sizing->setText(tr("The design changed while it was sized: try again."));
+                    emit sizingFinished();
+                    return;
+                }
+                if (!r.ok()) {
+                    m_sizing->setStyleSheet(QStringLiteral("color: #b41e1e"));
+                    m_sizing->setText(DiagnosticText::line(r.errors().front()));
+                    emit sizingFinished();
+                    return;
+                }
+                const SizingResult& s = r.value();
+                m_sizing->setText(
+                    tr("Smallest base radius %1: %2 binds at %3.")
+                        .arg(formatQuantity(DisplayQuantity::Length, s.baseRadius),
+                             QCoreApplication::translate(kDiagnosticContext,
+                                                         sizingCheckTitle(s.binding)),
+                             formatQuantity(DisplayQuantity::Angle, radToDeg(s.bindingPhi))));
+                editDesign([&](DesignSpec& d) { d.baseRadius = s.baseRadius; },
+                           tr("Smallest base radius"), 0);
+                emit sizingFinished();
+            });
+    watcher->setFuture(QtConcurrent::run([design, follower] {
+        runInTheBackground();
+        return cam::sizeBaseRadius(design, follower);
+    }));
+}
+
+QString MotionDesignPanel::sizingText() const { return m_sizing->text(); }
 
 void MotionDesignPanel::newDesign() {
     if (m_document->project().design) return;
@@ -294,6 +365,7 @@ void MotionDesignPanel::refresh() {
                                                       m_split, m_delete, m_synthesize}) {
         w->setEnabled(design.has_value());
     }
+    m_size->setEnabled(design.has_value() && !m_sizingRuns);
     if (design) {
         m_baseRadius->setValue(design->baseRadius);
         m_tolerance->setValue(design->tolerance);

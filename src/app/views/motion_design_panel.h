@@ -57,6 +57,18 @@ public:
     /// @brief Deletes segment `row`; the segment before it (the next for the first) takes over
     /// its stretch and end lift (one undo step). The last segment cannot be deleted.
     void deleteSegment(int row);
+    /// @brief Finds the smallest base radius that passes every check (design/sizing.h) in the
+    /// background and sets it (one undo step), unless the design or the follower changed
+    /// meanwhile; the panel's sizing line says which check binds, or why none passes.
+    void sizeBaseRadius();
+    /// @brief The sizing line under the base radius ("" before the first sizing).
+    [[nodiscard]] QString sizingText() const;
+    /// @brief Whether a sizing runs now.
+    [[nodiscard]] bool sizing() const { return m_sizingRuns; }
+
+signals:
+    /// @brief A sizing finished (applied, refused, or dropped as stale).
+    void sizingFinished();
 
 private:
     void refresh();
@@ -69,6 +81,9 @@ private:
     QPushButton* m_newDesign;
     QPushButton* m_removeDesign;
     NumberSpinBox* m_baseRadius;
+    QPushButton* m_size;
+    QLabel* m_sizing;
+    bool m_sizingRuns = false;
     NumberSpinBox* m_tolerance;
     QCheckBox* m_strict;
     QTableView* m_table;
