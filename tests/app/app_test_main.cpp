@@ -27,6 +27,12 @@ class FreshLayout : public ::testing::EmptyTestEventListener {
 int main(int argc, char** argv) {
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
     QLocale::setDefault(QLocale::c());
+    // A home of this process's own: with the test mode on, Qt keeps application data (the
+    // recovery folder of autosave) under ~/.qttest, which the app_tests processes ctest runs
+    // side by side would otherwise share — one process's session copies offered for recovery
+    // in another, a modal prompt no test answers.
+    const QTemporaryDir home;
+    qputenv("HOME", home.path().toLocal8Bit());
     QStandardPaths::setTestModeEnabled(true);
     QApplication app(argc, argv);
     // Settings (layout, recent files, axis choice) start empty in every run and never touch

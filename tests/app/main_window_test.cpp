@@ -7,6 +7,7 @@
 #include <QAction>
 #include <QDir>
 #include <QDockWidget>
+#include <QFile>
 #include <QImage>
 #include <QInputDialog>
 #include <QLabel>
@@ -439,22 +440,33 @@ TEST(MainWindow, UnsavedChangesPromptCancelKeepsAndDiscardDrops) {
     EXPECT_TRUE(window.document()->filePath().isEmpty());
 }
 
+/// A copy of the example of this test's own: opening a file another window holds asks first
+/// (FileWatch::isOpenElsewhere), and the app_tests processes ctest runs side by side open the
+/// bundled example all the time — a modal question no test answers.
+QString privateExample(const QTemporaryDir& dir) {
+    const QString copy = dir.filePath("six-lobe-arc-cam.cam.json");
+    QFile::copy(kExampleFile, copy);
+    return copy;
+}
+
 TEST(MainWindow, DroppingAProjectOpensItAndRecentFilesRememberIt) {
+    QTemporaryDir dir;
+    const QString example = privateExample(dir);
     MainWindow window;
     auto* mime = new QMimeData;
-    mime->setUrls({QUrl::fromLocalFile(kExampleFile)});
+    mime->setUrls({QUrl::fromLocalFile(example)});
     QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, mime, Qt::LeftButton, Qt::NoModifier);
     QCoreApplication::sendEvent(&window, &enter);
     EXPECT_TRUE(enter.isAccepted());
     QDropEvent drop(QPointF(10, 10), Qt::CopyAction, mime, Qt::LeftButton, Qt::NoModifier);
     QCoreApplication::sendEvent(&window, &drop);
     EXPECT_EQ(window.document()->project().contour.size(), 13u);
-    EXPECT_EQ(window.document()->filePath(), QFileInfo(kExampleFile).absoluteFilePath());
+    EXPECT_EQ(window.document()->filePath(), QFileInfo(example).absoluteFilePath());
     auto* recent = window.findChild<QMenu*>("menuRecent");
     ASSERT_NE(recent, nullptr);
     ASSERT_FALSE(recent->actions().isEmpty());
     EXPECT_EQ(recent->actions().front()->text(),
-              QDir::toNativeSeparators(QFileInfo(kExampleFile).absoluteFilePath()));
+              QDir::toNativeSeparators(QFileInfo(example).absoluteFilePath()));
     delete mime;
 }
 
@@ -483,7 +495,7 @@ TEST(MainWindow, CloseAsksAboutUnsavedChangesAndLeavesANewProject) {
 TEST(MainWindow, ARecentFileThatIsGoneIsRemovedWithOneMessage) {
     QTemporaryDir dir;
     const QString gone = dir.filePath("gone.cam.json");
-    const QString kept = QFileInfo(kExampleFile).absoluteFilePath();
+    const QString kept = QFileInfo(privateExample(dir)).absoluteFilePath();
     QSettings().setValue("files/recent", QStringList{gone, kept});
     MainWindow window;
     auto* recent = window.findChild<QMenu*>("menuRecent");

@@ -267,12 +267,13 @@ TEST(QuantityFormat, TheFollowerChecksShowAnglesAndRadiiWithTheTablesDigits) {
     const QStringList lines = window.followerPanel()->checkLines();
     ASSERT_GE(lines.size(), 3);
     EXPECT_EQ(lines[0], "Largest pressure angle on rise: 37.9451° at 73.63043° (limit 40°)");
-    EXPECT_EQ(lines[1], "Largest pressure angle on return: -37.9451° at 106.3696° (limit 40°)");
-    EXPECT_TRUE(lines.contains("Smallest radius of curvature of the profile: 6 mm at 90.16467°"))
+    // A magnitude per phase (issue 29), not the signed minimum.
+    EXPECT_EQ(lines[1], "Largest pressure angle on return: 37.9451° at 106.3696° (limit 40°)");
+    EXPECT_TRUE(lines.contains("Smallest convex radius of the profile: 6 mm at 90.16467°"))
         << lines.join(" | ").toStdString();
     EXPECT_TRUE(
-        lines.contains("Smallest radius of curvature of the pitch curve: 11 mm at "
-                       "90.16467°"))
+        lines.contains("Smallest convex radius of the pitch curve: 11 mm at 90.16467° (roller "
+                       "radius 5 mm)"))
         << lines.join(" | ").toStdString();
 }
 
