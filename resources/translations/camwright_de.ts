@@ -3,7 +3,7 @@
 <context>
     <name>Diagnostic</name>
     <message>
-        <location filename="../../src/core/common/diagnostic_catalogue.cpp" line="+19" />
+        <location filename="../../src/core/common/diagnostic_catalogue.cpp" line="+20" />
         <source>must be a finite number (got %1)</source>
         <translation>muss eine endliche Zahl sein (ist %1)</translation>
     </message>
@@ -1669,7 +1669,7 @@
 <context>
     <name>MotionLaw</name>
     <message>
-        <location filename="../../src/core/design/motion_law.cpp" line="+134" />
+        <location filename="../../src/core/design/motion_law.cpp" line="+143" />
         <source>Dwell</source>
         <translation>Rast</translation>
     </message>
@@ -1707,6 +1707,11 @@
         <location line="+2" />
         <source>Poly 5 (boundary values)</source>
         <translation>Polynom 5 (Randwerte)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Constant velocity</source>
+        <translation>Konstante Geschwindigkeit</translation>
     </message>
 </context>
 <context>

@@ -40,6 +40,8 @@ const Table kTable[] = {
     {MotionLawType::ModifiedSine, 1.7596, 5.5280, 69.47, 1e-2, 0, 0, 0, 0},
     {MotionLawType::Poly345, 1.875, 5.7735, 60.0, 1e-4, 0, 0, 0, 0},
     {MotionLawType::Poly4567, 2.1875, 7.5132, 52.5, 1e-4, 0, 0, 0, 0},
+    // Not in math.md: y = x, y' = 1, y'' = y''' = 0, at speed at both ends.
+    {MotionLawType::ConstantVelocity, 1.0, 0.0, 0.0, 0.0, 1, 1, 0, 0},
 };
 
 /// max |f| over [0, 1]: 200 001 samples, the best refined by golden sections.
@@ -135,6 +137,7 @@ TEST(MotionLaw, NamesReadBack) {
         EXPECT_EQ(lawFromName(lawName(law)), law);
     }
     EXPECT_EQ(lawFromName("modified-trapezoid"), MotionLawType::ModifiedTrapezoid);
+    EXPECT_EQ(lawFromName("line"), MotionLawType::ConstantVelocity);
     EXPECT_FALSE(lawFromName("sinus"));
 }
 
@@ -222,6 +225,44 @@ TEST(MotionDesign, AHarmonicRiseBetweenDwellsJumpsInAcceleration) {
     // The message rounds to kMessageDigits = 10 significant digits.
     EXPECT_TRUE(relClose(std::stod(message.substr(to + 4)), jump, 1e-9)) << message;
     EXPECT_EQ(m.value().jumps()[0].message.find("velocity"), std::string::npos);
+}
+
+TEST(MotionDesign, AConstantVelocityRiseBetweenDwellsJumpsInVelocityOnly) {
+    // Dwell 0–60°, a line up 10 mm to 180°, dwell to 240°, a line back down to 360°.
+    DesignSpec d = test::cycloidalDesign();
+    d.segments = {{MotionLawType::Dwell, 60.0, 0.0},
+                  {MotionLawType::ConstantVelocity, 180.0, 10.0},
+                  {MotionLawType::Dwell, 240.0, 10.0},
+                  {MotionLawType::ConstantVelocity, 360.0, 0.0}};
+    const auto built = MotionDesign::build(d);
+    ASSERT_TRUE(built.ok()) << built.errors().front().text();
+    const MotionDesign& m = built.value();
+    // By hand: s = 10·(φ − 60°)/120°, s' = 10/h per rad, s'' = 0.
+    const double h = degToRad(120.0);
+    EXPECT_NEAR(m.liftAt(degToRad(90.0))[0], 2.5, 1e-13);
+    EXPECT_NEAR(m.liftAt(degToRad(90.0))[1], 10.0 / h, 1e-12);
+    EXPECT_EQ(m.liftAt(degToRad(90.0))[2], 0.0);
+    EXPECT_NEAR(m.liftAt(degToRad(300.0))[0], 5.0, 1e-13);
+    EXPECT_NEAR(m.liftAt(degToRad(300.0))[1], -10.0 / h, 1e-12);
+    const LawCoefficients c = m.coefficients(1);
+    EXPECT_EQ(c.cv, 1.0);
+    EXPECT_EQ(c.ca, 0.0);
+    EXPECT_EQ(c.cj, 0.0);
+    // Its nature: the velocity jumps by 10/120 mm per degree at each of the four joints, the
+    // acceleration nowhere; notes, not errors.
+    const double perDeg = 10.0 / 120.0;
+    const std::pair<double, double> expected[] = {
+        {0.0, perDeg}, {perDeg, 0.0}, {0.0, -perDeg}, {-perDeg, 0.0}};
+    ASSERT_EQ(m.jumps().size(), 4u);
+    for (std::size_t k = 0; k < 4; ++k) {
+        const Diagnostic& jump = m.jumps()[k];
+        EXPECT_EQ(jump.code, DiagnosticCode::DesignVelocityJump) << jump.text();
+        EXPECT_EQ(jump.severity, Severity::Info);
+        ASSERT_EQ(jump.args.size(), 2u) << jump.text();
+        EXPECT_NEAR(std::get<double>(jump.args[0]), expected[k].first, 1e-15) << jump.text();
+        EXPECT_NEAR(std::get<double>(jump.args[1]), expected[k].second, 1e-15) << jump.text();
+    }
+    EXPECT_EQ(m.jumps()[3].location, "design.segments[3]/design.segments[0]");
 }
 
 TEST(MotionDesign, EveryProblemHasItsPlace) {
