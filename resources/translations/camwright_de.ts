@@ -1694,7 +1694,7 @@
 <context>
     <name>MotionLaw</name>
     <message>
-        <location filename="../../src/core/design/motion_law.cpp" line="+134" />
+        <location filename="../../src/core/design/motion_law.cpp" line="+143" />
         <source>Dwell</source>
         <translation>Rast</translation>
     </message>
@@ -1732,6 +1732,11 @@
         <location line="+2" />
         <source>Poly 5 (boundary values)</source>
         <translation>Polynom 5 (Randwerte)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Constant velocity</source>
+        <translation>Konstante Geschwindigkeit</translation>
     </message>
 </context>
 <context>

@@ -246,5 +246,83 @@ TEST(CliSynthesize, ADesignWithoutAContourIsValidButHasNothingToComputeYet) {
         << invalid.err;
 }
 
+/// The constant-velocity law ("line") between poly5 blends that meet its slope, 10/160 mm per
+/// degree (2.5 → 7.5 mm over 80°), with their acceleration 0: a design without a jump.
+std::string lineDesign(const std::string& rise) {
+    return R"({
+  "format": "camwright", "version": 1, "name": "line",
+  "motion": { "rpm": 60 },
+  "contour": [],
+  "follower": { "type": "roller", "radius": 8, "offset": 2 },
+  "design": { "base_radius": 40, "tolerance": 0.001, "segments": [
+)" + rise + R"(,
+    { "law": "dwell", "to_deg": 200 },
+    { "law": "poly5", "to_deg": 240, "lift": 7.5, "v0": 0, "a0": 0, "v1": -0.0625, "a1": 0 },
+    { "law": "line", "to_deg": 320, "lift": 2.5 },
+    { "law": "poly5", "to_deg": 360, "lift": 0, "v0": -0.0625, "a0": 0, "v1": 0, "a1": 0 } ] }
+})";
+}
+
+const char* const kBlendedLineRise = R"(
+    { "law": "dwell", "to_deg": 20 },
+    { "law": "poly5", "to_deg": 60, "lift": 2.5, "v0": 0, "a0": 0, "v1": 0.0625, "a1": 0 },
+    { "law": "line", "to_deg": 140, "lift": 7.5 },
+    { "law": "poly5", "to_deg": 180, "lift": 10, "v0": 0.0625, "a0": 0, "v1": 0, "a1": 0 })";
+
+TEST(CliSynthesize, AConstantVelocityLawBlendedToItsSlopeMakesArcsAndKeepsItsName) {
+    test::TempDir dir;
+    const std::string in = dir.file("line.cam.json"), made = dir.file("made.cam.json");
+    test::writeFileWithMode(in, lineDesign(kBlendedLineRise), 0644);
+    const auto valid = test::runCli({"validate", in});
+    EXPECT_EQ(valid.exitCode, 0) << valid.err;
+    const auto r = test::runCli({"synthesize", in, "--out", made});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Json report = Json::parse(r.out);
+    EXPECT_TRUE(report.at("notes").empty()) << r.out;  // the blends meet the line's slope
+    EXPECT_LE(report.at("max_deviation_mm").get<double>(), 0.001);
+    EXPECT_EQ(test::runCli({"validate", made}).exitCode, 0);
+    const Json segments = Json::parse(test::readFile(made)).at("design").at("segments");
+    ASSERT_EQ(segments.size(), 8u);
+    EXPECT_EQ(segments[2].at("law"), "line");
+    EXPECT_EQ(segments[6].at("law"), "line");
+    EXPECT_EQ(segments[6].at("lift"), 2.5);
+}
+
+TEST(CliSynthesize, AConstantVelocityLawNextToADwellIsValidButHasACorner) {
+    // Straight from a dwell: the velocity jumps (a note, so the design validates), and the
+    // roller's profile has a corner where the rise meets the dwell at 180°: no arcs within a
+    // tolerance fit there.
+    test::TempDir dir;
+    const std::string in = dir.file("line.cam.json"), made = dir.file("made.cam.json");
+    test::writeFileWithMode(in, lineDesign(R"(
+    { "law": "dwell", "to_deg": 60 },
+    { "law": "line", "to_deg": 180, "lift": 10 })"),
+                            0644);
+    const auto valid = test::runCli({"validate", in});
+    EXPECT_EQ(valid.exitCode, 0) << valid.err;
+    const auto r = test::runCli({"synthesize", in, "--out", made});
+    EXPECT_EQ(r.exitCode, 3) << r.out;
+    EXPECT_NE(r.err.find(in + ": design.tolerance: cannot be met near 179.99"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("corner"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(made));
+}
+
+TEST(CliSynthesize, ValidateNamesTheConstantVelocityLaw) {
+    // A line that does not move is refused with the law's file name.
+    test::TempDir dir;
+    const std::string in = dir.file("line.cam.json");
+    std::string flat = lineDesign(kBlendedLineRise);
+    const std::string moving = R"("law": "line", "to_deg": 320, "lift": 2.5)";
+    flat.replace(flat.find(moving), moving.size(), R"("law": "line", "to_deg": 320, "lift": 7.5)");
+    test::writeFileWithMode(in, flat, 0644);
+    const auto r = test::runCli({"validate", in});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find(in + ": design.segments[6].lift: must differ from the lift it starts with "
+                              "(7.5) for line"),
+              std::string::npos)
+        << r.err;
+}
+
 }  // namespace
 }  // namespace cam

@@ -1,9 +1,11 @@
 // Motion laws and designs (math.md §8), checked against math.md's table of Cv, Ca, Cj (found
-// here by dense sampling, not taken from the code), central differences of y, v and a, the
-// boundary values a poly5 is asked for, and the cycloidal cam of math.md §8 by hand.
+// here by dense sampling, not taken from the code; for a law math.md does not list, against its
+// closed form), central differences of y, v and a, the boundary values a poly5 is asked for, and
+// the cycloidal cam of math.md §8 by hand.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -19,19 +21,27 @@ namespace {
 
 using test::relClose;
 
+/// A normalised law's reference values: one row per law of LawShape::Normalised.
 struct Table {
     MotionLawType law;
-    double cv, ca, cj;  // as math.md §8 gives them (cj < 0: not given)
-    double digits;      // the table's last digit
+    double cv, ca, cj;  // as math.md §8 gives them, or the closed form (cj < 0: not given)
+    double digits;      // the table's last digit (0: a closed form)
+    double v0, v1;      // y'(0), y'(1)
+    double a0, a1;      // y''(0), y''(1)
 };
 
+const double kHalfPi2 = kPi * kPi / 2.0;
+
 const Table kTable[] = {
-    {MotionLawType::Harmonic, 1.5708, 4.9348, -1.0, 1e-4},
-    {MotionLawType::Cycloidal, 2.0, 6.2832, 39.478, 1e-3},
-    {MotionLawType::ModifiedTrapezoid, 2.0, 4.8881, 61.43, 1e-2},
-    {MotionLawType::ModifiedSine, 1.7596, 5.5280, 69.47, 1e-2},
-    {MotionLawType::Poly345, 1.875, 5.7735, 60.0, 1e-4},
-    {MotionLawType::Poly4567, 2.1875, 7.5132, 52.5, 1e-4},
+    // Harmonic: y = (1 − cos πx)/2, so y''(0) = π²/2 and y''(1) = −π²/2.
+    {MotionLawType::Harmonic, 1.5708, 4.9348, -1.0, 1e-4, 0, 0, kHalfPi2, -kHalfPi2},
+    {MotionLawType::Cycloidal, 2.0, 6.2832, 39.478, 1e-3, 0, 0, 0, 0},
+    {MotionLawType::ModifiedTrapezoid, 2.0, 4.8881, 61.43, 1e-2, 0, 0, 0, 0},
+    {MotionLawType::ModifiedSine, 1.7596, 5.5280, 69.47, 1e-2, 0, 0, 0, 0},
+    {MotionLawType::Poly345, 1.875, 5.7735, 60.0, 1e-4, 0, 0, 0, 0},
+    {MotionLawType::Poly4567, 2.1875, 7.5132, 52.5, 1e-4, 0, 0, 0, 0},
+    // Not in math.md: y = x, y' = 1, y'' = y''' = 0, at speed at both ends.
+    {MotionLawType::ConstantVelocity, 1.0, 0.0, 0.0, 0.0, 1, 1, 0, 0},
 };
 
 /// max |f| over [0, 1]: 200 001 samples, the best refined by golden sections.
@@ -50,6 +60,15 @@ double sampledMax(const std::function<double(double)>& f) {
     return std::max({std::abs(f(0.5 * (lo + hi))), std::abs(f(static_cast<double>(best) / n))});
 }
 
+TEST(MotionLaw, EveryNormalisedLawHasAReferenceRow) {
+    // The table below is read from the laws' table, so a new law cannot go untested.
+    for (const MotionLawKind& kind : motionLaws()) {
+        const bool listed =
+            std::ranges::any_of(kTable, [&](const Table& row) { return row.law == kind.type; });
+        EXPECT_EQ(listed, kind.shape == LawShape::Normalised) << kind.name;
+    }
+}
+
 TEST(MotionLaw, CharacteristicValuesAreThoseOfMathMdsTable) {
     for (const Table& row : kTable) {
         const std::string name(lawName(row.law));
@@ -59,7 +78,7 @@ TEST(MotionLaw, CharacteristicValuesAreThoseOfMathMdsTable) {
         const double cj = sampledMax([&](double x) { return normalisedLaw(row.law, x).j; });
         EXPECT_NEAR(cv, row.cv, row.digits / 2 + 1e-12) << name;
         EXPECT_NEAR(ca, row.ca, row.digits / 2 + 1e-12) << name;
-        if (row.cj > 0.0) {
+        if (row.cj >= 0.0) {
             EXPECT_NEAR(cj, row.cj, row.digits / 2 + 1e-12) << name;
         }
         // The closed forms the app shows agree with the sampling.
@@ -70,18 +89,16 @@ TEST(MotionLaw, CharacteristicValuesAreThoseOfMathMdsTable) {
     }
 }
 
-TEST(MotionLaw, RisesFromRestToOne) {
+TEST(MotionLaw, RisesFromZeroToOneWithTheEndConditionsOfItsRow) {
     for (const Table& row : kTable) {
         const std::string name(lawName(row.law));
         const LawPoint start = normalisedLaw(row.law, 0.0), end = normalisedLaw(row.law, 1.0);
         EXPECT_NEAR(start.y, 0.0, 1e-15) << name;
         EXPECT_NEAR(end.y, 1.0, 1e-14) << name;
-        EXPECT_NEAR(start.v, 0.0, 1e-14) << name;
-        EXPECT_NEAR(end.v, 0.0, 1e-13) << name;
-        if (row.law != MotionLawType::Harmonic) {
-            EXPECT_NEAR(start.a, 0.0, 1e-13) << name;
-            EXPECT_NEAR(end.a, 0.0, 1e-12) << name;
-        }
+        EXPECT_NEAR(start.v, row.v0, 1e-14) << name;
+        EXPECT_NEAR(end.v, row.v1, 1e-13) << name;
+        EXPECT_NEAR(start.a, row.a0, 1e-13) << name;
+        EXPECT_NEAR(end.a, row.a1, 1e-12) << name;
         // Symmetric rises: y(1 − x) = 1 − y(x).
         for (double x = 0.013; x < 1.0; x += 0.0731) {
             EXPECT_NEAR(normalisedLaw(row.law, 1.0 - x).y, 1.0 - normalisedLaw(row.law, x).y, 1e-14)
@@ -115,11 +132,12 @@ TEST(MotionLaw, DerivativesAreThoseOfTheLawItself) {
 }
 
 TEST(MotionLaw, NamesReadBack) {
-    for (int k = 0; k <= static_cast<int>(MotionLawType::Poly5); ++k) {
+    for (std::size_t k = 0; k < kMotionLawCount; ++k) {
         const auto law = static_cast<MotionLawType>(k);
         EXPECT_EQ(lawFromName(lawName(law)), law);
     }
     EXPECT_EQ(lawFromName("modified-trapezoid"), MotionLawType::ModifiedTrapezoid);
+    EXPECT_EQ(lawFromName("line"), MotionLawType::ConstantVelocity);
     EXPECT_FALSE(lawFromName("sinus"));
 }
 
@@ -207,6 +225,44 @@ TEST(MotionDesign, AHarmonicRiseBetweenDwellsJumpsInAcceleration) {
     // The message rounds to kMessageDigits = 10 significant digits.
     EXPECT_TRUE(relClose(std::stod(message.substr(to + 4)), jump, 1e-9)) << message;
     EXPECT_EQ(m.value().jumps()[0].message.find("velocity"), std::string::npos);
+}
+
+TEST(MotionDesign, AConstantVelocityRiseBetweenDwellsJumpsInVelocityOnly) {
+    // Dwell 0–60°, a line up 10 mm to 180°, dwell to 240°, a line back down to 360°.
+    DesignSpec d = test::cycloidalDesign();
+    d.segments = {{MotionLawType::Dwell, 60.0, 0.0},
+                  {MotionLawType::ConstantVelocity, 180.0, 10.0},
+                  {MotionLawType::Dwell, 240.0, 10.0},
+                  {MotionLawType::ConstantVelocity, 360.0, 0.0}};
+    const auto built = MotionDesign::build(d);
+    ASSERT_TRUE(built.ok()) << built.errors().front().text();
+    const MotionDesign& m = built.value();
+    // By hand: s = 10·(φ − 60°)/120°, s' = 10/h per rad, s'' = 0.
+    const double h = degToRad(120.0);
+    EXPECT_NEAR(m.liftAt(degToRad(90.0))[0], 2.5, 1e-13);
+    EXPECT_NEAR(m.liftAt(degToRad(90.0))[1], 10.0 / h, 1e-12);
+    EXPECT_EQ(m.liftAt(degToRad(90.0))[2], 0.0);
+    EXPECT_NEAR(m.liftAt(degToRad(300.0))[0], 5.0, 1e-13);
+    EXPECT_NEAR(m.liftAt(degToRad(300.0))[1], -10.0 / h, 1e-12);
+    const LawCoefficients c = m.coefficients(1);
+    EXPECT_EQ(c.cv, 1.0);
+    EXPECT_EQ(c.ca, 0.0);
+    EXPECT_EQ(c.cj, 0.0);
+    // Its nature: the velocity jumps by 10/120 mm per degree at each of the four joints, the
+    // acceleration nowhere; notes, not errors.
+    const double perDeg = 10.0 / 120.0;
+    const std::pair<double, double> expected[] = {
+        {0.0, perDeg}, {perDeg, 0.0}, {0.0, -perDeg}, {-perDeg, 0.0}};
+    ASSERT_EQ(m.jumps().size(), 4u);
+    for (std::size_t k = 0; k < 4; ++k) {
+        const Diagnostic& jump = m.jumps()[k];
+        EXPECT_EQ(jump.code, DiagnosticCode::DesignVelocityJump) << jump.text();
+        EXPECT_EQ(jump.severity, Severity::Info);
+        ASSERT_EQ(jump.args.size(), 2u) << jump.text();
+        EXPECT_NEAR(std::get<double>(jump.args[0]), expected[k].first, 1e-15) << jump.text();
+        EXPECT_NEAR(std::get<double>(jump.args[1]), expected[k].second, 1e-15) << jump.text();
+    }
+    EXPECT_EQ(m.jumps()[3].location, "design.segments[3]/design.segments[0]");
 }
 
 TEST(MotionDesign, EveryProblemHasItsPlace) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "common/angles.h"
@@ -439,6 +440,38 @@ TEST(ProjectJsonDesign, EveryProblemIsNamedWithItsPlace) {
                            << expected.second << "\"), got:\n"
                            << all;
     }
+}
+
+TEST(ProjectJsonDesign, AConstantVelocityLawIsReadAndWrittenAsLine) {
+    // Dwell, a line up, dwell, a line down: valid (its velocity jumps are notes).
+    std::string text = kMinimal;
+    text.insert(text.rfind('}'), R"(,
+  "design": { "base_radius": 40, "segments": [
+    { "law": "dwell", "to_deg": 60 },
+    { "law": "line", "to_deg": 180, "lift": 10 },
+    { "law": "dwell", "to_deg": 240 },
+    { "law": "line", "to_deg": 360, "lift": 0 } ] })");
+    const auto p = parseProject(text);
+    ASSERT_TRUE(p.ok()) << p.errors().front().text();
+    const DesignSpec& d = *p.value().design;
+    ASSERT_EQ(d.segments.size(), 4u);
+    EXPECT_EQ(d.segments[1].law, MotionLawType::ConstantVelocity);
+    EXPECT_EQ(d.segments[3].law, MotionLawType::ConstantVelocity);
+    EXPECT_EQ(d.segments[3].toDeg, 360.0);
+    const std::string out = serializeProject(p.value());
+    EXPECT_NE(out.find(R"("law": "line")"), std::string::npos) << out;
+    const auto again = parseProject(out);
+    ASSERT_TRUE(again.ok()) << out;
+    EXPECT_EQ(again.value(), p.value());
+    EXPECT_EQ(serializeProject(again.value()), out);
+    // An unknown law's message lists it with the others (read from the laws' table).
+    const auto unknown = parseProject(
+        withReplaced(text, R"("law": "line", "to_deg": 180)", R"("law": "lines", "to_deg": 180)"));
+    ASSERT_FALSE(unknown.ok());
+    const auto law = std::ranges::find(unknown.errors(), std::string("design.segments[1].law"),
+                                       &Diagnostic::location);
+    ASSERT_NE(law, unknown.errors().end()) << unknown.errors().front().text();
+    EXPECT_NE(law->message.find(R"("poly5", "line")"), std::string::npos) << law->message;
 }
 
 }  // namespace

@@ -106,6 +106,12 @@ LawPoint cycloidal(double x) {
     return {x - s / kTwoPi, 1.0 - c, kTwoPi * s, kTwoPi * kTwoPi * c};
 }
 
+// Constant velocity (VDI 2143's straight line): y = x. Next to a dwell its velocity jumps from 0
+// (its acceleration is an impulse there), which the design's continuity check reports
+// (MotionDesign::jumps, a note): that is the law's nature. Issue 33 will add boundary classes
+// (which laws start and end at rest, at speed) so that a design can say so before it is built.
+LawPoint constantVelocity(double x) { return {x, 1.0, 0.0, 0.0}; }
+
 LawPoint modifiedTrapezoidAt(double x) { return modifiedTrapezoid().at(x); }
 LawPoint modifiedSineAt(double x) { return modifiedSine().at(x); }
 LawPoint poly345(double x) { return polynomial({0, 0, 0, 10, -15, 6, 0, 0}, x); }
@@ -117,6 +123,9 @@ LawCoefficients harmonicCoefficients() {
     return {kPi / 2.0, kPi * kPi / 2.0, kPi * kPi * kPi / 2.0};
 }
 LawCoefficients cycloidalCoefficients() { return {2.0, kTwoPi, kTwoPi * kTwoPi}; }
+/// y' = 1 everywhere, y'' = y''' = 0 inside the interval (the jumps at its ends are the
+/// joints', not the law's).
+LawCoefficients constantVelocityCoefficients() { return {1.0, 0.0, 0.0}; }
 /// A law of sine ramps of 1/8: its crest at 1/8, its jerk there a quarter wave of it.
 template <LawPoint (*law)(double)>
 LawCoefficients rampedCoefficients() {
@@ -148,6 +157,8 @@ constexpr std::array<MotionLawKind, kMotionLawCount> kLaws{{
      LawShape::Normalised, poly4567, poly4567Coefficients},
     {MotionLawType::Poly5, "poly5", CAM_TRANSLATE_NOOP("MotionLaw", "Poly 5 (boundary values)"),
      LawShape::BoundaryValues, nullptr, nullptr},
+    {MotionLawType::ConstantVelocity, "line", CAM_TRANSLATE_NOOP("MotionLaw", "Constant velocity"),
+     LawShape::Normalised, constantVelocity, constantVelocityCoefficients},
 }};
 
 /// A function and coefficients for each normalised law, and only for those.

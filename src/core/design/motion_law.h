@@ -32,8 +32,9 @@ enum class LawShape {
 
 /// @brief A motion law, described once. Adding a law: its enumerator in CAM_MOTION_LAWS
 /// (project/project.h), its row of the table in motion_law.cpp (name, title, shape, function,
-/// coefficients in closed form), the title's German in the translations, and a reference test
-/// of its coefficients (tests/core/motion_law_test.cpp). Nothing else lists laws.
+/// coefficients in closed form), and what docs/architecture.md's recipe "A motion law" lists
+/// beside (its reference row in tests/core/motion_law_test.cpp, the German title, the docs and
+/// the spec). No code elsewhere lists laws.
 struct MotionLawKind {
     MotionLawType type;
     std::string_view name;  ///< in project files: "modified-trapezoid"

@@ -188,7 +188,8 @@ inline constexpr double kMaxSpeedMmS = 1e9;
     X(ModifiedSine)        \
     X(Poly345)             \
     X(Poly4567)            \
-    X(Poly5)
+    X(Poly5)               \
+    X(ConstantVelocity)
 
 #define CAM_MOTION_LAW_ENUM(name) name,
 enum class MotionLawType { CAM_MOTION_LAWS(CAM_MOTION_LAW_ENUM) };

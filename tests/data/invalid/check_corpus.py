@@ -400,8 +400,9 @@ def validate(doc, probs):
         check_design(doc["design"], probs)
 
 
+# The laws of math.md §8 and "line" (constant velocity), which the spec does not list yet.
 LAWS = ["dwell", "harmonic", "cycloidal", "modified-trapezoid", "modified-sine", "poly345",
-        "poly4567", "poly5"]
+        "poly4567", "poly5", "line"]
 
 
 def check_design(d, probs):
