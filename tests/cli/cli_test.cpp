@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -238,6 +240,63 @@ TEST(CliErrors, BadArgumentsGiveTheDocumentedExitCode) {
         EXPECT_EQ(r.out, "");
     }
     EXPECT_FALSE(std::filesystem::exists(data + "/no-such-dir"));
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+/// The point of an arc (centre c, radius R, the outer or inner crossing) on the ray at φ.
+std::array<double, 2> arcPoint(double cx, double cy, double R, bool outer, double phi) {
+    const double ux = std::cos(phi), uy = std::sin(phi);
+    const double along = ux * cx + uy * cy, across = ux * cy - uy * cx;
+    const double rho = along + (outer ? 1.0 : -1.0) * std::sqrt(R * R - across * across);
+    return {rho * ux, rho * uy};
+}
+
+TEST(CliAnalyze, AnArcTablesJerkIsUnboundedAtEveryJointWhereTheAccelerationJumps) {
+    // The seed's six-lobe cam: tangent arcs of two radii, so the acceleration jumps at each of
+    // its 12 joints. The jump at joint 1 (arc 0, inner, about (25.73752542, 0), R 4.84070597;
+    // arc 1, outer, about (18.0971765, 10.44840972), R 8.10318055; math.md §3), from each arc's
+    // own P(φ) by central differences: ω²·|P₀''(φ) − P₁''(φ)|.
+    const auto run = test::runCli({"analyze", kExample});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const nlohmann::json r = nlohmann::json::parse(run.out);
+    const auto& unbounded = r["jerk_unbounded_at"];
+    ASSERT_EQ(unbounded.size(), 12u);
+    EXPECT_EQ(r["extremes"]["j"]["between_joints_only"], true);
+    EXPECT_EQ(r["extremes"]["j_r"]["between_joints_only"], true);
+    EXPECT_EQ(r["follower"]["j"]["between_joints_only"], true);
+    const auto& first = unbounded[0];
+    EXPECT_EQ(first["left"], 0);
+    EXPECT_EQ(first["right"], 1);
+    const double phi = first["phi_deg"].get<double>() * 3.14159265358979323846 / 180.0;
+    const double omega = r["omega_rad_s"];
+    constexpr double h = 1e-4;
+    const auto second = [&](double cx, double cy, double R, bool outer) {
+        const auto a = arcPoint(cx, cy, R, outer, phi - h), b = arcPoint(cx, cy, R, outer, phi),
+                   c = arcPoint(cx, cy, R, outer, phi + h);
+        return std::array<double, 2>{(a[0] - 2 * b[0] + c[0]) / (h * h),
+                                     (a[1] - 2 * b[1] + c[1]) / (h * h)};
+    };
+    const auto p0 = second(25.73752542, 0.0, 4.84070597, false);
+    const auto p1 = second(18.0971765, 10.44840972, 8.10318055, true);
+    const double jump = omega * omega * std::hypot(p0[0] - p1[0], p0[1] - p1[1]);
+    EXPECT_NEAR(first["acceleration_jump"].get<double>(), jump, 1e-5 * jump);
+    // A circle about the axis has no joint whose acceleration jumps: none listed.
+    const std::string disc = test::writeTestTempFile("analyze", "disc.cam.json", R"({
+      "format": "camwright", "version": 1, "motion": {"period_s": 1},
+      "contour": [{"type": "arc", "center": [0, 0], "radius": 20, "branch": "outer",
+                   "phi_start": 0, "phi_end": 180},
+                  {"type": "arc", "center": [0, 0], "radius": 20, "branch": "outer",
+                   "phi_start": 180, "phi_end": 360}]})");
+    const auto plain = test::runCli({"analyze", disc});
+    ASSERT_EQ(plain.exitCode, 0) << plain.err;
+    const nlohmann::json d = nlohmann::json::parse(plain.out);
+    EXPECT_TRUE(d["jerk_unbounded_at"].empty());
+    EXPECT_EQ(d["extremes"]["j"]["between_joints_only"], false);
 }
 
 }  // namespace

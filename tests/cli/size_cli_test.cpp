@@ -45,7 +45,16 @@ TEST(CliSize, TheSizedDesignMeetsItsLimitAndABitSmallerOneDoesNot) {
     ASSERT_EQ(made.exitCode, 0) << made.err;
     const auto analyzed = test::runCli({"analyze", cam});
     ASSERT_EQ(analyzed.exitCode, 0) << analyzed.err;
-    const Json p = Json::parse(analyzed.out)["follower"]["pressure_angle"];
+    const Json report = Json::parse(analyzed.out);
+    const Json p = report["follower"]["pressure_angle"];
+    // synthesize states the jerk cost: an acceleration jump at every joint that is not C2.
+    const Json synthesis = Json::parse(made.out);
+    int notC2 = 0;
+    for (const Json& j : report["joints"]) notC2 += j["continuity"] != "C2" ? 1 : 0;
+    EXPECT_GT(notC2, 0);
+    EXPECT_EQ(synthesis["acceleration_jumps"], notC2);
+    EXPECT_EQ(synthesis["jerk"], "unbounded at each acceleration jump");
+    EXPECT_GT(synthesis["max_acceleration_jump"].get<double>(), 0.0);
     EXPECT_NEAR(p["max"]["value_deg"].get<double>(), 30.0, 0.05);
 
     // 10 % smaller, the same design is over its limit: the synthesised cam says so.

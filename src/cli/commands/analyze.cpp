@@ -43,11 +43,30 @@ int runAnalyze(const Arguments& args, std::ostream& out, std::ostream& /*err*/) 
         };
         extremes[quantityName(e.quantity)] = Json{{"min", one(e.min)}, {"max", one(e.max)}};
     }
-    const Json result{{"omega_rad_s", loaded.omega},
-                      {"units", {{"length", "mm"}, {"angle", "deg"}, {"time", "s"}}},
-                      {"joints", std::move(joints)},
-                      {"extremes", std::move(extremes)},
-                      {"follower", followerAnalysisJson(loaded)}};
+    // Where the acceleration jumps the jerk is unbounded: the extremes of j and j_r above are
+    // those between joints, and say so.
+    Json unbounded = Json::array();
+    for (const UnboundedJerk& u : unboundedJerk(analysis.joints, loaded.omega)) {
+        unbounded.push_back({{"joint", u.right},
+                             {"left", u.left},
+                             {"right", u.right},
+                             {"phi_deg", radToDeg(u.phi)},
+                             {"acceleration_jump", u.accelerationJump}});
+    }
+    const bool between = !unbounded.empty();
+    for (const char* q : {"j", "j_r"}) {
+        if (extremes.contains(q)) extremes[q]["between_joints_only"] = between;
+    }
+    Json result{{"omega_rad_s", loaded.omega},
+                {"units", {{"length", "mm"}, {"angle", "deg"}, {"time", "s"}}},
+                {"joints", std::move(joints)},
+                {"extremes", std::move(extremes)},
+                {"jerk_unbounded_at", std::move(unbounded)},
+                {"follower", followerAnalysisJson(loaded)}};
+    // The follower's jerk jumps with the contour's acceleration at the same joints.
+    for (const char* q : {"j", "jerk_arm"}) {
+        if (result["follower"].contains(q)) result["follower"][q]["between_joints_only"] = between;
+    }
     printJson(out, result);
     return kOk;
 }

@@ -2,7 +2,9 @@
 
 #include <ostream>
 
+#include "analysis/analysis.h"
 #include "cli/command_support.h"
+#include "contour/contour.h"
 #include "design/synthesis.h"
 #include "evaluation/evaluation.h"
 #include "io/atomic_file.h"
@@ -61,6 +63,19 @@ int runSynthesize(const Arguments& args, std::ostream& out, std::ostream& /*err*
     if (tolerance) project.design->tolerance = *tolerance;
     const bool swinging =
         project.follower && project.follower->motion == FollowerMotion::Oscillating;
+    // What the arcs cost the jerk: an arc table is C1, so at every joint between arcs of
+    // different curvature the acceleration jumps and the jerk is unbounded there.
+    std::size_t jumps = 0;
+    double largestJump = 0.0;
+    if (const auto omega = usableOmega(project.motion)) {
+        if (const auto made = Contour::build(project); made.ok()) {
+            for (const UnboundedJerk& u :
+                 unboundedJerk(analyzeJoints(made.value(), *omega), *omega)) {
+                ++jumps;
+                largestJump = std::max(largestJump, u.accelerationJump);
+            }
+        }
+    }
     Json notes = Json::array();
     for (const Diagnostic& d : r.notes) notes.push_back(d.text());
     const Json report{{"segments", r.segments},
@@ -71,6 +86,9 @@ int runSynthesize(const Arguments& args, std::ostream& out, std::ostream& /*err*
                       {"velocity_unit", swinging ? "deg/s" : "mm/s"},
                       {"acceleration_unit", swinging ? "deg/s^2" : "mm/s^2"},
                       {"tolerance_mm", tolerance.value_or(project.design->tolerance)},
+                      {"acceleration_jumps", jumps},
+                      {"max_acceleration_jump", largestJump},
+                      {"jerk", jumps > 0 ? "unbounded at each acceleration jump" : "bounded"},
                       {"notes", notes},
                       {"out", *outPath}};
     requireFinite(report, "");

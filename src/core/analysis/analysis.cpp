@@ -275,4 +275,13 @@ ContourAnalysis analyzeContour(const Contour& contour, double omega,
     return result;
 }
 
+std::vector<UnboundedJerk> unboundedJerk(const std::vector<JointAnalysis>& joints, double omega) {
+    std::vector<UnboundedJerk> out;
+    for (const JointAnalysis& j : joints) {
+        if (j.continuity == Continuity::C2) continue;
+        out.push_back({j.left, j.right, j.phi, omega * omega * j.jumpD2.norm()});
+    }
+    return out;
+}
+
 }  // namespace cam

@@ -49,6 +49,20 @@ struct JointAnalysis {
     Continuity continuity = Continuity::None;
 };
 
+/// @brief A joint where the acceleration jumps (an arc table's every joint between arcs of
+/// different curvature): there the jerk is unbounded — a Dirac impulse of the jump — and the
+/// jerk's extremes a sampling finds are those between joints only.
+struct UnboundedJerk {
+    std::size_t left = 0, right = 0;
+    double phi = 0.0;               ///< rad, the joint's angle
+    double accelerationJump = 0.0;  ///< |a(right) − a(left)| = ω²·|d²P/dφ² jump|, mm/s²
+};
+
+/// @brief The joints of `joints` (of a contour turning at omega) where the acceleration jumps:
+/// every one whose kinematic continuity is below C2.
+[[nodiscard]] std::vector<UnboundedJerk> unboundedJerk(const std::vector<JointAnalysis>& joints,
+                                                       double omega);
+
 /// @brief A quantity over one turn that analysis reports the extremes of.
 enum class Quantity { R, VR, V, AR, A, JR, J };
 inline constexpr std::array<Quantity, 7> kAllQuantities{
