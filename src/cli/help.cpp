@@ -196,7 +196,7 @@ std::vector<CommandHelp> makeTable() {
                  {"synthesize design.cam.json --out cam.cam.json --tolerance 0.001"}});
     t.push_back({"size",
                  "size PROJECT [--min-radius MM] [--out NEW]",
-                 "the smallest base radius of the design that passes every check",
+                 "the smallest base radius that passes every check",
                  "Finds the smallest base radius of the project's motion design for which its "
                  "follower (a radial knife when it names none) passes every check: the pressure "
                  "angle within the follower's limit on rise and on return, no undercut (the "
