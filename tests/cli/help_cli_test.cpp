@@ -27,6 +27,7 @@ const std::vector<std::pair<std::string, std::vector<std::string>>> kSpecCommand
       "--depth"}},
     {"synthesize", {"--out", "--tolerance", "--output"}},
     {"fillet", {"--joint", "--radius", "--speed", "--accel", "--vae", "--out"}},
+    {"fit-windows", {"--out"}},
 };
 
 /// The options a help page lists: the lines "  --name ..." of its options section.
