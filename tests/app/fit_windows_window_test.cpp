@@ -12,6 +12,7 @@
 
 #include "app_test_support.h"
 #include "contour/fit_windows.h"
+#include "document/contour_edits.h"
 #include "document/project_document.h"
 #include "mainwindow.h"
 #include "models/segment_table_model.h"
@@ -80,6 +81,31 @@ TEST(FitWindowsInWindow, TheSeedTableBecomesValidInOneUndoStepWithEveryChangeLis
     fit->trigger();
     EXPECT_EQ(stack->count(), steps + 1);
     EXPECT_EQ(window.findChild<QMessageBox*>("editDetailsBox"), nullptr);
+}
+
+TEST(FitWindowsInWindow, JointsThatCannotBeFittedAreNamedWithTheirGapAndNothingChanges) {
+    MainWindow window;
+    ASSERT_TRUE(window
+                    .loadFile(QString::fromStdString(
+                        test::dataPath("seed-table/table1-as-printed.cam.json")))
+                    .isEmpty());
+    ProjectDocument* document = window.document();
+    const Project printed = document->project();
+    const int steps = document->undoStack()->count();
+    const EditOutcome outcome = ContourEdits::fitWindows(*document);
+    ASSERT_FALSE(outcome.ok());
+    // Lobe 3 at (−18.1, −18.1) misses notch 3 by |c4 − c5| − (R4 + R5), from the file's numbers.
+    const Arc& a = *printed.contour[4].as<Arc>();
+    const Arc& b = *printed.contour[5].as<Arc>();
+    const double gap = (b.center - a.center).norm() - (a.radius + b.radius);
+    EXPECT_NEAR(gap, 27.77966807, 1e-8);
+    EXPECT_TRUE(outcome.problem.contains("Joint between segments 4 and 5"))
+        << outcome.problem.toStdString();
+    EXPECT_TRUE(outcome.problem.contains("27.77966807 mm")) << outcome.problem.toStdString();
+    EXPECT_TRUE(outcome.problem.contains("Joint between segments 0 and 1"))
+        << outcome.problem.toStdString();
+    EXPECT_EQ(document->undoStack()->count(), steps);
+    EXPECT_EQ(document->project(), printed);
 }
 
 TEST(FitWindowsInWindow, APlainFitListsNothingAndSaysSo) {
