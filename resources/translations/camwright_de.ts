@@ -869,11 +869,41 @@
     </message>
     <message>
         <location line="+2" />
-        <source>the neighbouring segments do not meet, so there is no boundary to fit</source>
-        <translation>die benachbarten Segmente treffen sich nicht, daher gibt es keine Grenze, an die sich die Fenster anpassen ließen</translation>
+        <source>the neighbouring segments miss each other by %1 mm, more than the typing tolerance of 1e-05 mm, so there is no boundary to fit</source>
+        <translation>die benachbarten Segmente verfehlen sich um %1 mm, mehr als die Tipptoleranz von 10⁻⁵ mm, daher gibt es keine Grenze anzupassen</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
+        <source>making the neighbouring segments meet would move %1 by %2 mm in all, more than the typing tolerance of 1e-05 mm</source>
+        <translation>damit sich die benachbarten Segmente treffen, müsste sich %1 insgesamt um %2 mm ändern, mehr als die Tipptoleranz von 10⁻⁵ mm</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the neighbouring segments still miss each other by %1 mm after %2 rounds of moves; type the centres more exactly</source>
+        <translation>die benachbarten Segmente verfehlen sich nach %2 Runden von Verschiebungen noch um %1 mm; bitte die Mittelpunkte genauer eingeben</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>moved by %1 mm, from (%2, %3) to (%4, %5), so that the circle touches %6 (they missed each other by less than the typing tolerance of 1e-05 mm)</source>
+        <translation>um %1 mm verschoben, von (%2, %3) nach (%4, %5), damit der Kreis %6 berührt (sie verfehlten sich um weniger als die Tipptoleranz von 10⁻⁵ mm)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>changed by %1 mm, centre (%2, %3) and radius %4 mm to centre (%5, %6) and radius %7 mm, so that the circle touches both %8 and %9 (they missed each other by less than the typing tolerance of 1e-05 mm)</source>
+        <translation>um %1 mm geändert, Mittelpunkt (%2, %3) und Radius %4 mm zu Mittelpunkt (%5, %6) und Radius %7 mm, damit der Kreis sowohl %8 als auch %9 berührt (sie verfehlten sich um weniger als die Tipptoleranz von 10⁻⁵ mm)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>made the same circle as %1: moved by %2 mm, to centre (%3, %4) and radius %5 mm (the two pieces differed by less than the typing tolerance of 1e-05 mm)</source>
+        <translation>zum selben Kreis wie %1 gemacht: um %2 mm verschoben, zu Mittelpunkt (%3, %4) und Radius %5 mm (die beiden Stücke unterschieden sich um weniger als die Tipptoleranz von 10⁻⁵ mm)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>moved by %1 mm across its direction so that it meets %2 (they missed each other by less than the typing tolerance of 1e-05 mm)</source>
+        <translation>um %1 mm quer zu ihrer Richtung verschoben, damit sie %2 trifft (sie verfehlten sich um weniger als die Tipptoleranz von 10⁻⁵ mm)</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>is empty: the design's contour was never synthesised (camwright-cli synthesize makes it)</source>
         <translation>ist leer: die Kontur des Entwurfs wurde noch nie synthetisiert (camwright-cli synthesize erzeugt sie)</translation>
     </message>
@@ -1996,7 +2026,7 @@
 <context>
     <name>cam::ContourEdits</name>
     <message>
-        <location filename="../../src/app/document/contour_edits.cpp" line="+16" />
+        <location filename="../../src/app/document/contour_edits.cpp" line="+17" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
@@ -2021,22 +2051,38 @@
         <translation>Das Segment kann nicht weiter verschoben werden.</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+11" />
         <source>The windows already fit.</source>
         <translation>Die Fenster passen bereits.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>Fit windows</source>
         <translation>Fenster anpassen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>Windows fitted to the joints.</source>
         <translation>Fenster an die Stoßstellen angepasst.</translation>
     </message>
+    <message numerus="yes">
+        <location line="+1" />
+        <source>Windows fitted; %n segment(s) changed to meet, by at most %1.</source>
+        <translation>
+            <numerusform>Fenster angepasst; %n Segment zum Treffen geändert, um höchstens %1.</numerusform>
+            <numerusform>Fenster angepasst; %n Segmente zum Treffen geändert, um höchstens %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6" />
+        <source>The project still has %n problem(s): %1</source>
+        <translation>
+            <numerusform>Das Projekt hat noch %n Problem: %1</numerusform>
+            <numerusform>Das Projekt hat noch %n Probleme: %1</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+4" />
+        <location line="+11" />
         <source>Select the segment after the corner to round.</source>
         <translation>Das Segment nach der zu verrundenden Ecke auswählen.</translation>
     </message>
@@ -2919,13 +2965,13 @@
     </message>
     <message>
         <location line="+167" />
-        <location line="+28" />
+        <location line="+29" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
     <message>
-        <location line="-28" />
-        <location line="+29" />
+        <location line="-29" />
+        <location line="+30" />
         <source>t [s]</source>
         <translation>t [s]</translation>
     </message>
@@ -2936,16 +2982,17 @@
     </message>
     <message>
         <location line="+6" />
+        <location line="+8" />
         <source>No design checks: %1</source>
         <translation>Keine Auslegungsprüfung: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-7" />
         <source>No design checks: the contour cannot be computed.</source>
         <translation>Keine Auslegungsprüfung: die Kontur lässt sich nicht berechnen.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+13" />
         <source>The follower cannot ride this cam: %1</source>
         <translation>Der Stößel kann diese Scheibe nicht abtasten: %1</translation>
     </message>
@@ -3174,7 +3221,7 @@
         <translation>Stößel</translation>
     </message>
     <message>
-        <location line="+109" />
+        <location line="+112" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -3337,7 +3384,7 @@
         <translation>Keine Bearbeitungszeit: %1</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+19" />
         <source>%1 (relative error about %2)</source>
         <translation>%1 (relativer Fehler etwa %2)</translation>
     </message>
@@ -4171,7 +4218,7 @@ Möchten Sie die Datei ersetzen?</translation>
         <translation>Noch keine Kontur: Synthetisieren (F6, im Fenster Bewegungsentwurf) erzeugt sie aus dem Entwurf.</translation>
     </message>
     <message numerus="yes">
-        <location line="+9" />
+        <location line="+11" />
         <source> (and %n more)</source>
         <translation>
             <numerusform> (und %n weiterer)</numerusform>
@@ -4580,7 +4627,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <translation>&lt;h3&gt;Camwright %1&lt;/h3&gt;&lt;p&gt;Kurvenscheiben entwerfen und prüfen: exakte Polarkinematik des Stößels, Entwurf aus Bewegungsgesetzen, Bearbeitungszeit, Export für CAD, CNC und Servoantriebe.&lt;/p&gt;&lt;p&gt;Lizenz: GPL-3.0-or-later.&lt;/p&gt;&lt;p&gt;Erstellt mit&lt;/p&gt;&lt;ul&gt;&lt;li&gt;Qt %2 (LGPL-3.0)&lt;/li&gt;&lt;li&gt;QCustomPlot %3 (GPL-3.0)&lt;/li&gt;&lt;li&gt;Eigen %4 (MPL-2.0)&lt;/li&gt;&lt;li&gt;JSON for Modern C++ (nlohmann-json) %5 (MIT)&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+33" />
         <source>Project renamed to “%1”</source>
         <translation>Projekt in „%1“ umbenannt</translation>
     </message>

@@ -15,6 +15,8 @@ int runSample(const Arguments& args, std::ostream& out, std::ostream& err);
 int runAnalyze(const Arguments& args, std::ostream& out, std::ostream& err);
 int runTiming(const Arguments& args, std::ostream& out, std::ostream& err);
 int runFillet(const Arguments& args, std::ostream& out, std::ostream& err);
+/// @brief `fit-windows`: every window from where its neighbours meet (Fit Windows), to --out.
+int runFitWindows(const Arguments& args, std::ostream& out, std::ostream& err);
 int runExport(const Arguments& args, std::ostream& out, std::ostream& err);
 /// @brief `synthesize`: the design → an arc table (math.md §8), written to --out; a report.
 int runSynthesize(const Arguments& args, std::ostream& out, std::ostream& err);

@@ -67,9 +67,10 @@ const std::string kExitCodes =
 /// The function that runs the command called `name` (cli/commands.h).
 auto commandRunner(const std::string& name) -> decltype(CommandHelp::run) {
     static const std::pair<const char*, decltype(CommandHelp::run)> kRunners[] = {
-        {"validate", runValidate},     {"state", runState},   {"sample", runSample},
-        {"analyze", runAnalyze},       {"timing", runTiming}, {"fillet", runFillet},
-        {"synthesize", runSynthesize}, {"size", runSize},     {"export", runExport},
+        {"validate", runValidate},      {"state", runState},           {"sample", runSample},
+        {"analyze", runAnalyze},        {"timing", runTiming},         {"fillet", runFillet},
+        {"fit-windows", runFitWindows}, {"synthesize", runSynthesize}, {"size", runSize},
+        {"export", runExport},
     };
     for (const auto& [known, run] : kRunners) {
         if (name == known) return run;
@@ -175,6 +176,26 @@ std::vector<CommandHelp> makeTable() {
                   {"--vae", "E", "the admissible acceleration error, a ratio > 0"},
                   {"--out", "NEW", "the file for the new project (required)"}},
                  {"fillet cam.cam.json --joint 3 --radius 2 --out rounded.cam.json"}});
+    t.push_back(
+        {"fit-windows",
+         "fit-windows PROJECT --out NEW",
+         "every window from where its neighbours meet",
+         "Sets every window boundary to where its two neighbouring segments meet and writes "
+         "the project with it to NEW, as Edit → Fit Windows does. Segments that touch meet at "
+         "their tangent point; segments that cross (circles that overlap by the rounding of "
+         "typed numbers do, at two points close together) at the intersection nearest the "
+         "boundary as it was. Segments that miss each other by at most the typing tolerance of "
+         "1e-05 mm are made to meet by the smallest change of the later one: a circle's "
+         "centre moves along the line of centres (centre and radius together when that would "
+         "open its other joint), a second piece of one circle takes the first piece's circle, a "
+         "line moves across its direction; no segment moves by more than 1e-05 mm. Every "
+         "change is listed on standard error; a JSON report on standard output gives each "
+         "joint's angle and how the segments meet there, and each change.\n\n"
+         "Exit 3 naming every joint whose segments miss each other by more than the typing "
+         "tolerance, with the distance; exit 2 when the fitted project would still have "
+         "problems (they are listed; NEW is not written).",
+         {{"--out", "NEW", "the file for the new project (required)"}},
+         {"fit-windows typed.cam.json --out fitted.cam.json"}});
     t.push_back({"synthesize",
                  "synthesize PROJECT --out NEW [--tolerance MM]\n[--output arcs]",
                  "the contour made from the project's motion design",

@@ -186,7 +186,7 @@ TEST_F(SegmentTableModelTest, FitWindowsIsOneUndoStep) {
     const std::vector<SegmentSpec> before = document.project().contour;
     const auto fitted = fitWindows(before);
     ASSERT_TRUE(fitted.ok());
-    stack().push(new ReplaceContour(&document, fitted.value(), "Fit windows"));
+    stack().push(new ReplaceContour(&document, fitted.value().contour, "Fit windows"));
     EXPECT_EQ(stack().count(), steps + 1);
     EXPECT_TRUE(document.isValid());
     EXPECT_NEAR(document.project().contour[1].phiEndDeg, 50.30859, 1e-5);

@@ -28,6 +28,7 @@ const std::vector<std::pair<std::string, std::vector<std::string>>> kSpecCommand
     {"synthesize", {"--out", "--tolerance", "--output"}},
     {"fillet", {"--joint", "--radius", "--speed", "--accel", "--vae", "--out"}},
     {"size", {"--min-radius", "--out"}},
+    {"fit-windows", {"--out"}},
 };
 
 /// The options a help page lists: the lines "  --name ..." of its options section.

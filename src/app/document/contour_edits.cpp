@@ -6,6 +6,7 @@
 #include "document/project_document.h"
 #include "fillet/fillet.h"
 #include "io/number_rows.h"
+#include "messages/diagnostic_text.h"
 #include "spline/circle_approximation.h"
 #include "widgets/quantity_format.h"
 
@@ -66,11 +67,28 @@ EditOutcome ContourEdits::moveSegment(ProjectDocument& document, int row, int de
 EditOutcome ContourEdits::fitWindows(ProjectDocument& document) {
     const auto fitted = cam::fitWindows(document.project().contour);
     if (!fitted.ok()) return EditOutcome::refused(diagnosticsText(fitted.errors()));
-    if (fitted.value() == document.project().contour) {
+    const FittedWindows& f = fitted.value();
+    if (f.contour == document.project().contour) {
         return EditOutcome::done(tr("The windows already fit."));
     }
-    document.undoStack()->push(new ReplaceContour(&document, fitted.value(), tr("Fit windows")));
-    return EditOutcome::done(tr("Windows fitted to the joints."));
+    // The windows and every moved segment together: one undo step.
+    document.undoStack()->push(new ReplaceContour(&document, f.contour, tr("Fit windows")));
+    QString status =
+        f.moves.empty() ? tr("Windows fitted to the joints.")
+                        : tr("Windows fitted; %n segment(s) changed to meet, by at most %1.", "",
+                             static_cast<int>(f.moves.size()))
+                              .arg(formatQuantity(DisplayQuantity::LengthError, f.largestMoveMm()));
+    // Said, not hidden: what else keeps the project from being valid.
+    if (const Diagnostics& left = document.diagnostics(); hasErrors(left)) {
+        status += QLatin1Char(' ') +
+                  tr("The project still has %n problem(s): %1", "", static_cast<int>(left.size()))
+                      .arg(diagnosticText(left.front()));
+    }
+    EditOutcome outcome = EditOutcome::done(status);
+    QStringList changes;
+    for (const Diagnostic& d : f.notes) changes << diagnosticText(d);
+    outcome.details = changes.join(QLatin1Char('\n'));
+    return outcome;
 }
 
 EditOutcome ContourEdits::roundCorner(ProjectDocument& document, int joint, double rho) {

@@ -15,15 +15,18 @@ namespace cam {
 class ProjectDocument;
 
 /// @brief What an operation did: `problem` says why nothing happened; otherwise `status` says
-/// what was done (for the status bar) and `row` is the row to select afterwards (-1: keep).
+/// what was done (for the status bar) and `row` is the row to select afterwards (-1: keep);
+/// `details`, when not empty, lists what it changed beyond what was asked, one line each (Fit
+/// Windows: every segment it moved), for the window to show.
 struct EditOutcome {
     QString problem;
     QString status;
     int row = -1;
+    QString details;
 
-    [[nodiscard]] static EditOutcome refused(QString why) { return {std::move(why), {}, -1}; }
+    [[nodiscard]] static EditOutcome refused(QString why) { return {std::move(why), {}, -1, {}}; }
     [[nodiscard]] static EditOutcome done(QString status, int row = -1) {
-        return {{}, std::move(status), row};
+        return {{}, std::move(status), row, {}};
     }
     [[nodiscard]] bool ok() const { return problem.isEmpty(); }
 };
@@ -40,7 +43,9 @@ public:
     static EditOutcome deleteSegment(ProjectDocument& document, int row);
     /// @brief Moves `row` by `delta` rows (the new row is reported).
     static EditOutcome moveSegment(ProjectDocument& document, int row, int delta);
-    /// @brief Sets every window boundary to where its neighbours meet.
+    /// @brief Sets every window boundary to where its neighbours meet (contour/fit_windows.h);
+    /// segments that miss by a typing slip are moved to meet, each listed in `details`. The
+    /// status says how far the farthest moved and what problem, if any, the project still has.
     static EditOutcome fitWindows(ProjectDocument& document);
     /// @brief Rounds the corner at joint K (between rows K-1 and K) by a tangent arc of radius
     /// rho; the problem gives the feasible range when rho does not fit.

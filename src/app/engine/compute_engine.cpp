@@ -97,7 +97,16 @@ void ComputeWorker::run() {
             emit finished(refined);
         }
         if (request.timing && result->ok() && request.project->machining) {
-            computeTimingOf(request, *result, preparer.get());
+            if (result->valid()) {
+                computeTimingOf(request, *result, preparer.get());
+            } else {
+                // A contour with problems is not machined: its times would be shown as the
+                // cam's while nothing can be exported from it.
+                auto outcome = std::make_shared<TimingOutcome>();
+                outcome->generation = request.generation;
+                outcome->errors = result->reasonsNotShown();
+                emit timingFinished(outcome);
+            }
         }
     }
 }

@@ -171,6 +171,16 @@ std::shared_ptr<DesignCurves> computeDesign(const Project& project,
 
 }  // namespace
 
+Diagnostics ComputeResult::reasonsNotShown() const {
+    if (!errors.empty()) return errors;
+    Diagnostics reasons;
+    if (valid()) return reasons;
+    for (const Diagnostic& d : problems) {
+        if (d.severity == Severity::Error) reasons.push_back(d);
+    }
+    return reasons;
+}
+
 ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic<bool>& cancel,
                                 const PlotDataPreparer* preparer) {
     QElapsedTimer timer;

@@ -74,7 +74,9 @@ struct ComputeResult {
     /// Non-empty: nothing was computed — the contour cannot be compiled, it awaits its first
     /// synthesis, or the computation failed; the views mark what they still show as out of
     /// date. (An invalid project whose contour compiles — an open joint, a follower that
-    /// cannot ride it — is still computed and drawn while the designer edits.)
+    /// cannot ride it — is still computed: the contour view draws it and the Joints tab lists
+    /// its joints while the designer edits, but the plots show it as not computed, see
+    /// valid().)
     Diagnostics errors;
     std::optional<Contour> contour;
     double omega = 0.0;           ///< rad/s
@@ -112,6 +114,13 @@ struct ComputeResult {
     PreparedPlotDataPtr prepared;
 
     [[nodiscard]] bool ok() const { return errors.empty() && contour.has_value(); }
+    /// @brief Computed and the project valid: what the plots may draw as the project's motion.
+    /// A computed project with problems (status Invalid) is not: nothing is exported from it,
+    /// so no plot may show its curves as if they were the cam's.
+    [[nodiscard]] bool valid() const { return ok() && status == EvaluationStatus::Computed; }
+    /// @brief Why the plots do not show this result: its errors, else its problems that are
+    /// errors (notes are not reasons); empty for a valid result.
+    [[nodiscard]] Diagnostics reasonsNotShown() const;
     /// @brief Nothing of it is left for refineResult(): every plot level, every check.
     [[nodiscard]] bool complete() const { return !curves.partial && !followerChecksPending; }
     /// @brief A design whose contour was never synthesised: nothing to draw but the design.

@@ -304,7 +304,8 @@ void FollowerPanel::showCurvature(const ComputeResultPtr& result) {
 }
 
 void FollowerPanel::setResult(const ComputeResultPtr& result) {
-    const bool curve = result && result->ok() && result->follower;
+    // The curves only of a valid project (stale_label.h): an invalid one is not drawn.
+    const bool curve = result && result->valid() && result->follower;
     m_pressurePlot->setVisible(curve);
     m_curvaturePlot->setVisible(curve);
     if (curve) {
@@ -360,6 +361,14 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
             result && !result->errors.empty()
                 ? tr("No design checks: %1").arg(diagnosticText(result->errors.front()))
                 : tr("No design checks: the contour cannot be computed."));
+        return;
+    }
+    if (!result->valid() && result->followerErrors.empty()) {
+        // A contour with problems (an open joint): nothing of it is checked as the cam.
+        const Diagnostics reasons = result->reasonsNotShown();
+        m_summary->setText(
+            tr("No design checks: %1")
+                .arg(reasons.empty() ? QStringLiteral("?") : diagnosticText(reasons.front())));
         return;
     }
     if (!result->followerErrors.empty()) {

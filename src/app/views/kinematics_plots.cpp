@@ -139,7 +139,10 @@ void KinematicsPlots::setResult(const ComputeResultPtr& result) {
         setStale(staleText(*result));
         return;
     }
-    if (!result->ok()) {
+    if (!result->valid()) {
+        // Not computed, or computed for a project with problems (an open joint): the last
+        // valid curves stay, greyed under the reason; never an invalid cam's curves as if
+        // they were the cam's (the contour view still draws its contour).
         setStale(staleText(*result));
         return;
     }
@@ -288,7 +291,7 @@ void KinematicsPlots::setCursorX(double x) {
 void KinematicsPlots::rebuildJointMarkers() {
     // Where (phi = omega·t, t in [0, T)) each joint where a_r jumps comes up in the plotted turn.
     std::vector<double> xs;
-    if (m_result && m_result->ok()) {
+    if (m_result && m_result->valid()) {
         const double omega = m_result->omega;
         for (const JointAnalysis& j : m_result->joints) {
             if (j.continuity == Continuity::C2) continue;  // a_r is continuous here

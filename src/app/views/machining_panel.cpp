@@ -235,6 +235,11 @@ void MachiningPanel::setOutcome(const TimingOutcomePtr& outcome) {
         for (const Diagnostic& d : outcome->errors) lines << diagnosticText(d);
         m_status->setText(tr("No machining time: %1").arg(lines.join("; ")));
         for (QLabel* l : m_times) l->setText("—");
+        // Nor the profiles of an earlier path, which would pass for this one's.
+        m_feedPlot->graph(0)->data()->clear();
+        for (int i = 0; i < m_accelPlot->graphCount(); ++i) m_accelPlot->graph(i)->data()->clear();
+        queueReplot(m_feedPlot);
+        queueReplot(m_accelPlot);
         return;
     }
     const int plotted = static_cast<int>(outcome->plotted);

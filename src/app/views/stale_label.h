@@ -24,11 +24,13 @@ inline QString staleText(const ComputeResult& result) {
                                            "No contour yet: Synthesize (F6, in the Motion Design "
                                            "dock) makes it from the design.");
     }
-    const QString first =
-        result.errors.empty() ? QStringLiteral("?") : diagnosticText(result.errors.front());
+    // The errors of a result that could not be computed, else the problems of a project that
+    // was computed but is not valid (an open joint): the plots show neither.
+    const Diagnostics reasons = result.reasonsNotShown();
+    const QString first = reasons.empty() ? QStringLiteral("?") : diagnosticText(reasons.front());
     QString more;
-    if (result.errors.size() > 1) {
-        const int others = static_cast<int>(result.errors.size() - 1);
+    if (reasons.size() > 1) {
+        const int others = static_cast<int>(reasons.size() - 1);
         more = QCoreApplication::translate("cam::StaleLabel", " (and %n more)", nullptr, others);
     }
     return QCoreApplication::translate("cam::StaleLabel",

@@ -330,6 +330,15 @@ void WindowActions::report(const EditOutcome& outcome, const QString& title) {
     }
     if (!outcome.status.isEmpty()) m_window->statusBar()->showMessage(outcome.status, 6000);
     if (outcome.row >= 0) m_ui.segmentTable->selectRow(outcome.row);
+    if (!outcome.details.isEmpty()) {
+        // Not modal for the event loop: the window stays live, tests can read and close it.
+        auto* box = new QMessageBox(QMessageBox::Information, title, outcome.status,
+                                    QMessageBox::Ok, m_window);
+        box->setObjectName("editDetailsBox");
+        box->setInformativeText(outcome.details);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    }
 }
 
 void WindowActions::renameProject(const QString& name) {

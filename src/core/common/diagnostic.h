@@ -208,6 +208,12 @@ enum class Severity { Error, Info };
     X(ClosedSplineTooFewPoints)          \
     X(BulgeNotPositive)                  \
     X(WindowsSegmentsDoNotMeet)          \
+    X(WindowsMoveTooLarge)               \
+    X(WindowsMovesDoNotSettle)           \
+    X(WindowsCircleMoved)                \
+    X(WindowsCircleResized)              \
+    X(WindowsCircleMadeSame)             \
+    X(WindowsLineMoved)                  \
     X(ContourNeverSynthesised)           \
     X(NoDesign)                          \
     X(SynthesisedContourInvalid)         \

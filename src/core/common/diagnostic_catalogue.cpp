@@ -479,9 +479,36 @@ constexpr std::array<DiagnosticEntry, kDiagnosticCodeCount> kCatalogue{{
      CAM_TRANSLATE_NOOP("Diagnostic", "a closed spline needs at least three points")},
     {Code::BulgeNotPositive, "n",
      CAM_TRANSLATE_NOOP("Diagnostic", "must be a finite factor > 0 (got %1)")},
-    {Code::WindowsSegmentsDoNotMeet, "",
+    {Code::WindowsSegmentsDoNotMeet, "n",
      CAM_TRANSLATE_NOOP("Diagnostic",
-                        "the neighbouring segments do not meet, so there is no boundary to fit")},
+                        "the neighbouring segments miss each other by %1 mm, more than the typing "
+                        "tolerance of 1e-05 mm, so there is no boundary to fit")},
+    {Code::WindowsMoveTooLarge, "kn",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "making the neighbouring segments meet would move %1 by %2 mm in all, more "
+                        "than the typing tolerance of 1e-05 mm")},
+    {Code::WindowsMovesDoNotSettle, "ni",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "the neighbouring segments still miss each other by %1 mm after %2 rounds "
+                        "of moves; type the centres more exactly")},
+    {Code::WindowsCircleMoved, "nnnnnk",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "moved by %1 mm, from (%2, %3) to (%4, %5), so that the circle touches %6 "
+                        "(they missed each other by less than the typing tolerance of 1e-05 mm)")},
+    {Code::WindowsCircleResized, "nnnnnnnkk",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "changed by %1 mm, centre (%2, %3) and radius %4 mm to centre (%5, %6) "
+                        "and radius %7 mm, so that the circle touches both %8 and %9 (they "
+                        "missed each other by less than the typing tolerance of 1e-05 mm)")},
+    {Code::WindowsCircleMadeSame, "knnnn",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "made the same circle as %1: moved by %2 mm, to centre (%3, %4) and "
+                        "radius %5 mm (the two pieces differed by less than the typing tolerance "
+                        "of 1e-05 mm)")},
+    {Code::WindowsLineMoved, "nk",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "moved by %1 mm across its direction so that it meets %2 (they missed "
+                        "each other by less than the typing tolerance of 1e-05 mm)")},
     {Code::ContourNeverSynthesised, "",
      CAM_TRANSLATE_NOOP("Diagnostic",
                         "is empty: the design's contour was never synthesised (camwright-cli "

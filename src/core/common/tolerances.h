@@ -8,6 +8,11 @@ namespace cam {
 inline constexpr double kWindowToleranceDeg = 1e-9;
 /// @brief Largest positional gap at a joint (C0) that is not an error.
 inline constexpr double kJointToleranceMm = 1e-6;
+/// @brief How far two neighbouring segments may miss each other and still be made to meet by
+/// Fit Windows (contour/fit_windows.h), which then moves the later one by the smallest change:
+/// the rounding of typed numbers. Eight-digit centres, as the seed's Table 1 prints them, miss
+/// by up to 2e-6 mm; a real gap in a design is far wider. Also the most any segment is moved.
+inline constexpr double kTypingToleranceMm = 1e-5;
 /// @brief How far a line's given window may differ from the polar angles of its end points.
 inline constexpr double kLineWindowToleranceDeg = 1e-6;
 /// @brief A joint is tangent (no corner: C1 in φ) when the contour's tangent turns by at most
