@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <random>
 
 #include "common/angles.h"
@@ -493,6 +494,29 @@ TEST(FitWindowsSeedTable, AnyRoundingOfTheCentresToSixDecimalsFitsWithinTheToler
     }
     std::cout << "[ rounding ] largest change " << largest << " mm, " << moved
               << " circles changed, " << crossings << " joints at intersections in 500 draws\n";
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(FitWindows, ASplineWithANaNInItIsNeitherMovedNorACrash) {
+    // A NaN makes a segment unequal to itself: Fit Windows once took that for a move and read
+    // the spline as a line (std::bad_variant_access, found by app_tests RandomEdits). It must
+    // leave the spline alone; the NaN is validation's to report.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<SegmentSpec> contour{
+        SegmentSpec{Arc{{0.0, 0.0}, 20.0, Branch::Outer}, 0.0, 180.0},
+        SegmentSpec{HermiteCurve{{-20.0, 0.0}, {0.0, -30.0}, {20.0, 0.0}, {nan, 30.0}}, 180.0,
+                    360.0}};
+    const auto fitted = fitWindows(contour);  // must return, whatever it says
+    if (fitted.ok()) {
+        EXPECT_TRUE(fitted.value().moves.empty());
+    } else {
+        EXPECT_FALSE(fitted.errors().empty());
+    }
 }
 
 }  // namespace

@@ -220,12 +220,14 @@ std::optional<Arc> touchingBoth(const Arc& first, const Arc& moving, const Arc& 
 
 double moveDistance(const SegmentShape& before, const SegmentShape& after) {
     if (const Arc* a = std::get_if<Arc>(&before)) {
-        const Arc& b = std::get<Arc>(after);
-        return (b.center - a->center).norm() + std::abs(b.radius - a->radius);
+        const Arc* b = std::get_if<Arc>(&after);
+        if (!b) internalError("fitWindows: a circle became another kind of segment");
+        return (b->center - a->center).norm() + std::abs(b->radius - a->radius);
     }
-    const Line& a = std::get<Line>(before);
-    const Line& b = std::get<Line>(after);
-    return std::max((b.from - a.from).norm(), (b.to - a.to).norm());
+    const Line* a = std::get_if<Line>(&before);
+    const Line* b = std::get_if<Line>(&after);
+    if (!a || !b) return 0.0;  // splines are never moved
+    return std::max((b->from - a->from).norm(), (b->to - a->to).norm());
 }
 
 bool isSplineJoint(const SegmentSpec& left, const SegmentSpec& right) {
@@ -304,6 +306,9 @@ Result<FittedWindows> fitWindows(const std::vector<SegmentSpec>& contour) {
     std::vector<std::size_t> movedFor(n, 0);
     std::vector<std::optional<std::size_t>> alsoFor(n);
     std::vector<bool> madeSame(n, false);
+    // Which segments moved: a shape compared with itself is not the test, since a NaN in a
+    // segment (which validation then reports) makes it unequal to itself.
+    std::vector<bool> changed(n, false);
     // Gauss–Seidel over the joints: each closes its gap by moving its later segment, which the
     // next joint then sees. The last joint moves the first segment, so a second round checks
     // the first joint again.
@@ -327,6 +332,7 @@ Result<FittedWindows> fitWindows(const std::vector<SegmentSpec>& contour) {
                                                     {static_cast<double>(j), total})};
             }
             moved[j].shape = std::move(m.moved);
+            changed[j] = true;
             movedFor[j] = k;
             alsoFor[j] = also;
             madeSame[j] = m.madeSame;
@@ -405,7 +411,7 @@ Result<FittedWindows> fitWindows(const std::vector<SegmentSpec>& contour) {
         }
     }
     for (std::size_t j = 0; j < n; ++j) {
-        if (moved[j].shape != contour[j].shape) {
+        if (changed[j]) {
             SegmentMove m{j,
                           movedFor[j],
                           alsoFor[j],
