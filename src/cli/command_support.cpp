@@ -13,6 +13,15 @@ std::string placeOf(const std::string& path, const Diagnostic& d) {
     return d.location == path ? path : path + ": " + d.location;
 }
 
+Project loadStructure(const std::string& path) {
+    auto loaded = loadProjectStructure(path);
+    if (!loaded.ok()) {
+        const Diagnostic& d = loaded.errors().front();
+        throw CliError{kInvalidInput, placeOf(path, d), d.message};
+    }
+    return std::move(loaded).value();
+}
+
 Loaded load(const std::string& path) {
     auto project = loadProjectStructure(path);
     Diagnostics problems = project.ok() ? Diagnostics{} : project.errors();

@@ -31,6 +31,11 @@ struct Loaded {
 /// whole is located at the path itself).
 [[nodiscard]] std::string placeOf(const std::string& path, const Diagnostic& d);
 
+/// @brief PROJECT as read and checked against the format, not evaluated (for commands that
+/// repair or make its contour: fit-windows, synthesize, size), or throws its first problem
+/// (exit 2).
+[[nodiscard]] Project loadStructure(const std::string& path);
+
 /// @brief Loads PROJECT and evaluates it, or throws its first problem (exit 2); the rest go to
 /// stderr via `validate`, which is the command for seeing them all.
 [[nodiscard]] Loaded load(const std::string& path);

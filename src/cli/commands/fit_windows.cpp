@@ -63,12 +63,7 @@ int runFitWindows(const Arguments& args, std::ostream& out, std::ostream& err) {
     const auto outPath = args.option("--out");
     if (!outPath) throw CliError{kUsage, "--out", "is required (the file for the new project)"};
     // Not load(): its joints not meeting is what brings a project here.
-    auto loaded = loadProjectStructure(path);
-    if (!loaded.ok()) {
-        const Diagnostic& d = loaded.errors().front();
-        throw CliError{kInvalidInput, placeOf(path, d), d.message};
-    }
-    Project project = std::move(loaded).value();
+    Project project = loadStructure(path);
     if (project.contour.empty() && project.design) {
         const Diagnostic d = contourNeverSynthesised();
         throw CliError{kInvalidInput, placeOf(path, d), d.message};

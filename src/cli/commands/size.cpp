@@ -4,6 +4,7 @@
 
 #include "cli/command_support.h"
 #include "common/angles.h"
+#include "design/motion_design.h"
 #include "design/sizing.h"
 #include "evaluation/evaluation.h"
 #include "io/atomic_file.h"
@@ -23,13 +24,7 @@ int runSize(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
     }
     // A design whose contour was never synthesised is what sizing is for: the project is
     // checked as synthesize checks it, not by load().
-    auto loaded = loadProjectStructure(path);
-    if (!loaded.ok()) {
-        const Diagnostic& d = loaded.errors().front();
-        throw CliError{kInvalidInput, d.location == path ? path : path + ": " + d.location,
-                       d.message};
-    }
-    Project project = std::move(loaded).value();
+    Project project = loadStructure(path);
     if (!project.design) {
         throw CliError{kInvalidInput, path + ": design",
                        "the project has no design to size (size finds its base radius)"};

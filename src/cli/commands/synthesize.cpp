@@ -30,13 +30,7 @@ int runSynthesize(const Arguments& args, std::ostream& out, std::ostream& /*err*
     // A design whose contour was never synthesised is valid with an empty contour
     // (project-format.md), but not a contour to compute: the project is checked here, not by
     // load().
-    auto loaded = loadProjectStructure(path);
-    if (!loaded.ok()) {
-        const Diagnostic& d = loaded.errors().front();
-        throw CliError{kInvalidInput, d.location == path ? path : path + ": " + d.location,
-                       d.message};
-    }
-    Project project = std::move(loaded).value();
+    Project project = loadStructure(path);
     if (!project.design) {
         throw CliError{kInvalidInput, path + ": design",
                        "the project has no design to synthesise a contour from"};
