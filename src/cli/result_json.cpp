@@ -57,7 +57,9 @@ Json followerJson(const FollowerModel& model, const FollowerState& f) {
 /// cli.md's `follower` object of `analyze`: the design checks of math.md §7.
 Json followerAnalysisJson(const Loaded& loaded) {
     const FollowerModel& model = loaded.follower;
-    const FollowerAnalysis a = analyzeFollower(model, loaded.omega, loaded.contour.phiBegin());
+    const FollowerAnalysis a =
+        analyzeFollower(model, loaded.omega, loaded.contour.phiBegin(), kFollowerCheckSamples,
+                        nullptr, phasesOf(loaded.project));
     const auto one = [](const FollowerExtremum& e) {
         return Json{{"value", radiusJson(e.value)}, {"phi_deg", radToDeg(e.phi)}};
     };

@@ -133,11 +133,13 @@ TEST(ComputeEngine, AFirstPictureLeavesTheArmsDesignChecksToItsRefinement) {
     EXPECT_EQ(first.followerPressureDeg.size(), ComputeResult::kFollowerCurvePoints + 1);
     EXPECT_FALSE(whole.followerChecksPending);
     EXPECT_TRUE(whole.complete());
-    // The checks are those of the follower on the contour, made apart from the engine.
+    // The checks are those of the follower on the contour in the phases of its design, made
+    // apart from the engine.
     const Contour contour = Contour::build(p).value();
     const FollowerModel model = FollowerModel::build(contour, *p.follower).value();
     const FollowerAnalysis expected =
-        analyzeFollower(model, p.motion.omegaRadS(), contour.phiBegin());
+        analyzeFollower(model, p.motion.omegaRadS(), contour.phiBegin(), kFollowerCheckSamples,
+                        nullptr, phasesOf(p));
     ASSERT_TRUE(expected.pressure.rise && expected.pressure.fall);
     EXPECT_GT(expected.pressure.rise->value, 0.0);
     EXPECT_EQ(whole.followerChecks.pressure.rise->value, expected.pressure.rise->value);

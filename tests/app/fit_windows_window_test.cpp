@@ -20,6 +20,7 @@
 #include "views/follower_panel.h"
 #include "views/kinematics_plots.h"
 #include "views/stale_label.h"
+#include "views/state_readout.h"
 
 #include <qcustomplot.h>
 
@@ -143,6 +144,10 @@ TEST(FitWindowsInWindow, WhileTheProjectHasProblemsThePlotsAreGreyedAsNotCompute
     ASSERT_NE(summary, nullptr);
     EXPECT_TRUE(summary->text().startsWith("No design checks: ")) << summary->text().toStdString();
     EXPECT_FALSE(window.followerPanel()->findChild<QWidget*>("pressureAnglePlot")->isVisible());
+    // Nor is a state read out at the cursor, wherever it is put.
+    window.contourView()->cursorAngleChanged(0.5);
+    EXPECT_TRUE(window.readout()->text().startsWith("t —"))
+        << window.readout()->text().toStdString();
 
     // Fitted: valid, drawn in colour.
     window.findChild<QAction*>("actionFitWindows")->trigger();
@@ -152,6 +157,9 @@ TEST(FitWindowsInWindow, WhileTheProjectHasProblemsThePlotsAreGreyedAsNotCompute
     EXPECT_FALSE(plotsLabel()->isVisible());
     EXPECT_GT(plots->plot(1)->graph(0)->dataCount(), 0);
     EXPECT_NE(plots->plot(1)->graph(0)->pen().color(), staleColor());
+    window.contourView()->cursorAngleChanged(0.5);
+    EXPECT_TRUE(window.readout()->text().startsWith("t 0.0318"))
+        << window.readout()->text().toStdString();
 
     // A joint opened by an edit: the last valid curves stay, grey, under the reason.
     SegmentTableModel* model = window.tableModel();
@@ -166,6 +174,8 @@ TEST(FitWindowsInWindow, WhileTheProjectHasProblemsThePlotsAreGreyedAsNotCompute
     EXPECT_EQ(plots->plot(1)->graph(0)->pen().color(), staleColor());
     EXPECT_GT(plots->plot(1)->graph(0)->dataCount(), 0);
     EXPECT_TRUE(view->staleReason().isEmpty()) << view->staleReason().toStdString();
+    EXPECT_TRUE(window.readout()->text().startsWith("t —"))
+        << window.readout()->text().toStdString();
 
     // Undone: valid again, in colour.
     window.document()->undoStack()->undo();

@@ -12,7 +12,9 @@
 #include "contour/contour.h"
 #include "follower/follower.h"
 #include "follower/follower_analysis.h"
+#include "io/project_json.h"
 #include "project/project.h"
+#include "test_support.h"
 
 namespace cam {
 namespace {
@@ -176,6 +178,61 @@ TEST(FollowerMotionLaw, ASwingingArmsPressureAngleIsNotZeroInItsDwells) {
     // Both largest inside their phase, not at a dwell's edge.
     EXPECT_GT(a.pressure.rise->value, a.pressure.dwell->value + 0.1);
     EXPECT_GT(a.pressure.fall->value, a.pressure.dwell->value + 0.1);
+}
+
+TEST(FollowerMotionLaw, AnArcTablesRippleRoundADwellIsPartOfTheDwell) {
+    // The bundled swinging arm: an arc table fitted within 0.001 mm to a cycloidal rise over
+    // 0–120°, a dwell to 180°, a cycloidal return over 180–300° and a dwell to 360°. Round its
+    // dwells the fitted arm rises and falls by up to 3e-5 rad: from 152° it sinks steadily
+    // into the return, and over the rise's last degree (119.2–120°) it falls by 5e-7 rad.
+    // Neither is a return: the design's phases are the phases. The reference: the largest |α|
+    // over a dense grid of each of the design's phases, and each phase's reported angle inside
+    // that phase of the design.
+    auto project = loadProjectFile(test::examplePath("swinging-arm-cam.cam.json"));
+    ASSERT_TRUE(project.ok());
+    ASSERT_TRUE(project.value().design);
+    const Contour cam = Contour::build(project.value()).value();
+    const FollowerModel m = FollowerModel::build(cam, *project.value().follower).value();
+    const std::vector<PhaseSpan> phases = designPhases(*project.value().design);
+    const std::vector<PhaseSpan> expected{{0.0, 120.0, MotionPhase::Rise},
+                                          {120.0, 180.0, MotionPhase::Dwell},
+                                          {180.0, 300.0, MotionPhase::Fall},
+                                          {300.0, 360.0, MotionPhase::Dwell}};
+    ASSERT_EQ(phases.size(), expected.size());
+    for (std::size_t k = 0; k < phases.size(); ++k) {
+        EXPECT_NEAR(radToDeg(phases[k].from), expected[k].from, 1e-12) << k;
+        EXPECT_NEAR(radToDeg(phases[k].to), expected[k].to, 1e-12) << k;
+        EXPECT_EQ(phases[k].phase, expected[k].phase) << k;
+    }
+    const FollowerAnalysis a =
+        analyzeFollower(m, 1.0, cam.phiBegin(), kFollowerCheckSamples, nullptr, phases);
+    ASSERT_TRUE(a.pressure.rise && a.pressure.fall && a.pressure.dwell);
+    const auto largest = [&](double fromDeg, double toDeg) {
+        double best = 0.0;
+        for (int i = 0; i <= 20000; ++i) {
+            const double phi = degToRad(fromDeg + (toDeg - fromDeg) * i / 20000.0);
+            best = std::max(best, std::abs(m.at(phi, 1.0).pressureAngle));
+        }
+        return best;
+    };
+    const auto inside = [](double phi, double fromDeg, double toDeg) {
+        const double deg = std::fmod(radToDeg(phi) + 720.0, 360.0);
+        return deg >= fromDeg && deg <= toDeg;
+    };
+    EXPECT_TRUE(inside(a.pressure.rise->phi, 0.0, 120.0)) << radToDeg(a.pressure.rise->phi);
+    EXPECT_TRUE(inside(a.pressure.fall->phi, 180.0, 300.0)) << radToDeg(a.pressure.fall->phi);
+    EXPECT_TRUE(inside(a.pressure.dwell->phi, 120.0, 180.0) ||
+                inside(a.pressure.dwell->phi, 300.0, 360.0))
+        << radToDeg(a.pressure.dwell->phi);
+    // Each value the dense grid's over its phase (the grid resolves 0.006°, over which |α|
+    // changes by under 1e-5 rad), never below it.
+    EXPECT_GE(a.pressure.rise->value, largest(0.0, 120.0) - 1e-12);
+    EXPECT_NEAR(a.pressure.rise->value, largest(0.0, 120.0), 1e-5);
+    EXPECT_GE(a.pressure.fall->value, largest(180.0, 300.0) - 1e-12);
+    EXPECT_NEAR(a.pressure.fall->value, largest(180.0, 300.0), 1e-5);
+    const double dwell = std::max(largest(120.0, 180.0), largest(300.0, 360.0));
+    EXPECT_GE(a.pressure.dwell->value, dwell - 1e-12);
+    EXPECT_NEAR(a.pressure.dwell->value, dwell, 1e-5);
 }
 
 /// The flat face's design checks on h = Rb + s, the cam a chain of n cubics.

@@ -110,10 +110,14 @@ struct FollowerPart {
 
 FollowerPart computeFollower(const FollowerModel* model, double omega, double period,
                              double phiBegin, PlotAxis axis, bool checks,
+                             const std::vector<PhaseSpan>& phases,
                              const std::atomic<bool>* cancel) {
     runInTheBackground();
     FollowerPart part;
-    if (checks) part.checks = analyzeFollower(*model, omega, phiBegin);
+    if (checks) {
+        part.checks =
+            analyzeFollower(*model, omega, phiBegin, kFollowerCheckSamples, nullptr, phases);
+    }
     constexpr std::size_t n = ComputeResult::kFollowerCurvePoints;
     FollowerTurn turn;
     if (!sampleFollowerTurn(*model, omega, n, turn, cancel)) return part;
@@ -227,7 +231,7 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     if (result->follower) {
         follower = QtConcurrent::run(computeFollower, result->follower.get(), result->omega,
                                      result->period, result->contour->phiBegin(), request.axis,
-                                     checksNow, &cancel);
+                                     checksNow, phasesOf(project), &cancel);
     }
     // So are the analysis and the outlines, on the pool too (the GUI thread waits idle for
     // the first picture: its core is free).
@@ -292,7 +296,7 @@ ComputeResultPtr refineResult(const ComputeResult& first, const std::atomic<bool
     if (first.followerChecksPending) {
         result->followerChecks =
             analyzeFollower(*first.follower, first.omega, first.contour->phiBegin(),
-                            kFollowerCheckSamples, &cancel);
+                            kFollowerCheckSamples, &cancel, phasesOf(*first.project));
         result->followerChecksPending = false;
         if (cancel.load()) return nullptr;
     }

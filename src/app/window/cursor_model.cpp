@@ -24,8 +24,9 @@ void CursorModel::setAtPlotX(double x) {
 void CursorModel::setTime(double t) {
     const ComputeResultPtr& r = m_results->shown();
     const ComputeResultPtr& latest = m_engine->latestResult();
-    if (!r || !latest || !latest->ok()) {
-        // Nothing computed for the project as it is: no state to read out.
+    if (!r || !latest || !latest->valid()) {
+        // Nothing computed for the project as it is (a contour with open joints is drawn, but
+        // its follower's state is not the cam's): no state to read out.
         m_t = t;
         emit cleared();
         return;

@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <vector>
 
 #include "common/angles.h"
 #include "project/follower_kind.h"
@@ -63,25 +64,94 @@ double inTurn(double phi, double phiBegin) {
     return phiBegin + std::fmod(phi - phiBegin + 2 * kTwoPi, kTwoPi);
 }
 
-enum class Phase { Rise, Fall, Dwell };
+using Phase = MotionPhase;
+
+/// The phase a motion design gives the cam's angle phi: Either where it gives none (no design,
+/// or a segment that ends at the lift it starts with), else its segment's.
+Phase designPhaseAt(double phi, const std::vector<PhaseSpan>& spans) {
+    for (const PhaseSpan& span : spans) {
+        if (inTurn(phi, span.from) <= span.to) return span.phase;
+    }
+    return Phase::Either;
+}
+
+/// The phase of each sample: the design's where it gives one; elsewhere rising or returning by
+/// the sign of dq/dφ, dwelling where it is within kDwellSlope of its largest value. Without a
+/// design, a rise or return that moves the follower by less than kPhaseLift of its stroke (the
+/// ripple of an arc table round a dwell) is part of a dwell.
+std::vector<Phase> samplePhases(const std::vector<FollowerState>& st, double dwellSlope,
+                                double phiBegin, const std::vector<PhaseSpan>& spans) {
+    const std::size_t n = st.size();
+    const double h = kTwoPi / static_cast<double>(n);
+    std::vector<Phase> phase(n);
+    double qMin = std::numeric_limits<double>::infinity(), qMax = -qMin;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double slope = st[i].sPhi[1];
+        const Phase designed = designPhaseAt(phiBegin + static_cast<double>(i) * h, spans);
+        phase[i] = designed != Phase::Either ? designed
+                   : slope > dwellSlope      ? Phase::Rise
+                   : slope < -dwellSlope     ? Phase::Fall
+                                             : Phase::Dwell;
+        qMin = std::min(qMin, st[i].s);
+        qMax = std::max(qMax, st[i].s);
+    }
+    if (!spans.empty()) return phase;
+    // The runs of one phase round the turn, from a sample where the phase changes.
+    std::size_t start = 0;
+    while (start < n && phase[start] == phase[(start + n - 1) % n]) ++start;
+    if (start == n) return phase;  // one phase all round
+    const double ripple = kPhaseLift * (qMax - qMin);
+    for (std::size_t done = 0; done < n;) {
+        const std::size_t first = (start + done) % n;
+        std::size_t len = 1;
+        while (len < n - done && phase[(first + len) % n] == phase[first]) ++len;
+        if (phase[first] != Phase::Dwell) {
+            // The lift over the run: from the sample before it to its last sample.
+            const double lift = st[(first + len - 1) % n].s - st[(first + n - 1) % n].s;
+            if (std::abs(lift) < ripple) {
+                for (std::size_t k = 0; k < len; ++k) phase[(first + k) % n] = Phase::Dwell;
+            }
+        }
+        done += len;
+    }
+    return phase;
+}
 
 /// The largest |α| in each phase: the best sample of the phase, refined within a sample step
 /// either side while the phase holds (at a phase's end the refinement runs up to its border).
 PressurePhases pressurePhases(const FollowerModel& model, double omega, double phiBegin,
-                              const std::vector<FollowerState>& st) {
+                              const std::vector<FollowerState>& st,
+                              const std::vector<PhaseSpan>& spans) {
     const int n = static_cast<int>(st.size());
     const double h = kTwoPi / n;
     double slopeMax = 0.0;
     for (const FollowerState& s : st) slopeMax = std::max(slopeMax, std::abs(s.sPhi[1]));
     const double dwellSlope = kDwellSlope * slopeMax;
-    const auto phaseOf = [&](const FollowerState& s) {
+    const std::vector<Phase> phase = samplePhases(st, dwellSlope, phiBegin, spans);
+    const auto signOf = [&](const FollowerState& s) {
         if (s.sPhi[1] > dwellSlope) return Phase::Rise;
         if (s.sPhi[1] < -dwellSlope) return Phase::Fall;
         return Phase::Dwell;
     };
+    const auto at = [&](int i) { return phase[static_cast<std::size_t>((i % n + n) % n)]; };
+    // The phase at an angle between samples i and i + 1: the design's where it gives one;
+    // else by its own sign where there is a design; without one, that of the neighbour whose
+    // sign of dq/dφ it shares (a rise's ripple is a dwell), else a dwell (a ripple between
+    // two samples).
+    const auto phaseAt = [&](double phi, const FollowerState& s) {
+        const Phase designed = designPhaseAt(phi, spans);
+        if (designed != Phase::Either) return designed;
+        const Phase sign = signOf(s);
+        if (!spans.empty()) return sign;
+        const int i = static_cast<int>(std::floor((phi - phiBegin) / h));
+        for (const int k : {i, i + 1}) {
+            if (signOf(st[static_cast<std::size_t>((k % n + n) % n)]) == sign) return at(k);
+        }
+        return Phase::Dwell;
+    };
     std::array<int, 3> best{-1, -1, -1};
     for (int i = 0; i < n; ++i) {
-        int& b = best[static_cast<std::size_t>(phaseOf(st[static_cast<std::size_t>(i)]))];
+        int& b = best[static_cast<std::size_t>(at(i))];
         if (b < 0 || std::abs(st[static_cast<std::size_t>(i)].pressureAngle) >
                          std::abs(st[static_cast<std::size_t>(b)].pressureAngle)) {
             b = i;
@@ -92,11 +162,11 @@ PressurePhases pressurePhases(const FollowerModel& model, double omega, double p
     bool any = false;
     for (std::size_t k = 0; k < 3; ++k) {
         if (best[k] < 0) continue;
-        const auto phase = static_cast<Phase>(k);
+        const auto ph = static_cast<Phase>(k);
         const auto f = [&](double phi) {
             const FollowerState s = model.at(phi, omega);
-            return phaseOf(s) == phase ? std::abs(s.pressureAngle)
-                                       : -std::numeric_limits<double>::infinity();
+            return phaseAt(phi, s) == ph ? std::abs(s.pressureAngle)
+                                         : -std::numeric_limits<double>::infinity();
         };
         const double phi0 = phiBegin + best[k] * h;
         FollowerExtremum e = refine(f, phi0, h, true);
@@ -143,8 +213,26 @@ CurvatureExtremes curvatureExtremes(const FollowerModel& model, double omega, do
 
 }  // namespace
 
+std::vector<PhaseSpan> designPhases(const DesignSpec& design) {
+    std::vector<PhaseSpan> spans;
+    double from = 0.0, lift = design.segments.empty() ? 0.0 : design.segments.back().lift;
+    for (const DesignSegmentSpec& segment : design.segments) {
+        if (segment.toDeg > from) {
+            const Phase phase = segment.law == MotionLawType::Dwell ? Phase::Dwell
+                                : segment.lift > lift               ? Phase::Rise
+                                : segment.lift < lift               ? Phase::Fall
+                                                                    : Phase::Either;
+            spans.push_back({degToRad(from), degToRad(segment.toDeg), phase});
+        }
+        from = segment.toDeg;
+        lift = segment.lift;
+    }
+    return spans;
+}
+
 FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega, double phiBegin,
-                                 int samples, const std::atomic<bool>* cancel) {
+                                 int samples, const std::atomic<bool>* cancel,
+                                 const std::vector<PhaseSpan>& phases) {
     const int n = std::max(samples, 64);
     const double h = kTwoPi / n;
     std::vector<FollowerState> st(static_cast<std::size_t>(n));
@@ -176,7 +264,7 @@ FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega, doubl
     a.aMax = extreme([](const FollowerState& s) { return s.a; }, true);
     a.jMin = extreme([](const FollowerState& s) { return s.j; }, false);
     a.jMax = extreme([](const FollowerState& s) { return s.j; }, true);
-    a.pressure = pressurePhases(model, omega, phiBegin, st);
+    a.pressure = pressurePhases(model, omega, phiBegin, st, phases);
     a.profileCurvature = curvatureExtremes(model, omega, phiBegin, st, &FollowerState::rhoProfile);
     a.pitchCurvature = curvatureExtremes(model, omega, phiBegin, st, &FollowerState::rhoPitch);
     if (followerKind(model.spec().type).flatFace) {

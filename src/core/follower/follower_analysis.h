@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "follower/follower.h"
+#include "project/project.h"
 
 namespace cam {
 
@@ -37,7 +38,9 @@ struct AngleRange {
 
 /// @brief The largest |pressure angle| (rad, a magnitude) in each phase of the motion, and
 /// where: while the follower rises (dq/dφ > 0), returns (dq/dφ < 0) and dwells (|dq/dφ| at most
-/// kDwellSlope of its largest value over the turn); none for a phase the motion does not have.
+/// kDwellSlope of its largest value over the turn, or a rise or return of less than kPhaseLift
+/// of the stroke) — or, given a motion design's phases, in each of those; none for a phase the
+/// motion does not have.
 /// The pressure angle is not zero in a dwell when the follower is offset or swings on an arm.
 struct PressurePhases {
     std::optional<FollowerExtremum> rise, fall, dwell;
@@ -47,6 +50,34 @@ struct PressurePhases {
 /// @brief Where the follower dwells: |dq/dφ| ≤ kDwellSlope · max |dq/dφ| over the turn (an arc
 /// table's dwell arc, fitted to 1e-6 mm, is not exactly centred).
 inline constexpr double kDwellSlope = 1e-6;
+
+/// @brief A rise or return that moves the follower by less than kPhaseLift of its stroke is a
+/// dwell's ripple, part of the dwell: an arc table fitted to a law within 0.001 mm rises and
+/// falls by that much round its dwells (a swinging arm's "return" at 119° of a rise ending at
+/// 120° was one).
+inline constexpr double kPhaseLift = 1e-3;
+
+/// @brief A phase of the motion: the follower rises, returns, dwells, or (a design's segment
+/// that ends at the lift it starts with) either, as it moves.
+enum class MotionPhase { Rise, Fall, Dwell, Either };
+
+/// @brief A stretch of the turn in one phase of a motion design: the cam's angle from `from`
+/// to `to` (rad, from < to, taken round the turn).
+struct PhaseSpan {
+    double from = 0.0, to = 0.0;
+    MotionPhase phase = MotionPhase::Either;
+    friend bool operator==(const PhaseSpan&, const PhaseSpan&) = default;
+};
+
+/// @brief The phases of a motion design's segments, in the cam's angle (the first segment
+/// starts at 0° and at the lift the last ends with): a dwell law dwells, a segment rises or
+/// returns as its lift goes.
+[[nodiscard]] std::vector<PhaseSpan> designPhases(const DesignSpec& design);
+
+/// @brief The phases of the project's motion design; none without one.
+[[nodiscard]] inline std::vector<PhaseSpan> phasesOf(const Project& project) {
+    return project.design ? designPhases(*project.design) : std::vector<PhaseSpan>{};
+}
 
 /// @brief The smallest radius of curvature of each sense over a turn, as magnitudes (mm), and
 /// where: convex (bending round the cam centre) and concave (hollow); none where the curve never
@@ -88,8 +119,12 @@ inline constexpr int kFollowerCheckSamples = 7200;
 /// @brief Samples the turn at `samples` angles, refines every extreme by golden sections and
 /// every jump of the contact point and limit crossing by bisection. Polls `cancel` while it
 /// samples: once set, what it returns is incomplete and meant to be dropped.
+/// `phases`: a motion design's (designPhases), which are then the phases of the pressure
+/// angle, whatever ripple the arc table fitted to it has (round a dwell it rises and falls by
+/// up to the fit's tolerance); without, the follower's own (see PressurePhases).
 [[nodiscard]] FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega,
                                                double phiBegin, int samples = kFollowerCheckSamples,
-                                               const std::atomic<bool>* cancel = nullptr);
+                                               const std::atomic<bool>* cancel = nullptr,
+                                               const std::vector<PhaseSpan>& phases = {});
 
 }  // namespace cam
