@@ -77,6 +77,56 @@ void printJson(std::ostream& out, const Json& result) {
     out << result.dump(2) << "\n";
 }
 
+namespace {
+
+/// `text` (a dump(2)) as it reads nested `indent` spaces deep: a newline is only ever between
+/// its tokens (one inside a string is written \n).
+std::string nested(const std::string& text, std::size_t indent) {
+    std::string out;
+    out.reserve(text.size() + text.size() / 8);
+    for (const char c : text) {
+        out += c;
+        if (c == '\n') out.append(indent, ' ');
+    }
+    return out;
+}
+
+}  // namespace
+
+void printJsonWithArray(std::ostream& out, Json object, const std::string& key, std::size_t count,
+                        const std::function<Json(std::size_t)>& element) {
+    object[key] = Json::array();
+    requireFinite(object, "");
+    std::string text = "{";
+    bool first = true;
+    for (const auto& [name, value] : object.items()) {
+        text += first ? "\n  " : ",\n  ";
+        first = false;
+        text += Json(name).dump() + ": ";
+        if (name != key) {
+            text += nested(value.dump(2), 2);
+            continue;
+        }
+        if (count == 0) {
+            text += "[]";
+            continue;
+        }
+        text += "[";
+        for (std::size_t i = 0; i < count; ++i) {
+            const Json item = element(i);
+            requireFinite(item, key + "[" + std::to_string(i) + "]");
+            std::string itemText = nested(item.dump(2), 4);
+            // Room for all of them at the first one's size, so that the text grows but once.
+            if (i == 0) text.reserve(text.size() + (itemText.size() + 8) * count * 9 / 8);
+            text += i == 0 ? "\n    " : ",\n    ";
+            text += itemText;
+        }
+        text += "\n  ]";
+    }
+    text += first ? "}" : "\n}";
+    out << text << "\n";
+}
+
 void requireFiniteColumns(const SampledTurn& turn) {
     if (const auto problem = firstNonFiniteSample(turn)) {
         throw CliError{kNotComputable, problem->location, problem->message};

@@ -301,3 +301,26 @@ TEST(CliAnalyze, AnArcTablesJerkIsUnboundedAtEveryJointWhereTheAccelerationJumps
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(CliAnalyze, ItsTextIsExactlyTheJsonLibrarysOwnLayout) {
+    // analyze writes its joints one by one rather than as one tree (a hundred thousand took
+    // 400 MB): the text must still be what nlohmann-json writes for the whole document, which
+    // its own parse and dump(2) give back. With joints, and with none (a single segment).
+    const std::string single = test::writeTestTempFile("analyze", "single.cam.json", R"({
+      "format": "camwright", "version": 1, "motion": {"period_s": 1},
+      "contour": [{"type": "arc", "center": [0, 0], "radius": 20, "branch": "outer",
+                   "phi_start": 0, "phi_end": 360}]})");
+    for (const std::string& path : {std::string(kExample), single}) {
+        const auto run = test::runCli({"analyze", path});
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        const nlohmann::ordered_json parsed = nlohmann::ordered_json::parse(run.out);
+        EXPECT_EQ(parsed.dump(2) + "\n", run.out) << path;
+        EXPECT_EQ(parsed["joints"].size(), path == single ? 0U : 13U) << path;
+    }
+}
+
+}  // namespace
+}  // namespace cam

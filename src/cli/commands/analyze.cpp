@@ -12,30 +12,30 @@ namespace cam::cli {
 int runAnalyze(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
     const Loaded loaded = load(args.positional.at(0));
     const ContourAnalysis analysis = analyzeContour(loaded.contour, loaded.omega);
-    Json joints = Json::array();
-    for (const JointAnalysis& j : analysis.joints) {
-        joints.push_back(Json{{"joint", j.right},
-                              {"left", j.left},
-                              {"right", j.right},
-                              {"phi_deg", radToDeg(j.phi)},
-                              {"continuity", continuityName(j.continuity)},
-                              {"c0_gap_mm", j.gapMm},
-                              {"tangent_break_deg", j.tangentBreakDeg},
-                              {"jump_dr", j.jumpDr},
-                              {"jump_d2r", j.jumpD2r},
-                              {"jump_d3r", j.jumpD3r},
-                              {"jump_a_r", j.jumpAR},
-                              {"jump_j_r", j.jumpJR},
-                              {"jump_dP_dphi", {j.jumpD1.x(), j.jumpD1.y()}},
-                              {"relative_jump_dP_dphi", j.relativeD1},
-                              {"jump_d2P_dphi2", {j.jumpD2.x(), j.jumpD2.y()}},
-                              {"relative_jump_d2P_dphi2", j.relativeD2},
-                              {"geometric", continuityName(j.geometric)},
-                              {"curve_jump_d1", {j.curveJumpD1.x(), j.curveJumpD1.y()}},
-                              {"curve_relative_jump_d1", j.curveRelativeD1},
-                              {"curve_jump_d2", {j.curveJumpD2.x(), j.curveJumpD2.y()}},
-                              {"curve_relative_jump_d2", j.curveRelativeD2}});
-    }
+    const auto joint = [&analysis](std::size_t k) {
+        const JointAnalysis& j = analysis.joints[k];
+        return Json{{"joint", j.right},
+                    {"left", j.left},
+                    {"right", j.right},
+                    {"phi_deg", radToDeg(j.phi)},
+                    {"continuity", continuityName(j.continuity)},
+                    {"c0_gap_mm", j.gapMm},
+                    {"tangent_break_deg", j.tangentBreakDeg},
+                    {"jump_dr", j.jumpDr},
+                    {"jump_d2r", j.jumpD2r},
+                    {"jump_d3r", j.jumpD3r},
+                    {"jump_a_r", j.jumpAR},
+                    {"jump_j_r", j.jumpJR},
+                    {"jump_dP_dphi", {j.jumpD1.x(), j.jumpD1.y()}},
+                    {"relative_jump_dP_dphi", j.relativeD1},
+                    {"jump_d2P_dphi2", {j.jumpD2.x(), j.jumpD2.y()}},
+                    {"relative_jump_d2P_dphi2", j.relativeD2},
+                    {"geometric", continuityName(j.geometric)},
+                    {"curve_jump_d1", {j.curveJumpD1.x(), j.curveJumpD1.y()}},
+                    {"curve_relative_jump_d1", j.curveRelativeD1},
+                    {"curve_jump_d2", {j.curveJumpD2.x(), j.curveJumpD2.y()}},
+                    {"curve_relative_jump_d2", j.curveRelativeD2}};
+    };
     Json extremes = Json::object();
     for (const QuantityExtremes& e : analysis.extremes) {
         auto one = [](const Extremum& x) {
@@ -59,7 +59,7 @@ int runAnalyze(const Arguments& args, std::ostream& out, std::ostream& /*err*/) 
     }
     Json result{{"omega_rad_s", loaded.omega},
                 {"units", {{"length", "mm"}, {"angle", "deg"}, {"time", "s"}}},
-                {"joints", std::move(joints)},
+                {"joints", nullptr},  // written one by one: see printJsonWithArray
                 {"extremes", std::move(extremes)},
                 {"jerk_unbounded_at", std::move(unbounded)},
                 {"follower", followerAnalysisJson(loaded)}};
@@ -67,7 +67,7 @@ int runAnalyze(const Arguments& args, std::ostream& out, std::ostream& /*err*/) 
     for (const char* q : {"j", "jerk_arm"}) {
         if (result["follower"].contains(q)) result["follower"][q]["between_joints_only"] = between;
     }
-    printJson(out, result);
+    printJsonWithArray(out, std::move(result), "joints", analysis.joints.size(), joint);
     return kOk;
 }
 

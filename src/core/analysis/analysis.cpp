@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 
 #include "common/angles.h"
@@ -245,6 +246,7 @@ std::vector<JointAnalysis> analyzeJoints(const Contour& contour, double omega,
                                          const std::atomic<bool>* cancel) {
     std::vector<JointAnalysis> joints;
     if (contour.size() < 2) return joints;
+    joints.reserve(contour.size());
     for (std::size_t k = 0; k < contour.size(); ++k) {
         if (cancel && cancel->load(std::memory_order_relaxed)) return {};
         joints.push_back(analyzeJoint(contour, k, omega));
@@ -252,23 +254,103 @@ std::vector<JointAnalysis> analyzeJoints(const Contour& contour, double omega,
     return joints;
 }
 
+namespace {
+
+/// The searches of analyzeContour: each quantity's largest (sign +1) and smallest (−1) value.
+constexpr std::size_t kSearches = 2 * kAllQuantities.size();
+
+/// Each search's value on a coarse grid of a segment's window (every kCoarseStep-th point of
+/// SegmentGrid's, the same angles to the bit) and how far above that the segment's extreme
+/// could lie: a smooth quantity peaks between two grid points by about an eighth of its
+/// second difference there; eight of the largest are allowed, and a rounding's worth.
+struct CoarseBound {
+    std::array<double, kSearches> gridBest;  ///< sign·value, the best coarse grid point
+    /// The most the segment's extreme may reach, rounded up to a float: kept for every segment
+    /// (56 bytes each; a million segments' doubles would fault in 112 MB).
+    std::array<float, kSearches> reach;
+};
+
+constexpr int kCoarseStep = 8;
+constexpr int kCoarse = SegmentGrid::kGrid / kCoarseStep;
+
+CoarseBound coarseBound(const ContourSegment& seg, double omega) {
+    std::array<std::array<double, kSearches>, kCoarse + 1> v{};
+    for (int i = 0; i <= kCoarse; ++i) {
+        const double phi =
+            seg.phiStart + (seg.phiEnd - seg.phiStart) * (i * kCoarseStep) / SegmentGrid::kGrid;
+        const PolarDerivatives d = seg.evaluate(phi);
+        const PolarMotion m = polarMotion(d, omega);
+        for (std::size_t q = 0; q < kAllQuantities.size(); ++q) {
+            const double value = quantityValue(kAllQuantities[q], d, m);
+            v[static_cast<std::size_t>(i)][2 * q] = value;
+            v[static_cast<std::size_t>(i)][2 * q + 1] = -value;
+        }
+    }
+    CoarseBound b;
+    for (std::size_t s = 0; s < kSearches; ++s) {
+        double best = v[0][s], curvature = 0.0;
+        for (std::size_t i = 1; i <= kCoarse; ++i) {
+            best = std::max(best, v[i][s]);
+            if (i < kCoarse) {
+                curvature = std::max(curvature, std::abs(v[i - 1][s] - 2 * v[i][s] + v[i + 1][s]));
+            }
+        }
+        b.gridBest[s] = best;
+        const double reach = best + 8.0 * curvature + 1e-12 * (1.0 + std::abs(best));
+        const auto rounded = static_cast<float>(reach);
+        b.reach[s] = static_cast<double>(rounded) >= reach
+                         ? rounded
+                         : std::nextafter(rounded, std::numeric_limits<float>::infinity());
+    }
+    return b;
+}
+
+}  // namespace
+
 ContourAnalysis analyzeContour(const Contour& contour, double omega,
-                               const std::atomic<bool>* cancel) {
+                               const std::atomic<bool>* cancel, ContourSearch search) {
     const auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
     ContourAnalysis result;
     result.joints = analyzeJoints(contour, omega, cancel);
+    const std::size_t n = contour.size();
+    // A coarse look at every segment; then the full search (SegmentGrid) only in the segments
+    // whose extreme could reach the best coarse value of all: the one that holds it among them.
+    std::vector<std::array<float, kSearches>> reach(n);
+    std::array<double, kSearches> threshold{};
+    threshold.fill(-std::numeric_limits<double>::infinity());
+    for (std::size_t k = 0; k < n; ++k) {
+        if (k % 256 == 0 && cancelled()) return result;
+        const CoarseBound bound = coarseBound(contour.segment(k), omega);
+        reach[k] = bound.reach;
+        for (std::size_t s = 0; s < kSearches; ++s) {
+            threshold[s] = std::max(threshold[s], bound.gridBest[s]);
+        }
+    }
+    if (search == ContourSearch::EverySegment) {
+        threshold.fill(-std::numeric_limits<double>::infinity());
+    }
     std::array<QuantityExtremes, kAllQuantities.size()> extremes;
-    for (std::size_t i = 0; i < kAllQuantities.size(); ++i)
+    std::array<bool, kSearches> found{};
+    for (std::size_t i = 0; i < kAllQuantities.size(); ++i) {
         extremes[i].quantity = kAllQuantities[i];
-    for (std::size_t k = 0; k < contour.size(); ++k) {
-        if (cancelled()) return result;
-        const auto grid = std::make_unique<SegmentGrid>(contour.segment(k), omega);
-        for (std::size_t i = 0; i < kAllQuantities.size(); ++i) {
-            QuantityExtremes& e = extremes[i];
-            const Extremum hi = grid->extremum(k, e.quantity, 1.0);
-            const Extremum lo = grid->extremum(k, e.quantity, -1.0);
-            if (k == 0 || hi.value > e.max.value) e.max = hi;
-            if (k == 0 || lo.value < e.min.value) e.min = lo;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        std::unique_ptr<SegmentGrid> grid;
+        for (std::size_t s = 0; s < kSearches; ++s) {
+            if (static_cast<double>(reach[k][s]) < threshold[s]) continue;
+            if (!grid) {
+                if (cancelled()) return result;
+                grid = std::make_unique<SegmentGrid>(contour.segment(k), omega);
+            }
+            QuantityExtremes& e = extremes[s / 2];
+            if (s % 2 == 0) {
+                const Extremum hi = grid->extremum(k, e.quantity, 1.0);
+                if (!found[s] || hi.value > e.max.value) e.max = hi;
+            } else {
+                const Extremum lo = grid->extremum(k, e.quantity, -1.0);
+                if (!found[s] || lo.value < e.min.value) e.min = lo;
+            }
+            found[s] = true;
         }
     }
     result.extremes.assign(extremes.begin(), extremes.end());

@@ -99,8 +99,13 @@ struct ContourAnalysis {
 ///
 /// If `cancel` is given it is polled between segments; when it reads true the function returns
 /// at once with a partial analysis (the caller, who set the flag, drops it).
+/// Only segments whose extreme could reach the best coarse value of all are searched finely
+/// (a coarse grid of 33 points bounds each segment's); `EverySegment` searches every one, as
+/// the tests' reference.
+enum class ContourSearch { Bounded, EverySegment };
 [[nodiscard]] ContourAnalysis analyzeContour(const Contour& contour, double omega,
-                                             const std::atomic<bool>* cancel = nullptr);
+                                             const std::atomic<bool>* cancel = nullptr,
+                                             ContourSearch search = ContourSearch::Bounded);
 
 /// @brief Kinematic continuity from a joint's measures: C0 needs gap <= kJointToleranceMm, C1 a
 /// tangent break <= kTangentToleranceDeg, C2 a relative jump of d²P/dφ² <= kCurvatureToleranceRel.
