@@ -216,7 +216,7 @@ std::vector<CommandHelp> makeTable() {
                   {"--output", "arcs", "arcs (the only output of this version)"}},
                  {"synthesize design.cam.json --out cam.cam.json --tolerance 0.001"}});
     t.push_back({"size",
-                 "size PROJECT [--min-radius MM] [--out NEW]",
+                 "size PROJECT [--min-radius MM] [--best-offset] [--out NEW]",
                  "the smallest base radius that passes every check",
                  "Finds the smallest base radius of the project's motion design for which its "
                  "follower (a radial knife when it names none) passes every check: the pressure "
@@ -228,9 +228,15 @@ std::vector<CommandHelp> makeTable() {
                  "pressure angles and smallest convex radius at that base radius, and a flat "
                  "face's face_width_mm. With --out, writes the project with that base radius to "
                  "NEW (synthesize then makes its contour). Exit 3 when no base radius up to "
-                 "1000000 mm passes (an arm whose pivot is too near), naming the check.",
+                 "1000000 mm passes (an arm whose pivot is too near), naming the check. "
+                 "With --best-offset (a translating knife or roller), also finds the offset "
+                 "that allows the smallest base radius, to 1e-6 mm: offset_mm, offset_was_mm, "
+                 "and feasible_edge, the smallest base radius at 41 offsets over 1.1 times the "
+                 "steepest lift slope either side (every base radius above it passes); --out "
+                 "then writes the offset too.",
                  {{"--min-radius", "MM",
                    "the smallest convex radius of the profile, in mm (default 0: no cusp)"},
+                  {"--best-offset", "", "also find the offset that allows the smallest cam"},
                   {"--out", "NEW", "the file for the project with the base radius found"}},
                  {"size design.cam.json --min-radius 2 --out sized.cam.json"}});
     t.push_back(

@@ -166,3 +166,95 @@ TEST(Sizing, AnArmThatNoBaseRadiusSuitsIsNamed) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+/// A cycloidal rise of 1 mm over 60°, a dwell to 180°, a cycloidal return over 120° and a
+/// dwell: the rise is twice as steep as the return, so an offset towards it lets a smaller
+/// cam meet the limit.
+DesignSpec lopsidedDesign() {
+    DesignSpec d;
+    d.baseRadius = 10.0;
+    d.segments = {{MotionLawType::Cycloidal, 60.0, 1.0},
+                  {MotionLawType::Dwell, 180.0, 1.0},
+                  {MotionLawType::Cycloidal, 300.0, 0.0},
+                  {MotionLawType::Dwell, 360.0, 0.0}};
+    return d;
+}
+
+/// That motion in closed form: s and s' per radian.
+std::array<double, 2> lopsidedLaw(double phi) {
+    const auto cycloid = [](double x, double beta) {
+        return std::array<double, 2>{x - std::sin(kTwoPi * x) / kTwoPi,
+                                     (1.0 - std::cos(kTwoPi * x)) / beta};
+    };
+    const double rise = kPi / 3.0, ret = 2.0 * kPi / 3.0;
+    if (phi < rise) return cycloid(phi / rise, rise);
+    if (phi < kPi) return {1.0, 0.0};
+    if (phi < kPi + ret) {
+        const auto c = cycloid((phi - kPi) / ret, ret);
+        return {1.0 - c[0], -c[1]};
+    }
+    return {0.0, 0.0};
+}
+
+/// The closed form's prime-circle radius of a knife with offset e and a 30° limit.
+double lopsidedPrimeRadius(double e) {
+    double worst = -1e300;
+    for (int i = 0; i < 200000; ++i) {
+        const auto s = lopsidedLaw(kTwoPi * i / 200000);
+        worst = std::max(worst, std::abs(s[1] - e) / std::tan(degToRad(30.0)) - s[0]);
+    }
+    return std::sqrt(e * e + worst * worst);
+}
+
+TEST(Sizing, TheBestOffsetIsTheClosedFormsSmallestOverOffsets) {
+    // The reference: the closed form's prime radius minimised over e by a scan of 400 offsets
+    // over ±2 mm and golden sections round the best, all on the closed form.
+    double bestE = 0.0, bestR = 1e300;
+    for (int i = 0; i <= 400; ++i) {
+        const double e = -2.0 + 4.0 * i / 400;
+        const double r = lopsidedPrimeRadius(e);
+        if (r < bestR) {
+            bestR = r;
+            bestE = e;
+        }
+    }
+    double lo = bestE - 0.01, hi = bestE + 0.01;
+    while (hi - lo > 1e-9) {
+        const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+        if (lopsidedPrimeRadius(a) < lopsidedPrimeRadius(b)) {
+            hi = b;
+        } else {
+            lo = a;
+        }
+    }
+    bestE = 0.5 * (lo + hi);
+    bestR = lopsidedPrimeRadius(bestE);
+    // Without offset the rise binds at a larger radius.
+    ASSERT_GT(lopsidedPrimeRadius(0.0), bestR + 0.1);
+
+    const FollowerSpec knife = translating(FollowerType::Knife, 0.0, 0.0, 30);
+    ASSERT_TRUE(offsetSizable(knife));
+    const auto sized = sizeOffset(lopsidedDesign(), knife);
+    ASSERT_TRUE(sized.ok());
+    const OffsetSizing& s = sized.value();
+    EXPECT_NEAR(s.sizing.baseRadius, bestR, 1e-7);
+    EXPECT_NEAR(s.offset, bestE, 1e-4);
+    EXPECT_GT(s.offset, 0.0);  // towards the steeper rise: |s' − e| shrinks there
+    // At the best offset rise and return bind together: both pressure angles at the limit.
+    ASSERT_TRUE(s.sizing.pressureRise && s.sizing.pressureReturn);
+    EXPECT_NEAR(*s.sizing.pressureRise, degToRad(30.0), 1e-4);
+    EXPECT_NEAR(*s.sizing.pressureReturn, degToRad(30.0), 1e-4);
+    // The feasible region's edge is the closed form at every offset it lists.
+    ASSERT_EQ(s.edge.size(), 41U);
+    for (std::size_t i = 0; i < s.edge.size(); i += 5) {
+        EXPECT_NEAR(s.edge[i][1], lopsidedPrimeRadius(s.edge[i][0]), 1e-7) << s.edge[i][0];
+    }
+    // A flat face or an arm has no offset to size.
+    EXPECT_FALSE(offsetSizable(translating(FollowerType::Flat, 0.0, 0.0, 30)));
+}
+
+}  // namespace
+}  // namespace cam

@@ -1,5 +1,7 @@
 #include "cli/commands.h"
 
+#include <cmath>
+#include <optional>
 #include <ostream>
 
 #include "cli/command_support.h"
@@ -33,12 +35,26 @@ int runSize(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
         if (d.severity != Severity::Error) continue;
         throw CliError{kInvalidInput, placeOf(path, d), d.message};
     }
-    const FollowerSpec follower = project.follower.value_or(FollowerSpec{});
-    const auto sized = sizeBaseRadius(*project.design, follower, options);
-    if (!sized.ok()) {
-        const Diagnostic& d = sized.errors().front();
-        throw CliError{kNotComputable, path + ": " + d.location, d.message};
+    FollowerSpec follower = project.follower.value_or(FollowerSpec{});
+    const bool bestOffset = args.hasFlag("--best-offset");
+    if (bestOffset && !offsetSizable(follower)) {
+        throw CliError{kInvalidInput, "--best-offset",
+                       "sizes the offset of a translating knife or roller; this project's "
+                       "follower has none that matters (a flat face, or a swinging arm)"};
     }
+    const auto fail = [&path](const Diagnostics& errors) {
+        const Diagnostic& d = errors.front();
+        return CliError{kNotComputable, path + ": " + d.location, d.message};
+    };
+    std::optional<OffsetSizing> offsetSizing;
+    if (bestOffset) {
+        auto sized = sizeOffset(*project.design, follower, options);
+        if (!sized.ok()) throw fail(sized.errors());
+        offsetSizing = std::move(sized).value();
+    }
+    const auto sized = offsetSizing ? Result<SizingResult>(offsetSizing->sizing)
+                                    : sizeBaseRadius(*project.design, follower, options);
+    if (!sized.ok()) throw fail(sized.errors());
     const SizingResult& r = sized.value();
     const auto degreesOrNull = [](const std::optional<double>& rad) {
         return rad ? Json(radToDeg(*rad)) : Json(nullptr);
@@ -54,9 +70,23 @@ int runSize(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
         {"pressure_angle_return_deg", degreesOrNull(r.pressureReturn)},
         {"min_convex_radius_mm", r.minConvexRadius ? Json(*r.minConvexRadius) : Json(nullptr)}};
     if (r.faceWidth) report["face_width_mm"] = *r.faceWidth;
+    if (offsetSizing) {
+        report["offset_mm"] = offsetSizing->offset;
+        report["offset_was_mm"] = follower.offset;
+        Json edge = Json::array();
+        for (const auto& [offset, radius] : offsetSizing->edge) {
+            edge.push_back({{"offset_mm", offset},
+                            {"base_radius_mm", std::isfinite(radius) ? Json(radius) : Json()}});
+        }
+        report["feasible_edge"] = std::move(edge);
+    }
     if (const auto outPath = args.option("--out")) {
         report["out"] = *outPath;
         project.design->baseRadius = r.baseRadius;
+        if (offsetSizing) {
+            follower.offset = offsetSizing->offset;
+            project.follower = follower;
+        }
         requireFinite(report, "");
         const Diagnostics written = writeFileAtomically(*outPath, serializeProject(project));
         if (!written.empty()) throw CliError{kInvalidInput, *outPath, written.front().message};

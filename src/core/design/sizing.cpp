@@ -199,15 +199,47 @@ Result<SizingResult> sizeBaseRadius(const DesignSpec& design, const FollowerSpec
     constexpr int kGrid = 120;
     double lo = 0.0, hi = 0.0;
     std::optional<std::pair<SizingCheck, double>> lastFailure;
-    for (int i = 0; i <= kGrid; ++i) {
-        const double r = 1e-3 * std::pow(1e9, static_cast<double>(i) / kGrid);
-        const auto failure = checker.failing(checker.at(r));
-        if (!failure) {
+    const bool translating = follower.motion != FollowerMotion::Oscillating;
+    if (options.near && translating && *options.near > 0.0) {
+        // Near a known answer a translating follower's checks only ease as the radius grows:
+        // step out by 5 % until one radius fails and the next passes.
+        double r = *options.near;
+        const auto first = checker.failing(checker.at(r));
+        if (first) {
+            lo = r;
+            lastFailure = first;
+            for (int i = 0; i < 600 && r < 1e6; ++i) {
+                r *= 1.05;
+                const auto failure = checker.failing(checker.at(r));
+                if (!failure) {
+                    hi = r;
+                    break;
+                }
+                lo = r;
+                lastFailure = failure;
+            }
+        } else {
             hi = r;
-            break;
+            for (int i = 0; i < 600 && r > 1e-3; ++i) {
+                r /= 1.05;
+                if (checker.failing(checker.at(r))) {
+                    lo = r;
+                    break;
+                }
+                hi = r;
+            }
         }
-        lo = r;
-        lastFailure = failure;
+    } else {
+        for (int i = 0; i <= kGrid; ++i) {
+            const double r = 1e-3 * std::pow(1e9, static_cast<double>(i) / kGrid);
+            const auto failure = checker.failing(checker.at(r));
+            if (!failure) {
+                hi = r;
+                break;
+            }
+            lo = r;
+            lastFailure = failure;
+        }
     }
     if (!(hi > 0.0)) {
         const std::vector<DiagnosticArg> args{std::string(sizingCheckTitle(lastFailure->first)),
@@ -263,6 +295,91 @@ Result<SizingResult> sizeBaseRadius(const DesignSpec& design, const FollowerSpec
         low = refineMax([&](double phi) { return -d.liftAt(phi)[1]; }, low.second, h);
         result.faceWidth = high.first + low.first;
     }
+    return result;
+}
+
+bool offsetSizable(const FollowerSpec& follower) {
+    return follower.motion != FollowerMotion::Oscillating && !followerKind(follower.type).flatFace;
+}
+
+Result<OffsetSizing> sizeOffset(const DesignSpec& design, const FollowerSpec& follower,
+                                const SizingOptions& options, int edgePoints,
+                                const std::atomic<bool>* cancel) {
+    const auto built = MotionDesign::build(design);
+    if (!built.ok()) return built.errors();
+    const auto cancelled = [cancel] { return cancel && cancel->load(); };
+    // The offsets worth trying: the best balances the steepest rise against the steepest
+    // return, so it lies within the range of s'.
+    double steepest = 0.0;
+    for (int i = 0; i < kSizingSamples; ++i) {
+        steepest =
+            std::max(steepest, std::abs(built.value().liftAt(i * kTwoPi / kSizingSamples)[1]));
+    }
+    const double reach = steepest > 0.0 ? 1.1 * steepest : 1.0;
+    std::optional<double> near;
+    const auto sizeAt = [&](double offset) {
+        FollowerSpec f = follower;
+        f.offset = offset;
+        SizingOptions o = options;
+        o.near = near;
+        auto sized = sizeBaseRadius(design, f, o);
+        if (sized.ok()) near = sized.value().baseRadius;
+        return sized;
+    };
+    OffsetSizing result;
+    const int n = std::max(edgePoints, 3);
+    int best = -1;
+    std::optional<Diagnostics> firstFailure;
+    for (int i = 0; i < n; ++i) {
+        if (cancelled()) return OffsetSizing{};
+        const double e = -reach + 2.0 * reach * i / (n - 1);
+        const auto sized = sizeAt(e);
+        const double r =
+            sized.ok() ? sized.value().baseRadius : std::numeric_limits<double>::quiet_NaN();
+        if (!sized.ok() && !firstFailure) firstFailure = sized.errors();
+        result.edge.push_back({e, r});
+        if (sized.ok() && (best < 0 || r < result.edge[static_cast<std::size_t>(best)][1])) {
+            best = i;
+        }
+    }
+    if (best < 0) return *firstFailure;
+    // Golden sections between the best edge point's neighbours (the smallest base radius over
+    // offsets is unimodal there: rise and return each ease as the offset moves their way).
+    const double step = 2.0 * reach / (n - 1);
+    double lo = std::max(-reach, result.edge[static_cast<std::size_t>(best)][0] - step);
+    double hi = std::min(reach, result.edge[static_cast<std::size_t>(best)][0] + step);
+    const auto radiusAt = [&](double e) {
+        const auto sized = sizeAt(e);
+        return sized.ok() ? sized.value().baseRadius : std::numeric_limits<double>::infinity();
+    };
+    constexpr double g = 0.6180339887498949;
+    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+    double f1 = radiusAt(x1), f2 = radiusAt(x2);
+    while (hi - lo > kOffsetTolerance) {
+        if (cancelled()) return OffsetSizing{};
+        if (f1 <= f2) {
+            hi = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = hi - g * (hi - lo);
+            f1 = radiusAt(x1);
+        } else {
+            lo = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = lo + g * (hi - lo);
+            f2 = radiusAt(x2);
+        }
+    }
+    double offset = f1 <= f2 ? x1 : x2;
+    if (std::min(f1, f2) > result.edge[static_cast<std::size_t>(best)][1]) {
+        offset = result.edge[static_cast<std::size_t>(best)][0];
+    }
+    near.reset();
+    auto sized = sizeAt(offset);
+    if (!sized.ok()) return sized.errors();
+    result.offset = offset;
+    result.sizing = sized.value();
     return result;
 }
 

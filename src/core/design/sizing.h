@@ -5,7 +5,10 @@
 /// undercut, and the profile's convex radius at least a given minimum. Found by bisection on
 /// the exact checks of the exact profile (design/exact_profile.h), not on a grid of radii.
 
+#include <array>
+#include <atomic>
 #include <optional>
+#include <vector>
 
 #include "common/diagnostic.h"
 #include "project/project.h"
@@ -29,6 +32,9 @@ struct SizingOptions {
     /// mm: the smallest convex radius the profile may have (a cutter's or a roller's needs);
     /// 0 asks only for no cusp (the profile does not fold).
     double minRadius = 0.0;
+    /// mm: a base radius near the answer (a neighbouring offset's), where the search starts on
+    /// a translating follower instead of bracketing from 1 µm; the answer is the same.
+    std::optional<double> near;
 };
 
 struct SizingResult {
@@ -54,5 +60,33 @@ inline constexpr double kSizingTolerance = 1e-9;
 [[nodiscard]] Result<SizingResult> sizeBaseRadius(const DesignSpec& design,
                                                   const FollowerSpec& follower,
                                                   const SizingOptions& options = {});
+
+/// @brief Whether the offset changes what a follower needs: a translating knife or roller (a
+/// flat face's pressure angle is 0 at any offset; an arm has a pivot instead).
+[[nodiscard]] bool offsetSizable(const FollowerSpec& follower);
+
+/// @brief The offset of a translating follower that allows the smallest base radius, and the
+/// lower edge of the feasible region over base radius × offset.
+struct OffsetSizing {
+    double offset = 0.0;  ///< mm, to within kOffsetTolerance
+    SizingResult sizing;  ///< the smallest base radius at that offset
+    /// (offset, smallest base radius) in mm at evenly spaced offsets over ±1.1 · max |s'|:
+    /// every base radius above the edge passes at that offset; NaN where none passes.
+    std::vector<std::array<double, 2>> edge;
+};
+
+/// @brief The tolerance of the search for the best offset (mm).
+inline constexpr double kOffsetTolerance = 1e-6;
+
+/// @brief The offset (between ±1.1 · max |s'| of the design) that allows the smallest base
+/// radius of `design` with `follower` (offsetSizable; its own offset is only a start), by
+/// golden sections round the best of `edgePoints` offsets; each base radius certified as
+/// sizeBaseRadius certifies it. Errors: as sizeBaseRadius's, when no offset passes; none but
+/// an empty result when `cancel` reads true.
+[[nodiscard]] Result<OffsetSizing> sizeOffset(const DesignSpec& design,
+                                              const FollowerSpec& follower,
+                                              const SizingOptions& options = {},
+                                              int edgePoints = 41,
+                                              const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace cam
