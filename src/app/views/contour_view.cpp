@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "project/follower_kind.h"
 #include "views/axis_format.h"
 #include "views/palette.h"
 #include "views/plot_redraw.h"
@@ -149,9 +150,9 @@ void ContourView::setResult(const ComputeResultPtr& result) {
         bottom = std::min(bottom, -reach);
         top = std::max(top, reach);
     }
-    if (any && result->follower && result->follower->spec().type == FollowerType::Roller) {
-        // The roller rides outside the contour, up to its diameter beyond it: keep it in view.
-        const double reach = 2.0 * result->follower->spec().radius;
+    if (any && result->follower && contactRadius(result->follower->spec()) > 0.0) {
+        // A roller rides outside the contour, up to its diameter beyond it: keep it in view.
+        const double reach = 2.0 * contactRadius(result->follower->spec());
         left -= reach;
         right += reach;
         bottom -= reach;

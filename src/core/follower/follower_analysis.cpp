@@ -357,9 +357,9 @@ FollowerAnalysis analyzeFollower(const FollowerModel& model, double omega, doubl
 CurvatureVerdict curvatureVerdict(const FollowerAnalysis& a, const FollowerSpec& spec,
                                   double toolRadius) {
     CurvatureVerdict v;
-    if (spec.type == FollowerType::Roller) {
+    if (followerKind(spec.type).hasRadius) {
         v.rollerFits =
-            !a.pitchCurvature.minConvex || a.pitchCurvature.minConvex->value > spec.radius;
+            !a.pitchCurvature.minConvex || a.pitchCurvature.minConvex->value > contactRadius(spec);
     }
     if (toolRadius > 0.0) {
         v.toolFits =
