@@ -2161,7 +2161,7 @@
 <context>
     <name>cam::ContourView</name>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="+20" />
+        <location filename="../../src/app/views/contour_view.cpp" line="+21" />
         <source>x [mm]</source>
         <translation>x [mm]</translation>
     </message>
@@ -2817,6 +2817,34 @@
     </message>
 </context>
 <context>
+    <name>cam::FeasibleRegionPlot</name>
+    <message>
+        <location filename="../../src/app/views/feasible_region_plot.cpp" line="+14" />
+        <source>Offset [mm]</source>
+        <translation>Versatz [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Base radius [mm]</source>
+        <translation>Grundkreisradius [mm]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>smallest base radius</source>
+        <translation>kleinster Grundkreisradius</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>smallest cam</source>
+        <translation>kleinste Kurvenscheibe</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>design</source>
+        <translation>Entwurf</translation>
+    </message>
+</context>
+<context>
     <name>cam::FollowerPanel</name>
     <message>
         <location filename="../../src/app/views/follower_panel.cpp" line="+52" />
@@ -3420,7 +3448,7 @@
 <context>
     <name>cam::MotionDesignPanel</name>
     <message>
-        <location filename="../../src/app/views/motion_design_panel.cpp" line="+70" />
+        <location filename="../../src/app/views/motion_design_panel.cpp" line="+73" />
         <source>New Design</source>
         <translation>Neuer Entwurf</translation>
     </message>
@@ -3455,7 +3483,17 @@
         <translation>Den kleinsten Grundkreisradius setzen, bei dem der Stößel alle Prüfungen besteht: Druckwinkel im Hub und Rückhub innerhalb der Grenze, kein Unterschnitt (ein Rückgängig-Schritt)</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+2" />
+        <source>Best Offset</source>
+        <translation>Bester Versatz</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Set the follower's offset that allows the smallest base radius, and that radius, and show the feasible region over base radius × offset (one undo step; a translating knife or roller)</source>
+        <translation>Den Versatz des Stößels setzen, der den kleinsten Grundkreisradius erlaubt, und diesen Radius, und den zulässigen Bereich über Grundkreisradius × Versatz zeigen (ein Rückgängig-Schritt; Spitzen- oder Rollenstößel mit Schubbewegung)</translation>
+    </message>
+    <message>
+        <location line="+14" />
         <source>Largest distance of the arc table from the exact profile</source>
         <translation>Größter Abstand der Bogentabelle vom exakten Profil</translation>
     </message>
@@ -3475,7 +3513,7 @@
         <translation>Grundkreisradius</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>Tolerance</source>
         <translation>Toleranz</translation>
     </message>
@@ -3517,7 +3555,7 @@
         <translation>Entwurf entfernen</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+16" />
         <source>Change base radius</source>
         <translation>Grundkreisradius ändern</translation>
     </message>
@@ -3538,21 +3576,38 @@
     </message>
     <message>
         <location line="+11" />
+        <location line="+48" />
         <source>The design changed while it was sized: try again.</source>
         <translation>Der Entwurf hat sich während der Suche geändert: bitte erneut versuchen.</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="-36" />
         <source>Smallest base radius %1: %2 binds at %3.</source>
         <translation>Kleinster Grundkreisradius %1: %2 begrenzt bei %3.</translation>
     </message>
     <message>
         <location line="+6" />
+        <location line="+58" />
         <source>Smallest base radius</source>
         <translation>Kleinster Grundkreisradius</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="-39" />
+        <source>Finding the offset that allows the smallest base radius…</source>
+        <translation>Suche den Versatz, der den kleinsten Grundkreisradius erlaubt …</translation>
+    </message>
+    <message>
+        <location line="+24" />
+        <source>Smallest base radius %1 at offset %2: %3 binds at %4.</source>
+        <translation>Kleinster Grundkreisradius %1 bei Versatz %2: %3 begrenzt bei %4.</translation>
+    </message>
+    <message>
+        <location line="+14" />
+        <source>Best offset</source>
+        <translation>Bester Versatz</translation>
+    </message>
+    <message>
+        <location line="+28" />
         <source>New design</source>
         <translation>Neuer Entwurf</translation>
     </message>
@@ -3567,7 +3622,7 @@
         <translation>Bewegungsabschnitt %1 löschen</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+26" />
         <source>This project has no motion design. New Design starts one: lay out the follower's motion, then Synthesize makes the contour from it.</source>
         <translation>Dieses Projekt hat keinen Bewegungsentwurf. „Neuer Entwurf“ legt einen an: die Bewegung des Stößels festlegen, dann erzeugt Synthetisieren daraus die Kontur.</translation>
     </message>

@@ -27,6 +27,7 @@
 #include "mainwindow.h"
 #include "models/design_table_model.h"
 #include "models/segment_table_model.h"
+#include "views/feasible_region_plot.h"
 #include "views/kinematics_plots.h"
 #include "views/motion_design_panel.h"
 
@@ -456,6 +457,61 @@ TEST(MotionDesign, SmallestSetsTheSizedBaseRadiusInOneUndoStep) {
     ASSERT_TRUE(finished.wait(20000));
     EXPECT_EQ(doc->project().design->baseRadius, before);
     EXPECT_NE(panel->sizingText().indexOf("changed"), -1) << panel->sizingText().toStdString();
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(MotionDesignDock, BestOffsetSetsOffsetAndRadiusInOneStepAndDrawsTheFeasibleRegion) {
+    MainWindow window;
+    window.show();
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ASSERT_TRUE(waitForResult(window));
+    ProjectDocument* doc = window.document();
+    const Project before = doc->project();
+    const FollowerSpec follower = before.follower.value_or(FollowerSpec{});
+    ASSERT_TRUE(offsetSizable(follower));
+    // The core's answer (checked against the closed form in core_tests Sizing.*).
+    const auto expected = sizeOffset(*before.design, follower);
+    ASSERT_TRUE(expected.ok());
+    const int steps = doc->undoStack()->count();
+    MotionDesignPanel* panel = window.motionDesignPanel();
+    QSignalSpy finished(panel, &MotionDesignPanel::sizingFinished);
+    auto* button = panel->findChild<QPushButton*>("bestOffsetButton");
+    ASSERT_NE(button, nullptr);
+    ASSERT_TRUE(button->isEnabled());
+    EXPECT_FALSE(panel->feasibleRegion()->isVisible());
+    button->click();
+    EXPECT_TRUE(panel->sizing());
+    EXPECT_FALSE(button->isEnabled());
+    ASSERT_TRUE(finished.wait(60000));
+    EXPECT_EQ(doc->project().design->baseRadius, expected.value().sizing.baseRadius);
+    EXPECT_EQ(doc->project().follower->offset, expected.value().offset);
+    EXPECT_EQ(doc->undoStack()->count(), steps + 1);  // both in one step
+    EXPECT_NE(panel->sizingText().indexOf("at offset"), -1) << panel->sizingText().toStdString();
+    // The picture: the edge's 41 points, the chosen point on it, the design's own above it.
+    FeasibleRegionPlot* region = panel->feasibleRegion();
+    EXPECT_TRUE(region->isVisible());
+    ASSERT_EQ(region->edgeGraph()->dataCount(), 41);
+    EXPECT_EQ(region->chosenGraph()->data()->at(0)->key, expected.value().offset);
+    EXPECT_EQ(region->chosenGraph()->data()->at(0)->value, expected.value().sizing.baseRadius);
+    EXPECT_EQ(region->currentGraph()->data()->at(0)->value, before.design->baseRadius);
+    EXPECT_TRUE(region->yAxis->range().contains(before.design->baseRadius));
+    EXPECT_TRUE(region->yAxis->range().contains(expected.value().sizing.baseRadius));
+    // One undo brings back both.
+    doc->undoStack()->undo();
+    EXPECT_EQ(doc->project().design, before.design);
+    EXPECT_EQ(doc->project().follower, before.follower);
+    // A swinging arm has no offset to size: the button is off.
+    FollowerSpec arm = follower;
+    arm.motion = FollowerMotion::Oscillating;
+    arm.pivot = Eigen::Vector2d(120.0, 0.0);
+    arm.armLength = 100.0;
+    doc->undoStack()->push(new SetFollower(doc, arm));
+    EXPECT_FALSE(button->isEnabled());
 }
 
 }  // namespace

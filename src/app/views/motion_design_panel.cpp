@@ -13,6 +13,7 @@
 #include <QPushButton>
 #include <QTableView>
 #include <QToolButton>
+#include <QUndoStack>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 #include <array>
@@ -26,7 +27,9 @@
 #include "messages/diagnostic_text.h"
 #include "models/delegates.h"
 #include "models/design_table_model.h"
+#include "project/follower_kind.h"
 #include "views/axis_format.h"
+#include "views/feasible_region_plot.h"
 #include "views/plot_data.h"
 #include "views/plot_redraw.h"
 #include "widgets/number_spin_box.h"
@@ -88,13 +91,22 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
     m_size->setToolTip(
         tr("Set the smallest base radius for which the follower passes every check: the "
            "pressure angle within its limit on rise and return, no undercut (one undo step)"));
+    m_bestOffset = new QPushButton(tr("Best Offset"), this);
+    m_bestOffset->setObjectName("bestOffsetButton");
+    m_bestOffset->setToolTip(
+        tr("Set the follower's offset that allows the smallest base radius, and that radius, "
+           "and show the feasible region over base radius × offset (one undo step; a "
+           "translating knife or roller)"));
     m_sizing = new QLabel(this);
     m_sizing->setObjectName("sizingLabel");
     m_sizing->setWordWrap(true);
     m_sizing->setVisible(false);
+    m_region = new FeasibleRegionPlot(this);
+    m_region->setVisible(false);
     auto* radiusRow = new QHBoxLayout;
     radiusRow->addWidget(m_baseRadius, 1);
     radiusRow->addWidget(m_size);
+    radiusRow->addWidget(m_bestOffset);
     m_tolerance = lengthBox(this, "toleranceSpinBox",
                             tr("Largest distance of the arc table from the exact profile"));
     m_tolerance->setSingleStep(0.001);
@@ -105,6 +117,7 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
            "follower's limit (otherwise it is only reported)"));
     form->addRow(tr("Base radius"), radiusRow);
     form->addRow(QString(), m_sizing);
+    form->addRow(m_region);
     form->addRow(tr("Tolerance"), m_tolerance);
     form->addRow(QString(), m_strict);
     layout->addLayout(form);
@@ -211,6 +224,7 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
         m_document->undoStack()->push(new SetDesign(m_document, std::nullopt, tr("Remove design")));
     });
     connect(m_size, &QPushButton::clicked, this, &MotionDesignPanel::sizeBaseRadius);
+    connect(m_bestOffset, &QPushButton::clicked, this, &MotionDesignPanel::sizeOffset);
     connect(m_split, &QPushButton::clicked, this, [this] { splitSegment(currentRow()); });
     connect(m_delete, &QPushButton::clicked, this, [this] { deleteSegment(currentRow()); });
     const auto number = [this](NumberSpinBox* box, std::function<void(DesignSpec&, double)> set,
@@ -301,6 +315,66 @@ void MotionDesignPanel::sizeBaseRadius() {
     }));
 }
 
+void MotionDesignPanel::sizeOffset() {
+    const Project& project = m_document->project();
+    const FollowerSpec follower = project.follower.value_or(FollowerSpec{});
+    if (m_sizingRuns || !project.design || !offsetSizable(follower)) return;
+    // As sizeBaseRadius: snapshotted, sized in the background, applied only if unchanged.
+    const DesignSpec design = *project.design;
+    m_sizingRuns = true;
+    refresh();
+    m_sizing->setVisible(true);
+    m_sizing->setStyleSheet(QString());
+    m_sizing->setText(tr("Finding the offset that allows the smallest base radius…"));
+    auto* watcher = new QFutureWatcher<Result<OffsetSizing>>(this);
+    connect(watcher, &QFutureWatcher<Result<OffsetSizing>>::finished, this,
+            [this, watcher, design, follower] {
+                watcher->deleteLater();
+                m_sizingRuns = false;
+                refresh();
+                const Result<OffsetSizing> r = watcher->result();
+                const auto& now = m_document->project();
+                if (!now.design || *now.design != design ||
+                    now.follower.value_or(FollowerSpec{}) != follower) {
+                    m_sizing->setText(tr("The design changed while it was sized: try again."));
+                    emit sizingFinished();
+                    return;
+                }
+                if (!r.ok()) {
+                    m_sizing->setStyleSheet(QStringLiteral("color: #b41e1e"));
+                    m_sizing->setText(DiagnosticText::line(r.errors().front()));
+                    emit sizingFinished();
+                    return;
+                }
+                const OffsetSizing& o = r.value();
+                const SizingResult& s = o.sizing;
+                m_sizing->setText(
+                    tr("Smallest base radius %1 at offset %2: %3 binds at %4.")
+                        .arg(formatQuantity(DisplayQuantity::Length, s.baseRadius),
+                             formatQuantity(DisplayQuantity::Length, o.offset),
+                             QCoreApplication::translate(kDiagnosticContext,
+                                                         sizingCheckTitle(s.binding)),
+                             formatQuantity(DisplayQuantity::Angle, radToDeg(s.bindingPhi))));
+                m_region->setVisible(true);
+                m_region->setRegion(o.edge, {o.offset, s.baseRadius},
+                                    {follower.offset, design.baseRadius});
+                DesignSpec sized = design;
+                sized.baseRadius = s.baseRadius;
+                FollowerSpec moved = follower;
+                moved.offset = o.offset;
+                QUndoStack* stack = m_document->undoStack();
+                stack->beginMacro(tr("Best offset"));
+                stack->push(new SetDesign(m_document, sized, tr("Smallest base radius")));
+                stack->push(new SetFollower(m_document, moved));
+                stack->endMacro();
+                emit sizingFinished();
+            });
+    watcher->setFuture(QtConcurrent::run([design, follower] {
+        runInTheBackground();
+        return cam::sizeOffset(design, follower);
+    }));
+}
+
 QString MotionDesignPanel::sizingText() const { return m_sizing->text(); }
 
 void MotionDesignPanel::newDesign() {
@@ -366,6 +440,9 @@ void MotionDesignPanel::refresh() {
         w->setEnabled(design.has_value());
     }
     m_size->setEnabled(design.has_value() && !m_sizingRuns);
+    m_bestOffset->setEnabled(
+        design.has_value() && !m_sizingRuns &&
+        offsetSizable(m_document->project().follower.value_or(FollowerSpec{})));
     if (design) {
         m_baseRadius->setValue(design->baseRadius);
         m_tolerance->setValue(design->tolerance);

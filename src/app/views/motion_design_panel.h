@@ -24,6 +24,7 @@ class QToolButton;
 namespace cam {
 
 class DesignTableModel;
+class FeasibleRegionPlot;
 class NumberSpinBox;
 class ProjectDocument;
 
@@ -61,6 +62,12 @@ public:
     /// background and sets it (one undo step), unless the design or the follower changed
     /// meanwhile; the panel's sizing line says which check binds, or why none passes.
     void sizeBaseRadius();
+    /// @brief Finds the offset of a translating knife or roller that allows the smallest base
+    /// radius (design/sizing.h sizeOffset) in the background, sets both (one undo step) unless
+    /// the design or the follower changed meanwhile, and draws the feasible region.
+    void sizeOffset();
+    /// @brief The feasible region over base radius × offset (hidden before the first sizeOffset).
+    [[nodiscard]] FeasibleRegionPlot* feasibleRegion() const { return m_region; }
     /// @brief The sizing line under the base radius ("" before the first sizing).
     [[nodiscard]] QString sizingText() const;
     /// @brief Whether a sizing runs now.
@@ -82,7 +89,9 @@ private:
     QPushButton* m_removeDesign;
     NumberSpinBox* m_baseRadius;
     QPushButton* m_size;
+    QPushButton* m_bestOffset;
     QLabel* m_sizing;
+    FeasibleRegionPlot* m_region;
     bool m_sizingRuns = false;
     NumberSpinBox* m_tolerance;
     QCheckBox* m_strict;
