@@ -1687,8 +1687,8 @@
     </message>
     <message>
         <location line="+0" />
-        <source>Set every window boundary to where its neighbours meet</source>
-        <translation>Jede Fenstergrenze auf den Treffpunkt der Nachbarn setzen</translation>
+        <source>Set every window boundary to where its neighbours meet; segments that miss each other by less than 1e-5 mm are made to meet by the smallest change (one undo step, every change listed)</source>
+        <translation>Jede Fenstergrenze dorthin setzen, wo sich die Nachbarn treffen; Segmente, die einander um weniger als 1e-5 mm verfehlen, werden mit der kleinsten Änderung zum Treffen gebracht (ein Rückgängig-Schritt, jede Änderung aufgelistet)</translation>
     </message>
     <message>
         <location line="+1" />
