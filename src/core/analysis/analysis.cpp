@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "common/angles.h"
+#include "common/golden_section.h"
 #include "project/validate.h"
 
 namespace cam {
@@ -165,26 +166,12 @@ namespace {
 
 /// Golden-section search for the maximum of f on [lo, hi].
 std::pair<double, double> goldenMax(const std::function<double(double)>& f, double lo, double hi) {
-    const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-    double a = lo, b = hi;
-    double x1 = b - g * (b - a), x2 = a + g * (b - a);
-    double f1 = f(x1), f2 = f(x2);
-    for (int it = 0; it < 80 && (b - a) > 1e-13 * (1.0 + std::abs(a)); ++it) {
-        if (f1 < f2) {
-            a = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = a + g * (b - a);
-            f2 = f(x2);
-        } else {
-            b = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = b - g * (b - a);
-            f1 = f(x1);
-        }
-    }
-    return f1 >= f2 ? std::pair{x1, f1} : std::pair{x2, f2};
+    const GoldenSection g =
+        goldenSectionMin([&](double x) { return -f(x); }, lo, hi,
+                         [](double a, double b, int step) {
+                             return step < 80 && (b - a) > 1e-13 * (1.0 + std::abs(a));
+                         });
+    return -g.f1 >= -g.f2 ? std::pair{g.x1, -g.f1} : std::pair{g.x2, -g.f2};
 }
 
 /// A segment's quantities on an even grid of its closed window: evaluated once, searched for

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "common/angles.h"
+#include "common/golden_section.h"
 #include "common/tolerances.h"
 #include "geometry/line.h"
 #include "geometry/planar.h"
@@ -201,17 +202,11 @@ std::optional<Arc> touchingBoth(const Arc& first, const Arc& moving, const Arc& 
         const Vec p = solve(-t1.gap, -t2.gap);
         const Vec q = solve(-t1.b, -t2.b);
         const auto cost = [&](double t) { return (p + q * t).norm() + std::abs(t); };
-        double lo = -p.norm(), hi = p.norm();
-        const double golden = (std::sqrt(5.0) - 1.0) / 2.0;
-        for (int i = 0; i < 200 && hi - lo > 0.0; ++i) {
-            const double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
-            if (cost(x1) <= cost(x2)) {
-                hi = x2;
-            } else {
-                lo = x1;
-            }
-        }
-        const double t = cost(0.0) <= cost(0.5 * (lo + hi)) ? 0.0 : 0.5 * (lo + hi);
+        const GoldenSection g = goldenSectionMin(
+            cost, -p.norm(), p.norm(),
+            [](double lo, double hi, int step) { return step < 200 && hi - lo > 0.0; });
+        const double mid = 0.5 * (g.lo + g.hi);
+        const double t = cost(0.0) <= cost(mid) ? 0.0 : mid;
         m.center += p + q * t;
         m.radius += t;
     }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/angles.h"
+#include "common/golden_section.h"
 #include "geometry/planar.h"
 #include "project/project.h"
 
@@ -256,26 +257,10 @@ double bestBiarc(const Samples& s, std::size_t i, std::size_t j, double toleranc
         }
         if (bestValue <= tolerance) return bestValue;
     }
-    double left = lo + (hi - lo) * std::max(bestIndex - 1, 0) / (kScan - 1);
-    double right = lo + (hi - lo) * std::min(bestIndex + 1, kScan - 1) / (kScan - 1);
-    constexpr double g = 0.6180339887498949;
-    double x1 = right - g * (right - left), x2 = left + g * (right - left);
-    double f1 = value(x1), f2 = value(x2);
-    for (int it = 0; it < 24 && bestValue > tolerance; ++it) {
-        if (f1 <= f2) {
-            right = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = right - g * (right - left);
-            f1 = value(x1);
-        } else {
-            left = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = left + g * (right - left);
-            f2 = value(x2);
-        }
-    }
+    const double left = lo + (hi - lo) * std::max(bestIndex - 1, 0) / (kScan - 1);
+    const double right = lo + (hi - lo) * std::min(bestIndex + 1, kScan - 1) / (kScan - 1);
+    goldenSectionMin(value, left, right,
+                     [&](double, double, int step) { return step < 24 && bestValue > tolerance; });
     return bestValue;
 }
 

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "common/angles.h"
+#include "common/golden_section.h"
 #include "common/translate_marker.h"
 #include "design/exact_profile.h"
 #include "design/motion_design.h"
@@ -20,27 +21,11 @@ constexpr int kSizingSamples = 3600;
 
 /// The largest value of f within a step h of phi (f is −∞ where it does not count).
 std::pair<double, double> refineMax(const std::function<double(double)>& f, double phi, double h) {
-    constexpr double g = 0.6180339887498949;
-    double lo = phi - h, hi = phi + h;
-    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-    double f1 = f(x1), f2 = f(x2);
-    for (int it = 0; it < 80 && hi - lo > 1e-13; ++it) {
-        if (f1 >= f2) {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - g * (hi - lo);
-            f1 = f(x1);
-        } else {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + g * (hi - lo);
-            f2 = f(x2);
-        }
-    }
+    const GoldenSection g = goldenSectionMin(
+        [&](double x) { return -f(x); }, phi - h, phi + h,
+        [](double lo, double hi, int step) { return step < 80 && hi - lo > 1e-13; });
     std::pair<double, double> best{f(phi), phi};
-    for (const auto& [x, fx] : {std::pair{x1, f1}, std::pair{x2, f2}}) {
+    for (const auto& [x, fx] : {std::pair{g.x1, -g.f1}, std::pair{g.x2, -g.f2}}) {
         if (fx > best.first) best = {fx, x};
     }
     return best;
@@ -346,33 +331,18 @@ Result<OffsetSizing> sizeOffset(const DesignSpec& design, const FollowerSpec& fo
     // Golden sections between the best edge point's neighbours (the smallest base radius over
     // offsets is unimodal there: rise and return each ease as the offset moves their way).
     const double step = 2.0 * reach / (n - 1);
-    double lo = std::max(-reach, result.edge[static_cast<std::size_t>(best)][0] - step);
-    double hi = std::min(reach, result.edge[static_cast<std::size_t>(best)][0] + step);
+    const double lo = std::max(-reach, result.edge[static_cast<std::size_t>(best)][0] - step);
+    const double hi = std::min(reach, result.edge[static_cast<std::size_t>(best)][0] + step);
     const auto radiusAt = [&](double e) {
         const auto sized = sizeAt(e);
         return sized.ok() ? sized.value().baseRadius : std::numeric_limits<double>::infinity();
     };
-    constexpr double g = 0.6180339887498949;
-    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-    double f1 = radiusAt(x1), f2 = radiusAt(x2);
-    while (hi - lo > kOffsetTolerance) {
-        if (cancelled()) return OffsetSizing{};
-        if (f1 <= f2) {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - g * (hi - lo);
-            f1 = radiusAt(x1);
-        } else {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + g * (hi - lo);
-            f2 = radiusAt(x2);
-        }
-    }
-    double offset = f1 <= f2 ? x1 : x2;
-    if (std::min(f1, f2) > result.edge[static_cast<std::size_t>(best)][1]) {
+    const GoldenSection g = goldenSectionMin(radiusAt, lo, hi, [&](double a, double b, int) {
+        return b - a > kOffsetTolerance && !cancelled();
+    });
+    if (cancelled()) return OffsetSizing{};
+    double offset = g.f1 <= g.f2 ? g.x1 : g.x2;
+    if (std::min(g.f1, g.f2) > result.edge[static_cast<std::size_t>(best)][1]) {
         offset = result.edge[static_cast<std::size_t>(best)][0];
     }
     near.reset();

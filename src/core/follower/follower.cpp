@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "common/angles.h"
+#include "common/golden_section.h"
 #include "common/tolerances.h"
 #include "follower/follower_candidate.h"
 #include "follower/jet.h"
@@ -156,26 +157,11 @@ Result<FollowerModel> FollowerModel::build(const Contour& contour, const Followe
     for (int i = 0; i < kSamples; ++i) {
         const double prev = s[(i + kSamples - 1) % kSamples], next = s[(i + 1) % kSamples];
         if (s[i] > prev || s[i] > next) continue;
-        double lo = model.m_phiBegin + (i - 1) * h, hi = model.m_phiBegin + (i + 1) * h;
-        constexpr double g = 0.6180339887498949;
-        double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-        double f1 = model.rankAt(x1), f2 = model.rankAt(x2);
-        for (int it = 0; it < 80 && hi - lo > 1e-15; ++it) {
-            if (f1 <= f2) {
-                hi = x2;
-                x2 = x1;
-                f2 = f1;
-                x1 = hi - g * (hi - lo);
-                f1 = model.rankAt(x1);
-            } else {
-                lo = x1;
-                x1 = x2;
-                f1 = f2;
-                x2 = lo + g * (hi - lo);
-                f2 = model.rankAt(x2);
-            }
-        }
-        minimum = std::min({minimum, s[i], f1, f2});
+        const GoldenSection g = goldenSectionMin(
+            [&model](double phi) { return model.rankAt(phi); }, model.m_phiBegin + (i - 1) * h,
+            model.m_phiBegin + (i + 1) * h,
+            [](double lo, double hi, int step) { return step < 80 && hi - lo > 1e-15; });
+        minimum = std::min({minimum, s[i], g.f1, g.f2});
     }
     model.m_minRank = minimum;
     return model;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/angles.h"
+#include "common/golden_section.h"
 #include "project/follower_kind.h"
 
 namespace cam {
@@ -17,27 +18,11 @@ namespace {
 /// The extreme of f near phi (within one sample step h either side), by golden sections.
 FollowerExtremum refine(const std::function<double(double)>& f, double phi, double h, bool max) {
     const double sign = max ? -1.0 : 1.0;  // minimise sign·f
-    double lo = phi - h, hi = phi + h;
-    constexpr double g = 0.6180339887498949;
-    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-    double f1 = sign * f(x1), f2 = sign * f(x2);
-    for (int it = 0; it < 90 && hi - lo > 1e-14; ++it) {
-        if (f1 <= f2) {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - g * (hi - lo);
-            f1 = sign * f(x1);
-        } else {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + g * (hi - lo);
-            f2 = sign * f(x2);
-        }
-    }
+    const GoldenSection g = goldenSectionMin(
+        [&](double x) { return sign * f(x); }, phi - h, phi + h,
+        [](double lo, double hi, int step) { return step < 90 && hi - lo > 1e-14; });
     FollowerExtremum e{f(phi), phi};
-    for (const auto& [x, fx] : {std::pair{x1, f1}, std::pair{x2, f2}}) {
+    for (const auto& [x, fx] : {std::pair{g.x1, g.f1}, std::pair{g.x2, g.f2}}) {
         if (fx < sign * e.value) e = {sign * fx, x};
     }
     return e;
