@@ -1143,7 +1143,7 @@
         <translation>eine ganze Zahl</translation>
     </message>
     <message>
-        <location filename="../../src/core/design/sizing.cpp" line="+181" />
+        <location filename="../../src/core/design/sizing.cpp" line="+166" />
         <source>the pressure angle on rise</source>
         <translation>der Druckwinkel im Hub</translation>
     </message>
@@ -3570,34 +3570,33 @@
         <translation>Strenge beim Druckwinkel ändern</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+76" />
         <source>Finding the smallest base radius…</source>
         <translation>Kleinster Grundkreisradius wird gesucht …</translation>
     </message>
     <message>
-        <location line="+11" />
-        <location line="+48" />
+        <location line="-13" />
         <source>The design changed while it was sized: try again.</source>
         <translation>Der Entwurf hat sich während der Suche geändert: bitte erneut versuchen.</translation>
     </message>
     <message>
-        <location line="-36" />
+        <location line="+19" />
         <source>Smallest base radius %1: %2 binds at %3.</source>
         <translation>Kleinster Grundkreisradius %1: %2 begrenzt bei %3.</translation>
     </message>
     <message>
         <location line="+6" />
-        <location line="+58" />
+        <location line="+33" />
         <source>Smallest base radius</source>
         <translation>Kleinster Grundkreisradius</translation>
     </message>
     <message>
-        <location line="-39" />
+        <location line="-22" />
         <source>Finding the offset that allows the smallest base radius…</source>
         <translation>Suche den Versatz, der den kleinsten Grundkreisradius erlaubt …</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+7" />
         <source>Smallest base radius %1 at offset %2: %3 binds at %4.</source>
         <translation>Kleinster Grundkreisradius %1 bei Versatz %2: %3 begrenzt bei %4.</translation>
     </message>
@@ -3607,7 +3606,7 @@
         <translation>Bester Versatz</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+23" />
         <source>New design</source>
         <translation>Neuer Entwurf</translation>
     </message>
@@ -3622,7 +3621,7 @@
         <translation>Bewegungsabschnitt %1 löschen</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+23" />
         <source>This project has no motion design. New Design starts one: lay out the follower's motion, then Synthesize makes the contour from it.</source>
         <translation>Dieses Projekt hat keinen Bewegungsentwurf. „Neuer Entwurf“ legt einen an: die Bewegung des Stößels festlegen, dann erzeugt Synthetisieren daraus die Kontur.</translation>
     </message>

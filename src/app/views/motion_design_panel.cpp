@@ -267,112 +267,107 @@ void MotionDesignPanel::editDesign(const std::function<void(DesignSpec&)>& chang
     m_document->undoStack()->push(new SetDesign(m_document, design, text, gesture));
 }
 
-void MotionDesignPanel::sizeBaseRadius() {
-    if (m_sizingRuns || !m_document->project().design) return;
+template <class Answer>
+void MotionDesignPanel::runSizing(
+    const QString& busy, Result<Answer> (*job)(const DesignSpec&, const FollowerSpec&),
+    const std::function<void(const Answer&, const DesignSpec&, const FollowerSpec&)>& apply) {
     // The GUI thread never computes: the design and follower are snapshotted, sized in the
     // background, and the answer applied only if they are still what was sized.
     const DesignSpec design = *m_document->project().design;
     const FollowerSpec follower = m_document->project().follower.value_or(FollowerSpec{});
     m_sizingRuns = true;
-    m_size->setEnabled(false);
+    updateSizingButtons();
     m_sizing->setVisible(true);
     m_sizing->setStyleSheet(QString());
-    m_sizing->setText(tr("Finding the smallest base radius…"));
-    auto* watcher = new QFutureWatcher<Result<SizingResult>>(this);
-    connect(watcher, &QFutureWatcher<Result<SizingResult>>::finished, this,
-            [this, watcher, design, follower] {
+    m_sizing->setText(busy);
+    auto* watcher = new QFutureWatcher<Result<Answer>>(this);
+    connect(watcher, &QFutureWatcher<Result<Answer>>::finished, this,
+            [this, watcher, design, follower, apply] {
                 watcher->deleteLater();
                 m_sizingRuns = false;
-                m_size->setEnabled(m_document->project().design.has_value());
-                const Result<SizingResult> r = watcher->result();
+                updateSizingButtons();
+                const Result<Answer> r = watcher->result();
                 const auto& now = m_document->project();
                 if (!now.design || *now.design != design ||
                     now.follower.value_or(FollowerSpec{}) != follower) {
-                    m_sizing->setText(tr("The design changed while it was sized: try again."));
-                    emit sizingFinished();
-                    return;
-                }
-                if (!r.ok()) {
+                    m_sizing->setText(staleSizingText());
+                } else if (!r.ok()) {
                     m_sizing->setStyleSheet(QStringLiteral("color: #b41e1e"));
                     m_sizing->setText(DiagnosticText::line(r.errors().front()));
-                    emit sizingFinished();
-                    return;
+                } else {
+                    apply(r.value(), design, follower);
                 }
-                const SizingResult& s = r.value();
-                m_sizing->setText(
-                    tr("Smallest base radius %1: %2 binds at %3.")
-                        .arg(formatQuantity(DisplayQuantity::Length, s.baseRadius),
-                             QCoreApplication::translate(kDiagnosticContext,
-                                                         sizingCheckTitle(s.binding)),
-                             formatQuantity(DisplayQuantity::Angle, radToDeg(s.bindingPhi))));
-                editDesign([&](DesignSpec& d) { d.baseRadius = s.baseRadius; },
-                           tr("Smallest base radius"), 0);
                 emit sizingFinished();
             });
-    watcher->setFuture(QtConcurrent::run([design, follower] {
+    watcher->setFuture(QtConcurrent::run([job, design, follower] {
         runInTheBackground();
-        return cam::sizeBaseRadius(design, follower);
+        return job(design, follower);
     }));
+}
+
+QString MotionDesignPanel::staleSizingText() {
+    return tr("The design changed while it was sized: try again.");
+}
+
+void MotionDesignPanel::updateSizingButtons() {
+    const Project& project = m_document->project();
+    m_size->setEnabled(project.design.has_value() && !m_sizingRuns);
+    m_bestOffset->setEnabled(project.design.has_value() && !m_sizingRuns &&
+                             offsetSizable(project.follower.value_or(FollowerSpec{})));
+}
+
+void MotionDesignPanel::sizeBaseRadius() {
+    if (m_sizingRuns || !m_document->project().design) return;
+    runSizing<SizingResult>(
+        tr("Finding the smallest base radius…"),
+        [](const DesignSpec& design, const FollowerSpec& follower) {
+            return cam::sizeBaseRadius(design, follower);
+        },
+        [this](const SizingResult& s, const DesignSpec&, const FollowerSpec&) {
+            m_sizing->setText(
+                tr("Smallest base radius %1: %2 binds at %3.")
+                    .arg(formatQuantity(DisplayQuantity::Length, s.baseRadius),
+                         QCoreApplication::translate(kDiagnosticContext,
+                                                     sizingCheckTitle(s.binding)),
+                         formatQuantity(DisplayQuantity::Angle, radToDeg(s.bindingPhi))));
+            editDesign([&](DesignSpec& d) { d.baseRadius = s.baseRadius; },
+                       tr("Smallest base radius"), 0);
+        });
 }
 
 void MotionDesignPanel::sizeOffset() {
     const Project& project = m_document->project();
-    const FollowerSpec follower = project.follower.value_or(FollowerSpec{});
-    if (m_sizingRuns || !project.design || !offsetSizable(follower)) return;
-    // As sizeBaseRadius: snapshotted, sized in the background, applied only if unchanged.
-    const DesignSpec design = *project.design;
-    m_sizingRuns = true;
-    refresh();
-    m_sizing->setVisible(true);
-    m_sizing->setStyleSheet(QString());
-    m_sizing->setText(tr("Finding the offset that allows the smallest base radius…"));
-    auto* watcher = new QFutureWatcher<Result<OffsetSizing>>(this);
-    connect(watcher, &QFutureWatcher<Result<OffsetSizing>>::finished, this,
-            [this, watcher, design, follower] {
-                watcher->deleteLater();
-                m_sizingRuns = false;
-                refresh();
-                const Result<OffsetSizing> r = watcher->result();
-                const auto& now = m_document->project();
-                if (!now.design || *now.design != design ||
-                    now.follower.value_or(FollowerSpec{}) != follower) {
-                    m_sizing->setText(tr("The design changed while it was sized: try again."));
-                    emit sizingFinished();
-                    return;
-                }
-                if (!r.ok()) {
-                    m_sizing->setStyleSheet(QStringLiteral("color: #b41e1e"));
-                    m_sizing->setText(DiagnosticText::line(r.errors().front()));
-                    emit sizingFinished();
-                    return;
-                }
-                const OffsetSizing& o = r.value();
-                const SizingResult& s = o.sizing;
-                m_sizing->setText(
-                    tr("Smallest base radius %1 at offset %2: %3 binds at %4.")
-                        .arg(formatQuantity(DisplayQuantity::Length, s.baseRadius),
-                             formatQuantity(DisplayQuantity::Length, o.offset),
-                             QCoreApplication::translate(kDiagnosticContext,
-                                                         sizingCheckTitle(s.binding)),
-                             formatQuantity(DisplayQuantity::Angle, radToDeg(s.bindingPhi))));
-                m_region->setVisible(true);
-                m_region->setRegion(o.edge, {o.offset, s.baseRadius},
-                                    {follower.offset, design.baseRadius});
-                DesignSpec sized = design;
-                sized.baseRadius = s.baseRadius;
-                FollowerSpec moved = follower;
-                moved.offset = o.offset;
-                QUndoStack* stack = m_document->undoStack();
-                stack->beginMacro(tr("Best offset"));
-                stack->push(new SetDesign(m_document, sized, tr("Smallest base radius")));
-                stack->push(new SetFollower(m_document, moved));
-                stack->endMacro();
-                emit sizingFinished();
-            });
-    watcher->setFuture(QtConcurrent::run([design, follower] {
-        runInTheBackground();
-        return cam::sizeOffset(design, follower);
-    }));
+    if (m_sizingRuns || !project.design ||
+        !offsetSizable(project.follower.value_or(FollowerSpec{}))) {
+        return;
+    }
+    runSizing<OffsetSizing>(
+        tr("Finding the offset that allows the smallest base radius…"),
+        [](const DesignSpec& design, const FollowerSpec& follower) {
+            return cam::sizeOffset(design, follower);
+        },
+        [this](const OffsetSizing& o, const DesignSpec& design, const FollowerSpec& follower) {
+            const SizingResult& s = o.sizing;
+            m_sizing->setText(
+                tr("Smallest base radius %1 at offset %2: %3 binds at %4.")
+                    .arg(formatQuantity(DisplayQuantity::Length, s.baseRadius),
+                         formatQuantity(DisplayQuantity::Length, o.offset),
+                         QCoreApplication::translate(kDiagnosticContext,
+                                                     sizingCheckTitle(s.binding)),
+                         formatQuantity(DisplayQuantity::Angle, radToDeg(s.bindingPhi))));
+            m_region->setVisible(true);
+            m_region->setRegion(o.edge, {o.offset, s.baseRadius},
+                                {follower.offset, design.baseRadius});
+            DesignSpec sized = design;
+            sized.baseRadius = s.baseRadius;
+            FollowerSpec moved = follower;
+            moved.offset = o.offset;
+            QUndoStack* stack = m_document->undoStack();
+            stack->beginMacro(tr("Best offset"));
+            stack->push(new SetDesign(m_document, sized, tr("Smallest base radius")));
+            stack->push(new SetFollower(m_document, moved));
+            stack->endMacro();
+        });
 }
 
 QString MotionDesignPanel::sizingText() const { return m_sizing->text(); }
@@ -439,10 +434,7 @@ void MotionDesignPanel::refresh() {
                                                       m_split, m_delete, m_synthesize}) {
         w->setEnabled(design.has_value());
     }
-    m_size->setEnabled(design.has_value() && !m_sizingRuns);
-    m_bestOffset->setEnabled(
-        design.has_value() && !m_sizingRuns &&
-        offsetSizable(m_document->project().follower.value_or(FollowerSpec{})));
+    updateSizingButtons();
     if (design) {
         m_baseRadius->setValue(design->baseRadius);
         m_tolerance->setValue(design->tolerance);

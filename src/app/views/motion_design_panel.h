@@ -79,6 +79,18 @@ signals:
 
 private:
     void refresh();
+    /// Smallest and Best Offset are on while there is a design (Best Offset: for a follower
+    /// whose offset matters) and no sizing runs.
+    void updateSizingButtons();
+    /// "The design changed while it was sized: try again." (outside the template, where
+    /// lupdate finds its context).
+    [[nodiscard]] static QString staleSizingText();
+    /// Runs `job` on a snapshot of the design and follower in the background; `apply` takes
+    /// its answer if they are still what was sized, else the sizing line says why not.
+    template <class Answer>
+    void runSizing(
+        const QString& busy, Result<Answer> (*job)(const DesignSpec&, const FollowerSpec&),
+        const std::function<void(const Answer&, const DesignSpec&, const FollowerSpec&)>& apply);
     void editDesign(const std::function<void(DesignSpec&)>& change, const QString& text,
                     int gesture);
     [[nodiscard]] int currentRow() const;
