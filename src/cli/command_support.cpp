@@ -72,6 +72,12 @@ void requireFinite(const Json& value, const std::string& where) {
     }
 }
 
+void writeProjectOut(const std::string& outPath, const Project& project, const Json& report) {
+    requireFinite(report, "");
+    const Diagnostics written = writeFileAtomically(outPath, serializeProject(project));
+    if (!written.empty()) throw CliError{kInvalidInput, outPath, written.front().message};
+}
+
 void printJson(std::ostream& out, const Json& result) {
     requireFinite(result, "");
     out << result.dump(2) << "\n";

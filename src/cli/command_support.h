@@ -49,6 +49,11 @@ void requireFinite(const Json& value, const std::string& where);
 /// @brief Prints a JSON result after checking every number in it.
 void printJson(std::ostream& out, const Json& result);
 
+/// @brief The --out of a command that makes a project: `report` checked to be finite first,
+/// then `project` written to `outPath` atomically; throws (exit 2) naming the file when it
+/// cannot be written. Nothing is written when either fails.
+void writeProjectOut(const std::string& outPath, const Project& project, const Json& report);
+
 /// @brief printJson(out, object) where object[key] is the array of the `count` elements that
 /// element(i) makes, each made, checked and turned into text in turn: the same text, without
 /// the whole tree in memory (analyze's 100,000 joints took 400 MB as one). Nothing is written

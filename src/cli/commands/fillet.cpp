@@ -4,8 +4,6 @@
 
 #include "cli/command_support.h"
 #include "fillet/fillet.h"
-#include "io/atomic_file.h"
-#include "io/project_json.h"
 
 namespace cam::cli {
 
@@ -51,9 +49,7 @@ int runFillet(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
                        {"tangent_point_2", {f.tangentPoint2.x(), f.tangentPoint2.y()}},
                        {"segments", filleted.contour.size()},
                        {"out", *outPath}};
-    requireFinite(summary, "");  // before the file is written: nothing is left of a failure
-    const Diagnostics written = writeFileAtomically(*outPath, serializeProject(filleted));
-    if (!written.empty()) throw CliError{kInvalidInput, *outPath, written.front().message};
+    writeProjectOut(*outPath, filleted, summary);
     printJson(out, summary);
     return kOk;
 }

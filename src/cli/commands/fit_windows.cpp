@@ -5,8 +5,6 @@
 #include "cli/command_support.h"
 #include "contour/fit_windows.h"
 #include "evaluation/evaluation.h"
-#include "io/atomic_file.h"
-#include "io/project_json.h"
 
 namespace cam::cli {
 
@@ -99,9 +97,7 @@ int runFitWindows(const Arguments& args, std::ostream& out, std::ostream& err) {
                       {"changes", changes},
                       {"largest_change_mm", f.largestMoveMm()},
                       {"out", *outPath}};
-    requireFinite(report, "");  // before the file is written: nothing is left of a failure
-    const Diagnostics written = writeFileAtomically(*outPath, serializeProject(project));
-    if (!written.empty()) throw CliError{kInvalidInput, *outPath, written.front().message};
+    writeProjectOut(*outPath, project, report);
     // Every change on stderr (cli.md), the report on stdout.
     err << lines(path, f.notes);
     printJson(out, report);

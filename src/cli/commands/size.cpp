@@ -9,8 +9,6 @@
 #include "design/motion_design.h"
 #include "design/sizing.h"
 #include "evaluation/evaluation.h"
-#include "io/atomic_file.h"
-#include "io/project_json.h"
 
 namespace cam::cli {
 
@@ -87,9 +85,7 @@ int runSize(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
             follower.offset = offsetSizing->offset;
             project.follower = follower;
         }
-        requireFinite(report, "");
-        const Diagnostics written = writeFileAtomically(*outPath, serializeProject(project));
-        if (!written.empty()) throw CliError{kInvalidInput, *outPath, written.front().message};
+        writeProjectOut(*outPath, project, report);
     }
     printJson(out, report);
     return kOk;

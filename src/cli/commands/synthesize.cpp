@@ -7,8 +7,6 @@
 #include "contour/contour.h"
 #include "design/synthesis.h"
 #include "evaluation/evaluation.h"
-#include "io/atomic_file.h"
-#include "io/project_json.h"
 
 namespace cam::cli {
 
@@ -85,9 +83,7 @@ int runSynthesize(const Arguments& args, std::ostream& out, std::ostream& /*err*
                       {"jerk", jumps > 0 ? "unbounded at each acceleration jump" : "bounded"},
                       {"notes", notes},
                       {"out", *outPath}};
-    requireFinite(report, "");
-    const Diagnostics written = writeFileAtomically(*outPath, serializeProject(project));
-    if (!written.empty()) throw CliError{kInvalidInput, *outPath, written.front().message};
+    writeProjectOut(*outPath, project, report);
     printJson(out, report);
     return kOk;
 }
