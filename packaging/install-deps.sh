@@ -4,8 +4,8 @@
 set -euo pipefail
 
 packages=(
-    # toolchain
-    build-essential cmake ninja-build pkg-config
+    # toolchain (git: .ci/check-format lists the sources with git ls-files)
+    build-essential cmake ninja-build pkg-config git
     # the sanitizer and fuzzing builds (the debug and fuzz presets): clang with its runtimes;
     # clang-format, whose style .ci/check-format enforces
     clang libclang-rt-14-dev clang-format
