@@ -16,33 +16,38 @@
 namespace cam {
 namespace {
 
-/// A cycloidal rise of 1 mm over 90°, dwell to 180°, cycloidal return over 90°, dwell.
-DesignSpec cycloidalDesign() {
+/// A cycloidal rise of 1 mm from 0 to riseEndDeg, a dwell to 180°, a cycloidal return to
+/// returnEndDeg and a dwell.
+DesignSpec riseAndReturn(double riseEndDeg, double returnEndDeg) {
     DesignSpec d;
     d.baseRadius = 10.0;
-    d.segments = {{MotionLawType::Cycloidal, 90.0, 1.0},
+    d.segments = {{MotionLawType::Cycloidal, riseEndDeg, 1.0},
                   {MotionLawType::Dwell, 180.0, 1.0},
-                  {MotionLawType::Cycloidal, 270.0, 0.0},
+                  {MotionLawType::Cycloidal, returnEndDeg, 0.0},
                   {MotionLawType::Dwell, 360.0, 0.0}};
     return d;
 }
 
 /// That motion in closed form: s, s', s'' per radian.
-std::array<double, 3> law(double phi) {
-    const double beta = kPi / 2.0;
-    const auto rise = [&](double x) {
+std::array<double, 3> riseAndReturnLaw(double phi, double riseEndDeg, double returnEndDeg) {
+    const auto cycloid = [](double x, double beta) {
         return std::array<double, 3>{x - std::sin(kTwoPi * x) / kTwoPi,
                                      (1.0 - std::cos(kTwoPi * x)) / beta,
                                      kTwoPi * std::sin(kTwoPi * x) / (beta * beta)};
     };
-    if (phi < beta) return rise(phi / beta);
-    if (phi < 2 * beta) return {1.0, 0.0, 0.0};
-    if (phi < 3 * beta) {
-        const auto r = rise((phi - 2 * beta) / beta);
-        return {1.0 - r[0], -r[1], -r[2]};
+    const double rise = degToRad(riseEndDeg), back = degToRad(returnEndDeg) - kPi;
+    if (phi < rise) return cycloid(phi / rise, rise);
+    if (phi < kPi) return {1.0, 0.0, 0.0};
+    if (phi < kPi + back) {
+        const auto c = cycloid((phi - kPi) / back, back);
+        return {1.0 - c[0], -c[1], -c[2]};
     }
     return {0.0, 0.0, 0.0};
 }
+
+/// A cycloidal rise over 90° and return over 90°: rise and return mirror each other.
+DesignSpec cycloidalDesign() { return riseAndReturn(90.0, 270.0); }
+std::array<double, 3> law(double phi) { return riseAndReturnLaw(phi, 90.0, 270.0); }
 
 /// The closed form's prime-circle radius for offset e and limit α_max (dense in φ).
 double primeRadius(double e, double limitDeg) {
@@ -170,34 +175,10 @@ TEST(Sizing, AnArmThatNoBaseRadiusSuitsIsNamed) {
 namespace cam {
 namespace {
 
-/// A cycloidal rise of 1 mm over 60°, a dwell to 180°, a cycloidal return over 120° and a
-/// dwell: the rise is twice as steep as the return, so an offset towards it lets a smaller
-/// cam meet the limit.
-DesignSpec lopsidedDesign() {
-    DesignSpec d;
-    d.baseRadius = 10.0;
-    d.segments = {{MotionLawType::Cycloidal, 60.0, 1.0},
-                  {MotionLawType::Dwell, 180.0, 1.0},
-                  {MotionLawType::Cycloidal, 300.0, 0.0},
-                  {MotionLawType::Dwell, 360.0, 0.0}};
-    return d;
-}
-
-/// That motion in closed form: s and s' per radian.
-std::array<double, 2> lopsidedLaw(double phi) {
-    const auto cycloid = [](double x, double beta) {
-        return std::array<double, 2>{x - std::sin(kTwoPi * x) / kTwoPi,
-                                     (1.0 - std::cos(kTwoPi * x)) / beta};
-    };
-    const double rise = kPi / 3.0, ret = 2.0 * kPi / 3.0;
-    if (phi < rise) return cycloid(phi / rise, rise);
-    if (phi < kPi) return {1.0, 0.0};
-    if (phi < kPi + ret) {
-        const auto c = cycloid((phi - kPi) / ret, ret);
-        return {1.0 - c[0], -c[1]};
-    }
-    return {0.0, 0.0};
-}
+/// A rise over 60° and a return over 120°: the rise is twice as steep as the return, so an
+/// offset towards it lets a smaller cam meet the limit.
+DesignSpec lopsidedDesign() { return riseAndReturn(60.0, 300.0); }
+std::array<double, 3> lopsidedLaw(double phi) { return riseAndReturnLaw(phi, 60.0, 300.0); }
 
 /// The closed form's prime-circle radius of a knife with offset e and a 30° limit.
 double lopsidedPrimeRadius(double e) {
