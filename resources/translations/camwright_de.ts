@@ -2820,11 +2820,12 @@
     <name>cam::FeasibleRegionPlot</name>
     <message>
         <location filename="../../src/app/views/feasible_region_plot.cpp" line="+14" />
+        <location line="+35" />
         <source>Offset [mm]</source>
         <translation>Versatz [mm]</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-34" />
         <source>Base radius [mm]</source>
         <translation>Grundkreisradius [mm]</translation>
     </message>
@@ -2834,7 +2835,12 @@
         <translation>kleinster Grundkreisradius</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+3" />
+        <source>largest base radius</source>
+        <translation>größter Grundkreisradius</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>smallest cam</source>
         <translation>kleinste Kurvenscheibe</translation>
     </message>
@@ -2842,6 +2848,11 @@
         <location line="+4" />
         <source>design</source>
         <translation>Entwurf</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>Pivot distance [mm]</source>
+        <translation>Abstand des Drehpunkts [mm]</translation>
     </message>
 </context>
 <context>
@@ -3483,17 +3494,17 @@
         <translation>Den kleinsten Grundkreisradius setzen, bei dem der Stößel alle Prüfungen besteht: Druckwinkel im Hub und Rückhub innerhalb der Grenze, kein Unterschnitt (ein Rückgängig-Schritt)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+228" />
         <source>Best Offset</source>
         <translation>Bester Versatz</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+2" />
         <source>Set the follower's offset that allows the smallest base radius, and that radius, and show the feasible region over base radius × offset (one undo step; a translating knife or roller)</source>
         <translation>Den Versatz des Stößels setzen, der den kleinsten Grundkreisradius erlaubt, und diesen Radius, und den zulässigen Bereich über Grundkreisradius × Versatz zeigen (ein Rückgängig-Schritt; Spitzen- oder Rollenstößel mit Schubbewegung)</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="-215" />
         <source>Largest distance of the arc table from the exact profile</source>
         <translation>Größter Abstand der Bogentabelle vom exakten Profil</translation>
     </message>
@@ -3570,38 +3581,43 @@
         <translation>Strenge beim Druckwinkel ändern</translation>
     </message>
     <message>
-        <location line="+76" />
+        <location line="+72" />
+        <source>Best Pivot</source>
+        <translation>Bester Drehpunkt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Move the arm's pivot along its line to the cam centre to where it allows the smallest base radius, set that radius, and show the feasible region over base radius × pivot distance (one undo step; the arm keeps its length)</source>
+        <translation>Den Drehpunkt des Hebels auf seiner Linie zur Kurvenscheibenmitte dorthin verschieben, wo er den kleinsten Grundkreisradius erlaubt, diesen Radius setzen und den zulässigen Bereich über Grundkreisradius × Drehpunktabstand zeigen (ein Rückgängig-Schritt; der Hebel behält seine Länge)</translation>
+    </message>
+    <message>
+        <location line="+15" />
         <source>Finding the smallest base radius…</source>
         <translation>Kleinster Grundkreisradius wird gesucht …</translation>
     </message>
     <message>
-        <location line="-13" />
+        <location line="-26" />
         <source>The design changed while it was sized: try again.</source>
         <translation>Der Entwurf hat sich während der Suche geändert: bitte erneut versuchen.</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+32" />
         <source>Smallest base radius %1: %2 binds at %3.</source>
         <translation>Kleinster Grundkreisradius %1: %2 begrenzt bei %3.</translation>
     </message>
     <message>
         <location line="+6" />
-        <location line="+33" />
+        <location line="+35" />
         <source>Smallest base radius</source>
         <translation>Kleinster Grundkreisradius</translation>
     </message>
     <message>
-        <location line="-22" />
-        <source>Finding the offset that allows the smallest base radius…</source>
-        <translation>Suche den Versatz, der den kleinsten Grundkreisradius erlaubt …</translation>
-    </message>
-    <message>
-        <location line="+7" />
+        <location line="-12" />
         <source>Smallest base radius %1 at offset %2: %3 binds at %4.</source>
         <translation>Kleinster Grundkreisradius %1 bei Versatz %2: %3 begrenzt bei %4.</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+11" />
         <source>Best offset</source>
         <translation>Bester Versatz</translation>
     </message>
@@ -3644,7 +3660,22 @@
         <translation>Der Entwurf ist nicht herstellbar: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-141" />
+        <source>Finding the placement that allows the smallest base radius…</source>
+        <translation>Suche die Lage, die den kleinsten Grundkreisradius erlaubt…</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Smallest base radius %1 with the pivot %2 from the cam centre: %3 binds at %4.</source>
+        <translation>Kleinster Grundkreisradius %1 mit dem Drehpunkt %2 von der Kurvenscheibenmitte: %3 begrenzt bei %4.</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Best pivot</source>
+        <translation>Bester Drehpunkt</translation>
+    </message>
+    <message>
+        <location line="+118" />
         <source>The design cannot be drawn at this speed.</source>
         <translation>Der Entwurf lässt sich bei dieser Drehzahl nicht zeichnen.</translation>
     </message>

@@ -215,30 +215,36 @@ std::vector<CommandHelp> makeTable() {
                    "tolerance)"},
                   {"--output", "arcs", "arcs (the only output of this version)"}},
                  {"synthesize design.cam.json --out cam.cam.json --tolerance 0.001"}});
-    t.push_back({"size",
-                 "size PROJECT [--min-radius MM] [--best-offset] [--out NEW]",
-                 "the smallest base radius that passes every check",
-                 "Finds the smallest base radius of the project's motion design for which its "
-                 "follower (a radial knife when it names none) passes every check: the pressure "
-                 "angle within the follower's limit on rise and on return, no undercut (the "
-                 "profile does not fold), and the profile's convex radius at least --min-radius. "
-                 "It bisects on the exact checks of the exact profile to 1e-9 mm, and prints "
-                 "JSON: base_radius_mm, the binding check (pressure_angle_rise, "
-                 "pressure_angle_return, convex_radius) and the angle at_deg where it binds, the "
-                 "pressure angles and smallest convex radius at that base radius, and a flat "
-                 "face's face_width_mm. With --out, writes the project with that base radius to "
-                 "NEW (synthesize then makes its contour). Exit 3 when no base radius up to "
-                 "1000000 mm passes (an arm whose pivot is too near), naming the check. "
-                 "With --best-offset (a translating knife or roller), also finds the offset "
-                 "that allows the smallest base radius, to 1e-6 mm: offset_mm, offset_was_mm, "
-                 "and feasible_edge, the smallest base radius at 41 offsets over 1.1 times the "
-                 "steepest lift slope either side (every base radius above it passes); --out "
-                 "then writes the offset too.",
-                 {{"--min-radius", "MM",
-                   "the smallest convex radius of the profile, in mm (default 0: no cusp)"},
-                  {"--best-offset", "", "also find the offset that allows the smallest cam"},
-                  {"--out", "NEW", "the file for the project with the base radius found"}},
-                 {"size design.cam.json --min-radius 2 --out sized.cam.json"}});
+    t.push_back(
+        {"size",
+         "size PROJECT [--min-radius MM] [--best-offset|--best-pivot] [--out NEW]",
+         "the smallest base radius that passes every check",
+         "Finds the smallest base radius of the project's motion design for which its "
+         "follower (a radial knife when it names none) passes every check: the pressure "
+         "angle within the follower's limit on rise and on return, no undercut (the "
+         "profile does not fold), and the profile's convex radius at least --min-radius. "
+         "It bisects on the exact checks of the exact profile to 1e-9 mm, and prints "
+         "JSON: base_radius_mm, the binding check (pressure_angle_rise, "
+         "pressure_angle_return, convex_radius) and the angle at_deg where it binds, the "
+         "pressure angles and smallest convex radius at that base radius, and a flat "
+         "face's face_width_mm. With --out, writes the project with that base radius to "
+         "NEW (synthesize then makes its contour). Exit 3 when no base radius up to "
+         "1000000 mm passes (an arm whose pivot is too near), naming the check. "
+         "With --best-offset (a translating knife or roller), also finds the offset "
+         "that allows the smallest base radius, to 1e-6 mm: offset_mm, offset_was_mm, "
+         "and feasible_edge, the smallest base radius at 41 offsets over 1.1 times the "
+         "steepest lift slope either side (every base radius above it passes); --out "
+         "then writes the offset too. With --best-pivot (a swinging arm), finds the "
+         "pivot distance instead, the pivot moved along its own direction and the arm "
+         "keeping its length: pivot_mm, pivot_distance_mm, pivot_was_mm, and "
+         "feasible_edge over pivot distances from the roller's radius to L + radius + "
+         "the base radius found at the arm's own pivot.",
+         {{"--min-radius", "MM",
+           "the smallest convex radius of the profile, in mm (default 0: no cusp)"},
+          {"--best-offset", "", "also find the offset that allows the smallest cam"},
+          {"--best-pivot", "", "also find the arm's pivot distance that allows the smallest cam"},
+          {"--out", "NEW", "the file for the project with the base radius found"}},
+         {"size design.cam.json --min-radius 2 --out sized.cam.json"}});
     t.push_back(
         {"export",
          "export PROJECT --format " + joinNames(exportFormatNames(), "|") +

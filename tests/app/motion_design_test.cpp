@@ -15,6 +15,7 @@
 #include <QSignalSpy>
 #include <QTableView>
 #include <cmath>
+#include <limits>
 
 #include "app_test_support.h"
 #include "common/angles.h"
@@ -473,14 +474,14 @@ TEST(MotionDesignDock, BestOffsetSetsOffsetAndRadiusInOneStepAndDrawsTheFeasible
     ProjectDocument* doc = window.document();
     const Project before = doc->project();
     const FollowerSpec follower = before.follower.value_or(FollowerSpec{});
-    ASSERT_TRUE(offsetSizable(follower));
+    ASSERT_EQ(placementOf(follower), Placement::Offset);
     // The core's answer (checked against the closed form in core_tests Sizing.*).
-    const auto expected = sizeOffset(*before.design, follower);
+    const auto expected = sizePlacement(*before.design, follower);
     ASSERT_TRUE(expected.ok());
     const int steps = doc->undoStack()->count();
     MotionDesignPanel* panel = window.motionDesignPanel();
     QSignalSpy finished(panel, &MotionDesignPanel::sizingFinished);
-    auto* button = panel->findChild<QPushButton*>("bestOffsetButton");
+    auto* button = panel->findChild<QPushButton*>("bestPlacementButton");
     ASSERT_NE(button, nullptr);
     ASSERT_TRUE(button->isEnabled());
     EXPECT_FALSE(panel->feasibleRegion()->isVisible());
@@ -489,14 +490,14 @@ TEST(MotionDesignDock, BestOffsetSetsOffsetAndRadiusInOneStepAndDrawsTheFeasible
     EXPECT_FALSE(button->isEnabled());
     ASSERT_TRUE(finished.wait(60000));
     EXPECT_EQ(doc->project().design->baseRadius, expected.value().sizing.baseRadius);
-    EXPECT_EQ(doc->project().follower->offset, expected.value().offset);
+    EXPECT_EQ(doc->project().follower->offset, expected.value().value);
     EXPECT_EQ(doc->undoStack()->count(), steps + 1);  // both in one step
     EXPECT_NE(panel->sizingText().indexOf("at offset"), -1) << panel->sizingText().toStdString();
     // The picture: the edge's 41 points, the chosen point on it, the design's own above it.
     FeasibleRegionPlot* region = panel->feasibleRegion();
     EXPECT_TRUE(region->isVisible());
     ASSERT_EQ(region->edgeGraph()->dataCount(), 41);
-    EXPECT_EQ(region->chosenGraph()->data()->at(0)->key, expected.value().offset);
+    EXPECT_EQ(region->chosenGraph()->data()->at(0)->key, expected.value().value);
     EXPECT_EQ(region->chosenGraph()->data()->at(0)->value, expected.value().sizing.baseRadius);
     EXPECT_EQ(region->currentGraph()->data()->at(0)->value, before.design->baseRadius);
     EXPECT_TRUE(region->yAxis->range().contains(before.design->baseRadius));
@@ -505,13 +506,38 @@ TEST(MotionDesignDock, BestOffsetSetsOffsetAndRadiusInOneStepAndDrawsTheFeasible
     doc->undoStack()->undo();
     EXPECT_EQ(doc->project().design, before.design);
     EXPECT_EQ(doc->project().follower, before.follower);
-    // A swinging arm has no offset to size: the button is off.
+    EXPECT_EQ(button->text(), "Best Offset");
+    EXPECT_EQ(region->xAxis->label(), "Offset [mm]");
+    EXPECT_FALSE(region->legend->hasItemWithPlottable(region->topGraph()));
+    // A swinging arm sizes its pivot instead; a flat face has nothing to place.
     FollowerSpec arm = follower;
     arm.motion = FollowerMotion::Oscillating;
     arm.pivot = Eigen::Vector2d(120.0, 0.0);
     arm.armLength = 100.0;
     doc->undoStack()->push(new SetFollower(doc, arm));
+    EXPECT_TRUE(button->isEnabled());
+    EXPECT_EQ(button->text(), "Best Pivot");
+    FollowerSpec flat = follower;
+    flat.type = FollowerType::Flat;
+    doc->undoStack()->push(new SetFollower(doc, flat));
     EXPECT_FALSE(button->isEnabled());
+}
+
+TEST(MotionDesignDock, TheFeasibleRegionOfAnArmIsShadedBetweenItsSmallestAndLargestRadius) {
+    FeasibleRegionPlot region;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    region.setRegion(Placement::PivotDistance,
+                     {{50.0, nan, nan}, {60.0, 3.0, 54.0}, {70.0, 11.0, 64.0}}, {60.0, 3.0},
+                     {70.0, 35.0});
+    EXPECT_EQ(region.xAxis->label(), "Pivot distance [mm]");
+    ASSERT_EQ(region.topGraph()->dataCount(), 3);
+    EXPECT_TRUE(std::isnan(region.topGraph()->data()->at(0)->value));
+    EXPECT_EQ(region.topGraph()->data()->at(1)->value, 54.0);
+    EXPECT_EQ(region.topGraph()->data()->at(2)->value, 64.0);
+    EXPECT_TRUE(region.legend->hasItemWithPlottable(region.topGraph()));
+    EXPECT_NE(region.topGraph()->pen().style(), Qt::NoPen);
+    EXPECT_TRUE(region.yAxis->range().contains(64.0));
+    EXPECT_TRUE(region.yAxis->range().contains(3.0));
 }
 
 }  // namespace

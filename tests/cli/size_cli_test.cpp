@@ -137,13 +137,75 @@ TEST(CliSize, TheBestOffsetGivesASmallerCamWhoseRiseAndReturnBothMeetTheLimit) {
     EXPECT_NEAR(p["rise"]["value_deg"].get<double>(), 30.0, 0.1);
     EXPECT_NEAR(p["return"]["value_deg"].get<double>(), 30.0, 0.1);
 
-    // A swinging arm has no offset: refused, naming the option, nothing written.
+    // A swinging arm has no offset: refused, naming the option and the one that suits it,
+    // nothing written; and a translating follower has no pivot.
     const std::string arm = std::string(CAMWRIGHT_EXAMPLES) + "/swinging-arm-cam.cam.json";
     const std::string armOut = dir.file("arm.cam.json");
     const auto refused = test::runCli({"size", arm, "--best-offset", "--out", armOut});
     EXPECT_EQ(refused.exitCode, 2);
     EXPECT_NE(refused.err.find("--best-offset"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("--best-pivot"), std::string::npos) << refused.err;
     EXPECT_FALSE(std::filesystem::exists(armOut));
+    const auto noPivot = test::runCli({"size", kDesign, "--best-pivot", "--out", armOut});
+    EXPECT_EQ(noPivot.exitCode, 2);
+    EXPECT_NE(noPivot.err.find("--best-pivot"), std::string::npos) << noPivot.err;
+    const auto both = test::runCli({"size", arm, "--best-pivot", "--best-offset"});
+    EXPECT_EQ(both.exitCode, 2);
+    EXPECT_FALSE(std::filesystem::exists(armOut));
+}
+
+TEST(CliSize, TheBestPivotGivesASmallerArmCamThatMeetsTheLimitOnRiseAndReturn) {
+    // The bundled arm (pivot 70 mm out, arm 60 mm, limit 45°) needs 11.41 mm at its own pivot.
+    // Moving the pivot along its line lets a smaller cam meet 45° on both phases (core_tests
+    // SizingArm.* check the number against pressure angles computed from math.md §7 alone);
+    // here end to end: written, synthesised and analysed on its arc table.
+    test::TempDir dir;
+    const std::string arm = std::string(CAMWRIGHT_EXAMPLES) + "/swinging-arm-cam.cam.json";
+    const std::string sized = dir.file("sized.cam.json");
+    const auto plain = test::runCli({"size", arm});
+    ASSERT_EQ(plain.exitCode, 0) << plain.err;
+    const auto run = test::runCli({"size", arm, "--best-pivot", "--out", sized});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Json r = Json::parse(run.out);
+    const double base = r["base_radius_mm"], distance = r["pivot_distance_mm"];
+    EXPECT_LT(base, Json::parse(plain.out)["base_radius_mm"].get<double>() - 5.0);
+    EXPECT_EQ(r["pivot_was_mm"], Json::array({70.0, 0.0}));
+    EXPECT_EQ(r["pivot_mm"], Json::array({distance, 0.0}));
+    EXPECT_FALSE(r.contains("offset_mm"));
+    EXPECT_NEAR(r["pressure_angle_rise_deg"].get<double>(), 45.0, 1e-3);
+    EXPECT_NEAR(r["pressure_angle_return_deg"].get<double>(), 45.0, 1e-3);
+    // The region: 41 pivot distances; where radii pass, from the smallest to the largest, and
+    // none smaller than the answer.
+    ASSERT_EQ(r["feasible_edge"].size(), 41U);
+    int feasible = 0;
+    for (const Json& point : r["feasible_edge"]) {
+        ASSERT_TRUE(point.contains("pivot_distance_mm")) << point.dump();
+        if (point["base_radius_mm"].is_null()) {
+            EXPECT_TRUE(point["largest_base_radius_mm"].is_null()) << point.dump();
+            continue;
+        }
+        ++feasible;
+        EXPECT_GE(point["base_radius_mm"].get<double>(), base - 1e-9) << point.dump();
+        EXPECT_GT(point["largest_base_radius_mm"].get<double>(),
+                  point["base_radius_mm"].get<double>())
+            << point.dump();
+    }
+    EXPECT_GT(feasible, 5);
+    const Json written = Json::parse(test::readFile(sized));
+    EXPECT_EQ(written["design"]["base_radius"].get<double>(), base);
+    EXPECT_EQ(written["follower"]["pivot"], Json::array({distance, 0.0}));
+    EXPECT_EQ(written["follower"]["arm_length"].get<double>(), 60.0);
+
+    // The cam is small (2.8 mm with a 6 mm roller): at the design's 0.001 mm the arcs move α
+    // by 0.16°, so synthesised at 1e-5 mm, where they move it by < 0.003°.
+    const std::string cam = dir.file("cam.cam.json");
+    const auto made = test::runCli({"synthesize", sized, "--out", cam, "--tolerance", "1e-5"});
+    ASSERT_EQ(made.exitCode, 0) << made.err;
+    const auto analyzed = test::runCli({"analyze", cam});
+    ASSERT_EQ(analyzed.exitCode, 0) << analyzed.err;
+    const Json p = Json::parse(analyzed.out)["follower"]["pressure_angle"];
+    EXPECT_NEAR(p["rise"]["value_deg"].get<double>(), 45.0, 0.01);
+    EXPECT_NEAR(p["return"]["value_deg"].get<double>(), 45.0, 0.01);
 }
 
 }  // namespace

@@ -217,24 +217,26 @@ TEST(Sizing, TheBestOffsetIsTheClosedFormsSmallestOverOffsets) {
     ASSERT_GT(lopsidedPrimeRadius(0.0), bestR + 0.1);
 
     const FollowerSpec knife = translating(FollowerType::Knife, 0.0, 0.0, 30);
-    ASSERT_TRUE(offsetSizable(knife));
-    const auto sized = sizeOffset(lopsidedDesign(), knife);
+    ASSERT_EQ(placementOf(knife), Placement::Offset);
+    const auto sized = sizePlacement(lopsidedDesign(), knife);
     ASSERT_TRUE(sized.ok());
-    const OffsetSizing& s = sized.value();
+    const PlacementSizing& s = sized.value();
     EXPECT_NEAR(s.sizing.baseRadius, bestR, 1e-7);
-    EXPECT_NEAR(s.offset, bestE, 1e-4);
-    EXPECT_GT(s.offset, 0.0);  // towards the steeper rise: |s' − e| shrinks there
+    EXPECT_NEAR(s.value, bestE, 1e-4);
+    EXPECT_GT(s.value, 0.0);  // towards the steeper rise: |s' − e| shrinks there
     // At the best offset rise and return bind together: both pressure angles at the limit.
     ASSERT_TRUE(s.sizing.pressureRise && s.sizing.pressureReturn);
     EXPECT_NEAR(*s.sizing.pressureRise, degToRad(30.0), 1e-4);
     EXPECT_NEAR(*s.sizing.pressureReturn, degToRad(30.0), 1e-4);
     // The feasible region's edge is the closed form at every offset it lists.
-    ASSERT_EQ(s.edge.size(), 41U);
-    for (std::size_t i = 0; i < s.edge.size(); i += 5) {
-        EXPECT_NEAR(s.edge[i][1], lopsidedPrimeRadius(s.edge[i][0]), 1e-7) << s.edge[i][0];
+    ASSERT_EQ(s.region.size(), 41U);
+    for (std::size_t i = 0; i < s.region.size(); i += 5) {
+        const FeasibleSpan& span = s.region[i];
+        EXPECT_NEAR(span.smallest, lopsidedPrimeRadius(span.placement), 1e-7) << span.placement;
+        EXPECT_EQ(span.largest, std::numeric_limits<double>::infinity());
     }
-    // A flat face or an arm has no offset to size.
-    EXPECT_FALSE(offsetSizable(translating(FollowerType::Flat, 0.0, 0.0, 30)));
+    // A flat face has no placement to size.
+    EXPECT_FALSE(placementOf(translating(FollowerType::Flat, 0.0, 0.0, 30)));
 }
 
 }  // namespace

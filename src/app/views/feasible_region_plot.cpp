@@ -17,6 +17,7 @@ FeasibleRegionPlot::FeasibleRegionPlot(QWidget* parent) : QCustomPlot(parent) {
     edge->setName(tr("smallest base radius"));
     edge->setPen(QPen(QColor(31, 119, 180), 1.5));
     QCPGraph* top = addGraph();  // the shading runs from the edge up to it
+    top->setName(tr("largest base radius"));
     top->setPen(Qt::NoPen);
     top->removeFromLegend();
     edge->setChannelFillGraph(top);
@@ -39,26 +40,45 @@ FeasibleRegionPlot::FeasibleRegionPlot(QWidget* parent) : QCustomPlot(parent) {
     axisRect()->insetLayout()->take(legend);
     plotLayout()->addElement(1, 0, legend);
     legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    legend->setWrap(2);  // two entries a row: four in one are clipped in a narrow dock
     legend->setMargins(QMargins(4, 0, 4, 2));
     plotLayout()->setRowStretchFactor(1, 0.001);
 }
 
-void FeasibleRegionPlot::setRegion(const std::vector<std::array<double, 2>>& edge,
+void FeasibleRegionPlot::setRegion(Placement placement, const std::vector<FeasibleSpan>& region,
                                    std::array<double, 2> chosen, std::array<double, 2> current) {
-    QVector<double> x, y;
+    xAxis->setLabel(placement == Placement::Offset ? tr("Offset [mm]") : tr("Pivot distance [mm]"));
+    QVector<double> x, lower, upper;
     double low = chosen[1], high = std::max(chosen[1], current[1]);
-    for (const auto& [offset, radius] : edge) {
-        x.push_back(offset);
-        y.push_back(std::isfinite(radius) ? radius : std::nan(""));
-        if (std::isfinite(radius)) {
-            low = std::min(low, radius);
-            high = std::max(high, radius);
+    bool bounded = false;  // an arm's radii end above too
+    for (const FeasibleSpan& span : region) {
+        x.push_back(span.placement);
+        lower.push_back(std::isfinite(span.smallest) ? span.smallest : std::nan(""));
+        if (std::isfinite(span.smallest)) {
+            low = std::min(low, span.smallest);
+            high = std::max(high, span.smallest);
+        }
+        if (std::isfinite(span.largest)) {
+            high = std::max(high, span.largest);
+            bounded = true;
         }
     }
-    // Everything above the edge passes: shaded up to a little above the tallest point.
-    const double ceiling = high + 0.25 * std::max(high - low, 1.0);
-    graph(0)->setData(x, y, true);
-    graph(1)->setData(x, QVector<double>(x.size(), ceiling), true);
+    // Everything between the edges passes; where nothing bounds the radii from above, the
+    // shading runs to a little above the tallest point.
+    const double ceiling = high + (bounded ? 0.05 : 0.25) * std::max(high - low, 1.0);
+    for (const FeasibleSpan& span : region) {
+        upper.push_back(std::isfinite(span.largest)    ? span.largest
+                        : std::isfinite(span.smallest) ? ceiling
+                                                       : std::nan(""));
+    }
+    graph(0)->setData(x, lower, true);
+    graph(1)->setData(x, upper, true);
+    graph(1)->setPen(bounded ? QPen(QColor(255, 127, 14), 1.5) : QPen(Qt::NoPen));
+    if (bounded) {
+        graph(1)->addToLegend();
+    } else {
+        graph(1)->removeFromLegend();
+    }
     graph(2)->setData(QVector<double>{chosen[0]}, QVector<double>{chosen[1]});
     graph(3)->setData(QVector<double>{current[0]}, QVector<double>{current[1]});
     const double left = std::min(x.isEmpty() ? chosen[0] : x.front(), current[0]);

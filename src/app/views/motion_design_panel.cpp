@@ -91,12 +91,8 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
     m_size->setToolTip(
         tr("Set the smallest base radius for which the follower passes every check: the "
            "pressure angle within its limit on rise and return, no undercut (one undo step)"));
-    m_bestOffset = new QPushButton(tr("Best Offset"), this);
-    m_bestOffset->setObjectName("bestOffsetButton");
-    m_bestOffset->setToolTip(
-        tr("Set the follower's offset that allows the smallest base radius, and that radius, "
-           "and show the feasible region over base radius × offset (one undo step; a "
-           "translating knife or roller)"));
+    m_bestPlacement = new QPushButton(this);  // text and tip: updateSizingButtons
+    m_bestPlacement->setObjectName("bestPlacementButton");
     m_sizing = new QLabel(this);
     m_sizing->setObjectName("sizingLabel");
     m_sizing->setWordWrap(true);
@@ -106,7 +102,7 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
     auto* radiusRow = new QHBoxLayout;
     radiusRow->addWidget(m_baseRadius, 1);
     radiusRow->addWidget(m_size);
-    radiusRow->addWidget(m_bestOffset);
+    radiusRow->addWidget(m_bestPlacement);
     m_tolerance = lengthBox(this, "toleranceSpinBox",
                             tr("Largest distance of the arc table from the exact profile"));
     m_tolerance->setSingleStep(0.001);
@@ -224,7 +220,7 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
         m_document->undoStack()->push(new SetDesign(m_document, std::nullopt, tr("Remove design")));
     });
     connect(m_size, &QPushButton::clicked, this, &MotionDesignPanel::sizeBaseRadius);
-    connect(m_bestOffset, &QPushButton::clicked, this, &MotionDesignPanel::sizeOffset);
+    connect(m_bestPlacement, &QPushButton::clicked, this, &MotionDesignPanel::sizePlacement);
     connect(m_split, &QPushButton::clicked, this, [this] { splitSegment(currentRow()); });
     connect(m_delete, &QPushButton::clicked, this, [this] { deleteSegment(currentRow()); });
     const auto number = [this](NumberSpinBox* box, std::function<void(DesignSpec&, double)> set,
@@ -312,8 +308,21 @@ QString MotionDesignPanel::staleSizingText() {
 void MotionDesignPanel::updateSizingButtons() {
     const Project& project = m_document->project();
     m_size->setEnabled(project.design.has_value() && !m_sizingRuns);
-    m_bestOffset->setEnabled(project.design.has_value() && !m_sizingRuns &&
-                             offsetSizable(project.follower.value_or(FollowerSpec{})));
+    const auto placement = placementOf(project.follower.value_or(FollowerSpec{}));
+    m_bestPlacement->setEnabled(project.design.has_value() && !m_sizingRuns && placement);
+    if (placement == Placement::PivotDistance) {
+        m_bestPlacement->setText(tr("Best Pivot"));
+        m_bestPlacement->setToolTip(
+            tr("Move the arm's pivot along its line to the cam centre to where it allows the "
+               "smallest base radius, set that radius, and show the feasible region over base "
+               "radius × pivot distance (one undo step; the arm keeps its length)"));
+    } else {
+        m_bestPlacement->setText(tr("Best Offset"));
+        m_bestPlacement->setToolTip(
+            tr("Set the follower's offset that allows the smallest base radius, and that "
+               "radius, and show the feasible region over base radius × offset (one undo step; "
+               "a translating knife or roller)"));
+    }
 }
 
 void MotionDesignPanel::sizeBaseRadius() {
@@ -335,37 +344,40 @@ void MotionDesignPanel::sizeBaseRadius() {
         });
 }
 
-void MotionDesignPanel::sizeOffset() {
+void MotionDesignPanel::sizePlacement() {
     const Project& project = m_document->project();
     if (m_sizingRuns || !project.design ||
-        !offsetSizable(project.follower.value_or(FollowerSpec{}))) {
+        !placementOf(project.follower.value_or(FollowerSpec{}))) {
         return;
     }
-    runSizing<OffsetSizing>(
-        tr("Finding the offset that allows the smallest base radius…"),
+    runSizing<PlacementSizing>(
+        tr("Finding the placement that allows the smallest base radius…"),
         [](const DesignSpec& design, const FollowerSpec& follower) {
-            return cam::sizeOffset(design, follower);
+            return cam::sizePlacement(design, follower);
         },
-        [this](const OffsetSizing& o, const DesignSpec& design, const FollowerSpec& follower) {
+        [this](const PlacementSizing& o, const DesignSpec& design, const FollowerSpec& follower) {
             const SizingResult& s = o.sizing;
+            const bool offset = o.placement == Placement::Offset;
+            const QString binds =
+                QCoreApplication::translate(kDiagnosticContext, sizingCheckTitle(s.binding));
+            const QString at = formatQuantity(DisplayQuantity::Angle, radToDeg(s.bindingPhi));
+            const QString radius = formatQuantity(DisplayQuantity::Length, s.baseRadius);
+            const QString value = formatQuantity(DisplayQuantity::Length, o.value);
             m_sizing->setText(
-                tr("Smallest base radius %1 at offset %2: %3 binds at %4.")
-                    .arg(formatQuantity(DisplayQuantity::Length, s.baseRadius),
-                         formatQuantity(DisplayQuantity::Length, o.offset),
-                         QCoreApplication::translate(kDiagnosticContext,
-                                                     sizingCheckTitle(s.binding)),
-                         formatQuantity(DisplayQuantity::Angle, radToDeg(s.bindingPhi))));
+                offset ? tr("Smallest base radius %1 at offset %2: %3 binds at %4.")
+                             .arg(radius, value, binds, at)
+                       : tr("Smallest base radius %1 with the pivot %2 from the cam centre: %3 "
+                            "binds at %4.")
+                             .arg(radius, value, binds, at));
             m_region->setVisible(true);
-            m_region->setRegion(o.edge, {o.offset, s.baseRadius},
-                                {follower.offset, design.baseRadius});
+            m_region->setRegion(o.placement, o.region, {o.value, s.baseRadius},
+                                {placementValue(follower, o.placement), design.baseRadius});
             DesignSpec sized = design;
             sized.baseRadius = s.baseRadius;
-            FollowerSpec moved = follower;
-            moved.offset = o.offset;
             QUndoStack* stack = m_document->undoStack();
-            stack->beginMacro(tr("Best offset"));
+            stack->beginMacro(offset ? tr("Best offset") : tr("Best pivot"));
             stack->push(new SetDesign(m_document, sized, tr("Smallest base radius")));
-            stack->push(new SetFollower(m_document, moved));
+            stack->push(new SetFollower(m_document, placedAt(follower, o.placement, o.value)));
             stack->endMacro();
         });
 }

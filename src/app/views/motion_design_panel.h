@@ -62,11 +62,13 @@ public:
     /// background and sets it (one undo step), unless the design or the follower changed
     /// meanwhile; the panel's sizing line says which check binds, or why none passes.
     void sizeBaseRadius();
-    /// @brief Finds the offset of a translating knife or roller that allows the smallest base
-    /// radius (design/sizing.h sizeOffset) in the background, sets both (one undo step) unless
-    /// the design or the follower changed meanwhile, and draws the feasible region.
-    void sizeOffset();
-    /// @brief The feasible region over base radius × offset (hidden before the first sizeOffset).
+    /// @brief Finds the offset of a translating knife or roller, or the pivot distance of a
+    /// swinging arm, that allows the smallest base radius (design/sizing.h sizePlacement) in
+    /// the background, sets both (one undo step) unless the design or the follower changed
+    /// meanwhile, and draws the feasible region.
+    void sizePlacement();
+    /// @brief The feasible region over base radius × offset or pivot distance (hidden before
+    /// the first sizePlacement).
     [[nodiscard]] FeasibleRegionPlot* feasibleRegion() const { return m_region; }
     /// @brief The sizing line under the base radius ("" before the first sizing).
     [[nodiscard]] QString sizingText() const;
@@ -79,8 +81,8 @@ signals:
 
 private:
     void refresh();
-    /// Smallest and Best Offset are on while there is a design (Best Offset: for a follower
-    /// whose offset matters) and no sizing runs.
+    /// Smallest and Best Offset (Best Pivot for an arm) are on while there is a design (Best
+    /// Offset: for a follower whose offset matters) and no sizing runs.
     void updateSizingButtons();
     /// "The design changed while it was sized: try again." (outside the template, where
     /// lupdate finds its context).
@@ -101,7 +103,7 @@ private:
     QPushButton* m_removeDesign;
     NumberSpinBox* m_baseRadius;
     QPushButton* m_size;
-    QPushButton* m_bestOffset;
+    QPushButton* m_bestPlacement;  ///< Best Offset or Best Pivot
     QLabel* m_sizing;
     FeasibleRegionPlot* m_region;
     bool m_sizingRuns = false;

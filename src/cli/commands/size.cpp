@@ -34,24 +34,39 @@ int runSize(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
         throw CliError{kInvalidInput, placeOf(path, d), d.message};
     }
     FollowerSpec follower = project.follower.value_or(FollowerSpec{});
-    const bool bestOffset = args.hasFlag("--best-offset");
-    if (bestOffset && !offsetSizable(follower)) {
+    // --best-offset moves a translating knife's or roller's offset, --best-pivot an arm's pivot.
+    const bool bestOffset = args.hasFlag("--best-offset"), bestPivot = args.hasFlag("--best-pivot");
+    if (bestOffset && bestPivot) {
+        throw CliError{kInvalidInput, "--best-pivot",
+                       "give --best-offset (a translating follower) or --best-pivot (a swinging "
+                       "arm), not both"};
+    }
+    const auto placement = placementOf(follower);
+    if (bestOffset && placement != Placement::Offset) {
         throw CliError{kInvalidInput, "--best-offset",
-                       "sizes the offset of a translating knife or roller; this project's "
-                       "follower has none that matters (a flat face, or a swinging arm)"};
+                       follower.motion == FollowerMotion::Oscillating
+                           ? "sizes the offset of a translating knife or roller; this project's "
+                             "follower swings on an arm: --best-pivot sizes its pivot"
+                           : "sizes the offset of a translating knife or roller; a flat face's "
+                             "pressure angle is 0 at any offset"};
+    }
+    if (bestPivot && placement != Placement::PivotDistance) {
+        throw CliError{kInvalidInput, "--best-pivot",
+                       "sizes the pivot of a swinging arm; this project's follower translates" +
+                           std::string(placement ? ": --best-offset sizes its offset" : "")};
     }
     const auto fail = [&path](const Diagnostics& errors) {
         const Diagnostic& d = errors.front();
         return CliError{kNotComputable, path + ": " + d.location, d.message};
     };
-    std::optional<OffsetSizing> offsetSizing;
-    if (bestOffset) {
-        auto sized = sizeOffset(*project.design, follower, options);
+    std::optional<PlacementSizing> placed;
+    if (bestOffset || bestPivot) {
+        auto sized = sizePlacement(*project.design, follower, options);
         if (!sized.ok()) throw fail(sized.errors());
-        offsetSizing = std::move(sized).value();
+        placed = std::move(sized).value();
     }
-    const auto sized = offsetSizing ? Result<SizingResult>(offsetSizing->sizing)
-                                    : sizeBaseRadius(*project.design, follower, options);
+    const auto sized = placed ? Result<SizingResult>(placed->sizing)
+                              : sizeBaseRadius(*project.design, follower, options);
     if (!sized.ok()) throw fail(sized.errors());
     const SizingResult& r = sized.value();
     const auto degreesOrNull = [](const std::optional<double>& rad) {
@@ -68,23 +83,32 @@ int runSize(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
         {"pressure_angle_return_deg", degreesOrNull(r.pressureReturn)},
         {"min_convex_radius_mm", r.minConvexRadius ? Json(*r.minConvexRadius) : Json(nullptr)}};
     if (r.faceWidth) report["face_width_mm"] = *r.faceWidth;
-    if (offsetSizing) {
-        report["offset_mm"] = offsetSizing->offset;
-        report["offset_was_mm"] = follower.offset;
-        Json edge = Json::array();
-        for (const auto& [offset, radius] : offsetSizing->edge) {
-            edge.push_back({{"offset_mm", offset},
-                            {"base_radius_mm", std::isfinite(radius) ? Json(radius) : Json()}});
+    const FollowerSpec moved =
+        placed ? placedAt(follower, placed->placement, placed->value) : follower;
+    if (placed) {
+        const bool offset = placed->placement == Placement::Offset;
+        if (offset) {
+            report["offset_mm"] = moved.offset;
+            report["offset_was_mm"] = follower.offset;
+        } else {
+            report["pivot_mm"] = {moved.pivot.x(), moved.pivot.y()};
+            report["pivot_distance_mm"] = placed->value;
+            report["pivot_was_mm"] = {follower.pivot.x(), follower.pivot.y()};
         }
-        report["feasible_edge"] = std::move(edge);
+        const auto mmOrNull = [](double mm) { return std::isfinite(mm) ? Json(mm) : Json(); };
+        Json region = Json::array();
+        for (const FeasibleSpan& span : placed->region) {
+            Json point{{offset ? "offset_mm" : "pivot_distance_mm", span.placement},
+                       {"base_radius_mm", mmOrNull(span.smallest)}};
+            if (!offset) point["largest_base_radius_mm"] = mmOrNull(span.largest);
+            region.push_back(std::move(point));
+        }
+        report["feasible_edge"] = std::move(region);
     }
     if (const auto outPath = args.option("--out")) {
         report["out"] = *outPath;
         project.design->baseRadius = r.baseRadius;
-        if (offsetSizing) {
-            follower.offset = offsetSizing->offset;
-            project.follower = follower;
-        }
+        if (placed) project.follower = moved;
         writeProjectOut(*outPath, project, report);
     }
     printJson(out, report);

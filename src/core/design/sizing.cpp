@@ -185,11 +185,14 @@ Result<SizingResult> sizeBaseRadius(const DesignSpec& design, const FollowerSpec
     double lo = 0.0, hi = 0.0;
     std::optional<std::pair<SizingCheck, double>> lastFailure;
     const bool translating = follower.motion != FollowerMotion::Oscillating;
-    if (options.near && translating && *options.near > 0.0) {
+    const bool near = options.near && *options.near > 0.0;
+    const auto first = near ? checker.failing(checker.at(*options.near))
+                            : std::optional<std::pair<SizingCheck, double>>{};
+    if (near && (translating || !first)) {
         // Near a known answer a translating follower's checks only ease as the radius grows:
-        // step out by 5 % until one radius fails and the next passes.
+        // step out by 5 % until one radius fails and the next passes. An arm steps only down
+        // from a radius that passes (above it the pivot ends the radii the arm reaches).
         double r = *options.near;
-        const auto first = checker.failing(checker.at(r));
         if (first) {
             lo = r;
             lastFailure = first;
@@ -283,72 +286,147 @@ Result<SizingResult> sizeBaseRadius(const DesignSpec& design, const FollowerSpec
     return result;
 }
 
-bool offsetSizable(const FollowerSpec& follower) {
-    return follower.motion != FollowerMotion::Oscillating && !followerKind(follower.type).flatFace;
+double largestBaseRadius(const DesignSpec& design, const FollowerSpec& follower,
+                         const SizingOptions& options, double smallest) {
+    if (follower.motion != FollowerMotion::Oscillating) {
+        return std::numeric_limits<double>::infinity();
+    }
+    const Checker checker(design, follower, options);
+    const double reach = follower.pivot.norm() - contactRadius(follower);
+    double lo = smallest, hi = reach * (1.0 - 1e-12);
+    if (!checker.failing(checker.at(hi))) return reach;
+    while (hi - lo > 1e-6 * std::max(1.0, hi)) {
+        const double mid = 0.5 * (lo + hi);
+        if (checker.failing(checker.at(mid))) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    return lo;
 }
 
-Result<OffsetSizing> sizeOffset(const DesignSpec& design, const FollowerSpec& follower,
-                                const SizingOptions& options, int edgePoints,
-                                const std::atomic<bool>* cancel) {
+std::optional<Placement> placementOf(const FollowerSpec& follower) {
+    if (follower.motion == FollowerMotion::Oscillating) return Placement::PivotDistance;
+    if (followerKind(follower.type).flatFace) return std::nullopt;
+    return Placement::Offset;
+}
+
+double placementValue(const FollowerSpec& follower, Placement placement) {
+    return placement == Placement::Offset ? follower.offset : follower.pivot.norm();
+}
+
+FollowerSpec placedAt(FollowerSpec follower, Placement placement, double value) {
+    if (placement == Placement::Offset) {
+        follower.offset = value;
+    } else {
+        const double a = follower.pivot.norm();
+        const Eigen::Vector2d direction =
+            a > 0.0 ? Eigen::Vector2d(follower.pivot / a) : Eigen::Vector2d(1.0, 0.0);
+        follower.pivot = value * direction;
+    }
+    return follower;
+}
+
+Result<PlacementSizing> sizePlacement(const DesignSpec& design, const FollowerSpec& follower,
+                                      const SizingOptions& options, int edgePoints,
+                                      const std::atomic<bool>* cancel) {
     const auto built = MotionDesign::build(design);
     if (!built.ok()) return built.errors();
+    const Placement placement = placementOf(follower).value_or(Placement::Offset);
     const auto cancelled = [cancel] { return cancel && cancel->load(); };
-    // The offsets worth trying: the best balances the steepest rise against the steepest
-    // return, so it lies within the range of s'.
-    double steepest = 0.0;
-    for (int i = 0; i < kSizingSamples; ++i) {
-        steepest =
-            std::max(steepest, std::abs(built.value().liftAt(i * kTwoPi / kSizingSamples)[1]));
-    }
-    const double reach = steepest > 0.0 ? 1.1 * steepest : 1.0;
     std::optional<double> near;
-    const auto sizeAt = [&](double offset) {
-        FollowerSpec f = follower;
-        f.offset = offset;
+    const auto sizeAt = [&](double value) {
         SizingOptions o = options;
         o.near = near;
-        auto sized = sizeBaseRadius(design, f, o);
+        auto sized = sizeBaseRadius(design, placedAt(follower, placement, value), o);
         if (sized.ok()) near = sized.value().baseRadius;
         return sized;
     };
-    OffsetSizing result;
+    // The placements worth trying.
+    double from = 0.0, to = 0.0;
+    if (placement == Placement::Offset) {
+        // The best offset balances the steepest rise against the steepest return, so it lies
+        // within the range of s'.
+        double steepest = 0.0;
+        for (int i = 0; i < kSizingSamples; ++i) {
+            steepest =
+                std::max(steepest, std::abs(built.value().liftAt(i * kTwoPi / kSizingSamples)[1]));
+        }
+        to = steepest > 0.0 ? 1.1 * steepest : 1.0;
+        from = -to;
+    } else {
+        // The pivot lies outside the pitch base circle (a > Rb + ρ), and the arm reaches it
+        // only when Rb + ρ > a − L: no pivot beyond L + ρ + R allows a base radius below R.
+        const double rho = contactRadius(follower), L = follower.armLength;
+        const double a0 = follower.pivot.norm();
+        const auto own = sizeBaseRadius(design, follower, options);
+        to = own.ok() ? L + rho + own.value().baseRadius : 2.0 * (L + rho) + a0;
+        from = rho + (to - rho) * 1e-3;
+        // Pivots too near the cam swing the arm too steeply for any radius: a coarse look
+        // first, and the region drawn only where radii pass, with a coarse step either side.
+        constexpr int kCoarse = 11;
+        int first = -1, last = -1;
+        for (int i = 0; i < kCoarse; ++i) {
+            if (cancelled()) return PlacementSizing{};
+            if (sizeAt(from + (to - from) * i / (kCoarse - 1)).ok()) {
+                if (first < 0) first = i;
+                last = i;
+            }
+        }
+        near.reset();
+        if (first >= 0) {
+            const double coarse = (to - from) / (kCoarse - 1), start = from;
+            from = std::max(start, start + (first - 1) * coarse);
+            to = std::min(to, start + (last + 1) * coarse);
+        }
+    }
+    PlacementSizing result;
+    result.placement = placement;
     const int n = std::max(edgePoints, 3);
     int best = -1;
     std::optional<Diagnostics> firstFailure;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
     for (int i = 0; i < n; ++i) {
-        if (cancelled()) return OffsetSizing{};
-        const double e = -reach + 2.0 * reach * i / (n - 1);
-        const auto sized = sizeAt(e);
-        const double r =
-            sized.ok() ? sized.value().baseRadius : std::numeric_limits<double>::quiet_NaN();
-        if (!sized.ok() && !firstFailure) firstFailure = sized.errors();
-        result.edge.push_back({e, r});
-        if (sized.ok() && (best < 0 || r < result.edge[static_cast<std::size_t>(best)][1])) {
+        if (cancelled()) return PlacementSizing{};
+        const double value = from + (to - from) * i / (n - 1);
+        const auto sized = sizeAt(value);
+        FeasibleSpan span{value, nan, nan};
+        if (sized.ok()) {
+            span.smallest = sized.value().baseRadius;
+            span.largest = largestBaseRadius(design, placedAt(follower, placement, value), options,
+                                             span.smallest);
+        } else if (!firstFailure) {
+            firstFailure = sized.errors();
+        }
+        result.region.push_back(span);
+        if (sized.ok() &&
+            (best < 0 || span.smallest < result.region[static_cast<std::size_t>(best)].smallest)) {
             best = i;
         }
     }
     if (best < 0) return *firstFailure;
-    // Golden sections between the best edge point's neighbours (the smallest base radius over
-    // offsets is unimodal there: rise and return each ease as the offset moves their way).
-    const double step = 2.0 * reach / (n - 1);
-    const double lo = std::max(-reach, result.edge[static_cast<std::size_t>(best)][0] - step);
-    const double hi = std::min(reach, result.edge[static_cast<std::size_t>(best)][0] + step);
-    const auto radiusAt = [&](double e) {
-        const auto sized = sizeAt(e);
+    // Golden sections between the best edge point's neighbours (the smallest base radius is
+    // unimodal there: for an offset, rise and return each ease as it moves their way).
+    const double step = (to - from) / (n - 1);
+    const double bestValue = result.region[static_cast<std::size_t>(best)].placement;
+    const double lo = std::max(from, bestValue - step), hi = std::min(to, bestValue + step);
+    const auto radiusAt = [&](double value) {
+        const auto sized = sizeAt(value);
         return sized.ok() ? sized.value().baseRadius : std::numeric_limits<double>::infinity();
     };
     const GoldenSection g = goldenSectionMin(radiusAt, lo, hi, [&](double a, double b, int) {
-        return b - a > kOffsetTolerance && !cancelled();
+        return b - a > kPlacementTolerance && !cancelled();
     });
-    if (cancelled()) return OffsetSizing{};
-    double offset = g.f1 <= g.f2 ? g.x1 : g.x2;
-    if (std::min(g.f1, g.f2) > result.edge[static_cast<std::size_t>(best)][1]) {
-        offset = result.edge[static_cast<std::size_t>(best)][0];
+    if (cancelled()) return PlacementSizing{};
+    double value = g.f1 <= g.f2 ? g.x1 : g.x2;
+    if (std::min(g.f1, g.f2) > result.region[static_cast<std::size_t>(best)].smallest) {
+        value = bestValue;
     }
     near.reset();
-    auto sized = sizeAt(offset);
+    auto sized = sizeAt(value);
     if (!sized.ok()) return sized.errors();
-    result.offset = offset;
+    result.value = value;
     result.sizing = sized.value();
     return result;
 }

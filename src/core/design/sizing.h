@@ -32,8 +32,9 @@ struct SizingOptions {
     /// mm: the smallest convex radius the profile may have (a cutter's or a roller's needs);
     /// 0 asks only for no cusp (the profile does not fold).
     double minRadius = 0.0;
-    /// mm: a base radius near the answer (a neighbouring offset's), where the search starts on
-    /// a translating follower instead of bracketing from 1 µm; the answer is the same.
+    /// mm: a base radius near the answer (a neighbouring placement's), where the search starts
+    /// instead of bracketing from 1 µm — on a swinging arm only when it passes; the answer is
+    /// the same where the radii that pass form one interval.
     std::optional<double> near;
 };
 
@@ -61,32 +62,69 @@ inline constexpr double kSizingTolerance = 1e-9;
                                                   const FollowerSpec& follower,
                                                   const SizingOptions& options = {});
 
-/// @brief Whether the offset changes what a follower needs: a translating knife or roller (a
-/// flat face's pressure angle is 0 at any offset; an arm has a pivot instead).
-[[nodiscard]] bool offsetSizable(const FollowerSpec& follower);
+/// @brief The largest base radius of `design` that passes with `follower`, above `smallest`
+/// (which passes: sizeBaseRadius's answer): +∞ for a translating follower; for a swinging arm
+/// its reach (Rb + ρ < a) when the checks hold there, else bisected to 1e-6 mm relative.
+[[nodiscard]] double largestBaseRadius(const DesignSpec& design, const FollowerSpec& follower,
+                                       const SizingOptions& options, double smallest);
 
-/// @brief The offset of a translating follower that allows the smallest base radius, and the
-/// lower edge of the feasible region over base radius × offset.
-struct OffsetSizing {
-    double offset = 0.0;  ///< mm, to within kOffsetTolerance
-    SizingResult sizing;  ///< the smallest base radius at that offset
-    /// (offset, smallest base radius) in mm at evenly spaced offsets over ±1.1 · max |s'|:
-    /// every base radius above the edge passes at that offset; NaN where none passes.
-    std::vector<std::array<double, 2>> edge;
+/// @brief What places a follower beside the cam, apart from the base radius: a translating
+/// knife's or roller's offset, or a swinging arm's pivot distance (the pivot moves along the
+/// line from the cam centre through it; its direction only turns the cam, and the arm keeps
+/// its length).
+enum class Placement {
+    Offset,         ///< FollowerSpec::offset, mm
+    PivotDistance,  ///< |FollowerSpec::pivot|, mm
 };
 
-/// @brief The tolerance of the search for the best offset (mm).
-inline constexpr double kOffsetTolerance = 1e-6;
+/// @brief The placement that changes what `follower` needs; none for a flat face, whose
+/// pressure angle is 0 at any offset.
+[[nodiscard]] std::optional<Placement> placementOf(const FollowerSpec& follower);
+/// @brief The follower's offset or pivot distance (mm).
+[[nodiscard]] double placementValue(const FollowerSpec& follower, Placement placement);
+/// @brief The follower placed at `value` mm: its offset, or its pivot moved to that distance
+/// along its own direction (+x when it has none).
+[[nodiscard]] FollowerSpec placedAt(FollowerSpec follower, Placement placement, double value);
 
-/// @brief The offset (between ±1.1 · max |s'| of the design) that allows the smallest base
-/// radius of `design` with `follower` (offsetSizable; its own offset is only a start), by
-/// golden sections round the best of `edgePoints` offsets; each base radius certified as
-/// sizeBaseRadius certifies it. Errors: as sizeBaseRadius's, when no offset passes; none but
-/// an empty result when `cancel` reads true.
-[[nodiscard]] Result<OffsetSizing> sizeOffset(const DesignSpec& design,
-                                              const FollowerSpec& follower,
-                                              const SizingOptions& options = {},
-                                              int edgePoints = 41,
-                                              const std::atomic<bool>* cancel = nullptr);
+/// @brief The base radii that pass at one placement (mm): every one from `smallest` to
+/// `largest`. Both NaN where none passes; `largest` is +∞ on a translating follower (a larger
+/// cam only eases its checks). A swinging arm's pressure angle grows again on a large cam,
+/// and the arm reaches a base circle only while Rb + ρ < a: its `largest` is where either
+/// ends the radii, to within 1e-6 of it. (The radii that pass are taken to form one interval,
+/// as they do on every design tried.)
+struct FeasibleSpan {
+    double placement = 0.0;
+    double smallest = 0.0;
+    double largest = 0.0;
+};
+
+/// @brief The placement that allows the smallest base radius, and the feasible region over
+/// base radius × placement.
+struct PlacementSizing {
+    Placement placement = Placement::Offset;
+    double value = 0.0;   ///< mm, the offset or pivot distance, to within kPlacementTolerance
+    SizingResult sizing;  ///< the smallest base radius there
+    /// At evenly spaced placements over the range searched.
+    std::vector<FeasibleSpan> region;
+};
+
+/// @brief The tolerance of the search for the best placement (mm).
+inline constexpr double kPlacementTolerance = 1e-6;
+
+/// @brief The placement of `follower` (which must have one, placementOf; its own value is only
+/// a start) that allows the
+/// smallest base radius of `design`, by golden sections round the best of `edgePoints`
+/// placements, each base radius certified as sizeBaseRadius certifies it. An offset is
+/// searched over ±1.1 · max |s'| of the design; a pivot distance a from the contact radius ρ
+/// to L + ρ + R, R the smallest base radius at the arm's own pivot (beyond it the arm cannot
+/// reach a smaller base circle: the pitch base circle's radius is at least a − L), or 2·(L + ρ)
+/// + a when none passes there — and of that, after a look at 11 distances, only from a tenth
+/// of it before the first where radii pass to a tenth after the last. Errors: as sizeBaseRadius's, when no placement passes; none
+/// but an empty result when `cancel` reads true.
+[[nodiscard]] Result<PlacementSizing> sizePlacement(const DesignSpec& design,
+                                                    const FollowerSpec& follower,
+                                                    const SizingOptions& options = {},
+                                                    int edgePoints = 41,
+                                                    const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace cam
