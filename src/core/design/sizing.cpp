@@ -66,52 +66,51 @@ public:
         const MotionDesign& d = design.value();
         const bool flat = followerKind(m_follower.type).flatFace;
         const double allowed = m_rho + m_options.minRadius;  // the pitch curve's tightest radius
-        const auto alpha = [&](double phi, double sign) {
-            if (sign * d.liftAt(phi)[1] <= 0.0) return -std::numeric_limits<double>::infinity();
-            return std::abs(p.at(phi).pressureAngle);
-        };
-        const auto bend = [&](double phi) {
+        constexpr double kNone = -std::numeric_limits<double>::infinity();
+        // Every check's value at one angle, from one profile point: |α| on rise, |α| on
+        // return, the bend, and the profile's convex radius (+∞ where it is not convex).
+        const auto values = [&](double phi) {
             const ProfilePoint q = p.at(phi);
-            if (flat) return (m_options.minRadius - q.rho) / std::max(m_options.minRadius, 1.0);
-            const double kappa = std::isfinite(q.rho) ? 1.0 / (q.rho + m_rho) : 0.0;
-            if (!(allowed > 0.0)) return -std::numeric_limits<double>::infinity();
-            return kappa * allowed - 1.0;
+            const double slope = d.liftAt(phi)[1];
+            std::array<double, 4> v{kNone, kNone, kNone, std::numeric_limits<double>::infinity()};
+            if (!flat) {
+                if (slope > 0.0) v[0] = std::abs(q.pressureAngle);
+                if (slope < 0.0) v[1] = std::abs(q.pressureAngle);
+            }
+            if (flat) {
+                v[2] = (m_options.minRadius - q.rho) / std::max(m_options.minRadius, 1.0);
+                v[3] = q.rho;
+            } else {
+                const double kappa = std::isfinite(q.rho) ? 1.0 / (q.rho + m_rho) : 0.0;
+                if (allowed > 0.0) v[2] = kappa * allowed - 1.0;
+                if (kappa > 0.0) v[3] = q.rho;
+            }
+            return v;
         };
-        const auto convexRadius = [&](double phi) {
-            const ProfilePoint q = p.at(phi);
-            if (flat) return q.rho;
-            const double kappa = std::isfinite(q.rho) ? 1.0 / (q.rho + m_rho) : 0.0;
-            return kappa > 0.0 ? q.rho : std::numeric_limits<double>::infinity();
+        const auto quantity = [&](std::size_t k) {
+            return std::function<double(double)>(
+                [&values, k](double phi) { return values(phi)[k]; });
         };
         const double h = kTwoPi / kSizingSamples;
         std::array<std::pair<double, double>, 3> best;
-        best.fill({-std::numeric_limits<double>::infinity(), 0.0});
-        const std::array<std::function<double(double)>, 3> quantity{
-            [&](double phi) {
-                return flat ? -std::numeric_limits<double>::infinity() : alpha(phi, 1.0);
-            },
-            [&](double phi) {
-                return flat ? -std::numeric_limits<double>::infinity() : alpha(phi, -1.0);
-            },
-            bend};
+        best.fill({kNone, 0.0});
         double convex = std::numeric_limits<double>::infinity(), convexAt = 0.0;
         for (int i = 0; i < kSizingSamples; ++i) {
             const double phi = i * h;
+            const auto v = values(phi);
             for (std::size_t k = 0; k < 3; ++k) {
-                const double v = quantity[k](phi);
-                if (v > best[k].first) best[k] = {v, phi};
+                if (v[k] > best[k].first) best[k] = {v[k], phi};
             }
-            const double r = convexRadius(phi);
-            if (r < convex) {
-                convex = r;
+            if (v[3] < convex) {
+                convex = v[3];
                 convexAt = phi;
             }
         }
         for (std::size_t k = 0; k < 3; ++k) {
-            if (std::isfinite(best[k].first)) best[k] = refineMax(quantity[k], best[k].second, h);
+            if (std::isfinite(best[k].first)) best[k] = refineMax(quantity(k), best[k].second, h);
         }
         if (std::isfinite(convex)) {
-            convex = -refineMax([&](double phi) { return -convexRadius(phi); }, convexAt, h).first;
+            convex = -refineMax([&](double phi) { return -values(phi)[3]; }, convexAt, h).first;
         }
         c.rise = best[0];
         c.fall = best[1];
