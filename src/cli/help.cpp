@@ -217,7 +217,7 @@ std::vector<CommandHelp> makeTable() {
                  {"synthesize design.cam.json --out cam.cam.json --tolerance 0.001"}});
     t.push_back(
         {"size",
-         "size PROJECT [--min-radius MM] [--best-offset|--best-pivot] [--out NEW]",
+         "size PROJECT [--min-radius MM] [--best-offset|--best-pivot]\n[--out NEW]",
          "the smallest base radius that passes every check",
          "Finds the smallest base radius of the project's motion design for which its "
          "follower (a radial knife when it names none) passes every check: the pressure "
