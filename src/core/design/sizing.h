@@ -119,8 +119,8 @@ inline constexpr double kPlacementTolerance = 1e-6;
 /// to L + ρ + R, R the smallest base radius at the arm's own pivot (beyond it the arm cannot
 /// reach a smaller base circle: the pitch base circle's radius is at least a − L), or 2·(L + ρ)
 /// + a when none passes there — and of that, after a look at 11 distances, only from a tenth
-/// of it before the first where radii pass to a tenth after the last. Errors: as sizeBaseRadius's, when no placement passes; none
-/// but an empty result when `cancel` reads true.
+/// of it before the first where radii pass to a tenth after the last. Errors: as sizeBaseRadius's,
+/// when no placement passes; none but an empty result when `cancel` reads true.
 [[nodiscard]] Result<PlacementSizing> sizePlacement(const DesignSpec& design,
                                                     const FollowerSpec& follower,
                                                     const SizingOptions& options = {},
