@@ -476,3 +476,90 @@ TEST(ProjectJsonDesign, AConstantVelocityLawIsReadAndWrittenAsLine) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+// The dynamics section (project-format.md, math.md §9): read, written back as typed, and
+// each rule of its values located at its key.
+const std::string kWithDynamics = R"({
+  "format": "camwright", "version": 1, "name": "disc",
+  "motion": { "rpm": 300 },
+  "contour": [ { "type": "arc", "center": [5, 0], "radius": 30, "branch": "outer",
+                 "phi_start": 0, "phi_end": 360 } ],
+  "follower": { "type": "roller", "radius": 8 },
+  "dynamics": { "mass_kg": 0.5, "spring_rate_N_per_mm": 2, "spring_preload_N": 20,
+                "external_force_N": -5.25, "damping_Ns_per_m": 0, "contact_width_mm": 12,
+                "cam_material": { "E_MPa": 210000, "poisson": 0.3 },
+                "follower_material": { "E_MPa": 2800, "poisson": 0.35 },
+                "allowable_contact_stress_MPa": 900, "spring_safety_factor": 1.5 }
+})";
+
+TEST(ProjectJsonDynamics, ReadsEveryKeyAndWritesItBackAsTyped) {
+    const auto p = parseProject(kWithDynamics);
+    ASSERT_TRUE(p.ok()) << p.errors().front().text();
+    ASSERT_TRUE(p.value().dynamics);
+    const DynamicsSpec& d = *p.value().dynamics;
+    EXPECT_EQ(d[DynamicsKey::MassKg], 0.5);
+    EXPECT_EQ(d[DynamicsKey::ExternalForceN], -5.25);
+    EXPECT_EQ(d[DynamicsKey::DampingNsPerM], 0.0);
+    EXPECT_EQ(d[DynamicsKey::FollowerModulusMpa], 2800.0);
+    EXPECT_EQ(d[DynamicsKey::FollowerPoisson], 0.35);
+    EXPECT_EQ(d[DynamicsKey::SpringSafetyFactor], 1.5);
+    EXPECT_FALSE(d[DynamicsKey::InertiaKgM2]);  // absent stays absent
+    const std::string saved = serializeProject(p.value());
+    const Json written = Json::parse(saved)["dynamics"];
+    EXPECT_EQ(written, Json::parse(kWithDynamics)["dynamics"]);
+    EXPECT_EQ(written["spring_rate_N_per_mm"].dump(), "2");  // a whole number as typed
+    EXPECT_FALSE(written.contains("inertia_kg_m2"));
+    const auto again = parseProject(saved);
+    ASSERT_TRUE(again.ok());
+    EXPECT_EQ(serializeProject(again.value()), saved);
+    // A project without the section writes none.
+    const auto plain = parseProject(kMinimal);
+    ASSERT_TRUE(plain.ok());
+    EXPECT_FALSE(Json::parse(serializeProject(plain.value())).contains("dynamics"));
+}
+
+/// The first problem's location and text when `from` in kWithDynamics becomes `to`.
+std::string problemWith(const std::string& from, const std::string& to) {
+    const auto p = parseProject(withReplaced(kWithDynamics, from, to));
+    if (p.ok()) return "(no problem)";
+    return p.errors().front().text();
+}
+
+TEST(ProjectJsonDynamics, EveryRuleIsLocatedAtItsKey) {
+    EXPECT_EQ(problemWith("\"mass_kg\": 0.5", "\"mass_kg\": -1"),
+              "dynamics.mass_kg: must be > 0 (got -1)");
+    EXPECT_EQ(problemWith("\"mass_kg\": 0.5", "\"mass_kg\": 0"),
+              "dynamics.mass_kg: must be > 0 (got 0)");
+    EXPECT_EQ(problemWith("\"damping_Ns_per_m\": 0", "\"damping_Ns_per_m\": -2"),
+              "dynamics.damping_Ns_per_m: must be between 0 and 1e+12 N·s/m (got -2)");
+    EXPECT_EQ(problemWith("\"poisson\": 0.35", "\"poisson\": 0.5"),
+              "dynamics.follower_material.poisson: must be at least 0 and below 0.5 (got 0.5)");
+    EXPECT_EQ(problemWith("\"spring_preload_N\": 20", "\"spring_preload_N\": 1e13"),
+              "dynamics.spring_preload_N: must be between -1e+12 and 1e+12 N (got 1e+13)");
+    EXPECT_EQ(problemWith("\"mass_kg\": 0.5", "\"mass_kg\": \"0.5\""),
+              "dynamics.mass_kg: must be a number (got a string)");
+    EXPECT_EQ(problemWith("\"mass_kg\": 0.5", "\"mass\": 0.5"), "dynamics.mass: unknown key");
+    EXPECT_EQ(problemWith("{ \"E_MPa\": 2800, \"poisson\": 0.35 }", "{ \"E_MPa\": 2800 }"),
+              "dynamics.follower_material.poisson: missing");
+    EXPECT_EQ(problemWith("{ \"E_MPa\": 2800, \"poisson\": 0.35 }", "\"POM\""),
+              "dynamics.follower_material: must be an object (got a string)");
+    // An arm's keys on a translating follower, and the other way round.
+    EXPECT_EQ(problemWith("\"mass_kg\": 0.5", "\"inertia_kg_m2\": 0.01"),
+              "dynamics.inertia_kg_m2: is for a swinging arm; this project's follower "
+              "translates");
+    const std::string arm =
+        withReplaced(kWithDynamics, R"("follower": { "type": "roller", "radius": 8 })",
+                     R"("follower": { "type": "roller", "radius": 8, "motion": "oscillating",
+                                      "pivot": [80, 0], "arm_length": 60 })");
+    const auto swinging = parseProject(arm);
+    ASSERT_FALSE(swinging.ok());
+    EXPECT_EQ(swinging.errors().front().text(),
+              "dynamics.mass_kg: is for a translating follower; this project's follower swings "
+              "on an arm");
+}
+
+}  // namespace
+}  // namespace cam

@@ -21,7 +21,7 @@ CORE_LAYERS = [
     ["contour"],
     ["kinematics", "construction", "spline", "follower"],
     ["analysis", "design"],
-    ["fillet", "toolpath"],
+    ["fillet", "toolpath", "forces"],
     ["timing", "export", "evaluation"],
     ["io"],
 ]

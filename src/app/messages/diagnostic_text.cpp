@@ -297,6 +297,10 @@ QString placeName(const FileKeyPlace& p) { return QString::fromStdString(p.key);
 
 QString placeName(const FilePlace& p) { return QString::fromStdString(p.path); }
 
+QString placeName(const DynamicsPlace& p) {
+    return DiagnosticText::tr("Dynamics, %1").arg(dynamicsKeyTitle(p.key));
+}
+
 QString placeName(const SamplePlace& p) {
     return DiagnosticText::tr("sample %1, %2")
         .arg(QString::number(p.sample), QString::fromStdString(p.quantity));

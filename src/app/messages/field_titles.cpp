@@ -32,4 +32,34 @@ QStringList motionLawTitles() {
     return titles;
 }
 
+QString dynamicsKeyTitle(DynamicsKey key) {
+    using K = DynamicsKey;
+    static constexpr std::pair<DynamicsKey, const char*> kTitles[] = {
+        {K::MassKg, QT_TRANSLATE_NOOP("DynamicsKey", "Moving mass [kg]")},
+        {K::SpringRateNPerMm, QT_TRANSLATE_NOOP("DynamicsKey", "Spring rate [N/mm]")},
+        {K::SpringPreloadN, QT_TRANSLATE_NOOP("DynamicsKey", "Spring preload [N]")},
+        {K::ExternalForceN, QT_TRANSLATE_NOOP("DynamicsKey", "External force [N]")},
+        {K::DampingNsPerM, QT_TRANSLATE_NOOP("DynamicsKey", "Damping [N·s/m]")},
+        {K::InertiaKgM2, QT_TRANSLATE_NOOP("DynamicsKey", "Arm inertia [kg·m²]")},
+        {K::SpringRateNmPerRad, QT_TRANSLATE_NOOP("DynamicsKey", "Spring rate [N·m/rad]")},
+        {K::SpringPreloadNm, QT_TRANSLATE_NOOP("DynamicsKey", "Spring preload [N·m]")},
+        {K::ExternalMomentNm, QT_TRANSLATE_NOOP("DynamicsKey", "External moment [N·m]")},
+        {K::DampingNmsPerRad, QT_TRANSLATE_NOOP("DynamicsKey", "Damping [N·m·s/rad]")},
+        {K::ContactWidthMm, QT_TRANSLATE_NOOP("DynamicsKey", "Contact width [mm]")},
+        {K::CamModulusMpa, QT_TRANSLATE_NOOP("DynamicsKey", "Cam material, E [MPa]")},
+        {K::CamPoisson, QT_TRANSLATE_NOOP("DynamicsKey", "Cam material, Poisson's ratio")},
+        {K::FollowerModulusMpa, QT_TRANSLATE_NOOP("DynamicsKey", "Follower material, E [MPa]")},
+        {K::FollowerPoisson,
+         QT_TRANSLATE_NOOP("DynamicsKey", "Follower material, Poisson's ratio")},
+        {K::AllowableContactStressMpa,
+         QT_TRANSLATE_NOOP("DynamicsKey", "Allowable contact stress [MPa]")},
+        {K::SpringSafetyFactor, QT_TRANSLATE_NOOP("DynamicsKey", "Spring safety factor")},
+    };
+    static_assert(std::size(kTitles) == kDynamicsKeyCount);
+    for (const auto& [k, title] : kTitles) {
+        if (k == key) return QCoreApplication::translate("DynamicsKey", title);
+    }
+    return {};
+}
+
 }  // namespace cam

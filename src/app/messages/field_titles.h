@@ -7,6 +7,8 @@
 #include <QString>
 #include <QStringList>
 
+#include "common/dynamics_key.h"
+
 namespace cam {
 
 /// @brief The segment table's columns, in the order of the fields they edit (EditedField in
@@ -33,5 +35,8 @@ struct SegmentColumns {
 
 /// @brief The motion laws' titles in the window's language, in MotionLawType order.
 [[nodiscard]] QStringList motionLawTitles();
+
+/// @brief "Mass [kg]", "Cam material, E [MPa]": a dynamics value's title in the window.
+[[nodiscard]] QString dynamicsKeyTitle(DynamicsKey key);
 
 }  // namespace cam

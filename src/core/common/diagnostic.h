@@ -230,6 +230,9 @@ enum class Severity { Error, Info };
     X(PressureAngleExceeded)             \
     X(FilletRadiusInvalidContour)        \
     X(NoBaseRadiusPasses)                \
+    X(DynamicsKeyForArm)                 \
+    X(DynamicsKeyForTranslating)         \
+    X(PoissonOutOfRange)                 \
     X(Cancelled)
 
 /// @brief What a diagnostic says, independent of the language it is shown in.

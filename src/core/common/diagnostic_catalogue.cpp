@@ -564,6 +564,14 @@ constexpr std::array<DiagnosticEntry, kDiagnosticCodeCount> kCatalogue{{
     {Code::NoBaseRadiusPasses, "sn",
      CAM_TRANSLATE_NOOP("Diagnostic",
                         "no base radius up to 1000000 mm passes every check: %1 fails at %2°")},
+    {Code::DynamicsKeyForArm, "",
+     CAM_TRANSLATE_NOOP("Diagnostic", "is for a swinging arm; this project's follower translates")},
+    {Code::DynamicsKeyForTranslating, "",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "is for a translating follower; this project's follower swings on an "
+                        "arm")},
+    {Code::PoissonOutOfRange, "n",
+     CAM_TRANSLATE_NOOP("Diagnostic", "must be at least 0 and below 0.5 (got %1)")},
     {Code::Cancelled, "", CAM_TRANSLATE_NOOP("Diagnostic", "cancelled")},
 }};
 

@@ -189,6 +189,14 @@ std::string_view designPartKey(DesignPart part) {
     return "";
 }
 
+std::string dynamicsKeyPath(DynamicsKey key) {
+    std::string path = "dynamics.";
+    if (const std::string_view group = dynamicsKeyGroup(key); !group.empty()) {
+        path.append(group).append(1, '.');
+    }
+    return path.append(dynamicsKeyName(key));
+}
+
 std::string locationText(const Place& place) {
     return std::visit(
         [](const auto& p) -> std::string {
@@ -215,11 +223,13 @@ std::string locationText(const Place& place) {
                 return p.key;
             } else if constexpr (std::is_same_v<P, FilePlace>) {
                 return p.path;
-            } else {
-                static_assert(std::is_same_v<P, SamplePlace>);
+            } else if constexpr (std::is_same_v<P, SamplePlace>) {
                 std::string text = "sample ";
                 text.append(std::to_string(p.sample)).append(", ").append(p.quantity);
                 return text;
+            } else {
+                static_assert(std::is_same_v<P, DynamicsPlace>);
+                return dynamicsKeyPath(p.key);
             }
         },
         place);

@@ -10,6 +10,8 @@
 #include <variant>
 #include <vector>
 
+#include "common/dynamics_key.h"
+
 namespace cam {
 
 /// @brief Which field of a segment a problem concerns.
@@ -158,10 +160,17 @@ struct SamplePlace {
     friend bool operator==(const SamplePlace&, const SamplePlace&) = default;
 };
 
+/// @brief A value of the project's dynamics: "dynamics.mass_kg".
+struct DynamicsPlace {
+    DynamicsKey key = DynamicsKey::MassKg;
+
+    friend bool operator==(const DynamicsPlace&, const DynamicsPlace&) = default;
+};
+
 /// @brief Where a diagnostic points; std::monostate for nowhere (its text has no location).
 using Place = std::variant<std::monostate, SegmentPlace, JointPlace, TurnPlace, FieldPlace,
                            DesignSegmentPlace, DesignJointPlace, FilePositionPlace, FileKeyPlace,
-                           FilePlace, SamplePlace>;
+                           FilePlace, SamplePlace, DynamicsPlace>;
 
 /// @brief "contour[3]".
 [[nodiscard]] std::string segmentLocation(std::size_t index);

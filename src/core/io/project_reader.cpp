@@ -9,6 +9,7 @@
 #include "common/angles.h"
 #include "common/translate_marker.h"
 #include "design/motion_law.h"
+#include "project/dynamics.h"
 #include "project/follower_kind.h"
 #include "project/validate.h"
 
@@ -355,6 +356,50 @@ void readMachining(Reader& rd, const Json& root, const UnitsSpec& units, Project
     p.machining = spec;
 }
 
+void readDynamics(Reader& rd, const Json& root, Project& p) {
+    const Json* d = rd.field(root, "", "dynamics", false);
+    if (!d || !rd.object(*d, "dynamics")) return;
+    DynamicsSpec spec;
+    // The keys the file may have at the top of `dynamics`, and the objects inside it.
+    std::set<std::string> top;
+    std::set<std::string> groups;
+    for (const DynamicsKeyInfo& info : dynamicsKeys()) {
+        const std::string group(dynamicsKeyGroup(info.key));
+        (group.empty() ? top : groups)
+            .insert(group.empty() ? std::string(dynamicsKeyName(info.key)) : group);
+    }
+    for (const auto& [key, value] : d->items()) {
+        if (!top.contains(key) && !groups.contains(key)) {
+            rd.error("dynamics." + key, DiagnosticCode::UnknownKey);
+        }
+    }
+    for (const std::string& group : groups) {
+        const std::string at = "dynamics." + group;
+        const Json* g = rd.field(*d, "dynamics", group.c_str(), false);
+        if (!g || !rd.object(*g, at)) continue;
+        // A material is both its values: each is required once the object is there.
+        for (const auto& [key, value] : g->items()) {
+            bool known = false;
+            for (const DynamicsKeyInfo& info : dynamicsKeys()) {
+                known = known ||
+                        (dynamicsKeyGroup(info.key) == group && dynamicsKeyName(info.key) == key);
+            }
+            if (!known) rd.error(at + "." + key, DiagnosticCode::UnknownKey);
+        }
+        for (const DynamicsKeyInfo& info : dynamicsKeys()) {
+            if (dynamicsKeyGroup(info.key) != group) continue;
+            const std::string name(dynamicsKeyName(info.key));
+            if (const auto v = rd.number(*g, at, name.c_str(), true)) spec[info.key] = *v;
+        }
+    }
+    for (const DynamicsKeyInfo& info : dynamicsKeys()) {
+        if (!dynamicsKeyGroup(info.key).empty()) continue;
+        const std::string name(dynamicsKeyName(info.key));
+        if (const auto v = rd.number(*d, "dynamics", name.c_str(), false)) spec[info.key] = *v;
+    }
+    p.dynamics = spec;
+}
+
 /// "\"dwell\", \"harmonic\", …" for messages.
 std::string knownLawNames() {
     std::string out;
@@ -487,10 +532,11 @@ Result<Project> readProject(const Json& root) {
     readSampling(rd, root, p);
     readMachining(rd, root, units, p);
     readDesign(rd, root, units, p);
+    readDynamics(rd, root, p);
 
     static const std::set<std::string> known{"format",    "version", "name",     "units",
                                              "motion",    "contour", "follower", "sampling",
-                                             "machining", "design"};
+                                             "machining", "design",  "dynamics"};
     for (const auto& [key, value] : root.items()) {
         if (!known.contains(key)) p.extraKeys.emplace_back(key, value.dump());
     }

@@ -8,6 +8,7 @@
 #include "io/json_syntax.h"
 #include "io/project_json.h"
 #include "io/project_reader.h"
+#include "project/dynamics.h"
 #include "project/follower_kind.h"
 
 namespace cam {
@@ -148,6 +149,22 @@ std::string serializeProject(const Project& p) {
                           {"tolerance", length(d.tolerance)}};
         if (d.strictPressureAngle) root["design"]["strict_pressure_angle"] = true;
     }
+    if (p.dynamics) {
+        // Each value as given, in the key's own unit; a material only with a value in it.
+        Json j = Json::object();
+        for (const DynamicsKeyInfo& info : dynamicsKeys()) {
+            const std::optional<double>& v = (*p.dynamics)[info.key];
+            if (!v) continue;
+            const std::string group(dynamicsKeyGroup(info.key));
+            const std::string name(dynamicsKeyName(info.key));
+            if (group.empty()) {
+                j[name] = *v;
+            } else {
+                j[group][name] = *v;
+            }
+        }
+        root["dynamics"] = std::move(j);
+    }
     wholeNumbersAsIntegers(root);
     for (const auto& [key, text] : p.extraKeys) root[key] = Json::parse(text);
     return root.dump(2) + "\n";
@@ -203,6 +220,11 @@ Diagnostics nonFiniteValues(const Project& p) {
                   std::pair{DesignPart::V1, s.v1}, std::pair{DesignPart::A1, s.a1}}) {
                 check(v, DesignSegmentPlace{k, part});
             }
+        }
+    }
+    if (p.dynamics) {
+        for (const DynamicsKeyInfo& info : dynamicsKeys()) {
+            if (const auto& v = (*p.dynamics)[info.key]) check(*v, DynamicsPlace{info.key});
         }
     }
     if (p.machining) {

@@ -15,6 +15,7 @@
 #include <variant>
 #include <vector>
 
+#include "common/dynamics_key.h"
 #include "geometry/arc.h"
 #include "geometry/bezier.h"
 #include "geometry/line.h"
@@ -229,6 +230,22 @@ struct DesignSpec {
     friend bool operator==(const DesignSpec&, const DesignSpec&) = default;
 };
 
+/// @brief The follower train and the contact (math.md §9): each value exactly as the file or
+/// the user gives it, absent where not given (the computation then takes its default: 0, the
+/// safety factor 1). Units are in the keys (common/dynamics_key.h); what each key takes is
+/// project/dynamics.cpp.
+struct DynamicsSpec {
+    std::array<std::optional<double>, kDynamicsKeyCount> values{};
+
+    [[nodiscard]] const std::optional<double>& operator[](DynamicsKey key) const {
+        return values[static_cast<std::size_t>(key)];
+    }
+    [[nodiscard]] std::optional<double>& operator[](DynamicsKey key) {
+        return values[static_cast<std::size_t>(key)];
+    }
+    friend bool operator==(const DynamicsSpec&, const DynamicsSpec&) = default;
+};
+
 /// @brief The whole document.
 struct Project {
     std::string name;
@@ -239,6 +256,7 @@ struct Project {
     std::optional<std::int64_t> samplesPerTurn;
     std::optional<MachiningSpec> machining;
     std::optional<DesignSpec> design;
+    std::optional<DynamicsSpec> dynamics;
     /// Unknown top-level keys, kept verbatim (key, compact JSON text) for forward compatibility.
     std::vector<std::pair<std::string, std::string>> extraKeys;
 

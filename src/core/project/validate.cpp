@@ -4,6 +4,7 @@
 
 #include "common/angles.h"
 #include "geometry/planar.h"
+#include "project/dynamics.h"
 #include "project/follower_kind.h"
 
 namespace cam {
@@ -34,6 +35,7 @@ public:
         checkFollower();
         checkSampling();
         checkMachining();
+        checkDynamics();
         return std::move(m_out);
     }
 
@@ -392,6 +394,43 @@ private:
                    " mm/s");
         checkRange(FieldPlace{Field::MachiningToolRadius}, m.toolRadius, 0.0, kMaxLengthMm, " mm");
         checkPositiveLength(FieldPlace{Field::MachiningStep}, m.step);
+    }
+
+    void checkDynamics() {
+        if (!m_project.dynamics) return;
+        const FollowerSpec follower = m_project.follower.value_or(FollowerSpec{});
+        for (const DynamicsKeyInfo& info : dynamicsKeys()) {
+            const std::optional<double>& v = (*m_project.dynamics)[info.key];
+            if (!v) continue;
+            const DynamicsPlace where{info.key};
+            if (!dynamicsKeyApplies(info.key, follower)) {
+                error(where, info.follower == DynamicsFollower::Swinging
+                                 ? Code::DynamicsKeyForArm
+                                 : Code::DynamicsKeyForTranslating);
+                continue;
+            }
+            const std::string unit = *info.unit ? std::string(" ") + info.unit : std::string();
+            switch (info.rule) {
+                case DynamicsRule::Positive:
+                    if (checkPositive(where, *v, false) && *v > kMaxDynamicsValue) {
+                        error(where, Code::OutOfRange, {0.0, kMaxDynamicsValue, unit, *v});
+                    }
+                    break;
+                case DynamicsRule::NonNegative:
+                    checkRange(where, *v, 0.0, kMaxDynamicsValue, unit.c_str());
+                    break;
+                case DynamicsRule::Finite:
+                    checkRange(where, *v, -kMaxDynamicsValue, kMaxDynamicsValue, unit.c_str());
+                    break;
+                case DynamicsRule::Poisson:
+                    if (!std::isfinite(*v)) {
+                        error(where, Code::NotFinite, {*v});
+                    } else if (!(*v >= 0.0 && *v < 0.5)) {
+                        error(where, Code::PoissonOutOfRange, {*v});
+                    }
+                    break;
+            }
+        }
     }
 
     const Project& m_project;

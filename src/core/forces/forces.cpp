@@ -1,0 +1,262 @@
+#include "forces/forces.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "common/angles.h"
+#include "common/golden_section.h"
+#include "project/dynamics.h"
+#include "project/follower_kind.h"
+
+namespace cam {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+ForceModel ForceModel::of(const DynamicsSpec& d, const FollowerSpec& follower) {
+    using K = DynamicsKey;
+    ForceModel m;
+    m.swinging = follower.motion == FollowerMotion::Oscillating;
+    if (m.swinging) {
+        m.mass = dynamicsValue(d, K::InertiaKgM2);
+        m.rate = dynamicsValue(d, K::SpringRateNmPerRad);
+        m.preload = dynamicsValue(d, K::SpringPreloadNm);
+        m.external = dynamicsValue(d, K::ExternalMomentNm);
+        m.damping = dynamicsValue(d, K::DampingNmsPerRad);
+        m.armLength = follower.armLength * 1e-3;
+    } else {
+        m.mass = dynamicsValue(d, K::MassKg);
+        m.rate = dynamicsValue(d, K::SpringRateNPerMm) * 1e3;
+        m.preload = dynamicsValue(d, K::SpringPreloadN);
+        m.external = dynamicsValue(d, K::ExternalForceN);
+        m.damping = dynamicsValue(d, K::DampingNsPerM);
+    }
+    m.safetyFactor = dynamicsValue(d, K::SpringSafetyFactor);
+    m.allowableMpa = d[K::AllowableContactStressMpa];
+    const bool given = d[K::ContactWidthMm] && d[K::CamModulusMpa] && d[K::CamPoisson] &&
+                       d[K::FollowerModulusMpa] && d[K::FollowerPoisson];
+    if (follower.type != FollowerType::Knife && given) {
+        m.hasStress = true;
+        m.widthMm = *d[K::ContactWidthMm];
+        const double nu1 = *d[K::CamPoisson], nu2 = *d[K::FollowerPoisson];
+        m.modulusMpa = 1.0 / ((1.0 - nu1 * nu1) / *d[K::CamModulusMpa] +
+                              (1.0 - nu2 * nu2) / *d[K::FollowerModulusMpa]);
+        m.followerCurvature = followerKind(follower.type).hasRadius ? 1.0 / follower.radius : 0.0;
+    }
+    return m;
+}
+
+ForcePoint forceAt(const ForceModel& m, const ForceMotion& motion, double omega) {
+    const auto& [lift, d1, d2] = motion.lift;
+    ForcePoint f;
+    f.load = m.mass * d2 * omega * omega + m.damping * d1 * omega + m.rate * lift + m.preload +
+             m.external;
+    const double cosAlpha = std::cos(motion.pressureAngle);
+    if (m.swinging) {
+        f.normal = f.load / (m.armLength * cosAlpha);
+        f.lateral = kNaN;
+    } else {
+        f.normal = f.load / cosAlpha;
+        f.lateral = f.normal * std::sin(motion.pressureAngle);
+    }
+    f.torque = f.load * d1;
+    f.power = f.torque * omega;
+    f.stress = f.halfWidth = f.shear = kNaN;
+    if (m.hasStress && f.normal >= 0.0) {
+        // 1/R' = 1/ρ_profile + 1/ρ_f (ρ_profile < 0 where the profile is concave).
+        const double curvature =
+            (std::isfinite(motion.rhoProfile) ? 1.0 / motion.rhoProfile : 0.0) +
+            m.followerCurvature;
+        if (curvature > 0.0) {
+            f.stress = std::sqrt(f.normal * m.modulusMpa * curvature / (kPi * m.widthMm));
+            f.halfWidth = std::sqrt(4.0 * f.normal / (kPi * m.widthMm * m.modulusMpa * curvature));
+        } else {
+            // Flat on flat (or a roller as wide as its concave arc): no Hertz line contact,
+            // the load spreads over the stretch.
+            f.stress = 0.0;
+            f.halfWidth = kInf;
+        }
+        f.shear = 0.30 * f.stress;
+    }
+    return f;
+}
+
+ForceMotion forceMotion(const FollowerModel& follower, const FollowerState& state) {
+    const std::array<double, 4> l = follower.liftPhi(state);
+    const double unit = follower.oscillating() ? kPi / 180.0 : 1e-3;  // deg → rad, mm → m
+    return {{l[0] * unit, l[1] * unit, l[2] * unit}, state.pressureAngle, state.rhoProfile};
+}
+
+double jumpSpeedAt(const ForceModel& m, const ForceMotion& motion, double omega) {
+    const double a = m.mass * motion.lift[2];
+    const double b = m.damping * motion.lift[1] * (omega < 0.0 ? -1.0 : 1.0);
+    const double c = m.rate * motion.lift[0] + m.preload + m.external;
+    if (c < 0.0) return 0.0;
+    // The load at speed W is F(W) = a·W² + b·W + c: the first W > 0 where it turns negative.
+    std::vector<double> roots;
+    if (c == 0.0) roots.push_back(0.0);
+    if (a == 0.0) {
+        if (b != 0.0) roots.push_back(-c / b);
+    } else {
+        const double disc = b * b - 4.0 * a * c;
+        if (disc >= 0.0) {
+            const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+            if (q != 0.0) {
+                roots.push_back(q / a);
+                roots.push_back(c / q);
+            } else {
+                roots.push_back(0.0);
+            }
+        }
+    }
+    std::sort(roots.begin(), roots.end());
+    for (const double r : roots) {
+        if (r < 0.0) continue;
+        const double slope = 2.0 * a * r + b;
+        if (slope < 0.0 || (slope == 0.0 && a < 0.0)) return r;
+    }
+    return kInf;
+}
+
+double preloadNeededAt(const ForceModel& m, const ForceMotion& motion, double omega) {
+    const double pull =
+        -m.mass * motion.lift[2] * omega * omega - m.damping * motion.lift[1] * omega;
+    return m.safetyFactor * pull - m.rate * motion.lift[0] - m.external;
+}
+
+namespace {
+
+ForceMotion sampleMotion(const FollowerModel& follower, const FollowerTurn& turn, std::size_t k,
+                         double omega) {
+    const double q = turn.s[k], v = turn.v[k], a = turn.a[k];
+    ForceMotion motion;
+    if (follower.oscillating()) {
+        const double sign = follower.awaySign();
+        motion.lift = {follower.liftOf(q) * kPi / 180.0, sign * v / omega,
+                       sign * a / (omega * omega)};
+    } else {
+        motion.lift = {follower.liftOf(q) * 1e-3, v / omega * 1e-3, a / (omega * omega) * 1e-3};
+    }
+    motion.pressureAngle = turn.pressureAngle[k];
+    motion.rhoProfile = turn.rhoProfile[k];
+    return motion;
+}
+
+}  // namespace
+
+std::vector<ForcePoint> forcesOfTurn(const ForceModel& model, const FollowerModel& follower,
+                                     const FollowerTurn& turn, double omega) {
+    std::vector<ForcePoint> out(turn.size());
+    for (std::size_t k = 0; k < turn.size(); ++k) {
+        out[k] = forceAt(model, sampleMotion(follower, turn, k, omega), omega);
+    }
+    return out;
+}
+
+ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follower,
+                             const FollowerTurn& turn, const std::vector<ForcePoint>& forces,
+                             double omega) {
+    ForceSummary s;
+    const std::size_t n = turn.size();
+    if (n == 0 || forces.size() != n) return s;
+    const double step = (omega < 0.0 ? -kTwoPi : kTwoPi) / static_cast<double>(n);
+    const auto phiOf = [&](std::size_t k) { return step * static_cast<double>(k); };
+    s.jumpSpeed = kInf;
+    s.minPreload = -kInf;
+    double torqueSquares = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const ForcePoint& f = forces[k];
+        const ForceMotion motion = sampleMotion(follower, turn, k, omega);
+        if (const double w = jumpSpeedAt(model, motion, omega); w < s.jumpSpeed) {
+            s.jumpSpeed = w;
+            s.jumpSpeedAt = phiOf(k);
+        }
+        if (const double f0 = preloadNeededAt(model, motion, omega); f0 > s.minPreload) {
+            s.minPreload = f0;
+            s.minPreloadAt = phiOf(k);
+        }
+        if (k == 0 || f.normal > s.maxNormal) {
+            s.maxNormal = f.normal;
+            s.maxNormalAt = phiOf(k);
+        }
+        if (k == 0 || std::abs(f.torque) > std::abs(s.peakTorque)) {
+            s.peakTorque = f.torque;
+            s.peakTorqueAt = phiOf(k);
+        }
+        torqueSquares += f.torque * f.torque;
+        if (std::isfinite(f.stress) && (!s.maxStress || f.stress > *s.maxStress)) {
+            s.maxStress = f.stress;
+            s.maxStressAt = phiOf(k);
+        }
+    }
+    s.rmsTorque = std::sqrt(torqueSquares / static_cast<double>(n));
+    // The extremes between samples: golden sections a step either side of the best sample, on
+    // the follower placed exactly there (an arc table's joints may lie inside: the search then
+    // ends at one of their sides, never on a value the turn does not take).
+    const auto refineMin = [&](auto&& f, double& value, double& at) {
+        const GoldenSection g = goldenSectionMin(
+            [&](double phi) { return f(forceMotion(follower, follower.at(phi, omega))); },
+            at - std::abs(step), at + std::abs(step),
+            [](double lo, double hi, int i) { return i < 80 && hi - lo > 1e-12; });
+        for (const auto& [x, fx] : {std::pair{g.x1, g.f1}, std::pair{g.x2, g.f2}}) {
+            if (fx < value) {
+                value = fx;
+                at = x;
+            }
+        }
+    };
+    if (std::isfinite(s.jumpSpeed)) {
+        refineMin([&](const ForceMotion& m) { return jumpSpeedAt(model, m, omega); }, s.jumpSpeed,
+                  s.jumpSpeedAt);
+    }
+    const auto refineMax = [&](auto&& f, double& value, double& at) {
+        double negated = -value;
+        refineMin([&](const ForceMotion& m) { return -f(m); }, negated, at);
+        value = -negated;
+    };
+    refineMax([&](const ForceMotion& m) { return preloadNeededAt(model, m, omega); }, s.minPreload,
+              s.minPreloadAt);
+    refineMax([&](const ForceMotion& m) { return forceAt(model, m, omega).normal; }, s.maxNormal,
+              s.maxNormalAt);
+    double peak = std::abs(s.peakTorque);
+    refineMax([&](const ForceMotion& m) { return std::abs(forceAt(model, m, omega).torque); }, peak,
+              s.peakTorqueAt);
+    s.peakTorque =
+        forceAt(model, forceMotion(follower, follower.at(s.peakTorqueAt, omega)), omega).torque;
+    s.peakPower = s.peakTorque * omega;  // P = T·ω: its peak is the torque's
+    if (s.maxStress) {
+        double stress = *s.maxStress, at = *s.maxStressAt;
+        refineMax(
+            [&](const ForceMotion& m) {
+                const double p = forceAt(model, m, omega).stress;
+                return std::isfinite(p) ? p : -kInf;
+            },
+            stress, at);
+        s.maxStress = stress;
+        s.maxStressAt = at;
+    }
+    // The runs of samples where the load is negative, a run across the turn's end as one.
+    std::size_t k = 0;
+    const auto lost = [&](std::size_t i) { return forces[i % n].load < 0.0; };
+    if (lost(0) && lost(n - 1)) {
+        while (k < n && lost(k)) ++k;  // that run is closed at the end
+    }
+    const std::size_t skipped = k;
+    while (k < n) {
+        if (!lost(k)) {
+            ++k;
+            continue;
+        }
+        const std::size_t from = k;
+        while (k < n + skipped && lost(k)) ++k;
+        s.liftOff.push_back({phiOf(from), phiOf(k - 1)});
+    }
+    if (skipped == n) s.liftOff = {{0.0, phiOf(n - 1)}};
+    return s;
+}
+
+}  // namespace cam

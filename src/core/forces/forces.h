@@ -1,0 +1,107 @@
+#pragma once
+/// @file
+/// @brief The forces of math.md §9: the follower train (mass or arm inertia, spring, damping,
+/// external load) pressed on the cam, rigid and frictionless — the load along the line of
+/// motion (or the arm's moment), the contact normal and side forces, the camshaft's torque and
+/// power, and the Hertz line contact; over a turn, where the follower leaves the cam, the
+/// speed at which it would, the least preload that keeps it on, and the peaks.
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "follower/follower.h"
+#include "follower/follower_turn.h"
+#include "project/project.h"
+
+namespace cam {
+
+/// @brief A project's dynamics in SI units, ready to compute with.
+struct ForceModel {
+    bool swinging = false;
+    double mass = 0.0;       ///< kg, or the arm's inertia in kg·m²
+    double rate = 0.0;       ///< N/m, or N·m/rad
+    double preload = 0.0;    ///< N at lift 0, or N·m
+    double external = 0.0;   ///< N pressing the follower on the cam, or N·m
+    double damping = 0.0;    ///< N·s/m, or N·m·s/rad
+    double armLength = 0.0;  ///< m (swinging)
+    double safetyFactor = 1.0;
+    /// The Hertz contact: a roller's or a flat face's, with the width and both materials
+    /// given; none for a knife edge.
+    bool hasStress = false;
+    double widthMm = 0.0;
+    double modulusMpa = 0.0;  ///< E*: 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2
+    /// 1/ρ_f of the follower's contact (1/mm): a roller's curvature, 0 for a flat face.
+    double followerCurvature = 0.0;
+    std::optional<double> allowableMpa;
+
+    /// @brief From the project's `dynamics` (absent keys take their defaults) and follower.
+    [[nodiscard]] static ForceModel of(const DynamicsSpec& dynamics, const FollowerSpec& follower);
+};
+
+/// @brief The follower's motion at one angle, as the forces need it: the lift λ (m, or the
+/// arm's swing away from the cam in rad) and its derivatives by the cam angle (per rad), the
+/// pressure angle (rad) and the profile's radius of curvature at the contact (mm, signed,
+/// +∞ on a straight stretch).
+struct ForceMotion {
+    std::array<double, 3> lift{};
+    double pressureAngle = 0.0;
+    double rhoProfile = 0.0;
+};
+
+/// @brief The forces at one angle. Units: N, N·m, W, MPa, mm.
+struct ForcePoint {
+    double load = 0.0;     ///< F_axial along the line of motion, or the arm's moment M (N·m)
+    double normal = 0.0;   ///< F_n, the contact normal force
+    double lateral = 0.0;  ///< F_lat on the guide (translating; NaN on an arm)
+    double torque = 0.0;   ///< on the camshaft, N·m
+    double power = 0.0;    ///< W
+    /// Hertz p_max, the contact half-width a and the largest subsurface shear (about 0.30·p_max
+    /// at 0.786·a); NaN for a knife edge, without width or materials, or where contact is lost.
+    double stress = 0.0, halfWidth = 0.0, shear = 0.0;
+};
+
+/// @brief math.md §9 at one angle, the cam turning at ω rad/s.
+[[nodiscard]] ForcePoint forceAt(const ForceModel& model, const ForceMotion& motion, double omega);
+
+/// @brief The state's motion in the forces' units (the follower's lift and its φ-derivatives
+/// from `follower`).
+[[nodiscard]] ForceMotion forceMotion(const FollowerModel& follower, const FollowerState& state);
+
+/// @brief The speed (rad/s, ≥ 0) above which the load at this angle turns negative: the
+/// smallest positive root W of m·λ''·W² + c·λ'·sgn(ω)·W + (k·λ + F0 + Fe) = 0; 0 when the load
+/// is negative at rest already, +∞ when no speed lifts the follower here.
+[[nodiscard]] double jumpSpeedAt(const ForceModel& model, const ForceMotion& motion, double omega);
+
+/// @brief The preload that just keeps the load at n times what pulls the follower off at this
+/// angle: n·(−m·λ̈ − c·λ̇) − k·λ − Fe (N or N·m).
+[[nodiscard]] double preloadNeededAt(const ForceModel& model, const ForceMotion& motion,
+                                     double omega);
+
+/// @brief A turn's forces and what a designer releases a cam on.
+struct ForceSummary {
+    std::vector<std::array<double, 2>> liftOff;  ///< rad ranges [from, to] where the load < 0
+    double jumpSpeed = 0.0;                      ///< rad/s, the smallest over the turn (+∞: none)
+    double jumpSpeedAt = 0.0;                    ///< rad
+    double minPreload = 0.0;                     ///< N or N·m (the largest preloadNeededAt)
+    double minPreloadAt = 0.0;                   ///< rad
+    double maxNormal = 0.0, maxNormalAt = 0.0;   ///< N, rad
+    double peakTorque = 0.0, peakTorqueAt = 0.0;   ///< N·m (largest |T|, signed), rad
+    double rmsTorque = 0.0;                        ///< N·m over the turn
+    double peakPower = 0.0;                        ///< W (largest |P|, signed)
+    std::optional<double> maxStress, maxStressAt;  ///< MPa, rad; none without a contact stress
+};
+
+/// @brief The forces at every sample of a turn of `follower` (sampleFollowerTurn's), at ω.
+[[nodiscard]] std::vector<ForcePoint> forcesOfTurn(const ForceModel& model,
+                                                   const FollowerModel& follower,
+                                                   const FollowerTurn& turn, double omega);
+
+/// @brief The summary of a sampled turn (sample k at φ_k = 2π·k/n in the turning direction):
+/// the lift-off ranges to a sample, every extreme refined between samples by golden sections
+/// on the follower placed exactly.
+[[nodiscard]] ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follower,
+                                           const FollowerTurn& turn,
+                                           const std::vector<ForcePoint>& forces, double omega);
+
+}  // namespace cam

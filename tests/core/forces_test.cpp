@@ -1,0 +1,253 @@
+// The forces of math.md §9 (forces/forces.h) against references written here:
+// - the eccentric disc (a circle of R 30 about (5, 0), roller 8, radial): its pitch curve is the
+//   circle of 38 about (5, 0), so s = 5 cos φ + √(38² − 25 sin² φ) with s' and s'' by hand;
+//   the load, normal force, torque and Hertz stress from those in the textbook's arrangement
+//   p = √(F_n (1/R1 + 1/R2) / (π b ((1 − ν1²)/E1 + (1 − ν2²)/E2))), and math.md's printed
+//   values;
+// - the jump speed by sweeping the speed until the load turns negative somewhere, no roots;
+// - the least preload by its definition: with it the margin is never below 0 and touches 0;
+// - the textbook exercise of math.md §9 (cycloidal rise, 1000 rpm) on its motion law.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/angles.h"
+#include "contour/contour.h"
+#include "design/motion_design.h"
+#include "follower/follower.h"
+#include "follower/follower_turn.h"
+#include "forces/forces.h"
+#include "project/dynamics.h"
+
+namespace cam {
+namespace {
+
+constexpr double kRpm = 300.0;
+constexpr double kOmega = kRpm * kTwoPi / 60.0;
+
+/// s, s', s'' (mm, per rad) of the roller's centre on the eccentric disc.
+std::array<double, 3> discLift(double phi) {
+    const double sn = std::sin(phi), cs = std::cos(phi);
+    const double d = std::sqrt(38.0 * 38.0 - 25.0 * sn * sn);
+    return {5.0 * cs + d, -5.0 * sn - 25.0 * sn * cs / d,
+            -5.0 * cs - 25.0 * std::cos(2.0 * phi) / d - 625.0 * sn * sn * cs * cs / (d * d * d)};
+}
+
+Project discProject() {
+    Project p;
+    p.motion = {SpeedUnit::Rpm, kRpm};
+    SegmentSpec s;
+    s.shape = Arc{Eigen::Vector2d(5.0, 0.0), 30.0, Branch::Outer};
+    s.phiStartDeg = 0.0;
+    s.phiEndDeg = 360.0;
+    p.contour = {s};
+    FollowerSpec f;
+    f.type = FollowerType::Roller;
+    f.radius = 8.0;
+    p.follower = f;
+    DynamicsSpec d;
+    using K = DynamicsKey;
+    d[K::MassKg] = 0.5;
+    d[K::SpringRateNPerMm] = 2.0;
+    d[K::SpringPreloadN] = 20.0;
+    d[K::ExternalForceN] = 5.0;
+    d[K::DampingNsPerM] = 10.0;
+    d[K::ContactWidthMm] = 12.0;
+    d[K::CamModulusMpa] = 210000.0;
+    d[K::CamPoisson] = 0.3;
+    d[K::FollowerModulusMpa] = 210000.0;
+    d[K::FollowerPoisson] = 0.3;
+    p.dynamics = d;
+    return p;
+}
+
+struct Disc {
+    Project project = discProject();
+    Contour contour = Contour::build(project).value();
+    FollowerModel follower = FollowerModel::build(contour, *project.follower).value();
+    ForceModel model = ForceModel::of(*project.dynamics, *project.follower);
+};
+
+/// The load by math.md §9 from the closed form (N), at speed w (rad/s).
+double discLoad(double phi, double w, double preload = 20.0) {
+    const auto [s, s1, s2] = discLift(phi);
+    return 0.5 * s2 * 1e-3 * w * w + 10.0 * s1 * 1e-3 * w + 2000.0 * (s - 33.0) * 1e-3 + preload +
+           5.0;
+}
+
+TEST(Forces, TheEccentricDiscAt17DegreesIsTheClosedForm) {
+    Disc disc;
+    const double phi = degToRad(17.0);
+    const ForcePoint f =
+        forceAt(disc.model, forceMotion(disc.follower, disc.follower.at(phi, kOmega)), kOmega);
+    const auto [s, s1, s2] = discLift(phi);
+    const double load = discLoad(phi, kOmega);
+    const double alpha = std::atan(s1 / s);  // radial: tan α = s'/s
+    const double normal = load / std::cos(alpha);
+    EXPECT_NEAR(f.load, load, 1e-9);
+    EXPECT_NEAR(f.normal, normal, 1e-9);
+    EXPECT_NEAR(f.lateral, normal * std::sin(alpha), 1e-9);
+    EXPECT_NEAR(f.torque, load * s1 * 1e-3, 1e-12);
+    EXPECT_NEAR(f.power, load * s1 * 1e-3 * kOmega, 1e-10);
+    const double soft = 2.0 * (1.0 - 0.09) / 210000.0;  // (1 − ν1²)/E1 + (1 − ν2²)/E2
+    const double stress = std::sqrt(normal * (1.0 / 30.0 + 1.0 / 8.0) / (kPi * 12.0 * soft));
+    EXPECT_NEAR(f.stress, stress, 1e-9);
+    const double radius = 1.0 / (1.0 / 30.0 + 1.0 / 8.0);
+    EXPECT_NEAR(f.halfWidth, std::sqrt(4.0 * normal * radius * soft / (kPi * 12.0)), 1e-12);
+    EXPECT_NEAR(f.shear, 0.30 * stress, 1e-9);
+    // math.md §9's printed values.
+    EXPECT_NEAR(f.load, 41.36032, 5e-6);
+    EXPECT_NEAR(f.normal, 41.39096, 5e-6);
+    EXPECT_NEAR(f.torque, -0.0680766, 5e-8);
+    EXPECT_NEAR(f.stress, 141.6274, 5e-5);
+}
+
+/// The speed (rad/s) above which the load on the disc turns negative somewhere, by sweeping
+/// the speed: the smallest load over 20,000 angles, in steps of 1 rpm, then bisection.
+double sweptJumpSpeed() {
+    const auto smallestLoad = [](double w) {
+        double least = 1e300;
+        for (int i = 0; i < 20000; ++i) least = std::min(least, discLoad(kTwoPi * i / 20000, w));
+        // Around the smallest, finer: the minimum is a smooth valley.
+        return least;
+    };
+    double lo = 0.0, hi = 0.0;
+    for (double rpm = 1.0;; rpm += 1.0) {
+        if (smallestLoad(rpm * kTwoPi / 60.0) < 0.0) {
+            hi = rpm * kTwoPi / 60.0;
+            lo = hi - kTwoPi / 60.0;
+            break;
+        }
+    }
+    while (hi - lo > 1e-9) {
+        const double mid = 0.5 * (lo + hi);
+        (smallestLoad(mid) < 0.0 ? hi : lo) = mid;
+    }
+    return hi;
+}
+
+TEST(Forces, TheJumpSpeedIsWhereASweptSpeedFirstLiftsTheRoller) {
+    Disc disc;
+    FollowerTurn turn;
+    ASSERT_TRUE(sampleFollowerTurn(disc.follower, kOmega, 3600, turn));
+    const auto forces = forcesOfTurn(disc.model, disc.follower, turn, kOmega);
+    const ForceSummary s = summarizeForces(disc.model, disc.follower, turn, forces, kOmega);
+    // The sweep samples 20,000 angles: its valley bottom is within a few 1e-4 rpm of the
+    // refined one. (math.md prints 1197.46 rpm: the smallest over whole degrees, at 8°; the
+    // valley's bottom is at 8.34°, 1197.4486 rpm.)
+    const double swept = sweptJumpSpeed() * 60.0 / kTwoPi;
+    EXPECT_NEAR(s.jumpSpeed * 60.0 / kTwoPi, swept, 2e-3);
+    EXPECT_NEAR(s.jumpSpeed * 60.0 / kTwoPi, 1197.4486, 1e-3);
+    EXPECT_NEAR(radToDeg(s.jumpSpeedAt), 8.34, 0.01);
+    // At 300 rpm the spring holds it everywhere.
+    EXPECT_TRUE(s.liftOff.empty());
+    // The peaks against the closed form on a dense grid.
+    double maxNormal = 0.0, peakTorque = 0.0, squares = 0.0;
+    const int n = 200000;
+    for (int i = 0; i < n; ++i) {
+        const double phi = kTwoPi * i / n;
+        const auto [sv, s1, s2] = discLift(phi);
+        const double load = discLoad(phi, kOmega);
+        maxNormal = std::max(maxNormal, load / std::cos(std::atan(s1 / sv)));
+        const double torque = load * s1 * 1e-3;
+        if (std::abs(torque) > std::abs(peakTorque)) peakTorque = torque;
+        squares += torque * torque;
+    }
+    EXPECT_NEAR(s.maxNormal, maxNormal, 1e-6);
+    EXPECT_NEAR(s.peakTorque, peakTorque, 1e-8);
+    EXPECT_NEAR(s.peakPower, peakTorque * kOmega, 1e-6);
+    EXPECT_NEAR(s.rmsTorque, std::sqrt(squares / n), 1e-6);  // a periodic mean: 3600 suffice
+}
+
+TEST(Forces, TheLeastPreloadJustKeepsTheMarginAtZero) {
+    Disc disc;
+    // A faster cam, and a safety factor: the spring must hold 1.5 times the pull.
+    const double w = 1500.0 * kTwoPi / 60.0;
+    disc.project.dynamics->values[static_cast<std::size_t>(DynamicsKey::SpringSafetyFactor)] = 1.5;
+    disc.model = ForceModel::of(*disc.project.dynamics, *disc.project.follower);
+    FollowerTurn turn;
+    ASSERT_TRUE(sampleFollowerTurn(disc.follower, w, 3600, turn));
+    const auto forces = forcesOfTurn(disc.model, disc.follower, turn, w);
+    const ForceSummary s = summarizeForces(disc.model, disc.follower, turn, forces, w);
+    // The definition: k·lift + F0 + Fe ≥ n·(−m·s̈ − c·ṡ) everywhere, with equality somewhere.
+    const auto margin = [&](double preload) {
+        double least = 1e300;
+        for (int i = 0; i < 200000; ++i) {
+            const double phi = kTwoPi * i / 200000;
+            const auto [sv, s1, s2] = discLift(phi);
+            const double pull = -0.5 * s2 * 1e-3 * w * w - 10.0 * s1 * 1e-3 * w;
+            least = std::min(least, 2000.0 * (sv - 33.0) * 1e-3 + preload + 5.0 - 1.5 * pull);
+        }
+        return least;
+    };
+    EXPECT_GT(s.minPreload, 20.0);  // the project's 20 N is not enough at this speed
+    EXPECT_NEAR(margin(s.minPreload), 0.0, 1e-6);
+    EXPECT_LT(margin(s.minPreload - 1e-3), 0.0);
+    // And at this speed without that preload the roller leaves the cam near the top.
+    ASSERT_FALSE(s.liftOff.empty());
+    for (const auto& [from, to] : s.liftOff) {
+        for (double phi = from; phi <= to; phi += 1e-3) EXPECT_LT(discLoad(phi, w), 1e-6);
+    }
+}
+
+TEST(Forces, TheTextbookFollowerLeavesTheCamAt100Degrees) {
+    // math.md §9: a cycloidal rise of 10 mm over 120°, 1000 rpm, 1.8 kg, 15 N/mm with 2.5 mm
+    // initial compression (37.5 N). At 100° of the rise the inertia pulls harder than the
+    // spring pushes: −61.69 N.
+    DesignSpec spec;
+    spec.baseRadius = 40.0;
+    spec.segments = {{MotionLawType::Cycloidal, 120.0, 10.0},
+                     {MotionLawType::Dwell, 180.0, 10.0},
+                     {MotionLawType::Cycloidal, 300.0, 0.0},
+                     {MotionLawType::Dwell, 360.0, 0.0}};
+    const MotionDesign design = MotionDesign::build(spec).value();
+    DynamicsSpec d;
+    d[DynamicsKey::MassKg] = 1.8;
+    d[DynamicsKey::SpringRateNPerMm] = 15.0;
+    d[DynamicsKey::SpringPreloadN] = 15.0 * 2.5;
+    const ForceModel model = ForceModel::of(d, FollowerSpec{});
+    const double omega = 1000.0 * kTwoPi / 60.0;
+    const auto lift = design.liftAt(degToRad(100.0));  // mm, per rad
+    ForceMotion motion;
+    motion.lift = {lift[0] * 1e-3, lift[1] * 1e-3, lift[2] * 1e-3};
+    // The cycloid by hand: s = h(x − sin 2πx / 2π), s̈ = 2πh ω² sin(2πx) / β².
+    const double x = 100.0 / 120.0, beta = degToRad(120.0);
+    EXPECT_NEAR(lift[0], 10.0 * (x - std::sin(kTwoPi * x) / kTwoPi), 1e-12);
+    EXPECT_NEAR(lift[0], 9.7117, 5e-5);
+    const double accel = kTwoPi * 0.010 * omega * omega * std::sin(kTwoPi * x) / (beta * beta);
+    EXPECT_NEAR(accel, -136.035, 5e-4);
+    const ForcePoint f = forceAt(model, motion, omega);
+    EXPECT_NEAR(f.load, 1.8 * accel + 15000.0 * lift[0] * 1e-3 + 37.5, 1e-9);
+    EXPECT_NEAR(f.load, -61.69, 5e-3);
+    EXPECT_TRUE(std::isnan(f.stress));  // a knife edge has no contact stress
+    EXPECT_EQ(jumpSpeedAt(model, motion, omega) < omega, true);
+}
+
+TEST(Forces, JumpSpeedRootsCoverEveryCase) {
+    ForceModel m;
+    m.mass = 1.0;
+    m.rate = 0.0;
+    m.damping = 0.0;
+    ForceMotion motion;
+    // No pull anywhere (s'' ≥ 0) and a positive load: no speed lifts it.
+    m.preload = 10.0;
+    motion.lift = {0.0, 0.0, 0.5};
+    EXPECT_EQ(jumpSpeedAt(m, motion, 1.0), std::numeric_limits<double>::infinity());
+    // s'' < 0 without damping: W = √(F0 / (m·|s''|)).
+    motion.lift = {0.0, 0.0, -0.5};
+    EXPECT_NEAR(jumpSpeedAt(m, motion, 1.0), std::sqrt(10.0 / 0.5), 1e-12);
+    // Pulled off at rest already.
+    m.preload = -1.0;
+    EXPECT_EQ(jumpSpeedAt(m, motion, 1.0), 0.0);
+    // Damping alone against a falling follower (s' < 0, ω > 0): W = F0 / (c·|s'|).
+    m.preload = 10.0;
+    m.damping = 4.0;
+    motion.lift = {0.0, -0.5, 0.0};
+    EXPECT_NEAR(jumpSpeedAt(m, motion, 1.0), 5.0, 1e-12);
+    // Turning the other way the damping pushes: no lift-off.
+    EXPECT_EQ(jumpSpeedAt(m, motion, -1.0), std::numeric_limits<double>::infinity());
+}
+
+}  // namespace
+}  // namespace cam
