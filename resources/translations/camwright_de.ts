@@ -983,7 +983,22 @@
         <translation>kein Grundkreisradius bis 1000000 mm besteht alle Prüfungen: %1 scheitert bei %2°</translation>
     </message>
     <message>
+        <location line="+3" />
+        <source>is for a swinging arm; this project's follower translates</source>
+        <translation>gilt für einen Schwinghebel; der Stößel dieses Projekts bewegt sich geradlinig</translation>
+    </message>
+    <message>
         <location line="+2" />
+        <source>is for a translating follower; this project's follower swings on an arm</source>
+        <translation>gilt für einen geradlinigen Stößel; der Stößel dieses Projekts schwingt an einem Hebel</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>must be at least 0 and below 0.5 (got %1)</source>
+        <translation>muss mindestens 0 und kleiner als 0,5 sein (ist %1)</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
@@ -1088,7 +1103,7 @@
         <translation>eine Spezialdatei</translation>
     </message>
     <message>
-        <location filename="../../src/core/io/project_reader.cpp" line="+20" />
+        <location filename="../../src/core/io/project_reader.cpp" line="+21" />
         <location line="+94" />
         <source>a string</source>
         <translation>ein Text</translation>
@@ -1112,12 +1127,12 @@
     <message>
         <location line="+1" />
         <location line="+141" />
-        <location line="+264" />
+        <location line="+308" />
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location line="-327" />
+        <location line="-371" />
         <source>true or false</source>
         <translation>true oder false</translation>
     </message>
@@ -1132,7 +1147,7 @@
         <translation>ein Array aus Zahlen</translation>
     </message>
     <message>
-        <location line="+237" />
+        <location line="+281" />
         <location line="+87" />
         <source>an array of segments</source>
         <translation>ein Array aus Segmenten</translation>
@@ -1143,7 +1158,7 @@
         <translation>eine ganze Zahl</translation>
     </message>
     <message>
-        <location filename="../../src/core/design/sizing.cpp" line="+166" />
+        <location filename="../../src/core/design/sizing.cpp" line="+165" />
         <source>the pressure angle on rise</source>
         <translation>der Druckwinkel im Hub</translation>
     </message>
@@ -1413,6 +1428,11 @@
     </message>
     <message>
         <location line="+9" />
+        <source>Dynamics, %1</source>
+        <translation>Dynamik, %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>sample %1, %2</source>
         <translation>Abtastpunkt %1, %2</translation>
     </message>
@@ -1420,6 +1440,94 @@
         <location line="+33" />
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>DynamicsKey</name>
+    <message>
+        <location filename="../../src/app/messages/field_titles.cpp" line="+38" />
+        <source>Moving mass [kg]</source>
+        <translation>Bewegte Masse [kg]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Spring rate [N/mm]</source>
+        <translation>Federrate [N/mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Spring preload [N]</source>
+        <translation>Federvorspannung [N]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>External force [N]</source>
+        <translation>Äußere Kraft [N]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Damping [N·s/m]</source>
+        <translation>Dämpfung [N·s/m]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Arm inertia [kg·m²]</source>
+        <translation>Trägheitsmoment des Hebels [kg·m²]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Spring rate [N·m/rad]</source>
+        <translation>Federrate [N·m/rad]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Spring preload [N·m]</source>
+        <translation>Federvorspannung [N·m]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>External moment [N·m]</source>
+        <translation>Äußeres Moment [N·m]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Damping [N·m·s/rad]</source>
+        <translation>Dämpfung [N·m·s/rad]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Contact width [mm]</source>
+        <translation>Kontaktbreite [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Cam material, E [MPa]</source>
+        <translation>Werkstoff der Kurvenscheibe, E [MPa]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Cam material, Poisson's ratio</source>
+        <translation>Werkstoff der Kurvenscheibe, Querkontraktionszahl</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Follower material, E [MPa]</source>
+        <translation>Werkstoff des Stößels, E [MPa]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Follower material, Poisson's ratio</source>
+        <translation>Werkstoff des Stößels, Querkontraktionszahl</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Allowable contact stress [MPa]</source>
+        <translation>Zulässige Pressung [MPa]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Spring safety factor</source>
+        <translation>Sicherheitsfaktor der Feder</translation>
     </message>
 </context>
 <context>
@@ -1722,6 +1830,44 @@
     </message>
 </context>
 <context>
+    <name>Material</name>
+    <message>
+        <location filename="../../src/core/project/dynamics.cpp" line="+53" />
+        <source>Steel</source>
+        <translation>Stahl</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hardened bearing steel (100Cr6)</source>
+        <translation>Gehärteter Wälzlagerstahl (100Cr6)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Grey cast iron (EN-GJL-250)</source>
+        <translation>Gusseisen mit Lamellengraphit (EN-GJL-250)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Nodular cast iron (EN-GJS-400-15)</source>
+        <translation>Gusseisen mit Kugelgraphit (EN-GJS-400-15)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Tin bronze (CuSn12)</source>
+        <translation>Zinnbronze (CuSn12)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>POM (acetal)</source>
+        <translation>POM (Polyacetal)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>PA 6 (dry)</source>
+        <translation>PA 6 (trocken)</translation>
+    </message>
+</context>
+<context>
     <name>MotionLaw</name>
     <message>
         <location filename="../../src/core/design/motion_law.cpp" line="+143" />
@@ -1810,7 +1956,7 @@
 <context>
     <name>SegmentColumn</name>
     <message>
-        <location filename="../../src/app/messages/field_titles.cpp" line="+11" />
+        <location filename="../../src/app/messages/field_titles.cpp" line="-45" />
         <source>Type</source>
         <translation>Typ</translation>
     </message>
@@ -2820,12 +2966,12 @@
     <name>cam::FeasibleRegionPlot</name>
     <message>
         <location filename="../../src/app/views/feasible_region_plot.cpp" line="+14" />
-        <location line="+35" />
+        <location line="+36" />
         <source>Offset [mm]</source>
         <translation>Versatz [mm]</translation>
     </message>
     <message>
-        <location line="-34" />
+        <location line="-35" />
         <source>Base radius [mm]</source>
         <translation>Grundkreisradius [mm]</translation>
     </message>
@@ -3607,7 +3753,7 @@
     </message>
     <message>
         <location line="+6" />
-        <location line="+35" />
+        <location line="+36" />
         <source>Smallest base radius</source>
         <translation>Kleinster Grundkreisradius</translation>
     </message>
