@@ -139,4 +139,53 @@ Json followerAnalysisJson(const Loaded& loaded) {
     return f;
 }
 
+namespace {
+
+Json finiteOrNull(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+
+}  // namespace
+
+Json forcesJson(const ForceModel& model, const ForcePoint& f) {
+    Json j = Json::object();
+    j[model.swinging ? "moment_Nm" : "axial_N"] = f.load;
+    j["normal_N"] = f.normal;
+    if (!model.swinging) j["lateral_N"] = f.lateral;
+    j["torque_Nm"] = f.torque;
+    j["power_W"] = f.power;
+    j["contact_stress_MPa"] = finiteOrNull(f.stress);
+    j["contact_half_width_mm"] = finiteOrNull(f.halfWidth);
+    j["max_shear_stress_MPa"] = finiteOrNull(f.shear);
+    return j;
+}
+
+Json forcesAnalysisJson(const Loaded& loaded) {
+    const ForceModel model = ForceModel::of(*loaded.project.dynamics, loaded.follower.spec());
+    FollowerTurn turn;
+    const auto n = static_cast<std::size_t>(loaded.project.samplesPerTurnOrDefault());
+    sampleFollowerTurn(loaded.follower, loaded.omega, n, turn);
+    const auto forces = forcesOfTurn(model, loaded.follower, turn, loaded.omega);
+    const ForceSummary s = summarizeForces(model, loaded.follower, turn, forces, loaded.omega);
+    const auto degrees = [](double rad) { return radToDeg(rad); };
+    Json liftOff = Json::array();
+    for (const auto& [from, to] : s.liftOff) liftOff.push_back({degrees(from), degrees(to)});
+    const double rpm = 60.0 / kTwoPi;
+    Json j{{"samples", n}, {"lift_off_deg", std::move(liftOff)}};
+    j["jump_speed_rpm"] = finiteOrNull(s.jumpSpeed * rpm);
+    j["jump_speed_at_deg"] = std::isfinite(s.jumpSpeed) ? Json(degrees(s.jumpSpeedAt)) : Json();
+    j[model.swinging ? "min_preload_Nm" : "min_preload_N"] = s.minPreload;
+    j["min_preload_at_deg"] = degrees(s.minPreloadAt);
+    j["max_normal_N"] = s.maxNormal;
+    j["max_normal_at_deg"] = degrees(s.maxNormalAt);
+    j["peak_torque_Nm"] = s.peakTorque;
+    j["peak_torque_at_deg"] = degrees(s.peakTorqueAt);
+    j["rms_torque_Nm"] = s.rmsTorque;
+    j["peak_power_W"] = s.peakPower;
+    j["max_contact_stress_MPa"] = s.maxStress ? Json(*s.maxStress) : Json();
+    j["max_contact_stress_at_deg"] = s.maxStressAt ? Json(degrees(*s.maxStressAt)) : Json();
+    j["allowable_contact_stress_MPa"] = model.allowableMpa ? Json(*model.allowableMpa) : Json();
+    j["contact_stress_ratio"] =
+        s.maxStress && model.allowableMpa ? Json(*s.maxStress / *model.allowableMpa) : Json();
+    return j;
+}
+
 }  // namespace cam::cli

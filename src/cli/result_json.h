@@ -5,6 +5,7 @@
 
 #include "cli/command_support.h"
 #include "follower/follower.h"
+#include "forces/forces.h"
 #include "kinematics/kinematics.h"
 
 namespace cam::cli {
@@ -18,5 +19,15 @@ namespace cam::cli {
 
 /// @brief cli.md's `follower` object of `analyze`: the design checks over the turn.
 [[nodiscard]] Json followerAnalysisJson(const Loaded& loaded);
+
+/// @brief cli.md's `forces` object of `state` (math.md §9): the load (axial_N, or moment_Nm on
+/// an arm), normal_N, lateral_N (translating), torque_Nm, power_W, contact_stress_MPa and
+/// contact_half_width_mm (null for a knife edge, without width or materials, or where the
+/// follower has left the cam).
+[[nodiscard]] Json forcesJson(const ForceModel& model, const ForcePoint& f);
+
+/// @brief cli.md's `forces` object of `analyze`: the turn's lift-off ranges, jump speed, least
+/// preload, peaks and largest contact stress (and its ratio to the allowable).
+[[nodiscard]] Json forcesAnalysisJson(const Loaded& loaded);
 
 }  // namespace cam::cli

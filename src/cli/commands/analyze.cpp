@@ -63,6 +63,7 @@ int runAnalyze(const Arguments& args, std::ostream& out, std::ostream& /*err*/) 
                 {"extremes", std::move(extremes)},
                 {"jerk_unbounded_at", std::move(unbounded)},
                 {"follower", followerAnalysisJson(loaded)}};
+    if (loaded.project.dynamics) result["forces"] = forcesAnalysisJson(loaded);
     // The follower's jerk jumps with the contour's acceleration at the same joints.
     for (const char* q : {"j", "jerk_arm"}) {
         if (result["follower"].contains(q)) result["follower"][q]["between_joints_only"] = between;

@@ -34,7 +34,14 @@ int runState(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
     const FollowerModel& follower = loaded.follower;
     const double turns = turnsAt(loaded.project.motion, t);
     const double reduced = kTwoPi * (turns - std::floor(turns));
-    state["follower"] = followerJson(follower, follower.at(reduced, loaded.omega));
+    const FollowerState at = follower.at(reduced, loaded.omega);
+    state["follower"] = followerJson(follower, at);
+    // With dynamics, the forces there (math.md §9).
+    if (loaded.project.dynamics) {
+        const ForceModel model = ForceModel::of(*loaded.project.dynamics, follower.spec());
+        state["forces"] =
+            forcesJson(model, forceAt(model, forceMotion(follower, at), loaded.omega));
+    }
     printJson(out, state);
     return kOk;
 }
