@@ -163,7 +163,8 @@ Json forcesAnalysisJson(const Loaded& loaded) {
     FollowerTurn turn;
     const auto n = static_cast<std::size_t>(loaded.project.samplesPerTurnOrDefault());
     sampleFollowerTurn(loaded.follower, loaded.omega, n, turn);
-    const auto forces = forcesOfTurn(model, loaded.follower, turn, loaded.omega);
+    ForceTurn forces;
+    forcesOfTurn(model, loaded.follower, turn, loaded.omega, forces);
     const ForceSummary s = summarizeForces(model, loaded.follower, turn, forces, loaded.omega);
     const auto degrees = [](double rad) { return radToDeg(rad); };
     Json liftOff = Json::array();

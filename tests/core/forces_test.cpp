@@ -131,7 +131,8 @@ TEST(Forces, TheJumpSpeedIsWhereASweptSpeedFirstLiftsTheRoller) {
     Disc disc;
     FollowerTurn turn;
     ASSERT_TRUE(sampleFollowerTurn(disc.follower, kOmega, 3600, turn));
-    const auto forces = forcesOfTurn(disc.model, disc.follower, turn, kOmega);
+    ForceTurn forces;
+    forcesOfTurn(disc.model, disc.follower, turn, kOmega, forces);
     const ForceSummary s = summarizeForces(disc.model, disc.follower, turn, forces, kOmega);
     // The sweep samples 20,000 angles: its valley bottom is within a few 1e-4 rpm of the
     // refined one. (math.md prints 1197.46 rpm: the smallest over whole degrees, at 8°; the
@@ -168,7 +169,8 @@ TEST(Forces, TheLeastPreloadJustKeepsTheMarginAtZero) {
     disc.model = ForceModel::of(*disc.project.dynamics, *disc.project.follower);
     FollowerTurn turn;
     ASSERT_TRUE(sampleFollowerTurn(disc.follower, w, 3600, turn));
-    const auto forces = forcesOfTurn(disc.model, disc.follower, turn, w);
+    ForceTurn forces;
+    forcesOfTurn(disc.model, disc.follower, turn, w, forces);
     const ForceSummary s = summarizeForces(disc.model, disc.follower, turn, forces, w);
     // The definition: k·lift + F0 + Fe ≥ n·(−m·s̈ − c·ṡ) everywhere, with equality somewhere.
     const auto margin = [&](double preload) {
@@ -247,6 +249,73 @@ TEST(Forces, JumpSpeedRootsCoverEveryCase) {
     EXPECT_NEAR(jumpSpeedAt(m, motion, 1.0), 5.0, 1e-12);
     // Turning the other way the damping pushes: no lift-off.
     EXPECT_EQ(jumpSpeedAt(m, motion, -1.0), std::numeric_limits<double>::infinity());
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+/// Every sample of the batch path against forceAt on the follower placed at that angle.
+void expectBatchIsForceAt(const FollowerModel& follower, const ForceModel& model, double omega) {
+    FollowerTurn turn;
+    ASSERT_TRUE(sampleFollowerTurn(follower, omega, 720, turn));
+    ForceTurn forces;
+    forcesOfTurn(model, follower, turn, omega, forces);
+    ASSERT_EQ(forces.size(), 720U);
+    const auto close = [](double a, double b) {
+        if (std::isnan(a) || std::isnan(b)) return std::isnan(a) && std::isnan(b);
+        return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b));
+    };
+    for (std::size_t k = 0; k < forces.size(); ++k) {
+        const double phi = omega / std::abs(omega) * kTwoPi * static_cast<double>(k) / 720.0;
+        const ForcePoint f = forces.point(k, model, turn, omega);
+        const ForcePoint g = forceAt(model, forceMotion(follower, follower.at(phi, omega)), omega);
+        EXPECT_PRED2(close, f.load, g.load) << k;
+        EXPECT_PRED2(close, f.normal, g.normal) << k;
+        EXPECT_PRED2(close, f.lateral, g.lateral) << k;
+        EXPECT_PRED2(close, f.torque, g.torque) << k;
+        EXPECT_PRED2(close, f.power, g.power) << k;
+        EXPECT_PRED2(close, f.stress, g.stress) << k;
+        EXPECT_PRED2(close, f.halfWidth, g.halfWidth) << k;
+        EXPECT_PRED2(close, f.shear, g.shear) << k;
+    }
+}
+
+TEST(Forces, TheBatchPathIsForceAtOnALineAndOnAnArm) {
+    Disc disc;
+    expectBatchIsForceAt(disc.follower, disc.model, kOmega);
+    expectBatchIsForceAt(disc.follower, disc.model, -kOmega);  // turning clockwise
+    // The same disc under a roller on a swinging arm, with its arm's keys.
+    FollowerSpec arm = *disc.project.follower;
+    arm.motion = FollowerMotion::Oscillating;
+    arm.pivot = Eigen::Vector2d(90.0, 0.0);
+    arm.armLength = 70.0;
+    const FollowerModel swinging = FollowerModel::build(disc.contour, arm).value();
+    DynamicsSpec d = *disc.project.dynamics;
+    using K = DynamicsKey;
+    for (K key :
+         {K::MassKg, K::SpringRateNPerMm, K::SpringPreloadN, K::ExternalForceN, K::DampingNsPerM}) {
+        d[key].reset();
+    }
+    d[K::InertiaKgM2] = 0.002;
+    d[K::SpringRateNmPerRad] = 5.0;
+    d[K::SpringPreloadNm] = 1.5;
+    d[K::DampingNmsPerRad] = 0.01;
+    const ForceModel model = ForceModel::of(d, arm);
+    ASSERT_TRUE(model.swinging);
+    expectBatchIsForceAt(swinging, model, kOmega);
+    // The arm's moment by hand at one angle: M = I·λ̈ + ct·λ̇ + kt·λ + M0, λ in rad.
+    const FollowerState st = swinging.at(1.0, kOmega);
+    const auto l = swinging.liftPhi(st);  // degrees, per rad
+    const double rad = kPi / 180.0;
+    const double moment =
+        0.002 * l[2] * rad * kOmega * kOmega + 0.01 * l[1] * rad * kOmega + 5.0 * l[0] * rad + 1.5;
+    const ForcePoint f = forceAt(model, forceMotion(swinging, st), kOmega);
+    EXPECT_NEAR(f.load, moment, 1e-12);
+    EXPECT_NEAR(f.normal, moment / (0.070 * std::cos(st.pressureAngle)), 1e-9);
+    EXPECT_TRUE(std::isnan(f.lateral));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "common/angles.h"
 #include "common/golden_section.h"
+#include "common/simd.h"
 #include "project/dynamics.h"
 #include "project/follower_kind.h"
 
@@ -148,18 +149,87 @@ ForceMotion sampleMotion(const FollowerModel& follower, const FollowerTurn& turn
 
 }  // namespace
 
-std::vector<ForcePoint> forcesOfTurn(const ForceModel& model, const FollowerModel& follower,
-                                     const FollowerTurn& turn, double omega) {
-    std::vector<ForcePoint> out(turn.size());
-    for (std::size_t k = 0; k < turn.size(); ++k) {
-        out[k] = forceAt(model, sampleMotion(follower, turn, k, omega), omega);
+void ForceTurn::resize(std::size_t n) {
+    for (auto* column : {&load, &normal, &torque, &stress}) column->resize(n);
+}
+
+ForcePoint ForceTurn::point(std::size_t k, const ForceModel& model, const FollowerTurn& turn,
+                            double omega) const {
+    ForcePoint f;
+    f.load = load[k];
+    f.normal = normal[k];
+    f.lateral = model.swinging ? kNaN : normal[k] * std::sin(turn.pressureAngle[k]);
+    f.torque = torque[k];
+    f.power = torque[k] * omega;
+    f.stress = stress[k];
+    f.shear = 0.30 * stress[k];
+    const double rho = turn.rhoProfile[k];
+    const double curvature = (std::isfinite(rho) ? 1.0 / rho : 0.0) + model.followerCurvature;
+    f.halfWidth = !std::isfinite(stress[k]) ? kNaN
+                  : curvature > 0.0         ? 2.0 * stress[k] / (model.modulusMpa * curvature)
+                                            : kInf;
+    return f;
+}
+
+namespace {
+
+/// The loads, normal forces and torques of n samples: q, q̇, q̈ the follower's coordinate and
+/// its time derivatives (mm or rad), lift = sign·(q − q0)·unit, its φ-derivative sign·q̇/ω.
+CAMWRIGHT_MULTIVERSION
+void loadsOfTurn(const double* __restrict q, const double* __restrict qd,
+                 const double* __restrict qdd, const double* __restrict alpha,
+                 double* __restrict load, double* __restrict normal, double* __restrict torque,
+                 std::size_t n, double m, double c, double k, double constant, double q0,
+                 double sign, double unit, double lever, double omega) {
+    const double su = sign * unit;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double f = m * su * qdd[i] + c * su * qd[i] + k * su * (q[i] - q0) + constant;
+        load[i] = f;
+        normal[i] = f / (lever * std::cos(alpha[i]));
+        torque[i] = f * su * qd[i] / omega;
     }
-    return out;
+}
+
+/// Hertz p_max of n samples (NaN where the follower has left the cam).
+CAMWRIGHT_MULTIVERSION
+void stressesOfTurn(const double* __restrict normal, const double* __restrict rhoProfile,
+                    double* __restrict stress, std::size_t n, double followerCurvature,
+                    double scale) {
+    for (std::size_t i = 0; i < n; ++i) {
+        const double rho = rhoProfile[i];
+        const double curvature = (std::abs(rho) < kInf ? 1.0 / rho : 0.0) + followerCurvature;
+        const double p = std::sqrt(std::max(normal[i] * curvature, 0.0) * scale);
+        stress[i] = normal[i] >= 0.0 ? p : kNaN;
+    }
+}
+
+}  // namespace
+
+void forcesOfTurn(const ForceModel& model, const FollowerModel& follower, const FollowerTurn& turn,
+                  double omega, ForceTurn& out) {
+    const std::size_t n = turn.size();
+    out.resize(n);
+    // lift = sign·(q − q0)·unit: mm → m on a line; on an arm ψ is in rad already.
+    const bool arm = follower.oscillating();
+    const double sign = follower.awaySign();
+    const double unit = arm ? 1.0 : 1e-3;
+    // The coordinate at lift 0: liftOf(q0) = 0 (liftOf is affine in q).
+    const double slope = follower.liftOf(1.0) - follower.liftOf(0.0);
+    const double q0 = -follower.liftOf(0.0) / slope;
+    loadsOfTurn(turn.s.data(), turn.v.data(), turn.a.data(), turn.pressureAngle.data(),
+                out.load.data(), out.normal.data(), out.torque.data(), n, model.mass, model.damping,
+                model.rate, model.preload + model.external, q0, sign, unit,
+                arm ? model.armLength : 1.0, omega);
+    if (model.hasStress) {
+        stressesOfTurn(out.normal.data(), turn.rhoProfile.data(), out.stress.data(), n,
+                       model.followerCurvature, model.modulusMpa / (kPi * model.widthMm));
+    } else {
+        std::fill(out.stress.begin(), out.stress.end(), kNaN);
+    }
 }
 
 ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follower,
-                             const FollowerTurn& turn, const std::vector<ForcePoint>& forces,
-                             double omega) {
+                             const FollowerTurn& turn, const ForceTurn& forces, double omega) {
     ForceSummary s;
     const std::size_t n = turn.size();
     if (n == 0 || forces.size() != n) return s;
@@ -169,7 +239,7 @@ ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follo
     s.minPreload = -kInf;
     double torqueSquares = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
-        const ForcePoint& f = forces[k];
+        const ForcePoint f = forces.point(k, model, turn, omega);
         const ForceMotion motion = sampleMotion(follower, turn, k, omega);
         if (const double w = jumpSpeedAt(model, motion, omega); w < s.jumpSpeed) {
             s.jumpSpeed = w;
@@ -241,7 +311,7 @@ ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follo
     }
     // The runs of samples where the load is negative, a run across the turn's end as one.
     std::size_t k = 0;
-    const auto lost = [&](std::size_t i) { return forces[i % n].load < 0.0; };
+    const auto lost = [&](std::size_t i) { return forces.load[i % n] < 0.0; };
     if (lost(0) && lost(n - 1)) {
         while (k < n && lost(k)) ++k;  // that run is closed at the end
     }

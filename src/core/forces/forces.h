@@ -92,16 +92,30 @@ struct ForceSummary {
     std::optional<double> maxStress, maxStressAt;  ///< MPa, rad; none without a contact stress
 };
 
-/// @brief The forces at every sample of a turn of `follower` (sampleFollowerTurn's), at ω.
-[[nodiscard]] std::vector<ForcePoint> forcesOfTurn(const ForceModel& model,
-                                                   const FollowerModel& follower,
-                                                   const FollowerTurn& turn, double omega);
+/// @brief The forces at every sample of a turn, column by column (the batch path: plots, CSV
+/// columns, the summary). What follows from these is not stored: lateral = normal · sin α,
+/// power = torque · ω, half-width a = 2·p / (E*·κ) and shear 0.30·p (point() gives them).
+struct ForceTurn {
+    std::vector<double> load, normal, torque;
+    std::vector<double> stress;  ///< NaN where there is none (as ForcePoint::stress)
+
+    [[nodiscard]] std::size_t size() const { return load.size(); }
+    void resize(std::size_t n);
+    /// @brief Sample k as forceAt gives it (to rounding), of the turn it was computed from.
+    [[nodiscard]] ForcePoint point(std::size_t k, const ForceModel& model, const FollowerTurn& turn,
+                                   double omega) const;
+};
+
+/// @brief The forces at every sample of `turn` (sampleFollowerTurn's of `follower`) at ω, into
+/// `out`, reusing its storage. Vectorised on the CPU's vector units (common/simd.h).
+void forcesOfTurn(const ForceModel& model, const FollowerModel& follower, const FollowerTurn& turn,
+                  double omega, ForceTurn& out);
 
 /// @brief The summary of a sampled turn (sample k at φ_k = 2π·k/n in the turning direction):
 /// the lift-off ranges to a sample, every extreme refined between samples by golden sections
 /// on the follower placed exactly.
 [[nodiscard]] ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follower,
-                                           const FollowerTurn& turn,
-                                           const std::vector<ForcePoint>& forces, double omega);
+                                           const FollowerTurn& turn, const ForceTurn& forces,
+                                           double omega);
 
 }  // namespace cam
