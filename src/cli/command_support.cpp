@@ -154,11 +154,20 @@ void writeSampleCsv(const Loaded& loaded, long long n, std::ostream& out,
 
     FollowerTurn followerTurn;
     std::string chunk(kSampleCsvHeader);
+    // With the follower's columns come the forces' when the project has dynamics.
+    std::optional<ForceModel> forces;
+    ForceTurn forceTurn;
     if (follower) {
         sampleFollowerTurn(*follower, loaded.omega, static_cast<std::size_t>(n), followerTurn);
         chunk.pop_back();
         chunk += ',';
         chunk += followerCsvColumns(*follower);
+        if (loaded.project.dynamics) {
+            forces = ForceModel::of(*loaded.project.dynamics, follower->spec());
+            forcesOfTurn(*forces, *follower, followerTurn, loaded.omega, forceTurn);
+            chunk += ',';
+            chunk += forcesCsvColumns(*forces);
+        }
         chunk += '\n';
     }
     auto flush = [&] {
@@ -174,6 +183,9 @@ void writeSampleCsv(const Loaded& loaded, long long n, std::ostream& out,
         if (follower) {
             chunk.pop_back();
             appendFollowerCsvColumns(chunk, *follower, followerTurn, k);
+            if (forces) {
+                appendForcesCsvColumns(chunk, *forces, forceTurn, followerTurn, k, loaded.omega);
+            }
             chunk += '\n';
         }
         if (chunk.size() > (1u << 20)) flush();

@@ -146,6 +146,28 @@ TEST(ExportInWindow, EveryFormatWritesWhatTheCliWrites) {
     }
 }
 
+TEST(ExportInWindow, ACsvWithForcesWritesWhatTheCliWrites) {
+    // A project with dynamics: the forces' columns follow the follower's, from the app as
+    // from the CLI (cli_tests CliForces.* check the numbers).
+    const std::string disc = test::dataPath("forces/eccentric-disc.cam.json");
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(QString::fromStdString(disc)).isEmpty());
+    test::TempDir dir;
+    const std::string cliFile = dir.file("cli.csv");
+    const auto cli =
+        test::runCli({"export", disc, "--format", "csv", "--points", "360", "--out", cliFile});
+    ASSERT_EQ(cli.exitCode, 0) << cli.err;
+    ExportRequest request;
+    request.format = ExportFormat::Csv;
+    request.csvPoints = 360;
+    request.path = QString::fromStdString(dir.file("app.csv"));
+    ASSERT_TRUE(exportAndWait(window, request).isEmpty());
+    const std::string written = test::readFile(request.path.toStdString());
+    EXPECT_NE(written.find(",axial_N,normal_N,lateral_N,torque_Nm,power_W,contact_stress_MPa\n"),
+              std::string::npos);
+    EXPECT_EQ(written, test::readFile(cliFile));
+}
+
 TEST(ExportInWindow, AFailureNamesTheProblemAndLosesNothing) {
     MainWindow window;
     ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());

@@ -41,8 +41,12 @@ Result<std::string> exportText(const Project& project, const ExportRequest& requ
             auto follower =
                 FollowerModel::build(contour.value(), project.follower.value_or(FollowerSpec{}));
             if (!follower.ok()) return follower.errors();
-            return sampleCsv(contour.value(), project.motion.omegaRadS(), points,
-                             &follower.value());
+            // With dynamics the forces' columns follow the follower's (math.md §9).
+            std::optional<ForceModel> forces;
+            if (project.dynamics)
+                forces = ForceModel::of(*project.dynamics, follower.value().spec());
+            return sampleCsv(contour.value(), project.motion.omegaRadS(), points, &follower.value(),
+                             forces ? &*forces : nullptr);
         }
         case ExportFormat::Dxf:
             return dxfDocument(contour.value(), request.dxf);

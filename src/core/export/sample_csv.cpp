@@ -56,8 +56,27 @@ void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower,
     }
 }
 
+std::string_view forcesCsvColumns(const ForceModel& model) {
+    return model.swinging ? kArmForcesCsvColumns : kForcesCsvColumns;
+}
+
+void appendForcesCsvColumns(std::string& out, const ForceModel& model, const ForceTurn& forces,
+                            const FollowerTurn& turn, std::size_t k, double omega) {
+    const ForcePoint f = forces.point(k, model, turn, omega);
+    const auto cell = [&out](double v) {
+        out += ',';
+        if (std::isfinite(v)) appendExact(out, v);  // an empty cell: no contact stress
+    };
+    cell(f.load);
+    cell(f.normal);
+    if (!model.swinging) cell(f.lateral);
+    cell(f.torque);
+    cell(f.power);
+    cell(f.stress);
+}
+
 Result<std::string> sampleCsv(const Contour& contour, double omega, std::size_t points,
-                              const FollowerModel* follower) {
+                              const FollowerModel* follower, const ForceModel* forces) {
     if (points < 1) {
         return Diagnostics{Diagnostic::make(FieldPlace{Field::Points}, DiagnosticCode::NoPoints)};
     }
@@ -71,14 +90,21 @@ Result<std::string> sampleCsv(const Contour& contour, double omega, std::size_t 
         text.pop_back();  // the line end
         text += ',';
         text += followerCsvColumns(*follower);
+        if (forces) {
+            text += ',';
+            text += forcesCsvColumns(*forces);
+        }
         text += '\n';
     }
+    ForceTurn forceTurn;
+    if (follower && forces) forcesOfTurn(*forces, *follower, followerTurn, omega, forceTurn);
     text.reserve(text.size() + turn.size() * (follower ? 460 : 300));
     for (std::size_t k = 0; k < turn.size(); ++k) {
         appendSampleCsvRow(text, turn, k);
         if (follower) {
             text.pop_back();
             appendFollowerCsvColumns(text, *follower, followerTurn, k);
+            if (forces) appendForcesCsvColumns(text, *forces, forceTurn, followerTurn, k, omega);
             text += '\n';
         }
     }

@@ -11,6 +11,7 @@
 #include "contour/contour.h"
 #include "follower/follower.h"
 #include "follower/follower_turn.h"
+#include "forces/forces.h"
 #include "kinematics/kinematics.h"
 
 namespace cam {
@@ -37,6 +38,23 @@ inline constexpr std::string_view kArmCsvColumns =
 void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower,
                               const FollowerTurn& turn, std::size_t k);
 
+/// @brief The forces' columns that `export --format csv` adds after the follower's when the
+/// project has dynamics (math.md §9, cli.md's `forces` names): the load along the line (N; on
+/// a swinging arm the moment, N·m), the contact normal force and (translating) the side force
+/// (N), the camshaft's torque (N·m) and power (W), and the Hertz contact stress (MPa; an empty
+/// cell for a knife edge or where the follower has left the cam).
+inline constexpr std::string_view kForcesCsvColumns =
+    "axial_N,normal_N,lateral_N,torque_Nm,power_W,contact_stress_MPa";
+inline constexpr std::string_view kArmForcesCsvColumns =
+    "moment_Nm,normal_N,torque_Nm,power_W,contact_stress_MPa";
+
+/// @brief The forces' columns for this model: kForcesCsvColumns or kArmForcesCsvColumns.
+[[nodiscard]] std::string_view forcesCsvColumns(const ForceModel& model);
+
+/// @brief Appends "," and the forces' columns of sample k (no line end).
+void appendForcesCsvColumns(std::string& out, const ForceModel& model, const ForceTurn& forces,
+                            const FollowerTurn& turn, std::size_t k, double omega);
+
 /// @brief The first sample holding a number that is not finite, located "sample K, COLUMN";
 /// none when every value is finite (a turn too fast or too big for a double).
 [[nodiscard]] std::optional<Diagnostic> firstNonFiniteSample(const SampledTurn& turn);
@@ -46,10 +64,11 @@ void appendFollowerCsvColumns(std::string& out, const FollowerModel& follower,
 void appendSampleCsvRow(std::string& out, const SampledTurn& turn, std::size_t k);
 
 /// @brief One turn at `points` instants t_k = k·T/points, header included; with a follower
-/// its columns follow the `sample` ones. Errors: a point count below 1, a value that is not
-/// finite.
+/// its columns follow the `sample` ones, and with a force model (it needs the follower) the
+/// forces' after those. Errors: a point count below 1, a value that is not finite.
 [[nodiscard]] Result<std::string> sampleCsv(const Contour& contour, double omega,
                                             std::size_t points,
-                                            const FollowerModel* follower = nullptr);
+                                            const FollowerModel* follower = nullptr,
+                                            const ForceModel* forces = nullptr);
 
 }  // namespace cam
