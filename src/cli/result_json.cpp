@@ -186,6 +186,21 @@ Json forcesAnalysisJson(const Loaded& loaded) {
     j["allowable_contact_stress_MPa"] = model.allowableMpa ? Json(*model.allowableMpa) : Json();
     j["contact_stress_ratio"] =
         s.maxStress && model.allowableMpa ? Json(*s.maxStress / *model.allowableMpa) : Json();
+    // Where the contact passes a joint and the forces jump: both sides (an arc table's s''
+    // jumps at every joint).
+    Json jumps = Json::array();
+    for (const ForceJump& jump : s.jumps) {
+        const auto sides = [](double before, double after) {
+            return Json::array({finiteOrNull(before), finiteOrNull(after)});
+        };
+        jumps.push_back(
+            {{"phi_deg", degrees(jump.phi)},
+             {model.swinging ? "moment_Nm" : "axial_N", sides(jump.before.load, jump.after.load)},
+             {"normal_N", sides(jump.before.normal, jump.after.normal)},
+             {"torque_Nm", sides(jump.before.torque, jump.after.torque)},
+             {"contact_stress_MPa", sides(jump.before.stress, jump.after.stress)}});
+    }
+    j["jumps_at_joints"] = std::move(jumps);
     return j;
 }
 

@@ -50,6 +50,7 @@ TEST(CliForces, AnalyzeReportsTheTurnsJumpSpeedPreloadAndPeaks) {
     EXPECT_NEAR(f["jump_speed_rpm"].get<double>(), 1197.4486, 1e-3);
     EXPECT_NEAR(f["jump_speed_at_deg"].get<double>(), 8.34, 0.01);
     EXPECT_TRUE(f["lift_off_deg"].empty());
+    EXPECT_TRUE(f["jumps_at_joints"].empty());  // one circle: no joint
     EXPECT_EQ(f["allowable_contact_stress_MPa"].get<double>(), 900.0);
     EXPECT_NEAR(f["contact_stress_ratio"].get<double>(),
                 f["max_contact_stress_MPa"].get<double>() / 900.0, 1e-15);

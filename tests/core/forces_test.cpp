@@ -18,6 +18,7 @@
 #include "follower/follower.h"
 #include "follower/follower_turn.h"
 #include "forces/forces.h"
+#include "io/project_json.h"
 #include "project/dynamics.h"
 
 namespace cam {
@@ -316,6 +317,57 @@ TEST(Forces, TheBatchPathIsForceAtOnALineAndOnAnArm) {
     EXPECT_NEAR(f.load, moment, 1e-12);
     EXPECT_NEAR(f.normal, moment / (0.070 * std::cos(st.pressureAngle)), 1e-9);
     EXPECT_TRUE(std::isnan(f.lateral));
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(Forces, AnArcTablesJointsMakeTheForceJumpAndBothSidesAreReported) {
+    // The bundled synthesised roller cam: tangent arcs, so s'' (and the inertia force) jumps
+    // at every joint the roller passes. Each reported side must be the limit of the load from
+    // that side: extrapolated here from four angles 1e-4 rad apart on each side.
+    auto project =
+        loadProjectFile(std::string(CAMWRIGHT_EXAMPLES) + "/synthesised-cycloidal-roller.cam.json");
+    ASSERT_TRUE(project.ok());
+    const Contour contour = Contour::build(project.value()).value();
+    const FollowerModel follower = FollowerModel::build(contour, *project.value().follower).value();
+    DynamicsSpec d;
+    d[DynamicsKey::MassKg] = 1.2;
+    d[DynamicsKey::SpringRateNPerMm] = 5.0;
+    d[DynamicsKey::SpringPreloadN] = 30.0;
+    const ForceModel model = ForceModel::of(d, *project.value().follower);
+    const double omega = project.value().motion.omegaRadS();
+    FollowerTurn turn;
+    ASSERT_TRUE(sampleFollowerTurn(follower, omega, 3600, turn));
+    ForceTurn forces;
+    forcesOfTurn(model, follower, turn, omega, forces);
+    const ForceSummary s = summarizeForces(model, follower, turn, forces, omega);
+    ASSERT_GT(s.jumps.size(), 10U);
+    const double h = 1e-4;
+    const auto load = [&](double phi) {
+        return forceAt(model, forceMotion(follower, follower.at(phi, omega)), omega).load;
+    };
+    // Cubic extrapolation to x = 0 from x = −h, −2h, −3h, −4h: 4f(−h) − 6f(−2h) + 4f(−3h) − f(−4h).
+    const auto fromLeft = [&](double phi) {
+        return 4.0 * load(phi - h) - 6.0 * load(phi - 2 * h) + 4.0 * load(phi - 3 * h) -
+               load(phi - 4 * h);
+    };
+    const auto fromRight = [&](double phi) {
+        return 4.0 * load(phi + h) - 6.0 * load(phi + 2 * h) + 4.0 * load(phi + 3 * h) -
+               load(phi + 4 * h);
+    };
+    double biggest = 0.0;
+    for (const ForceJump& j : s.jumps) {
+        const double scale = std::max(1.0, std::abs(j.before.load));
+        EXPECT_NEAR(j.before.load, fromLeft(j.phi), 1e-6 * scale) << radToDeg(j.phi);
+        EXPECT_NEAR(j.after.load, fromRight(j.phi), 1e-6 * scale) << radToDeg(j.phi);
+        biggest = std::max(biggest, std::abs(j.after.load - j.before.load));
+        EXPECT_GE(s.maxNormal, std::max(j.before.normal, j.after.normal));
+    }
+    EXPECT_GT(biggest, 1e-3);  // a real jump, not rounding
 }
 
 }  // namespace

@@ -264,6 +264,49 @@ ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follo
         }
     }
     s.rmsTorque = std::sqrt(torqueSquares / static_cast<double>(n));
+    // The joints between samples whose contact changes segment: both sides, by bisection on
+    // the segment touched.
+    double largest = 0.0;
+    for (std::size_t k = 0; k < n; ++k) largest = std::max(largest, std::abs(forces.load[k]));
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t next = (k + 1) % n;
+        if (turn.segment[k] == turn.segment[next]) continue;
+        double a = phiOf(k), b = phiOf(k) + step;
+        const std::int32_t left = turn.segment[k];
+        for (int i = 0; i < 80 && std::abs(b - a) > 1e-12; ++i) {
+            const double mid = 0.5 * (a + b);
+            (static_cast<std::int32_t>(follower.at(mid, omega).segment) == left ? a : b) = mid;
+        }
+        const FollowerState before = follower.at(a, omega), after = follower.at(b, omega);
+        ForceJump jump{0.5 * (a + b), forceAt(model, forceMotion(follower, before), omega),
+                       forceAt(model, forceMotion(follower, after), omega)};
+        if (!(std::abs(jump.after.load - jump.before.load) > 1e-9 * largest)) continue;
+        for (const auto* side : {&before, &after}) {
+            const ForceMotion motion = forceMotion(follower, *side);
+            const ForcePoint f = forceAt(model, motion, omega);
+            if (const double w = jumpSpeedAt(model, motion, omega); w < s.jumpSpeed) {
+                s.jumpSpeed = w;
+                s.jumpSpeedAt = jump.phi;
+            }
+            if (const double f0 = preloadNeededAt(model, motion, omega); f0 > s.minPreload) {
+                s.minPreload = f0;
+                s.minPreloadAt = jump.phi;
+            }
+            if (f.normal > s.maxNormal) {
+                s.maxNormal = f.normal;
+                s.maxNormalAt = jump.phi;
+            }
+            if (std::abs(f.torque) > std::abs(s.peakTorque)) {
+                s.peakTorque = f.torque;
+                s.peakTorqueAt = jump.phi;
+            }
+            if (std::isfinite(f.stress) && (!s.maxStress || f.stress > *s.maxStress)) {
+                s.maxStress = f.stress;
+                s.maxStressAt = jump.phi;
+            }
+        }
+        s.jumps.push_back(jump);
+    }
     // The extremes between samples: golden sections a step either side of the best sample, on
     // the follower placed exactly there (an arc table's joints may lie inside: the search then
     // ends at one of their sides, never on a value the turn does not take).
@@ -293,10 +336,13 @@ ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follo
     refineMax([&](const ForceMotion& m) { return forceAt(model, m, omega).normal; }, s.maxNormal,
               s.maxNormalAt);
     double peak = std::abs(s.peakTorque);
+    const double peakAt = s.peakTorqueAt;
     refineMax([&](const ForceMotion& m) { return std::abs(forceAt(model, m, omega).torque); }, peak,
               s.peakTorqueAt);
-    s.peakTorque =
-        forceAt(model, forceMotion(follower, follower.at(s.peakTorqueAt, omega)), omega).torque;
+    if (s.peakTorqueAt != peakAt) {  // found between samples (else a sample's or a joint side's)
+        s.peakTorque =
+            forceAt(model, forceMotion(follower, follower.at(s.peakTorqueAt, omega)), omega).torque;
+    }
     s.peakPower = s.peakTorque * omega;  // P = T·ω: its peak is the torque's
     if (s.maxStress) {
         double stress = *s.maxStress, at = *s.maxStressAt;

@@ -78,6 +78,13 @@ struct ForcePoint {
 [[nodiscard]] double preloadNeededAt(const ForceModel& model, const ForceMotion& motion,
                                      double omega);
 
+/// @brief Where the follower's contact passes from one contour segment to the next and the
+/// forces jump (an arc table's s'' jumps at every joint): both one-sided values.
+struct ForceJump {
+    double phi = 0.0;          ///< rad, to 1e-12
+    ForcePoint before, after;  ///< just before and just after, in the turning direction
+};
+
 /// @brief A turn's forces and what a designer releases a cam on.
 struct ForceSummary {
     std::vector<std::array<double, 2>> liftOff;  ///< rad ranges [from, to] where the load < 0
@@ -90,6 +97,9 @@ struct ForceSummary {
     double rmsTorque = 0.0;                        ///< N·m over the turn
     double peakPower = 0.0;                        ///< W (largest |P|, signed)
     std::optional<double> maxStress, maxStressAt;  ///< MPa, rad; none without a contact stress
+    /// Every joint where the load jumps by more than 1e-9 of the largest load; their one-sided
+    /// values take part in every extreme above and in the lift-off ranges.
+    std::vector<ForceJump> jumps;
 };
 
 /// @brief The forces at every sample of a turn, column by column (the batch path: plots, CSV
