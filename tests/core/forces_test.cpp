@@ -14,6 +14,7 @@
 
 #include "common/angles.h"
 #include "contour/contour.h"
+#include "design/exact_profile.h"
 #include "design/motion_design.h"
 #include "follower/follower.h"
 #include "follower/follower_turn.h"
@@ -225,6 +226,16 @@ TEST(Forces, TheTextbookFollowerLeavesTheCamAt100Degrees) {
     EXPECT_NEAR(f.load, -61.69, 5e-3);
     EXPECT_TRUE(std::isnan(f.stress));  // a knife edge has no contact stress
     EXPECT_EQ(jumpSpeedAt(model, motion, omega) < omega, true);
+    // The same from the design and its exact profile (the forces of the law itself): a radial
+    // knife on a base circle of 40 mm, tan α = s' / (Rb + s).
+    const ExactProfile profile = ExactProfile::build(design, FollowerSpec{}).value();
+    const ForceMotion law = designForceMotion(design, profile, degToRad(100.0), false);
+    const ForcePoint g = forceAt(model, law, omega);
+    EXPECT_NEAR(g.load, f.load, 1e-12);
+    const double alpha = std::atan(lift[1] / (40.0 + lift[0]));
+    EXPECT_NEAR(law.pressureAngle, alpha, 1e-12);
+    EXPECT_NEAR(g.normal, g.load / std::cos(alpha), 1e-9);
+    EXPECT_NEAR(g.torque, g.load * lift[1] * 1e-3, 1e-12);
 }
 
 TEST(Forces, JumpSpeedRootsCoverEveryCase) {

@@ -92,6 +92,14 @@ ForceMotion forceMotion(const FollowerModel& follower, const FollowerState& stat
     return {{l[0] * unit, l[1] * unit, l[2] * unit}, state.pressureAngle, state.rhoProfile};
 }
 
+ForceMotion designForceMotion(const MotionDesign& design, const ExactProfile& profile, double phi,
+                              bool swinging) {
+    const std::array<double, 4> l = design.liftAt(phi);
+    const double unit = swinging ? kPi / 180.0 : 1e-3;
+    const ProfilePoint p = profile.at(phi);
+    return {{l[0] * unit, l[1] * unit, l[2] * unit}, p.pressureAngle, p.rho};
+}
+
 double jumpSpeedAt(const ForceModel& m, const ForceMotion& motion, double omega) {
     const double a = m.mass * motion.lift[2];
     const double b = m.damping * motion.lift[1] * (omega < 0.0 ? -1.0 : 1.0);

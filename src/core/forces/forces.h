@@ -10,6 +10,8 @@
 #include <optional>
 #include <vector>
 
+#include "design/exact_profile.h"
+#include "design/motion_design.h"
 #include "follower/follower.h"
 #include "follower/follower_turn.h"
 #include "project/project.h"
@@ -67,6 +69,13 @@ struct ForcePoint {
 /// @brief The state's motion in the forces' units (the follower's lift and its φ-derivatives
 /// from `follower`).
 [[nodiscard]] ForceMotion forceMotion(const FollowerModel& follower, const FollowerState& state);
+
+/// @brief The motion the design's law asks for at cam angle φ, as the forces need it: its
+/// lift (mm → m, or on a swinging arm degrees → rad) and derivatives, and the exact profile's
+/// pressure angle and radius there — the forces of the law itself, which the arc table
+/// synthesised from it only approximates (its s'' jumps at every joint).
+[[nodiscard]] ForceMotion designForceMotion(const MotionDesign& design, const ExactProfile& profile,
+                                            double phi, bool swinging);
 
 /// @brief The speed (rad/s, ≥ 0) above which the load at this angle turns negative: the
 /// smallest positive root W of m·λ''·W² + c·λ'·sgn(ω)·W + (k·λ + F0 + Fe) = 0; 0 when the load
