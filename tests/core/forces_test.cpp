@@ -192,6 +192,11 @@ TEST(Forces, TheLeastPreloadJustKeepsTheMarginAtZero) {
     ASSERT_FALSE(s.liftOff.empty());
     for (const auto& [from, to] : s.liftOff) {
         for (double phi = from; phi <= to; phi += 1e-3) EXPECT_LT(discLoad(phi, w), 1e-6);
+        // Its ends are where the closed form's load crosses 0.
+        EXPECT_LT(discLoad(from, w), 0.0);
+        EXPECT_GE(discLoad(from - 1e-9, w), 0.0);
+        EXPECT_LT(discLoad(to, w), 0.0);
+        EXPECT_GE(discLoad(to + 1e-9, w), 0.0);
     }
 }
 

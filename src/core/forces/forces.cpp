@@ -379,7 +379,25 @@ ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follo
         while (k < n + skipped && lost(k)) ++k;
         s.liftOff.push_back({phiOf(from), phiOf(k - 1)});
     }
-    if (skipped == n) s.liftOff = {{0.0, phiOf(n - 1)}};
+    if (skipped == n) {
+        s.liftOff = {{0.0, phiOf(n - 1)}};
+        return s;
+    }
+    // Each end where the load crosses 0, bisected between the samples either side of it.
+    const auto loadAt = [&](double phi) {
+        return forceAt(model, forceMotion(follower, follower.at(phi, omega)), omega).load;
+    };
+    const auto crossing = [&](double held, double lost) {
+        for (int i = 0; i < 80 && std::abs(lost - held) > 1e-12; ++i) {
+            const double mid = 0.5 * (held + lost);
+            (loadAt(mid) < 0.0 ? lost : held) = mid;
+        }
+        return lost;
+    };
+    for (auto& [from, to] : s.liftOff) {
+        from = crossing(from - step, from);
+        to = crossing(to + step, to);
+    }
     return s;
 }
 

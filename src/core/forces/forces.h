@@ -96,12 +96,13 @@ struct ForceJump {
 
 /// @brief A turn's forces and what a designer releases a cam on.
 struct ForceSummary {
-    std::vector<std::array<double, 2>> liftOff;  ///< rad ranges [from, to] where the load < 0
-    double jumpSpeed = 0.0;                      ///< rad/s, the smallest over the turn (+∞: none)
-    double jumpSpeedAt = 0.0;                    ///< rad
-    double minPreload = 0.0;                     ///< N or N·m (the largest preloadNeededAt)
-    double minPreloadAt = 0.0;                   ///< rad
-    double maxNormal = 0.0, maxNormalAt = 0.0;   ///< N, rad
+    /// rad ranges [from, to] where the load < 0 (its first and last angle with load < 0)
+    std::vector<std::array<double, 2>> liftOff;
+    double jumpSpeed = 0.0;                     ///< rad/s, the smallest over the turn (+∞: none)
+    double jumpSpeedAt = 0.0;                   ///< rad
+    double minPreload = 0.0;                    ///< N or N·m (the largest preloadNeededAt)
+    double minPreloadAt = 0.0;                  ///< rad
+    double maxNormal = 0.0, maxNormalAt = 0.0;  ///< N, rad
     double peakTorque = 0.0, peakTorqueAt = 0.0;   ///< N·m (largest |T|, signed), rad
     double rmsTorque = 0.0;                        ///< N·m over the turn
     double peakPower = 0.0;                        ///< W (largest |P|, signed)
@@ -131,8 +132,8 @@ void forcesOfTurn(const ForceModel& model, const FollowerModel& follower, const 
                   double omega, ForceTurn& out);
 
 /// @brief The summary of a sampled turn (sample k at φ_k = 2π·k/n in the turning direction):
-/// the lift-off ranges to a sample, every extreme refined between samples by golden sections
-/// on the follower placed exactly.
+/// the lift-off ranges to 1e-12 rad (bisected on the load's sign), every extreme refined between
+/// samples by golden sections on the follower placed exactly.
 [[nodiscard]] ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follower,
                                            const FollowerTurn& turn, const ForceTurn& forces,
                                            double omega);
