@@ -48,8 +48,8 @@ TEST(ValidFiles, ReferenceCamsAndExamplesLoad) {
 }
 
 TEST(ValidFiles, TheCorpusControlsLoad) {
-    for (const char* name :
-         {"valid-base.cam.json", "valid-bom.cam.json", "valid-design.cam.json"}) {
+    for (const char* name : {"valid-base.cam.json", "valid-bom.cam.json", "valid-design.cam.json",
+                             "valid-dynamics.cam.json"}) {
         const auto p = loadProjectFile(test::dataPath(std::string("invalid/") + name));
         EXPECT_TRUE(p.ok()) << name << ": " << (p.ok() ? "" : p.errors().front().text());
     }
@@ -57,6 +57,9 @@ TEST(ValidFiles, TheCorpusControlsLoad) {
     ASSERT_TRUE(design.ok());
     ASSERT_TRUE(design.value().design);
     EXPECT_EQ(design.value().design->segments[2].law, MotionLawType::Poly5);
+    const auto dynamics = loadProjectFile(test::dataPath("invalid/valid-dynamics.cam.json"));
+    ASSERT_TRUE(dynamics.ok());
+    ASSERT_TRUE(dynamics.value().dynamics);
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Independent reference check of the invalid-project corpus (no C++ needed).
 
-Runs a from-scratch Python reading of project-format.md / math.md §1 over every
-file listed in cases.json and over the valid controls, and checks that
+Runs a from-scratch Python reading of project-format.md / math.md §1, §8, §9 over
+every file listed in cases.json and over the valid controls, and checks that
   * the valid controls produce no problem at all,
   * every case reports its manifest location (exactly, as a location),
   * files meant to be syntactically broken fail strict JSON parsing and all
@@ -398,6 +398,66 @@ def validate(doc, probs):
             probs.add("machining.tool_radius", f"must be >= 0 (got {v})")
     if "design" in doc:
         check_design(doc["design"], probs)
+    if "dynamics" in doc:
+        check_dynamics(doc["dynamics"], doc.get("follower"), probs)
+
+
+# project-format.md's `dynamics` row and math.md §9. Each key's rule: "pos" > 0, "nonneg" >= 0,
+# "any" finite of either sign; every value at most DYN_MAX in magnitude.
+DYN_MAX = 1e12
+DYN_TRANSLATING = {"mass_kg": "pos", "spring_rate_N_per_mm": "pos", "spring_preload_N": "any",
+                   "external_force_N": "any", "damping_Ns_per_m": "nonneg"}
+DYN_ARM = {"inertia_kg_m2": "pos", "spring_rate_Nm_per_rad": "pos", "spring_preload_Nm": "any",
+           "external_moment_Nm": "any", "damping_Nms_per_rad": "nonneg"}
+DYN_CONTACT = {"contact_width_mm": "pos", "allowable_contact_stress_MPa": "pos",
+               "spring_safety_factor": "pos"}
+DYN_MATERIALS = ("cam_material", "follower_material")
+
+
+def dyn_number(o, key, loc, rule, probs):
+    v = number(o, key, loc, probs)
+    if v is None:
+        return
+    if abs(v) > DYN_MAX:
+        probs.add(loc, f"magnitude must be at most {DYN_MAX:g} (got {v:g})")
+    elif rule == "pos" and not v > 0:
+        probs.add(loc, f"must be > 0 (got {v:g})")
+    elif rule == "nonneg" and not v >= 0:
+        probs.add(loc, f"must be >= 0 (got {v:g})")
+
+
+def check_dynamics(d, follower, probs):
+    """The follower train and the contact: the translating keys only on a translating follower
+    (the default, also with no follower at all), the arm's keys only on an oscillating one;
+    materials are {E_MPa, poisson}, both required; nothing else is allowed."""
+    if not isinstance(d, dict):
+        probs.add("dynamics", "must be an object")
+        return
+    motion = follower.get("motion", "translating") if isinstance(follower, dict) else "translating"
+    for key in d:
+        at = f"dynamics.{key}"
+        if key in DYN_MATERIALS:
+            mat = d[key]
+            if not isinstance(mat, dict):
+                probs.add(at, f"must be an object {{E_MPa, poisson}} (got {json.dumps(mat)})")
+                continue
+            for k in mat:
+                if k not in ("E_MPa", "poisson"):
+                    probs.add(f"{at}.{k}", "unknown key")
+            dyn_number(mat, "E_MPa", f"{at}.E_MPa", "pos", probs)
+            nu = number(mat, "poisson", f"{at}.poisson", probs)
+            if nu is not None and not 0 <= nu < 0.5:
+                probs.add(f"{at}.poisson", f"must be in [0, 0.5) (got {nu:g})")
+            continue
+        rule = DYN_TRANSLATING.get(key) or DYN_ARM.get(key) or DYN_CONTACT.get(key)
+        if rule is None:
+            probs.add(at, "unknown key")
+            continue
+        if key in DYN_ARM and motion == "translating":
+            probs.add(at, "a swinging arm's key, but the follower translates")
+        elif key in DYN_TRANSLATING and motion == "oscillating":
+            probs.add(at, "a translating follower's key, but the follower swings on an arm")
+        dyn_number(d, key, at, rule, probs)
 
 
 # The laws of math.md §8 and "line" (constant velocity), which the spec does not list yet.
@@ -481,7 +541,8 @@ def check_file(path):
 def main():
     verbose = "-v" in sys.argv
     failures = 0
-    for name in ("valid-base.cam.json", "valid-bom.cam.json", "valid-design.cam.json"):
+    for name in ("valid-base.cam.json", "valid-bom.cam.json", "valid-design.cam.json",
+                 "valid-dynamics.cam.json"):
         probs, _ = check_file(os.path.join(HERE, name))
         print(f"{'ok ' if not probs else 'BAD'} {name}: valid control" +
               ("" if not probs else f" -> {probs}"))
