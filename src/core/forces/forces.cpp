@@ -106,24 +106,27 @@ double jumpSpeedAt(const ForceModel& m, const ForceMotion& motion, double omega)
     const double c = m.rate * motion.lift[0] + m.preload + m.external;
     if (c < 0.0) return 0.0;
     // The load at speed W is F(W) = a·W² + b·W + c: the first W > 0 where it turns negative.
-    std::vector<double> roots;
-    if (c == 0.0) roots.push_back(0.0);
+    // At most three candidates (0, and the two roots): on the stack, as this runs per sample.
+    std::array<double, 3> roots{};
+    std::size_t count = 0;
+    if (c == 0.0) roots[count++] = 0.0;
     if (a == 0.0) {
-        if (b != 0.0) roots.push_back(-c / b);
+        if (b != 0.0) roots[count++] = -c / b;
     } else {
         const double disc = b * b - 4.0 * a * c;
         if (disc >= 0.0) {
             const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
             if (q != 0.0) {
-                roots.push_back(q / a);
-                roots.push_back(c / q);
+                roots[count++] = q / a;
+                roots[count++] = c / q;
             } else {
-                roots.push_back(0.0);
+                roots[count++] = 0.0;
             }
         }
     }
-    std::sort(roots.begin(), roots.end());
-    for (const double r : roots) {
+    std::sort(roots.begin(), roots.begin() + static_cast<std::ptrdiff_t>(count));
+    for (std::size_t i = 0; i < count; ++i) {
+        const double r = roots[i];
         if (r < 0.0) continue;
         const double slope = 2.0 * a * r + b;
         if (slope < 0.0 || (slope == 0.0 && a < 0.0)) return r;
