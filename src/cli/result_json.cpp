@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "evaluation/force_evaluation.h"
 #include "follower/follower_analysis.h"
 #include "project/follower_kind.h"
 
@@ -159,13 +160,11 @@ Json forcesJson(const ForceModel& model, const ForcePoint& f) {
 }
 
 Json forcesAnalysisJson(const Loaded& loaded) {
-    const ForceModel model = ForceModel::of(*loaded.project.dynamics, loaded.follower.spec());
-    FollowerTurn turn;
-    const auto n = static_cast<std::size_t>(loaded.project.samplesPerTurnOrDefault());
-    sampleFollowerTurn(loaded.follower, loaded.omega, n, turn);
-    ForceTurn forces;
-    forcesOfTurn(model, loaded.follower, turn, loaded.omega, forces);
-    const ForceSummary s = summarizeForces(model, loaded.follower, turn, forces, loaded.omega);
+    ForceEvaluation evaluation;
+    evaluateForces(loaded.project, loaded.follower, loaded.omega, evaluation);
+    const ForceModel& model = evaluation.model;
+    const ForceSummary& s = evaluation.summary;
+    const std::size_t n = evaluation.turn.size();
     const auto degrees = [](double rad) { return radToDeg(rad); };
     Json liftOff = Json::array();
     for (const auto& [from, to] : s.liftOff) liftOff.push_back({degrees(from), degrees(to)});

@@ -46,6 +46,19 @@ bool evaluateDesign(const Project& project, const ProjectEvaluation& evaluation,
          exact.value().problems(project.design->strictPressureAngle)) {
         out.notes.push_back(problem.what);
     }
+    if (project.dynamics) {
+        const ForceModel model = ForceModel::of(*project.dynamics, follower);
+        out.lawForces.resize(n + 1);
+        for (std::size_t k = 0; k <= n; ++k) {
+            const double phi = omega * period * static_cast<double>(k % n) / static_cast<double>(n);
+            const ForcePoint f =
+                forceAt(model, designForceMotion(design, exact.value(), phi, out.swinging), omega);
+            out.lawForces.load[k] = f.load;
+            out.lawForces.normal[k] = f.normal;
+            out.lawForces.torque[k] = f.torque;
+            out.lawForces.stress[k] = f.stress;
+        }
+    }
     if (cancelRequested(cancel)) return false;
     // No follower placed: no contour, or one it cannot ride (then followerProblems says why).
     if (!evaluation.follower) {

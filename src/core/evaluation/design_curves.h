@@ -12,6 +12,7 @@
 #include "common/diagnostic.h"
 #include "design/motion_law.h"
 #include "evaluation/evaluation.h"
+#include "forces/forces.h"
 
 namespace cam {
 
@@ -31,6 +32,11 @@ struct DesignEvaluation {
     std::array<std::vector<double>, 4> onContour;
     /// The largest |onContour − law| of lift, velocity and acceleration over those samples.
     std::array<double, 3> maxError{};
+    /// With the project's `dynamics`: the forces the law itself asks for (its exact s'' and
+    /// the exact profile's pressure angle and curvature) at the same n + 1 steps — beside the
+    /// forces on the synthesised arcs, the price of the arcs in newtons. Empty without
+    /// dynamics, or when the design has no exact profile.
+    ForceTurn lawForces;
     /// Why onContour is empty while there is a contour (the follower cannot ride it).
     Diagnostics onContourErrors;
 };
