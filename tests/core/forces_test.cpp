@@ -6,7 +6,12 @@
 //   values;
 // - the jump speed by sweeping the speed until the load turns negative somewhere, no roots;
 // - the least preload by its definition: with it the margin is never below 0 and touches 0;
-// - the textbook exercise of math.md §9 (cycloidal rise, 1000 rpm) on its motion law.
+// - the textbook exercise of math.md §9 (cycloidal rise, 1000 rpm) on its motion law;
+// - a flat face on the same disc: its position is the circle's support function 30 + 5 cos φ,
+//   α = 0, the torque by the power balance, Hertz with R' = 30 and two materials;
+// - a roller on a swinging arm on the same disc: the arm's angle by the circle–circle
+//   intersection, its derivatives by 7-point central differences, the moment of §9, the
+//   normal force from the moment about the pivot, the torque by the power balance.
 
 #include <gtest/gtest.h>
 
@@ -384,6 +389,167 @@ TEST(Forces, AnArcTablesJointsMakeTheForceJumpAndBothSidesAreReported) {
         EXPECT_GE(s.maxNormal, std::max(j.before.normal, j.after.normal));
     }
     EXPECT_GT(biggest, 1e-3);  // a real jump, not rounding
+}
+
+TEST(Forces, AFlatFaceOnTheEccentricDiscIsItsSupportFunction) {
+    // Reference: the face's position is the support function of the circle of R 30 about
+    // (5, 0) in the direction u = (cos φ, sin φ) of its line, h = 30 + 5 cos φ, so by hand
+    // λ = h − min h = 5 (1 + cos φ), λ' = −5 sin φ, λ'' = −5 cos φ (mm); the load of math.md
+    // §9 from them; α = 0, so F_n = F; the torque from the power balance T·ω = F·λ̇; the Hertz
+    // stress of a flat on the circle (R' = R) as p = √(F_n / (π b R (1/E*))) with two different
+    // materials. Nothing of the model's placement (support pieces) or of forceAt is used.
+    Disc disc;
+    FollowerSpec flat;
+    flat.type = FollowerType::Flat;
+    const FollowerModel follower = FollowerModel::build(disc.contour, flat).value();
+    DynamicsSpec d = *disc.project.dynamics;
+    d[DynamicsKey::FollowerModulusMpa] = 120000.0;  // a cast-iron face on the steel disc
+    d[DynamicsKey::FollowerPoisson] = 0.25;
+    const ForceModel model = ForceModel::of(d, flat);
+    const double soft = (1.0 - 0.3 * 0.3) / 210000.0 + (1.0 - 0.25 * 0.25) / 120000.0;  // 1/E*
+    EXPECT_NEAR(follower.minS(), 25.0, 1e-12);
+    // Exact but for rounding: a few ulps of the largest term (about 40 N).
+    const auto near = [](double value, double expected) {
+        return std::abs(value - expected) <= 1e-12 * std::max(1.0, std::abs(expected));
+    };
+    for (const double w : {kOmega, -kOmega}) {
+        for (const double deg : {17.0, 100.0, 250.0}) {
+            const double phi = degToRad(deg), cs = std::cos(phi), sn = std::sin(phi);
+            const FollowerState st = follower.at(phi, w);
+            // The convention first: the face is at h along u and touches the circle at C + R·u.
+            EXPECT_NEAR(st.s, 30.0 + 5.0 * cs, 1e-12) << deg;
+            EXPECT_NEAR((st.contact - Eigen::Vector2d(5.0 + 30.0 * cs, 30.0 * sn)).norm(), 0.0,
+                        1e-12)
+                << deg;
+            const double lift = 5.0e-3 * (1.0 + cs), lift1 = -5.0e-3 * sn, lift2 = -5.0e-3 * cs;
+            const double load = 0.5 * w * w * lift2 + 10.0 * w * lift1 + 2000.0 * lift + 25.0;
+            const double torque = load * lift1;
+            const double stress = std::sqrt(load / (kPi * 12.0 * 30.0 * soft));
+            const ForcePoint f = forceAt(model, forceMotion(follower, st), w);
+            EXPECT_PRED2(near, f.load, load) << deg << ' ' << w;
+            EXPECT_PRED2(near, f.normal, load) << deg << ' ' << w;
+            EXPECT_PRED2(near, f.lateral, 0.0) << deg << ' ' << w;
+            EXPECT_PRED2(near, f.torque, torque) << deg << ' ' << w;
+            EXPECT_PRED2(near, f.power, torque * w) << deg << ' ' << w;
+            EXPECT_PRED2(near, f.stress, stress) << deg << ' ' << w;
+            EXPECT_PRED2(near, f.halfWidth, std::sqrt(4.0 * 30.0 * load * soft / (12.0 * kPi)))
+                << deg << ' ' << w;
+            EXPECT_PRED2(near, f.shear, 0.30 * stress) << deg << ' ' << w;
+        }
+    }
+}
+
+/// A roller of 8 on an arm of 70 about the pivot (80, 40) (follower frame) on the eccentric
+/// disc, in closed form: with the pivot turned by φ, P = 89.44·(cos(φ + φ0), sin(φ + φ0)), the
+/// centre X = P + L·(cos Θ, sin Θ) on the pitch circle |X − C| = 38 about C = (5, 0); with
+/// D = P − C, D·(cos Θ, sin Θ) = (38² − |D|² − L²) / (2L) = K, so Θ = δ ∓ acos(K / |D|), δ the
+/// direction of D. Between the two roots the arm's circle is inside the pitch circle; the
+/// contact is the root past which swinging away (ψ growing for "ccw", σ = +1; falling for "cw")
+/// leaves it: Θ = δ − σ·acos(K / |D|). θ = σ·(Θ − φ − β), β the direction pivot → cam centre.
+struct EccentricArm {
+    Eigen::Vector2d pivot, centre;
+    double theta = 0.0;  ///< rad, growing away from the cam
+};
+
+constexpr double kArmLength = 70.0;
+constexpr double kArmPivotX = 80.0, kArmPivotY = 40.0;
+
+EccentricArm eccentricArm(double phi, double sigma) {
+    const double cs = std::cos(phi), sn = std::sin(phi);
+    EccentricArm a;
+    a.pivot = Eigen::Vector2d(cs * kArmPivotX - sn * kArmPivotY, sn * kArmPivotX + cs * kArmPivotY);
+    const Eigen::Vector2d D = a.pivot - Eigen::Vector2d(5.0, 0.0);
+    const double K = (38.0 * 38.0 - D.squaredNorm() - kArmLength * kArmLength) / (2.0 * kArmLength);
+    const double big = std::atan2(D.y(), D.x()) - sigma * std::acos(K / D.norm());
+    a.centre = a.pivot + kArmLength * Eigen::Vector2d(std::cos(big), std::sin(big));
+    const double beta = std::atan2(-kArmPivotY, -kArmPivotX);
+    a.theta = std::remainder(sigma * (big - phi - beta), kTwoPi);
+    return a;
+}
+
+TEST(Forces, ARollerOnASwingingArmOnTheEccentricDiscIsTheClosedForm) {
+    // Reference: the arm's angle θ(φ) of eccentricArm (circle–circle, no jets), λ = θ − min θ
+    // (the smallest by golden sections on the closed form), λ' and λ'' by 7-point central
+    // differences of θ with h = 0.01 (truncation h⁶·θ⁽⁷⁾/140 and h⁶·θ⁽⁸⁾/560, below 1e-13 here;
+    // rounding a few 1e-15/h², up to 3e-11 in λ'': hence 1e-9 on λ'' and 1e-8 relative on the
+    // forces, which a 1e-6 error in λ'' already fails); the moment of math.md §9, the torque from
+    // the power balance T·ω = M·λ̇, the normal force from the moment about the pivot, N = M / |(X −
+    // P) × n| with n = (X − C)/|X − C| (no pressure angle), the stress with 1/R' = 1/30 + 1/8. Both
+    // arm sides and both turning directions.
+    Disc disc;
+    DynamicsSpec d = *disc.project.dynamics;
+    using K = DynamicsKey;
+    d[K::InertiaKgM2] = 0.002;
+    d[K::SpringRateNmPerRad] = 5.0;
+    d[K::SpringPreloadNm] = 1.5;
+    d[K::ExternalMomentNm] = 0.3;
+    d[K::DampingNmsPerRad] = 0.05;
+    const double soft = 2.0 * (1.0 - 0.09) / 210000.0;  // 1/E*
+    const double h = 0.01;
+    for (const ArmSide side : {ArmSide::Ccw, ArmSide::Cw}) {
+        FollowerSpec spec = *disc.project.follower;  // the roller of 8
+        spec.motion = FollowerMotion::Oscillating;
+        spec.pivot = Eigen::Vector2d(kArmPivotX, kArmPivotY);
+        spec.armLength = kArmLength;
+        spec.arm = side;
+        const double sigma = side == ArmSide::Ccw ? 1.0 : -1.0;
+        const FollowerModel follower = FollowerModel::build(disc.contour, spec).value();
+        const ForceModel model = ForceModel::of(d, spec);
+        const auto theta = [&](double phi) { return eccentricArm(phi, sigma).theta; };
+        // The smallest θ: the best of 3600 samples, then golden sections round it.
+        double at = 0.0;
+        for (int i = 1; i < 3600; ++i) {
+            if (theta(kTwoPi * i / 3600) < theta(at)) at = kTwoPi * i / 3600;
+        }
+        double lo = at - kTwoPi / 3600, hi = at + kTwoPi / 3600;
+        const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+        while (hi - lo > 1e-12) {
+            const double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+            if (theta(x1) < theta(x2)) {
+                hi = x2;
+            } else {
+                lo = x1;
+            }
+        }
+        const double least = theta(0.5 * (lo + hi));
+        for (const double w : {kOmega, -kOmega}) {
+            for (const double deg : {17.0, 100.0, 250.0}) {
+                const double phi = degToRad(deg);
+                const EccentricArm arm = eccentricArm(phi, sigma);
+                const FollowerState st = follower.at(phi, w);
+                // The branch: the model's roller centre is the closed form's.
+                EXPECT_NEAR((st.center - arm.centre).norm(), 0.0, 1e-9) << deg;
+                const auto t = [&](int k) { return theta(phi + k * h); };
+                const double lift = arm.theta - least;
+                const double lift1 =
+                    (-t(-3) + 9.0 * t(-2) - 45.0 * t(-1) + 45.0 * t(1) - 9.0 * t(2) + t(3)) /
+                    (60.0 * h);
+                const double lift2 = (2.0 * t(-3) - 27.0 * t(-2) + 270.0 * t(-1) - 490.0 * t(0) +
+                                      270.0 * t(1) - 27.0 * t(2) + 2.0 * t(3)) /
+                                     (180.0 * h * h);
+                const ForceMotion motion = forceMotion(follower, st);
+                EXPECT_NEAR(motion.lift[0], lift, 1e-12) << deg;
+                EXPECT_NEAR(motion.lift[1], lift1, 1e-11) << deg;
+                EXPECT_NEAR(motion.lift[2], lift2, 1e-9) << deg;
+                const double moment =
+                    0.002 * w * w * lift2 + 0.05 * w * lift1 + 5.0 * lift + 1.5 + 0.3;  // N·m
+                const Eigen::Vector2d n = (arm.centre - Eigen::Vector2d(5.0, 0.0)).normalized();
+                const Eigen::Vector2d lever = (arm.centre - arm.pivot) * 1e-3;  // m
+                const double normal = moment / std::abs(lever.x() * n.y() - lever.y() * n.x());
+                const double stress =
+                    std::sqrt(normal * (1.0 / 30.0 + 1.0 / 8.0) / (kPi * 12.0 * soft));
+                const ForcePoint f = forceAt(model, motion, w);
+                EXPECT_NEAR(f.load, moment, 1e-8 * std::abs(moment)) << deg << ' ' << w;
+                EXPECT_NEAR(f.normal, normal, 1e-8 * normal) << deg << ' ' << w;
+                EXPECT_TRUE(std::isnan(f.lateral));
+                EXPECT_NEAR(f.torque, moment * lift1, 1e-8 * std::abs(moment * lift1))
+                    << deg << ' ' << w;
+                EXPECT_NEAR(f.power, moment * lift1 * w, 1e-8 * std::abs(moment * lift1 * w))
+                    << deg << ' ' << w;
+                EXPECT_NEAR(f.stress, stress, 1e-8 * stress) << deg << ' ' << w;
+            }
+        }
+    }
 }
 
 }  // namespace
