@@ -2064,6 +2064,11 @@
         <translation>Stößel ändern</translation>
     </message>
     <message>
+        <location line="+4" />
+        <source>Change dynamics</source>
+        <translation>Dynamik ändern</translation>
+    </message>
+    <message>
         <location line="+5" />
         <source>Change machining limits</source>
         <translation>Bearbeitungsgrenzen ändern</translation>
@@ -2511,12 +2516,12 @@
 <context>
     <name>cam::DisplayQuantity</name>
     <message>
-        <location filename="../../src/app/widgets/quantity_format.cpp" line="+30" />
+        <location filename="../../src/app/widgets/quantity_format.cpp" line="+33" />
         <source>(%1, %2)</source>
         <translation>(%1; %2)</translation>
     </message>
     <message>
-        <location filename="../../src/app/widgets/quantity_format.h" line="+58" />
+        <location filename="../../src/app/widgets/quantity_format.h" line="+62" />
         <location line="+23" />
         <source>°</source>
         <translation>°</translation>
@@ -2574,11 +2579,31 @@
         <source>°/s²</source>
         <translation>°/s²</translation>
     </message>
+    <message>
+        <location line="+5" />
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>N·m</source>
+        <translation>N·m</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>W</source>
+        <translation>W</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>MPa</source>
+        <translation>MPa</translation>
+    </message>
 </context>
 <context>
     <name>cam::DockLayout</name>
     <message>
-        <location filename="../../src/app/window/dock_layout.cpp" line="+74" />
+        <location filename="../../src/app/window/dock_layout.cpp" line="+75" />
         <source>Control Points</source>
         <translation>Kontrollpunkte</translation>
     </message>
@@ -2598,6 +2623,16 @@
         <translation>Der Stößel und seine Auslegungsprüfungen (Strg+L)</translation>
     </message>
     <message>
+        <location line="+4" />
+        <source>Forces</source>
+        <translation>Kräfte</translation>
+    </message>
+    <message>
+        <location line="+15" />
+        <source>Forces: the spring, the jump speed, torque and contact stress (Ctrl+F)</source>
+        <translation>Kräfte: die Feder, die Abhebedrehzahl, Drehmoment und Kontaktpressung (Strg+F)</translation>
+    </message>
+    <message>
         <location line="+9" />
         <source>Motion Design</source>
         <translation>Bewegungsentwurf</translation>
@@ -2608,7 +2643,7 @@
         <translation>Die Kontur aus der Bewegung des Stößels entwerfen (Strg+D)</translation>
     </message>
     <message>
-        <location line="+101" />
+        <location line="+114" />
         <source>&lt;b&gt;Segments&lt;/b&gt;: the contour as a table, one row per arc, line or spline piece. Each owns a polar window [φ start, φ end) of the turn; together they cover one turn. Type into a cell and press Enter; Ins inserts, Del deletes. A red cell's tooltip names its problem. F1: the user guide's section on the table.</source>
         <translation>&lt;b&gt;Segmente&lt;/b&gt;: die Kontur als Tabelle, eine Zeile je Bogen, Gerade oder Spline-Stück. Jedes besitzt ein Polarfenster [φ Anfang, φ Ende) der Umdrehung; zusammen decken sie eine Umdrehung ab. In eine Zelle tippen und Eingabe drücken; Einfg fügt ein, Entf löscht. Der Tooltip einer roten Zelle nennt ihr Problem. F1: der Abschnitt des Handbuchs über die Tabelle.</translation>
     </message>
@@ -2648,7 +2683,12 @@
         <translation>&lt;b&gt;Stößel&lt;/b&gt;: Schneide, Rolle oder Flachstößel, geradegeführt oder am Schwinghebel, und seine Prüfungen: Druckwinkel, Krümmung, Unterschnitt, Erreichbarkeit.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
+        <source>&lt;b&gt;Forces&lt;/b&gt;: the follower's mass, its spring, the load and the materials, and what they give over the turn: where the follower leaves the cam, the speed at which it would, the least preload, the torque on the camshaft and the contact stress against the allowable.</source>
+        <translation>&lt;b&gt;Kräfte&lt;/b&gt;: die Masse des Stößels, seine Feder, die Last und die Werkstoffe, und was daraus über die Umdrehung folgt: wo der Stößel von der Kurve abhebt, bei welcher Drehzahl er es täte, die kleinste Vorspannkraft, das Drehmoment an der Kurvenwelle und die Kontaktpressung gegenüber der zulässigen.</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>&lt;b&gt;Motion Design&lt;/b&gt;: the follower's motion as motion laws over the turn; Synthesize Contour (F6) makes the cam from it.</source>
         <translation>&lt;b&gt;Bewegungsentwurf&lt;/b&gt;: die Bewegung des Stößels als Bewegungsgesetze über der Umdrehung; Kontur synthetisieren (F6) macht daraus die Scheibe.</translation>
     </message>
@@ -3004,7 +3044,7 @@
 <context>
     <name>cam::FollowerPanel</name>
     <message>
-        <location filename="../../src/app/views/follower_panel.cpp" line="+52" />
+        <location filename="../../src/app/views/follower_panel.cpp" line="+51" />
         <source>What touches the cam (math.md §7)</source>
         <translation>Was die Kurvenscheibe berührt (math.md §7)</translation>
     </message>
@@ -3197,17 +3237,17 @@
         <translation>Größter Druckwinkel im Hub: %1 bei %2 (Grenze %3)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>Largest pressure angle on return: %1 at %2 (limit %3)</source>
         <translation>Größter Druckwinkel im Rückhub: %1 bei %2 (Grenze %3)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>Largest pressure angle in a dwell: %1 at %2 (limit %3)</source>
         <translation>Größter Druckwinkel in einer Rast: %1 bei %2 (Grenze %3)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>Pressure angle beyond the limit from %1 to %2: up to %3 at %4, %5 too much</source>
         <translation>Druckwinkel über der Grenze von %1 bis %2: bis %3 bei %4, %5 zu viel</translation>
     </message>
@@ -3247,7 +3287,7 @@
         <translation>Der Stößel erreicht das Profil bei %1 nicht: er springt von %2 nach %3</translation>
     </message>
     <message>
-        <location line="+46" />
+        <location line="+47" />
         <source>Face width needed: %1</source>
         <translation>Nötige Tellerbreite: %1</translation>
     </message>
@@ -3262,6 +3302,211 @@
         <translation>
             <numerusform>%n Prüfung nicht bestanden.</numerusform>
             <numerusform>%n Prüfungen nicht bestanden.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>cam::ForcesPanel</name>
+    <message>
+        <location filename="../../src/app/views/forces_panel.cpp" line="+86" />
+        <source>Other (typed below)</source>
+        <translation>Anderer (unten eingegeben)</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>A common material: sets E and Poisson's ratio below (typical room-temperature values; a data sheet's own values can be typed instead)</source>
+        <translation>Ein gängiger Werkstoff: setzt E und die Querkontraktionszahl unten (typische Werte bei Raumtemperatur; die Werte eines Datenblatts können stattdessen eingegeben werden)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Cam material</source>
+        <translation>Werkstoff der Kurve</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Follower material</source>
+        <translation>Werkstoff des Stößels</translation>
+    </message>
+    <message>
+        <location line="+20" />
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source> (0 or — : not set)</source>
+        <translation> (0 oder —: nicht gesetzt)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>; not set: 1</source>
+        <translation>; nicht gesetzt: 1</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <source>Remove Dynamics</source>
+        <translation>Dynamik entfernen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Takes the dynamics out of the project (undo brings them back)</source>
+        <translation>Nimmt die Dynamik aus dem Projekt (Rückgängig bringt sie zurück)</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Forces (click one to go there):</source>
+        <translation>Kräfte (zum Hinspringen anklicken):</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The forces over the turn: click a line to put the cursor there</source>
+        <translation>Die Kräfte über die Umdrehung: eine Zeile anklicken setzt den Cursor dorthin</translation>
+    </message>
+    <message>
+        <location line="+18" />
+        <location line="+145" />
+        <source>Force [N]</source>
+        <translation>Kraft [N]</translation>
+    </message>
+    <message>
+        <location line="-144" />
+        <source>Contact normal force over the turn (blue), the law's own (dashed, with a motion design) and the load along the follower's line or the arm's moment (grey); shaded: the follower leaves the cam</source>
+        <translation>Normalkraft im Kontakt über die Umdrehung (blau), die des Bewegungsgesetzes selbst (gestrichelt, bei einem Bewegungsentwurf) und die Last längs der Stößelachse oder das Moment am Hebel (grau); schattiert: der Stößel hebt ab</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Torque [N·m]</source>
+        <translation>Drehmoment [N·m]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Torque on the camshaft over the turn</source>
+        <translation>Drehmoment an der Kurvenwelle über die Umdrehung</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Contact stress [MPa]</source>
+        <translation>Kontaktpressung [MPa]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Hertz contact stress over the turn; dashed: the allowable</source>
+        <translation>Hertzsche Pressung über die Umdrehung; gestrichelt: die zulässige</translation>
+    </message>
+    <message>
+        <location line="+68" />
+        <source>No dynamics: enter the follower's mass and its spring to see the forces, the jump speed and the contact stress.</source>
+        <translation>Keine Dynamik: Masse und Feder des Stößels eingeben, um die Kräfte, die Abhebedrehzahl und die Kontaktpressung zu sehen.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>No forces: no contour yet. Synthesize (F6) makes it from the design.</source>
+        <translation>Keine Kräfte: noch keine Kontur. Synthetisieren (F6) erzeugt sie aus dem Entwurf.</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>No forces: %1</source>
+        <translation>Keine Kräfte: %1</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>No forces: choose a follower in the Follower dock.</source>
+        <translation>Keine Kräfte: im Fenster Stößel einen Stößel wählen.</translation>
+    </message>
+    <message>
+        <location line="+51" />
+        <source>φ [°]</source>
+        <translation>φ [°]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <location line="+27" />
+        <source>The follower stays on the cam over the whole turn.</source>
+        <translation>Der Stößel bleibt über die ganze Umdrehung an der Kurve.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The follower leaves the cam from %1 to %2</source>
+        <translation>Der Stößel hebt von %1 bis %2 von der Kurve ab</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Jump speed: %1 at %2 (the cam runs at %3)</source>
+        <translation>Abhebedrehzahl: %1 bei %2 (die Kurve läuft mit %3)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>No speed lifts the follower off the cam.</source>
+        <translation>Bei keiner Drehzahl hebt der Stößel von der Kurve ab.</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Least preload for a safety factor of %1: %2 at %3 (the spring has %4)</source>
+        <translation>Kleinste Vorspannkraft für einen Sicherheitsfaktor von %1: %2 bei %3 (die Feder hat %4)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Largest normal force: %1 at %2</source>
+        <translation>Größte Normalkraft: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Peak torque on the camshaft: %1 at %2; RMS %3</source>
+        <translation>Größtes Drehmoment an der Kurvenwelle: %1 bei %2; Effektivwert %3</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Peak power: %1</source>
+        <translation>Größte Leistung: %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Largest contact stress: %1 at %2, %3 % of the allowable %4</source>
+        <translation>Größte Kontaktpressung: %1 bei %2, %3 % der zulässigen %4</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Largest contact stress: %1 at %2 (no allowable stress given)</source>
+        <translation>Größte Kontaktpressung: %1 bei %2 (keine zulässige Pressung angegeben)</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>No contact stress: a knife edge touches the cam at a point.</source>
+        <translation>Keine Kontaktpressung: eine Spitze berührt die Kurve in einem Punkt.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>No contact stress: give the contact width and both materials.</source>
+        <translation>Keine Kontaktpressung: Kontaktbreite und beide Werkstoffe angeben.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+9" />
+        <source>The normal force jumps at %n joint(s) of the contour, by up to %1 at %2</source>
+        <translation>
+            <numerusform>Die Normalkraft springt an %n Übergang der Kontur, um bis zu %1 bei %2</numerusform>
+            <numerusform>Die Normalkraft springt an %n Übergängen der Kontur, um bis zu %1 bei %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+21" />
+        <source>The contour's normal force differs from the law's by up to %1 at %2</source>
+        <translation>Die Normalkraft auf der Kontur weicht von der des Bewegungsgesetzes um bis zu %1 bei %2 ab</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The follower stays on; every force check passes.</source>
+        <translation>Der Stößel bleibt an der Kurve; jede Kraftprüfung besteht.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1" />
+        <source>%n force check(s) fail.</source>
+        <translation>
+            <numerusform>%n Kraftprüfung schlägt fehl.</numerusform>
+            <numerusform>%n Kraftprüfungen schlagen fehl.</numerusform>
         </translation>
     </message>
 </context>
@@ -3587,17 +3832,17 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+54" />
+        <location filename="../../src/app/mainwindow.cpp" line="+55" />
         <source>The recovery copy could not be written: %1</source>
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+118" />
+        <location line="+136" />
         <source>Cursor at %1</source>
         <translation>Cursor bei %1</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+17" />
         <source>%1[*] — Camwright</source>
         <translation>%1[*] — Camwright</translation>
     </message>
@@ -4012,7 +4257,7 @@ T = %3</translation>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+123" />
+        <location line="+130" />
         <source>… and %1 more</source>
         <translation>… und %1 weitere</translation>
     </message>
@@ -4467,7 +4712,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>cam::StateReadout</name>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="+26" />
+        <location filename="../../src/app/views/state_readout.cpp" line="+28" />
         <source>t</source>
         <translation>t</translation>
     </message>
@@ -4532,9 +4777,71 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <translation>|j|</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+0" />
+        <source>F_n</source>
+        <translation>F_n</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <location line="+49" />
+        <source>F</source>
+        <translation>F</translation>
+    </message>
+    <message>
+        <location line="-48" />
+        <source>T</source>
+        <translation>T</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>P</source>
+        <translation>P</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>p_H</source>
+        <translation>p_H</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Contact normal force</source>
+        <translation>Normalkraft im Kontakt</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <location line="+48" />
+        <source>Load along the follower's line of motion</source>
+        <translation>Last längs der Bewegungsachse des Stößels</translation>
+    </message>
+    <message>
+        <location line="-47" />
+        <source>Torque on the camshaft</source>
+        <translation>Drehmoment an der Kurvenwelle</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Power on the camshaft</source>
+        <translation>Leistung an der Kurvenwelle</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Hertz contact stress</source>
+        <translation>Hertzsche Pressung</translation>
+    </message>
+    <message>
+        <location line="+22" />
         <source>State of the follower at the cursor: move the mouse over a plot</source>
         <translation>Zustand des Stößels am Cursor: Maus über ein Diagramm bewegen</translation>
+    </message>
+    <message>
+        <location line="+23" />
+        <source>M</source>
+        <translation>M</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The arm's moment about its pivot</source>
+        <translation>Das Moment des Hebels um seinen Drehpunkt</translation>
     </message>
 </context>
 <context>
@@ -4848,7 +5155,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <translation>Auf ein Dock oder eine Ansicht klicken, um zu erfahren, wofür es da ist</translation>
     </message>
     <message>
-        <location line="+72" />
+        <location line="+73" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>

@@ -17,6 +17,7 @@
 #include "ui_mainwindow.h"
 #include "views/contour_view.h"
 #include "views/follower_panel.h"
+#include "views/forces_panel.h"
 #include "views/joints_panel.h"
 #include "views/kinematics_plots.h"
 #include "views/machining_panel.h"
@@ -113,7 +114,11 @@ void MainWindow::wireResults() {
         m_labels->arrived();
         v.plots->setResult(result);
         v.follower->setResult(result);
+        v.forces->setResult(result);
         for (QCustomPlot* plot : v.follower->turnPlots()) {
+            plot->xAxis->setRange(v.plots->plot(0)->xAxis->range());
+        }
+        for (QCustomPlot* plot : v.forces->turnPlots()) {
             plot->xAxis->setRange(v.plots->plot(0)->xAxis->range());
         }
     });
@@ -145,17 +150,31 @@ void MainWindow::wireResults() {
 void MainWindow::wireCursor() {
     DockLayout& v = *m_views;
     connect(m_cursor, &CursorModel::cleared, v.readout, &StateReadout::clear);
-    connect(m_cursor, &CursorModel::moved, this, [&v](const KinematicState& s, double x) {
+    connect(m_cursor, &CursorModel::moved, this, [this, &v](const KinematicState& s, double x) {
         v.readout->setState(s);
+        // The forces there: one evaluation of the result's follower, as the state itself.
+        const ComputeResultPtr& r = m_results->shown();
+        if (r && r->forces && r->follower) {
+            const FollowerModel& f = *r->follower;
+            const ForceModel& model = r->forces->model;
+            v.readout->setForces(forceAt(model, forceMotion(f, f.at(s.phi, r->omega)), r->omega),
+                                 model.swinging);
+        } else {
+            v.readout->setForces(std::nullopt, false);
+        }
         v.contour->setCursorAngle(s.phi);
         v.plots->setCursorX(x);
         v.follower->setCursorX(x);
+        v.forces->setCursorX(x);
         v.design->setCursorX(x);
     });
     // Whoever points at an instant moves the cursor.
     connect(v.contour, &ContourView::cursorAngleChanged, m_cursor, &CursorModel::setAtAngle);
     connect(v.plots, &KinematicsPlots::cursorMoved, m_cursor, &CursorModel::setAtPlotX);
-    for (QCustomPlot* plot : v.follower->turnPlots()) {
+    std::vector<QCustomPlot*> turnPlots;
+    for (QCustomPlot* plot : v.follower->turnPlots()) turnPlots.push_back(plot);
+    for (QCustomPlot* plot : v.forces->turnPlots()) turnPlots.push_back(plot);
+    for (QCustomPlot* plot : turnPlots) {
         connect(plot, &QCustomPlot::mouseMove, this, [this, plot](QMouseEvent* e) {
             m_cursor->setAtPlotX(plot->xAxis->pixelToCoord(e->position().x()));
         });
@@ -165,12 +184,14 @@ void MainWindow::wireCursor() {
         m_cursor->setAtAngle(phi);
         m_ui->segmentTable->selectRow(right);
     });
-    connect(v.follower, &FollowerPanel::anglePicked, this, [this](double phi) {
+    const auto goTo = [this](double phi) {
         if (!m_results->shown()) return;
         m_cursor->setAtAngle(phi);
         statusBar()->showMessage(
             tr("Cursor at %1").arg(formatQuantity(DisplayQuantity::Angle, radToDeg(phi))), 4000);
-    });
+    };
+    connect(v.follower, &FollowerPanel::anglePicked, this, goTo);
+    connect(v.forces, &ForcesPanel::anglePicked, this, goTo);
 }
 
 void MainWindow::requestCompute() {
@@ -235,6 +256,7 @@ KinematicsPlots* MainWindow::plots() const { return m_views->plots; }
 ContourView* MainWindow::contourView() const { return m_views->contour; }
 StateReadout* MainWindow::readout() const { return m_views->readout; }
 FollowerPanel* MainWindow::followerPanel() const { return m_views->follower; }
+ForcesPanel* MainWindow::forcesPanel() const { return m_views->forces; }
 ControlPointsPanel* MainWindow::controlPointsPanel() const { return m_views->controlPoints; }
 MachiningPanel* MainWindow::machiningPanel() const { return m_views->machining; }
 JointsPanel* MainWindow::jointsPanel() const { return m_views->joints; }

@@ -30,6 +30,7 @@ class PathStudyPanel;
 class ControlPointsPanel;
 class UserGuide;
 class FollowerPanel;
+class ForcesPanel;
 class MachiningPanel;
 class MotionPanel;
 class MotionDesignPanel;
@@ -72,6 +73,7 @@ public:
     [[nodiscard]] ContourView* contourView() const;
     [[nodiscard]] StateReadout* readout() const;
     [[nodiscard]] FollowerPanel* followerPanel() const;
+    [[nodiscard]] ForcesPanel* forcesPanel() const;
     [[nodiscard]] ControlPointsPanel* controlPointsPanel() const;
     [[nodiscard]] MachiningPanel* machiningPanel() const;
     [[nodiscard]] JointsPanel* jointsPanel() const;

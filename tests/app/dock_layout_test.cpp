@@ -104,7 +104,7 @@ TEST_F(DockLayout, TheRightHandDocksAreTabsAndTheWindowKeepsItsSize) {
     test::processEventsUntil([] { return false; }, 100);
     const int heightBefore = window.plots()->plot(0)->height();
     for (const char* name :
-         {"followerDock", "motionDesignDock", "machiningDock", "pathStudyDock"}) {
+         {"followerDock", "forcesDock", "motionDesignDock", "machiningDock", "pathStudyDock"}) {
         auto* dock = window.findChild<QDockWidget*>(name);
         ASSERT_NE(dock, nullptr) << name;
         dock->toggleViewAction()->trigger();
@@ -115,7 +115,7 @@ TEST_F(DockLayout, TheRightHandDocksAreTabsAndTheWindowKeepsItsSize) {
         EXPECT_EQ(window.height(), 860) << name;
         EXPECT_EQ(window.plots()->plot(0)->height(), heightBefore) << name;
     }
-    EXPECT_EQ(window.tabifiedDockWidgets(window.findChild<QDockWidget*>("followerDock")).size(), 3);
+    EXPECT_EQ(window.tabifiedDockWidgets(window.findChild<QDockWidget*>("followerDock")).size(), 4);
 }
 
 TEST_F(DockLayout, NoPlotWritesItsTickLabelsIntoOneAnother) {
@@ -128,7 +128,7 @@ TEST_F(DockLayout, NoPlotWritesItsTickLabelsIntoOneAnother) {
                     .isEmpty());
     ASSERT_TRUE(window.waitForCurrentResult(20000));
     int axesChecked = 0;
-    for (const char* name : {"followerDock", "motionDesignDock", "pathStudyDock"}) {
+    const auto check = [&](const char* name) {
         auto* dock = window.findChild<QDockWidget*>(name);
         ASSERT_NE(dock, nullptr) << name;
         dock->show();
@@ -157,8 +157,16 @@ TEST_F(DockLayout, NoPlotWritesItsTickLabelsIntoOneAnother) {
                 ++axesChecked;
             }
         }
-    }
-    EXPECT_GE(axesChecked, 3 * 8);  // each pass: the four kinematics plots' axes and its own
+    };
+    for (const char* name : {"followerDock", "motionDesignDock", "pathStudyDock"}) check(name);
+    // The Forces dock's three plots, on a project with dynamics.
+    ASSERT_TRUE(window
+                    .loadFile(QString::fromStdString(
+                        test::examplePath("spring-loaded-roller-cam.cam.json")))
+                    .isEmpty());
+    ASSERT_TRUE(window.waitForCurrentResult(20000));
+    check("forcesDock");
+    EXPECT_GE(axesChecked, 4 * 8);  // each pass: the four kinematics plots' axes and its own
 }
 
 }  // namespace

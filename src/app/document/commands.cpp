@@ -81,6 +81,10 @@ SetFollower::SetFollower(ProjectDocument* document, std::optional<FollowerSpec> 
     : SetProjectValue(document, std::move(after),
                       QCoreApplication::translate("cam::Commands", "Change follower"), gesture) {}
 
+SetDynamics::SetDynamics(ProjectDocument* document, std::optional<DynamicsSpec> after, int gesture)
+    : SetProjectValue(document, std::move(after),
+                      QCoreApplication::translate("cam::Commands", "Change dynamics"), gesture) {}
+
 SetMachining::SetMachining(ProjectDocument* document, std::optional<MachiningSpec> after,
                            int gesture)
     : SetProjectValue(document, std::move(after),

@@ -17,6 +17,7 @@ enum class MergeId : int {
     EditMachining = 3,
     EditFollower = 4,
     EditDesign = 5,
+    EditDynamics = 6,
 };
 
 /// @brief Which part of a segment an edit touched; edits of the same part of the same row merge.
@@ -183,6 +184,13 @@ public:
 }  // namespace cam
 
 namespace cam {
+
+/// @brief Sets, changes or removes the dynamics: masses, spring, load, materials (Forces dock).
+class SetDynamics : public SetProjectValue<std::optional<DynamicsSpec>, &Project::dynamics,
+                                           &ProjectDocument::applyDynamics, MergeId::EditDynamics> {
+public:
+    SetDynamics(ProjectDocument* document, std::optional<DynamicsSpec> after, int gesture = 0);
+};
 
 /// @brief Sets, changes or removes the motion design (Motion Design dock).
 class SetDesign : public SetProjectValue<std::optional<DesignSpec>, &Project::design,

@@ -43,6 +43,7 @@ void ProjectDocument::reset(Project project, QString filePath, Diagnostics diagn
     emit machiningChanged();
     emit followerChanged();
     emit designChanged();
+    emit dynamicsChanged();
     emit changed();
 }
 
@@ -119,6 +120,12 @@ void ProjectDocument::applyMachining(const std::optional<MachiningSpec>& machini
 void ProjectDocument::applyFollower(const std::optional<FollowerSpec>& follower) {
     m_project.follower = follower;
     emit followerChanged();
+    afterChange();
+}
+
+void ProjectDocument::applyDynamics(const std::optional<DynamicsSpec>& dynamics) {
+    m_project.dynamics = dynamics;
+    emit dynamicsChanged();
     afterChange();
 }
 

@@ -60,6 +60,7 @@ public:
     void applyMachining(const std::optional<MachiningSpec>& machining);
     void applyFollower(const std::optional<FollowerSpec>& follower);
     void applyDesign(const std::optional<DesignSpec>& design);
+    void applyDynamics(const std::optional<DynamicsSpec>& dynamics);
     /// @brief Synthesize: the contour and the design (its tolerance) in one step.
     void applyContourAndDesign(const std::vector<SegmentSpec>& contour,
                                const std::optional<DesignSpec>& design);
@@ -89,6 +90,7 @@ signals:
     void machiningChanged();
     void followerChanged();
     void designChanged();
+    void dynamicsChanged();
     /// Any change at all, after the specific signal: recompute, revalidate, redraw.
     void changed();
     void filePathChanged(const QString& path);

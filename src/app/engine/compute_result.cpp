@@ -106,10 +106,39 @@ ContourPart computeContourPart(const Contour* contour, double omega,
 struct FollowerPart {
     FollowerAnalysis checks;
     std::vector<double> x, pressureDeg, rhoProfile, rhoPitch;
+    std::shared_ptr<const ForceCurves> forces;
 };
 
-FollowerPart computeFollower(const FollowerModel* model, double omega, double period,
-                             double phiBegin, PlotAxis axis, bool checks,
+/// The forces of the project's dynamics: the summary on the project's samples per turn (as
+/// the CLI finds it), the curves on the follower curve's `turn`.
+std::shared_ptr<const ForceCurves> computeForces(const Project& project, const FollowerModel& model,
+                                                 double omega, const FollowerTurn& turn,
+                                                 const std::atomic<bool>* cancel) {
+    ForceEvaluation evaluation;
+    if (!evaluateForces(project, model, omega, evaluation, cancel)) return nullptr;
+    auto out = std::make_shared<ForceCurves>();
+    out->model = evaluation.model;
+    out->summary = std::move(evaluation.summary);
+    out->samples = evaluation.turn.size();
+    ForceTurn sampled;
+    if (evaluation.turn.size() == turn.size()) {
+        sampled = std::move(evaluation.forces);
+    } else {
+        forcesOfTurn(out->model, model, turn, omega, sampled);
+    }
+    const std::size_t n = turn.size();
+    out->curves.resize(n + 1);
+    for (std::size_t k = 0; k <= n; ++k) {
+        out->curves.load[k] = sampled.load[k % n];
+        out->curves.normal[k] = sampled.normal[k % n];
+        out->curves.torque[k] = sampled.torque[k % n];
+        out->curves.stress[k] = sampled.stress[k % n];
+    }
+    return out;
+}
+
+FollowerPart computeFollower(const Project* project, const FollowerModel* model, double omega,
+                             double period, double phiBegin, PlotAxis axis, bool checks,
                              const std::vector<PhaseSpan>& phases,
                              const std::atomic<bool>* cancel) {
     runInTheBackground();
@@ -133,6 +162,7 @@ FollowerPart computeFollower(const FollowerModel* model, double omega, double pe
         part.rhoProfile[k] = turn.rhoProfile[k % n];
         part.rhoPitch[k] = turn.rhoPitch[k % n];
     }
+    if (project->dynamics) part.forces = computeForces(*project, *model, omega, turn, cancel);
     return part;
 }
 
@@ -229,9 +259,9 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     QFuture<FollowerPart> follower;
     const bool checksNow = request.firstPictureBuckets == 0;
     if (result->follower) {
-        follower = QtConcurrent::run(computeFollower, result->follower.get(), result->omega,
-                                     result->period, result->contour->phiBegin(), request.axis,
-                                     checksNow, phasesOf(project), &cancel);
+        follower = QtConcurrent::run(computeFollower, &project, result->follower.get(),
+                                     result->omega, result->period, result->contour->phiBegin(),
+                                     request.axis, checksNow, phasesOf(project), &cancel);
     }
     // So are the analysis and the outlines, on the pool too (the GUI thread waits idle for
     // the first picture: its core is free).
@@ -276,6 +306,7 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
         result->followerPressureDeg = std::move(part.pressureDeg);
         result->followerRhoProfile = std::move(part.rhoProfile);
         result->followerRhoPitch = std::move(part.rhoPitch);
+        result->forces = std::move(part.forces);
     }
     if (preparer) {
         result->prepared = preparer->prepare(*result, cancel);

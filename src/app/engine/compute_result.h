@@ -18,6 +18,7 @@
 #include "engine/plot_levels.h"
 #include "evaluation/design_curves.h"
 #include "evaluation/evaluation.h"
+#include "evaluation/force_evaluation.h"
 #include "follower/follower.h"
 #include "follower/follower_analysis.h"
 #include "kinematics/kinematics.h"
@@ -59,6 +60,17 @@ struct DesignCurves : DesignEvaluation {
     /// Per quantity, the smallest and largest value of law and onContour together (jerk: the
     /// law's only).
     std::array<PlotRange, 4> yRanges{};
+};
+
+/// @brief The forces of the project's dynamics (evaluation/force_evaluation.h): the summary
+/// `camwright-cli analyze` reports, and the curves the Forces dock plots.
+struct ForceCurves {
+    ForceModel model;
+    ForceSummary summary;
+    std::size_t samples = 0;  ///< of the turn the summary was found on (the project's)
+    /// Load, normal force, torque and stress at kFollowerCurvePoints + 1 equal time steps, on
+    /// followerX (the last closes the turn).
+    ForceTurn curves;
 };
 
 /// @brief One finished computation. Never modified after it leaves the worker.
@@ -107,6 +119,9 @@ struct ComputeResult {
     /// profile at the contact and of the pitch curve, at the same steps.
     std::vector<double> followerRhoProfile, followerRhoPitch;
     static constexpr std::size_t kFollowerCurvePoints = 3600;
+    /// The forces of the project's `dynamics` on its follower (null without dynamics, or
+    /// without a follower that rides the cam).
+    std::shared_ptr<const ForceCurves> forces;
     /// The motion design's curves (null when the project has no design). Computed also when
     /// the contour is not (a design waiting for its first synthesis).
     std::shared_ptr<const DesignCurves> design;

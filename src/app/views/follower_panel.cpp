@@ -35,7 +35,6 @@ NumberSpinBox* spinBox(QWidget* parent, const char* name, const QString& suffix,
     return s;
 }
 
-QString degrees(double rad) { return formatQuantity(DisplayQuantity::Angle, radToDeg(rad)); }
 QString millimetres(double mm) { return formatQuantity(DisplayQuantity::Length, mm); }
 
 }  // namespace
@@ -389,28 +388,31 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
     const PressurePhases& p = a.pressure;
     if (p.rise) {
         add(tr("Largest pressure angle on rise: %1 at %2 (limit %3)")
-                .arg(degrees(p.rise->value), degrees(p.rise->phi), degrees(limit)),
+                .arg(formatRadians(p.rise->value), formatRadians(p.rise->phi),
+                     formatRadians(limit)),
             p.rise->phi, p.rise->value > limit);
     }
     if (p.fall) {
         add(tr("Largest pressure angle on return: %1 at %2 (limit %3)")
-                .arg(degrees(p.fall->value), degrees(p.fall->phi), degrees(limit)),
+                .arg(formatRadians(p.fall->value), formatRadians(p.fall->phi),
+                     formatRadians(limit)),
             p.fall->phi, p.fall->value > limit);
     }
     if (p.dwell) {
         add(tr("Largest pressure angle in a dwell: %1 at %2 (limit %3)")
-                .arg(degrees(p.dwell->value), degrees(p.dwell->phi), degrees(limit)),
+                .arg(formatRadians(p.dwell->value), formatRadians(p.dwell->phi),
+                     formatRadians(limit)),
             p.dwell->phi, p.dwell->value > limit);
     }
     for (const AngleRange& r : a.pressureExceeded) {
         add(tr("Pressure angle beyond the limit from %1 to %2: up to %3 at %4, %5 too much")
-                .arg(degrees(r.from), degrees(r.to), degrees(r.peak.value), degrees(r.peak.phi),
-                     degrees(r.peak.value - limit)),
+                .arg(formatRadians(r.from), formatRadians(r.to), formatRadians(r.peak.value),
+                     formatRadians(r.peak.phi), formatRadians(r.peak.value - limit)),
             r.from, true);
     }
     for (const NonContact& c : a.undercut) {
         add(tr("The follower cannot reach the profile at %1: it jumps from %2 to %3")
-                .arg(degrees(c.phi), formatPoint(c.from.x(), c.from.y()),
+                .arg(formatRadians(c.phi), formatPoint(c.from.x(), c.from.y()),
                      formatPoint(c.to.x(), c.to.y())),
             c.phi, true);
     }
@@ -423,7 +425,7 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
     const CurvatureExtremes& profile = a.profileCurvature;
     if (profile.minConvex) {
         add(tr("Smallest convex radius of the profile: %1 at %2")
-                .arg(millimetres(profile.minConvex->value), degrees(profile.minConvex->phi)),
+                .arg(millimetres(profile.minConvex->value), formatRadians(profile.minConvex->phi)),
             profile.minConvex->phi, false);
     }
     if (profile.minConcave) {
@@ -432,11 +434,11 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
         const QString line =
             verdict.toolFits
                 ? tr("Smallest concave radius of the profile: %1 at %2 (tool radius %3)")
-                      .arg(millimetres(profile.minConcave->value), degrees(profile.minConcave->phi),
-                           millimetres(toolRadius))
+                      .arg(millimetres(profile.minConcave->value),
+                           formatRadians(profile.minConcave->phi), millimetres(toolRadius))
                 : tr("Smallest concave radius of the profile: %1 at %2")
                       .arg(millimetres(profile.minConcave->value),
-                           degrees(profile.minConcave->phi));
+                           formatRadians(profile.minConcave->phi));
         add(line, profile.minConcave->phi, flat || toolTooWide);
     } else {
         add(tr("The profile has no concave stretch."), std::nullopt, false);
@@ -445,13 +447,14 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
         const CurvatureExtremes& pitch = a.pitchCurvature;
         if (pitch.minConvex) {
             add(tr("Smallest convex radius of the pitch curve: %1 at %2 (roller radius %3)")
-                    .arg(millimetres(pitch.minConvex->value), degrees(pitch.minConvex->phi),
+                    .arg(millimetres(pitch.minConvex->value), formatRadians(pitch.minConvex->phi),
                          millimetres(spec.radius)),
                 pitch.minConvex->phi, verdict.rollerFits && !*verdict.rollerFits);
         }
         if (pitch.minConcave) {
             add(tr("Smallest concave radius of the pitch curve: %1 at %2")
-                    .arg(millimetres(pitch.minConcave->value), degrees(pitch.minConcave->phi)),
+                    .arg(millimetres(pitch.minConcave->value),
+                         formatRadians(pitch.minConcave->phi)),
                 pitch.minConcave->phi, false);
         }
     }

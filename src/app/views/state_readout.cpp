@@ -2,6 +2,7 @@
 
 #include <QGridLayout>
 #include <QLabel>
+#include <cmath>
 
 #include "common/angles.h"
 #include "widgets/quantity_format.h"
@@ -15,7 +16,8 @@ constexpr DisplayQuantity kReadoutQuantities[] = {
     DisplayQuantity::Length,       DisplayQuantity::Velocity,     DisplayQuantity::Velocity,
     DisplayQuantity::Velocity,     DisplayQuantity::Acceleration, DisplayQuantity::Acceleration,
     DisplayQuantity::Acceleration, DisplayQuantity::Jerk,         DisplayQuantity::Jerk,
-    DisplayQuantity::Jerk};
+    DisplayQuantity::Jerk,         DisplayQuantity::Force,        DisplayQuantity::Force,
+    DisplayQuantity::Moment,       DisplayQuantity::Power,        DisplayQuantity::Stress};
 
 }  // namespace
 
@@ -25,7 +27,11 @@ StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
     grid->setVerticalSpacing(2);
     const QString names[kRows] = {tr("t"),   tr("φ"),   tr("segment"), tr("r"),   tr("v_r"),
                                   tr("v_φ"), tr("|v|"), tr("a_r"),     tr("a_φ"), tr("|a|"),
-                                  tr("j_r"), tr("j_φ"), tr("|j|")};
+                                  tr("j_r"), tr("j_φ"), tr("|j|"),     tr("F_n"), tr("F"),
+                                  tr("T"),   tr("P"),   tr("p_H")};
+    const QString tips[kRows - kKinematicRows] = {
+        tr("Contact normal force"), tr("Load along the follower's line of motion"),
+        tr("Torque on the camshaft"), tr("Power on the camshaft"), tr("Hertz contact stress")};
     for (int i = 0; i < kRows; ++i) {
         m_names[i] = new QLabel(names[i], this);
         m_values[i] = new QLabel(QStringLiteral("—"), this);
@@ -40,6 +46,11 @@ StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
                                   m_values[i]->sizeHint().height());
         grid->addWidget(m_names[i], i, 0);
         grid->addWidget(m_values[i], i, 1, Qt::AlignRight);
+        if (i >= kKinematicRows) {
+            m_names[i]->setToolTip(tips[i - kKinematicRows]);
+            m_names[i]->hide();
+            m_values[i]->hide();
+        }
     }
     grid->setRowStretch(kRows, 1);
     setToolTip(tr("State of the follower at the cursor: move the mouse over a plot"));
@@ -53,7 +64,28 @@ void StateReadout::setState(const KinematicState& s) {
     const auto segment = static_cast<double>(s.segment);
     const double values[kRows] = {s.t,  phiDeg, segment, s.polar.r, m.vR,   m.vPhi, m.v,
                                   m.aR, m.aPhi, m.a,     m.jR,      m.jPhi, m.j};
-    for (int i = 0; i < kRows; ++i) showValue(i, formatQuantity(kReadoutQuantities[i], values[i]));
+    for (int i = 0; i < kKinematicRows; ++i) {
+        showValue(i, formatQuantity(kReadoutQuantities[i], values[i]));
+    }
+}
+
+void StateReadout::setForces(const std::optional<ForcePoint>& f, bool swinging) {
+    for (int i = kKinematicRows; i < kRows; ++i) {
+        m_names[i]->setVisible(f.has_value());
+        m_values[i]->setVisible(f.has_value());
+    }
+    if (!f) return;
+    const int load = kKinematicRows + 1;
+    m_names[load]->setText(swinging ? tr("M") : tr("F"));
+    m_names[load]->setToolTip(swinging ? tr("The arm's moment about its pivot")
+                                       : tr("Load along the follower's line of motion"));
+    const double values[] = {f->normal, f->load, f->torque, f->power, f->stress};
+    for (int i = kKinematicRows; i < kRows; ++i) {
+        const double v = values[i - kKinematicRows];
+        const DisplayQuantity q =
+            i == load && swinging ? DisplayQuantity::Moment : kReadoutQuantities[i];
+        showValue(i, std::isfinite(v) ? formatQuantity(q, v) : QStringLiteral("—"));
+    }
 }
 
 void StateReadout::clear() {
@@ -69,7 +101,9 @@ void StateReadout::showValue(int row, const QString& text) {
 
 QString StateReadout::text() const {
     QStringList lines;
-    for (int i = 0; i < kRows; ++i) lines << m_names[i]->text() + " " + m_values[i]->text();
+    for (int i = 0; i < kRows; ++i) {
+        if (!m_names[i]->isHidden()) lines << m_names[i]->text() + " " + m_values[i]->text();
+    }
     return lines.join('\n');
 }
 

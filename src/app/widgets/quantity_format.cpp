@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <cmath>
 
+#include "common/angles.h"
 #include "widgets/number_format.h"
 
 namespace cam {
@@ -24,6 +25,8 @@ QString formatQuantity(DisplayQuantity quantity, double value) {
     if (unit.isEmpty()) return number;
     return quantityFormat(quantity).spaced ? number + QLatin1Char(' ') + unit : number + unit;
 }
+
+QString formatRadians(double rad) { return formatQuantity(DisplayQuantity::Angle, radToDeg(rad)); }
 
 QString formatPoint(double x, double y) {
     // German writes (12,5; -3): a comma between the coordinates would read as a decimal one.

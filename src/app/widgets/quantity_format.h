@@ -34,6 +34,10 @@ enum class DisplayQuantity {
     AccelerationError,         ///< [mm/s²]
     AngularAccelerationError,  ///< a swinging arm's [°/s²]
     RelativeError,             ///< a dimensionless error estimate
+    Force,                     ///< contact, spring and guide forces [N]
+    Moment,                    ///< camshaft torque, an arm's moment [N·m]
+    Power,                     ///< the camshaft's power [W]
+    Stress,                    ///< the Hertz contact stress [MPa]
     Count,                     ///< samples, grid points (whole numbers)
     Input,                     ///< a value the user types in a cell; its unit is in the header
 };
@@ -87,6 +91,13 @@ inline constexpr std::array<QuantityFormat, kQuantityCount> kQuantityFormats{{
     {DisplayQuantity::AngularAccelerationError, 3,
      QT_TRANSLATE_NOOP("cam::DisplayQuantity", "°/s²"), true},
     {DisplayQuantity::RelativeError, 3, "", false},
+    // 123.456 N, 1.23456 N·m: the forces follow from a mass, a rate and materials a designer
+    // knows to a few per cent; six digits let two results (law and arcs, window and CLI) be
+    // compared, more would be noise.
+    {DisplayQuantity::Force, 6, QT_TRANSLATE_NOOP("cam::DisplayQuantity", "N"), true},
+    {DisplayQuantity::Moment, 6, QT_TRANSLATE_NOOP("cam::DisplayQuantity", "N·m"), true},
+    {DisplayQuantity::Power, 6, QT_TRANSLATE_NOOP("cam::DisplayQuantity", "W"), true},
+    {DisplayQuantity::Stress, 6, QT_TRANSLATE_NOOP("cam::DisplayQuantity", "MPa"), true},
     // 10000000 samples: every digit of a count up to 9999999999 (the sample limit is 10⁷).
     {DisplayQuantity::Count, 10, "", false},
     // A typed value reads back as typed: 10 digits, as many as a message quotes (the core's
@@ -117,6 +128,9 @@ static_assert(
 
 /// @brief `value` with its quantity's digits and unit: "123.4568 mm", "45°", "0.25".
 [[nodiscard]] QString formatQuantity(DisplayQuantity quantity, double value);
+
+/// @brief A cam angle given in radians, written in degrees as an Angle: "123.4568°".
+[[nodiscard]] QString formatRadians(double rad);
 
 /// @brief A point of the cam's plane with Length digits and no unit (mm): "(12.5, -3)", in
 /// German "(12,5; -3)".

@@ -19,6 +19,7 @@
 #include "views/contour_view.h"
 #include "views/control_points_panel.h"
 #include "views/follower_panel.h"
+#include "views/forces_panel.h"
 #include "views/joints_panel.h"
 #include "views/kinematics_plots.h"
 #include "views/machining_panel.h"
@@ -117,9 +118,28 @@ void DockLayout::makeRightDocks() {
     followerToggle->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
     followerToggle->setToolTip(tr("The follower and its design checks (Ctrl+L)"));
     m_ui.mainToolBar->addAction(followerToggle);
+    // The forces of the project's dynamics, tabbed with the follower (it scrolls: its inputs
+    // and three plots are taller than a small screen).
+    forcesDock = new QDockWidget(tr("Forces"), m_window);
+    forcesDock->setObjectName("forcesDock");
+    forces = new ForcesPanel(m_document, forcesDock);
+    forces->setObjectName("forcesPanel");
+    auto* forcesScroll = new QScrollArea(forcesDock);
+    forcesScroll->setObjectName("forcesScrollArea");
+    forcesScroll->setWidget(forces);
+    forcesScroll->setWidgetResizable(true);
+    forcesScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    forcesScroll->setFrameShape(QFrame::NoFrame);
+    forcesDock->setWidget(forcesScroll);
+    m_window->addDockWidget(Qt::RightDockWidgetArea, forcesDock);
+    QAction* forcesToggle = forcesDock->toggleViewAction();
+    forcesToggle->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F));
+    forcesToggle->setToolTip(
+        tr("Forces: the spring, the jump speed, torque and contact stress (Ctrl+F)"));
+    m_ui.mainToolBar->addAction(forcesToggle);
     for (QDockWidget* dock :
          {m_ui.segmentsDock, m_ui.jointsDock, controlPointsDock, m_ui.motionDock, m_ui.readoutDock,
-          m_ui.machiningDock, m_ui.pathStudyDock, followerDock}) {
+          m_ui.machiningDock, m_ui.pathStudyDock, followerDock, forcesDock}) {
         m_ui.menuView->addAction(dock->toggleViewAction());
     }
     // The motion design, tabbed there too; it scrolls rather than making the window taller
@@ -146,7 +166,10 @@ void DockLayout::linkFollowerAxes() {
     // The follower's plots over the turn (pressure angle, curvature) share the kinematics
     // plots' x axis: panning or zooming one moves the others.
     QCustomPlot* velocity = plots->plot(0);
-    for (QCustomPlot* plot : follower->turnPlots()) {
+    std::vector<QCustomPlot*> turnPlots;
+    for (QCustomPlot* plot : follower->turnPlots()) turnPlots.push_back(plot);
+    for (QCustomPlot* plot : forces->turnPlots()) turnPlots.push_back(plot);
+    for (QCustomPlot* plot : turnPlots) {
         connect(velocity->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), plot,
                 [plot](const QCPRange& r) {
                     if (plot->xAxis->range() == r) return;
@@ -163,6 +186,13 @@ void DockLayout::linkFollowerAxes() {
 void DockLayout::showWhatTheProjectHas() {
     connect(m_document, &ProjectDocument::contourReset, this, [this] {
         if (m_document->project().follower) followerDock->show();
+        if (m_document->project().dynamics) {
+            forcesDock->show();
+            // In front of the follower's tab (a design's dock goes in front of both).
+            if (!m_document->project().design) {
+                QTimer::singleShot(0, forcesDock, [this] { forcesDock->raise(); });
+            }
+        }
         // Once the layout has settled: a short contour leaves the plots the rows it needs not.
         QTimer::singleShot(0, this, &DockLayout::fitSegmentsDock);
     });
@@ -186,15 +216,18 @@ void DockLayout::restore() {
     m_ui.machiningDock->hide();  // until the user opens it (the saved layout may show it)
     m_ui.pathStudyDock->hide();
     followerDock->hide();  // until opened, or a project with a follower is loaded
+    forcesDock->hide();    // until opened, or a project with dynamics is loaded
     designDock->hide();    // until opened, or a project with a design is loaded
     // The right-hand docks are tabs of one group (tabified while hidden: tabified while shown,
     // two made the hidden window grow to the height of both). Stacked, Machining, Path Study
     // and Follower together asked for more height than the screen has, and the window grew
     // past its bottom edge. Opening one brings its tab to the front.
-    m_window->tabifyDockWidget(followerDock, designDock);
+    m_window->tabifyDockWidget(followerDock, forcesDock);
+    m_window->tabifyDockWidget(forcesDock, designDock);
     m_window->tabifyDockWidget(designDock, m_ui.machiningDock);
     m_window->tabifyDockWidget(m_ui.machiningDock, m_ui.pathStudyDock);
-    for (QDockWidget* dock : {followerDock, designDock, m_ui.machiningDock, m_ui.pathStudyDock}) {
+    for (QDockWidget* dock :
+         {followerDock, forcesDock, designDock, m_ui.machiningDock, m_ui.pathStudyDock}) {
         connect(dock->toggleViewAction(), &QAction::toggled, dock, [dock](bool on) {
             if (on) QTimer::singleShot(0, dock, [dock] { dock->raise(); });
         });
@@ -266,6 +299,11 @@ void DockLayout::setWhatsThis() {
         {followerDock,
          tr("<b>Follower</b>: knife, roller or flat face, translating or on a swinging arm, "
             "and its checks: pressure angle, curvature, undercut, reach.")},
+        {forcesDock,
+         tr("<b>Forces</b>: the follower's mass, its spring, the load and the materials, and "
+            "what they give over the turn: where the follower leaves the cam, the speed at which "
+            "it would, the least preload, the torque on the camshaft and the contact stress "
+            "against the allowable.")},
         {designDock, tr("<b>Motion Design</b>: the follower's motion as motion laws over the turn; "
                         "Synthesize Contour (F6) makes the cam from it.")},
         {contour,

@@ -19,6 +19,7 @@ namespace cam {
 class ContourView;
 class ControlPointsPanel;
 class FollowerPanel;
+class ForcesPanel;
 class JointsPanel;
 class KinematicsPlots;
 class MachiningPanel;
@@ -53,6 +54,8 @@ public:
     MachiningPanel* machining;
     FollowerPanel* follower;
     QDockWidget* followerDock;
+    ForcesPanel* forces;
+    QDockWidget* forcesDock;
     JointsPanel* joints;
     ControlPointsPanel* controlPoints;
     QDockWidget* controlPointsDock;

@@ -292,6 +292,7 @@ void WindowActions::setUpIcons() {
         {m_ui.machiningDock, "camwright-machining"},
         {m_ui.pathStudyDock, "camwright-path-study"},
         {m_views.followerDock, "camwright-follower"},
+        {m_views.forcesDock, "camwright-forces"},
         {m_views.designDock, "camwright-motion-design"},
         {m_views.controlPointsDock, "camwright-control-points"},
     };
