@@ -2327,7 +2327,7 @@
         <translation>Mausrad: zoomen · Ziehen: verschieben · quadratischen/rautenförmigen Griff ziehen: Mittelpunkt verschieben oder Radius des gewählten Bogens ändern. Gezogene Punkte rasten an Mittelpunkten, Übergängen und am Raster ein; Umschalt hält eine Achse fest, Alt rastet nicht ein.</translation>
     </message>
     <message>
-        <location line="+35" />
+        <location line="+37" />
         <source>centres</source>
         <translation>Mittelpunkte</translation>
     </message>
@@ -3308,7 +3308,7 @@
 <context>
     <name>cam::ForcesPanel</name>
     <message>
-        <location filename="../../src/app/views/forces_panel.cpp" line="+86" />
+        <location filename="../../src/app/views/forces_panel.cpp" line="+87" />
         <source>Other (typed below)</source>
         <translation>Anderer (unten eingegeben)</translation>
     </message>
@@ -4903,6 +4903,23 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     </message>
 </context>
 <context>
+    <name>cam::StressOverlay</name>
+    <message>
+        <location filename="../../src/app/views/stress_overlay.cpp" line="+84" />
+        <source>Contact stress
+blue 0 … red %1 (allowable)</source>
+        <translation>Kontaktpressung
+blau 0 … rot %1 (zulässig)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Contact stress
+blue 0 … red %1 (largest)</source>
+        <translation>Kontaktpressung
+blau 0 … rot %1 (größte)</translation>
+    </message>
+</context>
+<context>
     <name>cam::SynthesisController</name>
     <message>
         <location filename="../../src/app/window/synthesis_controller.cpp" line="+20" />
@@ -5120,7 +5137,17 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <translation>Den Radius r der Kontur über die Umdrehung über der Geschwindigkeit zeigen</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+11" />
+        <source>Colour by Contact &amp;Stress</source>
+        <translation>Nach Kontakt&amp;pressung färben</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Colour the profile by the Hertz contact stress where the follower touches it (needs the Forces dock's contact width and materials)</source>
+        <translation>Das Profil nach der Hertzschen Pressung färben, wo der Stößel es berührt (braucht Kontaktbreite und Werkstoffe im Fenster Kräfte)</translation>
+    </message>
+    <message>
+        <location line="+14" />
         <source>About Camwright</source>
         <translation>Über Camwright</translation>
     </message>

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <qcustomplot.h>
+#include <QAction>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
@@ -23,9 +24,11 @@
 #include "engine/compute_engine.h"
 #include "mainwindow.h"
 #include "project/dynamics.h"
+#include "views/contour_view.h"
 #include "views/forces_panel.h"
 #include "views/kinematics_plots.h"
 #include "views/state_readout.h"
+#include "views/stress_overlay.h"
 #include "widgets/number_spin_box.h"
 
 namespace cam {
@@ -204,6 +207,53 @@ TEST(ForcesPanel, TheMaterialPickerSetsBothValuesInOneStep) {
     EXPECT_FALSE(panel->forcePlot()->isVisible());
     window.document()->undoStack()->undo();
     EXPECT_EQ(window.document()->project().dynamics, before);
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(ForcesPanel, TheContourIsColouredByContactStressOnDemand) {
+    MainWindow window;
+    ASSERT_TRUE(openWithForces(window, kSpringCam));
+    auto* action = window.findChild<QAction*>("actionStressColours");
+    ASSERT_NE(action, nullptr);
+    action->setChecked(false);
+    const StressOverlay& overlay = window.contourView()->stressOverlay();
+    for (int i = 0; i < StressOverlay::kBands; ++i) EXPECT_FALSE(overlay.band(i)->visible());
+    action->setChecked(true);
+    // The scale runs up to the allowable 900 MPa; the largest stress, 181.5 MPa (the CLI's
+    // max_contact_stress_MPa), falls in band ⌊181.5 / 900 · 12⌋ = 2, so bands 3 and up stay
+    // empty, and every step of the turn is drawn in one of bands 0–2.
+    EXPECT_EQ(overlay.top(), 900.0);
+    EXPECT_TRUE(overlay.label().contains("900 MPa")) << overlay.label().toStdString();
+    const ComputeResultPtr r = window.engine()->latestResult();
+    const ForceCurves& f = *r->forces;
+    int drawn = 0;
+    for (int i = 0; i < StressOverlay::kBands; ++i) {
+        EXPECT_TRUE(overlay.band(i)->visible());
+        if (i >= 3) {
+            EXPECT_EQ(overlay.band(i)->dataCount(), 0) << i;
+        }
+        for (int k = 0; k < overlay.band(i)->dataCount(); ++k) {
+            drawn += std::isnan(overlay.band(i)->data()->at(k)->key) ? 0 : 1;
+        }
+    }
+    EXPECT_GE(drawn, static_cast<int>(ComputeResult::kFollowerCurvePoints));
+    // The coloured points are where the roller touches the profile: 8 mm from its centre, on
+    // the line from the centre towards the cam (FollowerModel::at, not the overlay's data).
+    const std::size_t n = ComputeResult::kFollowerCurvePoints;
+    for (std::size_t k = 0; k < n; k += 97) {
+        const double phi = r->omega * r->period * static_cast<double>(k) / n;
+        const Eigen::Vector2d centre = r->follower->at(phi, r->omega).center;
+        const Eigen::Vector2d contact(f.contactX[k], f.contactY[k]);
+        EXPECT_NEAR((contact - centre).norm(), 8.0, 1e-9) << k;
+        EXPECT_LT(contact.norm(), centre.norm()) << k;
+    }
+    action->setChecked(false);
+    for (int i = 0; i < StressOverlay::kBands; ++i) EXPECT_FALSE(overlay.band(i)->visible());
 }
 
 }  // namespace

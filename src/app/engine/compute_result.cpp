@@ -134,6 +134,18 @@ std::shared_ptr<const ForceCurves> computeForces(const Project& project, const F
         out->curves.torque[k] = sampled.torque[k % n];
         out->curves.stress[k] = sampled.stress[k % n];
     }
+    if (out->model.hasStress) {
+        out->contactX.resize(n + 1);
+        out->contactY.resize(n + 1);
+        const double period = kTwoPi / std::abs(omega);
+        for (std::size_t k = 0; k <= n; ++k) {
+            if ((k & 1023) == 0 && cancel->load()) return nullptr;
+            const double t = period * static_cast<double>(k % n) / static_cast<double>(n);
+            const Eigen::Vector2d c = model.at(omega * t, omega).contact;
+            out->contactX[k] = c.x();
+            out->contactY[k] = c.y();
+        }
+    }
     return out;
 }
 

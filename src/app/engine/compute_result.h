@@ -71,6 +71,9 @@ struct ForceCurves {
     /// Load, normal force, torque and stress at kFollowerCurvePoints + 1 equal time steps, on
     /// followerX (the last closes the turn).
     ForceTurn curves;
+    /// Where the follower touches the profile at the same steps (mm, the cam's frame): the
+    /// contour view colours the profile by the stress there.
+    std::vector<double> contactX, contactY;
 };
 
 /// @brief One finished computation. Never modified after it leaves the worker.

@@ -63,6 +63,8 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent) : QCustomPl
         curve->setPen(QPen(segmentColor(c), 2));
         m_colourCurves[static_cast<std::size_t>(c)] = curve;
     }
+    // Over the segments' colours, under the markers: the profile coloured by stress.
+    m_stress = std::make_unique<StressOverlay>(this);
     m_centers = addGraph();
     m_centers->setLayer("markers");
     m_centers->setName(tr("centres"));
@@ -101,7 +103,9 @@ void ContourView::setResult(const ComputeResultPtr& result) {
         return;
     }
     if (!result->ok()) {
-        // The last contour stays for orientation, greyed and labelled as out of date.
+        // The last contour stays for orientation, greyed and labelled as out of date (its
+        // stress is not the project's).
+        m_stress->show(nullptr, false);
         setStale(staleText(*result));
         return;
     }
@@ -168,12 +172,21 @@ void ContourView::setResult(const ComputeResultPtr& result) {
     // Around the contour x goes back and forth: the graph must sort the joints by x itself, or
     // its search for the visible ones skips some when zoomed in.
     m_joints->setData(jx, jy);
+    m_stress->show(result.get(), m_stressColouring);
     if (m_autoFit) resetZoom();
     // The new contour, cursor and all, in one replot: queued first, so that the cursor's move
     // does not redraw its layer over the old contour before.
     queueReplot(this);
     setCursorAngle(m_cursorPhi);
 }
+
+void ContourView::setStressColouring(bool on) {
+    m_stressColouring = on;
+    m_stress->show(m_result.get(), on);
+    queueReplot(this);
+}
+
+ContourView::~ContourView() = default;
 
 QCPCurve* ContourView::segmentCurve(int k) const {
     return m_colourCurves[static_cast<std::size_t>(k % kSegmentColorCount)];

@@ -18,6 +18,7 @@
 #include "views/contour_edit_tool.h"
 #include "views/follower_glyph.h"
 #include "views/palette.h"
+#include "views/stress_overlay.h"
 
 namespace cam {
 
@@ -28,12 +29,17 @@ class ContourView : public QCustomPlot {
     Q_OBJECT
 public:
     explicit ContourView(ProjectDocument* document, QWidget* parent = nullptr);
+    ~ContourView() override;
 
     void setResult(const ComputeResultPtr& result);
     /// @brief The curve that draws segment k (shared by every tenth segment, see
     /// m_colourCurves), and where segment k's points begin in it and how many there are.
     [[nodiscard]] QCPCurve* segmentCurve(int k) const;
     [[nodiscard]] std::pair<int, int> segmentRun(int k) const;
+    /// @brief Colours the profile by the contact stress where the follower touches it (a
+    /// project with dynamics, a contact width and materials), or not.
+    void setStressColouring(bool on);
+    [[nodiscard]] const StressOverlay& stressOverlay() const { return *m_stress; }
     /// @brief Shows the follower ray at this angle (rad) and the contour point on it.
     void setCursorAngle(double phi);
     /// @brief Shows the drag handles of this segment (-1: none).
@@ -108,6 +114,8 @@ private:
     std::unique_ptr<FollowerGlyph> m_follower;
     ContourEditTool* m_editTool = nullptr;  ///< a child: handles, dragging, point picking
     StaleLabel* m_staleLabel = nullptr;
+    std::unique_ptr<StressOverlay> m_stress;
+    bool m_stressColouring = false;
     double m_cursorPhi = 0.0;
     bool m_autoFit = true;  ///< refit on resize until the user zooms or pans
 };

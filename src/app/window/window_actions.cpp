@@ -198,6 +198,20 @@ void WindowActions::setUpActions() {
         if (on) queueReplot(plot);
     });
     m_ui.menuView->insertAction(m_ui.actionResetZoom, lift);
+    // The profile coloured by its contact stress (a project with dynamics): on demand.
+    auto* stress = new QAction(tr("Colour by Contact &Stress"), m_window);
+    stress->setObjectName("actionStressColours");
+    stress->setCheckable(true);
+    stress->setToolTip(
+        tr("Colour the profile by the Hertz contact stress where the follower "
+           "touches it (needs the Forces dock's contact width and materials)"));
+    stress->setChecked(QSettings().value("view/stressColours", false).toBool());
+    m_views.contour->setStressColouring(stress->isChecked());
+    connect(stress, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue("view/stressColours", on);
+        m_views.contour->setStressColouring(on);
+    });
+    m_ui.menuView->insertAction(m_ui.actionResetZoom, stress);
     connect(m_ui.actionResetZoom, &QAction::triggered, this, [this] {
         m_views.contour->resetZoom();
         m_views.plots->resetZoom();
@@ -280,6 +294,7 @@ void WindowActions::setUpIcons() {
         {"actionKeyboardShortcuts", "preferences-desktop-keyboard"},
         {"actionPlay", "media-playback-start"},
         {"actionLiftPlot", "camwright-lift-plot"},
+        {"actionStressColours", "camwright-stress-colours"},
     };
     for (const auto& [object, icon] : named) {
         if (auto* action = m_window->findChild<QAction*>(object)) set(action, icon);
