@@ -258,3 +258,32 @@ TEST(ForcesPanel, TheContourIsColouredByContactStressOnDemand) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(ForcesPanel, CtrlZInTheBoxJustCommittedUndoesTheEditNotTheTyping) {
+    // Under Xvfb: the mass typed and taken with Enter, the focus still in the box, Ctrl+Z went
+    // to the line edit (which had nothing left to undo) instead of the window's Undo.
+    MainWindow window;
+    ASSERT_TRUE(openWithForces(window, kSpringCam));
+    window.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
+    NumberSpinBox* mass = window.forcesPanel()->valueBox(DynamicsKey::MassKg);
+    typeInto(mass, "1.6");
+    ASSERT_EQ(window.document()->project().dynamics->values[0], 1.6);
+    ASSERT_TRUE(mass->hasFocus());
+    QTest::keySequence(mass, QKeySequence::keyBindings(QKeySequence::Undo).first());
+    EXPECT_EQ(window.document()->project().dynamics->values[0], 0.8);
+    EXPECT_EQ(mass->value(), 0.8);
+    QTest::keySequence(mass, QKeySequence::keyBindings(QKeySequence::Redo).first());
+    EXPECT_EQ(window.document()->project().dynamics->values[0], 1.6);
+    // While a text is typed and not taken, Ctrl+Z undoes the typing in the box alone.
+    mass->selectAll();
+    QTest::keyClicks(mass, "2");
+    QTest::keySequence(mass, QKeySequence::keyBindings(QKeySequence::Undo).first());
+    EXPECT_EQ(window.document()->project().dynamics->values[0], 1.6);
+}
+
+}  // namespace
+}  // namespace cam

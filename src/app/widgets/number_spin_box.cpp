@@ -1,5 +1,6 @@
 #include "widgets/number_spin_box.h"
 
+#include <QKeyEvent>
 #include <QLocale>
 #include <QRegularExpression>
 #include <cmath>
@@ -56,6 +57,19 @@ QString NumberSpinBox::textFromValue(double v) const {
     QLocale locale = this->locale();
     locale.setNumberOptions(QLocale::OmitGroupSeparator);
     return locale.toString(v, 'g', m_digits);
+}
+
+bool NumberSpinBox::event(QEvent* event) {
+    if (event->type() == QEvent::ShortcutOverride) {
+        const auto* key = static_cast<QKeyEvent*>(event);
+        const bool undoKey = key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo);
+        if (undoKey && cleanText() == textFromValue(value())) {
+            // Not ours: the shortcut (the window's Undo or Redo) takes the key.
+            event->ignore();
+            return true;
+        }
+    }
+    return QDoubleSpinBox::event(event);
 }
 
 QString NumberSpinBox::stripped(const QString& text) const {

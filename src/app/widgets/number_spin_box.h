@@ -38,6 +38,11 @@ public:
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
 
+    /// @brief Ctrl+Z and Ctrl+Shift+Z (the platform's undo and redo keys) go to the window's
+    /// undo stack while the box shows its value as committed: undo from a dock works with the
+    /// focus still in the box. With a typed, uncommitted text they undo the typing as usual.
+    bool event(QEvent* event) override;
+
     /// @brief The number `text` means (locale or dot decimal, optional exponent), if it is one.
     [[nodiscard]] static std::optional<double> parseNumber(const QString& text);
 
