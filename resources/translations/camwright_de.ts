@@ -1158,7 +1158,7 @@
         <translation>eine ganze Zahl</translation>
     </message>
     <message>
-        <location filename="../../src/core/design/sizing.cpp" line="+165" />
+        <location filename="../../src/core/design/sizing.cpp" line="+179" />
         <source>the pressure angle on rise</source>
         <translation>der Druckwinkel im Hub</translation>
     </message>
@@ -2603,7 +2603,7 @@
 <context>
     <name>cam::DockLayout</name>
     <message>
-        <location filename="../../src/app/window/dock_layout.cpp" line="+75" />
+        <location filename="../../src/app/window/dock_layout.cpp" line="+90" />
         <source>Control Points</source>
         <translation>Kontrollpunkte</translation>
     </message>
@@ -2628,7 +2628,7 @@
         <translation>Kräfte</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+9" />
         <source>Forces: the spring, the jump speed, torque and contact stress (Ctrl+F)</source>
         <translation>Kräfte: die Feder, die Abhebedrehzahl, Drehmoment und Kontaktpressung (Strg+F)</translation>
     </message>
@@ -2638,12 +2638,12 @@
         <translation>Bewegungsentwurf</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+8" />
         <source>Design the contour from the follower's motion (Ctrl+D)</source>
         <translation>Die Kontur aus der Bewegung des Stößels entwerfen (Strg+D)</translation>
     </message>
     <message>
-        <location line="+114" />
+        <location line="+118" />
         <source>&lt;b&gt;Segments&lt;/b&gt;: the contour as a table, one row per arc, line or spline piece. Each owns a polar window [φ start, φ end) of the turn; together they cover one turn. Type into a cell and press Enter; Ins inserts, Del deletes. A red cell's tooltip names its problem. F1: the user guide's section on the table.</source>
         <translation>&lt;b&gt;Segmente&lt;/b&gt;: die Kontur als Tabelle, eine Zeile je Bogen, Gerade oder Spline-Stück. Jedes besitzt ein Polarfenster [φ Anfang, φ Ende) der Umdrehung; zusammen decken sie eine Umdrehung ab. In eine Zelle tippen und Eingabe drücken; Einfg fügt ein, Entf löscht. Der Tooltip einer roten Zelle nennt ihr Problem. F1: der Abschnitt des Handbuchs über die Tabelle.</translation>
     </message>
@@ -3044,7 +3044,7 @@
 <context>
     <name>cam::FollowerPanel</name>
     <message>
-        <location filename="../../src/app/views/follower_panel.cpp" line="+51" />
+        <location filename="../../src/app/views/follower_panel.cpp" line="+50" />
         <source>What touches the cam (math.md §7)</source>
         <translation>Was die Kurvenscheibe berührt (math.md §7)</translation>
     </message>
@@ -3159,37 +3159,37 @@
         <translation>Grenze Druckwinkel</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Design checks (click one to go there):</source>
         <translation>Auslegungsprüfungen (Klick springt zur Stelle):</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+1" />
         <source>The follower over the turn: click a line to put the cursor there</source>
         <translation>Der Stößel über eine Umdrehung: Klick auf eine Zeile setzt den Cursor dorthin</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+6" />
         <source>Pressure angle over the turn; dashed: the limit; red: beyond</source>
         <translation>Druckwinkel über eine Umdrehung; gestrichelt: die Grenze; rot: darüber</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-2" />
         <source>Pressure angle [°]</source>
         <translation>Druckwinkel [°]</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+19" />
         <source>Radius of curvature over the turn, positive where convex, negative where hollow; clipped at twice the cam's largest radius (a straight stretch reads as the clip). Blue: the profile; grey: the roller's pitch curve; dashed: the roller's radius and minus the tool's</source>
         <translation>Krümmungsradius über die Umdrehung, positiv wo konvex, negativ wo hohl; begrenzt auf den doppelten größten Radius der Kurvenscheibe (ein gerades Stück liegt auf der Grenze). Blau: das Profil; grau: die Rollenmittelpunktsbahn; gestrichelt: der Rollenradius und minus der Werkzeugradius</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="-3" />
         <source>ρ [mm]</source>
         <translation>ρ [mm]</translation>
     </message>
     <message>
-        <location line="+167" />
+        <location line="+162" />
         <location line="+29" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
@@ -3201,7 +3201,7 @@
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+18" />
         <source>No design checks: no contour yet. Synthesize (F6) makes it from the design.</source>
         <translation>Keine Auslegungsprüfungen: noch keine Kontur. Synthetisieren (F6) erzeugt sie aus dem Entwurf.</translation>
     </message>
@@ -3292,7 +3292,7 @@
         <translation>Nötige Tellerbreite: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+2" />
         <source>Every check passes.</source>
         <translation>Alle Prüfungen bestanden.</translation>
     </message>
@@ -3308,7 +3308,7 @@
 <context>
     <name>cam::ForcesPanel</name>
     <message>
-        <location filename="../../src/app/views/forces_panel.cpp" line="+87" />
+        <location filename="../../src/app/views/forces_panel.cpp" line="+80" />
         <source>Other (typed below)</source>
         <translation>Anderer (unten eingegeben)</translation>
     </message>
@@ -3353,23 +3353,23 @@
         <translation>Nimmt die Dynamik aus dem Projekt (Rückgängig bringt sie zurück)</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+9" />
         <source>Forces (click one to go there):</source>
         <translation>Kräfte (zum Hinspringen anklicken):</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+1" />
         <source>The forces over the turn: click a line to put the cursor there</source>
         <translation>Die Kräfte über die Umdrehung: eine Zeile anklicken setzt den Cursor dorthin</translation>
     </message>
     <message>
-        <location line="+18" />
-        <location line="+145" />
+        <location line="+6" />
+        <location line="+144" />
         <source>Force [N]</source>
         <translation>Kraft [N]</translation>
     </message>
     <message>
-        <location line="-144" />
+        <location line="-143" />
         <source>Contact normal force over the turn (blue), the law's own (dashed, with a motion design) and the load along the follower's line or the arm's moment (grey); shaded: the follower leaves the cam</source>
         <translation>Normalkraft im Kontakt über die Umdrehung (blau), die des Bewegungsgesetzes selbst (gestrichelt, bei einem Bewegungsentwurf) und die Last längs der Stößelachse oder das Moment am Hebel (grau); schattiert: der Stößel hebt ab</translation>
     </message>
@@ -3394,7 +3394,7 @@
         <translation>Hertzsche Pressung über die Umdrehung; gestrichelt: die zulässige</translation>
     </message>
     <message>
-        <location line="+68" />
+        <location line="+67" />
         <source>No dynamics: enter the follower's mass and its spring to see the forces, the jump speed and the contact stress.</source>
         <translation>Keine Dynamik: Masse und Feder des Stößels eingeben, um die Kräfte, die Abhebedrehzahl und die Kontaktpressung zu sehen.</translation>
     </message>
@@ -3424,7 +3424,7 @@
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+20" />
         <source>The follower stays on the cam over the whole turn.</source>
         <translation>Der Stößel bleibt über die ganze Umdrehung an der Kurve.</translation>
     </message>
@@ -3497,7 +3497,7 @@
         <translation>Die Normalkraft auf der Kontur weicht von der des Bewegungsgesetzes um bis zu %1 bei %2 ab</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>The follower stays on; every force check passes.</source>
         <translation>Der Stößel bleibt an der Kurve; jede Kraftprüfung besteht.</translation>
     </message>
@@ -3641,7 +3641,7 @@
         <translation>r</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+17" />
         <source>law</source>
         <translation>Gesetz</translation>
     </message>
@@ -3664,7 +3664,7 @@
 <context>
     <name>cam::MachiningPanel</name>
     <message>
-        <location filename="../../src/app/views/machining_panel.cpp" line="+51" />
+        <location filename="../../src/app/views/machining_panel.cpp" line="+46" />
         <source>Add Machining Limits</source>
         <translation>Bearbeitungsgrenzen hinzufügen</translation>
     </message>
@@ -3837,7 +3837,7 @@
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+136" />
+        <location line="+130" />
         <source>Cursor at %1</source>
         <translation>Cursor bei %1</translation>
     </message>
@@ -3885,7 +3885,7 @@
         <translation>Den kleinsten Grundkreisradius setzen, bei dem der Stößel alle Prüfungen besteht: Druckwinkel im Hub und Rückhub innerhalb der Grenze, kein Unterschnitt (ein Rückgängig-Schritt)</translation>
     </message>
     <message>
-        <location line="+228" />
+        <location line="+223" />
         <source>Best Offset</source>
         <translation>Bester Versatz</translation>
     </message>
@@ -3895,7 +3895,7 @@
         <translation>Den Versatz des Stößels setzen, der den kleinsten Grundkreisradius erlaubt, und diesen Radius, und den zulässigen Bereich über Grundkreisradius × Versatz zeigen (ein Rückgängig-Schritt; Spitzen- oder Rollenstößel mit Schubbewegung)</translation>
     </message>
     <message>
-        <location line="-215" />
+        <location line="-210" />
         <source>Largest distance of the arc table from the exact profile</source>
         <translation>Größter Abstand der Bogentabelle vom exakten Profil</translation>
     </message>
@@ -3941,13 +3941,13 @@
     </message>
     <message>
         <location line="+31" />
-        <location line="+17" />
+        <location line="+12" />
         <source>law</source>
         <translation>Gesetz</translation>
     </message>
     <message>
-        <location line="-15" />
-        <location line="+18" />
+        <location line="-10" />
+        <location line="+13" />
         <source>follower on the contour</source>
         <translation>Stößel auf der Kontur</translation>
     </message>
@@ -4905,7 +4905,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>cam::StressOverlay</name>
     <message>
-        <location filename="../../src/app/views/stress_overlay.cpp" line="+84" />
+        <location filename="../../src/app/views/stress_overlay.cpp" line="+85" />
         <source>Contact stress
 blue 0 … red %1 (allowable)</source>
         <translation>Kontaktpressung
@@ -5182,7 +5182,7 @@ blau 0 … rot %1 (größte)</translation>
         <translation>Auf ein Dock oder eine Ansicht klicken, um zu erfahren, wofür es da ist</translation>
     </message>
     <message>
-        <location line="+73" />
+        <location line="+74" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>

@@ -115,10 +115,7 @@ void MainWindow::wireResults() {
         v.plots->setResult(result);
         v.follower->setResult(result);
         v.forces->setResult(result);
-        for (QCustomPlot* plot : v.follower->turnPlots()) {
-            plot->xAxis->setRange(v.plots->plot(0)->xAxis->range());
-        }
-        for (QCustomPlot* plot : v.forces->turnPlots()) {
+        for (QCustomPlot* plot : v.turnPlots()) {
             plot->xAxis->setRange(v.plots->plot(0)->xAxis->range());
         }
     });
@@ -171,10 +168,7 @@ void MainWindow::wireCursor() {
     // Whoever points at an instant moves the cursor.
     connect(v.contour, &ContourView::cursorAngleChanged, m_cursor, &CursorModel::setAtAngle);
     connect(v.plots, &KinematicsPlots::cursorMoved, m_cursor, &CursorModel::setAtPlotX);
-    std::vector<QCustomPlot*> turnPlots;
-    for (QCustomPlot* plot : v.follower->turnPlots()) turnPlots.push_back(plot);
-    for (QCustomPlot* plot : v.forces->turnPlots()) turnPlots.push_back(plot);
-    for (QCustomPlot* plot : turnPlots) {
+    for (QCustomPlot* plot : v.turnPlots()) {
         connect(plot, &QCustomPlot::mouseMove, this, [this, plot](QMouseEvent* e) {
             m_cursor->setAtPlotX(plot->xAxis->pixelToCoord(e->position().x()));
         });

@@ -14,6 +14,7 @@
 #include "follower/follower_turn.h"
 #include "forces/forces.h"
 #include "io/project_json.h"
+#include "steel_dynamics.h"
 
 namespace {
 
@@ -28,17 +29,7 @@ void BM_ForcesTurn(benchmark::State& state) {
     spec.radius = 2.0;
     spec.offset = 3.0;
     const cam::FollowerModel model = cam::FollowerModel::build(contour, spec).value();
-    cam::DynamicsSpec d;
-    using K = cam::DynamicsKey;
-    d[K::MassKg] = 0.5;
-    d[K::SpringRateNPerMm] = 2.0;
-    d[K::SpringPreloadN] = 20.0;
-    d[K::ExternalForceN] = 5.0;
-    d[K::DampingNsPerM] = 10.0;
-    d[K::ContactWidthMm] = 12.0;
-    d[K::CamModulusMpa] = d[K::FollowerModulusMpa] = 210000.0;
-    d[K::CamPoisson] = d[K::FollowerPoisson] = 0.3;
-    const cam::ForceModel forces = cam::ForceModel::of(d, spec);
+    const cam::ForceModel forces = cam::ForceModel::of(cam::test::steelOnSteelDynamics(), spec);
     const auto n = static_cast<std::size_t>(state.range(0));
     cam::FollowerTurn turn;
     cam::ForceTurn out;

@@ -26,6 +26,7 @@
 #include "forces/forces.h"
 #include "io/project_json.h"
 #include "project/dynamics.h"
+#include "steel_dynamics.h"
 
 namespace cam {
 namespace {
@@ -53,20 +54,24 @@ Project discProject() {
     f.type = FollowerType::Roller;
     f.radius = 8.0;
     p.follower = f;
-    DynamicsSpec d;
-    using K = DynamicsKey;
-    d[K::MassKg] = 0.5;
-    d[K::SpringRateNPerMm] = 2.0;
-    d[K::SpringPreloadN] = 20.0;
-    d[K::ExternalForceN] = 5.0;
-    d[K::DampingNsPerM] = 10.0;
-    d[K::ContactWidthMm] = 12.0;
-    d[K::CamModulusMpa] = 210000.0;
-    d[K::CamPoisson] = 0.3;
-    d[K::FollowerModulusMpa] = 210000.0;
-    d[K::FollowerPoisson] = 0.3;
-    p.dynamics = d;
+    p.dynamics = test::steelOnSteelDynamics();
     return p;
+}
+
+/// The disc's dynamics for a swinging arm: the translating follower's keys out, the arm's in
+/// (I = 0.002 kg·m², kt = 5 N·m/rad, M0 = 1.5 N·m, the damping ct and the external moment).
+DynamicsSpec armDynamics(DynamicsSpec d, double damping, double externalMoment) {
+    using K = DynamicsKey;
+    for (K key :
+         {K::MassKg, K::SpringRateNPerMm, K::SpringPreloadN, K::ExternalForceN, K::DampingNsPerM}) {
+        d[key].reset();
+    }
+    d[K::InertiaKgM2] = 0.002;
+    d[K::SpringRateNmPerRad] = 5.0;
+    d[K::SpringPreloadNm] = 1.5;
+    d[K::ExternalMomentNm] = externalMoment;
+    d[K::DampingNmsPerRad] = damping;
+    return d;
 }
 
 struct Disc {
@@ -315,16 +320,7 @@ TEST(Forces, TheBatchPathIsForceAtOnALineAndOnAnArm) {
     arm.pivot = Eigen::Vector2d(90.0, 0.0);
     arm.armLength = 70.0;
     const FollowerModel swinging = FollowerModel::build(disc.contour, arm).value();
-    DynamicsSpec d = *disc.project.dynamics;
-    using K = DynamicsKey;
-    for (K key :
-         {K::MassKg, K::SpringRateNPerMm, K::SpringPreloadN, K::ExternalForceN, K::DampingNsPerM}) {
-        d[key].reset();
-    }
-    d[K::InertiaKgM2] = 0.002;
-    d[K::SpringRateNmPerRad] = 5.0;
-    d[K::SpringPreloadNm] = 1.5;
-    d[K::DampingNmsPerRad] = 0.01;
+    const DynamicsSpec d = armDynamics(*disc.project.dynamics, 0.01, 0.0);
     const ForceModel model = ForceModel::of(d, arm);
     ASSERT_TRUE(model.swinging);
     expectBatchIsForceAt(swinging, model, kOmega);
@@ -477,13 +473,7 @@ TEST(Forces, ARollerOnASwingingArmOnTheEccentricDiscIsTheClosedForm) {
     // P) × n| with n = (X − C)/|X − C| (no pressure angle), the stress with 1/R' = 1/30 + 1/8. Both
     // arm sides and both turning directions.
     Disc disc;
-    DynamicsSpec d = *disc.project.dynamics;
-    using K = DynamicsKey;
-    d[K::InertiaKgM2] = 0.002;
-    d[K::SpringRateNmPerRad] = 5.0;
-    d[K::SpringPreloadNm] = 1.5;
-    d[K::ExternalMomentNm] = 0.3;
-    d[K::DampingNmsPerRad] = 0.05;
+    const DynamicsSpec d = armDynamics(*disc.project.dynamics, 0.05, 0.3);
     const double soft = 2.0 * (1.0 - 0.09) / 210000.0;  // 1/E*
     const double h = 0.01;
     for (const ArmSide side : {ArmSide::Ccw, ArmSide::Cw}) {

@@ -5,8 +5,6 @@
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QFormLayout>
-#include <QLabel>
-#include <QListWidget>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -16,8 +14,9 @@
 #include "messages/diagnostic_text.h"
 #include "models/delegates.h"
 #include "project/follower_kind.h"
-#include "views/axis_format.h"
+#include "views/check_list.h"
 #include "views/plot_redraw.h"
+#include "views/plot_setup.h"
 #include "widgets/number_spin_box.h"
 #include "widgets/quantity_format.h"
 
@@ -86,28 +85,15 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     form->addRow(tr("Pressure-angle limit"), m_limit);
     layout->addLayout(form);
 
-    layout->addWidget(new QLabel(tr("Design checks (click one to go there):"), this));
-    m_checks = new QListWidget(this);
-    m_checks->setObjectName("designChecksList");
-    m_checks->setToolTip(tr("The follower over the turn: click a line to put the cursor there"));
-    m_checks->setWordWrap(true);
-    m_checks->setIconSize(QSize(14, 14));
-    m_checks->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_checks = new CheckList(
+        tr("Design checks (click one to go there):"), "designChecksList", "designChecksSummary",
+        tr("The follower over the turn: click a line to put the cursor there"), this);
     layout->addWidget(m_checks, 1);
-    m_summary = new QLabel(this);
-    m_summary->setObjectName("designChecksSummary");
-    m_summary->setWordWrap(true);
-    layout->addWidget(m_summary);
+    connect(m_checks, &CheckList::anglePicked, this, &FollowerPanel::anglePicked);
 
-    m_pressurePlot = new QCustomPlot(this);
-    m_pressurePlot->setObjectName("pressureAnglePlot");
+    m_pressurePlot = newAlongXPlot(this, "pressureAnglePlot", tr("Pressure angle [°]"));
     m_pressurePlot->setMinimumHeight(160);
     m_pressurePlot->setToolTip(tr("Pressure angle over the turn; dashed: the limit; red: beyond"));
-    m_pressurePlot->yAxis->setLabel(tr("Pressure angle [°]"));
-    m_pressurePlot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-    m_pressurePlot->axisRect()->setRangeDrag(Qt::Horizontal);
-    m_pressurePlot->axisRect()->setRangeZoom(Qt::Horizontal);
-    applyAxisFormat(m_pressurePlot);
     QCPGraph* angle = m_pressurePlot->addGraph();
     // One pixel wide, as the kinematics curves: Qt strokes a wider pen through its general
     // stroker, and at 1.3 px this curve took 2 to 3 ms of every edit's redraw (0.3 ms now).
@@ -121,19 +107,13 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     m_cursor = addCursorLine(m_pressurePlot);
     layout->addWidget(m_pressurePlot, 1);
 
-    m_curvaturePlot = new QCustomPlot(this);
-    m_curvaturePlot->setObjectName("curvaturePlot");
+    m_curvaturePlot = newAlongXPlot(this, "curvaturePlot", tr("ρ [mm]"));
     m_curvaturePlot->setMinimumHeight(160);
     m_curvaturePlot->setToolTip(
         tr("Radius of curvature over the turn, positive where convex, negative where hollow; "
            "clipped at twice the cam's largest radius (a straight stretch reads as the clip). "
            "Blue: the profile; grey: the roller's pitch curve; dashed: the roller's radius and "
            "minus the tool's"));
-    m_curvaturePlot->yAxis->setLabel(tr("ρ [mm]"));
-    m_curvaturePlot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-    m_curvaturePlot->axisRect()->setRangeDrag(Qt::Horizontal);
-    m_curvaturePlot->axisRect()->setRangeZoom(Qt::Horizontal);
-    applyAxisFormat(m_curvaturePlot);
     m_curvaturePlot->addGraph()->setPen(QPen(QColor(20, 90, 160), 1.0));
     m_curvaturePlot->addGraph()->setPen(QPen(QColor(120, 120, 120), 1.0));
     for (auto& line : m_radiusLines) {
@@ -143,13 +123,6 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     m_curvatureCursor = addCursorLine(m_curvaturePlot);
     layout->addWidget(m_curvaturePlot, 1);
 
-    // A click, or Enter on the current line, goes to the check's angle.
-    const auto pick = [this](QListWidgetItem* item) {
-        const QVariant phi = item->data(Qt::UserRole);
-        if (phi.isValid()) emit anglePicked(phi.toDouble());
-    };
-    connect(m_checks, &QListWidget::itemClicked, this, pick);
-    connect(m_checks, &QListWidget::itemActivated, this, pick);
     const auto choice = [this](QComboBox* box, std::function<void(FollowerSpec&, int)> set) {
         connect(box, &QComboBox::currentIndexChanged, this, [this, set](int index) {
             if (m_refreshing) return;
@@ -339,24 +312,16 @@ void FollowerPanel::setResult(const ComputeResultPtr& result) {
 
 void FollowerPanel::showChecks(const ComputeResultPtr& result) {
     m_checks->clear();
-    m_problems = 0;
     const auto add = [this](const QString& text, std::optional<double> phi, bool problem) {
-        auto* item = new QListWidgetItem(text, m_checks);
-        item->setToolTip(text);
-        if (phi) item->setData(Qt::UserRole, *phi);
-        if (problem) {
-            item->setForeground(QColor(180, 0, 0));
-            item->setIcon(style()->standardIcon(QStyle::SP_MessageBoxWarning));
-            ++m_problems;
-        }
+        m_checks->add(text, phi, problem);
     };
     if (result && result->awaitsContour()) {
-        m_summary->setText(
+        m_checks->setSummary(
             tr("No design checks: no contour yet. Synthesize (F6) makes it from the design."));
         return;
     }
     if (!result || !result->ok()) {
-        m_summary->setText(
+        m_checks->setSummary(
             result && !result->errors.empty()
                 ? tr("No design checks: %1").arg(diagnosticText(result->errors.front()))
                 : tr("No design checks: the contour cannot be computed."));
@@ -365,7 +330,7 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
     if (!result->valid() && result->followerErrors.empty()) {
         // A contour with problems (an open joint): nothing of it is checked as the cam.
         const Diagnostics reasons = result->reasonsNotShown();
-        m_summary->setText(
+        m_checks->setSummary(
             tr("No design checks: %1")
                 .arg(reasons.empty() ? QStringLiteral("?") : diagnosticText(reasons.front())));
         return;
@@ -375,11 +340,11 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
             add(tr("The follower cannot ride this cam: %1").arg(diagnosticText(d)), std::nullopt,
                 true);
         }
-        m_summary->setText(tr("The follower cannot ride this cam."));
+        m_checks->setSummary(tr("The follower cannot ride this cam."));
         return;
     }
     if (!result->follower) {
-        m_summary->setText(
+        m_checks->setSummary(
             tr("The seed's knife edge on the radial line: choose a follower to check it."));
         return;
     }
@@ -459,14 +424,13 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
         }
     }
     if (flat) add(tr("Face width needed: %1").arg(millimetres(a.faceWidth)), std::nullopt, false);
-    m_summary->setText(m_problems == 0 ? tr("Every check passes.")
-                                       : tr("%n check(s) fail.", nullptr, m_problems));
+    const int problems = m_checks->problemCount();
+    m_checks->setSummary(problems == 0 ? tr("Every check passes.")
+                                       : tr("%n check(s) fail.", nullptr, problems));
 }
 
-QStringList FollowerPanel::checkLines() const {
-    QStringList lines;
-    for (int i = 0; i < m_checks->count(); ++i) lines << m_checks->item(i)->text();
-    return lines;
-}
+QStringList FollowerPanel::checkLines() const { return m_checks->lines(); }
+
+int FollowerPanel::problemCount() const { return m_checks->problemCount(); }
 
 }  // namespace cam

@@ -14,11 +14,10 @@
 class QComboBox;
 class QCPItemStraightLine;
 class QCustomPlot;
-class QLabel;
-class QListWidget;
 
 namespace cam {
 
+class CheckList;
 class NumberSpinBox;
 class ProjectDocument;
 
@@ -35,7 +34,7 @@ public:
     /// @brief The checks as shown, one line each (for tests and copying).
     [[nodiscard]] QStringList checkLines() const;
     /// @brief How many checks fail (beyond the limit, cannot reach, cannot ride).
-    [[nodiscard]] int problemCount() const { return m_problems; }
+    [[nodiscard]] int problemCount() const;
     /// @brief The pressure angle over the turn, on the kinematics plots' x axis, with the limit
     /// drawn and the stretches beyond it in red.
     [[nodiscard]] QCustomPlot* pressurePlot() const { return m_pressurePlot; }
@@ -69,8 +68,7 @@ private:
     NumberSpinBox* m_armLength;
     QComboBox* m_side;
     NumberSpinBox* m_limit;
-    QListWidget* m_checks;
-    QLabel* m_summary;
+    CheckList* m_checks;
     QCustomPlot* m_pressurePlot;
     std::array<QCPItemStraightLine*, 2> m_limitLines{};
     QCPItemStraightLine* m_cursor;
@@ -80,7 +78,6 @@ private:
     std::array<QCPItemStraightLine*, 2> m_radiusLines{};
     QCPItemStraightLine* m_curvatureCursor;
     double m_curvatureClip = 0.0;
-    int m_problems = 0;
     int m_gesture = 0;
     bool m_refreshing = false;
 };

@@ -6,8 +6,6 @@
 #include <QCoreApplication>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QLabel>
-#include <QListWidget>
 #include <QPushButton>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -19,8 +17,9 @@
 #include "messages/field_titles.h"
 #include "models/delegates.h"
 #include "project/dynamics.h"
-#include "views/axis_format.h"
+#include "views/check_list.h"
 #include "views/plot_redraw.h"
+#include "views/plot_setup.h"
 #include "widgets/number_spin_box.h"
 #include "widgets/quantity_format.h"
 
@@ -46,15 +45,9 @@ bool zeroClears(DynamicsKey key) {
 }
 
 QCustomPlot* turnPlot(QWidget* parent, const char* name, const QString& label, const QString& tip) {
-    auto* plot = new QCustomPlot(parent);
-    plot->setObjectName(name);
+    QCustomPlot* plot = newAlongXPlot(parent, name, label);
     plot->setMinimumHeight(130);
     plot->setToolTip(tip);
-    plot->yAxis->setLabel(label);
-    plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-    plot->axisRect()->setRangeDrag(Qt::Horizontal);
-    plot->axisRect()->setRangeZoom(Qt::Horizontal);
-    applyAxisFormat(plot);
     return plot;
 }
 
@@ -146,26 +139,13 @@ ForcesPanel::ForcesPanel(ProjectDocument* document, QWidget* parent)
     buttons->addWidget(m_remove);
     layout->addLayout(buttons);
 
-    layout->addWidget(new QLabel(tr("Forces (click one to go there):"), this));
-    m_results = new QListWidget(this);
-    m_results->setObjectName("forceResultsList");
-    m_results->setToolTip(tr("The forces over the turn: click a line to put the cursor there"));
-    m_results->setWordWrap(true);
-    m_results->setIconSize(QSize(14, 14));
-    m_results->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_results =
+        new CheckList(tr("Forces (click one to go there):"), "forceResultsList", "forcesSummary",
+                      tr("The forces over the turn: click a line to put the cursor there"), this);
     // Room for every line of a turn without lift-off (about nine, some wrapped).
-    m_results->setMinimumHeight(12 * fontMetrics().height());
+    m_results->list()->setMinimumHeight(12 * fontMetrics().height());
     layout->addWidget(m_results, 1);
-    m_summary = new QLabel(this);
-    m_summary->setObjectName("forcesSummary");
-    m_summary->setWordWrap(true);
-    layout->addWidget(m_summary);
-    const auto pick = [this](QListWidgetItem* item) {
-        const QVariant phi = item->data(Qt::UserRole);
-        if (phi.isValid()) emit anglePicked(phi.toDouble());
-    };
-    connect(m_results, &QListWidget::itemClicked, this, pick);
-    connect(m_results, &QListWidget::itemActivated, this, pick);
+    connect(m_results, &CheckList::anglePicked, this, &ForcesPanel::anglePicked);
 
     m_plots[0] = turnPlot(this, "normalForcePlot", tr("Force [N]"),
                           tr("Contact normal force over the turn (blue), the law's own (dashed, "
@@ -239,28 +219,27 @@ void ForcesPanel::setResult(const ComputeResultPtr& result) {
         showCurves(*result);
     }
     m_results->clear();
-    m_problems = 0;
     if (!result || !result->project || !result->project->dynamics) {
-        m_summary->setText(
+        m_results->setSummary(
             tr("No dynamics: enter the follower's mass and its spring to see the "
                "forces, the jump speed and the contact stress."));
         return;
     }
     if (result->awaitsContour()) {
-        m_summary->setText(
+        m_results->setSummary(
             tr("No forces: no contour yet. Synthesize (F6) makes it from the "
                "design."));
         return;
     }
     if (!result->valid()) {
         const Diagnostics reasons = result->reasonsNotShown();
-        m_summary->setText(
+        m_results->setSummary(
             tr("No forces: %1")
                 .arg(reasons.empty() ? QStringLiteral("?") : diagnosticText(reasons.front())));
         return;
     }
     if (!result->forces) {
-        m_summary->setText(tr("No forces: choose a follower in the Follower dock."));
+        m_results->setSummary(tr("No forces: choose a follower in the Follower dock."));
         return;
     }
     showSummary(*result);
@@ -324,14 +303,7 @@ void ForcesPanel::showSummary(const ComputeResult& r) {
     const ForceSummary& s = f.summary;
     const ForceModel& m = f.model;
     const auto add = [this](const QString& text, std::optional<double> phi, bool problem) {
-        auto* item = new QListWidgetItem(text, m_results);
-        item->setToolTip(text);
-        if (phi) item->setData(Qt::UserRole, *phi);
-        if (problem) {
-            item->setForeground(QColor(180, 0, 0));
-            item->setIcon(style()->standardIcon(QStyle::SP_MessageBoxWarning));
-            ++m_problems;
-        }
+        m_results->add(text, phi, problem);
     };
     const DisplayQuantity load = m.swinging ? DisplayQuantity::Moment : DisplayQuantity::Force;
     const auto rpm = [](double radPerS) {
@@ -424,14 +396,13 @@ void ForcesPanel::showSummary(const ComputeResult& r) {
                 .arg(formatQuantity(DisplayQuantity::Force, most), formatRadians(phi)),
             phi, false);
     }
-    m_summary->setText(m_problems == 0 ? tr("The follower stays on; every force check passes.")
-                                       : tr("%n force check(s) fail.", nullptr, m_problems));
+    const int problems = m_results->problemCount();
+    m_results->setSummary(problems == 0 ? tr("The follower stays on; every force check passes.")
+                                        : tr("%n force check(s) fail.", nullptr, problems));
 }
 
-QStringList ForcesPanel::resultLines() const {
-    QStringList lines;
-    for (int i = 0; i < m_results->count(); ++i) lines << m_results->item(i)->text();
-    return lines;
-}
+QStringList ForcesPanel::resultLines() const { return m_results->lines(); }
+
+int ForcesPanel::problemCount() const { return m_results->problemCount(); }
 
 }  // namespace cam

@@ -21,12 +21,11 @@ class QCPItemRect;
 class QCPItemStraightLine;
 class QCustomPlot;
 class QFormLayout;
-class QLabel;
-class QListWidget;
 class QPushButton;
 
 namespace cam {
 
+class CheckList;
 class NumberSpinBox;
 class ProjectDocument;
 
@@ -40,7 +39,7 @@ public:
     /// @brief The results as shown, one line each (for tests and copying).
     [[nodiscard]] QStringList resultLines() const;
     /// @brief How many results fail (lift-off, jump speed, preload, stress).
-    [[nodiscard]] int problemCount() const { return m_problems; }
+    [[nodiscard]] int problemCount() const;
     /// @brief The editor of one dynamics value.
     [[nodiscard]] NumberSpinBox* valueBox(DynamicsKey key) const {
         return m_values[static_cast<std::size_t>(key)];
@@ -77,13 +76,11 @@ private:
     std::array<NumberSpinBox*, kDynamicsKeyCount> m_values{};
     std::array<QComboBox*, 2> m_materials{};
     QPushButton* m_remove;
-    QListWidget* m_results;
-    QLabel* m_summary;
+    CheckList* m_results;
     std::array<QCustomPlot*, 3> m_plots{};
     std::array<QCPItemStraightLine*, 3> m_cursors{};
     QCPItemStraightLine* m_allowable = nullptr;
     std::vector<QCPItemRect*> m_liftOff;
-    int m_problems = 0;
     int m_gesture = 0;
     bool m_refreshing = false;
 };

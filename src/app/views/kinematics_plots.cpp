@@ -4,10 +4,10 @@
 #include <cmath>
 
 #include "common/angles.h"
-#include "views/axis_format.h"
 #include "views/palette.h"
 #include "views/plot_data.h"
 #include "views/plot_redraw.h"
+#include "views/plot_setup.h"
 #include "views/stale_label.h"
 
 namespace cam {
@@ -34,13 +34,7 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
                                           {tr("r"), {}, {}}};
     const char* objectNames[] = {"velocityPlot", "accelerationPlot", "jerkPlot", "liftPlot"};
     for (int p = 0; p < kPlotCount; ++p) {
-        auto* plot = new QCustomPlot(this);
-        plot->setObjectName(objectNames[p]);
-        plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-        plot->axisRect()->setRangeDrag(Qt::Horizontal);
-        plot->axisRect()->setRangeZoom(Qt::Horizontal);
-        plot->yAxis->setLabel(titles[p]);
-        applyAxisFormat(plot);
+        QCustomPlot* plot = newAlongXPlot(this, objectNames[p], titles[p]);
         for (int c = 0; c < 3; ++c) {
             QCPGraph* g = plot->addGraph();
             g->setName(names[p][c]);

@@ -14,10 +14,10 @@
 #include "document/commands.h"
 #include "messages/diagnostic_text.h"
 #include "models/delegates.h"
-#include "views/axis_format.h"
 #include "views/palette.h"
 #include "views/plot_data.h"
 #include "views/plot_redraw.h"
+#include "views/plot_setup.h"
 #include "widgets/number_spin_box.h"
 #include "widgets/quantity_format.h"
 
@@ -32,14 +32,9 @@ NumberSpinBox* spinBox(QWidget* parent, const QString& suffix, const QString& ti
 }
 
 QCustomPlot* smallPlot(QWidget* parent, const QString& xLabel, const QString& yLabel) {
-    auto* p = new QCustomPlot(parent);
+    QCustomPlot* p = newAlongXPlot(parent, nullptr, yLabel);
     p->setMinimumHeight(150);
     p->xAxis->setLabel(xLabel);
-    p->yAxis->setLabel(yLabel);
-    p->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-    p->axisRect()->setRangeZoom(Qt::Horizontal);
-    p->axisRect()->setRangeDrag(Qt::Horizontal);
-    applyAxisFormat(p);
     return p;
 }
 

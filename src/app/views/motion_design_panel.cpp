@@ -28,10 +28,10 @@
 #include "models/delegates.h"
 #include "models/design_table_model.h"
 #include "project/follower_kind.h"
-#include "views/axis_format.h"
 #include "views/feasible_region_plot.h"
 #include "views/plot_data.h"
 #include "views/plot_redraw.h"
+#include "views/plot_setup.h"
 #include "widgets/number_spin_box.h"
 #include "widgets/quantity_format.h"
 
@@ -181,13 +181,8 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
                            "designJerkPlot"};
     auto* group = new QCPMarginGroup(nullptr);
     for (std::size_t p = 0; p < 4; ++p) {
-        auto* plot = new QCustomPlot(m_plotArea);
-        plot->setObjectName(names[p]);
+        QCustomPlot* plot = newAlongXPlot(m_plotArea, names[p], QString());
         plot->setMinimumHeight(70);
-        plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-        plot->axisRect()->setRangeDrag(Qt::Horizontal);
-        plot->axisRect()->setRangeZoom(Qt::Horizontal);
-        applyAxisFormat(plot);
         plot->xAxis->setTickLabels(p == 3);
         QCPGraph* law = plot->addGraph();
         law->setName(tr("law"));

@@ -31,6 +31,21 @@
 #include "widgets/column_fit.h"
 
 namespace cam {
+namespace {
+
+/// Puts `panel` into `dock` through a scroll area named `name`: a panel taller than a small
+/// screen scrolls rather than making the window taller.
+void setScrollingWidget(QDockWidget* dock, QWidget* panel, const char* name) {
+    auto* scroll = new QScrollArea(dock);
+    scroll->setObjectName(name);
+    scroll->setWidget(panel);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setFrameShape(QFrame::NoFrame);
+    dock->setWidget(scroll);
+}
+
+}  // namespace
 
 DockLayout::DockLayout(QMainWindow* window, Ui::MainWindow& ui, ProjectDocument* document,
                        SegmentTableModel* model)
@@ -124,13 +139,7 @@ void DockLayout::makeRightDocks() {
     forcesDock->setObjectName("forcesDock");
     forces = new ForcesPanel(m_document, forcesDock);
     forces->setObjectName("forcesPanel");
-    auto* forcesScroll = new QScrollArea(forcesDock);
-    forcesScroll->setObjectName("forcesScrollArea");
-    forcesScroll->setWidget(forces);
-    forcesScroll->setWidgetResizable(true);
-    forcesScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    forcesScroll->setFrameShape(QFrame::NoFrame);
-    forcesDock->setWidget(forcesScroll);
+    setScrollingWidget(forcesDock, forces, "forcesScrollArea");
     m_window->addDockWidget(Qt::RightDockWidgetArea, forcesDock);
     QAction* forcesToggle = forcesDock->toggleViewAction();
     forcesToggle->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F));
@@ -148,13 +157,7 @@ void DockLayout::makeRightDocks() {
     designDock->setObjectName("motionDesignDock");
     design = new MotionDesignPanel(m_document, designDock);
     design->setObjectName("motionDesignPanel");
-    auto* scroll = new QScrollArea(designDock);
-    scroll->setObjectName("motionDesignScrollArea");
-    scroll->setWidget(design);
-    scroll->setWidgetResizable(true);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setFrameShape(QFrame::NoFrame);
-    designDock->setWidget(scroll);
+    setScrollingWidget(designDock, design, "motionDesignScrollArea");
     m_window->addDockWidget(Qt::RightDockWidgetArea, designDock);
     QAction* designToggle = designDock->toggleViewAction();
     designToggle->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_D));
@@ -162,14 +165,18 @@ void DockLayout::makeRightDocks() {
     // Into the tool bar and the View menu by the window, after Play.
 }
 
+std::vector<QCustomPlot*> DockLayout::turnPlots() const {
+    std::vector<QCustomPlot*> all;
+    for (QCustomPlot* plot : follower->turnPlots()) all.push_back(plot);
+    for (QCustomPlot* plot : forces->turnPlots()) all.push_back(plot);
+    return all;
+}
+
 void DockLayout::linkFollowerAxes() {
-    // The follower's plots over the turn (pressure angle, curvature) share the kinematics
-    // plots' x axis: panning or zooming one moves the others.
+    // The follower's plots over the turn (pressure angle, curvature, forces) share the
+    // kinematics plots' x axis: panning or zooming one moves the others.
     QCustomPlot* velocity = plots->plot(0);
-    std::vector<QCustomPlot*> turnPlots;
-    for (QCustomPlot* plot : follower->turnPlots()) turnPlots.push_back(plot);
-    for (QCustomPlot* plot : forces->turnPlots()) turnPlots.push_back(plot);
-    for (QCustomPlot* plot : turnPlots) {
+    for (QCustomPlot* plot : turnPlots()) {
         connect(velocity->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), plot,
                 [plot](const QCPRange& r) {
                     if (plot->xAxis->range() == r) return;

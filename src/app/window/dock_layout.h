@@ -6,7 +6,9 @@
 /// Segments dock fitted to a short contour.
 
 #include <QObject>
+#include <vector>
 
+class QCustomPlot;
 class QDockWidget;
 class QMainWindow;
 
@@ -45,6 +47,9 @@ public:
     /// kMinSegmentRowsShown, when a project is opened or made: a short contour leaves the
     /// plots the room it does not need; a long one gets back the height the dock had.
     void fitSegmentsDock();
+    /// @brief The docks' plots over the turn (the follower's and the forces'), which share the
+    /// kinematics plots' x axis and move the cursor.
+    [[nodiscard]] std::vector<QCustomPlot*> turnPlots() const;
 
     // The views, for the window's wiring (nobody else keeps them).
     ContourView* contour;

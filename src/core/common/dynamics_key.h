@@ -40,22 +40,26 @@ enum class DynamicsKey { CAM_DYNAMICS_KEYS(CAM_DYNAMICS_KEY_ENUM) };
 inline constexpr std::size_t kDynamicsKeyCount = 0 CAM_DYNAMICS_KEYS(CAM_DYNAMICS_KEY_COUNT);
 #undef CAM_DYNAMICS_KEY_COUNT
 
+/// @brief Where a key sits in the file: the object inside `dynamics` ("" for none,
+/// "cam_material", …) and its own name there ("mass_kg", "E_MPa").
+struct DynamicsKeyPlace {
+    std::string_view group;
+    std::string_view name;
+};
+
+#define CAM_DYNAMICS_KEY_PLACE(name, group, key) DynamicsKeyPlace{group, key},
+inline constexpr std::array<DynamicsKeyPlace, kDynamicsKeyCount> kDynamicsKeyPlaces{
+    CAM_DYNAMICS_KEYS(CAM_DYNAMICS_KEY_PLACE)};
+#undef CAM_DYNAMICS_KEY_PLACE
+
 /// @brief The object a key sits in inside `dynamics` ("" for none, "cam_material", …).
 [[nodiscard]] constexpr std::string_view dynamicsKeyGroup(DynamicsKey key) {
-#define CAM_DYNAMICS_KEY_GROUP(name, group, key) group,
-    constexpr std::array<std::string_view, kDynamicsKeyCount> kGroups{
-        CAM_DYNAMICS_KEYS(CAM_DYNAMICS_KEY_GROUP)};
-#undef CAM_DYNAMICS_KEY_GROUP
-    return kGroups[static_cast<std::size_t>(key)];
+    return kDynamicsKeyPlaces[static_cast<std::size_t>(key)].group;
 }
 
 /// @brief The key's own name in its object ("mass_kg", "E_MPa").
 [[nodiscard]] constexpr std::string_view dynamicsKeyName(DynamicsKey key) {
-#define CAM_DYNAMICS_KEY_NAME(name, group, key) key,
-    constexpr std::array<std::string_view, kDynamicsKeyCount> kNames{
-        CAM_DYNAMICS_KEYS(CAM_DYNAMICS_KEY_NAME)};
-#undef CAM_DYNAMICS_KEY_NAME
-    return kNames[static_cast<std::size_t>(key)];
+    return kDynamicsKeyPlaces[static_cast<std::size_t>(key)].name;
 }
 
 /// @brief Its path in the file: "dynamics.mass_kg", "dynamics.cam_material.E_MPa".

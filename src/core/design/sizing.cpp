@@ -143,6 +143,20 @@ private:
     double m_rho, m_limit;
 };
 
+/// Halves [lo, hi] round the radius where a check passes or fails until it is `tolerance`
+/// wide relative to hi (absolute below 1 mm): `lowSide(r)` tells whether r lies on lo's side.
+template <class LowSide>
+void bisectRadius(double& lo, double& hi, double tolerance, LowSide lowSide) {
+    while (hi - lo > tolerance * std::max(1.0, hi)) {
+        const double mid = 0.5 * (lo + hi);
+        if (lowSide(mid)) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+}
+
 }  // namespace
 
 const char* sizingCheckName(SizingCheck check) {
@@ -235,14 +249,8 @@ Result<SizingResult> sizeBaseRadius(const DesignSpec& design, const FollowerSpec
                                             DiagnosticCode::NoBaseRadiusPasses, args)};
     }
     if (lo == 0.0) lo = 0.5 * hi;  // the first grid radius passes: every check is loose
-    while (hi - lo > kSizingTolerance * std::max(1.0, hi)) {
-        const double mid = 0.5 * (lo + hi);
-        if (checker.failing(checker.at(mid))) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
+    bisectRadius(lo, hi, kSizingTolerance,
+                 [&](double r) { return checker.failing(checker.at(r)).has_value(); });
     SizingResult result;
     result.baseRadius = hi;
     const Checks atHi = checker.at(hi);
@@ -294,14 +302,8 @@ double largestBaseRadius(const DesignSpec& design, const FollowerSpec& follower,
     const double reach = follower.pivot.norm() - contactRadius(follower);
     double lo = smallest, hi = reach * (1.0 - 1e-12);
     if (!checker.failing(checker.at(hi))) return reach;
-    while (hi - lo > 1e-6 * std::max(1.0, hi)) {
-        const double mid = 0.5 * (lo + hi);
-        if (checker.failing(checker.at(mid))) {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
+    bisectRadius(lo, hi, 1e-6,
+                 [&](double r) { return !checker.failing(checker.at(r)).has_value(); });
     return lo;
 }
 
