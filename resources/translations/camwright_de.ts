@@ -2416,6 +2416,49 @@
     </message>
 </context>
 <context>
+    <name>cam::CursorActions</name>
+    <message>
+        <location filename="../../src/app/window/cursor_actions.cpp" line="+20" />
+        <source>Previous Sample</source>
+        <translation>Vorheriger Abtastpunkt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Next Sample</source>
+        <translation>Nächster Abtastpunkt</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Previous Joint</source>
+        <translation>Vorheriger Übergang</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Next Joint</source>
+        <translation>Nächster Übergang</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Start of the Turn</source>
+        <translation>Anfang der Umdrehung</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>End of the Turn</source>
+        <translation>Ende der Umdrehung</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>&amp;Cursor</source>
+        <translation>&amp;Cursor</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>%1 (with the focus in the contour view or a plot)</source>
+        <translation>%1 (mit dem Fokus in der Konturansicht oder einem Diagramm)</translation>
+    </message>
+</context>
+<context>
     <name>cam::DesignTableModel</name>
     <message>
         <location filename="../../src/app/models/design_table_model.cpp" line="+145" />
@@ -3641,7 +3684,7 @@
         <translation>r</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+18" />
         <source>law</source>
         <translation>Gesetz</translation>
     </message>
@@ -3832,12 +3875,12 @@
 <context>
     <name>cam::MainWindow</name>
     <message>
-        <location filename="../../src/app/mainwindow.cpp" line="+55" />
+        <location filename="../../src/app/mainwindow.cpp" line="+56" />
         <source>The recovery copy could not be written: %1</source>
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+130" />
+        <location line="+138" />
         <source>Cursor at %1</source>
         <translation>Cursor bei %1</translation>
     </message>
@@ -4712,7 +4755,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>cam::StateReadout</name>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="+28" />
+        <location filename="../../src/app/views/state_readout.cpp" line="+29" />
         <source>t</source>
         <translation>t</translation>
     </message>
@@ -4783,12 +4826,12 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+49" />
+        <location line="+96" />
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location line="-48" />
+        <location line="-95" />
         <source>T</source>
         <translation>T</translation>
     </message>
@@ -4809,12 +4852,12 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+48" />
+        <location line="+95" />
         <source>Load along the follower's line of motion</source>
         <translation>Last längs der Bewegungsachse des Stößels</translation>
     </message>
     <message>
-        <location line="-47" />
+        <location line="-94" />
         <source>Torque on the camshaft</source>
         <translation>Drehmoment an der Kurvenwelle</translation>
     </message>
@@ -4829,12 +4872,32 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <translation>Hertzsche Pressung</translation>
     </message>
     <message>
-        <location line="+22" />
-        <source>State of the follower at the cursor: move the mouse over a plot</source>
-        <translation>Zustand des Stößels am Cursor: Maus über ein Diagramm bewegen</translation>
+        <location line="+15" />
+        <source> s</source>
+        <translation> s</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+1" />
+        <source>The cursor's time in the turn: type one and press Enter to go there (Up/Down: one sample)</source>
+        <translation>Die Zeit des Cursors in der Umdrehung: eine eingeben und mit Enter dorthin gehen (Auf/Ab: ein Abtastpunkt)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The cam's angle at the cursor, 0–360° whichever way it turns: type one and press Enter to go there (Up/Down: one sample)</source>
+        <translation>Der Winkel der Kurvenscheibe am Cursor, 0–360° in beiden Drehrichtungen: einen eingeben und mit Enter dorthin gehen (Auf/Ab: ein Abtastpunkt)</translation>
+    </message>
+    <message>
+        <location line="+37" />
+        <source>The state at the cursor: move the mouse over a plot, type a time or an angle, or step with the arrow keys in a plot (Shift: to the next joint; Home, End)</source>
+        <translation>Der Zustand am Cursor: die Maus über ein Diagramm bewegen, eine Zeit oder einen Winkel eingeben oder mit den Pfeiltasten in einem Diagramm schrittweise gehen (Umschalt: zum nächsten Übergang; Pos1, Ende)</translation>
+    </message>
+    <message>
+        <location line="+36" />
         <source>M</source>
         <translation>M</translation>
     </message>
@@ -5182,7 +5245,7 @@ blau 0 … rot %1 (größte)</translation>
         <translation>Auf ein Dock oder eine Ansicht klicken, um zu erfahren, wofür es da ist</translation>
     </message>
     <message>
-        <location line="+74" />
+        <location line="+80" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>

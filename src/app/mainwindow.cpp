@@ -26,6 +26,7 @@
 #include "views/plot_data.h"
 #include "views/state_readout.h"
 #include "widgets/quantity_format.h"
+#include "window/cursor_actions.h"
 #include "window/cursor_model.h"
 #include "window/dock_layout.h"
 #include "window/export_controller.h"
@@ -74,6 +75,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_ui->mainToolBar->addWidget(m_play->speedBox());
     m_ui->menuView->addSeparator();
     m_ui->menuView->addAction(m_play->action());
+    new CursorActions(m_cursor, centralWidget(), m_ui->menuView);
     m_ui->mainToolBar->addAction(m_views->designDock->toggleViewAction());
     m_ui->menuView->addAction(m_views->designDock->toggleViewAction());
     m_synthesis = new SynthesisController(m_document, m_views->design, this);
@@ -117,6 +119,10 @@ void MainWindow::wireResults() {
         v.forces->setResult(result);
         for (QCustomPlot* plot : v.turnPlots()) {
             plot->xAxis->setRange(v.plots->plot(0)->xAxis->range());
+        }
+        if (result->sampleCount > 0) {
+            const auto n = static_cast<double>(result->sampleCount);
+            v.readout->setSteps(result->period / n, 360.0 / n);
         }
     });
     connect(m_results, &ResultHub::refined, this,
@@ -165,8 +171,11 @@ void MainWindow::wireCursor() {
         v.forces->setCursorX(x);
         v.design->setCursorX(x);
     });
-    // Whoever points at an instant moves the cursor.
+    // Whoever points at an instant moves the cursor: the mouse, a typed time or angle, a key.
     connect(v.contour, &ContourView::cursorAngleChanged, m_cursor, &CursorModel::setAtAngle);
+    connect(v.readout, &StateReadout::timeTyped, m_cursor, &CursorModel::setTime);
+    connect(v.readout, &StateReadout::angleTyped, m_cursor,
+            [this](double degrees) { m_cursor->setAtAngle(degToRad(degrees)); });
     connect(v.plots, &KinematicsPlots::cursorMoved, m_cursor, &CursorModel::setAtPlotX);
     for (QCustomPlot* plot : v.turnPlots()) {
         connect(plot, &QCustomPlot::mouseMove, this, [this, plot](QMouseEvent* e) {

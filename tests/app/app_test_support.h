@@ -1,10 +1,12 @@
 #pragma once
 // Helpers for the app tests: loading projects, waiting for the engine.
 
+#include <QAbstractSpinBox>
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QLocale>
 #include <QStringList>
+#include <QTest>
 #include <QThread>
 #include <cmath>
 #include <limits>
@@ -25,6 +27,14 @@ inline Project loadExample() {
     auto p = loadProjectFile(examplePath("six-lobe-arc-cam.cam.json"));
     EXPECT_TRUE(p.ok());
     return std::move(p).value();
+}
+
+/// Types `text` into a spin box as a user does: focus, select all, type, Enter.
+inline void typeInto(QAbstractSpinBox* box, const QString& text) {
+    box->setFocus();
+    box->selectAll();
+    QTest::keyClicks(box, text);
+    QTest::keyClick(box, Qt::Key_Return);
 }
 
 /// Processes events until `done()` or the timeout; returns done().

@@ -250,13 +250,6 @@ protected:
         ASSERT_EQ(panel->row(), 1);
     }
     const CubicBezier& bezier() const { return std::get<CubicBezier>(contour()[1].shape); }
-    /// Types into an editor of the panel and commits with Enter.
-    void typeInto(NumberSpinBox* box, const QString& text) {
-        box->setFocus();
-        box->selectAll();
-        QTest::keyClicks(box, text);
-        QTest::keyClick(box, Qt::Key_Return);
-    }
     ControlPointsPanel* panel = nullptr;
 };
 
@@ -278,7 +271,7 @@ TEST_F(ControlPoints, EveryEditorShowsItsOwnPoint) {
 TEST_F(ControlPoints, AnInnerPointIsTypedExactlyAndUndone) {
     const Project before = window.document()->project();
     EXPECT_EQ(panel->pointEditor(1, 0)->value(), bezier().p[1].x());
-    typeInto(panel->pointEditor(1, 0), "12.5");
+    test::typeInto(panel->pointEditor(1, 0), "12.5");
     EXPECT_EQ(bezier().p[1].x(), 12.5);
     EXPECT_EQ(window.document()->undoStack()->count(), 2);  // teach-in, then this edit
     window.document()->undoStack()->undo();
@@ -288,7 +281,7 @@ TEST_F(ControlPoints, AnInnerPointIsTypedExactlyAndUndone) {
 
 TEST_F(ControlPoints, AnEndPointTakesItsHandleAlongAndTheWindowFollows) {
     const Vec handle = bezier().p[1] - bezier().p[0];
-    typeInto(panel->pointEditor(0, 1), "26");
+    test::typeInto(panel->pointEditor(0, 1), "26");
     EXPECT_EQ(bezier().p[0].y(), 26.0);
     expectNear(bezier().p[1] - bezier().p[0], handle, 1e-12, "handle");
     EXPECT_NEAR(contour()[1].phiStartDeg,
@@ -296,14 +289,14 @@ TEST_F(ControlPoints, AnEndPointTakesItsHandleAlongAndTheWindowFollows) {
 }
 
 TEST_F(ControlPoints, AHandleIsSetByLengthAndAngle) {
-    typeInto(panel->pointEditor(3, 0), "1.5");  // P3's own row: P3 and its handle move
+    test::typeInto(panel->pointEditor(3, 0), "1.5");  // P3's own row: P3 and its handle move
     EXPECT_EQ(bezier().p[3].x(), 1.5);
     const Vec p3 = bezier().p[3];
     const Vec handle = bezier().p[2] - p3;
-    typeInto(panel->handleLengthEditor(1), "7.5");
+    test::typeInto(panel->handleLengthEditor(1), "7.5");
     EXPECT_NEAR((bezier().p[2] - p3).norm(), 7.5, 1e-12);
     expectNear((bezier().p[2] - p3).normalized(), handle.normalized(), 1e-12, "direction kept");
-    typeInto(panel->handleAngleEditor(1), "30");
+    test::typeInto(panel->handleAngleEditor(1), "30");
     const Vec h = bezier().p[2] - p3;
     EXPECT_NEAR(std::atan2(h.y(), h.x()) * 180.0 / M_PI, 30.0, 1e-12);
     EXPECT_NEAR(h.norm(), 7.5, 1e-12);
@@ -315,7 +308,7 @@ TEST_F(ControlPoints, AHermiteRowEditsItsTangentVector) {
                                  Qt::EditRole);
     ASSERT_EQ(contour()[1].type(), SegmentType::Hermite);
     table->selectRow(1);
-    typeInto(panel->pointEditor(1, 1), "-40");
+    test::typeInto(panel->pointEditor(1, 1), "-40");
     const HermiteCurve& h = std::get<HermiteCurve>(contour()[1].shape);
     EXPECT_EQ(h.t0.y(), -40.0);
     // The handle shown is a third of the tangent (P1 = p0 + t0/3).

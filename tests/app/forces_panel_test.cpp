@@ -43,14 +43,6 @@ bool openWithForces(MainWindow& w, const char* name) {
     return w.waitForCurrentResult(20000);
 }
 
-/// Types `text` into a spin box as a user does: select all, type, Enter.
-void typeInto(NumberSpinBox* box, const QString& text) {
-    box->setFocus();
-    box->selectAll();
-    QTest::keyClicks(box, text);
-    QTest::keyClick(box, Qt::Key_Return);
-}
-
 /// math.md §9 for the example's translating roller (c 5 N·s/m, k 3 N/mm, F0 40 N, no external
 /// force), from the follower's state: s in mm from its lowest, v in mm/s, a in mm/s².
 double loadOf(const FollowerState& f, double mass, double lowest) {
@@ -66,7 +58,7 @@ TEST(ForcesPanel, TypingAMassIsOneUndoStepAndThePlotsShowItsForces) {
     ASSERT_EQ(mass->value(), 0.8);
     const int steps = window.document()->undoStack()->count();
 
-    typeInto(mass, "1.6");
+    test::typeInto(mass, "1.6");
     ASSERT_EQ(window.document()->project().dynamics->values[0], 1.6);
     EXPECT_EQ(window.document()->undoStack()->count(), steps + 1);
     EXPECT_EQ(window.document()->undoStack()->undoText(), "Change dynamics");
@@ -196,7 +188,7 @@ TEST(ForcesPanel, TheMaterialPickerSetsBothValuesInOneStep) {
     EXPECT_EQ((*window.document()->project().dynamics)[DynamicsKey::FollowerModulusMpa], 210000.0);
     EXPECT_EQ(follower->currentText(), "Steel");
     // Typing a value of no material names none.
-    typeInto(panel->valueBox(DynamicsKey::FollowerModulusMpa), "205000");
+    test::typeInto(panel->valueBox(DynamicsKey::FollowerModulusMpa), "205000");
     EXPECT_EQ(follower->currentIndex(), 0);
     // Remove Dynamics takes the section out; undo brings it back whole.
     const DynamicsSpec before = *window.document()->project().dynamics;
@@ -270,7 +262,7 @@ TEST(ForcesPanel, CtrlZInTheBoxJustCommittedUndoesTheEditNotTheTyping) {
     window.activateWindow();
     ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
     NumberSpinBox* mass = window.forcesPanel()->valueBox(DynamicsKey::MassKg);
-    typeInto(mass, "1.6");
+    test::typeInto(mass, "1.6");
     ASSERT_EQ(window.document()->project().dynamics->values[0], 1.6);
     ASSERT_TRUE(mass->hasFocus());
     QTest::keySequence(mass, QKeySequence::keyBindings(QKeySequence::Undo).first());

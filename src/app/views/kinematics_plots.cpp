@@ -35,6 +35,7 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
     const char* objectNames[] = {"velocityPlot", "accelerationPlot", "jerkPlot", "liftPlot"};
     for (int p = 0; p < kPlotCount; ++p) {
         QCustomPlot* plot = newAlongXPlot(this, objectNames[p], titles[p]);
+        plot->setFocusPolicy(Qt::ClickFocus);  // the cursor keys (window/cursor_actions.h)
         for (int c = 0; c < 3; ++c) {
             QCPGraph* g = plot->addGraph();
             g->setName(names[p][c]);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "widgets/number_spin_box.h"
 #include "widgets/quantity_format.h"
 
 namespace cam {
@@ -32,8 +33,45 @@ StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
     const QString tips[kRows - kKinematicRows] = {
         tr("Contact normal force"), tr("Load along the follower's line of motion"),
         tr("Torque on the camshaft"), tr("Power on the camshaft"), tr("Hertz contact stress")};
+    // t and φ are typed into: Enter (or a step with the arrow keys) puts the cursor there.
+    const auto typed = [this](const char* name, const QString& suffix, double low,
+                              const QString& tip) {
+        auto* box = new NumberSpinBox(this);
+        box->setObjectName(name);
+        box->setSuffix(suffix);
+        box->setRange(low, 1e9);
+        box->setKeyboardTracking(false);
+        box->setButtonSymbols(QAbstractSpinBox::NoButtons);
+        // No frame: a white field no taller than the readout's lines, so that the dock (and
+        // the smallest window) keeps its height.
+        box->setFrame(false);
+        box->setFixedHeight(fontMetrics().height());
+        box->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        box->setToolTip(tip);
+        box->setEnabled(false);
+        return box;
+    };
+    m_time = typed("cursorTimeBox", tr(" s"), 0.0,
+                   tr("The cursor's time in the turn: type one and press Enter to go there "
+                      "(Up/Down: one sample)"));
+    m_angle = typed("cursorAngleBox", tr("°"), -1e9,
+                    tr("The cam's angle at the cursor, 0–360° whichever way it turns: type one "
+                       "and press Enter to go there (Up/Down: one sample)"));
+    connect(m_time, &QDoubleSpinBox::valueChanged, this, [this](double t) {
+        if (!m_updating) emit timeTyped(t);
+    });
+    connect(m_angle, &QDoubleSpinBox::valueChanged, this, [this](double deg) {
+        if (!m_updating) emit angleTyped(deg);
+    });
     for (int i = 0; i < kRows; ++i) {
         m_names[i] = new QLabel(names[i], this);
+        if (i == 0 || i == 1) {
+            NumberSpinBox* box = i == 0 ? m_time : m_angle;
+            m_names[i]->setBuddy(box);
+            grid->addWidget(m_names[i], i, 0);
+            grid->addWidget(box, i, 1, Qt::AlignRight);
+            continue;
+        }
         m_values[i] = new QLabel(QStringLiteral("—"), this);
         m_values[i]->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
         m_values[i]->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -53,7 +91,9 @@ StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
         }
     }
     grid->setRowStretch(kRows, 1);
-    setToolTip(tr("State of the follower at the cursor: move the mouse over a plot"));
+    setToolTip(
+        tr("The state at the cursor: move the mouse over a plot, type a time or an angle, or "
+           "step with the arrow keys in a plot (Shift: to the next joint; Home, End)"));
 }
 
 void StateReadout::setState(const KinematicState& s) {
@@ -67,6 +107,18 @@ void StateReadout::setState(const KinematicState& s) {
     for (int i = 0; i < kKinematicRows; ++i) {
         showValue(i, formatQuantity(kReadoutQuantities[i], values[i]));
     }
+    // The boxes follow the cursor, but not over what the user is typing.
+    m_updating = true;
+    for (auto [box, v] : {std::pair{m_time, s.t}, std::pair{m_angle, phiDeg}}) {
+        box->setEnabled(true);
+        if (!(box->hasFocus() && box->isTyping())) box->setValue(v);
+    }
+    m_updating = false;
+}
+
+void StateReadout::setSteps(double timeStep, double angleStep) {
+    m_time->setSingleStep(timeStep);
+    m_angle->setSingleStep(angleStep);
 }
 
 void StateReadout::setForces(const std::optional<ForcePoint>& f, bool swinging) {
@@ -90,10 +142,14 @@ void StateReadout::setForces(const std::optional<ForcePoint>& f, bool swinging) 
 
 void StateReadout::clear() {
     for (int i = 0; i < kRows; ++i) showValue(i, QStringLiteral("—"));
+    m_time->setEnabled(false);
+    m_angle->setEnabled(false);
 }
 
 void StateReadout::showValue(int row, const QString& text) {
+    m_texts[static_cast<std::size_t>(row)] = text;
     QLabel* label = m_values[static_cast<std::size_t>(row)];
+    if (!label) return;  // t and φ: their boxes
     const int needed = label->fontMetrics().horizontalAdvance(text);
     if (needed > label->width()) label->setFixedWidth(needed);
     label->setText(text);
@@ -102,7 +158,7 @@ void StateReadout::showValue(int row, const QString& text) {
 QString StateReadout::text() const {
     QStringList lines;
     for (int i = 0; i < kRows; ++i) {
-        if (!m_names[i]->isHidden()) lines << m_names[i]->text() + " " + m_values[i]->text();
+        if (!m_names[i]->isHidden()) lines << m_names[i]->text() + " " + m_texts[i];
     }
     return lines.join('\n');
 }

@@ -13,17 +13,31 @@ class QLabel;
 
 namespace cam {
 
+class NumberSpinBox;
+
 class StateReadout : public QWidget {
     Q_OBJECT
 public:
     explicit StateReadout(QWidget* parent = nullptr);
     void setState(const KinematicState& state);
     void clear();
+    /// @brief What the t and φ boxes step by with their arrow keys: one sample of the turn
+    /// (s) and its angle (°).
+    void setSteps(double timeStep, double angleStep);
+    /// @brief The boxes the cursor's time and angle are typed into.
+    [[nodiscard]] NumberSpinBox* timeBox() const { return m_time; }
+    [[nodiscard]] NumberSpinBox* angleBox() const { return m_angle; }
     /// @brief The forces at the cursor (math.md §9), below the kinematics; none: their rows
     /// are hidden (a project without dynamics).
     void setForces(const std::optional<ForcePoint>& forces, bool swinging);
     /// @brief The shown values as "name value unit" lines (for tests and copying).
     [[nodiscard]] QString text() const;
+
+signals:
+    /// A time was typed (s) or stepped to: put the cursor there.
+    void timeTyped(double t);
+    /// An angle on the cam was typed (°, 0 … 360 whichever way the cam turns).
+    void angleTyped(double degrees);
 
 private:
     /// Shows `text` in the value label of `row`, widening it first if the text needs more room.
@@ -32,7 +46,12 @@ private:
     /// Normal force, load (or the arm's moment), torque, power, contact stress.
     static constexpr int kRows = kKinematicRows + 5;
     std::array<QLabel*, kRows> m_names{};
+    /// The value labels; none for t and φ, which are typed into m_time and m_angle.
     std::array<QLabel*, kRows> m_values{};
+    std::array<QString, kRows> m_texts{};  ///< what each row shows
+    NumberSpinBox* m_time = nullptr;
+    NumberSpinBox* m_angle = nullptr;
+    bool m_updating = false;  ///< the boxes are being set from the cursor, not typed
 };
 
 }  // namespace cam

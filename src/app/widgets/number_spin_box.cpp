@@ -63,7 +63,7 @@ bool NumberSpinBox::event(QEvent* event) {
     if (event->type() == QEvent::ShortcutOverride) {
         const auto* key = static_cast<QKeyEvent*>(event);
         const bool undoKey = key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo);
-        if (undoKey && cleanText() == textFromValue(value())) {
+        if (undoKey && !isTyping()) {
             // Not ours: the shortcut (the window's Undo or Redo) takes the key.
             event->ignore();
             return true;
@@ -71,6 +71,8 @@ bool NumberSpinBox::event(QEvent* event) {
     }
     return QDoubleSpinBox::event(event);
 }
+
+bool NumberSpinBox::isTyping() const { return cleanText() != textFromValue(value()); }
 
 QString NumberSpinBox::stripped(const QString& text) const {
     QString s = text;

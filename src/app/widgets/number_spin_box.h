@@ -42,6 +42,8 @@ public:
     /// undo stack while the box shows its value as committed: undo from a dock works with the
     /// focus still in the box. With a typed, uncommitted text they undo the typing as usual.
     bool event(QEvent* event) override;
+    /// @brief Whether the box holds typed text not yet taken as its value.
+    [[nodiscard]] bool isTyping() const;
 
     /// @brief The number `text` means (locale or dot decimal, optional exponent), if it is one.
     [[nodiscard]] static std::optional<double> parseNumber(const QString& text);

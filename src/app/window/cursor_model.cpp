@@ -1,6 +1,7 @@
 #include "window/cursor_model.h"
 
 #include <cmath>
+#include <limits>
 
 #include "common/angles.h"
 #include "engine/compute_engine.h"
@@ -19,6 +20,43 @@ void CursorModel::setAtAngle(double phi) {
 void CursorModel::setAtPlotX(double x) {
     const ComputeResultPtr& r = m_results->shown();
     if (r) setTime(r->axis == PlotAxis::Angle ? degToRad(x) / r->omega : x);
+}
+
+void CursorModel::stepSamples(int count) {
+    const ComputeResultPtr& r = m_results->shown();
+    if (!r || r->sampleCount == 0 || !(r->period > 0.0)) return;
+    const double dt = r->period / static_cast<double>(r->sampleCount);
+    setTime((std::round(m_t / dt) + count) * dt);
+}
+
+void CursorModel::stepJoints(int direction) {
+    const ComputeResultPtr& r = m_results->shown();
+    if (!r || r->joints.empty() || !(r->period > 0.0)) return;
+    // The joints' instants within the turn, and the nearest one ahead (or behind) by more
+    // than a rounding: the one the cursor stands on is not a step.
+    const double T = r->period;
+    const double eps = 1e-9 * T;
+    double best = std::numeric_limits<double>::infinity();
+    double target = m_t;
+    for (const JointAnalysis& j : r->joints) {
+        double tj = std::fmod(j.phi / r->omega, T);
+        if (tj < 0.0) tj += T;
+        double ahead = direction > 0 ? tj - m_t : m_t - tj;  // how far, in the step's sense
+        if (ahead <= eps) ahead += T;
+        if (ahead < best) {
+            best = ahead;
+            target = tj;
+        }
+    }
+    setTime(target);
+}
+
+void CursorModel::toTurnStart() { setTime(0.0); }
+
+void CursorModel::toTurnEnd() {
+    const ComputeResultPtr& r = m_results->shown();
+    if (!r || r->sampleCount == 0) return;
+    setTime(r->period * (1.0 - 1.0 / static_cast<double>(r->sampleCount)));
 }
 
 void CursorModel::setTime(double t) {

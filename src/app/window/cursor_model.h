@@ -30,6 +30,15 @@ public:
     void setAtPlotX(double x);
     /// @brief Once more where it is (a new result: its state there).
     void refresh() { setTime(m_t); }
+    /// @brief By `count` samples of the turn (the result's samples per turn), from the sample
+    /// nearest the cursor; the turn wraps round.
+    void stepSamples(int count);
+    /// @brief To the next joint of the contour in time (`direction` > 0) or the previous one;
+    /// the turn wraps round. No joint (one closed segment): the cursor stays.
+    void stepJoints(int direction);
+    /// @brief To the first sample of the turn (t = 0) or its last (one sample before T).
+    void toTurnStart();
+    void toTurnEnd();
 
 signals:
     /// The state at the cursor, and where it is on the plots' x axis (degrees or seconds).

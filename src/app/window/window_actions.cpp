@@ -295,6 +295,12 @@ void WindowActions::setUpIcons() {
         {"actionPlay", "media-playback-start"},
         {"actionLiftPlot", "camwright-lift-plot"},
         {"actionStressColours", "camwright-stress-colours"},
+        {"actionCursorPreviousSample", "go-previous"},
+        {"actionCursorNextSample", "go-next"},
+        {"actionCursorPreviousJoint", "camwright-previous-joint"},
+        {"actionCursorNextJoint", "camwright-next-joint"},
+        {"actionCursorTurnStart", "go-first"},
+        {"actionCursorTurnEnd", "go-last"},
     };
     for (const auto& [object, icon] : named) {
         if (auto* action = m_window->findChild<QAction*>(object)) set(action, icon);
