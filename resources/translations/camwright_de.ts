@@ -2860,17 +2860,17 @@
     <name>cam::ExportDialog</name>
     <message>
         <location filename="../../src/app/export/export_dialog.cpp" line="+52" />
-        <location line="+248" />
+        <location line="+279" />
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location line="-239" />
+        <location line="-270" />
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+19" />
         <source>Instants over one turn, equally spaced in time</source>
         <translation>Zeitpunkte über eine Umdrehung, zeitlich gleichabständig</translation>
     </message>
@@ -2882,19 +2882,19 @@
     <message>
         <location line="+5" />
         <location line="+25" />
-        <location line="+24" />
+        <location line="+43" />
         <source>Splines become tangent arc pairs within this distance</source>
         <translation>Splines werden zu tangentialen Bogenpaaren innerhalb dieses Abstands</translation>
     </message>
     <message>
-        <location line="-48" />
+        <location line="-67" />
         <location line="+25" />
-        <location line="+24" />
+        <location line="+43" />
         <source>Spline &amp;tolerance:</source>
         <translation>Spline-&amp;Toleranz:</translation>
     </message>
     <message>
-        <location line="-48" />
+        <location line="-67" />
         <source>One closed &amp;polyline with bulges</source>
         <translation>Eine geschlossene &amp;Polylinie mit Bögen</translation>
     </message>
@@ -2930,17 +2930,12 @@
         <translation>Der Fräserradius (vorgegeben aus dem Bearbeitungsabschnitt des Projekts)</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>Feed along the profile; plunges go at half</source>
-        <translation>Vorschub entlang des Profils; Eintauchen mit der Hälfte</translation>
-    </message>
-    <message>
-        <location line="+4" />
+        <location line="+27" />
         <source>Total depth of cut below the stock's top (Z0)</source>
         <translation>Gesamte Schnitttiefe unter der Rohteiloberkante (Z0)</translation>
     </message>
     <message>
-        <location line="-33" />
+        <location line="-52" />
         <source>Splines as SP&amp;LINE entities</source>
         <translation>Splines als SP&amp;LINE-Elemente</translation>
     </message>
@@ -2950,9 +2945,29 @@
         <translation>Werkzeugmittelpunktsbahn auf Layer TOOLPAT&amp;H</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+26" />
+        <source>Feed along the profile; plunges go at half. At most the project's feed limit (Machining dock): %1 mm/min</source>
+        <translation>Vorschub entlang des Profils; Eintauchen mit der Hälfte. Höchstens die Vorschubgrenze des Projekts (Dock Zerspanung): %1 mm/min</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Feed along the profile; plunges go at half. The project sets no feed limit (Machining dock): %1 mm/min to start with</source>
+        <translation>Vorschub entlang des Profils; Eintauchen mit der Hälfte. Das Projekt setzt keine Vorschubgrenze (Dock Zerspanung): zu Beginn %1 mm/min</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>Fee&amp;d:</source>
         <translation>&amp;Vorschub:</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1 mm/min (half the feed)</source>
+        <translation>%1 mm/min (halber Vorschub)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Plunge:</source>
+        <translation>Eintauchen:</translation>
     </message>
     <message>
         <location line="+3" />
@@ -3025,7 +3040,7 @@
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location line="+122" />
+        <location line="+131" />
         <source>Name the file to write.</source>
         <translation>Geben Sie die zu schreibende Datei an.</translation>
     </message>
@@ -4826,12 +4841,12 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+96" />
+        <location line="+100" />
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location line="-95" />
+        <location line="-99" />
         <source>T</source>
         <translation>T</translation>
     </message>
@@ -4852,12 +4867,12 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+95" />
+        <location line="+99" />
         <source>Load along the follower's line of motion</source>
         <translation>Last längs der Bewegungsachse des Stößels</translation>
     </message>
     <message>
-        <location line="-94" />
+        <location line="-98" />
         <source>Torque on the camshaft</source>
         <translation>Drehmoment an der Kurvenwelle</translation>
     </message>
@@ -4872,7 +4887,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <translation>Hertzsche Pressung</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+19" />
         <source> s</source>
         <translation> s</translation>
     </message>

@@ -414,6 +414,49 @@ TEST(ExportDialogTest, StartsFromTheProjectAndTheLastExport) {
     EXPECT_EQ(r.pictureSize, QSize(842, 595));
 }
 
+TEST(ExportDialogTest, TheFeedStartsCautiousIsRememberedAndStaysBelowTheProjectsLimit) {
+    // Issue 31, point 6: a project without a machining section went out at 6,000 mm/min, and a
+    // typed feed was forgotten by the next export.
+    QSettings().remove("export/options");
+    const Project plain = test::loadExample();
+    ASSERT_FALSE(plain.machining.has_value());
+    test::TempDir dir;
+    const auto exportWith = [&](const Project& project, const QString& feed) {
+        ExportDialog dialog(project, "cam.cam.json", "cam", {});
+        dialog.setFormat(ExportFormat::Gcode);
+        dialog.show();
+        if (!feed.isEmpty()) test::typeInto(dialog.findChild<NumberSpinBox*>("gcodeFeed"), feed);
+        const ExportRequest r = dialog.request();
+        dialog.setFileName(QString::fromStdString(dir.file("cam.ngc")));
+        dialog.accept();
+        EXPECT_EQ(dialog.result(), QDialog::Accepted);
+        return std::pair{r, dialog.findChild<QLabel*>("gcodePlunge")->text()};
+    };
+    // A first export of a project with no feed limit: 1,000 mm/min, the plunge at half shown.
+    auto [first, plunge] = exportWith(plain, {});
+    EXPECT_EQ(first.gcode.feedMmMin, 1000.0);
+    EXPECT_EQ(plunge, "500 mm/min (half the feed)");
+    // A typed feed is the next export's.
+    EXPECT_EQ(exportWith(plain, "2400").first.gcode.feedMmMin, 2400.0);
+    EXPECT_EQ(exportWith(plain, {}).first.gcode.feedMmMin, 2400.0);
+    // A project with a feed limit (100 mm/s) keeps a remembered feed below it, caps one above,
+    // and gives its own tool radius whatever was typed before.
+    Project limited = plain;
+    limited.machining = MachiningSpec{};
+    limited.machining->feedMax = 100.0;
+    limited.machining->toolRadius = 2.0;
+    auto [below, plungeBelow] = exportWith(limited, {});
+    EXPECT_EQ(below.gcode.feedMmMin, 2400.0);
+    EXPECT_EQ(plungeBelow, "1200 mm/min (half the feed)");
+    EXPECT_EQ(exportWith(plain, "9000").first.gcode.feedMmMin, 9000.0);
+    const auto capped = exportWith(limited, {}).first;
+    EXPECT_EQ(capped.gcode.feedMmMin, 6000.0);
+    EXPECT_EQ(capped.gcode.toolRadiusMm, 2.0);
+    // Typed above the limit: the box refuses to go past it.
+    EXPECT_EQ(exportWith(limited, "7000").first.gcode.feedMmMin, 6000.0);
+    QSettings().remove("export/options");
+}
+
 TEST(ExportDialogTest, FileExportIsInTheMenuWithItsShortcut) {
     MainWindow window;
     auto* action = window.findChild<QAction*>("actionExport");

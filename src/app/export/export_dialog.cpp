@@ -18,6 +18,7 @@
 #include <cmath>
 
 #include "widgets/number_spin_box.h"
+#include "widgets/quantity_format.h"
 
 namespace cam {
 namespace {
@@ -66,6 +67,9 @@ ExportDialog::ExportDialog(const Project& project, const QString& fileName, cons
     const MachiningSpec machining = project.machining.value_or(MachiningSpec{});
     // Without a machining section: a 6 mm end mill, common and narrow enough for most cams.
     const double toolRadius = machining.toolRadius > 0.0 ? machining.toolRadius : 3.0;
+    if (project.machining && project.machining->toolRadius > 0.0) {
+        m_projectToolRadius = project.machining->toolRadius;
+    }
     QFormLayout* form = nullptr;
 
     // CSV
@@ -114,10 +118,30 @@ ExportDialog::ExportDialog(const Project& project, const QString& fileName, cons
                                   tr("The cutter's radius (the project's machining section "
                                      "gives the default)"));
     form->addRow(tr("Tool &radius:"), m_gcodeToolRadius);
-    m_gcodeFeed = lengthBox(this, "gcodeFeed", 1e-3, 1e7, machining.feedMax * 60.0,
-                            tr("Feed along the profile; plunges go at half"));
+    // A feed the machine takes: the project's feed limit, else a cautious one to start with.
+    m_feedLimit =
+        project.machining ? std::optional(project.machining->feedMax * 60.0) : std::nullopt;
+    m_gcodeFeed = lengthBox(
+        this, "gcodeFeed", 1e-3, 1e7, m_feedLimit.value_or(kCautiousFeedMmMin),
+        m_feedLimit ? tr("Feed along the profile; plunges go at half. At most the project's "
+                         "feed limit (Machining dock): %1 mm/min")
+                          .arg(formatQuantityValue(DisplayQuantity::Input, *m_feedLimit))
+                    : tr("Feed along the profile; plunges go at half. The project sets no "
+                         "feed limit (Machining dock): %1 mm/min to start with")
+                          .arg(formatQuantityValue(DisplayQuantity::Input, kCautiousFeedMmMin)));
     m_gcodeFeed->setSuffix(QStringLiteral(" mm/min"));
+    if (m_feedLimit) m_gcodeFeed->setMaximum(*m_feedLimit);
     form->addRow(tr("Fee&d:"), m_gcodeFeed);
+    m_gcodePlunge = new QLabel(this);
+    m_gcodePlunge->setObjectName("gcodePlunge");
+    const auto plunge = [this] {
+        m_gcodePlunge->setText(
+            tr("%1 mm/min (half the feed)")
+                .arg(formatQuantityValue(DisplayQuantity::Input, m_gcodeFeed->value() / 2.0)));
+    };
+    connect(m_gcodeFeed, &QDoubleSpinBox::valueChanged, this, plunge);
+    plunge();
+    form->addRow(tr("Plunge:"), m_gcodePlunge);
     m_gcodeDepth = lengthBox(this, "gcodeDepth", 1e-6, 1e4, kDefaultGcodeDepthMm,
                              tr("Total depth of cut below the stock's top (Z0)"));
     form->addRow(tr("De&pth:"), m_gcodeDepth);
@@ -231,8 +255,11 @@ ExportDialog::ExportDialog(const Project& project, const QString& fileName, cons
 
 std::vector<QWidget*> ExportDialog::rememberedOptions() const {
     // The picture's type before its size: choosing a type resets the size to its default.
+    // The tool radii and the feed too: a project with a machining section then gives its own
+    // tool radius, and caps the feed at its limit (restoreOptions()).
     return {m_dxfTolerance,   m_dxfPolyline,       m_dxfSplines,
-            m_dxfCentres,     m_dxfToolPath,       m_svgTolerance,
+            m_dxfCentres,     m_dxfToolPath,       m_dxfToolRadius,
+            m_svgTolerance,   m_gcodeToolRadius,   m_gcodeFeed,
             m_gcodeDepth,     m_gcodeStepDownOn,   m_gcodeStepDown,
             m_gcodeTolerance, m_gcodeCompensation, m_tablePoints,
             m_tableDialect,   m_picture,           m_width,
@@ -255,6 +282,12 @@ void ExportDialog::restoreOptions() {
             const int i = value.toInt();
             if (i >= 0 && i < combo->count()) combo->setCurrentIndex(i);
         }
+    }
+    // What the project's machining section says of the tool comes from the project (the feed
+    // box's maximum already holds its feed limit).
+    if (m_projectToolRadius) {
+        m_dxfToolRadius->setValue(*m_projectToolRadius);
+        m_gcodeToolRadius->setValue(*m_projectToolRadius);
     }
 }
 

@@ -3,6 +3,7 @@
 /// @brief File → Export…: the format, the options of that format and the file, in one dialog.
 
 #include <QDialog>
+#include <optional>
 #include <vector>
 
 #include "export/export_request.h"
@@ -17,6 +18,10 @@ class QStackedWidget;
 namespace cam {
 
 class NumberSpinBox;
+
+/// @brief The G-code feed the dialog starts with for a project that sets no feed limit
+/// (mm/min): a cautious one for a first cut, not the machine's top speed.
+inline constexpr double kCautiousFeedMmMin = 1000.0;
 
 class ExportDialog : public QDialog {
     Q_OBJECT
@@ -63,6 +68,11 @@ private:
     NumberSpinBox* m_svgTolerance = nullptr;
     NumberSpinBox* m_gcodeToolRadius = nullptr;
     NumberSpinBox* m_gcodeFeed = nullptr;
+    QLabel* m_gcodePlunge = nullptr;
+    /// The project's feed limit (mm/min) and tool radius (mm), when its machining section
+    /// gives them: the feed stays below the one, the tool radii are the other.
+    std::optional<double> m_feedLimit;
+    std::optional<double> m_projectToolRadius;
     NumberSpinBox* m_gcodeDepth = nullptr;
     QCheckBox* m_gcodeStepDownOn = nullptr;
     NumberSpinBox* m_gcodeStepDown = nullptr;
