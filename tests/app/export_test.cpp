@@ -11,6 +11,7 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
@@ -455,6 +456,34 @@ TEST(ExportDialogTest, TheFeedStartsCautiousIsRememberedAndStaysBelowTheProjects
     // Typed above the limit: the box refuses to go past it.
     EXPECT_EQ(exportWith(limited, "7000").first.gcode.feedMmMin, 6000.0);
     QSettings().remove("export/options");
+}
+
+TEST(ExportDialogTest, AProjectsExportGoesBesideItUnlessItWasExportedElsewhere) {
+    // Issue 31, point 8: the dialog started in the home folder, not the project's.
+    const Project project = test::loadExample();
+    test::TempDir lastAny, projectDir, chosen, otherDir;
+    QSettings().setValue("export/folder", QString::fromStdString(lastAny.path().string()));
+    QSettings().remove("export/project");
+    const QString projectFile = QString::fromStdString(projectDir.file("cam.cam.json"));
+    const auto folderOf = [&](const QString& file) {
+        ExportDialog dialog(project, "cam.cam.json", "cam", {}, nullptr, file);
+        return QFileInfo(dialog.request().path).absolutePath();
+    };
+    const auto dirOf = [](const test::TempDir& d) {
+        return QFileInfo(QString::fromStdString(d.path().string())).absoluteFilePath();
+    };
+    EXPECT_EQ(folderOf(projectFile), dirOf(projectDir));
+    EXPECT_EQ(folderOf({}), dirOf(lastAny));  // a project with no file yet: the last folder
+    // Exported elsewhere, the project's next export goes there; another project's beside it.
+    {
+        ExportDialog dialog(project, "cam.cam.json", "cam", {}, nullptr, projectFile);
+        dialog.show();
+        dialog.setFileName(QString::fromStdString(chosen.file("cam.dxf")));
+        dialog.accept();
+        ASSERT_EQ(dialog.result(), QDialog::Accepted);
+    }
+    EXPECT_EQ(folderOf(projectFile), dirOf(chosen));
+    EXPECT_EQ(folderOf(QString::fromStdString(otherDir.file("other.cam.json"))), dirOf(otherDir));
 }
 
 TEST(ExportDialogTest, FileExportIsInTheMenuWithItsShortcut) {

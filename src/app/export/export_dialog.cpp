@@ -44,8 +44,9 @@ QWidget* page(QStackedWidget* pages, QFormLayout*& form) {
 }  // namespace
 
 ExportDialog::ExportDialog(const Project& project, const QString& fileName, const QString& baseName,
-                           std::vector<PlotKind> plots, QWidget* parent)
+                           std::vector<PlotKind> plots, QWidget* parent, const QString& projectFile)
     : QDialog(parent),
+      m_projectFile(projectFile),
       m_baseName(baseName),
       m_plots(std::move(plots)),
       m_title(project.name.empty() ? fileName.toStdString() : project.name),
@@ -244,7 +245,11 @@ ExportDialog::ExportDialog(const Project& project, const QString& fileName, cons
     connect(m_format, &QComboBox::currentIndexChanged, this, &ExportDialog::formatChanged);
 
     const QSettings settings;
-    const QString folder = settings.value("export/folder", QDir::homePath()).toString();
+    const QString lastFolder = settings.value("export/folder", QDir::homePath()).toString();
+    const bool sameProject =
+        !projectFile.isEmpty() && settings.value("export/project").toString() == projectFile;
+    const QString folder =
+        projectFile.isEmpty() || sameProject ? lastFolder : QFileInfo(projectFile).absolutePath();
     m_file->setText(QDir(folder).filePath(baseName));
     pictureChanged();
     restoreOptions();
@@ -383,6 +388,7 @@ void ExportDialog::accept() {
     }
     QSettings settings;
     settings.setValue("export/folder", info.absolutePath());
+    settings.setValue("export/project", m_projectFile);
     settings.setValue("export/format", static_cast<int>(format()));
     for (QWidget* w : rememberedOptions()) {
         const QString key = "export/options/" + w->objectName();

@@ -30,9 +30,12 @@ public:
     /// last export (format, folder and the other options, from QSettings). The project's name (else
     /// `fileName`) titles the SVG and G-code as camwright-cli does; the name (else `baseName`, the
     /// file name without .cam.json) names the cam table's variables, and `baseName` the file by
-    /// default. `plots` are the plots that can be drawn now.
+    /// default. `plots` are the plots that can be drawn now. The file goes into the folder of
+    /// this project's last export, else the folder of `projectFile` (the project's own file,
+    /// empty when it has none), else that of the last export of any project, else home.
     ExportDialog(const Project& project, const QString& fileName, const QString& baseName,
-                 std::vector<PlotKind> plots, QWidget* parent = nullptr);
+                 std::vector<PlotKind> plots, QWidget* parent = nullptr,
+                 const QString& projectFile = {});
 
     /// @brief The export as the dialog's fields say (meaningful once accepted).
     [[nodiscard]] ExportRequest request() const;
@@ -69,6 +72,7 @@ private:
     NumberSpinBox* m_gcodeToolRadius = nullptr;
     NumberSpinBox* m_gcodeFeed = nullptr;
     QLabel* m_gcodePlunge = nullptr;
+    QString m_projectFile;
     /// The project's feed limit (mm/min) and tool radius (mm), when its machining section
     /// gives them: the feed stays below the one, the tool radii are the other.
     std::optional<double> m_feedLimit;

@@ -68,7 +68,7 @@ ExportController::ExportController(QMainWindow* window, Ui::MainWindow& ui,
     m_ui.menuFile->insertSeparator(m_ui.actionQuit);
     connect(exportAction, &QAction::triggered, this, [this] {
         ExportDialog dialog(m_document->project(), m_document->displayName(), exportBaseName(),
-                            drawablePlots(), m_window);
+                            drawablePlots(), m_window, m_document->filePath());
         if (dialog.exec() == QDialog::Accepted) exportFile(dialog.request());
     });
     for (PlotKind kind : kPlotKinds) {
