@@ -34,10 +34,14 @@ StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
         tr("Contact normal force"), tr("Load along the follower's line of motion"),
         tr("Torque on the camshaft"), tr("Power on the camshaft"), tr("Hertz contact stress")};
     // t and φ are typed into: Enter (or a step with the arrow keys) puts the cursor there.
-    const auto typed = [this](const char* name, const QString& suffix, double low,
-                              const QString& tip) {
+    const auto typed = [this](const char* name, DisplayQuantity quantity, const QString& suffix,
+                              double low, const QString& tip) {
         auto* box = new NumberSpinBox(this);
         box->setObjectName(name);
+        // The readout's digits, and room for its widest value as the other rows have.
+        box->setSignificantDigits(quantityFormat(quantity).significant);
+        box->setMinimumWidth(
+            fontMetrics().horizontalAdvance(formatQuantity(quantity, -8.888888888888e-4)) + 6);
         box->setSuffix(suffix);
         box->setRange(low, 1e9);
         box->setKeyboardTracking(false);
@@ -51,10 +55,10 @@ StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
         box->setEnabled(false);
         return box;
     };
-    m_time = typed("cursorTimeBox", tr(" s"), 0.0,
+    m_time = typed("cursorTimeBox", DisplayQuantity::Time, tr(" s"), 0.0,
                    tr("The cursor's time in the turn: type one and press Enter to go there "
                       "(Up/Down: one sample)"));
-    m_angle = typed("cursorAngleBox", tr("°"), -1e9,
+    m_angle = typed("cursorAngleBox", DisplayQuantity::Angle, tr("°"), -1e9,
                     tr("The cam's angle at the cursor, 0–360° whichever way it turns: type one "
                        "and press Enter to go there (Up/Down: one sample)"));
     connect(m_time, &QDoubleSpinBox::valueChanged, this, [this](double t) {
