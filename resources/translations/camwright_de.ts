@@ -2859,13 +2859,13 @@
 <context>
     <name>cam::ExportDialog</name>
     <message>
-        <location filename="../../src/app/export/export_dialog.cpp" line="+52" />
-        <location line="+279" />
+        <location filename="../../src/app/export/export_dialog.cpp" line="+54" />
+        <location line="+284" />
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location line="-270" />
+        <location line="-275" />
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
@@ -2882,19 +2882,19 @@
     <message>
         <location line="+5" />
         <location line="+25" />
-        <location line="+43" />
+        <location line="+44" />
         <source>Splines become tangent arc pairs within this distance</source>
         <translation>Splines werden zu tangentialen Bogenpaaren innerhalb dieses Abstands</translation>
     </message>
     <message>
-        <location line="-67" />
+        <location line="-68" />
         <location line="+25" />
-        <location line="+43" />
+        <location line="+44" />
         <source>Spline &amp;tolerance:</source>
         <translation>Spline-&amp;Toleranz:</translation>
     </message>
     <message>
-        <location line="-67" />
+        <location line="-68" />
         <source>One closed &amp;polyline with bulges</source>
         <translation>Eine geschlossene &amp;Polylinie mit Bögen</translation>
     </message>
@@ -2930,12 +2930,12 @@
         <translation>Der Fräserradius (vorgegeben aus dem Bearbeitungsabschnitt des Projekts)</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+28" />
         <source>Total depth of cut below the stock's top (Z0)</source>
         <translation>Gesamte Schnitttiefe unter der Rohteiloberkante (Z0)</translation>
     </message>
     <message>
-        <location line="-52" />
+        <location line="-53" />
         <source>Splines as SP&amp;LINE entities</source>
         <translation>Splines als SP&amp;LINE-Elemente</translation>
     </message>
@@ -2965,7 +2965,7 @@
         <translation>%1 mm/min (halber Vorschub)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>Plunge:</source>
         <translation>Eintauchen:</translation>
     </message>
@@ -3040,7 +3040,7 @@
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location line="+131" />
+        <location line="+135" />
         <source>Name the file to write.</source>
         <translation>Geben Sie die zu schreibende Datei an.</translation>
     </message>
@@ -4286,13 +4286,13 @@ T = %3</translation>
 <context>
     <name>cam::PlayController</name>
     <message>
-        <location filename="../../src/app/window/play_controller.cpp" line="+16" />
-        <location line="+26" />
+        <location filename="../../src/app/window/play_controller.cpp" line="+17" />
+        <location line="+27" />
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-22" />
+        <location line="-23" />
         <source>Turn the cam with the follower riding it (F5)</source>
         <translation>Die Scheibe drehen, der Stößel fährt mit (F5)</translation>
     </message>
@@ -4302,7 +4302,12 @@ T = %3</translation>
         <translation>Mit diesem Bruchteil der wirklichen Drehzahl abspielen</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+18" />
+        <source>Play / Pause</source>
+        <translation>Abspielen / Pause</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -4704,7 +4709,7 @@ Möchten Sie die Datei ersetzen?</translation>
         <translation>Tastenkürzel</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+15" />
         <source>Edit a cell: type, Enter or Tab to take it</source>
         <translation>Zelle bearbeiten: tippen, Eingabe oder Tab übernimmt</translation>
     </message>
@@ -4841,12 +4846,12 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+100" />
+        <location line="+104" />
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location line="-99" />
+        <location line="-103" />
         <source>T</source>
         <translation>T</translation>
     </message>
@@ -4867,12 +4872,12 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+99" />
+        <location line="+103" />
         <source>Load along the follower's line of motion</source>
         <translation>Last längs der Bewegungsachse des Stößels</translation>
     </message>
     <message>
-        <location line="-98" />
+        <location line="-102" />
         <source>Torque on the camshaft</source>
         <translation>Drehmoment an der Kurvenwelle</translation>
     </message>
@@ -4887,7 +4892,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <translation>Hertzsche Pressung</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+23" />
         <source> s</source>
         <translation> s</translation>
     </message>
@@ -5082,12 +5087,22 @@ blau 0 … rot %1 (größte)</translation>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
+        <source>Undo</source>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>&amp;Redo</source>
         <translation>&amp;Wiederholen</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+3" />
+        <source>Redo</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <location line="+13" />
         <source>Closed %1</source>
         <translation>%1 geschlossen</translation>
     </message>

@@ -132,7 +132,8 @@ Json followerAnalysisJson(const Loaded& loaded) {
                     {"return", angleOrNull(a.pressure.fall)},
                     {"dwell", angleOrNull(a.pressure.dwell)},
                     {"max", angle(a.pressure.max)},
-                    {"limit_deg", radToDeg(a.limitRad)},
+                    // As given (or the default), not back from radians: 30, not 29.999999999999996.
+                    {"limit_deg", model.spec().maxPressureAngleOrDefault()},
                     {"exceeded", std::move(exceeded)}}},
                   {"curvature", std::move(curvatures)},
                   {"undercut", std::move(undercut)}});

@@ -91,6 +91,30 @@ TEST(DesktopManners, KeyboardShortcutsListsEveryShortcut) {
     EXPECT_TRUE(window.findChild<QAction*>("actionKeyboardShortcuts"));
 }
 
+TEST(DesktopManners, KeyboardShortcutsNamesActionsNotTheirLiveText) {
+    // Issue 31, point 9: after an edit and its undo the list showed "Redo Insert segment" (the
+    // redo action's live text) as an action; while playing, "Pause".
+    MainWindow window;
+    window.findChild<QAction*>("actionInsertSegment")->trigger();
+    window.findChild<QAction*>("actionUndo")->trigger();
+    ASSERT_TRUE(window.findChild<QAction*>("actionRedo")->text().remove('&').startsWith("Redo "))
+        << window.findChild<QAction*>("actionRedo")->text().toStdString();
+    window.playAction()->setChecked(true);
+    ShortcutsDialog dialog(&window);
+    window.playAction()->setChecked(false);
+    QStringList names;
+    for (int r = 0; r < dialog.table()->rowCount(); ++r)
+        names << dialog.table()->item(r, 0)->text();
+    for (const char* name : {"Undo", "Redo", "Play / Pause"}) {
+        EXPECT_TRUE(names.contains(name))
+            << name << " missing from " << names.join(", ").toStdString();
+    }
+    for (const QString& name : names) {
+        EXPECT_FALSE(name.startsWith("Undo ") || name.startsWith("Redo ") || name == "Pause")
+            << name.toStdString();
+    }
+}
+
 TEST(DesktopManners, AboutNamesTheVersionLicenseAndLibraries) {
     MainWindow window;
     const QString about = window.aboutText();

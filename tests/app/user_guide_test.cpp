@@ -27,8 +27,8 @@ QString resource(const QString& path) {
     return QString::fromUtf8(file.readAll());
 }
 
-const QStringList kSections{"start",  "table",     "construction", "splines", "plots", "followers",
-                            "design", "machining", "exports",      "cli",     "files"};
+const QStringList kSections{"start",  "table",  "construction", "splines", "plots", "followers",
+                            "forces", "design", "machining",    "exports", "cli",   "files"};
 
 TEST(UserGuide, BothLanguagesHaveEverySectionAndNoDeadLink) {
     for (const QString& language : {QString("en"), QString("de")}) {
@@ -71,6 +71,7 @@ TEST(UserGuide, F1OpensTheGuideAtTheSectionOfTheFocusedDock) {
     window.userGuide()->showSection(UserGuide::sectionFor(window.contourView()));
     EXPECT_GT(text->verticalScrollBar()->value(), atTable);
     EXPECT_EQ(UserGuide::sectionFor(window.contourView()), "construction");
+    EXPECT_EQ(UserGuide::sectionFor(window.findChild<QDockWidget*>("forcesDock")), "forces");
     EXPECT_EQ(UserGuide::sectionFor(nullptr), "start");
 }
 

@@ -309,6 +309,7 @@ TEST(CliAnalyze, CurvatureIsToldApartAndPressureAnglesArePerPhase) {
     EXPECT_GT(fall, 0.0);  // a magnitude, not the most negative angle
     EXPECT_EQ(p["max"]["value_deg"].get<double>(), std::max(rise, fall));
     const double limit = p["limit_deg"];
+    EXPECT_EQ(limit, 30.0);  // the translating default as written, not 29.999999999999996
     ASSERT_FALSE(p["exceeded"].empty());
     for (const Json& r : p["exceeded"]) {
         EXPECT_GT(r["peak_deg"].get<double>(), limit);

@@ -17,7 +17,8 @@ ShortcutsDialog::ShortcutsDialog(QWidget* window) : QDialog(window) {
     std::vector<std::pair<QString, QString>> rows;
     for (const QAction* action : window->findChildren<QAction*>()) {
         if (action->shortcut().isEmpty() || action->text().isEmpty()) continue;
-        QString text = action->text();
+        const QVariant title = action->property(kShortcutTitle);
+        QString text = title.isValid() ? title.toString() : action->text();
         text.remove(QRegularExpression(QStringLiteral("&(?!&)")));
         text.remove(QChar(0x2026));  // "Export…" → "Export"
         const QString keys = action->shortcut().toString(QKeySequence::NativeText);

@@ -9,6 +9,10 @@ class QTableWidget;
 
 namespace cam {
 
+/// @brief The name of an action's property that titles it in the list when its text changes
+/// as the window is used (Undo's names the next step, Play's turns into Pause).
+inline constexpr char kShortcutTitle[] = "shortcutTitle";
+
 class ShortcutsDialog : public QDialog {
     Q_OBJECT
 public:

@@ -39,8 +39,8 @@ QString UserGuide::sectionFor(const QWidget* widget) {
         {"controlPointsDock", "splines"}, {"pathStudyDock", "splines"},
         {"motionDock", "start"},          {"readoutDock", "plots"},
         {"machiningDock", "machining"},   {"followerDock", "followers"},
-        {"motionDesignDock", "design"},   {"contourView", "construction"},
-        {"kinematicsPlots", "plots"},
+        {"forcesDock", "forces"},         {"motionDesignDock", "design"},
+        {"contourView", "construction"},  {"kinematicsPlots", "plots"},
     };
     for (const QWidget* w = widget; w; w = w->parentWidget()) {
         for (const auto& [name, section] : sections) {

@@ -5,6 +5,7 @@
 #include <QSettings>
 #include <QTimer>
 
+#include "dialogs/shortcuts_dialog.h"
 #include "widgets/icons.h"
 #include "widgets/quantity_format.h"
 #include "window/cursor_model.h"
@@ -38,6 +39,7 @@ PlayController::PlayController(CursorModel* cursor, QWidget* window)
         // markers (one state and one follower position at the cursor).
         m_cursor->setTime(m_cursor->time() + elapsed * speedFactor());
     });
+    m_action->setProperty(kShortcutTitle, tr("Play / Pause"));
     connect(m_action, &QAction::toggled, this, [this](bool on) {
         m_action->setText(on ? tr("Pause") : tr("Play"));
         m_action->setIcon(actionIcon(on ? "media-playback-pause" : "media-playback-start"));

@@ -52,9 +52,12 @@ void WindowActions::setUpActions() {
     QAction* undo = stack->createUndoAction(m_window, tr("&Undo"));
     undo->setObjectName("actionUndo");
     undo->setShortcut(QKeySequence::Undo);
+    // Their text names the next step ("Undo Change dynamics"); the shortcuts list names them.
+    undo->setProperty(kShortcutTitle, tr("Undo"));
     QAction* redo = stack->createRedoAction(m_window, tr("&Redo"));
     redo->setObjectName("actionRedo");
     redo->setShortcut(QKeySequence::Redo);
+    redo->setProperty(kShortcutTitle, tr("Redo"));
     QAction* first = m_ui.menuEdit->actions().value(0);
     m_ui.menuEdit->insertAction(first, undo);
     m_ui.menuEdit->insertAction(first, redo);
