@@ -22,6 +22,7 @@
 #include "views/contour_view.h"
 #include "views/follower_panel.h"
 #include "views/kinematics_plots.h"
+#include "widgets/number_spin_box.h"
 #include "widgets/quantity_format.h"
 
 namespace cam {
@@ -282,6 +283,34 @@ TEST(FollowerPanel, AnEditsChecksFollowItsFirstPictureAndTheListIsNeverEmptyMean
     EXPECT_TRUE(after[0].contains(formatQuantity(DisplayQuantity::Angle, radToDeg(a.limitRad))))
         << after[0].toStdString();
     EXPECT_NE(after, before);
+}
+
+TEST(FollowerPanel, CtrlZAfterEnterInADocksBoxUndoesTheEdit) {
+    // Issue 31, point 4: after a committed edit in a dock the focus stays in its box, and the
+    // window's undo must win there: the Follower dock's roller radius and the Motion dock's
+    // speed, with real key events.
+    MainWindow window;
+    ASSERT_TRUE(openAndCompute(window, "spring-loaded-roller-cam.cam.json"));
+    window.findChild<QDockWidget*>("followerDock")->show();
+    window.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
+    const QKeySequence undo = QKeySequence::keyBindings(QKeySequence::Undo).first();
+    auto* radius = child<NumberSpinBox>(window, "followerRadiusSpinBox");
+    test::typeInto(radius, "6");
+    ASSERT_EQ(window.document()->project().follower->radius, 6.0);
+    ASSERT_TRUE(radius->hasFocus());
+    QTest::keySequence(radius, undo);
+    EXPECT_EQ(window.document()->project().follower->radius, 8.0);
+    EXPECT_EQ(radius->value(), 8.0);
+
+    auto* speed = window.findChild<NumberSpinBox*>("speedSpinBox");
+    ASSERT_NE(speed, nullptr);
+    const double before = window.document()->project().motion.value;
+    test::typeInto(speed, "200");
+    ASSERT_EQ(window.document()->project().motion.value, 200.0);
+    ASSERT_TRUE(speed->hasFocus());
+    QTest::keySequence(speed, undo);
+    EXPECT_EQ(window.document()->project().motion.value, before);
 }
 
 TEST(FollowerPanel, AnArmThatCannotReachTheCamIsListedNotHidden) {
