@@ -8,6 +8,16 @@
 #include "window/result_hub.h"
 
 namespace cam {
+namespace {
+
+/// Any instant read within the turn of period T: 0 <= t < T.
+double timeInTurn(double t, double T) {
+    t = std::fmod(t, T);
+    if (t < 0.0) t += T;
+    return t >= T ? 0.0 : t;
+}
+
+}  // namespace
 
 CursorModel::CursorModel(const ResultHub* results, const ComputeEngine* engine, QObject* parent)
     : QObject(parent), m_results(results), m_engine(engine) {}
@@ -39,8 +49,7 @@ void CursorModel::stepJoints(int direction) {
     double best = std::numeric_limits<double>::infinity();
     double target = m_t;
     for (const JointAnalysis& j : r->joints) {
-        double tj = std::fmod(j.phi / r->omega, T);
-        if (tj < 0.0) tj += T;
+        const double tj = timeInTurn(j.phi / r->omega, T);
         double ahead = direction > 0 ? tj - m_t : m_t - tj;  // how far, in the step's sense
         if (ahead <= eps) ahead += T;
         if (ahead < best) {
@@ -70,9 +79,7 @@ void CursorModel::setTime(double t) {
         return;
     }
     // Any instant, the mouse's or a joint's, is read within the turn: 0 <= t < T.
-    t = std::fmod(t, r->period);
-    if (t < 0.0) t += r->period;
-    if (t >= r->period) t = 0.0;
+    t = timeInTurn(t, r->period);
     m_t = t;
     // One state from the shared, immutable contour of the result: a few hundred nanoseconds.
     const KinematicState s = stateAt(*r->contour, r->omega, t);
