@@ -207,6 +207,46 @@ TEST(FollowerArm, TheLiftIsZeroWhereTheArmIsClosestToTheCam) {
     }
 }
 
+TEST(FollowerLiftMotion, IsTheLiftsTimeDerivativesInTheLiftsUnitAndSense) {
+    // The plots and the readout show the lift (mm, or degrees swung away from the cam) and its
+    // time derivatives. Each is checked here against a five-point difference over time of the
+    // lift alone (the one before it, for a and j), at ω = −2 rad/s (clockwise), on arms swinging
+    // either way and on a translating roller: a sign or a unit (rad for °) wrong in any fails.
+    const double omega = -2.0;
+    const std::pair<Contour, FollowerSpec> cams[] = {
+        {sixLobe(), armSpec(FollowerType::Roller, 2.0, {60.0, 0.0}, 50.0, ArmSide::Ccw)},
+        {sixLobe(), armSpec(FollowerType::Knife, 0.0, {-25.0, -30.0}, 35.0, ArmSide::Cw)},
+        {sixLobe(),
+         [] {
+             FollowerSpec spec;
+             spec.type = FollowerType::Roller;
+             spec.radius = 2.0;
+             spec.offset = 3.0;
+             return spec;
+         }()},
+    };
+    for (const auto& [contour, spec] : cams) {
+        const FollowerModel m = armModel(contour, spec);
+        // Inside arcs (no joint within the differences' reach) of the first lobes.
+        for (double deg : {7.3, 21.0, 33.7, 52.1}) {
+            const double t0 = degToRad(deg) / omega;
+            const auto motion = [&](double t, std::size_t d) {
+                return m.liftMotion(m.at(omega * t, omega))[d];
+            };
+            const double h = 1e-4 / std::abs(omega);
+            const auto got = m.liftMotion(m.at(omega * t0, omega));
+            for (std::size_t d = 1; d < 4; ++d) {
+                const double fd =
+                    test::derivative([&](double t) { return motion(t, d - 1); }, t0, h);
+                EXPECT_NEAR(got[d], fd, 1e-6 * std::max(1.0, std::abs(fd)))
+                    << "derivative " << d << " at " << deg << "°, arm "
+                    << (spec.motion == FollowerMotion::Oscillating);
+            }
+            EXPECT_EQ(got[0], m.lift(m.at(omega * t0, omega)));
+        }
+    }
+}
+
 TEST(FollowerArm, APivotInsideTheCamOrAnArmThatCannotReachItIsRefusedWithItsPlace) {
     const Contour contour = sixLobe();  // r from 20.9 to 29 mm
     const auto refusal = [&](const FollowerSpec& spec) {

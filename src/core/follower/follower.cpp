@@ -501,6 +501,11 @@ std::array<double, 4> FollowerModel::liftPhi(const FollowerState& state) const {
             sign * unit * state.sPhi[3]};
 }
 
+std::array<double, 4> FollowerModel::liftMotion(double q, double v, double a, double j) const {
+    const double scale = awaySign() * (oscillating() ? 180.0 / kPi : 1.0);
+    return {liftOf(q), scale * v, scale * a, scale * j};
+}
+
 FollowerState FollowerModel::at(double phi, double omega) const {
     const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), nn(-u.y(), u.x());
     const Candidate c = best(phi, u);

@@ -63,6 +63,13 @@ public:
     /// the angle swung away from the cam from its closest position, in degrees.
     [[nodiscard]] std::array<double, 4> liftPhi(const FollowerState& state) const;
     [[nodiscard]] double lift(const FollowerState& state) const { return liftOf(state.s); }
+    /// @brief The lift and its time derivatives (per s, s², s³) in the lift's unit and sense:
+    /// mm, or on a swinging arm degrees swung away from the cam. `q` is FollowerState::s and
+    /// `v`, `a`, `j` its time derivatives (FollowerState::v, a, j).
+    [[nodiscard]] std::array<double, 4> liftMotion(double q, double v, double a, double j) const;
+    [[nodiscard]] std::array<double, 4> liftMotion(const FollowerState& state) const {
+        return liftMotion(state.s, state.v, state.a, state.j);
+    }
     /// @brief The lift at the follower's coordinate q (FollowerState::s).
     [[nodiscard]] double liftOf(double q) const;
     [[nodiscard]] bool oscillating() const { return m_spec.motion == FollowerMotion::Oscillating; }
