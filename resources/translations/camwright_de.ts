@@ -1918,7 +1918,7 @@
 <context>
     <name>PlotKind</name>
     <message>
-        <location filename="../../src/app/export/plot_picture.cpp" line="+118" />
+        <location filename="../../src/app/export/plot_picture.cpp" line="+132" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
@@ -1951,6 +1951,16 @@
         <location line="+2" />
         <source>Pressure angle</source>
         <translation>Druckwinkel</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Lift</source>
+        <translation>Hub</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Lift, velocity, acceleration, jerk</source>
+        <translation>Hub, Geschwindigkeit, Beschleunigung, Ruck</translation>
     </message>
 </context>
 <context>
@@ -2564,7 +2574,7 @@
         <translation>(%1; %2)</translation>
     </message>
     <message>
-        <location filename="../../src/app/widgets/quantity_format.h" line="+62" />
+        <location filename="../../src/app/widgets/quantity_format.h" line="+65" />
         <location line="+23" />
         <source>°</source>
         <translation>°</translation>
@@ -2614,16 +2624,18 @@
     </message>
     <message>
         <location line="+9" />
+        <location line="+15" />
         <source>°/s</source>
         <translation>°/s</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="-10" />
+        <location line="+11" />
         <source>°/s²</source>
         <translation>°/s²</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="-6" />
         <source>N</source>
         <translation>N</translation>
     </message>
@@ -2641,6 +2653,11 @@
         <location line="+1" />
         <source>MPa</source>
         <translation>MPa</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>°/s³</source>
+        <translation>°/s³</translation>
     </message>
 </context>
 <context>
@@ -2759,12 +2776,17 @@
         <translation>Das Profil als CSV, DXF, SVG, G-Code oder Servo-Kurventabelle schreiben, oder ein Diagramm als Bild (Strg+E)</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+18" />
         <source>Export Plot…</source>
         <translation>Diagramm exportieren…</translation>
     </message>
     <message>
-        <location line="+67" />
+        <location line="+4" />
+        <source>Export Lift, Velocity, Acceleration and Jerk on One Sheet…</source>
+        <translation>Hub, Geschwindigkeit, Beschleunigung und Ruck auf einem Blatt exportieren…</translation>
+    </message>
+    <message>
+        <location line="+74" />
         <source>Nothing has been computed yet.</source>
         <translation>Es wurde noch nichts berechnet.</translation>
     </message>
@@ -2784,11 +2806,12 @@
         <translation>Das Diagramm „%1“ wird nur gezeichnet, während das Dock Zerspanung offen ist (Strg+M).</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+8" />
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
     <message>
+        <location line="+15" />
         <location line="+14" />
         <source>The picture could not be drawn.</source>
         <translation>Das Bild konnte nicht gezeichnet werden.</translation>
@@ -2814,7 +2837,7 @@
         <translation>Diagramm exportieren</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+27" />
         <source>%1 plot</source>
         <translation>Diagramm „%1“</translation>
     </message>
@@ -3629,7 +3652,47 @@
 <context>
     <name>cam::KinematicsPlots</name>
     <message>
-        <location filename="../../src/app/views/kinematics_plots.cpp" line="+28" />
+        <location filename="../../src/app/views/kinematics_plots.cpp" line="+31" />
+        <source>ψ'</source>
+        <translation>ψ'</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>ψ''</source>
+        <translation>ψ''</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>ψ'''</source>
+        <translation>ψ'''</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>ψ</source>
+        <translation>ψ</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>v</source>
+        <translation>v</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>a</source>
+        <translation>a</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>j</source>
+        <translation>j</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>Velocity [mm/s]</source>
         <translation>Geschwindigkeit [mm/s]</translation>
     </message>
@@ -3639,17 +3702,72 @@
         <translation>Beschleunigung [mm/s²]</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+1" />
         <source>Jerk [mm/s³]</source>
         <translation>Ruck [mm/s³]</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+0" />
         <source>Radius r [mm]</source>
         <translation>Radius r [mm]</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
+        <source>Velocity v [mm/s]</source>
+        <translation>Geschwindigkeit v [mm/s]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Acceleration a [mm/s²]</source>
+        <translation>Beschleunigung a [mm/s²]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Jerk j [mm/s³]</source>
+        <translation>Ruck j [mm/s³]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Lift s [mm]</source>
+        <translation>Hub s [mm]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Arm speed ψ' [°/s]</source>
+        <translation>Schwinggeschwindigkeit ψ' [°/s]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Arm acceleration ψ'' [°/s²]</source>
+        <translation>Schwingbeschleunigung ψ'' [°/s²]</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Arm jerk ψ''' [°/s³]</source>
+        <translation>Schwingruck ψ''' [°/s³]</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Arm swing ψ [°]</source>
+        <translation>Schwingwinkel ψ [°]</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Radius r</source>
+        <translation>Radius r</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Arm swing</source>
+        <translation>Schwingwinkel</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Lift</source>
+        <translation>Hub</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>v_r</source>
         <translation>v_r</translation>
     </message>
@@ -3700,16 +3818,18 @@
     </message>
     <message>
         <location line="+18" />
+        <location line="+68" />
         <source>law</source>
         <translation>Gesetz</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="-65" />
+        <location line="+65" />
         <source>follower</source>
         <translation>Stößel</translation>
     </message>
     <message>
-        <location line="+112" />
+        <location line="+57" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -3895,7 +4015,7 @@
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+138" />
+        <location line="+155" />
         <source>Cursor at %1</source>
         <translation>Cursor bei %1</translation>
     </message>
@@ -4775,7 +4895,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>cam::StateReadout</name>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="+29" />
+        <location filename="../../src/app/views/state_readout.cpp" line="+47" />
         <source>t</source>
         <translation>t</translation>
     </message>
@@ -4791,67 +4911,77 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     </message>
     <message>
         <location line="+0" />
+        <location line="+125" />
         <source>r</source>
         <translation>r</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-125" />
+        <location line="+125" />
         <source>v_r</source>
         <translation>v_r</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-124" />
+        <location line="+124" />
         <source>v_φ</source>
         <translation>v_φ</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-124" />
+        <location line="+124" />
         <source>|v|</source>
         <translation>|v|</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-124" />
+        <location line="+125" />
         <source>a_r</source>
         <translation>a_r</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-125" />
+        <location line="+125" />
         <source>a_φ</source>
         <translation>a_φ</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-125" />
+        <location line="+125" />
         <source>|a|</source>
         <translation>|a|</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="-124" />
+        <location line="+124" />
         <source>j_r</source>
         <translation>j_r</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-124" />
+        <location line="+125" />
         <source>j_φ</source>
         <translation>j_φ</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-125" />
+        <location line="+125" />
         <source>|j|</source>
         <translation>|j|</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-125" />
         <source>F_n</source>
         <translation>F_n</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+104" />
+        <location line="+170" />
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location line="-103" />
+        <location line="-169" />
         <source>T</source>
         <translation>T</translation>
     </message>
@@ -4872,12 +5002,12 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+103" />
+        <location line="+169" />
         <source>Load along the follower's line of motion</source>
         <translation>Last längs der Bewegungsachse des Stößels</translation>
     </message>
     <message>
-        <location line="-102" />
+        <location line="-168" />
         <source>Torque on the camshaft</source>
         <translation>Drehmoment an der Kurvenwelle</translation>
     </message>
@@ -4917,7 +5047,144 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <translation>Der Zustand am Cursor: die Maus über ein Diagramm bewegen, eine Zeit oder einen Winkel eingeben oder mit den Pfeiltasten in einem Diagramm schrittweise gehen (Umschalt: zum nächsten Übergang; Pos1, Ende)</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+31" />
+        <source>∞ (straight)</source>
+        <translation>∞ (gerade)</translation>
+    </message>
+    <message>
+        <location line="+28" />
+        <source>The contour's radius along the ray at the cursor</source>
+        <translation>Der Radius der Kontur entlang des Strahls am Cursor</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Velocity of the contour point on the ray: radial, tangential and whole</source>
+        <translation>Geschwindigkeit des Konturpunkts auf dem Strahl: radial, tangential und gesamt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Acceleration of the contour point on the ray: radial, tangential and whole</source>
+        <translation>Beschleunigung des Konturpunkts auf dem Strahl: radial, tangential und gesamt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Jerk of the contour point on the ray: radial, tangential and whole</source>
+        <translation>Ruck des Konturpunkts auf dem Strahl: radial, tangential und gesamt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>s</source>
+        <translation>s</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>v</source>
+        <translation>v</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>a</source>
+        <translation>a</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>j</source>
+        <translation>j</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <location line="+2" />
+        <source>α</source>
+        <translation>α</translation>
+    </message>
+    <message>
+        <location line="-2" />
+        <location line="+2" />
+        <source>ρ</source>
+        <translation>ρ</translation>
+    </message>
+    <message>
+        <location line="-1" />
+        <source>ψ</source>
+        <translation>ψ</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>ψ'</source>
+        <translation>ψ'</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>ψ''</source>
+        <translation>ψ''</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>ψ'''</source>
+        <translation>ψ'''</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The arm's swing away from the cam, from its closest position</source>
+        <translation>Der Schwingwinkel des Hebels von der Kurve weg, ab seiner nächsten Stellung</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The follower's lift above its lowest position</source>
+        <translation>Der Hub des Abtasters über seiner tiefsten Stellung</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The arm's angular velocity, away from the cam positive</source>
+        <translation>Die Winkelgeschwindigkeit des Hebels, von der Kurve weg positiv</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The follower's velocity, rising positive</source>
+        <translation>Die Geschwindigkeit des Abtasters, steigend positiv</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The arm's angular acceleration</source>
+        <translation>Die Winkelbeschleunigung des Hebels</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>The follower's acceleration</source>
+        <translation>Die Beschleunigung des Abtasters</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The arm's angular jerk</source>
+        <translation>Der Winkelruck des Hebels</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>The follower's jerk</source>
+        <translation>Der Ruck des Abtasters</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The pressure angle: between the contact normal and the follower's direction of motion, positive while it rises</source>
+        <translation>Der Druckwinkel: zwischen der Kontaktnormalen und der Bewegungsrichtung des Abtasters, positiv beim Steigen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The profile's radius of curvature at the contact: positive convex, negative concave</source>
+        <translation>Der Krümmungsradius des Profils am Kontaktpunkt: positiv konvex, negativ konkav</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The contour segment the follower touches</source>
+        <translation>Das Kontursegment, das der Abtaster berührt</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The contour segment the ray meets</source>
+        <translation>Das Kontursegment, das der Strahl trifft</translation>
+    </message>
+    <message>
+        <location line="+24" />
         <source>M</source>
         <translation>M</translation>
     </message>
@@ -5221,16 +5488,36 @@ blau 0 … rot %1 (größte)</translation>
     </message>
     <message>
         <location line="+8" />
-        <source>&amp;Radius Plot r(φ)</source>
-        <translation>&amp;Radiusdiagramm r(φ)</translation>
+        <source>&amp;Lift Plot</source>
+        <translation>&amp;Hubdiagramm</translation>
     </message>
     <message>
         <location line="+3" />
-        <source>Show the contour's radius r over the turn above the velocity</source>
-        <translation>Den Radius r der Kontur über die Umdrehung über der Geschwindigkeit zeigen</translation>
+        <source>Show the follower's lift (or, in the polar view, the contour's radius r) over the turn above the velocity</source>
+        <translation>Den Hub des Abtasters (in der Polaransicht den Radius r der Kontur) über der Umdrehung oberhalb der Geschwindigkeit zeigen</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+13" />
+        <source>&amp;Polar Kinematics</source>
+        <translation>&amp;Polare Kinematik</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Plot the contour's radius r and its polar velocity, acceleration and jerk along the ray instead of the follower's lift, velocity, acceleration and jerk (Ctrl+Shift+P)</source>
+        <translation>Den Radius r der Kontur und ihre polare Geschwindigkeit, Beschleunigung und ihren Ruck entlang des Strahls statt Hub, Geschwindigkeit, Beschleunigung und Ruck des Abtasters zeigen (Strg+Umschalt+P)</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>The plots show the contour's polar kinematics along the ray</source>
+        <translation>Die Diagramme zeigen die polare Kinematik der Kontur entlang des Strahls</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>The plots show the follower's motion (when the project names one)</source>
+        <translation>Die Diagramme zeigen die Bewegung des Abtasters (wenn das Projekt einen nennt)</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>Colour by Contact &amp;Stress</source>
         <translation>Nach Kontakt&amp;pressung färben</translation>
     </message>
@@ -5275,7 +5562,7 @@ blau 0 … rot %1 (größte)</translation>
         <translation>Auf ein Dock oder eine Ansicht klicken, um zu erfahren, wofür es da ist</translation>
     </message>
     <message>
-        <location line="+80" />
+        <location line="+81" />
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>

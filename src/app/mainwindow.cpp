@@ -154,13 +154,28 @@ void MainWindow::wireCursor() {
     DockLayout& v = *m_views;
     connect(m_cursor, &CursorModel::cleared, v.readout, &StateReadout::clear);
     connect(m_cursor, &CursorModel::moved, this, [this, &v](const KinematicState& s, double x) {
-        v.readout->setState(s);
-        // The forces there: one evaluation of the result's follower, as the state itself.
+        // The state the plots show: the follower's (one evaluation of the result's follower,
+        // a few hundred nanoseconds), or the polar state along the ray.
         const ComputeResultPtr& r = m_results->shown();
-        if (r && r->forces && r->follower) {
-            const FollowerModel& f = *r->follower;
+        const auto spans = [](const std::array<PlotRange, 4>& ranges) {
+            std::array<double, 4> out{};
+            for (std::size_t i = 0; i < 4; ++i) {
+                out[i] = std::max(std::abs(ranges[i].lower), std::abs(ranges[i].upper));
+            }
+            return out;
+        };
+        std::optional<FollowerState> follower;
+        if (r && r->follower) follower = r->follower->at(s.phi, r->omega);
+        if (follower && v.plots->showsFollower()) {
+            v.readout->setFollowerState(s, *follower, r->follower->liftMotion(*follower),
+                                        r->follower->oscillating(), spans(r->followerMotionRanges));
+        } else {
+            v.readout->setState(s, r ? spans(r->curves.yRanges) : std::array<double, 4>{});
+        }
+        // The forces there, from the same state.
+        if (r && r->forces && follower) {
             const ForceModel& model = r->forces->model;
-            v.readout->setForces(forceAt(model, forceMotion(f, f.at(s.phi, r->omega)), r->omega),
+            v.readout->setForces(forceAt(model, forceMotion(*r->follower, *follower), r->omega),
                                  model.swinging);
         } else {
             v.readout->setForces(std::nullopt, false);
@@ -177,6 +192,7 @@ void MainWindow::wireCursor() {
     connect(v.readout, &StateReadout::angleTyped, m_cursor,
             [this](double degrees) { m_cursor->setAtAngle(degToRad(degrees)); });
     connect(v.plots, &KinematicsPlots::cursorMoved, m_cursor, &CursorModel::setAtPlotX);
+    connect(v.plots, &KinematicsPlots::followerShownChanged, m_cursor, &CursorModel::refresh);
     for (QCustomPlot* plot : v.turnPlots()) {
         connect(plot, &QCustomPlot::mouseMove, this, [this, plot](QMouseEvent* e) {
             m_cursor->setAtPlotX(plot->xAxis->pixelToCoord(e->position().x()));

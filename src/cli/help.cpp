@@ -286,8 +286,8 @@ std::vector<CommandHelp> makeTable() {
            "gcode: program the contour itself with cutter compensation G41/G42 instead of the "
            "tool-centre path"},
           {"--plot", "NAME",
-           "png, pdf, svg: contour (default), velocity, acceleration, jerk, feed, "
-           "axis-acceleration or pressure-angle"},
+           "png, pdf, svg: contour (default), lift, velocity, acceleration, jerk, motion "
+           "(the four on one sheet), feed, axis-acceleration or pressure-angle"},
           {"--size", "WxH",
            "png: pixels (default 1200x800); pdf: points, svg: user units (default 842x595, "
            "A4 landscape); each side 100 to 8000"}},

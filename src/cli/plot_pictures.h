@@ -10,8 +10,9 @@
 namespace cam::cli {
 
 /// @brief The plots `--plot` names, as the app knows them.
-inline constexpr const char* kPlotNames[] = {
-    "contour", "velocity", "acceleration", "jerk", "feed", "axis-acceleration", "pressure-angle"};
+inline constexpr const char* kPlotNames[] = {"contour",        "velocity", "acceleration",
+                                             "jerk",           "feed",     "axis-acceleration",
+                                             "pressure-angle", "lift",     "motion"};
 /// @brief "contour, velocity, …".
 [[nodiscard]] std::string plotNameList();
 

@@ -310,7 +310,7 @@ TEST(ExportInWindow, RightClickOnAPlotExportsIt) {
 // its order, by their titles: a new row is a new choice without a change here.
 TEST(ExportDialogTest, ListsEveryFormatAndDialectOfTheTable) {
     Project project;
-    ExportDialog dialog(project, "x.cam.json", "x", {PlotKind::Contour});
+    ExportDialog dialog(project, "x", {PlotKind::Contour});
     const auto titles = [&](const char* box) {
         QStringList out;
         auto* combo = dialog.findChild<QComboBox*>(box);
@@ -347,8 +347,7 @@ TEST(ExportDialogTest, StartsFromTheProjectAndTheLastExport) {
     test::TempDir dir;
     QSettings().setValue("export/folder", QString::fromStdString(dir.path().string()));
     QSettings().setValue("export/format", static_cast<int>(ExportFormat::Gcode));
-    ExportDialog dialog(project, "six-lobe-machining.cam.json", "six-lobe-machining",
-                        {PlotKind::Contour, PlotKind::Velocity});
+    ExportDialog dialog(project, "six-lobe-machining", {PlotKind::Contour, PlotKind::Velocity});
     // The last format, in the last folder, the file named after the project.
     ExportRequest r = dialog.request();
     EXPECT_EQ(r.format, ExportFormat::Gcode);
@@ -404,7 +403,7 @@ TEST(ExportDialogTest, StartsFromTheProjectAndTheLastExport) {
 
     // The next dialog starts with the options of this one; what the project gives comes from
     // the project.
-    ExportDialog next(project, "six-lobe-machining.cam.json", "six-lobe-machining", {});
+    ExportDialog next(project, "six-lobe-machining", {});
     r = next.request();
     EXPECT_EQ(r.format, ExportFormat::Dxf);
     EXPECT_EQ(r.path, QString::fromStdString(other.file("six-lobe-machining.dxf")));
@@ -423,7 +422,7 @@ TEST(ExportDialogTest, TheFeedStartsCautiousIsRememberedAndStaysBelowTheProjects
     ASSERT_FALSE(plain.machining.has_value());
     test::TempDir dir;
     const auto exportWith = [&](const Project& project, const QString& feed) {
-        ExportDialog dialog(project, "cam.cam.json", "cam", {});
+        ExportDialog dialog(project, "cam", {});
         dialog.setFormat(ExportFormat::Gcode);
         dialog.show();
         if (!feed.isEmpty()) test::typeInto(dialog.findChild<NumberSpinBox*>("gcodeFeed"), feed);
@@ -466,7 +465,7 @@ TEST(ExportDialogTest, AProjectsExportGoesBesideItUnlessItWasExportedElsewhere) 
     QSettings().remove("export/project");
     const QString projectFile = QString::fromStdString(projectDir.file("cam.cam.json"));
     const auto folderOf = [&](const QString& file) {
-        ExportDialog dialog(project, "cam.cam.json", "cam", {}, nullptr, file);
+        ExportDialog dialog(project, "cam", {}, nullptr, file);
         return QFileInfo(dialog.request().path).absolutePath();
     };
     const auto dirOf = [](const test::TempDir& d) {
@@ -476,7 +475,7 @@ TEST(ExportDialogTest, AProjectsExportGoesBesideItUnlessItWasExportedElsewhere) 
     EXPECT_EQ(folderOf({}), dirOf(lastAny));  // a project with no file yet: the last folder
     // Exported elsewhere, the project's next export goes there; another project's beside it.
     {
-        ExportDialog dialog(project, "cam.cam.json", "cam", {}, nullptr, projectFile);
+        ExportDialog dialog(project, "cam", {}, nullptr, projectFile);
         dialog.show();
         dialog.setFileName(QString::fromStdString(chosen.file("cam.dxf")));
         dialog.accept();

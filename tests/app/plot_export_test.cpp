@@ -197,6 +197,31 @@ TEST(PlotPictureFollower, ThePressureAngleNeedsAFollowerAndShowsTheLimitCrossed)
     EXPECT_GT(pixelsNear(image, QColor(200, 30, 30)), 50);
 }
 
+TEST(PlotPictureFollower, TheMotionSheetIsOnePageOfTheFollowersFourPlots) {
+    // A project naming a follower: `--plot motion` stacks its lift, velocity, acceleration
+    // and jerk on one page (poppler reads each axis title as text), `--plot lift` draws the
+    // lift alone.
+    const std::string project = test::examplePath("synthesised-cycloidal-roller.cam.json");
+    std::string base = nlohmann::json::parse(test::readFile(project)).value("name", "");
+    if (base.empty()) base = "synthesised-cycloidal-roller";
+    test::TempDir dir;
+    const std::string pdf = dir.file("motion.pdf");
+    auto r = test::runCli({"export", project, "--format", "pdf", "--plot", "motion", "--out", pdf});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto check = test::run(
+        kPython,
+        {checker(), "pdf", pdf, "--title", base + " — Lift, velocity, acceleration, jerk", "--size",
+         "842x595", "--text", "Lift s [mm]", "--text", "Velocity v [mm/s]", "--text",
+         "Acceleration a [mm/s²]", "--text", "Jerk j [mm/s³]", "--text", "φ [°]"});
+    EXPECT_EQ(check.exitCode, 0) << check.out << check.err;
+    const std::string png = dir.file("lift.png");
+    r = test::runCli({"export", project, "--format", "png", "--plot", "lift", "--out", png});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const QImage image(QString::fromStdString(png));
+    ASSERT_FALSE(image.isNull());
+    EXPECT_GT(pixelsNear(image, componentColor(0)), 300);
+}
+
 TEST(PlotPictureArguments, EveryBadArgumentIsNamedAndNoFileIsLeft) {
     test::TempDir dir;
     const std::string out = dir.file("keep.png");

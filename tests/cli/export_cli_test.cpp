@@ -325,5 +325,34 @@ TEST(ExportArguments, AToolTooWideForAConcaveArcNamesIt) {
         << r.err;
 }
 
+TEST(ExportNames, OneRuleNamesTheGcodeTheCamTableAndTheSvg) {
+    // Issue 31: the G-code was headed "x.cam.json" and the cam table "x" for the same project.
+    // One rule now: the project's name, else its file's name without ".cam.json".
+    test::TempDir dir;
+    Json project = Json::parse(test::readFile(test::kExample));
+    project.erase("name");
+    project["machining"] = {
+        {"axis_accel", {500.0, 500.0, 200.0}}, {"feed_max", 50.0}, {"tool_radius", 2.0}};
+    const std::string path = dir.file("Pump cam 7.cam.json");
+    test::writeText(path, project.dump(2));
+    const auto exportTo = [&](const std::string& format, const std::string& out) {
+        const auto r = test::runCli({"export", path, "--format", format, "--out", dir.file(out)});
+        EXPECT_EQ(r.exitCode, 0) << format << ": " << r.err;
+        return test::readFile(dir.file(out));
+    };
+    const std::string gcode = exportTo("gcode", "p.ngc");
+    EXPECT_NE(gcode.find("(Camwright G-code: Pump cam 7)"), std::string::npos)
+        << gcode.substr(0, 200);
+    const std::string table = exportTo("camtable", "p.csv");
+    EXPECT_NE(table.find(" of Pump cam 7"), std::string::npos) << table.substr(0, 200);
+    const std::string svg = exportTo("svg", "p.svg");
+    EXPECT_NE(svg.find("<title>Pump cam 7</title>"), std::string::npos) << svg.substr(0, 400);
+    // With a name, the name.
+    project["name"] = "Intake";
+    test::writeText(path, project.dump(2));
+    EXPECT_NE(exportTo("gcode", "n.ngc").find("(Camwright G-code: Intake)"), std::string::npos);
+    EXPECT_NE(exportTo("camtable", "n.csv").find(" of Intake"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace cam

@@ -106,6 +106,10 @@ ContourPart computeContourPart(const Contour* contour, double omega,
 struct FollowerPart {
     FollowerAnalysis checks;
     std::vector<double> x, pressureDeg, rhoProfile, rhoPitch;
+    std::array<std::vector<double>, 4> motion;
+    std::array<PlotRange, 4> motionRanges{};
+    std::vector<double> jointX;
+    std::vector<std::size_t> jointLeft;
     std::shared_ptr<const ForceCurves> forces;
 };
 
@@ -166,13 +170,30 @@ FollowerPart computeFollower(const Project* project, const FollowerModel* model,
     part.pressureDeg.resize(n + 1);
     part.rhoProfile.resize(n + 1);
     part.rhoPitch.resize(n + 1);
+    for (auto& curve : part.motion) curve.resize(n + 1);
     for (std::size_t k = 0; k <= n; ++k) {
         const double t = period * static_cast<double>(k) / n;
         part.x[k] = axis == PlotAxis::Angle ? radToDeg(omega * t) : t;
         // The turn's end closes the curve: the angle of its start, one turn on.
-        part.pressureDeg[k] = radToDeg(turn.pressureAngle[k % n]);
-        part.rhoProfile[k] = turn.rhoProfile[k % n];
-        part.rhoPitch[k] = turn.rhoPitch[k % n];
+        const std::size_t i = k % n;
+        part.pressureDeg[k] = radToDeg(turn.pressureAngle[i]);
+        part.rhoProfile[k] = turn.rhoProfile[i];
+        part.rhoPitch[k] = turn.rhoPitch[i];
+        const std::array<double, 4> lift =
+            model->liftMotion(turn.s[i], turn.v[i], turn.a[i], turn.j[i]);
+        for (std::size_t d = 0; d < 4; ++d) part.motion[d][k] = lift[d];
+    }
+    for (std::size_t d = 0; d < 4; ++d) {
+        const auto [lo, hi] = std::minmax_element(part.motion[d].begin(), part.motion[d].end());
+        part.motionRanges[d] = {*lo, *hi};
+    }
+    // Where the contact passes from one segment to the next: between the two samples.
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::int32_t from = turn.segment[k], to = turn.segment[(k + 1) % n];
+        if (from == to) continue;
+        part.jointX.push_back(0.5 * (part.x[k] + part.x[k + 1]));
+        // The joint's left segment in the contour's order, whichever way the cam turns.
+        part.jointLeft.push_back(static_cast<std::size_t>(omega > 0.0 ? from : to));
     }
     if (project->dynamics) part.forces = computeForces(*project, *model, omega, turn, cancel);
     return part;
@@ -318,6 +339,10 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
         result->followerPressureDeg = std::move(part.pressureDeg);
         result->followerRhoProfile = std::move(part.rhoProfile);
         result->followerRhoPitch = std::move(part.rhoPitch);
+        result->followerMotion = std::move(part.motion);
+        result->followerMotionRanges = part.motionRanges;
+        result->followerJointX = std::move(part.jointX);
+        result->followerJointLeft = std::move(part.jointLeft);
         result->forces = std::move(part.forces);
     }
     if (preparer) {

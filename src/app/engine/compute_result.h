@@ -121,6 +121,15 @@ struct ComputeResult {
     /// The signed radii of curvature (mm, positive where convex, +∞ where straight) of the
     /// profile at the contact and of the pitch curve, at the same steps.
     std::vector<double> followerRhoProfile, followerRhoPitch;
+    /// The follower's lift, velocity, acceleration and jerk at the same steps, in the lift's
+    /// unit and sense (FollowerModel::liftMotion: mm, or degrees swung away from the cam; per
+    /// s, s², s³), and each one's smallest and largest value.
+    std::array<std::vector<double>, 4> followerMotion;
+    std::array<PlotRange, 4> followerMotionRanges{};
+    /// Where on the plots' x axis the contact passes from one segment to the next (halfway
+    /// between the two steps), and the left segment of that joint (JointAnalysis::left).
+    std::vector<double> followerJointX;
+    std::vector<std::size_t> followerJointLeft;
     static constexpr std::size_t kFollowerCurvePoints = 3600;
     /// The forces of the project's `dynamics` on its follower (null without dynamics, or
     /// without a follower that rides the cam).

@@ -17,6 +17,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "export/export_formats.h"
 #include "widgets/number_spin_box.h"
 #include "widgets/quantity_format.h"
 
@@ -43,14 +44,13 @@ QWidget* page(QStackedWidget* pages, QFormLayout*& form) {
 
 }  // namespace
 
-ExportDialog::ExportDialog(const Project& project, const QString& fileName, const QString& baseName,
+ExportDialog::ExportDialog(const Project& project, const QString& baseName,
                            std::vector<PlotKind> plots, QWidget* parent, const QString& projectFile)
     : QDialog(parent),
-      m_projectFile(projectFile),
       m_baseName(baseName),
       m_plots(std::move(plots)),
-      m_title(project.name.empty() ? fileName.toStdString() : project.name),
-      m_tableName(project.name.empty() ? baseName.toStdString() : project.name) {
+      m_projectFile(projectFile),
+      m_title(exportName(project.name, baseName.toStdString())) {
     setWindowTitle(tr("Export"));
     setObjectName("exportDialog");
     auto* layout = new QVBoxLayout(this);
@@ -360,7 +360,7 @@ ExportRequest ExportDialog::request() const {
     r.gcode.projectName = m_title;
     r.camTable.points = static_cast<std::size_t>(m_tablePoints->value());
     r.camTable.dialect = static_cast<CamTableDialect>(m_tableDialect->currentData().toInt());
-    r.camTable.name = m_tableName;
+    r.camTable.name = m_title;
     if (m_plot->count() > 0) r.plot = static_cast<PlotKind>(m_plot->currentData().toInt());
     r.picture = static_cast<PictureFormat>(m_picture->currentData().toInt());
     r.pictureSize = QSize(m_width->value(), m_height->value());

@@ -27,15 +27,15 @@ class ExportDialog : public QDialog {
     Q_OBJECT
 public:
     /// @brief Options start from the project (its samples per turn, tool radius, feed) and the
-    /// last export (format, folder and the other options, from QSettings). The project's name (else
-    /// `fileName`) titles the SVG and G-code as camwright-cli does; the name (else `baseName`, the
-    /// file name without .cam.json) names the cam table's variables, and `baseName` the file by
-    /// default. `plots` are the plots that can be drawn now. The file goes into the folder of
-    /// this project's last export, else the folder of `projectFile` (the project's own file,
-    /// empty when it has none), else that of the last export of any project, else home.
-    ExportDialog(const Project& project, const QString& fileName, const QString& baseName,
-                 std::vector<PlotKind> plots, QWidget* parent = nullptr,
-                 const QString& projectFile = {});
+    /// last export (format, folder and the other options, from QSettings). One name titles the
+    /// SVG and the G-code and names the cam table, as camwright-cli does (exportName): the
+    /// project's, else `baseName` (the file name without .cam.json, "untitled" for a project
+    /// never saved), which also names the file by default. `plots` are the plots that can be
+    /// drawn now. The file goes into the folder of this project's last export, else the folder
+    /// of `projectFile` (the project's own file, empty when it has none), else that of the last
+    /// export of any project, else home.
+    ExportDialog(const Project& project, const QString& baseName, std::vector<PlotKind> plots,
+                 QWidget* parent = nullptr, const QString& projectFile = {});
 
     /// @brief The export as the dialog's fields say (meaningful once accepted).
     [[nodiscard]] ExportRequest request() const;
@@ -90,8 +90,8 @@ private:
     QSpinBox* m_height = nullptr;
     QLineEdit* m_file = nullptr;
     QLabel* m_problem = nullptr;
-    std::string m_title;      ///< of the SVG and the G-code header
-    std::string m_tableName;  ///< of the cam table
+    /// What the SVG's title, the G-code header and the cam table's name say (exportName).
+    std::string m_title;
 };
 
 }  // namespace cam

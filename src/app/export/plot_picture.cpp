@@ -35,12 +35,21 @@ public:
             m_title = new QCPTextElement(&plot, text.title, font);
             plot.plotLayout()->addElement(0, 0, m_title);
         }
+        // The cursor and the joint markers are for working on screen.
+        for (int i = 0; i < plot.itemCount(); ++i) {
+            QCPAbstractItem* item = plot.item(i);
+            if (item->property(kNotInPictures).toBool() && item->visible()) {
+                item->setVisible(false);
+                m_hidden.push_back(item);
+            }
+        }
         plot.setViewport(QRect(QPoint(0, 0), size));
         plot.plotLayout()->update(QCPLayoutElement::upPreparation);
         plot.plotLayout()->update(QCPLayoutElement::upMargins);
         plot.plotLayout()->update(QCPLayoutElement::upLayout);
     }
     ~PictureState() {
+        for (QCPAbstractItem* item : m_hidden) item->setVisible(true);
         if (m_title) {
             m_plot.plotLayout()->remove(m_title);
             m_plot.plotLayout()->simplify();
@@ -58,6 +67,7 @@ private:
     QCustomPlot& m_plot;
     QRect m_viewport;
     std::vector<std::pair<QCPAxis*, QCPRange>> m_ranges;
+    std::vector<QCPAbstractItem*> m_hidden;
     QString m_xLabel;
     bool m_xTickLabels = true;
     QCPTextElement* m_title = nullptr;
@@ -95,6 +105,10 @@ QString plotKindName(PlotKind kind) {
             return "axis-acceleration";
         case PlotKind::PressureAngle:
             return "pressure-angle";
+        case PlotKind::Lift:
+            return "lift";
+        case PlotKind::Motion:
+            return "motion";
     }
     return {};
 }
@@ -128,6 +142,10 @@ QString plotKindTitle(PlotKind kind) {
             return QCoreApplication::translate("PlotKind", "Axis accelerations");
         case PlotKind::PressureAngle:
             return QCoreApplication::translate("PlotKind", "Pressure angle");
+        case PlotKind::Lift:
+            return QCoreApplication::translate("PlotKind", "Lift");
+        case PlotKind::Motion:
+            return QCoreApplication::translate("PlotKind", "Lift, velocity, acceleration, jerk");
     }
     return {};
 }
@@ -155,26 +173,33 @@ QSize defaultPictureSize(PictureFormat format) {
     return format == PictureFormat::Png ? QSize(1200, 800) : QSize(842, 595);
 }
 
-QByteArray renderPlotPicture(QCustomPlot& plot, PictureFormat format, QSize size,
-                             const PictureText& given, const std::function<void()>& fit) {
-    // The title is free text (a project or file name): one line, in every format.
-    PictureText text = given;
-    text.title = QString::fromStdString(oneLine(given.title.toStdString()));
-    const PictureState state(plot, size, text);
-    if (fit) fit();
+namespace {
+
+/// Runs `paint` on a painter over a picture of `size` in `format` and returns its bytes (empty
+/// when the painter could not start). PNG: a white pixmap; PDF: one page of exactly that size
+/// in points; SVG: that size in user units, its title escaped.
+QByteArray paintPicture(PictureFormat format, QSize size, const QString& title,
+                        const std::function<void(QCPPainter&)>& paint) {
     QByteArray bytes;
     QBuffer buffer(&bytes);
     buffer.open(QIODevice::WriteOnly);
     const int w = size.width(), h = size.height();
     switch (format) {
         case PictureFormat::Png: {
-            const QPixmap pixmap = plot.toPixmap(w, h, 1.0);
-            if (pixmap.isNull() || !pixmap.save(&buffer, "PNG")) return {};
+            QPixmap pixmap(w, h);
+            pixmap.fill(Qt::white);
+            {
+                QCPPainter painter(&pixmap);
+                if (!painter.isActive()) return {};
+                painter.setMode(QCPPainter::pmNoCaching);
+                paint(painter);
+            }
+            if (!pixmap.save(&buffer, "PNG")) return {};
             break;
         }
         case PictureFormat::Pdf: {
             QPdfWriter writer(&buffer);
-            writer.setTitle(text.title);
+            writer.setTitle(title);
             writer.setCreator(creator());
             writer.setResolution(72);  // one device unit = one point: the plot's pixels
             writer.setPageSize(
@@ -184,7 +209,7 @@ QByteArray renderPlotPicture(QCustomPlot& plot, PictureFormat format, QSize size
             if (!painter.begin(&writer)) return {};
             painter.setMode(QCPPainter::pmVectorized);
             painter.setMode(QCPPainter::pmNoCaching);
-            plot.toPainter(&painter, w, h);
+            paint(painter);
             painter.end();
             break;
         }
@@ -200,12 +225,73 @@ QByteArray renderPlotPicture(QCustomPlot& plot, PictureFormat format, QSize size
             if (!painter.begin(&generator)) return {};
             painter.setMode(QCPPainter::pmVectorized);
             painter.setMode(QCPPainter::pmNoCaching);
-            plot.toPainter(&painter, w, h);
+            paint(painter);
             painter.end();
             buffer.close();
-            return withSvgTitle(bytes, text.title, creator());
+            return withSvgTitle(bytes, title, creator());
         }
     }
+    return bytes;
+}
+
+}  // namespace
+
+QByteArray renderPlotPicture(QCustomPlot& plot, PictureFormat format, QSize size,
+                             const PictureText& given, const std::function<void()>& fit) {
+    // The title is free text (a project or file name): one line, in every format.
+    PictureText text = given;
+    text.title = QString::fromStdString(oneLine(given.title.toStdString()));
+    const PictureState state(plot, size, text);
+    if (fit) fit();
+    if (format == PictureFormat::Png) {
+        QByteArray bytes;
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        const QPixmap pixmap = plot.toPixmap(size.width(), size.height(), 1.0);
+        if (pixmap.isNull() || !pixmap.save(&buffer, "PNG")) return {};
+        return bytes;
+    }
+    return paintPicture(format, size, text.title, [&](QCPPainter& painter) {
+        plot.toPainter(&painter, size.width(), size.height());
+    });
+}
+
+QByteArray renderPlotSheet(const std::vector<QCustomPlot*>& plots, const std::vector<int>& stretch,
+                           PictureFormat format, QSize size, const PictureText& given) {
+    if (plots.empty() || stretch.size() != plots.size()) return {};
+    const QString title = QString::fromStdString(oneLine(given.title.toStdString()));
+    int total = 0;
+    for (int s : stretch) total += s;
+    // Each plot's band of the sheet, top to bottom; the last takes what rounding leaves.
+    std::vector<QRect> bands;
+    int top = 0;
+    for (std::size_t i = 0; i < plots.size(); ++i) {
+        const int h = i + 1 == plots.size() ? size.height() - top
+                                            : size.height() * stretch[i] / std::max(total, 1);
+        bands.emplace_back(0, top, size.width(), h);
+        top += h;
+    }
+    std::vector<std::unique_ptr<PictureState>> states;
+    for (std::size_t i = 0; i < plots.size(); ++i) {
+        PictureText text;
+        text.title = i == 0 ? title : QString();
+        text.xLabel = given.xLabel;
+        states.push_back(std::make_unique<PictureState>(*plots[i], bands[i].size(), text));
+    }
+    // Laid out once more now that all are at their picture's size: plots that share a margin
+    // group (the kinematics plots) line their axes up as on screen.
+    for (QCustomPlot* plot : plots) {
+        plot->plotLayout()->update(QCPLayoutElement::upMargins);
+        plot->plotLayout()->update(QCPLayoutElement::upLayout);
+    }
+    QByteArray bytes = paintPicture(format, size, title, [&](QCPPainter& painter) {
+        for (std::size_t i = 0; i < plots.size(); ++i) {
+            painter.save();
+            painter.translate(bands[i].topLeft());
+            plots[i]->toPainter(&painter, bands[i].width(), bands[i].height());
+            painter.restore();
+        }
+    });
     return bytes;
 }
 

@@ -8,6 +8,7 @@
 #include <QString>
 #include <functional>
 #include <optional>
+#include <vector>
 
 class QCustomPlot;
 
@@ -25,15 +26,19 @@ enum class PlotKind {
     Feed,              ///< "feed": the machining panel's feed along the path
     AxisAcceleration,  ///< "axis-acceleration": the machining panel's axis accelerations
     PressureAngle,     ///< "pressure-angle": the follower panel's, with the limit
+    Lift,              ///< "lift": the follower's lift (the polar view: the radius r)
+    Motion,            ///< "motion": one sheet of lift, velocity, acceleration and jerk
 };
 inline constexpr PlotKind kPlotKinds[] = {
-    PlotKind::Contour, PlotKind::Velocity,         PlotKind::Acceleration, PlotKind::Jerk,
-    PlotKind::Feed,    PlotKind::AxisAcceleration, PlotKind::PressureAngle};
+    PlotKind::Contour,       PlotKind::Velocity, PlotKind::Acceleration,
+    PlotKind::Jerk,          PlotKind::Feed,     PlotKind::AxisAcceleration,
+    PlotKind::PressureAngle, PlotKind::Lift,     PlotKind::Motion};
 /// @brief "contour", "velocity", …: the name on the command line and in file names.
 [[nodiscard]] QString plotKindName(PlotKind kind);
 /// @brief The kind of that name; none for any other.
 [[nodiscard]] std::optional<PlotKind> plotKindNamed(const QString& name);
-/// @brief "contour, velocity, acceleration, jerk, feed, axis-acceleration, pressure-angle".
+/// @brief "contour, velocity, acceleration, jerk, feed, axis-acceleration, pressure-angle,
+/// lift, motion".
 [[nodiscard]] QString plotKindNames();
 /// @brief The plot's title as the user reads it (translated): "Velocity".
 [[nodiscard]] QString plotKindTitle(PlotKind kind);
@@ -55,6 +60,10 @@ inline constexpr PlotKind kPlotKinds[] = {
 inline constexpr int kMinPictureSide = 100;
 inline constexpr int kMaxPictureSide = 8000;
 
+/// @brief The property (true) of a plot's items a picture leaves out: the cursor line and the
+/// joint markers, which are for working on screen.
+inline constexpr const char* kNotInPictures = "camwrightNotInPictures";
+
 /// @brief What a picture shows besides the plot itself.
 struct PictureText {
     QString title;   ///< a line above the plot; also the PDF's and SVG's title
@@ -70,5 +79,12 @@ struct PictureText {
 [[nodiscard]] QByteArray renderPlotPicture(QCustomPlot& plot, PictureFormat format, QSize size,
                                            const PictureText& text,
                                            const std::function<void()>& fit = {});
+
+/// @brief Plots stacked on one sheet, top to bottom, sharing its height by `stretch` (one
+/// factor per plot): the title above the first, the x label (`text.xLabel` where a plot shows
+/// none) under each. Otherwise as renderPlotPicture.
+[[nodiscard]] QByteArray renderPlotSheet(const std::vector<QCustomPlot*>& plots,
+                                         const std::vector<int>& stretch, PictureFormat format,
+                                         QSize size, const PictureText& text);
 
 }  // namespace cam

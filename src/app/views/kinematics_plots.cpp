@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/angles.h"
+#include "export/plot_picture.h"
 #include "views/palette.h"
 #include "views/plot_data.h"
 #include "views/plot_redraw.h"
@@ -19,14 +20,43 @@ QPen designPen(int which) {
                       : QPen(QColor(230, 120, 0), 1.2);
 }
 
+/// The follower's quantity each plot shows: velocity, acceleration, jerk, then the lift (the
+/// index into ComputeResult::followerMotion).
+std::size_t motionIndex(std::size_t plot) { return (plot + 1) % 4; }
+
 }  // namespace
+
+QString KinematicsPlots::motionName(int plot, bool swinging) {
+    if (swinging) {
+        const QString names[kPlotCount] = {tr("ψ'"), tr("ψ''"), tr("ψ'''"), tr("ψ")};
+        return names[plot];
+    }
+    const QString names[kPlotCount] = {tr("v"), tr("a"), tr("j"), tr("s")};
+    return names[plot];
+}
+
+void KinematicsPlots::applyTitles() {
+    const QString polar[kPlotCount] = {tr("Velocity [mm/s]"), tr("Acceleration [mm/s²]"),
+                                       tr("Jerk [mm/s³]"), tr("Radius r [mm]")};
+    const QString follower[kPlotCount] = {tr("Velocity v [mm/s]"), tr("Acceleration a [mm/s²]"),
+                                          tr("Jerk j [mm/s³]"), tr("Lift s [mm]")};
+    const QString arm[kPlotCount] = {tr("Arm speed ψ' [°/s]"), tr("Arm acceleration ψ'' [°/s²]"),
+                                     tr("Arm jerk ψ''' [°/s³]"), tr("Arm swing ψ [°]")};
+    for (int p = 0; p < kPlotCount; ++p) {
+        m_plots[static_cast<std::size_t>(p)]->yAxis->setLabel(!m_follower  ? polar[p]
+                                                              : m_swinging ? arm[p]
+                                                                           : follower[p]);
+    }
+}
+
+QString KinematicsPlots::liftTitle() const {
+    return !m_follower ? tr("Radius r") : m_swinging ? tr("Arm swing") : tr("Lift");
+}
 
 KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
-    const QString titles[] = {tr("Velocity [mm/s]"), tr("Acceleration [mm/s²]"), tr("Jerk [mm/s³]"),
-                              tr("Radius r [mm]")};
     // The lift plot draws r alone: its other two curves stay empty and out of its legend.
     const QString names[kPlotCount][3] = {{tr("v_r"), tr("v_φ"), tr("|v|")},
                                           {tr("a_r"), tr("a_φ"), tr("|a|")},
@@ -34,7 +64,7 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
                                           {tr("r"), {}, {}}};
     const char* objectNames[] = {"velocityPlot", "accelerationPlot", "jerkPlot", "liftPlot"};
     for (int p = 0; p < kPlotCount; ++p) {
-        QCustomPlot* plot = newAlongXPlot(this, objectNames[p], titles[p]);
+        QCustomPlot* plot = newAlongXPlot(this, objectNames[p], QString());
         plot->setFocusPolicy(Qt::ClickFocus);  // the cursor keys (window/cursor_actions.h)
         for (int c = 0; c < 3; ++c) {
             QCPGraph* g = plot->addGraph();
@@ -54,6 +84,10 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
         QCPGraph* follower = plot->addGraph();
         follower->setName(tr("follower"));
         follower->setPen(designPen(1));
+        // The project's follower: its lift, velocity, acceleration or jerk (kFollowerGraph).
+        QCPGraph* motion = plot->addGraph();
+        motion->setPen(QPen(componentColor(0), 1.2));
+        motion->removeFromLegend();
         // The legend gets a narrow column of its own beside the plot: it never hides a curve.
         plot->legend->setVisible(true);
         plot->legend->setFont(QFont(font().family(), 8));
@@ -82,9 +116,10 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
         }
     }
     // Law and follower of a motion design are drawn over velocity, acceleration and jerk
-    // only (the design's lift is the follower's, not r).
+    // only (the design's lift is the follower's, not r), and over the follower's lift.
     for (int which = 0; which < 2; ++which)
         m_plots[kLiftPlot]->graph(kCurvesPerPlot + which)->removeFromLegend();
+    applyTitles();
     // One shared x axis: panning or zooming any plot moves them all.
     for (QCustomPlot* a : m_plots) {
         for (QCustomPlot* b : m_plots) {
@@ -106,10 +141,15 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
     // The left axes line up however wide their tick labels are.
     auto* group = new QCPMarginGroup(m_plots[0]);
     for (QCustomPlot* p : m_plots) p->axisRect()->setMarginGroup(QCP::msLeft | QCP::msRight, group);
-    // Legend columns of equal width keep the x axes exactly above each other.
+    // Legend columns of equal width keep the x axes exactly above each other: as wide as
+    // the widest of either set of quantities.
     int legendWidth = 0;
     for (QCustomPlot* p : m_plots) {
         legendWidth = std::max(legendWidth, p->legend->minimumOuterSizeHint().width());
+        const QFontMetrics metrics(p->legend->font());
+        for (const QString& name : {tr("law"), tr("follower"), motionName(kLiftPlot, true)}) {
+            legendWidth = std::max(legendWidth, metrics.horizontalAdvance(name) + 40);
+        }
     }
     for (QCustomPlot* p : m_plots) {
         p->legend->setMinimumSize(legendWidth, 0);
@@ -123,7 +163,7 @@ void KinematicsPlots::setResult(const ComputeResultPtr& result) {
     if (result->awaitsContour()) {
         // Nothing to draw yet; an earlier project's curves would only mislead.
         for (QCustomPlot* plot : m_plots) {
-            for (int c = 0; c < plot->graphCount(); ++c) plot->graph(c)->data()->clear();
+            for (int c = 0; c < plot->graphCount(); ++c) clearGraph(plot->graph(c));
         }
         for (QCPItemStraightLine* m : m_jointMarkers) m->parentPlot()->removeItem(m);
         m_jointMarkers.clear();
@@ -167,31 +207,83 @@ void KinematicsPlots::setResult(const ComputeResultPtr& result) {
         plot->xAxis->setLabel(p == 2 ? (m_axis == PlotAxis::Angle ? tr("φ [°]") : tr("t [s]"))
                                      : QString());
     }
-    rebuildJointMarkers();
     if (refit) {
         m_fitted = true;
         for (QCustomPlot* p : m_plots) p->xAxis->setRange(x.lower, x.upper);
     }
+    chooseQuantities();
+}
+
+void KinematicsPlots::setPolarChosen(bool polar) {
+    if (polar == m_polarChosen) return;
+    m_polarChosen = polar;
+    if (m_result) chooseQuantities();
+}
+
+void KinematicsPlots::chooseQuantities() {
+    const bool follower = !m_polarChosen && m_data && m_data->followerMotion[0];
+    const bool swinging = follower && m_result->follower && m_result->follower->oscillating();
+    const bool changed = follower != m_follower;
+    m_follower = follower;
+    m_swinging = swinging;
+    applyTitles();
+    for (std::size_t p = 0; p < m_plots.size(); ++p) {
+        // The other set's curves leave the plot and its legend.
+        for (int c = 0; c < kCurvesPerPlot; ++c) {
+            QCPGraph* g = m_plots[p]->graph(c);
+            if (follower) {
+                clearGraph(g);
+                g->removeFromLegend();
+            } else if (!g->name().isEmpty()) {
+                g->addToLegend();
+            }
+        }
+    }
+    rebuildJointMarkers();
+    if (follower) {
+        showFollower();
+    } else {
+        for (QCustomPlot* plot : m_plots) {
+            clearGraph(plot->graph(kFollowerGraph));
+            plot->graph(kFollowerGraph)->removeFromLegend();
+        }
+    }
     chooseResolution(true);  // always the new result's data, also when the level stays
     showDesign();
     fitY();
+    if (changed) emit followerShownChanged(follower);
+}
+
+void KinematicsPlots::showFollower() {
+    for (std::size_t p = 0; p < m_plots.size(); ++p) {
+        QCPGraph* graph = m_plots[p]->graph(kFollowerGraph);
+        graph->setData(m_data->followerMotion[motionIndex(p)]);
+        graph->setName(motionName(static_cast<int>(p), m_swinging));
+        graph->addToLegend();
+        queueReplot(m_plots[p]);
+    }
 }
 
 void KinematicsPlots::showDesign() {
-    // In mm only: an arm's lift is an angle, shown in the Motion Design dock.
+    // Over the polar kinematics in mm only (an arm's lift is an angle, shown in the Motion
+    // Design dock); over the follower's motion the law alone, in the follower's unit: the
+    // follower on the contour is the curve drawn already.
     const auto& design = m_result->design;
-    const bool shown = design && !design->swinging && m_data && m_data->designLaw[1];
-    for (std::size_t p = 0; p < 3; ++p) {
+    const bool shown =
+        design && (m_follower || !design->swinging) && m_data && m_data->designLaw[1];
+    for (std::size_t p = 0; p < m_plots.size(); ++p) {
         QCustomPlot* plot = m_plots[p];
+        const bool r = p == kLiftPlot && !m_follower;  // r is not the design's lift
         for (int which = 0; which < 2; ++which) {
             QCPGraph* graph = plot->graph(kCurvesPerPlot + which);
             const auto& data = which == 0 ? m_data->designLaw : m_data->designOnContour;
-            const bool has = shown && data[p + 1];
+            const std::size_t d = m_follower ? motionIndex(p) : std::min<std::size_t>(p + 1, 3);
+            const bool has = shown && !r && data[d] && !(m_follower && which == 1);
             if (has) {
-                graph->setData(data[p + 1]);
+                graph->setData(data[d]);
                 graph->addToLegend();
             } else {
-                graph->data()->clear();
+                clearGraph(graph);
                 graph->removeFromLegend();
             }
         }
@@ -211,9 +303,10 @@ void KinematicsPlots::setStale(const QString& reason) {
     for (QCustomPlot* plot : m_plots) {
         for (int c = 0; c < plot->graphCount(); ++c) {
             QPen pen = plot->graph(c)->pen();
-            pen.setColor(stale                ? staleColor()
-                         : c < kCurvesPerPlot ? componentColor(c)
-                                              : designPen(c - kCurvesPerPlot).color());
+            pen.setColor(stale                 ? staleColor()
+                         : c < kCurvesPerPlot  ? componentColor(c)
+                         : c == kFollowerGraph ? componentColor(0)
+                                               : designPen(c - kCurvesPerPlot).color());
             plot->graph(c)->setPen(pen);
         }
         queueReplot(plot);
@@ -241,7 +334,7 @@ void KinematicsPlots::chooseResolution(bool force) {
     const bool same = bucket == m_levelBucket;
     m_level = level;
     m_levelBucket = bucket;
-    if (same && !force) return;
+    if ((same && !force) || m_follower) return;  // the follower's curves have one level
     const auto& containers = m_data->levels[m_level];
     for (int p = 0; p < 3; ++p) {
         for (int c = 0; c < 3; ++c) {
@@ -258,10 +351,13 @@ void KinematicsPlots::fitY() {
     if (!m_result) return;
     // The worker measured the ranges; rescaling here would scan every point again.
     for (std::size_t p = 0; p < m_plots.size(); ++p) {
-        const PlotRange& y = m_result->curves.yRanges[p];
+        const PlotRange& y = m_follower ? m_result->followerMotionRanges[motionIndex(p)]
+                                        : m_result->curves.yRanges[p];
         QCPRange range(y.lower, y.upper);
-        if (showsDesign() && p < 3) {
-            const PlotRange& d = m_result->design->yRanges[p + 1];
+        if (showsDesign() && (p < 3 || m_follower)) {
+            // The law's own range (over the follower's motion the on-contour one is drawn
+            // already, but the design's range holds it too: no harm).
+            const PlotRange& d = m_result->design->yRanges[m_follower ? motionIndex(p) : p + 1];
             range.expand(QCPRange(d.lower, d.upper));
         }
         if (!(range.size() > 0.0)) range = QCPRange(range.lower - 1.0, range.upper + 1.0);
@@ -286,7 +382,17 @@ void KinematicsPlots::setCursorX(double x) {
 void KinematicsPlots::rebuildJointMarkers() {
     // Where (phi = omega·t, t in [0, T)) each joint where a_r jumps comes up in the plotted turn.
     std::vector<double> xs;
-    if (m_result && m_result->valid()) {
+    if (m_result && m_result->valid() && m_follower) {
+        // Where the follower passes a joint at which a_r jumps: the contact passes it there,
+        // not where the ray does (a roller, an offset, an arm).
+        for (std::size_t i = 0; i < m_result->followerJointX.size(); ++i) {
+            for (const JointAnalysis& j : m_result->joints) {
+                if (j.left == m_result->followerJointLeft[i] && j.continuity != Continuity::C2) {
+                    xs.push_back(m_result->followerJointX[i]);
+                }
+            }
+        }
+    } else if (m_result && m_result->valid()) {
         const double omega = m_result->omega;
         for (const JointAnalysis& j : m_result->joints) {
             if (j.continuity == Continuity::C2) continue;  // a_r is continuous here
@@ -308,6 +414,7 @@ void KinematicsPlots::rebuildJointMarkers() {
         line->setPen(QPen(QColor(200, 120, 0, 150), 1, Qt::DotLine));
         line->setSelectable(false);
         line->setVisible(!m_staleLabel->isStale());
+        line->setProperty(kNotInPictures, true);
         m_jointMarkers.push_back(line);
     }
     for (std::size_t i = 0; i < wanted; ++i) {

@@ -1,8 +1,10 @@
 #pragma once
 /// @file
-/// @brief The radius r (the lift plot), velocity, acceleration and jerk over one turn, stacked
-/// on one shared angle/time axis, with the cursor and the joints where the radial acceleration
-/// jumps.
+/// @brief The motion over one turn, stacked on one shared angle/time axis, with the cursor and
+/// the joints where the acceleration jumps: the follower's lift, velocity, acceleration and
+/// jerk (an arm's in degrees) when the project names a follower that rides the cam, else (or
+/// when View ▸ Polar Kinematics is chosen) the profile's radius r and its polar velocity,
+/// acceleration and jerk along the ray.
 
 #include <QWidget>
 #include <array>
@@ -31,6 +33,13 @@ public:
     /// the cursor's own buffered layer.
     void setCursorX(double x);
     void resetZoom();
+    /// @brief Shows the polar r, v, a, j even when the project names a follower (View ▸ Polar
+    /// Kinematics); false: the follower's motion whenever there is one.
+    void setPolarChosen(bool polar);
+    /// @brief Whether the plots show the follower's lift, velocity, acceleration and jerk.
+    [[nodiscard]] bool showsFollower() const { return m_follower; }
+    /// @brief The top plot's quantity, without unit: "Lift", "Arm angle", or "Radius r".
+    [[nodiscard]] QString liftTitle() const;
     /// @brief Velocity (0), acceleration (1), jerk (2) and the lift plot r (kLiftPlot, drawn on
     /// top).
     [[nodiscard]] QCustomPlot* plot(int i) const { return m_plots[static_cast<std::size_t>(i)]; }
@@ -44,10 +53,14 @@ public:
     /// (graphs kCurvesPerPlot and kCurvesPerPlot + 1 of each plot).
     [[nodiscard]] bool showsDesign() const;
     static constexpr int kCurvesPerPlot = 3;
+    /// The graph of each plot that draws the follower's quantity.
+    static constexpr int kFollowerGraph = kCurvesPerPlot + 2;
 
 signals:
     /// The mouse points at x (degrees or seconds, as the axis shows).
     void cursorMoved(double x);
+    /// The plots switched between the follower's motion and the polar kinematics.
+    void followerShownChanged(bool follower);
 
 protected:
     void resizeEvent(QResizeEvent* event) override;
@@ -58,6 +71,13 @@ private:
     void chooseResolution(bool force = false);
     void fitY();
     void showDesign();
+    /// Shows the follower's motion or the polar kinematics, as the result and the choice ask.
+    void chooseQuantities();
+    void showFollower();
+    /// The y axis titles of the quantities shown.
+    void applyTitles();
+    /// The follower's quantity in plot `plot`'s legend.
+    static QString motionName(int plot, bool swinging);
     void setStale(const QString& reason);
 
     std::array<QCustomPlot*, kPlotCount> m_plots{};
@@ -69,6 +89,9 @@ private:
     PlotAxis m_axis = PlotAxis::Angle;
     PlotRange m_xRange;
     bool m_fitted = false;
+    bool m_polarChosen = false;
+    bool m_follower = false;  ///< the follower's motion is shown
+    bool m_swinging = false;  ///< and it is an arm's (degrees)
     std::size_t m_level = static_cast<std::size_t>(-1);
     std::size_t m_levelBucket = 0;  ///< samples per bucket of the level drawn
 };

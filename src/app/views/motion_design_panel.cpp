@@ -507,12 +507,12 @@ void MotionDesignPanel::setResult(const ComputeResultPtr& result) {
         if (data && data->designLaw[p]) {
             plot->graph(0)->setData(data->designLaw[p]);
         } else {
-            plot->graph(0)->data()->clear();
+            clearGraph(plot->graph(0));
         }
         if (data && data->designOnContour[p]) {
             plot->graph(1)->setData(data->designOnContour[p]);
         } else {
-            plot->graph(1)->data()->clear();
+            clearGraph(plot->graph(1));
         }
         for (double x : design->jointsX) {
             auto* line = new QCPItemStraightLine(plot);

@@ -41,6 +41,11 @@ std::shared_ptr<const KinematicsPlotData> makeKinematicsPlotData(const ComputeRe
             }
         }
     }
+    if (!result.followerMotion[0].empty()) {
+        for (std::size_t d = 0; d < 4; ++d) {
+            data->followerMotion[d] = containerOf(result.followerX, result.followerMotion[d]);
+        }
+    }
     return data;
 }
 

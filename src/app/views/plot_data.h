@@ -19,6 +19,9 @@ struct KinematicsPlotData : PreparedPlotData {
     /// The motion design (ComputeResult::design): lift, velocity, acceleration and jerk of the
     /// law and of the follower on the contour (null where the result has none).
     std::array<QSharedPointer<QCPGraphDataContainer>, 4> designLaw, designOnContour;
+    /// The follower's lift, velocity, acceleration and jerk (ComputeResult::followerMotion;
+    /// null without a follower).
+    std::array<QSharedPointer<QCPGraphDataContainer>, 4> followerMotion;
 };
 
 /// @brief Feed and per-axis accelerations of a machining-time outcome.

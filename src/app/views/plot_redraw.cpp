@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "export/plot_picture.h"
+
 namespace cam {
 namespace {
 
@@ -157,6 +159,7 @@ QCPItemStraightLine* addCursorLine(QCustomPlot* plot) {
     cursor->setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
     cursor->point1->setCoords(0, 0);
     cursor->point2->setCoords(0, 1);
+    cursor->setProperty(kNotInPictures, true);
     return cursor;
 }
 

@@ -17,4 +17,8 @@ QCustomPlot* newAlongXPlot(QWidget* parent, const char* objectName, const QStrin
     return plot;
 }
 
+void clearGraph(QCPGraph* graph) {
+    graph->setData(QSharedPointer<QCPGraphDataContainer>::create());
+}
+
 }  // namespace cam

@@ -4,6 +4,7 @@
 /// zoomed along x only, so that their y range stays the one the view chose, with the tick
 /// format of axis_format.h.
 
+class QCPGraph;
 class QCustomPlot;
 class QString;
 class QWidget;
@@ -15,5 +16,10 @@ namespace cam {
 /// x label are the caller's.
 [[nodiscard]] QCustomPlot* newAlongXPlot(QWidget* parent, const char* objectName,
                                          const QString& yLabel);
+
+/// @brief Empties `graph` by giving it a container of its own: the one it draws may be a
+/// result's prepared data, shared with other graphs and drawn again later (clearing it would
+/// empty them all).
+void clearGraph(QCPGraph* graph);
 
 }  // namespace cam

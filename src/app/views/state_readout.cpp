@@ -20,6 +20,26 @@ constexpr DisplayQuantity kReadoutQuantities[] = {
     DisplayQuantity::Jerk,         DisplayQuantity::Force,        DisplayQuantity::Force,
     DisplayQuantity::Moment,       DisplayQuantity::Power,        DisplayQuantity::Stress};
 
+/// The follower's rows after t, φ and segment: lift, velocity, acceleration, jerk, pressure
+/// angle, radius of curvature; the polar rows after them are hidden.
+constexpr int kFollowerRows = 6;
+constexpr DisplayQuantity kFollowerQuantities[kFollowerRows] = {
+    DisplayQuantity::Length, DisplayQuantity::Velocity, DisplayQuantity::Acceleration,
+    DisplayQuantity::Jerk,   DisplayQuantity::Angle,    DisplayQuantity::Length};
+constexpr DisplayQuantity kArmQuantities[kFollowerRows] = {DisplayQuantity::Angle,
+                                                           DisplayQuantity::AngularVelocity,
+                                                           DisplayQuantity::AngularAcceleration,
+                                                           DisplayQuantity::AngularJerk,
+                                                           DisplayQuantity::Angle,
+                                                           DisplayQuantity::Length};
+
+/// `value`, or 0 where it is below 10⁻⁷ of the largest magnitude its quantity reaches in the
+/// turn (`span`), a tenth of the last of the six digits that largest value is shown with: the
+/// round-off of a dwell (−2.3·10⁻⁶ mm/s beside 500 mm/s) is no velocity.
+double withoutRoundOff(double value, double span) {
+    return std::abs(value) <= 1e-7 * std::abs(span) ? 0.0 : value;
+}
+
 }  // namespace
 
 StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
@@ -100,17 +120,43 @@ StateReadout::StateReadout(QWidget* parent) : QWidget(parent) {
            "step with the arrow keys in a plot (Shift: to the next joint; Home, End)"));
 }
 
-void StateReadout::setState(const KinematicState& s) {
+void StateReadout::setState(const KinematicState& s, const std::array<double, 4>& spans) {
+    showNames(false, false);
     const PolarMotion& m = s.motion;
+    const auto segment = static_cast<double>(s.segment);
+    const double values[kKinematicRows] = {s.t,  0.0,    segment, s.polar.r, m.vR,   m.vPhi, m.v,
+                                           m.aR, m.aPhi, m.a,     m.jR,      m.jPhi, m.j};
+    // Each row's span: r's, then velocity, acceleration and jerk three rows each.
+    for (int i = 2; i < kKinematicRows; ++i) {
+        const double span = i == 2 ? 0.0 : spans[i == 3 ? 3 : static_cast<std::size_t>(i - 4) / 3];
+        showValue(i, formatQuantity(kReadoutQuantities[i], withoutRoundOff(values[i], span)));
+    }
+    showInstant(s);
+}
+
+void StateReadout::setFollowerState(const KinematicState& s, const FollowerState& f,
+                                    const std::array<double, 4>& lift, bool swinging,
+                                    const std::array<double, 4>& spans) {
+    showNames(true, swinging);
+    showValue(2, formatQuantity(DisplayQuantity::Count, static_cast<double>(f.segment)));
+    const DisplayQuantity* quantities = swinging ? kArmQuantities : kFollowerQuantities;
+    const double values[kFollowerRows] = {
+        lift[0], lift[1], lift[2], lift[3], radToDeg(f.pressureAngle), f.rhoProfile};
+    for (int i = 0; i < kFollowerRows; ++i) {
+        const double v =
+            i < 4 ? withoutRoundOff(values[i], spans[static_cast<std::size_t>(i)]) : values[i];
+        // A straight stretch of the profile has no finite radius of curvature.
+        showValue(3 + i, std::isfinite(v) ? formatQuantity(quantities[i], v) : tr("∞ (straight)"));
+    }
+    showInstant(s);
+}
+
+void StateReadout::showInstant(const KinematicState& s) {
     // Where on the cam, 0 … 360°, whichever way it turns (s.phi = ω·t is negative clockwise).
     double phiDeg = mod360(radToDeg(s.phi));
     if (phiDeg >= 360.0) phiDeg = 0.0;  // −1e-17 reduces to 360 in floating point
-    const auto segment = static_cast<double>(s.segment);
-    const double values[kRows] = {s.t,  phiDeg, segment, s.polar.r, m.vR,   m.vPhi, m.v,
-                                  m.aR, m.aPhi, m.a,     m.jR,      m.jPhi, m.j};
-    for (int i = 0; i < kKinematicRows; ++i) {
-        showValue(i, formatQuantity(kReadoutQuantities[i], values[i]));
-    }
+    showValue(0, formatQuantity(DisplayQuantity::Time, s.t));
+    showValue(1, formatQuantity(DisplayQuantity::Angle, phiDeg));
     // The boxes follow the cursor, but not over what the user is typing.
     m_updating = true;
     for (auto [box, v] : {std::pair{m_time, s.t}, std::pair{m_angle, phiDeg}}) {
@@ -118,6 +164,45 @@ void StateReadout::setState(const KinematicState& s) {
         if (!(box->hasFocus() && box->isTyping())) box->setValue(v);
     }
     m_updating = false;
+}
+
+void StateReadout::showNames(bool follower, bool swinging) {
+    const int shown = !follower ? 0 : swinging ? 2 : 1;
+    if (shown == m_namesShown) return;
+    m_namesShown = shown;
+    const QString polar[kKinematicRows - 3] = {tr("r"),   tr("v_r"), tr("v_φ"), tr("|v|"),
+                                               tr("a_r"), tr("a_φ"), tr("|a|"), tr("j_r"),
+                                               tr("j_φ"), tr("|j|")};
+    const QString polarTips[4] = {
+        tr("The contour's radius along the ray at the cursor"),
+        tr("Velocity of the contour point on the ray: radial, tangential and whole"),
+        tr("Acceleration of the contour point on the ray: radial, tangential and whole"),
+        tr("Jerk of the contour point on the ray: radial, tangential and whole")};
+    const QString names[kFollowerRows] = {tr("s"), tr("v"), tr("a"), tr("j"), tr("α"), tr("ρ")};
+    const QString armNames[kFollowerRows] = {tr("ψ"),    tr("ψ'"), tr("ψ''"),
+                                             tr("ψ'''"), tr("α"),  tr("ρ")};
+    const QString tips[kFollowerRows] = {
+        swinging ? tr("The arm's swing away from the cam, from its closest position")
+                 : tr("The follower's lift above its lowest position"),
+        swinging ? tr("The arm's angular velocity, away from the cam positive")
+                 : tr("The follower's velocity, rising positive"),
+        swinging ? tr("The arm's angular acceleration") : tr("The follower's acceleration"),
+        swinging ? tr("The arm's angular jerk") : tr("The follower's jerk"),
+        tr("The pressure angle: between the contact normal and the follower's direction of "
+           "motion, positive while it rises"),
+        tr("The profile's radius of curvature at the contact: positive convex, negative "
+           "concave")};
+    m_names[2]->setToolTip(follower ? tr("The contour segment the follower touches")
+                                    : tr("The contour segment the ray meets"));
+    for (int i = 3; i < kKinematicRows; ++i) {
+        const int k = i - 3;
+        const bool used = !follower || k < kFollowerRows;
+        m_names[i]->setVisible(used);
+        m_values[i]->setVisible(used);
+        if (!used) continue;
+        m_names[i]->setText(!follower ? polar[k] : swinging ? armNames[k] : names[k]);
+        m_names[i]->setToolTip(!follower ? polarTips[(k + 2) / 3] : tips[k]);
+    }
 }
 
 void StateReadout::setSteps(double timeStep, double angleStep) {

@@ -6,6 +6,7 @@
 #include <QWidget>
 #include <array>
 
+#include "follower/follower.h"
 #include "forces/forces.h"
 #include "kinematics/kinematics.h"
 
@@ -19,7 +20,17 @@ class StateReadout : public QWidget {
     Q_OBJECT
 public:
     explicit StateReadout(QWidget* parent = nullptr);
-    void setState(const KinematicState& state);
+    /// @brief The polar state along the ray: r and the radial, tangential and whole velocity,
+    /// acceleration and jerk. `spans` (velocity, acceleration, jerk, r: the largest magnitude
+    /// over the turn) tell round-off from a value: below 10⁻⁹ of its span a value reads 0.
+    void setState(const KinematicState& state, const std::array<double, 4>& spans = {});
+    /// @brief The follower's state: the lift and its velocity, acceleration and jerk (`lift`:
+    /// FollowerModel::liftMotion, an arm's in degrees), the pressure angle and the profile's
+    /// radius of curvature at the contact, and the segment it touches. `spans`: of lift,
+    /// velocity, acceleration, jerk over the turn, as in setState.
+    void setFollowerState(const KinematicState& state, const FollowerState& follower,
+                          const std::array<double, 4>& lift, bool swinging,
+                          const std::array<double, 4>& spans = {});
     void clear();
     /// @brief What the t and φ boxes step by with their arrow keys: one sample of the turn
     /// (s) and its angle (°).
@@ -42,6 +53,10 @@ signals:
 private:
     /// Shows `text` in the value label of `row`, widening it first if the text needs more room.
     void showValue(int row, const QString& text);
+    /// The rows' names for the polar state or the follower's (an arm's when `swinging`).
+    void showNames(bool follower, bool swinging);
+    /// Sets the t and φ boxes (where on the cam, 0 … 360°, whichever way it turns).
+    void showInstant(const KinematicState& state);
     static constexpr int kKinematicRows = 13;
     /// Normal force, load (or the arm's moment), torque, power, contact stress.
     static constexpr int kRows = kKinematicRows + 5;
@@ -52,6 +67,7 @@ private:
     NumberSpinBox* m_time = nullptr;
     NumberSpinBox* m_angle = nullptr;
     bool m_updating = false;  ///< the boxes are being set from the cursor, not typed
+    int m_namesShown = -1;    ///< which names the rows have: 0 polar, 1 follower, 2 arm
 };
 
 }  // namespace cam

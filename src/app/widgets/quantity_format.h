@@ -38,6 +38,9 @@ enum class DisplayQuantity {
     Moment,                    ///< camshaft torque, an arm's moment [N·m]
     Power,                     ///< the camshaft's power [W]
     Stress,                    ///< the Hertz contact stress [MPa]
+    AngularVelocity,           ///< a swinging arm's speed [°/s]
+    AngularAcceleration,       ///< [°/s²]
+    AngularJerk,               ///< [°/s³]
     Count,                     ///< samples, grid points (whole numbers)
     Input,                     ///< a value the user types in a cell; its unit is in the header
 };
@@ -98,6 +101,11 @@ inline constexpr std::array<QuantityFormat, kQuantityCount> kQuantityFormats{{
     {DisplayQuantity::Moment, 6, QT_TRANSLATE_NOOP("cam::DisplayQuantity", "N·m"), true},
     {DisplayQuantity::Power, 6, QT_TRANSLATE_NOOP("cam::DisplayQuantity", "W"), true},
     {DisplayQuantity::Stress, 6, QT_TRANSLATE_NOOP("cam::DisplayQuantity", "MPa"), true},
+    // An arm's motion as its lift's (°) and a translating follower's (mm/s and on): six digits.
+    {DisplayQuantity::AngularVelocity, 6, QT_TRANSLATE_NOOP("cam::DisplayQuantity", "°/s"), true},
+    {DisplayQuantity::AngularAcceleration, 6, QT_TRANSLATE_NOOP("cam::DisplayQuantity", "°/s²"),
+     true},
+    {DisplayQuantity::AngularJerk, 6, QT_TRANSLATE_NOOP("cam::DisplayQuantity", "°/s³"), true},
     // 10000000 samples: every digit of a count up to 9999999999 (the sample limit is 10⁷).
     {DisplayQuantity::Count, 10, "", false},
     // A typed value reads back as typed: 10 digits, as many as a message quotes (the core's

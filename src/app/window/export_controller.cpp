@@ -18,6 +18,7 @@
 #include "engine/background_priority.h"
 #include "engine/compute_engine.h"
 #include "export/export_dialog.h"
+#include "export/export_formats.h"
 #include "io/atomic_file.h"
 #include "ui_mainwindow.h"
 #include "views/contour_view.h"
@@ -67,26 +68,38 @@ ExportController::ExportController(QMainWindow* window, Ui::MainWindow& ui,
     m_ui.menuFile->insertAction(m_ui.actionQuit, exportAction);
     m_ui.menuFile->insertSeparator(m_ui.actionQuit);
     connect(exportAction, &QAction::triggered, this, [this] {
-        ExportDialog dialog(m_document->project(), m_document->displayName(), exportBaseName(),
-                            drawablePlots(), m_window, m_document->filePath());
+        ExportDialog dialog(m_document->project(), exportBaseName(), drawablePlots(), m_window,
+                            m_document->filePath());
         if (dialog.exec() == QDialog::Accepted) exportFile(dialog.request());
     });
     for (PlotKind kind : kPlotKinds) {
         QCustomPlot* plot = plotWidget(kind);
+        if (!plot) continue;  // the motion sheet: the kinematics plots offer it
+        const bool stacked = kind == PlotKind::Lift || kind == PlotKind::Velocity ||
+                             kind == PlotKind::Acceleration || kind == PlotKind::Jerk;
         plot->setContextMenuPolicy(Qt::CustomContextMenu);
-        connect(plot, &QWidget::customContextMenuRequested, this, [this, kind, plot](QPoint at) {
-            QMenu menu(m_window);
-            QAction* a = menu.addAction(tr("Export Plot…"));
-            a->setObjectName("actionExportPlot");
-            connect(a, &QAction::triggered, this, [this, kind] { askExportPlot(kind); });
-            menu.exec(plot->mapToGlobal(at));
-        });
+        connect(plot, &QWidget::customContextMenuRequested, this,
+                [this, kind, plot, stacked](QPoint at) {
+                    QMenu menu(m_window);
+                    QAction* a = menu.addAction(tr("Export Plot…"));
+                    a->setObjectName("actionExportPlot");
+                    connect(a, &QAction::triggered, this, [this, kind] { askExportPlot(kind); });
+                    if (stacked) {
+                        QAction* sheet =
+                            menu.addAction(tr("Export Lift, Velocity, Acceleration "
+                                              "and Jerk on One Sheet…"));
+                        sheet->setObjectName("actionExportMotionSheet");
+                        connect(sheet, &QAction::triggered, this,
+                                [this] { askExportPlot(PlotKind::Motion); });
+                    }
+                    menu.exec(plot->mapToGlobal(at));
+                });
     }
 }
 
 QString ExportController::exportTitle() const {
-    const std::string& name = m_document->project().name;
-    return name.empty() ? exportBaseName() : QString::fromStdString(name);
+    return QString::fromStdString(
+        exportName(m_document->project().name, exportBaseName().toStdString()));
 }
 
 QString ExportController::exportBaseName() const {
@@ -118,6 +131,10 @@ QCustomPlot* ExportController::plotWidget(PlotKind kind) const {
             return m_views.machining->accelerationPlot();
         case PlotKind::PressureAngle:
             return m_views.follower->pressurePlot();
+        case PlotKind::Lift:
+            return m_views.plots->plot(KinematicsPlots::kLiftPlot);
+        case PlotKind::Motion:
+            return nullptr;  // four plots: see plotPicture()
     }
     return nullptr;
 }
@@ -156,14 +173,27 @@ QByteArray ExportController::plotPicture(PlotKind kind, PictureFormat format, QS
         }
         return {};
     }
-    QCustomPlot* plot = plotWidget(kind);
-    if (size.isEmpty()) size = plot->size();
     PictureText text;
-    text.title = tr("%1 — %2").arg(exportTitle(), plotKindTitle(kind));
+    // The lift plot shows the radius r in the polar view.
+    text.title = tr("%1 — %2").arg(
+        exportTitle(), kind == PlotKind::Lift ? m_views.plots->liftTitle() : plotKindTitle(kind));
     // The stacked plots share the bottom one's x axis label.
-    if (kind == PlotKind::Velocity || kind == PlotKind::Acceleration) {
+    if (kind == PlotKind::Velocity || kind == PlotKind::Acceleration || kind == PlotKind::Lift ||
+        kind == PlotKind::Motion) {
         text.xLabel = m_views.plots->plot(2)->xAxis->label();
     }
+    if (kind == PlotKind::Motion) {
+        // The lift above velocity, acceleration and jerk, as the window stacks them.
+        KinematicsPlots& plots = *m_views.plots;
+        if (size.isEmpty()) size = plots.size();
+        QByteArray bytes = renderPlotSheet(
+            {plots.plot(KinematicsPlots::kLiftPlot), plots.plot(0), plots.plot(1), plots.plot(2)},
+            {2, 3, 3, 3}, format, size, text);
+        if (bytes.isEmpty() && problem) *problem = tr("The picture could not be drawn.");
+        return bytes;
+    }
+    QCustomPlot* plot = plotWidget(kind);
+    if (size.isEmpty()) size = plot->size();
     std::function<void()> fit;
     if (kind == PlotKind::Contour) {
         // The drag handles of the selected segment are for editing, not for the picture.
@@ -204,7 +234,10 @@ void ExportController::askExportPlot(PlotKind kind) {
     request.picture = *format;
     request.path = path;
     // What is on screen, but room enough for the title and the numbers of both axes.
-    request.pictureSize = plotWidget(kind)->size().expandedTo(QSize(640, 400));
+    const QWidget* shown =
+        kind == PlotKind::Motion ? static_cast<QWidget*>(m_views.plots) : plotWidget(kind);
+    request.pictureSize =
+        shown->size().expandedTo(kind == PlotKind::Motion ? QSize(800, 900) : QSize(640, 400));
     exportFile(request);
 }
 

@@ -187,11 +187,13 @@ void WindowActions::setUpActions() {
         QSettings().setValue("view/timeAxis", on);
         emit viewChanged();
     });
-    // The lift plot r(φ) above the kinematics plots: shown unless the user hid it.
-    auto* lift = new QAction(tr("&Radius Plot r(φ)"), m_window);
+    // The lift plot above the kinematics plots: shown unless the user hid it.
+    auto* lift = new QAction(tr("&Lift Plot"), m_window);
     lift->setObjectName("actionLiftPlot");
     lift->setCheckable(true);
-    lift->setToolTip(tr("Show the contour's radius r over the turn above the velocity"));
+    lift->setToolTip(
+        tr("Show the follower's lift (or, in the polar view, the contour's radius "
+           "r) over the turn above the velocity"));
     lift->setChecked(QSettings().value("view/liftPlot", true).toBool());
     m_views.plots->plot(KinematicsPlots::kLiftPlot)->setVisible(lift->isChecked());
     connect(lift, &QAction::toggled, this, [this](bool on) {
@@ -201,6 +203,27 @@ void WindowActions::setUpActions() {
         if (on) queueReplot(plot);
     });
     m_ui.menuView->insertAction(m_ui.actionResetZoom, lift);
+    // The follower's motion is what the plots show when the project names a follower; the
+    // contour's polar kinematics along the ray are one choice away.
+    auto* polar = new QAction(tr("&Polar Kinematics"), m_window);
+    polar->setObjectName("actionPolarKinematics");
+    polar->setCheckable(true);
+    polar->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    polar->setToolTip(
+        tr("Plot the contour's radius r and its polar velocity, acceleration and jerk along "
+           "the ray instead of the follower's lift, velocity, acceleration and jerk "
+           "(Ctrl+Shift+P)"));
+    polar->setChecked(QSettings().value("view/polarKinematics", false).toBool());
+    m_views.plots->setPolarChosen(polar->isChecked());
+    connect(polar, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue("view/polarKinematics", on);
+        m_views.plots->setPolarChosen(on);
+        m_window->statusBar()->showMessage(
+            on ? tr("The plots show the contour's polar kinematics along the ray")
+               : tr("The plots show the follower's motion (when the project names one)"),
+            4000);
+    });
+    m_ui.menuView->insertAction(m_ui.actionResetZoom, polar);
     // The profile coloured by its contact stress (a project with dynamics): on demand.
     auto* stress = new QAction(tr("Colour by Contact &Stress"), m_window);
     stress->setObjectName("actionStressColours");
@@ -297,6 +320,7 @@ void WindowActions::setUpIcons() {
         {"actionKeyboardShortcuts", "preferences-desktop-keyboard"},
         {"actionPlay", "media-playback-start"},
         {"actionLiftPlot", "camwright-lift-plot"},
+        {"actionPolarKinematics", "camwright-polar-kinematics"},
         {"actionStressColours", "camwright-stress-colours"},
         {"actionCursorPreviousSample", "go-previous"},
         {"actionCursorNextSample", "go-next"},

@@ -12,6 +12,7 @@
 #include "cli/plot_pictures.h"
 #include "export/cam_table.h"
 #include "export/dxf.h"
+#include "export/export_formats.h"
 #include "export/gcode.h"
 #include "export/svg.h"
 
@@ -121,16 +122,12 @@ int runExport(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
             options.stepDownMm = parseFiniteNumber("--step-down", *d, "a depth in mm");
         }
         options.compensation = args.hasFlag("--compensation");
-        options.projectName = loaded.project.name.empty()
-                                  ? std::filesystem::path(input).filename().string()
-                                  : loaded.project.name;
+        options.projectName = exportName(loaded.project.name, input);
         text = gcodeProgram(loaded.contour, options);
     } else if (kind.id == ExportFormatId::Svg) {
         SvgOptions options;
         options.toleranceMm = tolerance;
-        options.title = loaded.project.name.empty()
-                            ? std::filesystem::path(input).filename().string()
-                            : loaded.project.name;
+        options.title = exportName(loaded.project.name, input);
         text = svgDocument(loaded.contour, options);
     } else {
         CamTableOptions options;
@@ -148,9 +145,7 @@ int runExport(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
             // The table lists the dialects in CamTableDialect's order.
             options.dialect = static_cast<CamTableDialect>(dialect - kind.dialects.data());
         }
-        options.name = loaded.project.name.empty()
-                           ? std::filesystem::path(input).stem().stem().string()
-                           : loaded.project.name;
+        options.name = exportName(loaded.project.name, input);
         options.follower = loaded.project.follower.value_or(FollowerSpec{});
         text = camTableText(loaded.contour, options);
     }

@@ -100,4 +100,17 @@ const ExportDialectKind* findDialect(const ExportFormatKind& format, std::string
     return nullptr;
 }
 
+std::string exportName(const std::string& projectName, const std::string& filePath) {
+    if (!projectName.empty()) return projectName;
+    std::string name = filePath.substr(filePath.find_last_of("/\\") + 1);
+    for (const std::string_view suffix :
+         {std::string_view(".cam.json"), std::string_view(".json")}) {
+        if (name.size() > suffix.size() && name.ends_with(suffix)) {
+            name.resize(name.size() - suffix.size());
+            break;
+        }
+    }
+    return name.empty() ? "untitled" : name;
+}
+
 }  // namespace cam

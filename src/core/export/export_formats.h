@@ -6,6 +6,7 @@
 /// format or a dialect is docs/architecture.md's recipe.
 
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace cam {
@@ -48,5 +49,10 @@ struct ExportFormatKind {
 /// @brief The dialect called `name` of a format, or null.
 [[nodiscard]] const ExportDialectKind* findDialect(const ExportFormatKind& format,
                                                    std::string_view name);
+
+/// @brief The name every export of a project carries (the G-code header, the cam table's name,
+/// the SVG's and a picture's title): the project's name, else its file's name without the
+/// folder and ".cam.json" (or ".json"), else "untitled" (a project never saved).
+[[nodiscard]] std::string exportName(const std::string& projectName, const std::string& filePath);
 
 }  // namespace cam
