@@ -2766,7 +2766,7 @@
 <context>
     <name>cam::ExportController</name>
     <message>
-        <location filename="../../src/app/window/export_controller.cpp" line="+61" />
+        <location filename="../../src/app/window/export_controller.cpp" line="+62" />
         <source>E&amp;xport…</source>
         <translation>E&amp;xportieren…</translation>
     </message>
@@ -2781,7 +2781,7 @@
         <translation>Diagramm exportieren…</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>Export Lift, Velocity, Acceleration and Jerk on One Sheet…</source>
         <translation>Hub, Geschwindigkeit, Beschleunigung und Ruck auf einem Blatt exportieren…</translation>
     </message>
@@ -2811,7 +2811,7 @@
         <translation>%1 — %2</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+14" />
         <location line="+14" />
         <source>The picture could not be drawn.</source>
         <translation>Das Bild konnte nicht gezeichnet werden.</translation>
@@ -3125,7 +3125,7 @@
 <context>
     <name>cam::FollowerPanel</name>
     <message>
-        <location filename="../../src/app/views/follower_panel.cpp" line="+50" />
+        <location filename="../../src/app/views/follower_panel.cpp" line="+53" />
         <source>What touches the cam (math.md §7)</source>
         <translation>Was die Kurvenscheibe berührt (math.md §7)</translation>
     </message>
@@ -3150,12 +3150,12 @@
         <translation>Radius der Rolle</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>Offset e of the follower's line from the cam centre, along n</source>
-        <translation>Versatz e der Stößelgeraden vom Scheibenmittelpunkt, entlang n</translation>
+        <location line="+5" />
+        <source>Offset e of the follower's line of motion from the cam's centre: positive to the left of its direction as seen from the centre, negative to the right (the Turning picture shows it). A positive offset lowers the rise's pressure angle when the cam turns counter-clockwise, a negative one when it turns clockwise; either raises the return's</source>
+        <translation>Versatz e der Bewegungslinie des Stößels von der Scheibenmitte: positiv links seiner Richtung von der Mitte aus gesehen, negativ rechts (das Bild „Drehrichtung“ zeigt es). Ein positiver Versatz senkt den Druckwinkel des Anstiegs, wenn die Scheibe gegen den Uhrzeigersinn dreht, ein negativer, wenn sie im Uhrzeigersinn dreht; beide erhöhen den des Rückhubs</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+8" />
         <source>Pivot of the arm, x (in the cam's frame at 0°)</source>
         <translation>Drehpunkt des Hebels, x (im Scheibensystem bei 0°)</translation>
     </message>
@@ -3241,6 +3241,16 @@
     </message>
     <message>
         <location line="+4" />
+        <source>Turning clockwise</source>
+        <translation>Dreht im Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Turning</source>
+        <translation>Drehrichtung</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>Design checks (click one to go there):</source>
         <translation>Auslegungsprüfungen (Klick springt zur Stelle):</translation>
     </message>
@@ -3270,7 +3280,7 @@
         <translation>ρ [mm]</translation>
     </message>
     <message>
-        <location line="+162" />
+        <location line="+188" />
         <location line="+29" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
@@ -3368,7 +3378,17 @@
         <translation>Der Stößel erreicht das Profil bei %1 nicht: er springt von %2 nach %3</translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="-163" />
+        <source>clockwise (click the picture: the other way)</source>
+        <translation>im Uhrzeigersinn (Klick auf das Bild: andersherum)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>counter-clockwise (click the picture: the other way)</source>
+        <translation>gegen den Uhrzeigersinn (Klick auf das Bild: andersherum)</translation>
+    </message>
+    <message>
+        <location line="+209" />
         <source>Face width needed: %1</source>
         <translation>Nötige Tellerbreite: %1</translation>
     </message>
@@ -3752,7 +3772,7 @@
         <translation>Schwingwinkel ψ [°]</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+9" />
         <source>Radius r</source>
         <translation>Radius r</translation>
     </message>
@@ -3818,18 +3838,16 @@
     </message>
     <message>
         <location line="+18" />
-        <location line="+68" />
         <source>law</source>
         <translation>Gesetz</translation>
     </message>
     <message>
-        <location line="-65" />
-        <location line="+65" />
+        <location line="+3" />
         <source>follower</source>
         <translation>Stößel</translation>
     </message>
     <message>
-        <location line="+57" />
+        <location line="+119" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
     </message>
@@ -4015,7 +4033,7 @@
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+155" />
+        <location line="+154" />
         <source>Cursor at %1</source>
         <translation>Cursor bei %1</translation>
     </message>
@@ -4297,12 +4315,12 @@
 <context>
     <name>cam::MotionPanel</name>
     <message>
-        <location filename="../../src/app/views/motion_panel.cpp" line="+23" />
-        <source>Turning speed; a negative speed turns clockwise</source>
-        <translation>Drehgeschwindigkeit; negativ dreht im Uhrzeigersinn</translation>
+        <location filename="../../src/app/views/motion_panel.cpp" line="+24" />
+        <source>Turning speed; a negative speed turns clockwise (the Follower dock pictures the direction: a click there turns the cam round)</source>
+        <translation>Drehzahl; eine negative dreht im Uhrzeigersinn (das Dock Stößel zeigt die Drehrichtung als Bild: ein Klick dort kehrt sie um)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>rad/s</source>
         <translation>rad/s</translation>
     </message>
@@ -4895,7 +4913,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>cam::StateReadout</name>
     <message>
-        <location filename="../../src/app/views/state_readout.cpp" line="+47" />
+        <location filename="../../src/app/views/state_readout.cpp" line="+49" />
         <source>t</source>
         <translation>t</translation>
     </message>
@@ -4911,77 +4929,77 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+125" />
+        <location line="+124" />
         <source>r</source>
         <translation>r</translation>
     </message>
     <message>
-        <location line="-125" />
-        <location line="+125" />
+        <location line="-124" />
+        <location line="+124" />
         <source>v_r</source>
         <translation>v_r</translation>
     </message>
     <message>
-        <location line="-124" />
-        <location line="+124" />
+        <location line="-123" />
+        <location line="+123" />
         <source>v_φ</source>
         <translation>v_φ</translation>
     </message>
     <message>
-        <location line="-124" />
-        <location line="+124" />
+        <location line="-123" />
+        <location line="+123" />
         <source>|v|</source>
         <translation>|v|</translation>
     </message>
     <message>
-        <location line="-124" />
-        <location line="+125" />
+        <location line="-123" />
+        <location line="+124" />
         <source>a_r</source>
         <translation>a_r</translation>
     </message>
     <message>
-        <location line="-125" />
-        <location line="+125" />
+        <location line="-124" />
+        <location line="+124" />
         <source>a_φ</source>
         <translation>a_φ</translation>
     </message>
     <message>
-        <location line="-125" />
-        <location line="+125" />
+        <location line="-124" />
+        <location line="+124" />
         <source>|a|</source>
         <translation>|a|</translation>
     </message>
     <message>
-        <location line="-124" />
-        <location line="+124" />
+        <location line="-123" />
+        <location line="+123" />
         <source>j_r</source>
         <translation>j_r</translation>
     </message>
     <message>
-        <location line="-124" />
-        <location line="+125" />
+        <location line="-123" />
+        <location line="+124" />
         <source>j_φ</source>
         <translation>j_φ</translation>
     </message>
     <message>
-        <location line="-125" />
-        <location line="+125" />
+        <location line="-124" />
+        <location line="+124" />
         <source>|j|</source>
         <translation>|j|</translation>
     </message>
     <message>
-        <location line="-125" />
+        <location line="-124" />
         <source>F_n</source>
         <translation>F_n</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+170" />
+        <location line="+169" />
         <source>F</source>
         <translation>F</translation>
     </message>
     <message>
-        <location line="-169" />
+        <location line="-168" />
         <source>T</source>
         <translation>T</translation>
     </message>
@@ -5002,12 +5020,12 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     </message>
     <message>
         <location line="+0" />
-        <location line="+169" />
+        <location line="+168" />
         <source>Load along the follower's line of motion</source>
         <translation>Last längs der Bewegungsachse des Stößels</translation>
     </message>
     <message>
-        <location line="-168" />
+        <location line="-167" />
         <source>Torque on the camshaft</source>
         <translation>Drehmoment an der Kurvenwelle</translation>
     </message>
@@ -5047,7 +5065,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
         <translation>Der Zustand am Cursor: die Maus über ein Diagramm bewegen, eine Zeit oder einen Winkel eingeben oder mit den Pfeiltasten in einem Diagramm schrittweise gehen (Umschalt: zum nächsten Übergang; Pos1, Ende)</translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+30" />
         <source>∞ (straight)</source>
         <translation>∞ (gerade)</translation>
     </message>
@@ -5131,7 +5149,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     <message>
         <location line="+1" />
         <source>The follower's lift above its lowest position</source>
-        <translation>Der Hub des Abtasters über seiner tiefsten Stellung</translation>
+        <translation>Der Hub des Stößels über seiner tiefsten Stellung</translation>
     </message>
     <message>
         <location line="+1" />
@@ -5141,7 +5159,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     <message>
         <location line="+1" />
         <source>The follower's velocity, rising positive</source>
-        <translation>Die Geschwindigkeit des Abtasters, steigend positiv</translation>
+        <translation>Die Geschwindigkeit des Stößels, steigend positiv</translation>
     </message>
     <message>
         <location line="+1" />
@@ -5151,7 +5169,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     <message>
         <location line="+0" />
         <source>The follower's acceleration</source>
-        <translation>Die Beschleunigung des Abtasters</translation>
+        <translation>Die Beschleunigung des Stößels</translation>
     </message>
     <message>
         <location line="+1" />
@@ -5161,12 +5179,12 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     <message>
         <location line="+0" />
         <source>The follower's jerk</source>
-        <translation>Der Ruck des Abtasters</translation>
+        <translation>Der Ruck des Stößels</translation>
     </message>
     <message>
         <location line="+1" />
         <source>The pressure angle: between the contact normal and the follower's direction of motion, positive while it rises</source>
-        <translation>Der Druckwinkel: zwischen der Kontaktnormalen und der Bewegungsrichtung des Abtasters, positiv beim Steigen</translation>
+        <translation>Der Druckwinkel: zwischen der Kontaktnormalen und der Bewegungsrichtung des Stößels, positiv beim Steigen</translation>
     </message>
     <message>
         <location line="+2" />
@@ -5176,7 +5194,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
     <message>
         <location line="+2" />
         <source>The contour segment the follower touches</source>
-        <translation>Das Kontursegment, das der Abtaster berührt</translation>
+        <translation>Das Kontursegment, das der Stößel berührt</translation>
     </message>
     <message>
         <location line="+1" />
@@ -5331,6 +5349,39 @@ blau 0 … rot %1 (größte)</translation>
             <numerusform>%n Abschnitt innerhalb %1 in %2 synthetisiert</numerusform>
             <numerusform>%n Abschnitte innerhalb %1 in %2 synthetisiert</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>cam::TurningPicture</name>
+    <message>
+        <location filename="../../src/app/views/turning_picture.cpp" line="+28" />
+        <source>The cam turns clockwise, seen from the front (the drawing); click to turn it counter-clockwise.</source>
+        <translation>Die Scheibe dreht im Uhrzeigersinn, von vorn (auf die Zeichnung) gesehen; klicken, um sie gegen den Uhrzeigersinn drehen zu lassen.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The cam turns counter-clockwise, seen from the front (the drawing); click to turn it clockwise.</source>
+        <translation>Die Scheibe dreht gegen den Uhrzeigersinn, von vorn (auf die Zeichnung) gesehen; klicken, um sie im Uhrzeigersinn drehen zu lassen.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source> A period has no sign: clockwise writes the speed in rpm.</source>
+        <translation> Eine Periode hat kein Vorzeichen: im Uhrzeigersinn schreibt die Drehzahl in U/min.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source> The follower's line of motion passes through the cam's centre.</source>
+        <translation> Die Bewegungslinie des Stößels geht durch die Scheibenmitte.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source> The follower's line is offset %1 mm to the left of its direction (positive e): this lowers the pressure angle of the rise when the cam turns counter-clockwise and raises it when it turns clockwise.</source>
+        <translation> Die Linie des Stößels ist um %1 mm links seiner Richtung versetzt (positives e): das senkt den Druckwinkel des Anstiegs, wenn die Scheibe gegen den Uhrzeigersinn dreht, und erhöht ihn, wenn sie im Uhrzeigersinn dreht.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source> The follower's line is offset %1 mm to the right of its direction (negative e): this lowers the pressure angle of the rise when the cam turns clockwise and raises it when it turns counter-clockwise.</source>
+        <translation> Die Linie des Stößels ist um %1 mm rechts seiner Richtung versetzt (negatives e): das senkt den Druckwinkel des Anstiegs, wenn die Scheibe im Uhrzeigersinn dreht, und erhöht ihn, wenn sie gegen den Uhrzeigersinn dreht.</translation>
     </message>
 </context>
 <context>
@@ -5492,9 +5543,9 @@ blau 0 … rot %1 (größte)</translation>
         <translation>&amp;Hubdiagramm</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Show the follower's lift (or, in the polar view, the contour's radius r) over the turn above the velocity</source>
-        <translation>Den Hub des Abtasters (in der Polaransicht den Radius r der Kontur) über der Umdrehung oberhalb der Geschwindigkeit zeigen</translation>
+        <translation>Den Hub des Stößels (in der Polaransicht den Radius r der Kontur) über der Umdrehung oberhalb der Geschwindigkeit zeigen</translation>
     </message>
     <message>
         <location line="+13" />
@@ -5504,7 +5555,7 @@ blau 0 … rot %1 (größte)</translation>
     <message>
         <location line="+5" />
         <source>Plot the contour's radius r and its polar velocity, acceleration and jerk along the ray instead of the follower's lift, velocity, acceleration and jerk (Ctrl+Shift+P)</source>
-        <translation>Den Radius r der Kontur und ihre polare Geschwindigkeit, Beschleunigung und ihren Ruck entlang des Strahls statt Hub, Geschwindigkeit, Beschleunigung und Ruck des Abtasters zeigen (Strg+Umschalt+P)</translation>
+        <translation>Den Radius r der Kontur und ihre polare Geschwindigkeit, Beschleunigung und ihren Ruck entlang des Strahls statt Hub, Geschwindigkeit, Beschleunigung und Ruck des Stößels zeigen (Strg+Umschalt+P)</translation>
     </message>
     <message>
         <location line="+9" />
@@ -5514,7 +5565,7 @@ blau 0 … rot %1 (größte)</translation>
     <message>
         <location line="+1" />
         <source>The plots show the follower's motion (when the project names one)</source>
-        <translation>Die Diagramme zeigen die Bewegung des Abtasters (wenn das Projekt einen nennt)</translation>
+        <translation>Die Diagramme zeigen die Bewegung des Stößels (wenn das Projekt einen nennt)</translation>
     </message>
     <message>
         <location line="+5" />

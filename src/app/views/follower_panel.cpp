@@ -5,6 +5,8 @@
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -17,6 +19,7 @@
 #include "views/check_list.h"
 #include "views/plot_redraw.h"
 #include "views/plot_setup.h"
+#include "views/turning_picture.h"
 #include "widgets/number_spin_box.h"
 #include "widgets/quantity_format.h"
 
@@ -55,8 +58,14 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     m_radius = spinBox(this, "followerRadiusSpinBox", " mm", tr("Radius of the roller"), 0.001);
     m_radius->setSingleStep(0.5);
     m_radius->setValue(5.0);
-    m_offset = spinBox(this, "followerOffsetSpinBox", " mm",
-                       tr("Offset e of the follower's line from the cam centre, along n"), -1e6);
+    m_offset = spinBox(
+        this, "followerOffsetSpinBox", " mm",
+        tr("Offset e of the follower's line of motion from the cam's centre: positive to the "
+           "left of its direction as seen from the centre, negative to the right "
+           "(the Turning picture shows it). A positive offset lowers the "
+           "rise's pressure angle when the cam turns counter-clockwise, a "
+           "negative one when it turns clockwise; either raises the return's"),
+        -1e6);
     m_offset->setSingleStep(0.5);
     m_pivotX = spinBox(this, "pivotXSpinBox", " mm",
                        tr("Pivot of the arm, x (in the cam's frame at 0°)"), -1e6);
@@ -83,6 +92,19 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     form->addRow(tr("Arm length"), m_armLength);
     form->addRow(tr("Arm side"), m_side);
     form->addRow(tr("Pressure-angle limit"), m_limit);
+    // How the cam turns against this follower: the offset's sign only means something with
+    // it. The picture is the setting: a click turns the cam round (the speed's sign).
+    m_turning = new TurningPicture(this);
+    m_turning->setAccessibleName(tr("Turning clockwise"));
+    m_turningText = new QLabel(this);
+    m_turningText->setObjectName("turningText");
+    m_turningText->setWordWrap(true);
+    auto* turning = new QWidget(this);
+    auto* turningRow = new QHBoxLayout(turning);
+    turningRow->setContentsMargins(0, 0, 0, 0);
+    turningRow->addWidget(m_turning);
+    turningRow->addWidget(m_turningText, 1);
+    form->addRow(tr("Turning"), turning);
     layout->addLayout(form);
 
     m_checks = new CheckList(
@@ -169,8 +191,27 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     number(m_limit, [](FollowerSpec& f, double v) {
         f.maxPressureAngleDeg = v > 0.0 ? std::optional<double>(v) : std::nullopt;
     });
+    connect(m_turning, &QAbstractButton::clicked, this,
+            [this](bool clockwise) { turnRound(clockwise); });
     connect(document, &ProjectDocument::followerChanged, this, &FollowerPanel::refresh);
+    connect(document, &ProjectDocument::motionChanged, this, &FollowerPanel::refresh);
     refresh();
+}
+
+void FollowerPanel::turnRound(bool clockwise) {
+    const MotionSpec& now = m_document->project().motion;
+    if (!std::isfinite(now.value) || now.value == 0.0) return;
+    const bool turnsClockwise = now.unit != SpeedUnit::PeriodS && now.value < 0.0;
+    if (clockwise == turnsClockwise) return;
+    // The same speed the other way. A period has no sign: clockwise is written in rpm.
+    MotionSpec m = now;
+    if (now.unit == SpeedUnit::PeriodS) {
+        m.unit = SpeedUnit::Rpm;
+        m.value = -60.0 / now.value;
+    } else {
+        m.value = -now.value;
+    }
+    m_document->undoStack()->push(new SetMotion(m_document, m));
 }
 
 void FollowerPanel::edit(const std::function<void(FollowerSpec&)>& change) {
@@ -215,6 +256,13 @@ void FollowerPanel::refresh() {
     m_pivotY->setEnabled(arm);
     m_armLength->setEnabled(arm);
     m_side->setEnabled(arm);
+    const MotionSpec& m = m_document->project().motion;
+    const bool valid = std::isfinite(m.value) && m.value != 0.0;
+    const bool clockwise = valid && m.unit != SpeedUnit::PeriodS && m.value < 0.0;
+    m_turning->setEnabled(valid);
+    m_turning->show(clockwise, m_document->project().follower);
+    m_turningText->setText(clockwise ? tr("clockwise (click the picture: the other way)")
+                                     : tr("counter-clockwise (click the picture: the other way)"));
     m_refreshing = false;
 }
 

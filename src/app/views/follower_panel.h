@@ -12,12 +12,14 @@
 #include "engine/compute_result.h"
 
 class QComboBox;
+class QLabel;
 class QCPItemStraightLine;
 class QCustomPlot;
 
 namespace cam {
 
 class CheckList;
+class TurningPicture;
 class NumberSpinBox;
 class ProjectDocument;
 
@@ -57,6 +59,8 @@ private:
     void showCurvature(const ComputeResultPtr& result);
     void refresh();
     void edit(const std::function<void(FollowerSpec&)>& change);
+    /// Turns the cam the other way: the speed's sign (a period, which has none, becomes rpm).
+    void turnRound(bool clockwise);
 
     ProjectDocument* m_document;
     QComboBox* m_type;
@@ -68,6 +72,8 @@ private:
     NumberSpinBox* m_armLength;
     QComboBox* m_side;
     NumberSpinBox* m_limit;
+    TurningPicture* m_turning;
+    QLabel* m_turningText;
     CheckList* m_checks;
     QCustomPlot* m_pressurePlot;
     std::array<QCPItemStraightLine*, 2> m_limitLines{};

@@ -141,15 +141,12 @@ KinematicsPlots::KinematicsPlots(QWidget* parent) : QWidget(parent) {
     // The left axes line up however wide their tick labels are.
     auto* group = new QCPMarginGroup(m_plots[0]);
     for (QCustomPlot* p : m_plots) p->axisRect()->setMarginGroup(QCP::msLeft | QCP::msRight, group);
-    // Legend columns of equal width keep the x axes exactly above each other: as wide as
-    // the widest of either set of quantities.
+    // Legend columns of equal width keep the x axes exactly above each other. (The widest
+    // names, "law" and "follower" of a design, are in the legends now; the follower's own
+    // quantities are shorter.)
     int legendWidth = 0;
     for (QCustomPlot* p : m_plots) {
         legendWidth = std::max(legendWidth, p->legend->minimumOuterSizeHint().width());
-        const QFontMetrics metrics(p->legend->font());
-        for (const QString& name : {tr("law"), tr("follower"), motionName(kLiftPlot, true)}) {
-            legendWidth = std::max(legendWidth, metrics.horizontalAdvance(name) + 40);
-        }
     }
     for (QCustomPlot* p : m_plots) {
         p->legend->setMinimumSize(legendWidth, 0);

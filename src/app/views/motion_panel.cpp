@@ -20,7 +20,9 @@ MotionPanel::MotionPanel(ProjectDocument* document, QWidget* parent)
     auto* form = new QFormLayout(this);
     m_speed = new NumberSpinBox(this);
     m_speed->setObjectName("speedSpinBox");
-    m_speed->setToolTip(tr("Turning speed; a negative speed turns clockwise"));
+    m_speed->setToolTip(
+        tr("Turning speed; a negative speed turns clockwise (the Follower dock pictures the "
+           "direction: a click there turns the cam round)"));
     m_unit = new QComboBox(this);
     m_unit->setObjectName("speedUnitComboBox");
     m_unit->addItems({tr("rad/s"), tr("rpm"), tr("period [s]")});
