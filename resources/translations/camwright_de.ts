@@ -2146,16 +2146,6 @@
     </message>
     <message>
         <location line="+9" />
-        <source>Round Corner</source>
-        <translation>Ecke verrunden</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>Radius of the switch arc (below %1 fits):</source>
-        <translation>Radius des Umschaltbogens (unter %1 passt):</translation>
-    </message>
-    <message>
-        <location line="+6" />
         <source>Approximate Arc by Béziers</source>
         <translation>Bogen durch Béziers annähern</translation>
     </message>
@@ -2939,7 +2929,7 @@
     <message>
         <location line="+7" />
         <source>The cutter's radius: the path keeps this distance</source>
-        <translation>Der Fräserradius: die Bahn hält diesen Abstand</translation>
+        <translation>Der Werkzeugradius: die Bahn hält diesen Abstand</translation>
     </message>
     <message>
         <location line="+2" />
@@ -2950,7 +2940,7 @@
     <message>
         <location line="-2" />
         <source>The cutter's radius (the project's machining section gives the default)</source>
-        <translation>Der Fräserradius (vorgegeben aus dem Bearbeitungsabschnitt des Projekts)</translation>
+        <translation>Der Werkzeugradius (vorgegeben aus dem Bearbeitungsabschnitt des Projekts)</translation>
     </message>
     <message>
         <location line="+28" />
@@ -4746,6 +4736,94 @@ Möchten Sie die Datei ersetzen?</translation>
     </message>
 </context>
 <context>
+    <name>cam::RoundCornerDialog</name>
+    <message>
+        <location filename="../../src/app/dialogs/round_corner_dialog.cpp" line="+45" />
+        <source>Round Corner</source>
+        <translation>Ecke verrunden</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>The switch arc's radius: tangent to both neighbours</source>
+        <translation>Der Radius des Verrundungsbogens: tangential an beide Nachbarn</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Below %1 fits this corner.</source>
+        <translation>Unter %1 passt in diese Ecke.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The corner is concave: a switch arc smaller than the cutter's radius (%1) cannot be cut.</source>
+        <translation>Die Ecke ist konkav: ein Verrundungsbogen kleiner als der Werkzeugradius (%1) lässt sich nicht fräsen.</translation>
+    </message>
+    <message>
+        <location line="+12" />
+        <source>From the speed at the joint</source>
+        <translation>Aus der Geschwindigkeit am Übergang</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>The speed V through the corner (the project's feed limit to start with)</source>
+        <translation>Die Geschwindigkeit V durch die Ecke (anfangs die Vorschubgrenze des Projekts)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The vector acceleration ACv the machine allows (the smaller of the project's x and y limits to start with)</source>
+        <translation>Die Bahnbeschleunigung ACv, die die Maschine erlaubt (anfangs die kleinere der x- und y-Grenzen des Projekts)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The admissible acceleration error vae, a fraction (0.1: 10 %)</source>
+        <translation>Der zulässige Beschleunigungsfehler vae als Anteil (0,1: 10 %)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Speed V</source>
+        <translation>Geschwindigkeit V</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Acceleration ACv</source>
+        <translation>Beschleunigung ACv</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Admissible error vae</source>
+        <translation>Zulässiger Fehler vae</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Use This Radius</source>
+        <translation>Diesen Radius verwenden</translation>
+    </message>
+    <message>
+        <location line="+42" />
+        <source>ρ_min = V² / (vae · ACv) = %1</source>
+        <translation>ρ_min = V² / (vae · ACv) = %1</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 is not larger than the cutter's radius %2: the cutter cannot follow it.</source>
+        <translation>%1 ist nicht größer als der Werkzeugradius %2: das Werkzeug kann ihm nicht folgen.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>%1 does not fit: below %2 does.</source>
+        <translation>%1 passt nicht: unter %2 passt.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Below the speed's %1: the acceleration through the arc exceeds the machine's by more than vae.</source>
+        <translation>Unter den %1 aus der Geschwindigkeit: die Beschleunigung im Bogen übersteigt die der Maschine um mehr als vae.</translation>
+    </message>
+</context>
+<context>
     <name>cam::SegmentTableModel</name>
     <message>
         <location filename="../../src/app/models/segment_table_model.cpp" line="+104" />
@@ -5400,7 +5478,7 @@ blau 0 … rot %1 (größte)</translation>
 <context>
     <name>cam::WindowActions</name>
     <message>
-        <location filename="../../src/app/window/window_actions.cpp" line="+52" />
+        <location filename="../../src/app/window/window_actions.cpp" line="+53" />
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
@@ -5477,17 +5555,17 @@ blau 0 … rot %1 (größte)</translation>
     <message>
         <location line="+6" />
         <location line="+7" />
-        <location line="+5" />
+        <location line="+7" />
         <source>Round Corner</source>
         <translation>Ecke verrunden</translation>
     </message>
     <message>
-        <location line="-11" />
+        <location line="-13" />
         <source>Select the segment after the corner to round.</source>
         <translation>Das Segment nach der zu verrundenden Ecke auswählen.</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+16" />
         <source>Tangent &amp;Line to Next Arc</source>
         <translation>&amp;Tangente zum nächsten Bogen</translation>
     </message>

@@ -65,13 +65,6 @@ std::optional<TeachInInput> ContourDialogs::askTeachIn(QWidget* parent) {
                         bulge->value()};
 }
 
-std::optional<double> ContourDialogs::askSwitchArcRadius(QWidget* parent, double maxRadius) {
-    return askNumber(parent, tr("Round Corner"),
-                     tr("Radius of the switch arc (below %1 fits):")
-                         .arg(formatQuantity(DisplayQuantity::Length, maxRadius)),
-                     QStringLiteral(" mm"), std::min(maxRadius / 2.0, 5.0));
-}
-
 std::optional<double> ContourDialogs::askRadialError(QWidget* parent) {
     return askNumber(parent, tr("Approximate Arc by Béziers"), tr("Admissible radial error:"),
                      QStringLiteral(" mm"), 0.001);

@@ -24,9 +24,6 @@ class ContourDialogs {
 public:
     /// @brief Teach-in points, handle rule and bulge factor; none when cancelled.
     [[nodiscard]] static std::optional<TeachInInput> askTeachIn(QWidget* parent);
-    /// @brief The radius of a switch arc; `maxRadius` is the feasible bound shown to the user.
-    [[nodiscard]] static std::optional<double> askSwitchArcRadius(QWidget* parent,
-                                                                  double maxRadius);
     /// @brief The admissible radial error of an arc's Bézier approximation, mm.
     [[nodiscard]] static std::optional<double> askRadialError(QWidget* parent);
 };

@@ -18,6 +18,7 @@
 #include <utility>
 
 #include "dialogs/contour_dialogs.h"
+#include "dialogs/round_corner_dialog.h"
 #include "dialogs/shortcuts_dialog.h"
 #include "dialogs/user_guide.h"
 #include "document/commands.h"
@@ -132,9 +133,11 @@ void WindowActions::setUpActions() {
             QMessageBox::warning(m_window, tr("Round Corner"), diagnosticsText(range.errors()));
             return;
         }
-        if (const auto rho =
-                ContourDialogs::askSwitchArcRadius(m_window, range.value().maxRadius)) {
-            report(ContourEdits::roundCorner(*m_document, joint, *rho), tr("Round Corner"));
+        RoundCornerDialog dialog(m_document->project(), static_cast<std::size_t>(joint),
+                                 range.value(), m_window);
+        if (dialog.exec() == QDialog::Accepted) {
+            report(ContourEdits::roundCorner(*m_document, joint, dialog.radius()),
+                   tr("Round Corner"));
         }
     });
     auto* tangentLine = new QAction(tr("Tangent &Line to Next Arc"), m_window);
