@@ -5,11 +5,13 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCursor>
 #include <QDockWidget>
 #include <QFile>
 #include <QRegularExpression>
 #include <QScrollBar>
 #include <QTableView>
+#include <QTest>
 #include <QTextBrowser>
 
 #include "app_test_support.h"
@@ -73,6 +75,34 @@ TEST(UserGuide, F1OpensTheGuideAtTheSectionOfTheFocusedDock) {
     EXPECT_EQ(UserGuide::sectionFor(window.contourView()), "construction");
     EXPECT_EQ(UserGuide::sectionFor(window.findChild<QDockWidget*>("forcesDock")), "forces");
     EXPECT_EQ(UserGuide::sectionFor(nullptr), "start");
+}
+
+TEST(UserGuide, F1OverTheContourViewOpensItsSectionWhateverHasTheFocus) {
+    // Issue 31: F1 with the mouse over the contour view opened the guide at the segment table,
+    // which had the focus.
+    MainWindow window;
+    window.resize(1400, 860);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    QApplication::setActiveWindow(&window);
+    window.findChild<QTableView*>("segmentTable")->setFocus();
+    QWidget* contour = window.contourView();
+    QCursor::setPos(contour->mapToGlobal(contour->rect().center()));
+    ASSERT_TRUE(contour->isAncestorOf(QApplication::widgetAt(QCursor::pos())) ||
+                QApplication::widgetAt(QCursor::pos()) == contour);
+    window.findChild<QAction*>("actionUserGuide")->trigger();
+    ASSERT_NE(window.userGuide(), nullptr);
+    window.userGuide()->showSection("construction");
+    const int atConstruction = window.userGuide()->browser()->verticalScrollBar()->value();
+    window.userGuide()->showSection("table");
+    window.userGuide()->hide();  // offscreen, it opens over the window, under the mouse
+    window.findChild<QAction*>("actionUserGuide")->trigger();
+    EXPECT_EQ(window.userGuide()->browser()->verticalScrollBar()->value(), atConstruction);
+    // The guide names places as the window does, never by a file key.
+    for (const QString& language : {QString("en"), QString("de")}) {
+        EXPECT_FALSE(resource(":/help/user-guide." + language + ".html").contains("contour["))
+            << language.toStdString();
+    }
 }
 
 TEST(UserGuide, TheGermanWindowShowsTheGermanGuide) {

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <QAction>
 #include <QApplication>
+#include <QCursor>
 #include <QDockWidget>
 #include <QInputDialog>
 #include <QLineEdit>
@@ -263,7 +264,10 @@ void WindowActions::setUpActions() {
            "construction, followers, exports, the command line"));
     m_ui.menuHelp->insertAction(shortcuts, guide);
     connect(guide, &QAction::triggered, this, [this] {
-        QWidget* focus = QApplication::focusWidget();
+        // The part the mouse is over (the contour view, a dock), else the one with the focus:
+        // F1 over the contour while the table has the focus is about the contour.
+        QWidget* focus = QApplication::widgetAt(QCursor::pos());
+        if (!focus || focus->window() != m_window) focus = QApplication::focusWidget();
         if (m_guide && m_guide->isAncestorOf(focus)) {  // F1 in the guide: it stays where it is
             m_guide->raise();
             return;
