@@ -1,5 +1,6 @@
 #include "export/dxf.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string_view>
@@ -135,9 +136,13 @@ void header(DxfText& d, unsigned handseed, const Eigen::Vector2d& lo, const Eige
     endSection(d);
 }
 
-void tables(DxfText& d, const std::vector<Layer>& layers) {
+void tables(DxfText& d, const std::vector<Layer>& layers, const Eigen::Vector2d& lo,
+            const Eigen::Vector2d& hi) {
     beginSection(d, "TABLES");
 
+    // The view a reader opens with: the drawing's extents and a tenth around them.
+    const Eigen::Vector2d centre = 0.5 * (lo + hi), size = hi - lo;
+    const double height = 1.1 * std::max({size.y(), size.x() / 1.5, 1.0});
     beginTable(d, "VPORT", kVportTable, 1);
     beginRecord(d, "VPORT", kVport, kVportTable, "AcDbViewportTableRecord");
     d.pair(2, "*Active");
@@ -145,6 +150,10 @@ void tables(DxfText& d, const std::vector<Layer>& layers) {
     d.point(10, 0, 0);  // lower left and upper right of the viewport on screen (fractions)
     d.number(11, 1);
     d.number(21, 1);
+    d.number(12, centre.x());  // the view's centre and height in the drawing (mm)
+    d.number(22, centre.y());
+    d.number(40, height);
+    d.number(41, 1.5);  // its width over its height
     endTable(d);
 
     beginTable(d, "LTYPE", kLtypeTable, 3);
@@ -355,9 +364,40 @@ void extendBounds(const PathSegment& s, Eigen::Vector2d& lo, Eigen::Vector2d& hi
     take(s.start.head<2>());
     take(s.end.head<2>());
     if (s.kind == PathSegment::Kind::Arc) {
-        // The whole circle: a box that holds the arc (EXTMIN/EXTMAX only guide a viewer).
-        take(s.center - Eigen::Vector2d::Constant(s.radius));
-        take(s.center + Eigen::Vector2d::Constant(s.radius));
+        // The arc's own box: its ends and the quadrant points (0°, 90°, 180°, 270° about its
+        // centre) it passes. (The whole circle's box made a viewer open far too wide.)
+        const double from = std::min(s.startAngle, s.startAngle + s.sweep);
+        const double to = std::max(s.startAngle, s.startAngle + s.sweep);
+        for (double q = std::ceil(from / (kPi / 2.0)) * (kPi / 2.0); q <= to; q += kPi / 2.0) {
+            take(s.center + s.radius * Eigen::Vector2d(std::cos(q), std::sin(q)));
+        }
+    }
+}
+
+/// The box of a cubic Bézier itself: its ends and, per axis, where its derivative (a
+/// quadratic in t) vanishes inside (0, 1).
+void extendBounds(const CubicBezier& b, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
+    const auto take = [&](double t) {
+        const Eigen::Vector2d p = b.point(t);
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    };
+    take(0.0);
+    take(1.0);
+    const Eigen::Vector2d d0 = b.p[1] - b.p[0], d1 = b.p[2] - b.p[1], d2 = b.p[3] - b.p[2];
+    const Eigen::Vector2d qa = d0 - 2.0 * d1 + d2, qb = 2.0 * (d1 - d0), qc = d0;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double a = qa[axis], bb = qb[axis], c = qc[axis];
+        if (std::abs(a) < 1e-15) {
+            if (std::abs(bb) > 1e-15 && -c / bb > 0.0 && -c / bb < 1.0) take(-c / bb);
+            continue;
+        }
+        const double disc = bb * bb - 4.0 * a * c;
+        if (disc < 0.0) continue;
+        for (double sign : {-1.0, 1.0}) {
+            const double t = (-bb + sign * std::sqrt(disc)) / (2.0 * a);
+            if (t > 0.0 && t < 1.0) take(t);
+        }
     }
 }
 
@@ -385,9 +425,27 @@ Result<std::string> dxfDocument(const Contour& contour, const DxfOptions& option
     if (options.centres) layers.push_back({"CENTRES", kLayerCentres, 3});
 
     Eigen::Vector2d lo = Eigen::Vector2d::Constant(INFINITY), hi = -lo;
-    for (const PathSegment& s : p.path.segments) extendBounds(s, lo, hi);
+    for (std::size_t i = 0; i < p.path.segments.size(); ++i) {
+        // A spline written as a SPLINE entity: its own box below, not its arcs'.
+        if (options.splineEntities && isSpline(contour.segment(p.origin[i]).type)) continue;
+        extendBounds(p.path.segments[i], lo, hi);
+    }
     if (toolPath) {
         for (const PathSegment& s : toolPath->segments) extendBounds(s, lo, hi);
+    }
+    if (options.splineEntities) {
+        // Written as SPLINE entities: the curves' own extremes, not their arcs'.
+        for (std::size_t k = 0; k < contour.size(); ++k) {
+            const ContourSegment& seg = contour.segment(k);
+            if (isSpline(seg.type)) extendBounds(CubicBezier{seg.bezierKernel.p}, lo, hi);
+        }
+    }
+    if (options.centres) {
+        for (std::size_t k = 0; k < contour.size(); ++k) {
+            if (contour.segment(k).type != SegmentType::Arc) continue;
+            lo = lo.cwiseMin(contour.segment(k).arc.center);
+            hi = hi.cwiseMax(contour.segment(k).arc.center);
+        }
     }
 
     // Entities first (their count gives $HANDSEED), then the document around them.
@@ -427,7 +485,7 @@ Result<std::string> dxfDocument(const Contour& contour, const DxfOptions& option
     header(d, entities.next(), lo, hi);
     beginSection(d, "CLASSES");
     endSection(d);
-    tables(d, layers);
+    tables(d, layers, lo, hi);
     blocks(d);
     beginSection(d, "ENTITIES");
     d.text() += body.text();
