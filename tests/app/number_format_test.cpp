@@ -5,6 +5,7 @@
 
 #include <QLabel>
 #include <QLocale>
+#include <cmath>
 #include <limits>
 #include <tuple>
 
@@ -13,6 +14,7 @@
 #include "mainwindow.h"
 #include "models/segment_table_model.h"
 #include "widgets/number_format.h"
+#include "widgets/number_spin_box.h"
 
 namespace cam {
 namespace {
@@ -52,6 +54,27 @@ TEST(NumberFormat, GermanHasADecimalCommaAndStillNoGroups) {
     EXPECT_EQ(formatNumber(1.279561153e-15, 10), "0");
     EXPECT_EQ(formatNumber(1234.5, 6), "1234,5");
     EXPECT_EQ(formatNumber(123456789.0, 6), "123457000");  // whole, and still no groups
+}
+
+TEST(NumberFormat, AnExponentIsWrittenTheSameWayInEveryLanguage) {
+    // Issue 31: English boxes (the C locale) wrote 1e-06, German ones 1E-06.
+    for (const QLocale& locale : {QLocale::c(), QLocale(QLocale::English, QLocale::UnitedStates),
+                                  QLocale(QLocale::German, QLocale::Germany)}) {
+        const DefaultLocale chosen(locale);
+        const QString decimal = locale.decimalPoint();
+        EXPECT_EQ(formatNumber(1e-6, 6), "1E-06") << locale.name().toStdString();
+        EXPECT_EQ(formatNumber(-2.5e-5, 6), "-2" + decimal + "5E-05")
+            << locale.name().toStdString();
+        NumberSpinBox box;
+        box.setLocale(locale);
+        box.setRange(-1.0, 1.0);
+        box.setValue(1e-6);
+        EXPECT_EQ(box.text(), "1E-06") << locale.name().toStdString();
+        // And it reads back what it shows, and what a file or the other form writes.
+        EXPECT_EQ(box.valueFromText("1E-06"), 1e-6);
+        EXPECT_EQ(box.valueFromText("1e-06"), 1e-6);
+    }
+    EXPECT_EQ(withCapitalExponent("nan", std::nan("")), "nan");
 }
 
 TEST(NumberFormat, TheTableShowsRoundOffAsZeroButKeepsTheExactValue) {

@@ -32,7 +32,13 @@ QString formatNumber(double value, int significant) {
             return locale.toString(rounded, 'f', 0);
         }
     }
-    return locale.toString(v, 'g', significant);
+    return withCapitalExponent(locale.toString(v, 'g', significant), v);
+}
+
+QString withCapitalExponent(QString text, double value) {
+    // The C locale (the window's English) writes 1e-06, German 1E-06: one form in both.
+    if (std::isfinite(value)) text.replace(QLatin1Char('e'), QLatin1Char('E'));
+    return text;
 }
 
 }  // namespace cam

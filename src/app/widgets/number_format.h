@@ -20,4 +20,8 @@ inline constexpr double kRoundOffZero = 1e-9;
 /// Below 10⁻⁴ it keeps %g's exponent (2E-09), the notation a cell accepts. ±∞ is "∞", "-∞".
 [[nodiscard]] QString formatNumber(double value, int significant);
 
+/// @brief `text`, a finite `value` written by a locale, with its exponent as "E" whatever the
+/// locale (C writes 1e-06, German 1E-06): numbers read the same in either language.
+[[nodiscard]] QString withCapitalExponent(QString text, double value);
+
 }  // namespace cam

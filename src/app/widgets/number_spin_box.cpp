@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "widgets/number_format.h"
+
 namespace cam {
 
 NumberSpinBox::NumberSpinBox(QWidget* parent) : QDoubleSpinBox(parent) {
@@ -56,7 +58,7 @@ QString NumberSpinBox::textFromValue(double v) const {
     if (v == 0.0) return QStringLiteral("0");  // never "-0"
     QLocale locale = this->locale();
     locale.setNumberOptions(QLocale::OmitGroupSeparator);
-    return locale.toString(v, 'g', m_digits);
+    return withCapitalExponent(locale.toString(v, 'g', m_digits), v);
 }
 
 bool NumberSpinBox::event(QEvent* event) {
