@@ -107,6 +107,8 @@ TEST(FollowerFirst, TheMainPlotsAreTheFollowersLiftVelocityAccelerationAndJerk) 
     EXPECT_EQ(plots->plot(0)->graph(0)->dataCount(), 0);
     EXPECT_FALSE(plots->plot(0)->legend->hasItemWithPlottable(plots->plot(0)->graph(0)));
     EXPECT_TRUE(plots->plot(0)->legend->hasItemWithPlottable(velocity));
+    EXPECT_EQ(qobject_cast<QCPPlottableLegendItem*>(plots->plot(0)->legend->item(0))->plottable(),
+              velocity);  // v before the law
 
     // The rise against the cycloidal law's closed form.
     double liftError = 0.0, velocityError = 0.0;
@@ -189,6 +191,13 @@ TEST(FollowerFirst, CtrlShiftPShowsThePolarKinematicsAndBackAndIsRemembered) {
     EXPECT_NEAR(test::readoutValue(window, "r"), state.polar.r, 1e-6 * state.polar.r);
     EXPECT_TRUE(std::isnan(test::readoutValue(window, "s")));
     EXPECT_TRUE(QSettings().value("view/polarKinematics").toBool());
+    // The legend reads v_r, v_φ, |v| first, then the design's law, whatever was shown before.
+    QCPLegend* legend = plots->plot(0)->legend;
+    ASSERT_GE(legend->itemCount(), 4);
+    EXPECT_EQ(qobject_cast<QCPPlottableLegendItem*>(legend->item(0))->plottable(),
+              plots->plot(0)->graph(0));
+    EXPECT_EQ(qobject_cast<QCPPlottableLegendItem*>(legend->item(3))->plottable(),
+              plots->plot(0)->graph(KinematicsPlots::kCurvesPerPlot));
 
     {
         // A new window starts in the polar view the user chose.

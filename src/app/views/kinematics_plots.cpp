@@ -247,8 +247,24 @@ void KinematicsPlots::chooseQuantities() {
     }
     chooseResolution(true);  // always the new result's data, also when the level stays
     showDesign();
+    orderLegends();
     fitY();
     if (changed) emit followerShownChanged(follower);
+}
+
+void KinematicsPlots::orderLegends() {
+    // The quantities first (the follower's, or r's three components), then law and follower of
+    // a design: whichever were added last, each legend reads the same way.
+    std::vector<int> order{kFollowerGraph};
+    for (int g = 0; g < kFollowerGraph; ++g) order.push_back(g);
+    for (QCustomPlot* plot : m_plots) {
+        std::vector<QCPGraph*> shown;
+        for (int g : order) {
+            if (plot->legend->hasItemWithPlottable(plot->graph(g))) shown.push_back(plot->graph(g));
+        }
+        for (QCPGraph* g : shown) g->removeFromLegend();
+        for (QCPGraph* g : shown) g->addToLegend();
+    }
 }
 
 void KinematicsPlots::showFollower() {

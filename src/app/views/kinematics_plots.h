@@ -74,6 +74,8 @@ private:
     /// Shows the follower's motion or the polar kinematics, as the result and the choice ask.
     void chooseQuantities();
     void showFollower();
+    /// Puts each legend's entries in one order: the quantities, then the design's.
+    void orderLegends();
     /// The y axis titles of the quantities shown.
     void applyTitles();
     /// The follower's quantity in plot `plot`'s legend.
