@@ -2873,12 +2873,12 @@
     <name>cam::ExportDialog</name>
     <message>
         <location filename="../../src/app/export/export_dialog.cpp" line="+54" />
-        <location line="+284" />
+        <location line="+293" />
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location line="-275" />
+        <location line="-284" />
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
@@ -2893,7 +2893,7 @@
         <translation>&amp;Stützstellen je Umdrehung:</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+14" />
         <location line="+25" />
         <location line="+44" />
         <source>Splines become tangent arc pairs within this distance</source>
@@ -2953,7 +2953,17 @@
         <translation>Splines als SP&amp;LINE-Elemente</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="-17" />
+        <source>For a &amp;German spreadsheet: “;” between cells, decimal comma</source>
+        <translation>Für eine &amp;deutsche Tabellenkalkulation: „;“ zwischen Zellen, Dezimalkomma</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Excel or LibreOffice in a German locale read a plain CSV as text in one column: this writes 1,5;2,25 instead of 1.5,2.25. Other programs (and camwright-cli) expect the plain form</source>
+        <translation>Excel oder LibreOffice mit deutscher Ländereinstellung lesen eine einfache CSV als Text in einer Spalte: dies schreibt 1,5;2,25 statt 1.5,2.25. Andere Programme (und camwright-cli) erwarten die einfache Form</translation>
+    </message>
+    <message>
+        <location line="+21" />
         <source>Tool centre path on layer TOOLPAT&amp;H</source>
         <translation>Werkzeugmittelpunktsbahn auf Layer TOOLPAT&amp;H</translation>
     </message>
@@ -3053,7 +3063,7 @@
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location line="+135" />
+        <location line="+136" />
         <source>Name the file to write.</source>
         <translation>Geben Sie die zu schreibende Datei an.</translation>
     </message>
@@ -4753,12 +4763,12 @@ Möchten Sie die Datei ersetzen?</translation>
         <translation>Radius</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>Below %1 fits this corner.</source>
         <translation>Unter %1 passt in diese Ecke.</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+7" />
         <source>The corner is concave: a switch arc smaller than the cutter's radius (%1) cannot be cut.</source>
         <translation>Die Ecke ist konkav: ein Verrundungsbogen kleiner als der Werkzeugradius (%1) lässt sich nicht fräsen.</translation>
     </message>
@@ -5478,7 +5488,7 @@ blau 0 … rot %1 (größte)</translation>
 <context>
     <name>cam::WindowActions</name>
     <message>
-        <location filename="../../src/app/window/window_actions.cpp" line="+53" />
+        <location filename="../../src/app/window/window_actions.cpp" line="+54" />
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
@@ -5681,7 +5691,7 @@ blau 0 … rot %1 (größte)</translation>
         <translation>Eine kurze Anleitung zu Camwright, geöffnet bei dem Teil, in dem Sie arbeiten: Tabelle, Konstruktion, Stößel, Exporte, Kommandozeile</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+17" />
         <source>What's &amp;This?</source>
         <translation>&amp;Direkthilfe</translation>
     </message>

@@ -169,6 +169,55 @@ TEST(ExportInWindow, ACsvWithForcesWritesWhatTheCliWrites) {
     EXPECT_EQ(written, test::readFile(cliFile));
 }
 
+TEST(ExportInWindow, ACsvForAGermanSpreadsheetIsTheSameNumbersWithSemicolonsAndCommas) {
+    // Issue 31: an option, clearly labelled and off at every start, that writes ";" between
+    // cells and a decimal comma. The numbers are the plain export's: read back with ";" as
+    // the separator and "," as the decimal point, every cell equals the plain file's.
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(test::kExampleFile).isEmpty());
+    test::TempDir dir;
+    ExportRequest request;
+    request.format = ExportFormat::Csv;
+    request.csvPoints = 72;
+    request.path = QString::fromStdString(dir.file("plain.csv"));
+    ASSERT_TRUE(exportAndWait(window, request).isEmpty());
+    request.csvGerman = true;
+    request.path = QString::fromStdString(dir.file("german.csv"));
+    ASSERT_TRUE(exportAndWait(window, request).isEmpty());
+    const QStringList plain =
+        QString::fromStdString(test::readFile(dir.file("plain.csv"))).split('\n');
+    const QStringList german =
+        QString::fromStdString(test::readFile(dir.file("german.csv"))).split('\n');
+    ASSERT_EQ(plain.size(), german.size());
+    ASSERT_EQ(plain.size(), 72 + 2);  // header, 72 rows, the last line end
+    EXPECT_EQ(german.front(), QString(plain.front()).replace(',', ';'));
+    const QLocale de(QLocale::German, QLocale::Germany);
+    for (qsizetype row = 1; row + 1 < plain.size(); ++row) {
+        const QStringList a = plain[row].split(','), b = german[row].split(';');
+        ASSERT_EQ(a.size(), b.size()) << row;
+        ASSERT_FALSE(german[row].contains('.')) << german[row].toStdString();
+        for (qsizetype c = 0; c < a.size(); ++c) {
+            bool okA = false, okB = false;
+            const double x = QLocale::c().toDouble(a[c], &okA), y = de.toDouble(b[c], &okB);
+            ASSERT_TRUE(okA && okB) << a[c].toStdString() << " / " << b[c].toStdString();
+            EXPECT_EQ(x, y) << row << "," << c;
+        }
+    }
+    // The dialog offers it, labelled, and never starts with it.
+    ExportDialog dialog(window.document()->project(), "six-lobe", {});
+    auto* option = dialog.findChild<QCheckBox*>("csvGerman");
+    ASSERT_NE(option, nullptr);
+    EXPECT_TRUE(option->text().contains("German"));
+    EXPECT_FALSE(option->isChecked());
+    dialog.setFormat(ExportFormat::Csv);
+    option->setChecked(true);
+    EXPECT_TRUE(dialog.request().csvGerman);
+    dialog.accept();
+    ExportDialog again(window.document()->project(), "six-lobe", {});
+    EXPECT_FALSE(again.findChild<QCheckBox*>("csvGerman")->isChecked());
+    QSettings().remove("export");  // what accept() remembered is no other test's start
+}
+
 TEST(ExportInWindow, AFailureNamesTheProblemAndLosesNothing) {
     MainWindow window;
     ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());

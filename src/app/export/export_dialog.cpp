@@ -81,6 +81,15 @@ ExportDialog::ExportDialog(const Project& project, const QString& baseName,
     m_csvPoints->setValue(static_cast<int>(project.samplesPerTurnOrDefault()));
     m_csvPoints->setToolTip(tr("Instants over one turn, equally spaced in time"));
     form->addRow(tr("&Samples per turn:"), m_csvPoints);
+    // Off at every start (not remembered): the plain form is what every other reader expects.
+    m_csvGerman =
+        new QCheckBox(tr("For a &German spreadsheet: “;” between cells, decimal comma"), this);
+    m_csvGerman->setObjectName("csvGerman");
+    m_csvGerman->setToolTip(
+        tr("Excel or LibreOffice in a German locale read a plain CSV as text in one column: "
+           "this writes 1,5;2,25 instead of 1.5,2.25. Other programs (and camwright-cli) "
+           "expect the plain form"));
+    form->addRow(m_csvGerman);
 
     // DXF
     page(m_pages, form);
@@ -344,6 +353,7 @@ ExportRequest ExportDialog::request() const {
     r.format = format();
     r.path = m_file->text();
     r.csvPoints = static_cast<std::size_t>(m_csvPoints->value());
+    r.csvGerman = m_csvGerman->isChecked();
     r.dxf.toleranceMm = m_dxfTolerance->value();
     r.dxf.polyline = m_dxfPolyline->isChecked();
     r.dxf.splineEntities = m_dxfSplines->isChecked();

@@ -62,6 +62,7 @@ private:
     QComboBox* m_format = nullptr;
     QStackedWidget* m_pages = nullptr;
     QSpinBox* m_csvPoints = nullptr;
+    QCheckBox* m_csvGerman = nullptr;
     NumberSpinBox* m_dxfTolerance = nullptr;
     QCheckBox* m_dxfPolyline = nullptr;
     QCheckBox* m_dxfSplines = nullptr;

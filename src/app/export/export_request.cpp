@@ -45,8 +45,10 @@ Result<std::string> exportText(const Project& project, const ExportRequest& requ
             std::optional<ForceModel> forces;
             if (project.dynamics)
                 forces = ForceModel::of(*project.dynamics, follower.value().spec());
-            return sampleCsv(contour.value(), project.motion.omegaRadS(), points, &follower.value(),
-                             forces ? &*forces : nullptr);
+            auto csv = sampleCsv(contour.value(), project.motion.omegaRadS(), points,
+                                 &follower.value(), forces ? &*forces : nullptr);
+            if (csv.ok() && request.csvGerman) return forGermanSpreadsheets(csv.value());
+            return csv;
         }
         case ExportFormat::Dxf:
             return dxfDocument(contour.value(), request.dxf);

@@ -26,6 +26,7 @@ struct ExportRequest {
     ExportFormat format = ExportFormat::Dxf;
     QString path;               ///< the file to write
     std::size_t csvPoints = 0;  ///< samples of the turn; 0: the project's samples_per_turn
+    bool csvGerman = false;     ///< ";" and decimal commas (forGermanSpreadsheets)
     DxfOptions dxf;
     SvgOptions svg;
     GcodeOptions gcode;

@@ -111,4 +111,16 @@ Result<std::string> sampleCsv(const Contour& contour, double omega, std::size_t 
     return text;
 }
 
+std::string forGermanSpreadsheets(std::string_view csv) {
+    std::string out(csv);
+    for (char& c : out) {
+        if (c == ',') {
+            c = ';';
+        } else if (c == '.') {
+            c = ',';
+        }
+    }
+    return out;
+}
+
 }  // namespace cam

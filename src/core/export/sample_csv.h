@@ -55,6 +55,12 @@ inline constexpr std::string_view kArmForcesCsvColumns =
 void appendForcesCsvColumns(std::string& out, const ForceModel& model, const ForceTurn& forces,
                             const FollowerTurn& turn, std::size_t k, double omega);
 
+/// @brief A CSV of numbers (as sampleCsv writes) for a spreadsheet in a German locale: cells
+/// separated by ";" and the decimal point written ",". Only for text whose cells hold numbers
+/// and plain names (no quotes, no "." or "," inside a name). Never the default: every reader
+/// of the file but such a spreadsheet expects the plain form.
+[[nodiscard]] std::string forGermanSpreadsheets(std::string_view csv);
+
 /// @brief The first sample holding a number that is not finite, located "sample K, COLUMN";
 /// none when every value is finite (a turn too fast or too big for a double).
 [[nodiscard]] std::optional<Diagnostic> firstNonFiniteSample(const SampledTurn& turn);
