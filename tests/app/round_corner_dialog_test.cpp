@@ -47,6 +47,14 @@ struct Opened {
     std::string path = dir.file("notched.cam.json");
 };
 
+/// Writes the notched cam to `file`, opens it in `window` and shows the window.
+bool openNotched(MainWindow& window, const Opened& file) {
+    std::ofstream(file.path) << kNotched;
+    if (!window.loadFile(QString::fromStdString(file.path)).isEmpty()) return false;
+    window.show();
+    return QTest::qWaitForWindowExposed(&window);
+}
+
 /// Types `text` over a box's value without Enter (Enter is the dialog's OK).
 void typeOver(NumberSpinBox* box, const QString& text) {
     box->setFocus();
@@ -75,11 +83,8 @@ void roundCornerAt(MainWindow& window, int row,
 
 TEST(RoundCornerDialogTest, TheCutterBoundsAConcaveArcAndTheSpeedGivesTheSeedsRadius) {
     Opened file;
-    std::ofstream(file.path) << kNotched;
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(QString::fromStdString(file.path)).isEmpty());
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    ASSERT_TRUE(openNotched(window, file));
     const int steps = window.document()->undoStack()->count();
     roundCornerAt(window, 3, [](RoundCornerDialog& d) {
         EXPECT_EQ(d.cutterBound(), 3.0);
@@ -115,11 +120,8 @@ TEST(RoundCornerDialogTest, TheCutterBoundsAConcaveArcAndTheSpeedGivesTheSeedsRa
 
 TEST(RoundCornerDialogTest, AConvexCornerHasNoCutterBoundAndTooLargeIsRefusedInTheDialog) {
     Opened file;
-    std::ofstream(file.path) << kNotched;
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(QString::fromStdString(file.path)).isEmpty());
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    ASSERT_TRUE(openNotched(window, file));
     roundCornerAt(window, 1, [](RoundCornerDialog& d) {
         EXPECT_FALSE(d.cutterBound().has_value());
         EXPECT_EQ(d.findChild<QLabel*>("cutterLabel"), nullptr);
@@ -142,10 +144,8 @@ TEST(RoundCornerDialogTest, AFilletTheCutterCannotFollowLeavesNoMachiningPlotInC
     // Machining dock has no time for that path, and its plots must not keep the last path's
     // curves as if they were this one's.
     Opened file;
-    std::ofstream(file.path) << kNotched;
     MainWindow window;
-    ASSERT_TRUE(window.loadFile(QString::fromStdString(file.path)).isEmpty());
-    window.show();
+    ASSERT_TRUE(openNotched(window, file));
     window.findChild<QDockWidget*>("machiningDock")->show();
     const auto timed = [&] {
         return test::processEventsUntil([&] {
