@@ -198,12 +198,19 @@ TEST(MotionDesign, SynthesizeReplacesTheContourInOneUndoStepAndThePlotsShowTheLa
     // The same design again gives the same arcs: no second undo step.
     ASSERT_EQ(synthesizeAndWait(window), QString());
     EXPECT_EQ(doc->undoStack()->count(), steps + 1);
-    // One undo step takes the whole contour back, one redo brings it again.
+    // One undo step takes the whole contour back, one redo brings it again; the report
+    // speaks only of the contour it made (issue 31: it stayed after Undo and Open).
     doc->undoStack()->undo();
     EXPECT_TRUE(doc->project().contour.empty());
     EXPECT_TRUE(doc->awaitsSynthesis());
+    EXPECT_EQ(window.motionDesignPanel()->reportText().indexOf("Last synthesis"), -1);
+    EXPECT_NE(window.motionDesignPanel()->reportText().indexOf("Synthesize fits"), -1);
     doc->undoStack()->redo();
     EXPECT_EQ(doc->project().contour, made.contour);
+    EXPECT_NE(window.motionDesignPanel()->reportText().indexOf("Last synthesis"), -1);
+    // Another file: its own words.
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    EXPECT_EQ(window.motionDesignPanel()->reportText().indexOf("Last synthesis"), -1);
 }
 
 TEST(MotionDesign, EditingTheSegmentTableIsUndoableAndMarksTheCellsItBreaks) {
@@ -442,8 +449,16 @@ TEST(MotionDesign, SmallestSetsTheSizedBaseRadiusInOneUndoStep) {
     EXPECT_EQ(doc->undoStack()->count(), steps + 1);
     EXPECT_TRUE(button->isEnabled());
     EXPECT_NE(panel->sizingText().indexOf("binds at"), -1) << panel->sizingText().toStdString();
+    auto* line = panel->findChild<QLabel*>("sizingLabel");
+    ASSERT_NE(line, nullptr);
+    EXPECT_FALSE(line->isHidden());
+    // The line speaks of the sized design only: gone after Undo, back after Redo.
     doc->undoStack()->undo();
     EXPECT_EQ(doc->project().design->baseRadius, before);
+    EXPECT_TRUE(line->isHidden());
+    doc->undoStack()->redo();
+    EXPECT_FALSE(line->isHidden());
+    doc->undoStack()->undo();
 
     // A change while it sizes drops the answer: nothing is applied.
     button->click();
@@ -458,6 +473,7 @@ TEST(MotionDesign, SmallestSetsTheSizedBaseRadiusInOneUndoStep) {
     ASSERT_TRUE(finished.wait(20000));
     EXPECT_EQ(doc->project().design->baseRadius, before);
     EXPECT_NE(panel->sizingText().indexOf("changed"), -1) << panel->sizingText().toStdString();
+    EXPECT_FALSE(line->isHidden());
 }
 
 }  // namespace
@@ -493,19 +509,26 @@ TEST(MotionDesignDock, BestOffsetSetsOffsetAndRadiusInOneStepAndDrawsTheFeasible
     EXPECT_EQ(doc->project().follower->offset, expected.value().value);
     EXPECT_EQ(doc->undoStack()->count(), steps + 1);  // both in one step
     EXPECT_NE(panel->sizingText().indexOf("at offset"), -1) << panel->sizingText().toStdString();
-    // The picture: the edge's 41 points, the chosen point on it, the design's own above it.
+    // The picture: the edge's 41 points, the chosen point on it, the design's marker where the
+    // design now is (there).
     FeasibleRegionPlot* region = panel->feasibleRegion();
     EXPECT_TRUE(region->isVisible());
     ASSERT_EQ(region->edgeGraph()->dataCount(), 41);
     EXPECT_EQ(region->chosenGraph()->data()->at(0)->key, expected.value().value);
     EXPECT_EQ(region->chosenGraph()->data()->at(0)->value, expected.value().sizing.baseRadius);
-    EXPECT_EQ(region->currentGraph()->data()->at(0)->value, before.design->baseRadius);
+    EXPECT_EQ(region->currentGraph()->data()->at(0)->key, expected.value().value);
+    EXPECT_EQ(region->currentGraph()->data()->at(0)->value, expected.value().sizing.baseRadius);
     EXPECT_TRUE(region->yAxis->range().contains(before.design->baseRadius));
     EXPECT_TRUE(region->yAxis->range().contains(expected.value().sizing.baseRadius));
-    // One undo brings back both.
+    // One undo brings back both; the region still holds (the same laws and follower but for
+    // its axes) and its marker goes back with the design, while the sizing line is gone.
     doc->undoStack()->undo();
     EXPECT_EQ(doc->project().design, before.design);
     EXPECT_EQ(doc->project().follower, before.follower);
+    EXPECT_FALSE(region->isHidden());
+    EXPECT_EQ(region->currentGraph()->data()->at(0)->key, before.follower->offset);
+    EXPECT_EQ(region->currentGraph()->data()->at(0)->value, before.design->baseRadius);
+    EXPECT_TRUE(panel->findChild<QLabel*>("sizingLabel")->isHidden());
     EXPECT_EQ(button->text(), "Best Offset");
     EXPECT_EQ(region->xAxis->label(), "Offset [mm]");
     EXPECT_FALSE(region->legend->hasItemWithPlottable(region->topGraph()));
@@ -517,6 +540,7 @@ TEST(MotionDesignDock, BestOffsetSetsOffsetAndRadiusInOneStepAndDrawsTheFeasible
     doc->undoStack()->push(new SetFollower(doc, arm));
     EXPECT_TRUE(button->isEnabled());
     EXPECT_EQ(button->text(), "Best Pivot");
+    EXPECT_TRUE(region->isHidden());  // made for a translating roller
     FollowerSpec flat = follower;
     flat.type = FollowerType::Flat;
     doc->undoStack()->push(new SetFollower(doc, flat));

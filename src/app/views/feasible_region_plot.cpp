@@ -88,4 +88,25 @@ void FeasibleRegionPlot::setRegion(Placement placement, const std::vector<Feasib
     replot();
 }
 
+void FeasibleRegionPlot::setCurrent(std::array<double, 2> current) {
+    const QCPGraphDataContainer& now = *graph(3)->data();
+    if (!now.isEmpty() && now.constBegin()->key == current[0] &&
+        now.constBegin()->value == current[1]) {
+        return;
+    }
+    graph(3)->setData(QVector<double>{current[0]}, QVector<double>{current[1]});
+    // The axes grow to keep the marker in sight; they never shrink under it.
+    const QCPRange x = xAxis->range(), y = yAxis->range();
+    const double marginX = 0.05 * x.size(), marginY = 0.05 * y.size();
+    if (!x.contains(current[0])) {
+        xAxis->setRange(std::min(x.lower, current[0] - marginX),
+                        std::max(x.upper, current[0] + marginX));
+    }
+    if (!y.contains(current[1])) {
+        yAxis->setRange(std::min(y.lower, current[1] - marginY),
+                        std::max(y.upper, current[1] + marginY));
+    }
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
 }  // namespace cam

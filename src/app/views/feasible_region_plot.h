@@ -23,6 +23,9 @@ public:
     /// and the design's current one.
     void setRegion(Placement placement, const std::vector<FeasibleSpan>& region,
                    std::array<double, 2> chosen, std::array<double, 2> current);
+    /// @brief Moves the design's marker (placement, base radius) as the project changes, the
+    /// axes widened when it leaves them.
+    void setCurrent(std::array<double, 2> current);
     /// @brief The graphs, for tests: the smallest base radius, the top of the shading (the
     /// largest base radius where there is one), the chosen point, the current one.
     [[nodiscard]] QCPGraph* edgeGraph() const { return graph(0); }

@@ -18,6 +18,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "common/angles.h"
 #include "common/diagnostic_catalogue.h"
@@ -58,6 +59,25 @@ std::array<DisplayQuantity, 3> liftErrorQuantities(bool swinging) {
     }
     return {DisplayQuantity::LengthError, DisplayQuantity::VelocityError,
             DisplayQuantity::AccelerationError};
+}
+
+/// Whether a feasible region made for `was` still describes `now`: the same design and follower
+/// but for the base radius and the placement, its axes (an arm's pivot keeps its direction).
+bool sameRegion(const DesignSpec& wasDesign, const FollowerSpec& wasFollower,
+                const DesignSpec& nowDesign, const FollowerSpec& nowFollower, Placement placement) {
+    DesignSpec design = nowDesign;
+    design.baseRadius = wasDesign.baseRadius;
+    if (design != wasDesign) return false;
+    FollowerSpec follower = nowFollower;
+    if (placement == Placement::Offset) {
+        follower.offset = wasFollower.offset;
+    } else {
+        const double was = std::atan2(wasFollower.pivot.y(), wasFollower.pivot.x());
+        const double now = std::atan2(nowFollower.pivot.y(), nowFollower.pivot.x());
+        if (std::abs(std::remainder(was - now, 2.0 * std::numbers::pi)) > 1e-9) return false;
+        follower.pivot = wasFollower.pivot;
+    }
+    return follower == wasFollower;
 }
 
 /// The law: dashed; the follower riding the contour: solid (as on the kinematics plots).
@@ -238,6 +258,7 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
     });
     connect(m_document, &ProjectDocument::designChanged, this, &MotionDesignPanel::refresh);
     connect(m_document, &ProjectDocument::followerChanged, this, &MotionDesignPanel::refresh);
+    connect(m_document, &ProjectDocument::changed, this, &MotionDesignPanel::dropStaleTexts);
     refresh();
 }
 
@@ -267,6 +288,7 @@ void MotionDesignPanel::runSizing(
     const DesignSpec design = *m_document->project().design;
     const FollowerSpec follower = m_document->project().follower.value_or(FollowerSpec{});
     m_sizingRuns = true;
+    m_sizingFor.reset();  // the line says it runs, whatever changes meanwhile
     updateSizingButtons();
     m_sizing->setVisible(true);
     m_sizing->setStyleSheet(QString());
@@ -288,6 +310,8 @@ void MotionDesignPanel::runSizing(
                 } else {
                     apply(r.value(), design, follower);
                 }
+                // Each answer describes the project as it is now, until it changes.
+                m_sizingFor = Basis{{}, now.design, now.follower, {}, {}};
                 emit sizingFinished();
             });
     watcher->setFuture(QtConcurrent::run([job, design, follower] {
@@ -367,6 +391,8 @@ void MotionDesignPanel::sizePlacement() {
             m_region->setVisible(true);
             m_region->setRegion(o.placement, o.region, {o.value, s.baseRadius},
                                 {placementValue(follower, o.placement), design.baseRadius});
+            m_regionFor = Basis{{}, design, follower, {}, {}};
+            m_regionPlacement = o.placement;
             DesignSpec sized = design;
             sized.baseRadius = s.baseRadius;
             QUndoStack* stack = m_document->undoStack();
@@ -451,13 +477,48 @@ void MotionDesignPanel::refresh() {
     if (!design) {
         m_plotArea->hide();
         m_notes->clear();
-        m_report->setText(
-            tr("This project has no motion design. New Design starts one: lay out "
-               "the follower's motion, then Synthesize makes the contour from it."));
+        m_report->setText(noDesignText());
     }
 }
 
-void MotionDesignPanel::setReport(const SynthesisReport& report, bool swinging) {
+void MotionDesignPanel::dropStaleTexts() {
+    const Project& now = m_document->project();
+    if (m_reportFor) {
+        // Shown while the project is the one synthesized (again after Undo and Redo).
+        const bool holds =
+            *m_reportFor == Basis{now.contour, now.design, now.follower, now.motion, {}};
+        m_reportText = holds ? m_reportFor->text : QString();
+        m_report->setText(holds ? m_reportText : now.design ? synthesizeHint() : noDesignText());
+    }
+    if (m_sizingFor) {
+        m_sizing->setVisible(*m_sizingFor == Basis{{}, now.design, now.follower, {}, {}});
+    }
+    if (m_regionFor) {
+        const FollowerSpec follower = now.follower.value_or(FollowerSpec{});
+        const bool holds = now.design && sameRegion(*m_regionFor->design, *m_regionFor->follower,
+                                                    *now.design, follower, m_regionPlacement);
+        if (holds) {
+            m_region->setCurrent(
+                {placementValue(follower, m_regionPlacement), now.design->baseRadius});
+        }
+        m_region->setVisible(holds);
+    }
+}
+
+QString MotionDesignPanel::synthesizeHint() {
+    return tr(
+        "Synthesize fits the exact profile with tangent arcs within the "
+        "tolerance and replaces the contour (one undo step).");
+}
+
+QString MotionDesignPanel::noDesignText() {
+    return tr(
+        "This project has no motion design. New Design starts one: lay out "
+        "the follower's motion, then Synthesize makes the contour from it.");
+}
+
+void MotionDesignPanel::setReport(const SynthesisReport& report, const Project& after) {
+    const bool swinging = after.follower && after.follower->motion == FollowerMotion::Oscillating;
     const auto [lift, speed, accel] = liftErrorQuantities(swinging);
     m_reportText = tr("Last synthesis: %n segment(s), at most %1 from the exact profile. The "
                       "follower on them against the law (%2 angles): lift %3, velocity %4, "
@@ -469,6 +530,7 @@ void MotionDesignPanel::setReport(const SynthesisReport& report, bool swinging) 
                        .arg(formatQuantity(lift, report.maxLiftError),
                             formatQuantity(speed, report.maxVelocityError),
                             formatQuantity(accel, report.maxAccelerationError));
+    m_reportFor = Basis{after.contour, after.design, after.follower, after.motion, m_reportText};
     m_report->setText(m_reportText);
 }
 
@@ -561,11 +623,7 @@ void MotionDesignPanel::setResult(const ComputeResultPtr& result) {
     }
     m_notes->setText(lines.join('\n'));
     m_notes->setStyleSheet(problem ? "color: #b00020;" : "");
-    if (m_reportText.isEmpty()) {
-        m_report->setText(
-            tr("Synthesize fits the exact profile with tangent arcs within the "
-               "tolerance and replaces the contour (one undo step)."));
-    }
+    if (m_reportText.isEmpty()) m_report->setText(synthesizeHint());
 }
 
 }  // namespace cam

@@ -9,6 +9,7 @@
 #include <array>
 #include <functional>
 
+#include "design/sizing.h"
 #include "design/synthesis.h"
 #include "engine/compute_result.h"
 
@@ -37,8 +38,10 @@ public:
     void setSynthesizeAction(QAction* action);
     /// @brief Draws the design's curves of a result (the newest, computable or not).
     void setResult(const ComputeResultPtr& result);
-    /// @brief What the last synthesis reported (segments, deviation, the price of arcs).
-    void setReport(const SynthesisReport& report, bool swinging);
+    /// @brief What the last synthesis reported (segments, deviation, the price of arcs), for
+    /// the project `after` it: the text shows only while the project's contour, design,
+    /// follower and speed are that (not after an Undo, an edit, another file; again after Redo).
+    void setReport(const SynthesisReport& report, const Project& after);
     /// @brief Moves the plots' cursor line to x (degrees or seconds).
     void setCursorX(double x);
 
@@ -81,12 +84,19 @@ signals:
 
 private:
     void refresh();
+    /// Shows only what describes the project as it is: the synthesis report and the sizing
+    /// line (each holds for the project it was made for) and the feasible region (holds while
+    /// the design's laws and the follower are the same but for base radius and placement; its
+    /// design marker follows the project).
+    void dropStaleTexts();
     /// Smallest and Best Offset (Best Pivot for an arm) are on while there is a design (Best
     /// Offset: for a follower whose offset matters) and no sizing runs.
     void updateSizingButtons();
     /// "The design changed while it was sized: try again." (outside the template, where
     /// lupdate finds its context).
     [[nodiscard]] static QString staleSizingText();
+    [[nodiscard]] static QString synthesizeHint();
+    [[nodiscard]] static QString noDesignText();
     /// Runs `job` on a snapshot of the design and follower in the background; `apply` takes
     /// its answer if they are still what was sized, else the sizing line says why not.
     template <class Answer>
@@ -120,6 +130,23 @@ private:
     std::array<QCPItemStraightLine*, 4> m_cursors{};
     std::vector<QCPItemStraightLine*> m_joints;
     QString m_reportText;
+    /// The project the synthesis report and the sizing line were made for (the part that
+    /// matters to each).
+    struct Basis {
+        std::vector<SegmentSpec> contour;
+        std::optional<DesignSpec> design;
+        std::optional<FollowerSpec> follower;
+        MotionSpec motion;
+        QString text;  ///< what it says (not compared)
+        friend bool operator==(const Basis& a, const Basis& b) {
+            return a.contour == b.contour && a.design == b.design && a.follower == b.follower &&
+                   a.motion == b.motion;
+        }
+    };
+    std::optional<Basis> m_reportFor;
+    std::optional<Basis> m_sizingFor;
+    std::optional<Basis> m_regionFor;  ///< its base radius and placement are the axes
+    Placement m_regionPlacement = Placement::Offset;
     int m_gesture = 0;
     bool m_refreshing = false;
     bool m_fitted = false;

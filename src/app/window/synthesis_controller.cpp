@@ -94,16 +94,16 @@ void SynthesisController::finish(const std::shared_ptr<const Result<Synthesis>>&
         return;
     }
     const Synthesis& made = result->value();
-    const bool swinging = now.follower && now.follower->motion == FollowerMotion::Oscillating;
-    m_panel->setReport(made.report, swinging);
     if (made.contour == now.contour) {
         // The same arcs again: nothing to undo.
+        m_panel->setReport(made.report, now);
         emit message(tr("Synthesized: the contour already is this design's."), 6000);
         emit finished({});
         return;
     }
     m_document->undoStack()->push(
         new SynthesizeContour(m_document, made.contour, from.design->tolerance));
+    m_panel->setReport(made.report, m_document->project());
     emit message(tr("Synthesized %n segment(s) within %1 in %2", nullptr,
                     static_cast<int>(made.report.segments))
                      .arg(formatQuantity(DisplayQuantity::LengthError, made.report.maxDeviationMm),
