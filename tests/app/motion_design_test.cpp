@@ -8,12 +8,15 @@
 
 #include <qcustomplot.h>
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTableView>
+#include <QTest>
 #include <cmath>
 #include <limits>
 
@@ -31,6 +34,7 @@
 #include "views/feasible_region_plot.h"
 #include "views/kinematics_plots.h"
 #include "views/motion_design_panel.h"
+#include "widgets/number_spin_box.h"
 
 namespace cam {
 namespace {
@@ -259,25 +263,102 @@ TEST(MotionDesign, EditingTheSegmentTableIsUndoableAndMarksTheCellsItBreaks) {
     EXPECT_EQ(*doc->project().design, before);
 }
 
-TEST(MotionDesign, TheLawEditorShowsTheLongestLawWhole) {
+/// Collects what Qt prints (warnings) while it lives.
+class QtMessages {
+public:
+    QtMessages() { m_previous = qInstallMessageHandler(&QtMessages::take); }
+    ~QtMessages() { qInstallMessageHandler(m_previous); }
+    static QStringList& list() {
+        static QStringList messages;
+        return messages;
+    }
+
+private:
+    static void take(QtMsgType type, const QMessageLogContext&, const QString& text) {
+        if (type != QtDebugMsg && type != QtInfoMsg) list() << text;
+    }
+    QtMessageHandler m_previous;
+};
+
+TEST(MotionDesign, PickingALawLeavesTheTableWhereItWas) {
+    // Issue 31, point 7: the columns were fitted anew after each law change, so a click meant
+    // for "To" landed in another cell; and Qt printed editor warnings when a law was picked.
     MainWindow window;
     window.resize(1400, 860);
     window.show();
+    QApplication::setActiveWindow(&window);
     ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
     QTableView* table = window.motionDesignPanel()->table();
     const QModelIndex law = table->model()->index(0, DesignTableModel::Law);
+    table->setFocus();
     table->setCurrentIndex(law);
     table->edit(law);
     QCoreApplication::processEvents();
     auto* combo = table->findChild<QComboBox*>();
     ASSERT_NE(combo, nullptr);
-    // The column fits "Cycloidal"; the editor fits the longest name of the list.
+    // The column and its editor fit the longest name of the list, whichever law is chosen.
     int longest = 0;
     for (const QString& name : DesignTableModel::lawNames()) {
         longest = std::max(longest, combo->fontMetrics().horizontalAdvance(name));
     }
-    EXPECT_LT(table->columnWidth(DesignTableModel::Law), longest);
+    EXPECT_GE(table->columnWidth(DesignTableModel::Law), longest);
     EXPECT_GT(combo->width(), longest);
+    QTest::keyClick(combo, Qt::Key_Escape);
+    QCoreApplication::processEvents();
+    std::vector<int> where;
+    for (int c = 0; c < DesignTableModel::ColumnCount; ++c) {
+        where.push_back(table->columnViewportPosition(c));
+    }
+    // Pick each law in turn from the open editor, as the keyboard does, and close it with
+    // Enter: the document follows, the columns stay, the cell stays current, Qt says nothing.
+    QtMessages messages;
+    QtMessages::list().clear();
+    ProjectDocument* doc = window.document();
+    for (int pick = 0; pick < static_cast<int>(DesignTableModel::lawNames().size()); ++pick) {
+        table->setCurrentIndex(law);
+        table->edit(law);
+        QCoreApplication::processEvents();
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);  // closed editors
+        combo = table->findChild<QComboBox*>();
+        ASSERT_NE(combo, nullptr) << pick;
+        combo->setCurrentIndex(pick);
+        emit combo->activated(pick);
+        QTest::keyClick(combo, Qt::Key_Return);
+        QCoreApplication::processEvents();
+        EXPECT_EQ(static_cast<int>(doc->project().design->segments[0].law), pick);
+        EXPECT_EQ(table->currentIndex(), law) << pick;
+        for (int c = 0; c < DesignTableModel::ColumnCount; ++c) {
+            EXPECT_EQ(table->columnViewportPosition(c), where[static_cast<std::size_t>(c)])
+                << "column " << c << " after law " << pick;
+        }
+    }
+    EXPECT_TRUE(QtMessages::list().isEmpty()) << QtMessages::list().join('\n').toStdString();
+}
+
+TEST(MotionDesign, AFieldSaysWhatItRefusesByItsLabel) {
+    // Issue 31, point 7: a refused key or number used to vanish without a word.
+    MainWindow window;
+    window.resize(1400, 860);
+    window.show();
+    QApplication::setActiveWindow(&window);
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ProjectDocument* doc = window.document();
+    const Project before = doc->project();
+    const int steps = doc->undoStack()->count();
+    auto* box = window.motionDesignPanel()->findChild<NumberSpinBox*>("baseRadiusSpinBox");
+    ASSERT_NE(box, nullptr);
+    box->setFocus();
+    box->selectAll();
+    QTest::keyClicks(box, "-5");
+    QTest::keyClick(box, Qt::Key_Return);
+    EXPECT_EQ(doc->project(), before);
+    EXPECT_EQ(doc->undoStack()->count(), steps);
+    EXPECT_EQ(window.statusBar()->currentMessage().toStdString(),
+              "Base radius: -5 is outside 1E-06 … 1000000 mm; it stays 40 mm.");
+    QTest::keyClick(box, Qt::Key_Q);
+    EXPECT_TRUE(window.statusBar()->currentMessage().startsWith("Base radius: “q” cannot be"))
+        << window.statusBar()->currentMessage().toStdString();
+    EXPECT_EQ(doc->project(), before);
 }
 
 TEST(MotionDesign, NewSplitDeleteAndRemoveAreUndoSteps) {

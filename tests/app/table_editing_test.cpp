@@ -6,6 +6,7 @@
 
 #include <QAbstractItemModelTester>
 #include <QApplication>
+#include <QStatusBar>
 #include <QTableView>
 #include <QTest>
 
@@ -80,6 +81,44 @@ TEST_F(TableEditing, TypedDecimalsAreStoredAsTyped) {
     press(Qt::Key_Tab);  // Tab commits too, and moves on
     EXPECT_EQ(arc(2).center.x(), 144.31);
     EXPECT_EQ(steps(), 2);
+}
+
+TEST_F(TableEditing, AKeyOrATextThatIsNoNumberIsRefusedWithAWordThatNamesTheCell) {
+    // Issue 31, point 7: letters and 1e400 were refused without a word.
+    QStatusBar* bar = window.statusBar();
+    typeInto(1, SegmentTableModel::Radius, "12x");
+    NumberSpinBox* editor = openEditor();
+    ASSERT_NE(editor, nullptr);
+    EXPECT_EQ(editor->cleanText(), "12");  // the x never entered
+    EXPECT_TRUE(editor->lastRefusal().contains("“x”")) << editor->lastRefusal().toStdString();
+    EXPECT_TRUE(bar->currentMessage().startsWith("Radius [mm], row 1: “x” cannot be"))
+        << bar->currentMessage().toStdString();
+    press(Qt::Key_Escape);
+    EXPECT_EQ(window.document()->project(), original);
+    // A number beyond any double, taken by Tab: refused, the cell keeps its value, and the
+    // status bar says so with the cell's name.
+    bar->clearMessage();
+    typeInto(1, SegmentTableModel::Radius, "1e400");
+    press(Qt::Key_Tab);
+    EXPECT_EQ(window.document()->project(), original);
+    EXPECT_EQ(steps(), 0);
+    EXPECT_EQ(bar->currentMessage().toStdString(),
+              "Radius [mm], row 1: 1e400 is beyond the largest number there is (about 1.8E308); "
+              "it stays 8.10318055 mm.");
+    // The same taken by Enter.
+    bar->clearMessage();
+    typeInto(1, SegmentTableModel::Radius, "-2e999");
+    press(Qt::Key_Return);
+    EXPECT_EQ(window.document()->project(), original);
+    EXPECT_TRUE(bar->currentMessage().contains("-2e999 is beyond"))
+        << bar->currentMessage().toStdString();
+    // Escape cancels an unfinished number without a word.
+    bar->clearMessage();
+    typeInto(1, SegmentTableModel::Radius, "1e");
+    press(Qt::Key_Escape);
+    EXPECT_EQ(bar->currentMessage().toStdString(), "");
+    EXPECT_EQ(arc(1).radius, original.contour[1].as<Arc>()->radius);
+    EXPECT_EQ(window.document()->project(), original);
 }
 
 TEST_F(TableEditing, EscapeCancelsTypingAndSteppingAlike) {

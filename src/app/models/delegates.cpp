@@ -1,6 +1,7 @@
 #include "models/delegates.h"
 
 #include <QComboBox>
+#include <QFontMetrics>
 #include <QPersistentModelIndex>
 #include <algorithm>
 
@@ -26,7 +27,10 @@ int nextGestureId() {
 NumberDelegate::NumberDelegate(QObject* parent) : QStyledItemDelegate(parent) {
     connect(this, &QAbstractItemDelegate::closeEditor, this,
             [this](QWidget* editor, QAbstractItemDelegate::EndEditHint hint) {
-                if (hint == QAbstractItemDelegate::RevertModelCache) revert(editor);
+                if (hint != QAbstractItemDelegate::RevertModelCache) return;
+                // Escape: what was typed goes unsaid (the box would refuse it as it closes).
+                static_cast<NumberSpinBox*>(editor)->discardTyping();
+                revert(editor);
             });
 }
 
@@ -43,6 +47,11 @@ QWidget* NumberDelegate::createEditor(QWidget* parent, const QStyleOptionViewIte
                                      : QStringLiteral(" mm"));
     spin->setSingleStep(step.isValid() ? step.toDouble() : angle ? 0.5 : 0.1);
     spin->setProperty(kGesture, nextGestureId());
+    // Its messages name the cell: "Radius, row 3".
+    spin->setAccessibleName(
+        tr("%1, row %2")
+            .arg(index.model()->headerData(c, Qt::Horizontal).toString().section('\n', 0, 0),
+                 index.model()->headerData(index.row(), Qt::Vertical).toString()));
     spin->setProperty(kIndex, QVariant::fromValue(QPersistentModelIndex(index)));
     // Steps (arrows, wheel) are live: they reach the model, and the gesture id merges them.
     // Typed text arrives only on Enter/Tab (keyboard tracking is off).
@@ -65,6 +74,7 @@ void NumberDelegate::setEditorData(QWidget* editor, const QModelIndex& index) co
 void NumberDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,
                                   const QModelIndex& index) const {
     auto* spin = static_cast<NumberSpinBox*>(editor);
+    spin->tellIfRefused();  // Tab takes the text here, before the box could say it
     spin->interpretText();
     const double v = spin->value();
     if (v == index.data(Qt::EditRole).toDouble()) return;  // unchanged: no undo step
@@ -104,6 +114,18 @@ void ChoiceDelegate::updateEditorGeometry(QWidget* editor, const QStyleOptionVie
     QRect rect = option.rect;
     rect.setWidth(std::max(rect.width(), editor->sizeHint().width()));
     editor->setGeometry(rect);
+}
+
+QSize ChoiceDelegate::sizeHint(const QStyleOptionViewItem& option, const QModelIndex& index) const {
+    QSize hint = QStyledItemDelegate::sizeHint(option, index);
+    const QFontMetrics metrics(option.font);
+    const int shown = metrics.horizontalAdvance(index.data(Qt::DisplayRole).toString());
+    int widest = shown;
+    for (const QString& choice : index.data(SegmentTableModel::ChoicesRole).toStringList()) {
+        widest = std::max(widest, metrics.horizontalAdvance(choice));
+    }
+    hint.rwidth() += widest - shown;
+    return hint;
 }
 
 void ChoiceDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,

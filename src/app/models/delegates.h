@@ -45,6 +45,9 @@ public:
     /// lies over the next cell while open): a choice is never cut off.
     void updateEditorGeometry(QWidget* editor, const QStyleOptionViewItem& option,
                               const QModelIndex& index) const override;
+    /// As wide as the longest choice whichever is chosen: a column fitted to it keeps its
+    /// width when another choice is picked, and the columns right of it stay where they are.
+    QSize sizeHint(const QStyleOptionViewItem& option, const QModelIndex& index) const override;
 };
 
 /// @brief A fresh id for one editing gesture (a spin-box session, a drag): see EditSegment.

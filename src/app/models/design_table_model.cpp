@@ -50,7 +50,30 @@ int columnOfPart(DesignPart part) {
 DesignTableModel::DesignTableModel(ProjectDocument* document, QObject* parent)
     : QAbstractTableModel(parent), m_document(document) {
     connect(document, &ProjectDocument::designChanged, this, [this] {
+        const auto& design = m_document->project().design;
+        const std::vector<DesignSegmentSpec> now =
+            design ? design->segments : std::vector<DesignSegmentSpec>{};
+        if (now.size() == m_shown.size() && !now.empty()) {
+            // An edit of segments (a law, a value): those rows change, the table stays put —
+            // the current cell, an open editor, the columns' widths (issue 31: a reset fitted
+            // the columns anew after each law change, under the mouse).
+            int first = -1, last = -1;
+            for (std::size_t k = 0; k < now.size(); ++k) {
+                if (now[k] == m_shown[k]) continue;
+                if (first < 0) first = static_cast<int>(k);
+                last = static_cast<int>(k);
+            }
+            m_shown = now;
+            rebuild();
+            if (first >= 0) {
+                // The next row starts where this one ends.
+                last = std::min(last + 1, static_cast<int>(now.size()) - 1);
+                emit dataChanged(index(first, 0), index(last, ColumnCount - 1));
+            }
+            return;
+        }
         beginResetModel();
+        m_shown = now;
         rebuild();
         endResetModel();
     });
@@ -67,6 +90,7 @@ DesignTableModel::DesignTableModel(ProjectDocument* document, QObject* parent)
                              {Qt::BackgroundRole, Qt::ToolTipRole});
         }
     });
+    if (document->project().design) m_shown = document->project().design->segments;
     rebuild();
 }
 

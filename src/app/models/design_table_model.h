@@ -44,6 +44,7 @@ private:
     ProjectDocument* m_document;
     std::vector<LawCoefficients> m_coefficients;
     QHash<quint64, QStringList> m_problems;  ///< (row << 8 | column) → messages
+    std::vector<DesignSegmentSpec> m_shown;  ///< the segments the views know of
 };
 
 }  // namespace cam

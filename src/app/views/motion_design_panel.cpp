@@ -33,6 +33,7 @@
 #include "views/plot_data.h"
 #include "views/plot_redraw.h"
 #include "views/plot_setup.h"
+#include "widgets/column_fit.h"
 #include "widgets/number_spin_box.h"
 #include "widgets/quantity_format.h"
 
@@ -147,8 +148,8 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
         m_table->setItemDelegateForColumn(
             c, c == DesignTableModel::Law ? static_cast<QAbstractItemDelegate*>(choices) : numbers);
     }
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
+    keepColumnsFitting(m_table);
     m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                              QAbstractItemView::AnyKeyPressed);
     m_table->setSelectionBehavior(QAbstractItemView::SelectItems);

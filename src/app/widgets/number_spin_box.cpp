@@ -1,8 +1,14 @@
 #include "widgets/number_spin_box.h"
 
+#include <QCoreApplication>
+#include <QFormLayout>
 #include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
 #include <QLocale>
 #include <QRegularExpression>
+#include <QStatusTipEvent>
+#include <QToolTip>
 #include <cmath>
 #include <limits>
 
@@ -122,6 +128,102 @@ QValidator::State NumberSpinBox::validate(QString& text, int&) const {
 
 void NumberSpinBox::fixup(QString&) const {
     // Nothing is repaired silently: an unfinished number keeps the previous value.
+}
+
+namespace {
+
+bool holds(QLayoutItem* item, const QWidget* widget) {
+    if (!item) return false;
+    if (item->widget() == widget) return true;
+    if (QLayout* layout = item->layout()) {
+        for (int k = 0; k < layout->count(); ++k) {
+            if (holds(layout->itemAt(k), widget)) return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+QString NumberSpinBox::place() const {
+    if (!accessibleName().isEmpty()) return accessibleName();
+    // A field of a form (alone or in a row with buttons): the label that names it.
+    if (parentWidget()) {
+        for (const QFormLayout* form : parentWidget()->findChildren<QFormLayout*>()) {
+            for (int row = 0; row < form->rowCount(); ++row) {
+                const auto* label =
+                    qobject_cast<QLabel*>(form->itemAt(row, QFormLayout::LabelRole)
+                                              ? form->itemAt(row, QFormLayout::LabelRole)->widget()
+                                              : nullptr);
+                if (label && !label->text().isEmpty() &&
+                    holds(form->itemAt(row, QFormLayout::FieldRole), this)) {
+                    return QString(label->text()).remove('&').remove(QRegularExpression(":$"));
+                }
+            }
+        }
+    }
+    return tr("This field");
+}
+
+QString NumberSpinBox::refusal() const {
+    const QString typed = cleanText();
+    if (!isTyping() || (!specialValueText().isEmpty() && text() == specialValueText())) return {};
+    const QString stays = textFromValue(value()) + suffix();
+    if (const auto v = parseNumber(typed)) {
+        if (*v >= minimum() && *v <= maximum()) return {};
+        return tr("%1: %2 is outside %3 … %4; it stays %5.")
+            .arg(place(), typed, textFromValue(minimum()), textFromValue(maximum()) + suffix(),
+                 stays);
+    }
+    static const QRegularExpression whole(R"(^[+-]?(\d+([.,]\d*)?|[.,]\d+)([eE][+-]?\d+)?$)");
+    if (whole.match(typed).hasMatch()) {
+        return tr("%1: %2 is beyond the largest number there is (about 1.8E308); it stays %3.")
+            .arg(place(), typed, stays);
+    }
+    return tr("%1: “%2” is not a number yet; it stays %3.").arg(place(), typed, stays);
+}
+
+bool NumberSpinBox::tellIfRefused() {
+    const QString why = refusal();
+    if (why.isEmpty()) return false;
+    tell(why);
+    return true;
+}
+
+void NumberSpinBox::tell(const QString& message) {
+    m_told = message;
+    emit refused(message);
+    // The main window's status bar shows it (the event climbs the parents to the window).
+    QStatusTipEvent tip(message);
+    QCoreApplication::sendEvent(this, &tip);
+    QToolTip::showText(mapToGlobal(QPoint(0, height())), message, nullptr, {}, 8000);
+}
+
+void NumberSpinBox::discardTyping() {
+    if (isTyping()) lineEdit()->setText(prefix() + textFromValue(value()) + suffix());
+}
+
+void NumberSpinBox::keyPressEvent(QKeyEvent* event) {
+    if (event->key() == Qt::Key_Return || event->key() == Qt::Key_Enter) {
+        tellIfRefused();  // before the spin box puts the last value back
+        QDoubleSpinBox::keyPressEvent(event);
+        return;
+    }
+    const QString before = lineEdit()->text();
+    QDoubleSpinBox::keyPressEvent(event);
+    const QString typed = event->text();
+    const bool printable = !typed.isEmpty() && typed.at(0).isPrint() &&
+                           !(event->modifiers() & (Qt::ControlModifier | Qt::AltModifier));
+    if (printable && lineEdit()->text() == before) {
+        tell(tr("%1: “%2” cannot be part of a number: type digits, %3 for decimals and e for a "
+                "power of ten (1.5e-3).")
+                 .arg(place(), typed, locale().decimalPoint()));
+    }
+}
+
+void NumberSpinBox::focusOutEvent(QFocusEvent* event) {
+    tellIfRefused();
+    QDoubleSpinBox::focusOutEvent(event);
 }
 
 }  // namespace cam

@@ -45,11 +45,37 @@ public:
     /// @brief Whether the box holds typed text not yet taken as its value.
     [[nodiscard]] bool isTyping() const;
 
+    /// @brief Why the typed text cannot be taken (out of range, beyond a double, unfinished),
+    /// naming the field and the value it keeps; empty when it can or nothing was typed.
+    [[nodiscard]] QString refusal() const;
+    /// @brief Says the refusal, if any (status bar, tooltip, `refused`); whether there was one.
+    /// Enter and leaving the box call it; a table's delegate calls it before taking the value.
+    bool tellIfRefused();
+    /// @brief Drops typed text, showing the value again (Escape in a table cell).
+    void discardTyping();
+    /// @brief The last refusal said (a refused key or text), for tests.
+    [[nodiscard]] QString lastRefusal() const { return m_told; }
+
     /// @brief The number `text` means (locale or dot decimal, optional exponent), if it is one.
     [[nodiscard]] static std::optional<double> parseNumber(const QString& text);
 
+signals:
+    /// @brief A key or a typed text was refused: the message says where, what and why.
+    void refused(const QString& message);
+
+protected:
+    /// A key that cannot be part of a number is refused with a word, not silently.
+    void keyPressEvent(QKeyEvent* event) override;
+    void focusOutEvent(QFocusEvent* event) override;
+
 private:
     [[nodiscard]] QString stripped(const QString& text) const;
+    /// The field's name for a message: its accessible name (a table cell's editor gets one),
+    /// else its form label, else "This field".
+    [[nodiscard]] QString place() const;
+    void tell(const QString& message);
+
+    QString m_told;
 
     int m_digits = quantityFormat(DisplayQuantity::Input).significant;
 };
