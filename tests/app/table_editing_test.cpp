@@ -121,6 +121,29 @@ TEST_F(TableEditing, AKeyOrATextThatIsNoNumberIsRefusedWithAWordThatNamesTheCell
     EXPECT_EQ(window.document()->project(), original);
 }
 
+TEST_F(TableEditing, TabPassesOverTheFieldsASegmentDoesNotHave) {
+    // Issue 31, point 7: Tab after an arc's Branch went into its greyed end-point cells, and
+    // what was typed there was lost.
+    table->setFocus();
+    table->setCurrentIndex(window.tableModel()->index(1, SegmentTableModel::Branch));
+    press(Qt::Key_Tab);
+    EXPECT_EQ(table->currentIndex(), window.tableModel()->index(1, SegmentTableModel::PhiStart));
+    press(Qt::Key_Backtab);
+    EXPECT_EQ(table->currentIndex(), window.tableModel()->index(1, SegmentTableModel::Branch));
+    // Typed into the cell after Branch (φ start), the text lands there and is taken.
+    press(Qt::Key_Tab);
+    for (const QChar c : QStringLiteral("9.5")) {
+        QTest::keyClick(QApplication::focusWidget(), c.toLatin1());
+    }
+    press(Qt::Key_Return);
+    EXPECT_EQ(steps(), 1);
+    EXPECT_NE(window.document()->project(), original);
+    // A click cannot make such a cell current either.
+    const QModelIndex from = window.tableModel()->index(1, SegmentTableModel::FromX);
+    QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, table->visualRect(from).center());
+    EXPECT_NE(table->currentIndex(), from);
+}
+
 TEST_F(TableEditing, EscapeCancelsTypingAndSteppingAlike) {
     typeInto(3, SegmentTableModel::Radius, "99");
     press(Qt::Key_Escape);

@@ -281,10 +281,14 @@ Qt::ItemFlags DesignTableModel::flags(const QModelIndex& index) const {
     Qt::ItemFlags f = Qt::ItemIsSelectable | Qt::ItemIsEnabled;
     const int c = index.column();
     if (c == Law || c == ToDeg || c == Lift) return f | Qt::ItemIsEditable;
-    if (isPoly5Column(c) && index.row() < rowCount() &&
-        motionLaw(m_document->project().design->segments[static_cast<std::size_t>(index.row())].law)
-                .shape == LawShape::BoundaryValues) {
-        return f | Qt::ItemIsEditable;
+    if (isPoly5Column(c)) {
+        // Poly 5's boundary values; other laws have none: no cell to go to (Tab passes over).
+        const bool poly5 =
+            index.row() < rowCount() &&
+            motionLaw(
+                m_document->project().design->segments[static_cast<std::size_t>(index.row())].law)
+                    .shape == LawShape::BoundaryValues;
+        return poly5 ? f | Qt::ItemIsEditable : Qt::NoItemFlags;
     }
     return f;
 }

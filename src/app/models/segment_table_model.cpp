@@ -224,10 +224,14 @@ QString SegmentTableModel::columnTitle(int column) { return segmentColumnTitle(c
 
 Qt::ItemFlags SegmentTableModel::flags(const QModelIndex& index) const {
     if (!index.isValid()) return Qt::NoItemFlags;
+    // A field the segment does not have (an arc's end points, a line's centre) is no cell to
+    // go to: Tab passes over it, a click does not make it current (issue 31: typing there
+    // was lost).
+    if (!isApplicable(index.row(), index.column())) return Qt::NoItemFlags;
     Qt::ItemFlags f = Qt::ItemIsSelectable | Qt::ItemIsEnabled;
     const bool lineWindow = segmentOf(m_document, index.row()).type() != SegmentType::Arc &&
                             (index.column() == PhiStart || index.column() == PhiEnd);
-    if (isApplicable(index.row(), index.column()) && !lineWindow) f |= Qt::ItemIsEditable;
+    if (!lineWindow) f |= Qt::ItemIsEditable;
     return f;
 }
 

@@ -36,6 +36,7 @@
 #include "widgets/column_fit.h"
 #include "widgets/number_spin_box.h"
 #include "widgets/quantity_format.h"
+#include "widgets/read_only_cells.h"
 
 namespace cam {
 namespace {
@@ -150,6 +151,7 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
     }
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
     keepColumnsFitting(m_table);
+    sayWhyCellsAreReadOnly(m_table);
     m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                              QAbstractItemView::AnyKeyPressed);
     m_table->setSelectionBehavior(QAbstractItemView::SelectItems);

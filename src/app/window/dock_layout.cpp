@@ -29,6 +29,7 @@
 #include "views/plot_redraw.h"
 #include "views/state_readout.h"
 #include "widgets/column_fit.h"
+#include "widgets/read_only_cells.h"
 
 namespace cam {
 namespace {
@@ -84,6 +85,7 @@ void DockLayout::makeBottomDocks() {
     }
     table->verticalHeader()->setDefaultSectionSize(table->fontMetrics().height() + 6);
     keepColumnsFitting(table);
+    sayWhyCellsAreReadOnly(table);
     table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
                            QAbstractItemView::AnyKeyPressed);
     // A spline's control points by value, tabbed with the table and the joints.
