@@ -10,6 +10,7 @@
 #include <QHeaderView>
 #include <QSpinBox>
 #include <QTableView>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include "app_test_support.h"
@@ -116,6 +117,35 @@ TEST_F(DockLayout, TheRightHandDocksAreTabsAndTheWindowKeepsItsSize) {
         EXPECT_EQ(window.plots()->plot(0)->height(), heightBefore) << name;
     }
     EXPECT_EQ(window.tabifiedDockWidgets(window.findChild<QDockWidget*>("followerDock")).size(), 4);
+}
+
+TEST_F(DockLayout, SavingLeavesTheTabsAndTheFocusWhereTheyWere) {
+    // Issue 31, point 7: Save (giving the file a new path) brought the Motion Design tab to
+    // the front and the focus went with it; the next click landed on its Delete button.
+    QApplication::setActiveWindow(&window);
+    ASSERT_TRUE(window
+                    .loadFile(QString::fromStdString(
+                        test::dataPath("app/design-roller-no-contour.cam.json")))
+                    .isEmpty());
+    test::processEventsUntil([] { return false; }, 100);
+    auto* design = window.findChild<QDockWidget*>("motionDesignDock");
+    auto* follower = window.findChild<QDockWidget*>("followerDock");
+    ASSERT_NE(design, nullptr);
+    ASSERT_NE(follower, nullptr);
+    // Opened, the project's design is the tab in front.
+    EXPECT_FALSE(design->visibleRegion().isEmpty());
+    follower->raise();
+    test::processEventsUntil([] { return false; }, 50);
+    auto* radius = follower->findChild<QWidget*>("followerRadiusSpinBox");
+    ASSERT_NE(radius, nullptr);
+    radius->setFocus();
+    ASSERT_FALSE(follower->visibleRegion().isEmpty());
+    QTemporaryDir dir;
+    ASSERT_TRUE(window.saveFile(dir.filePath("saved.cam.json")).isEmpty());
+    test::processEventsUntil([] { return false; }, 100);
+    EXPECT_FALSE(follower->visibleRegion().isEmpty()) << "the Follower tab left the front";
+    EXPECT_TRUE(design->visibleRegion().isEmpty());
+    EXPECT_EQ(QApplication::focusWidget(), radius);
 }
 
 TEST_F(DockLayout, NoPlotWritesItsTickLabelsIntoOneAnother) {

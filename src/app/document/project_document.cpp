@@ -45,6 +45,7 @@ void ProjectDocument::reset(Project project, QString filePath, Diagnostics diagn
     emit designChanged();
     emit dynamicsChanged();
     emit changed();
+    emit replaced();
 }
 
 void ProjectDocument::markSaved(const QString& filePath, QByteArray fileDigest) {

@@ -94,6 +94,9 @@ signals:
     /// Any change at all, after the specific signal: recompute, revalidate, redraw.
     void changed();
     void filePathChanged(const QString& path);
+    /// Another project took this one's place (New, Open, Revert, a recovery), after every
+    /// signal of its parts; a Save is no such thing.
+    void replaced();
     void modifiedChanged(bool modified);
 
 private:

@@ -193,26 +193,24 @@ void DockLayout::linkFollowerAxes() {
 }
 
 void DockLayout::showWhatTheProjectHas() {
-    connect(m_document, &ProjectDocument::contourReset, this, [this] {
-        if (m_document->project().follower) followerDock->show();
-        if (m_document->project().dynamics) {
-            forcesDock->show();
-            // In front of the follower's tab (a design's dock goes in front of both).
-            if (!m_document->project().design) {
-                QTimer::singleShot(0, forcesDock, [this] { forcesDock->raise(); });
-            }
-        }
-        // Once the layout has settled: a short contour leaves the plots the rows it needs not.
-        QTimer::singleShot(0, this, &DockLayout::fitSegmentsDock);
-    });
-    connect(m_document, &ProjectDocument::filePathChanged, this, [this] {
-        if (!m_document->project().design) return;
-        designDock->show();
-        // In front of the follower's tab, once the follower dock has been shown too, and wide
-        // enough for the segment table.
-        QTimer::singleShot(0, this, [this] {
-            designDock->raise();
-            if (designDock->width() < 400 && !designDock->isFloating()) {
+    // Once the layout has settled: a short contour leaves the plots the rows it needs not.
+    connect(m_document, &ProjectDocument::contourReset, this,
+            [this] { QTimer::singleShot(0, this, &DockLayout::fitSegmentsDock); });
+    // Only when another project arrives: a Save (which may give the file its first path)
+    // switched the right-hand tabs and took the focus with them (issue 31).
+    connect(m_document, &ProjectDocument::replaced, this, [this] {
+        const Project& project = m_document->project();
+        if (project.follower) followerDock->show();
+        if (project.dynamics) forcesDock->show();
+        if (project.design) designDock->show();
+        if (!project.dynamics && !project.design) return;
+        // A design's dock in front of the follower's and the forces' tabs, else the forces' in
+        // front of the follower's; once the docks are shown, and the design's wide enough for
+        // its segment table.
+        QDockWidget* front = project.design ? designDock : forcesDock;
+        QTimer::singleShot(0, front, [this, front] {
+            front->raise();
+            if (front == designDock && designDock->width() < 400 && !designDock->isFloating()) {
                 m_window->resizeDocks({designDock}, {400}, Qt::Horizontal);
             }
         });
