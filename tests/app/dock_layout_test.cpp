@@ -148,6 +148,36 @@ TEST_F(DockLayout, SavingLeavesTheTabsAndTheFocusWhereTheyWere) {
     EXPECT_EQ(QApplication::focusWidget(), radius);
 }
 
+TEST_F(DockLayout, ASideDockGetsItsWidthBackWhenTheWindowGrowsAgain) {
+    // Issue 31, point 7: shrunk and grown again, the window gave all the new room to the
+    // centre, and the Motion Design dock stayed too narrow for its table.
+    ASSERT_TRUE(window
+                    .loadFile(QString::fromStdString(
+                        test::dataPath("app/design-roller-no-contour.cam.json")))
+                    .isEmpty());
+    test::processEventsUntil([] { return false; }, 100);
+    auto* design = window.findChild<QDockWidget*>("motionDesignDock");
+    auto* motion = window.findChild<QDockWidget*>("motionDock");
+    ASSERT_NE(design, nullptr);
+    ASSERT_NE(motion, nullptr);
+    ASSERT_FALSE(design->visibleRegion().isEmpty());
+    // The user drags it wider than it opened.
+    window.resizeDocks({design}, {520}, Qt::Horizontal);
+    test::processEventsUntil([] { return false; }, 50);
+    const int chosen = design->width();
+    const int left = motion->width();
+    EXPECT_GE(chosen, 500);
+    for (int round = 0; round < 2; ++round) {
+        window.resize(900, 600);
+        test::processEventsUntil([] { return false; }, 50);
+        EXPECT_LT(design->width(), chosen) << "the window had to take room from the dock";
+        window.resize(1400, 860);
+        test::processEventsUntil([] { return false; }, 50);
+        EXPECT_EQ(design->width(), chosen) << round;
+        EXPECT_EQ(motion->width(), left) << round;
+    }
+}
+
 TEST_F(DockLayout, NoPlotWritesItsTickLabelsIntoOneAnother) {
     // A project with a roller and a motion design: every right-hand dock has plots, the Motion
     // Design dock four in little room. In each, with each dock in front, every axis leaves a

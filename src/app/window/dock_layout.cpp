@@ -5,6 +5,7 @@
 #include <QHeaderView>
 #include <QLayout>
 #include <QMainWindow>
+#include <QResizeEvent>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
@@ -240,12 +241,72 @@ void DockLayout::restore() {
         });
     }
     m_window->restoreState(settings.value("window/state").toByteArray());
+    for (QDockWidget* dock : m_window->findChildren<QDockWidget*>(Qt::FindDirectChildrenOnly)) {
+        dock->installEventFilter(this);
+    }
 }
 
 void DockLayout::save() const {
     QSettings settings;
     settings.setValue("window/geometry", m_window->saveGeometry());
     settings.setValue("window/state", m_window->saveState());
+}
+
+namespace {
+
+/// The dock in front in `area`: shown, docked there (a tab group shares its width).
+QDockWidget* frontDockIn(QMainWindow* window, Qt::DockWidgetArea area) {
+    for (QDockWidget* dock : window->findChildren<QDockWidget*>(Qt::FindDirectChildrenOnly)) {
+        if (dock->isVisible() && !dock->isFloating() && window->dockWidgetArea(dock) == area &&
+            !dock->visibleRegion().isEmpty()) {
+            return dock;
+        }
+    }
+    return nullptr;
+}
+
+constexpr Qt::DockWidgetArea kSides[2] = {Qt::LeftDockWidgetArea, Qt::RightDockWidgetArea};
+
+}  // namespace
+
+bool DockLayout::eventFilter(QObject* watched, QEvent* event) {
+    auto* dock = qobject_cast<QDockWidget*>(watched);
+    if (!dock || event->type() != QEvent::Resize) return false;
+    // The window's resizing reaches a dock in a later layout pass: a dock resized at another
+    // window width than its last resize was resized by the window; one resized at the same
+    // width, by a choice (a separator drag, a dock opened or widened for a project).
+    int& last = m_windowWidthAt[dock];
+    const bool byTheWindow = m_window->width() != last;
+    last = m_window->width();
+    const Qt::DockWidgetArea area = m_window->dockWidgetArea(dock);
+    const int side = area == Qt::LeftDockWidgetArea ? 0 : area == Qt::RightDockWidgetArea ? 1 : -1;
+    if (side < 0 || dock->isFloating() || !m_window->isVisible()) return false;
+    const auto* resize = static_cast<QResizeEvent*>(event);
+    if (!byTheWindow && !m_givingWidthsBack &&
+        resize->size().width() != resize->oldSize().width()) {
+        m_dockWidths[side] = dock->width();
+    } else if (byTheWindow && dock->width() < m_dockWidths[side]) {
+        QTimer::singleShot(0, this, &DockLayout::giveDocksTheirWidthsBack);
+    }
+    return false;
+}
+
+void DockLayout::giveDocksTheirWidthsBack() {
+    QList<QDockWidget*> docks;
+    QList<int> widths;
+    for (int side = 0; side < 2; ++side) {
+        QDockWidget* dock = frontDockIn(m_window, kSides[side]);
+        if (dock && m_dockWidths[side] > dock->width()) {
+            docks << dock;
+            widths << m_dockWidths[side];
+        }
+    }
+    if (docks.isEmpty()) return;
+    // As much as the centre can give; the wish stays for the next growth.
+    m_givingWidthsBack = true;
+    m_window->resizeDocks(docks, widths, Qt::Horizontal);
+    m_window->layout()->activate();
+    QTimer::singleShot(0, this, [this] { m_givingWidthsBack = false; });
 }
 
 void DockLayout::fitSegmentsDock() {

@@ -5,6 +5,7 @@
 /// What's This texts, the layout the user left (restored at start, saved at close), and the
 /// Segments dock fitted to a short contour.
 
+#include <QHash>
 #include <QObject>
 #include <vector>
 
@@ -68,6 +69,10 @@ public:
     MotionDesignPanel* design;
     QDockWidget* designDock;
 
+protected:
+    /// The docks' resizes (see giveDocksTheirWidthsBack).
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     void makeCentre();
     void makeBottomDocks();
@@ -76,12 +81,20 @@ private:
     void setWhatsThis();
     /// A project that names a follower or has a design opens with its dock shown.
     void showWhatTheProjectHas();
+    /// The side docks' widths as the user left them (a separator drag, a dock opened or
+    /// widened for a project: any change the window's own resizing did not make) come back
+    /// when the window grows again: shrunk and grown, QMainWindow gave all the room to the
+    /// centre and the right dock stayed clipped (issue 31).
+    void giveDocksTheirWidthsBack();
 
     static constexpr int kMinSegmentRowsShown = 4;
     QMainWindow* m_window;
     Ui::MainWindow& m_ui;
     ProjectDocument* m_document;
     SegmentTableModel* m_model;
+    int m_dockWidths[2] = {0, 0};          ///< left, right: the width the user chose (0: none yet)
+    QHash<QObject*, int> m_windowWidthAt;  ///< each dock: the window's width at its last resize
+    bool m_givingWidthsBack = false;
     int m_segmentsDockRoom = 0;     ///< the dock's height before fitting (layout or user)
     int m_segmentsDockFitted = -1;  ///< its height after the last fit
 };
