@@ -18,6 +18,8 @@
 #include "mainwindow.h"
 #include "models/segment_table_model.h"
 #include "project/validate.h"
+#include "views/contour_view.h"
+#include "views/palette.h"
 
 namespace cam {
 namespace {
@@ -132,6 +134,105 @@ TEST(StructuralEdits, EveryEditAtEveryPositionOfOneToFiveSegmentsUndoesAndRedoes
         }
     }
     EXPECT_EQ(cases, 12 * (1 + 2 + 3 + 4 + 5) + 12 * (3 + 4 + 5));
+}
+
+TEST(StructuralEdits, RepeatedInsertsDivideAWindowEvenlyAndTheProfileStays) {
+    // Issue 31, point 7: Insert on the last row halved the last window each time (180°, 90°,
+    // 45°, …). The copies of one segment now share its window evenly; the profile (the same
+    // arc in every part) is unchanged, and each Insert is one undo step.
+    MainWindow window;
+    auto* table = window.findChild<QTableView*>("segmentTable");
+    ASSERT_NE(table, nullptr);
+    ProjectDocument* document = window.document();
+    // [0°, 180°] on a circle of 25 mm, [180°, 360°] on one of 20 mm.
+    Project original = splitCircle(2);
+    original.contour[0].as<Arc>()->radius = 25.0;
+    document->reset(original, {});
+    auto* insert = window.findChild<QAction*>("actionInsertSegment");
+    table->selectRow(1);
+    for (int inserts = 1; inserts <= 3; ++inserts) {
+        insert->trigger();
+        const auto& contour = document->project().contour;
+        ASSERT_EQ(contour.size(), static_cast<std::size_t>(2 + inserts));
+        // The new one is current: the next Insert follows it.
+        EXPECT_EQ(table->currentIndex().row(), 1 + inserts);
+        const double width = 180.0 / (inserts + 1);
+        for (int k = 0; k <= inserts; ++k) {
+            const SegmentSpec& s = contour[static_cast<std::size_t>(1 + k)];
+            EXPECT_DOUBLE_EQ(s.phiStartDeg, 180.0 + k * width) << inserts << " " << k;
+            EXPECT_DOUBLE_EQ(s.phiEndDeg, 180.0 + (k + 1) * width) << inserts << " " << k;
+            SegmentSpec shape = s;
+            shape.phiStartDeg = original.contour[1].phiStartDeg;
+            shape.phiEndDeg = original.contour[1].phiEndDeg;
+            EXPECT_EQ(shape, original.contour[1]);  // the same arc: the profile stays
+        }
+        EXPECT_EQ(contour[0], original.contour[0]);  // another arc: not part of the run
+        EXPECT_EQ(contour.back().phiEndDeg, 360.0);  // exactly, not by a sum of parts
+    }
+    for (int k = 0; k < 3; ++k) document->undoStack()->undo();
+    EXPECT_EQ(document->project(), original);
+    // Two windows of one circle are one run: an Insert after the second gives three thirds.
+    document->reset(splitCircle(2), {});
+    table->selectRow(1);
+    insert->trigger();
+    const auto& contour = document->project().contour;
+    ASSERT_EQ(contour.size(), 3u);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_DOUBLE_EQ(contour[static_cast<std::size_t>(k)].phiStartDeg, 120.0 * k);
+        EXPECT_DOUBLE_EQ(contour[static_cast<std::size_t>(k)].phiEndDeg, 120.0 * (k + 1));
+    }
+    document->undoStack()->undo();
+    EXPECT_EQ(document->project(), splitCircle(2));
+}
+
+TEST(StructuralEdits, ASegmentKeepsItsColourWhenOthersComeAndGo) {
+    // Issue 31, point 7: colours followed the row, so all shifted after an insertion.
+    MainWindow window;
+    auto* table = window.findChild<QTableView*>("segmentTable");
+    ProjectDocument* document = window.document();
+    document->reset(splitCircle(5), {});
+    const std::vector<int> fresh = document->segmentColourSlots();
+    EXPECT_EQ(fresh, (std::vector<int>{0, 1, 2, 3, 4}));
+    table->selectRow(2);
+    window.findChild<QAction*>("actionInsertSegment")->trigger();
+    const std::vector<int> inserted = document->segmentColourSlots();
+    ASSERT_EQ(inserted.size(), 6u);
+    // Everyone keeps theirs; the new one (row 3) differs from both neighbours and is one
+    // nobody has.
+    EXPECT_EQ(inserted, (std::vector<int>{0, 1, 2, inserted[3], 3, 4}));
+    EXPECT_GE(inserted[3], 5);
+    // Undo and redo: the same colours.
+    document->undoStack()->undo();
+    EXPECT_EQ(document->segmentColourSlots(), fresh);
+    document->undoStack()->redo();
+    EXPECT_EQ(document->segmentColourSlots(), inserted);
+    // Deleted and undone, a segment comes back in its own colour; moved, it takes it along.
+    table->selectRow(1);
+    window.findChild<QAction*>("actionDeleteSegment")->trigger();
+    EXPECT_EQ(document->segmentColourSlots(), (std::vector<int>{0, 2, inserted[3], 3, 4}));
+    document->undoStack()->undo();
+    EXPECT_EQ(document->segmentColourSlots(), inserted);
+    // The contour view draws each segment in the curve of its slot's colour: the run of
+    // segment k there starts at the contour point at its window's start (the polar angle of
+    // a point of r(φ) is φ).
+    ASSERT_TRUE(window.waitForCurrentResult(20000));
+    ContourView* view = window.contourView();
+    for (int k = 0; k < 6; ++k) {
+        const QCPCurve* curve = view->segmentCurve(k);
+        EXPECT_EQ(curve->pen().color(), segmentColor(document->segmentColourSlot(k))) << k;
+        const auto [first, count] = view->segmentRun(k);
+        ASSERT_GT(count, 0) << k;
+        const auto p = curve->data()->at(first);
+        double angle = radToDeg(std::atan2(p->value, p->key));
+        if (angle < -1e-9) angle += 360.0;
+        EXPECT_NEAR(angle, document->project().contour[static_cast<std::size_t>(k)].phiStartDeg,
+                    1e-6)
+            << k;
+    }
+    // Moved, a segment takes its colour along.
+    table->selectRow(0);
+    window.findChild<QAction*>("actionMoveDown")->trigger();
+    EXPECT_EQ(document->segmentColourSlots(), (std::vector<int>{1, 0, 2, inserted[3], 3, 4}));
 }
 
 TEST(StructuralEdits, DeletingDownToNothingAndBackThroughTheRealKeys) {

@@ -35,15 +35,19 @@ InsertSegment::InsertSegment(ProjectDocument* document, int row, SegmentSpec seg
       m_segment(std::move(segment)) {}
 
 void InsertSegment::undo() { m_document->applyRemove(m_row); }
-void InsertSegment::redo() { m_document->applyInsert(m_row, m_segment); }
+void InsertSegment::redo() {
+    m_document->applyInsert(m_row, m_segment, m_colourSlot);
+    m_colourSlot = m_document->segmentColourSlot(m_row);
+}
 
 RemoveSegment::RemoveSegment(ProjectDocument* document, int row, QUndoCommand* parent)
     : QUndoCommand(QCoreApplication::translate("cam::Commands", "Delete segment"), parent),
       m_document(document),
       m_row(row),
-      m_segment(document->project().contour.at(static_cast<std::size_t>(row))) {}
+      m_segment(document->project().contour.at(static_cast<std::size_t>(row))),
+      m_colourSlot(document->segmentColourSlot(row)) {}
 
-void RemoveSegment::undo() { m_document->applyInsert(m_row, m_segment); }
+void RemoveSegment::undo() { m_document->applyInsert(m_row, m_segment, m_colourSlot); }
 void RemoveSegment::redo() { m_document->applyRemove(m_row); }
 
 MoveSegment::MoveSegment(ProjectDocument* document, int from, int to, QUndoCommand* parent)

@@ -73,6 +73,7 @@ private:
     ProjectDocument* m_document;
     int m_row;
     SegmentSpec m_segment;
+    int m_colourSlot = -1;  ///< chosen at the first redo, the same at every later one
 };
 
 class RemoveSegment : public QUndoCommand {
@@ -85,6 +86,7 @@ private:
     ProjectDocument* m_document;
     int m_row;
     SegmentSpec m_segment;
+    int m_colourSlot;  ///< undone, the segment comes back in its colour
 };
 
 /// @brief Moves segment `from` so that it ends up at index `to`.

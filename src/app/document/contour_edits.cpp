@@ -33,14 +33,40 @@ EditOutcome ContourEdits::insertSegment(ProjectDocument& document, int row) {
         stack->push(new InsertSegment(&document, at, circle));
         return EditOutcome::done({}, at);
     }
-    // Split the window of the segment before: the new one takes its second half.
-    SegmentSpec copy = contour.at(static_cast<std::size_t>(at - 1));
-    SegmentSpec before = copy;
-    const double mid = (copy.phiStartDeg + copy.phiEndDeg) / 2.0;
-    before.phiEndDeg = mid;
-    copy.phiStartDeg = mid;
+    // The new segment is a copy of the one before, and shares its window: with the copies
+    // inserted before it (a run of the same segment in windows that meet), the run's whole
+    // window is divided evenly. One Insert halves a window; three give four quarters — the
+    // last window was halved again at each Insert before (issue 31).
+    const SegmentSpec& source = contour.at(static_cast<std::size_t>(at - 1));
+    const auto sameSegment = [&source](SegmentSpec s) {
+        s.phiStartDeg = source.phiStartDeg;
+        s.phiEndDeg = source.phiEndDeg;
+        return s == source;
+    };
+    int first = at - 1;
+    while (first > 0 && sameSegment(contour[static_cast<std::size_t>(first - 1)]) &&
+           contour[static_cast<std::size_t>(first - 1)].phiEndDeg ==
+               contour[static_cast<std::size_t>(first)].phiStartDeg) {
+        --first;
+    }
+    const double start = contour[static_cast<std::size_t>(first)].phiStartDeg;
+    const double end = source.phiEndDeg;
+    const int parts = at - first + 1;
+    const auto boundary = [&](int k) {
+        return k == parts ? end : start + (end - start) * static_cast<double>(k) / parts;
+    };
     stack->beginMacro(tr("Insert segment"));
-    stack->push(new EditSegment(&document, at - 1, before, EditedField::Whole, tr("Split window")));
+    for (int row = first; row < at; ++row) {
+        SegmentSpec narrowed = contour[static_cast<std::size_t>(row)];
+        narrowed.phiStartDeg = boundary(row - first);
+        narrowed.phiEndDeg = boundary(row - first + 1);
+        if (narrowed == contour[static_cast<std::size_t>(row)]) continue;
+        stack->push(
+            new EditSegment(&document, row, narrowed, EditedField::Whole, tr("Split window")));
+    }
+    SegmentSpec copy = source;
+    copy.phiStartDeg = boundary(parts - 1);
+    copy.phiEndDeg = end;
     stack->push(new InsertSegment(&document, at, copy));
     stack->endMacro();
     return EditOutcome::done({}, at);

@@ -2,6 +2,7 @@
 
 #include <QFileInfo>
 
+#include "document/segment_colours.h"
 #include "evaluation/evaluation.h"
 #include "messages/diagnostic_text.h"
 
@@ -32,6 +33,7 @@ void ProjectDocument::reset(Project project, QString filePath, Diagnostics diagn
     m_undoStack.clear();
     emit contourAboutToBeReset();
     m_project = std::move(project);
+    m_colourSlots = freshColourSlots(static_cast<int>(m_project.contour.size()));
     m_diagnostics = std::move(diagnostics);
     m_filePath = std::move(filePath);
     m_fileDigest = std::move(fileDigest);
@@ -63,8 +65,16 @@ void ProjectDocument::applySegment(int row, const SegmentSpec& segment) {
     afterChange();
 }
 
-void ProjectDocument::applyInsert(int row, const SegmentSpec& segment) {
+int ProjectDocument::segmentColourSlot(int row) const {
+    return row >= 0 && row < static_cast<int>(m_colourSlots.size())
+               ? m_colourSlots[static_cast<std::size_t>(row)]
+               : std::max(row, 0) % kSegmentColourSlots;
+}
+
+void ProjectDocument::applyInsert(int row, const SegmentSpec& segment, int colourSlot) {
     emit segmentAboutToBeInserted(row);
+    m_colourSlots.insert(m_colourSlots.begin() + row,
+                         colourSlot >= 0 ? colourSlot : colourSlotFor(m_colourSlots, row));
     m_project.contour.insert(m_project.contour.begin() + row, segment);
     emit segmentInserted(row);
     afterChange();
@@ -73,6 +83,7 @@ void ProjectDocument::applyInsert(int row, const SegmentSpec& segment) {
 void ProjectDocument::applyRemove(int row) {
     emit segmentAboutToBeRemoved(row);
     m_project.contour.erase(m_project.contour.begin() + row);
+    m_colourSlots.erase(m_colourSlots.begin() + row);
     emit segmentRemoved(row);
     afterChange();
 }
@@ -83,6 +94,9 @@ void ProjectDocument::applyMove(int from, int to) {
     const SegmentSpec moved = c.at(static_cast<std::size_t>(from));
     c.erase(c.begin() + from);
     c.insert(c.begin() + to, moved);
+    const int slot = m_colourSlots.at(static_cast<std::size_t>(from));
+    m_colourSlots.erase(m_colourSlots.begin() + from);
+    m_colourSlots.insert(m_colourSlots.begin() + to, slot);
     emit segmentMoved(from, to);
     afterChange();
 }
@@ -90,6 +104,7 @@ void ProjectDocument::applyMove(int from, int to) {
 void ProjectDocument::applyContour(const std::vector<SegmentSpec>& contour) {
     emit contourAboutToBeReset();
     m_project.contour = contour;
+    keepColourSlotsFor(contour.size());
     emit contourReset();
     afterChange();
 }
@@ -140,10 +155,17 @@ void ProjectDocument::applyContourAndDesign(const std::vector<SegmentSpec>& cont
                                             const std::optional<DesignSpec>& design) {
     emit contourAboutToBeReset();
     m_project.contour = contour;
+    keepColourSlotsFor(contour.size());
     m_project.design = design;
     emit contourReset();
     emit designChanged();
     afterChange();
+}
+
+void ProjectDocument::keepColourSlotsFor(std::size_t rows) {
+    // The same rows (windows fitted, corners rounded in place): each keeps its colour; another
+    // contour starts afresh.
+    if (m_colourSlots.size() != rows) m_colourSlots = freshColourSlots(static_cast<int>(rows));
 }
 
 QString diagnosticsText(const Diagnostics& diagnostics, int limit) {

@@ -25,6 +25,10 @@ public:
     [[nodiscard]] QUndoStack* undoStack() { return &m_undoStack; }
     [[nodiscard]] const Diagnostics& diagnostics() const { return m_diagnostics; }
     [[nodiscard]] bool isValid() const { return !hasErrors(m_diagnostics); }
+    /// @brief Segment row's colour slot (document/segment_colours.h): it stays with the
+    /// segment through insertions, deletions and moves; a new file starts from the rows.
+    [[nodiscard]] int segmentColourSlot(int row) const;
+    [[nodiscard]] const std::vector<int>& segmentColourSlots() const { return m_colourSlots; }
 
     [[nodiscard]] QString filePath() const { return m_filePath; }
     /// @brief "Untitled" or the file name, for titles.
@@ -50,7 +54,8 @@ public:
 
     // Mutators for undo commands. Each emits exactly the signal that describes it.
     void applySegment(int row, const SegmentSpec& segment);
-    void applyInsert(int row, const SegmentSpec& segment);
+    /// `colourSlot` < 0: a slot neither neighbour has (colourSlotFor).
+    void applyInsert(int row, const SegmentSpec& segment, int colourSlot = -1);
     void applyRemove(int row);
     void applyMove(int from, int to);
     void applyContour(const std::vector<SegmentSpec>& contour);
@@ -101,8 +106,10 @@ signals:
 
 private:
     void afterChange();
+    void keepColourSlotsFor(std::size_t rows);
 
     Project m_project;
+    std::vector<int> m_colourSlots;  ///< one per segment
     Diagnostics m_diagnostics;
     QUndoStack m_undoStack;
     QString m_filePath;

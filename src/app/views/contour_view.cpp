@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "document/project_document.h"
 #include "project/follower_kind.h"
 #include "views/axis_format.h"
 #include "views/palette.h"
@@ -14,7 +15,8 @@
 
 namespace cam {
 
-ContourView::ContourView(ProjectDocument* document, QWidget* parent) : QCustomPlot(parent) {
+ContourView::ContourView(ProjectDocument* document, QWidget* parent)
+    : QCustomPlot(parent), m_document(document) {
     setObjectName("contourView");
     setFocusPolicy(Qt::StrongFocus);  // Escape must reach it while a point is being picked
     setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
@@ -120,7 +122,7 @@ void ContourView::setResult(const ComputeResultPtr& result) {
     bool any = false;
     for (std::size_t k = 0; k < n; ++k) {
         const auto& outline = result->outlines[k];
-        auto& points = data[k % kSegmentColorCount];
+        auto& points = data[static_cast<std::size_t>(colourSlot(static_cast<int>(k)))];
         if (!points.isEmpty()) points.append(QCPCurveData(points.size(), kGap, kGap));
         m_runs[k] = {static_cast<int>(points.size()), static_cast<int>(outline.size())};
         for (const QPointF& p : outline) {
@@ -189,7 +191,14 @@ void ContourView::setStressColouring(bool on) {
 ContourView::~ContourView() = default;
 
 QCPCurve* ContourView::segmentCurve(int k) const {
-    return m_colourCurves[static_cast<std::size_t>(k % kSegmentColorCount)];
+    return m_colourCurves[static_cast<std::size_t>(colourSlot(k))];
+}
+
+int ContourView::colourSlot(int k) const {
+    // The document's slots while they describe the drawn contour (a result of its rows).
+    const bool same =
+        m_result && m_result->outlines.size() == m_document->segmentColourSlots().size();
+    return same ? m_document->segmentColourSlot(k) : k % kSegmentColorCount;
 }
 
 std::pair<int, int> ContourView::segmentRun(int k) const {

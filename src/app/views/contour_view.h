@@ -35,6 +35,8 @@ public:
     /// @brief The curve that draws segment k (shared by every tenth segment, see
     /// m_colourCurves), and where segment k's points begin in it and how many there are.
     [[nodiscard]] QCPCurve* segmentCurve(int k) const;
+    /// @brief Segment k's colour slot: the document's (it stays with the segment).
+    [[nodiscard]] int colourSlot(int k) const;
     [[nodiscard]] std::pair<int, int> segmentRun(int k) const;
     /// @brief Colours the profile by the contact stress where the follower touches it (a
     /// project with dynamics, a contact width and materials), or not.
@@ -96,8 +98,9 @@ private:
     void keepEqualAspect();
     void setStale(const QString& reason);
 
+    ProjectDocument* m_document;
     ComputeResultPtr m_result;
-    /// One curve per segment colour: segment k is a run of colourCurves[k mod 10], the runs
+    /// One curve per segment colour: segment k is a run of colourCurves[its slot], the runs
     /// separated by a NaN point (a gap). Ten curves whatever the number of segments: drawing,
     /// replacing and closing cost what the points cost, not a plottable per segment.
     std::array<QCPCurve*, kSegmentColorCount> m_colourCurves{};

@@ -4,12 +4,15 @@
 
 #include <QColor>
 
+#include "document/segment_colours.h"
+
 namespace cam {
 
-/// @brief A colour for segment k, distinct for neighbours (Tableau 10, cycled).
-/// @brief How many colours segments cycle through: segment k is drawn in colour k mod this.
-inline constexpr int kSegmentColorCount = 10;
+/// @brief How many colours segments are drawn in.
+inline constexpr int kSegmentColorCount = kSegmentColourSlots;
 
+/// @brief The colour of slot k mod kSegmentColorCount (Tableau 10); a segment's slot is the
+/// document's segmentColourSlot, k itself where there is no document (the CLI's pictures).
 inline QColor segmentColor(int k) {
     static const QColor colors[kSegmentColorCount] = {
         {31, 119, 180}, {255, 127, 14},  {44, 160, 44},   {214, 39, 40},  {148, 103, 189},
