@@ -75,6 +75,8 @@ MainWindow::MainWindow(QWidget* parent)
     m_ui->mainToolBar->addWidget(m_play->speedBox());
     m_ui->menuView->addSeparator();
     m_ui->menuView->addAction(m_play->action());
+    m_ui->menuView->addAction(m_play->turnCamAction());
+    connect(m_play, &PlayController::turningChanged, m_views->contour, &ContourView::setTurning);
     new CursorActions(m_cursor, centralWidget(), m_ui->menuView);
     m_ui->mainToolBar->addAction(m_views->designDock->toggleViewAction());
     m_ui->menuView->addAction(m_views->designDock->toggleViewAction());

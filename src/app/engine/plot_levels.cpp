@@ -379,7 +379,7 @@ bool buildPlotCurves(const Contour& contour, double omega, std::size_t n, PlotAx
 
     // Coarser levels, each with buckets four times as wide as the one before (a quarter of its
     // points), until a level would have too few buckets.
-    const bool descending = xEnd < 0.0;  // clockwise over angle: x runs 0 → −360°
+    const bool descending = xEnd < 0.0;  // ω < 0 over angle: x runs 0 → −360°
     std::size_t samplesPerBucket = std::size_t{1} << shift;
     for (int s = shift == 0 ? 3 : shift + 2;; s += 2) {
         if (cancel.load(std::memory_order_relaxed)) return false;

@@ -71,7 +71,7 @@ struct PlotCurves {
     bool partial = false;
     /// Velocity, acceleration, jerk (each over its three curves), and r.
     std::array<PlotRange, 4> yRanges;
-    /// The plotted turn: [0, 360°] or [0, T]; [−360°, 0] when turning clockwise over angle.
+    /// The plotted turn: [0, 360°] or [0, T]; [−360°, 0] over angle at a negative speed.
     PlotRange xRange;
     std::size_t sampleCount = 0;
 

@@ -166,6 +166,12 @@ void ContourView::setResult(const ComputeResultPtr& result) {
     }
     m_xBounds = QCPRange(left, right);
     m_yBounds = QCPRange(bottom, top);
+    m_standing = data;
+    m_standingCx = cx;
+    m_standingCy = cy;
+    m_standingJx = jx;
+    m_standingJy = jy;
+    m_turnedBy = 0.0;
     for (int c = 0; c < kSegmentColorCount; ++c) {
         m_colourCurves[static_cast<std::size_t>(c)]->data()->set(data[static_cast<std::size_t>(c)],
                                                                  true);
@@ -174,7 +180,7 @@ void ContourView::setResult(const ComputeResultPtr& result) {
     // Around the contour x goes back and forth: the graph must sort the joints by x itself, or
     // its search for the visible ones skips some when zoomed in.
     m_joints->setData(jx, jy);
-    m_stress->show(result.get(), m_stressColouring);
+    m_stress->show(result.get(), m_stressColouring && !m_turning);
     if (m_autoFit) resetZoom();
     // The new contour, cursor and all, in one replot: queued first, so that the cursor's move
     // does not redraw its layer over the old contour before.
@@ -248,15 +254,74 @@ void ContourView::fitToViewport() {
 void ContourView::setCursorAngle(double phi) {
     m_cursorPhi = phi;
     if (!m_result || !m_result->ok()) return;
+    // Turning, the cam is drawn turned by −φ: its point at φ comes under the follower, which
+    // stands where it is at φ = 0 (the follower assembly turns by φ in the cam's frame,
+    // math.md §7).
+    const double turn = m_turning ? -phi : 0.0;
+    const double shown = phi + turn;  // where the ray is drawn
     const double r = m_result->contour->evaluate(phi).r;
     const double reach = std::max(r * 1.25, r + 5.0);
-    m_ray->end->setCoords(reach * std::cos(phi), reach * std::sin(phi));
-    m_rayPoint->position->setCoords(r * std::cos(phi), r * std::sin(phi));
+    m_ray->end->setCoords(reach * std::cos(shown), reach * std::sin(shown));
+    m_rayPoint->position->setCoords(r * std::cos(shown), r * std::sin(shown));
     const FollowerModel* follower = m_result->follower.get();
-    m_follower->show(follower && !m_staleLabel->isStale()
-                         ? followerGlyphAt(*follower, phi, m_result->omega)
-                         : std::nullopt);
-    replotLayer(m_cursorLayer);
+    std::optional<FollowerGlyphShape> glyph = follower && !m_staleLabel->isStale()
+                                                  ? followerGlyphAt(*follower, phi, m_result->omega)
+                                                  : std::nullopt;
+    if (glyph && turn != 0.0) glyph = cam::turnedBy(*glyph, turn);
+    m_follower->show(glyph);
+    if (turn != m_turnedBy) {
+        turnDrawing(turn);
+        queueReplot(this);  // the whole cam moves, not only the cursor's layer
+    } else {
+        replotLayer(m_cursorLayer);
+    }
+}
+
+void ContourView::turnDrawing(double angle) {
+    m_turnedBy = angle;
+    const double c = std::cos(angle), s = std::sin(angle);
+    for (std::size_t k = 0; k < m_standing.size(); ++k) {
+        QVector<QCPCurveData> points = m_standing[k];
+        for (QCPCurveData& p : points) {
+            const double x = p.key, y = p.value;
+            p.key = c * x - s * y;
+            p.value = s * x + c * y;
+        }
+        m_colourCurves[k]->data()->set(points, true);
+    }
+    const auto turned = [c, s](const QVector<double>& x, const QVector<double>& y,
+                               QCPGraph* graph) {
+        QVector<double> tx(x.size()), ty(y.size());
+        for (qsizetype k = 0; k < x.size(); ++k) {
+            tx[k] = c * x[k] - s * y[k];
+            ty[k] = s * x[k] + c * y[k];
+        }
+        graph->setData(tx, ty);
+    };
+    turned(m_standingCx, m_standingCy, m_centers);
+    turned(m_standingJx, m_standingJy, m_joints);
+}
+
+void ContourView::setTurning(bool on) {
+    if (on == m_turning) return;
+    m_turning = on;
+    m_handlesLayer->setVisible(!on);
+    m_stress->show(m_result.get(), m_stressColouring && !on);
+    if (on && m_hasBounds) {
+        // The turning cam stays in view: everything within its largest reach from the centre.
+        double reach = 0.0;
+        for (double v : {m_xBounds.lower, m_xBounds.upper, m_yBounds.lower, m_yBounds.upper}) {
+            reach = std::max(reach, std::abs(v));
+        }
+        reach *= std::sqrt(2.0);
+        xAxis->setRange(-reach, reach);
+        yAxis->setRange(-reach, reach);
+        keepEqualAspect();
+    }
+    if (!on && m_turnedBy != 0.0) turnDrawing(0.0);
+    setCursorAngle(m_cursorPhi);
+    if (!on && m_autoFit) resetZoom();
+    queueReplot(this);
 }
 
 ContourView::FollowerMarkers ContourView::followerMarkers() const { return m_follower->markers(); }
@@ -294,7 +359,7 @@ void ContourView::keyPressEvent(QKeyEvent* event) {
 }
 
 void ContourView::mousePressEvent(QMouseEvent* event) {
-    if (m_editTool->mousePress(event)) return;
+    if (!m_turning && m_editTool->mousePress(event)) return;
     QCustomPlot::mousePressEvent(event);
 }
 
@@ -303,7 +368,8 @@ void ContourView::mouseMoveEvent(QMouseEvent* event) {
     if (m_editTool->mouseMove(event)) return;
     const double x = xAxis->pixelToCoord(event->position().x());
     const double y = yAxis->pixelToCoord(event->position().y());
-    if (x != 0.0 || y != 0.0) emit cursorAngleChanged(std::atan2(y, x));
+    // A turning cam turns with the cursor: the mouse would spin it under itself.
+    if ((x != 0.0 || y != 0.0) && !m_turning) emit cursorAngleChanged(std::atan2(y, x));
     QCustomPlot::mouseMoveEvent(event);
 }
 

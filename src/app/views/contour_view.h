@@ -42,8 +42,18 @@ public:
     /// project with dynamics, a contact width and materials), or not.
     void setStressColouring(bool on);
     [[nodiscard]] const StressOverlay& stressOverlay() const { return *m_stress; }
-    /// @brief Shows the follower ray at this angle (rad) and the contour point on it.
+    /// @brief Shows the follower ray at this angle (rad) and the contour point on it; while
+    /// the view turns the cam, turns the cam by −phi under the follower standing at its place
+    /// at 0 instead.
     void setCursorAngle(double phi);
+    /// @brief Turns the cam under a follower that stands still (Play with Play Turns the Cam)
+    /// or draws the cam standing still with the follower round it (the inversion). While it
+    /// turns, the stress colours and the drag handles are hidden and the mouse moves no cursor.
+    void setTurning(bool on);
+    [[nodiscard]] bool turning() const { return m_turning; }
+    /// @brief How far the drawing of the cam is turned now (rad, counter-clockwise; 0 unless
+    /// turning).
+    [[nodiscard]] double turnedBy() const { return m_turnedBy; }
     /// @brief Shows the drag handles of this segment (-1: none).
     void setSelectedSegment(int row);
     /// @brief Fits the contour into the view with equal scales.
@@ -98,8 +108,16 @@ private:
     void keepEqualAspect();
     void setStale(const QString& reason);
 
+    /// Draws the cam turned by `angle` (rad) from the points of the last result.
+    void turnDrawing(double angle);
+
     ProjectDocument* m_document;
     ComputeResultPtr m_result;
+    bool m_turning = false;
+    double m_turnedBy = 0.0;
+    /// The cam as the result has it (turned by 0): the colour curves, centres, joints.
+    std::array<QVector<QCPCurveData>, kSegmentColorCount> m_standing;
+    QVector<double> m_standingCx, m_standingCy, m_standingJx, m_standingJy;
     /// One curve per segment colour: segment k is a run of colourCurves[its slot], the runs
     /// separated by a NaN point (a gap). Ten curves whatever the number of segments: drawing,
     /// replacing and closing cost what the points cost, not a plottable per segment.

@@ -1,5 +1,6 @@
 #include "views/follower_glyph.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
@@ -76,6 +77,19 @@ FollowerGlyph::FollowerGlyph(QCustomPlot* plot, QCPLayer* layer) {
 
 std::array<QCPAbstractItem*, 6> FollowerGlyph::items() const {
     return {m_guide, m_pivot, m_roller, m_face, m_contact, m_normal};
+}
+
+FollowerGlyphShape turnedBy(FollowerGlyphShape shape, double angle) {
+    const Eigen::Rotation2Dd turn(angle);
+    for (Eigen::Vector2d* p :
+         {&shape.guideStart, &shape.guideEnd, &shape.center, &shape.contact, &shape.normalTip}) {
+        *p = turn * *p;
+    }
+    if (shape.pivot) shape.pivot = turn * *shape.pivot;
+    if (shape.face) {
+        for (Eigen::Vector2d& p : *shape.face) p = turn * p;
+    }
+    return shape;
 }
 
 void FollowerGlyph::show(const std::optional<FollowerGlyphShape>& shape) {

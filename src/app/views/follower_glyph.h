@@ -42,6 +42,9 @@ struct FollowerGlyphShape {
 [[nodiscard]] std::optional<FollowerGlyphShape> followerGlyphAt(const FollowerModel& model,
                                                                 double phi, double omega);
 
+/// @brief `shape` turned by `angle` (rad, counter-clockwise) about the cam's centre.
+[[nodiscard]] FollowerGlyphShape turnedBy(FollowerGlyphShape shape, double angle);
+
 /// @brief Where the follower is drawn now (mm, the cam frame): for tests and pictures.
 struct FollowerMarkers {
     bool shown = false;

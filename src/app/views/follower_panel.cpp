@@ -63,8 +63,8 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
         tr("Offset e of the follower's line of motion from the cam's centre: positive to the "
            "left of its direction as seen from the centre, negative to the right "
            "(the Turning picture shows it). A positive offset lowers the "
-           "rise's pressure angle when the cam turns counter-clockwise, a "
-           "negative one when it turns clockwise; either raises the return's"),
+           "rise's pressure angle when the cam turns clockwise, a "
+           "negative one when it turns counter-clockwise; either raises the return's"),
         -1e6);
     m_offset->setSingleStep(0.5);
     m_pivotX = spinBox(this, "pivotXSpinBox", " mm",
@@ -201,9 +201,8 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
 void FollowerPanel::turnRound(bool clockwise) {
     const MotionSpec& now = m_document->project().motion;
     if (!std::isfinite(now.value) || now.value == 0.0) return;
-    const bool turnsClockwise = now.unit != SpeedUnit::PeriodS && now.value < 0.0;
-    if (clockwise == turnsClockwise) return;
-    // The same speed the other way. A period has no sign: clockwise is written in rpm.
+    if (clockwise == turnsClockwise(now)) return;
+    // The same speed the other way. A period has no sign: counter-clockwise is written in rpm.
     MotionSpec m = now;
     if (now.unit == SpeedUnit::PeriodS) {
         m.unit = SpeedUnit::Rpm;
@@ -258,7 +257,7 @@ void FollowerPanel::refresh() {
     m_side->setEnabled(arm);
     const MotionSpec& m = m_document->project().motion;
     const bool valid = std::isfinite(m.value) && m.value != 0.0;
-    const bool clockwise = valid && m.unit != SpeedUnit::PeriodS && m.value < 0.0;
+    const bool clockwise = valid && turnsClockwise(m);
     m_turning->setEnabled(valid);
     m_turning->show(clockwise, m_document->project().follower);
     m_turningText->setText(clockwise ? tr("clockwise (click the picture: the other way)")

@@ -21,7 +21,8 @@ MotionPanel::MotionPanel(ProjectDocument* document, QWidget* parent)
     m_speed = new NumberSpinBox(this);
     m_speed->setObjectName("speedSpinBox");
     m_speed->setToolTip(
-        tr("Turning speed; a negative speed turns clockwise (the Follower dock pictures the "
+        tr("Turning speed; a positive speed turns the cam clockwise under its follower, a negative "
+           "one counter-clockwise (the Follower dock pictures the "
            "direction: a click there turns the cam round)"));
     m_unit = new QComboBox(this);
     m_unit->setObjectName("speedUnitComboBox");

@@ -12,7 +12,7 @@ QSharedPointer<QCPGraphDataContainer> containerOf(const std::vector<PlotPoint>& 
     return container;
 }
 
-/// y over x, sorted by x (a cam turning clockwise has x from 0 down to −360°).
+/// y over x, sorted by x (at a negative speed x runs from 0 down to −360°).
 QSharedPointer<QCPGraphDataContainer> containerOf(const std::vector<double>& x,
                                                   const std::vector<double>& y) {
     QVector<QCPGraphData> data;

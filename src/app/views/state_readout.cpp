@@ -152,7 +152,7 @@ void StateReadout::setFollowerState(const KinematicState& s, const FollowerState
 }
 
 void StateReadout::showInstant(const KinematicState& s) {
-    // Where on the cam, 0 … 360°, whichever way it turns (s.phi = ω·t is negative clockwise).
+    // Where on the cam, 0 … 360°, whichever way it turns (s.phi = ω·t is negative when ω is).
     double phiDeg = mod360(radToDeg(s.phi));
     if (phiDeg >= 360.0) phiDeg = 0.0;  // −1e-17 reduces to 360 in floating point
     showValue(0, formatQuantity(DisplayQuantity::Time, s.t));

@@ -18,6 +18,10 @@ TurningPicture::TurningPicture(QWidget* parent) : QAbstractButton(parent) {
     setCursor(Qt::PointingHandCursor);
 }
 
+bool turnsClockwise(const MotionSpec& motion) {
+    return motion.unit == SpeedUnit::PeriodS || motion.value > 0.0;
+}
+
 void TurningPicture::show(bool clockwise, const std::optional<FollowerSpec>& follower) {
     m_clockwise = clockwise;
     m_follower = follower;
@@ -29,16 +33,16 @@ void TurningPicture::show(bool clockwise, const std::optional<FollowerSpec>& fol
                         "turn it counter-clockwise.")
                    : tr("The cam turns counter-clockwise, seen from the front (the drawing); "
                         "click to turn it clockwise.")) +
-        tr(" A period has no sign: clockwise writes the speed in rpm.") +
+        tr(" A period has no sign: counter-clockwise writes the speed in rpm.") +
         (arm        ? QString()
          : e == 0.0 ? tr(" The follower's line of motion passes through the cam's centre.")
          : e > 0.0  ? tr(" The follower's line is offset %1 mm to the left of its direction "
                           "(positive e): this lowers the pressure angle of the rise when the cam "
-                          "turns counter-clockwise and raises it when it turns clockwise.")
+                          "turns clockwise and raises it when it turns counter-clockwise.")
                          .arg(formatQuantityValue(DisplayQuantity::Length, e))
                    : tr(" The follower's line is offset %1 mm to the right of its direction "
                         "(negative e): this lowers the pressure angle of the rise when the cam "
-                        "turns clockwise and raises it when it turns counter-clockwise.")
+                        "turns counter-clockwise and raises it when it turns clockwise.")
                          .arg(formatQuantityValue(DisplayQuantity::Length, -e))));
     update();
 }

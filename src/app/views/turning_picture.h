@@ -13,6 +13,12 @@
 
 namespace cam {
 
+/// @brief Whether the cam turns clockwise under its follower, seen from the front (the drawing
+/// of the contour): a positive speed (or a period) does. The follower assembly turns by
+/// φ = ω·t in the cam's frame (math.md §7), counter-clockwise round the drawing for ω > 0, so
+/// the cam turns the other way under a follower that stands still.
+[[nodiscard]] bool turnsClockwise(const MotionSpec& motion);
+
 class TurningPicture : public QAbstractButton {
     Q_OBJECT
 public:

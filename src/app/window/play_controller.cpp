@@ -40,7 +40,19 @@ PlayController::PlayController(CursorModel* cursor, QWidget* window)
         m_cursor->setTime(m_cursor->time() + elapsed * speedFactor());
     });
     m_action->setProperty(kShortcutTitle, tr("Play / Pause"));
+    m_turnCam = new QAction(tr("Play Turns the Cam"), window);
+    m_turnCam->setObjectName("actionPlayTurnsCam");
+    m_turnCam->setCheckable(true);
+    m_turnCam->setChecked(QSettings().value("view/playTurnsCam", true).toBool());
+    m_turnCam->setToolTip(
+        tr("Play turns the cam under a follower that stands still, as on the machine; off, "
+           "the cam stands still and the follower goes round it"));
+    connect(m_turnCam, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue("view/playTurnsCam", on);
+        emit turningChanged(turning());
+    });
     connect(m_action, &QAction::toggled, this, [this](bool on) {
+        emit turningChanged(turning());
         m_action->setText(on ? tr("Pause") : tr("Play"));
         m_action->setIcon(actionIcon(on ? "media-playback-pause" : "media-playback-start"));
         if (on) {
@@ -51,6 +63,8 @@ PlayController::PlayController(CursorModel* cursor, QWidget* window)
         }
     });
 }
+
+bool PlayController::turning() const { return m_action->isChecked() && m_turnCam->isChecked(); }
 
 double PlayController::speedFactor() const { return m_speed->currentData().toDouble(); }
 
