@@ -2044,12 +2044,12 @@
         <translation>Segment einfügen</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+12" />
         <source>Delete segment</source>
         <translation>Segment löschen</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+10" />
         <source>Move segment</source>
         <translation>Segment verschieben</translation>
     </message>
@@ -2182,17 +2182,17 @@
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+41" />
         <source>Insert segment</source>
         <translation>Segment einfügen</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+7" />
         <source>Split window</source>
         <translation>Fenster teilen</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+12" />
         <source>Select the segment to delete first.</source>
         <translation>Wählen Sie zuerst das zu löschende Segment.</translation>
     </message>
@@ -2312,7 +2312,7 @@
 <context>
     <name>cam::ContourView</name>
     <message>
-        <location filename="../../src/app/views/contour_view.cpp" line="+21" />
+        <location filename="../../src/app/views/contour_view.cpp" line="+23" />
         <source>x [mm]</source>
         <translation>x [mm]</translation>
     </message>
@@ -2461,7 +2461,7 @@
 <context>
     <name>cam::DesignTableModel</name>
     <message>
-        <location filename="../../src/app/models/design_table_model.cpp" line="+145" />
+        <location filename="../../src/app/models/design_table_model.cpp" line="+169" />
         <source>How the follower moves over this segment (VDI 2143)</source>
         <translation>Wie sich der Stößel über diesen Abschnitt bewegt (VDI 2143)</translation>
     </message>
@@ -2551,7 +2551,7 @@
         <translation>a1 [%1/°²]</translation>
     </message>
     <message>
-        <location line="+62" />
+        <location line="+66" />
         <source>Edit %1 of design segment %2</source>
         <translation>%1 von Bewegungsabschnitt %2 ändern</translation>
     </message>
@@ -2653,7 +2653,7 @@
 <context>
     <name>cam::DockLayout</name>
     <message>
-        <location filename="../../src/app/window/dock_layout.cpp" line="+90" />
+        <location filename="../../src/app/window/dock_layout.cpp" line="+93" />
         <source>Control Points</source>
         <translation>Kontrollpunkte</translation>
     </message>
@@ -2693,7 +2693,7 @@
         <translation>Die Kontur aus der Bewegung des Stößels entwerfen (Strg+D)</translation>
     </message>
     <message>
-        <location line="+118" />
+        <location line="+176" />
         <source>&lt;b&gt;Segments&lt;/b&gt;: the contour as a table, one row per arc, line or spline piece. Each owns a polar window [φ start, φ end) of the turn; together they cover one turn. Type into a cell and press Enter; Ins inserts, Del deletes. A red cell's tooltip names its problem. F1: the user guide's section on the table.</source>
         <translation>&lt;b&gt;Segmente&lt;/b&gt;: die Kontur als Tabelle, eine Zeile je Bogen, Gerade oder Spline-Stück. Jedes besitzt ein Polarfenster [φ Anfang, φ Ende) der Umdrehung; zusammen decken sie eine Umdrehung ab. In eine Zelle tippen und Eingabe drücken; Einfg fügt ein, Entf löscht. Der Tooltip einer roten Zelle nennt ihr Problem. F1: der Abschnitt des Handbuchs über die Tabelle.</translation>
     </message>
@@ -3150,12 +3150,7 @@
         <translation>Radius der Rolle</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>Offset e of the follower's line of motion from the cam's centre: positive to the left of its direction as seen from the centre, negative to the right (the Turning picture shows it). A positive offset lowers the rise's pressure angle when the cam turns counter-clockwise, a negative one when it turns clockwise; either raises the return's</source>
-        <translation>Versatz e der Bewegungslinie des Stößels von der Scheibenmitte: positiv links seiner Richtung von der Mitte aus gesehen, negativ rechts (das Bild „Drehrichtung“ zeigt es). Ein positiver Versatz senkt den Druckwinkel des Anstiegs, wenn die Scheibe gegen den Uhrzeigersinn dreht, ein negativer, wenn sie im Uhrzeigersinn dreht; beide erhöhen den des Rückhubs</translation>
-    </message>
-    <message>
-        <location line="+8" />
+        <location line="+13" />
         <source>Pivot of the arm, x (in the cam's frame at 0°)</source>
         <translation>Drehpunkt des Hebels, x (im Scheibensystem bei 0°)</translation>
     </message>
@@ -3280,7 +3275,12 @@
         <translation>ρ [mm]</translation>
     </message>
     <message>
-        <location line="+188" />
+        <location line="-69" />
+        <source>Offset e of the follower's line of motion from the cam's centre: positive to the left of its direction as seen from the centre, negative to the right (the Turning picture shows it). A positive offset lowers the rise's pressure angle when the cam turns clockwise, a negative one when it turns counter-clockwise; either raises the return's</source>
+        <translation>Versatz e der Bewegungslinie des Stößels vom Scheibenmittelpunkt: positiv links seiner Richtung, vom Mittelpunkt aus gesehen, negativ rechts (das Bild Drehrichtung zeigt es). Ein positiver Versatz senkt den Druckwinkel des Hubs, wenn sich die Scheibe im Uhrzeigersinn dreht, ein negativer, wenn sie sich gegen den Uhrzeigersinn dreht; beide erhöhen den des Rückhubs</translation>
+    </message>
+    <message>
+        <location line="+256" />
         <location line="+29" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
@@ -4033,7 +4033,7 @@
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+154" />
+        <location line="+156" />
         <source>Cursor at %1</source>
         <translation>Cursor bei %1</translation>
     </message>
@@ -4046,7 +4046,7 @@
 <context>
     <name>cam::MotionDesignPanel</name>
     <message>
-        <location filename="../../src/app/views/motion_design_panel.cpp" line="+73" />
+        <location filename="../../src/app/views/motion_design_panel.cpp" line="+95" />
         <source>New Design</source>
         <translation>Neuer Entwurf</translation>
     </message>
@@ -4081,7 +4081,7 @@
         <translation>Den kleinsten Grundkreisradius setzen, bei dem der Stößel alle Prüfungen besteht: Druckwinkel im Hub und Rückhub innerhalb der Grenze, kein Unterschnitt (ein Rückgängig-Schritt)</translation>
     </message>
     <message>
-        <location line="+223" />
+        <location line="+228" />
         <source>Best Offset</source>
         <translation>Bester Versatz</translation>
     </message>
@@ -4091,7 +4091,7 @@
         <translation>Den Versatz des Stößels setzen, der den kleinsten Grundkreisradius erlaubt, und diesen Radius, und den zulässigen Bereich über Grundkreisradius × Versatz zeigen (ein Rückgängig-Schritt; Spitzen- oder Rollenstößel mit Schubbewegung)</translation>
     </message>
     <message>
-        <location line="-210" />
+        <location line="-215" />
         <source>Largest distance of the arc table from the exact profile</source>
         <translation>Größter Abstand der Bogentabelle vom exakten Profil</translation>
     </message>
@@ -4116,7 +4116,7 @@
         <translation>Toleranz</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+23" />
         <source>Split</source>
         <translation>Teilen</translation>
     </message>
@@ -4168,7 +4168,7 @@
         <translation>Strenge beim Druckwinkel ändern</translation>
     </message>
     <message>
-        <location line="+72" />
+        <location line="+76" />
         <source>Best Pivot</source>
         <translation>Bester Drehpunkt</translation>
     </message>
@@ -4194,17 +4194,17 @@
     </message>
     <message>
         <location line="+6" />
-        <location line="+36" />
+        <location line="+38" />
         <source>Smallest base radius</source>
         <translation>Kleinster Grundkreisradius</translation>
     </message>
     <message>
-        <location line="-12" />
+        <location line="-14" />
         <source>Smallest base radius %1 at offset %2: %3 binds at %4.</source>
         <translation>Kleinster Grundkreisradius %1 bei Versatz %2: %3 begrenzt bei %4.</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+13" />
         <source>Best offset</source>
         <translation>Bester Versatz</translation>
     </message>
@@ -4224,12 +4224,12 @@
         <translation>Bewegungsabschnitt %1 löschen</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+57" />
         <source>This project has no motion design. New Design starts one: lay out the follower's motion, then Synthesize makes the contour from it.</source>
         <translation>Dieses Projekt hat keinen Bewegungsentwurf. „Neuer Entwurf“ legt einen an: die Bewegung des Stößels festlegen, dann erzeugt Synthetisieren daraus die Kontur.</translation>
     </message>
     <message numerus="yes">
-        <location line="+7" />
+        <location line="+8" />
         <source>Last synthesis: %n segment(s), at most %1 from the exact profile. The follower on them against the law (%2 angles): lift %3, velocity %4, acceleration %5 (the arcs are only tangent-continuous: the acceleration jumps at their joints).</source>
         <translation>
             <numerusform>Letzte Synthese: %n Abschnitt, höchstens %1 vom exakten Profil. Der Stößel darauf gegenüber dem Gesetz (%2 Winkel): Hub %3, Geschwindigkeit %4, Beschleunigung %5 (Bögen sind nur tangentenstetig: die Beschleunigung springt an ihren Übergängen).</numerusform>
@@ -4237,7 +4237,7 @@
         </translation>
     </message>
     <message>
-        <location line="+83" />
+        <location line="+84" />
         <source>The follower on the contour as it is, against the law (%1 samples): lift %2, velocity %3, acceleration %4.</source>
         <translation>Der Stößel auf der jetzigen Kontur gegenüber dem Gesetz (%1 Stützstellen): Hub %2, Geschwindigkeit %3, Beschleunigung %4.</translation>
     </message>
@@ -4247,7 +4247,7 @@
         <translation>Der Entwurf ist nicht herstellbar: %1</translation>
     </message>
     <message>
-        <location line="-141" />
+        <location line="-179" />
         <source>Finding the placement that allows the smallest base radius…</source>
         <translation>Suche die Lage, die den kleinsten Grundkreisradius erlaubt…</translation>
     </message>
@@ -4257,12 +4257,12 @@
         <translation>Kleinster Grundkreisradius %1 mit dem Drehpunkt %2 von der Kurvenscheibenmitte: %3 begrenzt bei %4.</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+11" />
         <source>Best pivot</source>
         <translation>Bester Drehpunkt</translation>
     </message>
     <message>
-        <location line="+118" />
+        <location line="+154" />
         <source>The design cannot be drawn at this speed.</source>
         <translation>Der Entwurf lässt sich bei dieser Drehzahl nicht zeichnen.</translation>
     </message>
@@ -4307,7 +4307,7 @@
         <translation>Noch keine Kontur: Synthetisieren erzeugt sie aus diesem Entwurf.</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="-108" />
         <source>Synthesize fits the exact profile with tangent arcs within the tolerance and replaces the contour (one undo step).</source>
         <translation>Synthetisieren nähert das exakte Profil innerhalb der Toleranz durch tangentiale Bögen an und ersetzt die Kontur (ein Rückgängig-Schritt).</translation>
     </message>
@@ -4316,11 +4316,11 @@
     <name>cam::MotionPanel</name>
     <message>
         <location filename="../../src/app/views/motion_panel.cpp" line="+24" />
-        <source>Turning speed; a negative speed turns clockwise (the Follower dock pictures the direction: a click there turns the cam round)</source>
-        <translation>Drehzahl; eine negative dreht im Uhrzeigersinn (das Dock Stößel zeigt die Drehrichtung als Bild: ein Klick dort kehrt sie um)</translation>
+        <source>Turning speed; a positive speed turns the cam clockwise under its follower, a negative one counter-clockwise (the Follower dock pictures the direction: a click there turns the cam round)</source>
+        <translation>Drehzahl; eine positive dreht die Scheibe unter ihrem Stößel im Uhrzeigersinn, eine negative gegen den Uhrzeigersinn (das Dock Stößel zeigt die Drehrichtung: ein Klick dort kehrt sie um)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+5" />
         <source>rad/s</source>
         <translation>rad/s</translation>
     </message>
@@ -4370,6 +4370,42 @@ T = %3</translation>
         <location line="+5" />
         <source>The speed must not be 0 (and a period must be positive).</source>
         <translation>Die Drehzahl darf nicht 0 sein (und eine Periode muss positiv sein).</translation>
+    </message>
+</context>
+<context>
+    <name>cam::NumberDelegate</name>
+    <message>
+        <location filename="../../src/app/models/delegates.cpp" line="+52" />
+        <source>%1, row %2</source>
+        <translation>%1, Zeile %2</translation>
+    </message>
+</context>
+<context>
+    <name>cam::NumberSpinBox</name>
+    <message>
+        <location filename="../../src/app/widgets/number_spin_box.cpp" line="+165" />
+        <source>This field</source>
+        <translation>Dieses Feld</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>%1: %2 is outside %3 … %4; it stays %5.</source>
+        <translation>%1: %2 liegt außerhalb %3 … %4; es bleibt %5.</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1: %2 is beyond the largest number there is (about 1.8E308); it stays %3.</source>
+        <translation>%1: %2 ist größer als die größte darstellbare Zahl (etwa 1,8E308); es bleibt %3.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>%1: “%2” is not a number yet; it stays %3.</source>
+        <translation>%1: „%2“ ist noch keine Zahl; es bleibt %3.</translation>
+    </message>
+    <message>
+        <location line="+35" />
+        <source>%1: “%2” cannot be part of a number: type digits, %3 for decimals and e for a power of ten (1.5e-3).</source>
+        <translation>%1: „%2“ kann nicht Teil einer Zahl sein: Ziffern eingeben, %3 für Dezimalstellen und e für eine Zehnerpotenz (1,5e-3).</translation>
     </message>
 </context>
 <context>
@@ -4425,12 +4461,12 @@ T = %3</translation>
     <name>cam::PlayController</name>
     <message>
         <location filename="../../src/app/window/play_controller.cpp" line="+17" />
-        <location line="+27" />
+        <location line="+39" />
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-23" />
+        <location line="-35" />
         <source>Turn the cam with the follower riding it (F5)</source>
         <translation>Die Scheibe drehen, der Stößel fährt mit (F5)</translation>
     </message>
@@ -4445,7 +4481,17 @@ T = %3</translation>
         <translation>Abspielen / Pause</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
+        <source>Play Turns the Cam</source>
+        <translation>Abspielen dreht die Scheibe</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Play turns the cam under a follower that stands still, as on the machine; off, the cam stands still and the follower goes round it</source>
+        <translation>Abspielen dreht die Scheibe unter dem stillstehenden Stößel, wie auf der Maschine; aus: die Scheibe steht still und der Stößel läuft um sie herum</translation>
+    </message>
+    <message>
+        <location line="+8" />
         <source>Pause</source>
         <translation>Pause</translation>
     </message>
@@ -4453,12 +4499,12 @@ T = %3</translation>
 <context>
     <name>cam::ProjectDocument</name>
     <message>
-        <location filename="../../src/app/document/project_document.cpp" line="+22" />
+        <location filename="../../src/app/document/project_document.cpp" line="+23" />
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location line="+130" />
+        <location line="+152" />
         <source>… and %1 more</source>
         <translation>… und %1 weitere</translation>
     </message>
@@ -4696,6 +4742,24 @@ Möchten Sie die Datei ersetzen?</translation>
     </message>
 </context>
 <context>
+    <name>cam::ReadOnlyCells</name>
+    <message>
+        <location filename="../../src/app/widgets/read_only_cells.cpp" line="+29" />
+        <source>%1, row %2</source>
+        <translation>%1, Zeile %2</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>%1 is not typed in.</source>
+        <translation>%1 wird nicht eingegeben.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1 is not typed in: %2</source>
+        <translation>%1 wird nicht eingegeben: %2</translation>
+    </message>
+</context>
+<context>
     <name>cam::RecoveryPrompt</name>
     <message>
         <location filename="../../src/app/files/recovery_prompt.cpp" line="+18" />
@@ -4922,7 +4986,7 @@ Möchten Sie die Datei ersetzen?</translation>
         <translation>Polares Fenster [φ Anfang, φ Ende), Grad</translation>
     </message>
     <message>
-        <location line="+90" />
+        <location line="+94" />
         <source>Edit %1 of segment %2</source>
         <translation>%1 von Segment %2 ändern</translation>
     </message>
@@ -5426,12 +5490,12 @@ blau 0 … rot %1 (größte)</translation>
 %1</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+13" />
         <source>Synthesized: the contour already is this design's.</source>
         <translation>Synthetisiert: die Kontur ist bereits die dieses Entwurfs.</translation>
     </message>
     <message numerus="yes">
-        <location line="+6" />
+        <location line="+7" />
         <source>Synthesized %n segment(s) within %1 in %2</source>
         <translation>
             <numerusform>%n Abschnitt innerhalb %1 in %2 synthetisiert</numerusform>
@@ -5442,7 +5506,7 @@ blau 0 … rot %1 (größte)</translation>
 <context>
     <name>cam::TurningPicture</name>
     <message>
-        <location filename="../../src/app/views/turning_picture.cpp" line="+28" />
+        <location filename="../../src/app/views/turning_picture.cpp" line="+32" />
         <source>The cam turns clockwise, seen from the front (the drawing); click to turn it counter-clockwise.</source>
         <translation>Die Scheibe dreht im Uhrzeigersinn, von vorn (auf die Zeichnung) gesehen; klicken, um sie gegen den Uhrzeigersinn drehen zu lassen.</translation>
     </message>
@@ -5453,23 +5517,23 @@ blau 0 … rot %1 (größte)</translation>
     </message>
     <message>
         <location line="+2" />
-        <source> A period has no sign: clockwise writes the speed in rpm.</source>
-        <translation> Eine Periode hat kein Vorzeichen: im Uhrzeigersinn schreibt die Drehzahl in U/min.</translation>
+        <source> A period has no sign: counter-clockwise writes the speed in rpm.</source>
+        <translation> Eine Periode hat kein Vorzeichen: gegen den Uhrzeigersinn wird die Drehzahl in 1/min geschrieben.</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source> The follower's line of motion passes through the cam's centre.</source>
-        <translation> Die Bewegungslinie des Stößels geht durch die Scheibenmitte.</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source> The follower's line is offset %1 mm to the left of its direction (positive e): this lowers the pressure angle of the rise when the cam turns counter-clockwise and raises it when it turns clockwise.</source>
-        <translation> Die Linie des Stößels ist um %1 mm links seiner Richtung versetzt (positives e): das senkt den Druckwinkel des Anstiegs, wenn die Scheibe gegen den Uhrzeigersinn dreht, und erhöht ihn, wenn sie im Uhrzeigersinn dreht.</translation>
+        <location line="+3" />
+        <source> The follower's line is offset %1 mm to the left of its direction (positive e): this lowers the pressure angle of the rise when the cam turns clockwise and raises it when it turns counter-clockwise.</source>
+        <translation> Die Linie des Stößels ist um %1 mm links seiner Richtung versetzt (positives e): das senkt den Druckwinkel des Hubs, wenn sich die Scheibe im Uhrzeigersinn dreht, und erhöht ihn, wenn sie sich gegen den Uhrzeigersinn dreht.</translation>
     </message>
     <message>
         <location line="+4" />
-        <source> The follower's line is offset %1 mm to the right of its direction (negative e): this lowers the pressure angle of the rise when the cam turns clockwise and raises it when it turns counter-clockwise.</source>
-        <translation> Die Linie des Stößels ist um %1 mm rechts seiner Richtung versetzt (negatives e): das senkt den Druckwinkel des Anstiegs, wenn die Scheibe im Uhrzeigersinn dreht, und erhöht ihn, wenn sie gegen den Uhrzeigersinn dreht.</translation>
+        <source> The follower's line is offset %1 mm to the right of its direction (negative e): this lowers the pressure angle of the rise when the cam turns counter-clockwise and raises it when it turns clockwise.</source>
+        <translation> Die Linie des Stößels ist um %1 mm rechts seiner Richtung versetzt (negatives e): das senkt den Druckwinkel des Hubs, wenn sich die Scheibe gegen den Uhrzeigersinn dreht, und erhöht ihn, wenn sie sich im Uhrzeigersinn dreht.</translation>
+    </message>
+    <message>
+        <location line="-5" />
+        <source> The follower's line of motion passes through the cam's centre.</source>
+        <translation> Die Bewegungslinie des Stößels geht durch die Scheibenmitte.</translation>
     </message>
 </context>
 <context>
