@@ -117,8 +117,21 @@ TEST(TurningDirection, PlayTurnsTheCamUnderAFollowerThatStandsStill) {
     ASSERT_TRUE(result && result->follower);
     const double omega = result->omega;
     ASSERT_GT(omega, 0.0);
+    const QCPRange xBefore = view->xAxis->range(), yBefore = view->yAxis->range();
     window.playAction()->trigger();
     EXPECT_TRUE(view->turning());
+    // The turning cam stays in view: its farthest point, turned anywhere.
+    double far = 0.0;
+    for (int k = 0; k < static_cast<int>(window.document()->project().contour.size()); ++k) {
+        const auto [first, count] = view->segmentRun(k);
+        for (int i = first; i < first + count; ++i) {
+            const auto p = view->segmentCurve(k)->data()->at(i);
+            far = std::max(far, std::hypot(p->key, p->value));
+        }
+    }
+    EXPECT_GT(far, 29.0);  // the lobe's top (r = 30 mm)
+    EXPECT_TRUE(view->xAxis->range().contains(-far) && view->xAxis->range().contains(far));
+    EXPECT_TRUE(view->yAxis->range().contains(-far) && view->yAxis->range().contains(far));
     window.playAction()->trigger();  // paused: the cam stands still, drawn as the file has it
     EXPECT_FALSE(view->turning());
     window.playAction()->trigger();
@@ -160,6 +173,11 @@ TEST(TurningDirection, PlayTurnsTheCamUnderAFollowerThatStandsStill) {
     EXPECT_NEAR(view->followerMarkers().center.x(), st.center.x(), 1e-9);
     EXPECT_NEAR(view->followerMarkers().center.y(), st.center.y(), 1e-9);
     window.playAction()->trigger();
+    // Stopped, the view is where it was before Play.
+    EXPECT_NEAR(view->xAxis->range().lower, xBefore.lower, 1e-9);
+    EXPECT_NEAR(view->xAxis->range().upper, xBefore.upper, 1e-9);
+    EXPECT_NEAR(view->yAxis->range().lower, yBefore.lower, 1e-9);
+    EXPECT_NEAR(view->yAxis->range().upper, yBefore.upper, 1e-9);
 }
 
 }  // namespace

@@ -308,19 +308,32 @@ void ContourView::setTurning(bool on) {
     m_handlesLayer->setVisible(!on);
     m_stress->show(m_result.get(), m_stressColouring && !on);
     if (on && m_hasBounds) {
-        // The turning cam stays in view: everything within its largest reach from the centre.
+        // The turning cam stays in view: the circle its farthest point sweeps, and the
+        // follower's reach beyond it (the bounds' own margins for a roller or an arm).
+        m_rangesBeforeTurning = {xAxis->range(), yAxis->range()};
         double reach = 0.0;
+        for (const auto& curve : m_standing) {
+            for (const QCPCurveData& p : curve) {
+                if (std::isfinite(p.key)) reach = std::max(reach, std::hypot(p.key, p.value));
+            }
+        }
         for (double v : {m_xBounds.lower, m_xBounds.upper, m_yBounds.lower, m_yBounds.upper}) {
             reach = std::max(reach, std::abs(v));
         }
-        reach *= std::sqrt(2.0);
-        xAxis->setRange(-reach, reach);
-        yAxis->setRange(-reach, reach);
+        const double pad = 0.08 * 2.0 * reach;
+        xAxis->setRange(-reach - pad, reach + pad);
+        yAxis->setRange(-reach - pad, reach + pad);
         keepEqualAspect();
     }
     if (!on && m_turnedBy != 0.0) turnDrawing(0.0);
     setCursorAngle(m_cursorPhi);
-    if (!on && m_autoFit) resetZoom();
+    if (!on && m_rangesBeforeTurning) {
+        // Back where the user had the view (or fitted anew while it follows the contour).
+        xAxis->setRange(m_rangesBeforeTurning->first);
+        yAxis->setRange(m_rangesBeforeTurning->second);
+        m_rangesBeforeTurning.reset();
+        if (m_autoFit) resetZoom();
+    }
     queueReplot(this);
 }
 

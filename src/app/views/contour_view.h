@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <memory>
+#include <optional>
 
 #include "engine/compute_result.h"
 #include "views/contour_edit_tool.h"
@@ -115,6 +116,7 @@ private:
     ComputeResultPtr m_result;
     bool m_turning = false;
     double m_turnedBy = 0.0;
+    std::optional<std::pair<QCPRange, QCPRange>> m_rangesBeforeTurning;
     /// The cam as the result has it (turned by 0): the colour curves, centres, joints.
     std::array<QVector<QCPCurveData>, kSegmentColorCount> m_standing;
     QVector<double> m_standingCx, m_standingCy, m_standingJx, m_standingJy;

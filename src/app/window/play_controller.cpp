@@ -43,6 +43,7 @@ PlayController::PlayController(CursorModel* cursor, QWidget* window)
     m_turnCam = new QAction(tr("Play Turns the Cam"), window);
     m_turnCam->setObjectName("actionPlayTurnsCam");
     m_turnCam->setCheckable(true);
+    m_turnCam->setIcon(actionIcon("camwright-turning-cam"));
     m_turnCam->setChecked(QSettings().value("view/playTurnsCam", true).toBool());
     m_turnCam->setToolTip(
         tr("Play turns the cam under a follower that stands still, as on the machine; off, "
