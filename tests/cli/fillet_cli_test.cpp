@@ -14,21 +14,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string square() {
-    const fs::path p = fs::temp_directory_path() / "camwright_fillet_square.cam.json";
+/// A square of four lines, written into `dir` (each test its own folder: under ctest -j2 a
+/// shared file was rewritten by one test while another read it).
+std::string square(const test::TempDir& dir) {
+    const std::string p = dir.file("square.cam.json");
     std::ofstream(p) << R"({"format": "camwright", "version": 1, "motion": {"period_s": 1},
       "contour": [{"type": "line", "from": [10, -10], "to": [10, 10]},
                   {"type": "line", "from": [10, 10], "to": [-10, 10]},
                   {"type": "line", "from": [-10, 10], "to": [-10, -10]},
                   {"type": "line", "from": [-10, -10], "to": [10, -10]}]})";
-    return p.string();
+    return p;
 }
 
 TEST(CliFillet, RoundsASquareCornerIntoAValidProject) {
-    const std::string out = (fs::temp_directory_path() / "camwright_fillet_out.cam.json").string();
-    fs::remove(out);
+    const test::TempDir dir;
+    const std::string out = dir.file("out.cam.json");
     const auto r =
-        test::runCli({"fillet", square(), "--joint", "1", "--radius", "3", "--out", out});
+        test::runCli({"fillet", square(dir), "--joint", "1", "--radius", "3", "--out", out});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     // A 90° corner at (10, 10): the centre is 3 mm in from both sides.
@@ -47,7 +49,7 @@ TEST(CliFillet, OutKeepsTheModeAndTheSymlinkOfAnExistingProject) {
     fs::create_symlink("projects/cam.cam.json", dir.path() / "current.cam.json");
     const std::string out = dir.file("current.cam.json");
     const auto r =
-        test::runCli({"fillet", square(), "--joint", "1", "--radius", "3", "--out", out});
+        test::runCli({"fillet", square(dir), "--joint", "1", "--radius", "3", "--out", out});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(fs::is_symlink(out));
     EXPECT_EQ(test::fileMode(out), 0600);
@@ -55,8 +57,9 @@ TEST(CliFillet, OutKeepsTheModeAndTheSymlinkOfAnExistingProject) {
 }
 
 TEST(CliFillet, RadiusFromSpeedAccelerationAndAdmissibleError) {
-    const std::string out = (fs::temp_directory_path() / "camwright_fillet_out2.cam.json").string();
-    const auto r = test::runCli({"fillet", square(), "--joint", "2", "--speed", "100", "--accel",
+    const test::TempDir dir;
+    const std::string out = dir.file("out.cam.json");
+    const auto r = test::runCli({"fillet", square(dir), "--joint", "2", "--speed", "100", "--accel",
                                  "5000", "--vae", "0.5", "--out", out});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_DOUBLE_EQ(nlohmann::json::parse(r.out).at("radius_mm").get<double>(),
@@ -64,22 +67,21 @@ TEST(CliFillet, RadiusFromSpeedAccelerationAndAdmissibleError) {
 }
 
 TEST(CliFillet, RefusesWhatCannotBeDoneAndSaysWhy) {
-    const std::string out =
-        (fs::temp_directory_path() / "camwright_fillet_never.cam.json").string();
-    fs::remove(out);
+    const test::TempDir dir;
+    const std::string out = dir.file("never.cam.json");
     const auto tooBig =
-        test::runCli({"fillet", square(), "--joint", "1", "--radius", "25", "--out", out});
+        test::runCli({"fillet", square(dir), "--joint", "1", "--radius", "25", "--out", out});
     EXPECT_EQ(tooBig.exitCode, 3);
     EXPECT_NE(tooBig.err.find("25 mm"), std::string::npos) << tooBig.err;
     EXPECT_NE(tooBig.err.find("below 20 mm"), std::string::npos) << tooBig.err;
     EXPECT_FALSE(fs::exists(out));  // nothing half-written
     const std::vector<std::pair<std::vector<std::string>, int>> usage{
-        {{"fillet", square(), "--radius", "3", "--out", out}, 1},                  // no joint
-        {{"fillet", square(), "--joint", "1", "--out", out}, 1},                   // no radius
-        {{"fillet", square(), "--joint", "1", "--radius", "3"}, 1},                // no --out
-        {{"fillet", square(), "--joint", "9", "--radius", "3", "--out", out}, 2},  // no joint 9
-        {{"fillet", square(), "--joint", "1", "--radius", "-3", "--out", out}, 2},
-        {{"fillet", square(), "--joint", "1", "--speed", "100", "--out", out}, 1},  // no --accel
+        {{"fillet", square(dir), "--radius", "3", "--out", out}, 1},                  // no joint
+        {{"fillet", square(dir), "--joint", "1", "--out", out}, 1},                   // no radius
+        {{"fillet", square(dir), "--joint", "1", "--radius", "3"}, 1},                // no --out
+        {{"fillet", square(dir), "--joint", "9", "--radius", "3", "--out", out}, 2},  // no joint 9
+        {{"fillet", square(dir), "--joint", "1", "--radius", "-3", "--out", out}, 2},
+        {{"fillet", square(dir), "--joint", "1", "--speed", "100", "--out", out}, 1},  // no --accel
     };
     for (const auto& [args, code] : usage) {
         const auto r = test::runCli(args);

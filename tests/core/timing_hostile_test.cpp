@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/angles.h"  // kPi
 #include "core/test_projects.h"
 #include "io/project_json.h"
 #include "test_support.h"
@@ -37,8 +38,6 @@ using Eigen::Vector2d;
 using Eigen::Vector3d;
 using test::RefPiece;
 using test::relClose;
-
-constexpr double kPi = std::numbers::pi;
 
 std::string textOf(const Diagnostics& errors) {
     std::string all;

@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/angles.h"  // kPi
 #include "test_support.h"
 #include "timing/machining_time.h"
 #include "timing_reference.h"
@@ -44,8 +45,6 @@ using test::referenceOptimal;
 using test::referenceTime;
 using test::RefPiece;
 using test::relClose;
-
-constexpr double kPi = std::numbers::pi;
 
 ToolPath pathOf(std::vector<PathSegment> segments) {
     ToolPath path;

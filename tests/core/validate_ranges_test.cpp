@@ -26,10 +26,6 @@ std::pair<std::string, std::string> firstError(const Project& p) {
     return {};
 }
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
-
 /// Every sampled quantity and every analysed value of a project is finite.
 void expectFiniteEverywhere(const Project& p, const char* what) {
     const auto contour = Contour::build(p);
@@ -71,7 +67,7 @@ TEST(SoundRanges, SpeedsOutsideTheirRangeAreRefusedInTheUnitGiven) {
         const auto [where, message] =
             firstError(test::splitCircle(5, 20, {0, 180, 360}, {c.unit, c.value}));
         EXPECT_TRUE(where.rfind("motion.", 0) == 0) << c.value << ": " << where;
-        EXPECT_TRUE(contains(message, c.range)) << c.value << ": " << message;
+        EXPECT_TRUE(test::contains(message, c.range)) << c.value << ": " << message;
     }
     // The edges themselves are inside, in either turning direction, and compute finite values.
     for (const MotionSpec m :
@@ -89,7 +85,7 @@ TEST(SoundRanges, RadiiBelowTheJointToleranceAreRefused) {
     Project p = test::splitCircle(1e-301, 1e-300, {0, 180, 360});
     auto [where, message] = firstError(p);
     EXPECT_EQ(where, "contour[0].radius");
-    EXPECT_TRUE(contains(message, "at least 1e-06 mm")) << message;
+    EXPECT_TRUE(test::contains(message, "at least 1e-06 mm")) << message;
     // Radius 1e-6 mm itself is a (tiny) cam, and computes.
     p = test::splitCircle(1e-7, 1e-6, {0, 180, 360});
     EXPECT_EQ(firstError(p).first, "") << firstError(p).second;
@@ -118,8 +114,8 @@ TEST(SoundRanges, AWindowEndingWhereTheRayOnlyTouchesItsArcIsRefused) {
     // At 612d090 this validated, and `analyze` gave the joint tangent_break_deg null, "C2".
     const auto [where, message] = firstError(lensCam(30.0));
     EXPECT_EQ(where, "contour[0].phi_start");
-    EXPECT_TRUE(contains(message, "only grazes")) << message;
-    EXPECT_TRUE(contains(message, "1e-06 rad")) << message;
+    EXPECT_TRUE(test::contains(message, "only grazes")) << message;
+    EXPECT_TRUE(test::contains(message, "1e-06 rad")) << message;
     // 1e-8° before the tangent the ray still crosses at 2.5e-5 rad (tan ψ = r/|r'|, r' from
     // the circle's polar equation): steep enough, and every number stays finite.
     const Project close = lensCam(30.0 - 1e-8);
@@ -133,17 +129,17 @@ TEST(SoundRanges, MachineLimitsOutsideTheirRangeAreRefused) {
     p.machining->axisAccel = {1e-320, 1000};  // a denormal: the timing divided by it
     auto [where, message] = firstError(p);
     EXPECT_EQ(where, "machining.axis_accel[0]");
-    EXPECT_TRUE(contains(message, "between 1e-06 and 1e+12 mm/s²")) << message;
+    EXPECT_TRUE(test::contains(message, "between 1e-06 and 1e+12 mm/s²")) << message;
     p.machining->axisAccel = {1000, 1000};
     p.machining->feedMax = 1e300;
     std::tie(where, message) = firstError(p);
     EXPECT_EQ(where, "machining.feed_max");
-    EXPECT_TRUE(contains(message, "between 1e-06 and 1000000000 mm/s")) << message;
+    EXPECT_TRUE(test::contains(message, "between 1e-06 and 1000000000 mm/s")) << message;
     p.machining->feedMax = 100;
     p.machining->step = 1e-9;
     std::tie(where, message) = firstError(p);
     EXPECT_EQ(where, "machining.step");
-    EXPECT_TRUE(contains(message, "at least 1e-06 mm")) << message;
+    EXPECT_TRUE(test::contains(message, "at least 1e-06 mm")) << message;
 }
 
 TEST(SoundRanges, AnInstantManyTurnsOutKeepsItsAngle) {
