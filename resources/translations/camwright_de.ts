@@ -439,6 +439,11 @@
     </message>
     <message>
         <location line="+4" />
+        <source>undercuts the groove's outer flank: for a roller of %1 mm with %2 mm clearance this concave stretch of radius %3 mm must be wider than twice the roller radius plus the clearance</source>
+        <translation>hinterschneidet die äußere Flanke der Nut: für eine Rolle von %1 mm mit %2 mm Spiel muss dieser hohle Abschnitt mit Radius %3 mm weiter sein als der doppelte Rollenradius plus das Spiel</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>must be a finite length of at least %1 mm (got %2)</source>
         <translation>muss eine endliche Länge von mindestens %1 mm sein (ist %2)</translation>
     </message>
@@ -1221,7 +1226,7 @@
         <translation>%1, y</translation>
     </message>
     <message>
-        <location line="+163" />
+        <location line="+165" />
         <source>law</source>
         <translation>Gesetz</translation>
     </message>
@@ -1251,7 +1256,7 @@
         <translation>Bewegungsentwurf, Übergang zwischen Segment %1 und %2</translation>
     </message>
     <message>
-        <location line="-95" />
+        <location line="-97" />
         <source>Machining, acceleration of axis %1</source>
         <translation>Zerspanung, Beschleunigung der Achse %1</translation>
     </message>
@@ -1282,12 +1287,12 @@
     </message>
     <message>
         <location line="+6" />
-        <location line="+65" />
+        <location line="+67" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-64" />
+        <location line="-66" />
         <source>Points</source>
         <translation>Punkte</translation>
     </message>
@@ -1347,6 +1352,11 @@
         <translation>Stößel, Hebellänge</translation>
     </message>
     <message>
+        <location line="+2" />
+        <source>Follower, groove clearance</source>
+        <translation>Stößel, Spiel in der Nut</translation>
+    </message>
+    <message>
         <location line="+1" />
         <source>Samples per turn</source>
         <translation>Abtastpunkte pro Umdrehung</translation>
@@ -1397,12 +1407,12 @@
         <translation>Bewegungsentwurf, Segmente</translation>
     </message>
     <message>
-        <location line="-68" />
+        <location line="-70" />
         <source>is empty: the design's contour was never synthesised (Synthesize Contour, F6, makes it)</source>
         <translation>ist leer: die Kontur des Entwurfs wurde noch nie synthetisiert (Kontur synthetisieren, F6, erzeugt sie)</translation>
     </message>
     <message>
-        <location line="+104" />
+        <location line="+106" />
         <source>Joint between segments %1 and %2</source>
         <translation>Übergang zwischen Segment %1 und %2</translation>
     </message>
@@ -4461,12 +4471,12 @@ T = %3</translation>
     <name>cam::PlayController</name>
     <message>
         <location filename="../../src/app/window/play_controller.cpp" line="+17" />
-        <location line="+39" />
+        <location line="+40" />
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-35" />
+        <location line="-36" />
         <source>Turn the cam with the follower riding it (F5)</source>
         <translation>Die Scheibe drehen, der Stößel fährt mit (F5)</translation>
     </message>
@@ -4486,7 +4496,7 @@ T = %3</translation>
         <translation>Abspielen dreht die Scheibe</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>Play turns the cam under a follower that stands still, as on the machine; off, the cam stands still and the follower goes round it</source>
         <translation>Abspielen dreht die Scheibe unter dem stillstehenden Stößel, wie auf der Maschine; aus: die Scheibe steht still und der Stößel läuft um sie herum</translation>
     </message>

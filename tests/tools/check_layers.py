@@ -22,6 +22,7 @@ CORE_LAYERS = [
     ["kinematics", "construction", "spline", "follower"],
     ["analysis", "design"],
     ["fillet", "toolpath", "forces"],
+    ["closure"],
     ["timing", "export", "evaluation"],
     ["io"],
 ]

@@ -219,6 +219,8 @@ QString fieldName(const FieldPlace& p) {
         {Field::FollowerType, QT_TRANSLATE_NOOP("DiagnosticText", "Follower, type")},
         {Field::FollowerPivot, QT_TRANSLATE_NOOP("DiagnosticText", "Follower, pivot")},
         {Field::FollowerArmLength, QT_TRANSLATE_NOOP("DiagnosticText", "Follower, arm length")},
+        {Field::FollowerGrooveClearance,
+         QT_TRANSLATE_NOOP("DiagnosticText", "Follower, groove clearance")},
         {Field::SamplesPerTurn, QT_TRANSLATE_NOOP("DiagnosticText", "Samples per turn")},
         {Field::MachiningAxisAccel,
          QT_TRANSLATE_NOOP("DiagnosticText", "Machining, axis accelerations")},

@@ -121,6 +121,7 @@ enum class Severity { Error, Info };
     X(ToolNotBelowArcRadius)             \
     X(OffsetCornerUnmet)                 \
     X(ToolTrimsSegment)                  \
+    X(GrooveOuterFlankUndercut)          \
     X(SeedStepTooSmall)                  \
     X(SeedStepTooMany)                   \
     X(AccelerationLimitMissing)          \

@@ -248,6 +248,11 @@ constexpr std::array<DiagnosticEntry, kDiagnosticCodeCount> kCatalogue{{
      CAM_TRANSLATE_NOOP("Diagnostic",
                         "the tool radius %1 mm is too large here: at its concave corners the "
                         "offset of this segment would have to be trimmed beyond its ends")},
+    {Code::GrooveOuterFlankUndercut, "nnn",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "undercuts the groove's outer flank: for a roller of %1 mm with %2 mm "
+                        "clearance this concave stretch of radius %3 mm must be wider than twice "
+                        "the roller radius plus the clearance")},
     {Code::SeedStepTooSmall, "nn",
      CAM_TRANSLATE_NOOP("Diagnostic", "must be a finite length of at least %1 mm (got %2)")},
     {Code::SeedStepTooMany, "nnnnn",

@@ -107,6 +107,8 @@ std::string_view fieldKey(Field field) {
             return "follower.pivot";
         case Field::FollowerArmLength:
             return "follower.arm_length";
+        case Field::FollowerGrooveClearance:
+            return "follower.groove_clearance_mm";
         case Field::SamplesPerTurn:
             return "sampling.samples_per_turn";
         case Field::MachiningAxisAccel:

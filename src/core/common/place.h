@@ -72,6 +72,7 @@ enum class Field : std::uint8_t {
     FollowerType,
     FollowerPivot,
     FollowerArmLength,
+    FollowerGrooveClearance,
     SamplesPerTurn,
     MachiningAxisAccel,
     MachiningAxisVmax,
