@@ -31,6 +31,16 @@ protected:
         window.resize(1400, 860);
         window.show();
     }
+    /// Opens the design without a contour (its Motion Design dock in front) and lets the
+    /// layout settle.
+    bool openDesignProject() {
+        const bool opened = window
+                                .loadFile(QString::fromStdString(
+                                    test::dataPath("app/design-roller-no-contour.cam.json")))
+                                .isEmpty();
+        test::processEventsUntil([] { return false; }, 100);
+        return opened;
+    }
     MainWindow window;
 };
 
@@ -123,11 +133,7 @@ TEST_F(DockLayout, SavingLeavesTheTabsAndTheFocusWhereTheyWere) {
     // Issue 31, point 7: Save (giving the file a new path) brought the Motion Design tab to
     // the front and the focus went with it; the next click landed on its Delete button.
     QApplication::setActiveWindow(&window);
-    ASSERT_TRUE(window
-                    .loadFile(QString::fromStdString(
-                        test::dataPath("app/design-roller-no-contour.cam.json")))
-                    .isEmpty());
-    test::processEventsUntil([] { return false; }, 100);
+    ASSERT_TRUE(openDesignProject());
     auto* design = window.findChild<QDockWidget*>("motionDesignDock");
     auto* follower = window.findChild<QDockWidget*>("followerDock");
     ASSERT_NE(design, nullptr);
@@ -151,11 +157,7 @@ TEST_F(DockLayout, SavingLeavesTheTabsAndTheFocusWhereTheyWere) {
 TEST_F(DockLayout, ASideDockGetsItsWidthBackWhenTheWindowGrowsAgain) {
     // Issue 31, point 7: shrunk and grown again, the window gave all the new room to the
     // centre, and the Motion Design dock stayed too narrow for its table.
-    ASSERT_TRUE(window
-                    .loadFile(QString::fromStdString(
-                        test::dataPath("app/design-roller-no-contour.cam.json")))
-                    .isEmpty());
-    test::processEventsUntil([] { return false; }, 100);
+    ASSERT_TRUE(openDesignProject());
     auto* design = window.findChild<QDockWidget*>("motionDesignDock");
     auto* motion = window.findChild<QDockWidget*>("motionDock");
     ASSERT_NE(design, nullptr);

@@ -83,6 +83,15 @@ double valueAt(const QCPGraph* graph, double x) {
     return best;
 }
 
+/// Shows the window at the development screen's size, active, with the design without a
+/// contour loaded.
+bool showWithTheDesign(MainWindow& w) {
+    w.resize(1400, 860);
+    w.show();
+    QApplication::setActiveWindow(&w);
+    return w.loadFile(kDesignOnly).isEmpty();
+}
+
 bool waitForResult(MainWindow& w) {
     return w.waitForCurrentResult(test::kSanitized ? 60000 : 20000);
 }
@@ -287,10 +296,7 @@ TEST(MotionDesign, PickingALawLeavesTheTableWhereItWas) {
     // Issue 31, point 7: the columns were fitted anew after each law change, so a click meant
     // for "To" landed in another cell; and Qt printed editor warnings when a law was picked.
     MainWindow window;
-    window.resize(1400, 860);
-    window.show();
-    QApplication::setActiveWindow(&window);
-    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ASSERT_TRUE(showWithTheDesign(window));
     QTableView* table = window.motionDesignPanel()->table();
     const QModelIndex law = table->model()->index(0, DesignTableModel::Law);
     table->setFocus();
@@ -340,10 +346,7 @@ TEST(MotionDesign, PickingALawLeavesTheTableWhereItWas) {
 
 TEST(MotionDesign, AKeyInAComputedCellIsAnsweredAndTabPassesOverCellsALawHasNot) {
     MainWindow window;
-    window.resize(1400, 860);
-    window.show();
-    QApplication::setActiveWindow(&window);
-    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ASSERT_TRUE(showWithTheDesign(window));
     QTableView* table = window.motionDesignPanel()->table();
     QAbstractItemModel* model = table->model();
     const Project before = window.document()->project();
@@ -363,10 +366,7 @@ TEST(MotionDesign, AKeyInAComputedCellIsAnsweredAndTabPassesOverCellsALawHasNot)
 TEST(MotionDesign, AFieldSaysWhatItRefusesByItsLabel) {
     // Issue 31, point 7: a refused key or number used to vanish without a word.
     MainWindow window;
-    window.resize(1400, 860);
-    window.show();
-    QApplication::setActiveWindow(&window);
-    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ASSERT_TRUE(showWithTheDesign(window));
     ProjectDocument* doc = window.document();
     const Project before = doc->project();
     const int steps = doc->undoStack()->count();
