@@ -12,7 +12,9 @@
 
 #include "closure/groove.h"
 #include "common/angles.h"
+#include "core/follower_geometry.h"
 #include "core/test_projects.h"
+#include "evaluation/evaluation.h"
 
 namespace cam {
 namespace {
@@ -121,6 +123,121 @@ TEST(Groove, ANegativeClearanceOrRadiusIsRefusedAtItsField) {
     const auto nan = grooveFlanks(contour, std::nan(""), 0.1);
     ASSERT_FALSE(nan.ok());
     EXPECT_EQ(nan.errors().front().location, "follower.radius");
+}
+
+TEST(GrooveLands, AnEccentricCirclesFlanksComeNearestAndFarthestOnItsAxis) {
+    // Closed form: a circle of radius R about (E, 0) comes to R − E from the centre at 180° and
+    // reaches R + E at 0°; the outer flank is the circle R + 2ρ + c about the same centre.
+    const double E = 5.0, R = 30.0, rho = 5.0, c = 0.3;
+    const auto groove = grooveFlanks(test::disc({E, 0.0}, R), rho, c);
+    ASSERT_TRUE(groove.ok());
+    const GrooveLands lands = grooveLands(groove.value(), 25.5, 45.0);
+    EXPECT_NEAR(lands.innerMost.radius, R - E, 1e-12);
+    EXPECT_NEAR(lands.innerMost.phi, kPi, 1e-12);
+    EXPECT_NEAR(lands.outerMost.radius, R + 2 * rho + c + E, 1e-12);
+    EXPECT_NEAR(std::abs(std::remainder(lands.outerMost.phi, kTwoPi)), 0.0, 1e-12);
+    // 25 < 25.5: the groove cuts into the bore's land; 45.3 > 45: into the rim's.
+    EXPECT_FALSE(lands.innerKept());
+    EXPECT_FALSE(lands.outerKept());
+    const GrooveLands roomy = grooveLands(groove.value(), 24.9, 45.4);
+    EXPECT_TRUE(roomy.innerKept());
+    EXPECT_TRUE(roomy.outerKept());
+    const GrooveLands unchecked = grooveLands(groove.value(), std::nullopt, std::nullopt);
+    EXPECT_TRUE(unchecked.innerKept());
+    EXPECT_TRUE(unchecked.outerKept());
+}
+
+TEST(GrooveLands, TheSixLobeCamsExtremesAgreeWithADenseSampling) {
+    const Contour contour = sixLobe();
+    const auto groove = grooveFlanks(contour, 1.0, 0.2);
+    ASSERT_TRUE(groove.ok());
+    const GrooveLands lands = grooveLands(groove.value(), std::nullopt, std::nullopt);
+    // r(φ) itself for the inner flank; dense points of the outer flank.
+    double nearestR = 1e300;
+    for (int k = 0; k < 400000; ++k) {
+        nearestR = std::min(nearestR, contour.evaluate(kTwoPi * k / 400000.0).r);
+    }
+    double farthest = 0.0;
+    for (const Eigen::Vector2d& p : sample(groove.value().outer, 20000)) {
+        farthest = std::max(farthest, p.norm());
+    }
+    // Sampling can only miss the extreme, by at most (spacing)²/(2·radius): well below 1e-6.
+    EXPECT_LE(lands.innerMost.radius, nearestR + 1e-12);
+    EXPECT_NEAR(lands.innerMost.radius, nearestR, 1e-6);
+    EXPECT_GE(lands.outerMost.radius, farthest - 1e-12);
+    EXPECT_NEAR(lands.outerMost.radius, farthest, 1e-6);
+    EXPECT_NEAR(lands.innerMost.point.norm(), lands.innerMost.radius, 1e-12);
+    EXPECT_NEAR(contour.evaluate(lands.innerMost.phi).r, lands.innerMost.radius, 1e-9);
+}
+
+TEST(GrooveRoller, InTheGrooveOfAnEccentricDiscItSitsWhereTheClosedFormPutsIt) {
+    // A roller on an offset line in the groove of a disc of radius R about c. In the cam frame
+    // at angle φ the line runs along u(φ), offset e along n(φ); the centre x = s·u + e·n lies
+    // on the circle of radius R + ρ about c (on the inner flank) or R + ρ + c (pressed on the
+    // outer flank): s = u·c + √(Rc² − (e − n·c)²).
+    const Eigen::Vector2d centre(-6.0, 4.0);
+    const double R = 25.0, rho = 4.0, clearance = 0.25, e = -7.0;
+    FollowerSpec spec;
+    spec.type = FollowerType::Roller;
+    spec.offset = e;
+    spec.radius = rho;
+    spec.closure = Closure::Groove;
+    spec.grooveClearance = clearance;
+    const Contour contour = test::disc(centre, R);
+    const auto inner = FollowerModel::build(contour, spec);
+    const auto wide = FollowerModel::build(contour, outerFlankRoller(spec));
+    ASSERT_TRUE(inner.ok());
+    ASSERT_TRUE(wide.ok());
+    const auto sOf = [&](double phi, double radius) {
+        const Eigen::Vector2d u = test::unit(phi), n = test::normalOf(phi);
+        const double side = e - n.dot(centre);
+        return u.dot(centre) + std::sqrt(radius * radius - side * side);
+    };
+    for (double deg = 0.5; deg < 360.0; deg += 7.3) {
+        const double phi = degToRad(deg);
+        const FollowerState onInner = inner.value().at(phi, 1.0);
+        EXPECT_NEAR(onInner.s, sOf(phi, R + rho), 1e-11) << deg;
+        const FollowerState onOuter = onOuterFlank(wide.value().at(phi, 1.0), rho, clearance);
+        EXPECT_NEAR(onOuter.s, sOf(phi, R + rho + clearance), 1e-11) << deg;
+        // The outer contact is on the outer flank, the circle R + 2ρ + c, ρ from the centre,
+        // across the roller from the inner flank; its normal points back into the groove.
+        EXPECT_NEAR((onOuter.contact - centre).norm(), R + 2 * rho + clearance, 1e-11) << deg;
+        EXPECT_NEAR((onOuter.contact - onOuter.center).norm(), rho, 1e-12) << deg;
+        const Eigen::Vector2d towardsCentre = (centre - onOuter.contact).normalized();
+        EXPECT_NEAR((onOuter.normal - towardsCentre).norm(), 0.0, 1e-12) << deg;
+        EXPECT_NEAR(onOuter.rhoProfile, R + 2 * rho + clearance, 1e-9) << deg;
+        // The same line of force: the pressure angle from the closed form's slope, both ways.
+        const double side = e - test::normalOf(phi).dot(centre);
+        EXPECT_NEAR(std::abs(std::sin(onOuter.pressureAngle)),
+                    std::abs(side) / (R + rho + clearance), 1e-9)
+            << deg;
+    }
+}
+
+TEST(GrooveEvaluation, AGroovedProjectCarriesItsFlanksAndAnUndercutMakesItInvalid) {
+    Project p = loadProjectFile(test::examplePath("six-lobe-arc-cam.cam.json")).value();
+    FollowerSpec spec;
+    spec.type = FollowerType::Roller;
+    spec.radius = 2.0;
+    spec.closure = Closure::Groove;
+    spec.grooveClearance = 0.8;
+    p.follower = spec;
+    const ProjectEvaluation fine = evaluateProject(p);
+    ASSERT_EQ(fine.status, EvaluationStatus::Computed)
+        << (fine.problems.empty() ? "" : fine.problems.front().text());
+    ASSERT_TRUE(fine.groove);
+    EXPECT_EQ(fine.groove->outer.segments.size(), fine.contour->size());
+    // 1 mm more clearance and the notches (radius 4.84 mm) are tighter than 2ρ + c = 5 mm.
+    p.follower->grooveClearance = 1.0;
+    const ProjectEvaluation undercut = evaluateProject(p);
+    EXPECT_EQ(undercut.status, EvaluationStatus::Invalid);
+    EXPECT_FALSE(undercut.groove);
+    EXPECT_FALSE(undercut.follower);
+    ASSERT_FALSE(undercut.problems.empty());
+    EXPECT_EQ(undercut.problems.front().code, DiagnosticCode::GrooveOuterFlankUndercut);
+    // A spring-closed roller has no groove.
+    p.follower->closure = Closure::Spring;
+    EXPECT_FALSE(evaluateProject(p).groove);
 }
 
 }  // namespace

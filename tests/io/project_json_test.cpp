@@ -561,5 +561,79 @@ TEST(ProjectJsonDynamics, EveryRuleIsLocatedAtItsKey) {
               "on an arm");
 }
 
+// The groove (issue 32): closure, clearance and land radii are read, written back as typed,
+// in millimetres whatever the project's length unit, and every rule is located at its key.
+const std::string kGrooved = R"({
+  "format": "camwright", "version": 1, "name": "disc",
+  "motion": { "rpm": 300 },
+  "contour": [ { "type": "arc", "center": [5, 0], "radius": 30, "branch": "outer",
+                 "phi_start": 0, "phi_end": 360 } ],
+  "follower": { "type": "roller", "radius": 8, "closure": "groove", "groove_clearance_mm": 0.05,
+                "inner_land_radius_mm": 12.5, "outer_land_radius_mm": 70 }
+})";
+
+TEST(ProjectJsonGroove, ReadsEveryKeyAndWritesItBackAsTyped) {
+    const auto p = parseProject(kGrooved);
+    ASSERT_TRUE(p.ok()) << p.errors().front().text();
+    const FollowerSpec& f = *p.value().follower;
+    EXPECT_EQ(f.closure, Closure::Groove);
+    EXPECT_TRUE(f.grooved());
+    EXPECT_EQ(f.grooveClearance, 0.05);
+    EXPECT_EQ(f.innerLandRadius, 12.5);
+    EXPECT_EQ(f.outerLandRadius, 70.0);
+    const std::string saved = serializeProject(p.value());
+    const Json written = Json::parse(saved)["follower"];
+    const Json typed = Json::parse(kGrooved)["follower"];
+    for (const auto& [key, value] : typed.items()) EXPECT_EQ(written[key], value) << key;
+    EXPECT_EQ(written.size(), typed.size() + 1) << saved;  // and a translating line's offset
+    EXPECT_EQ(written["offset"], 0);
+    const auto again = parseProject(saved);
+    ASSERT_TRUE(again.ok());
+    EXPECT_EQ(again.value(), p.value());
+    // Spring closure is the default and is not written; a groove's keys stay millimetres in a
+    // project in metres (their names say so) while the roller's radius is converted.
+    const auto plain = parseProject(kWithDynamics);
+    ASSERT_TRUE(plain.ok());
+    EXPECT_EQ(plain.value().follower->closure, Closure::Spring);
+    EXPECT_FALSE(Json::parse(serializeProject(plain.value()))["follower"].contains("closure"));
+    const auto metres = parseProject(withReplaced(
+        withReplaced(withReplaced(kGrooved, R"("name": "disc",)",
+                                  R"("name": "disc", "units": { "length": "m" },)"),
+                     R"("center": [5, 0], "radius": 30)", R"("center": [0.005, 0], "radius": 0.03)"),
+        R"("radius": 8,)", R"("radius": 0.008,)"));
+    ASSERT_TRUE(metres.ok()) << metres.errors().front().text();
+    EXPECT_DOUBLE_EQ(metres.value().follower->radius, 8.0);
+    EXPECT_EQ(metres.value().follower->grooveClearance, 0.05);
+    EXPECT_EQ(metres.value().follower->outerLandRadius, 70.0);
+}
+
+std::string grooveProblem(const std::string& from, const std::string& to) {
+    const auto p = parseProject(withReplaced(kGrooved, from, to));
+    if (p.ok()) return "(no problem)";
+    return p.errors().front().text();
+}
+
+TEST(ProjectJsonGroove, EveryRuleIsLocatedAtItsKey) {
+    EXPECT_EQ(grooveProblem(R"("closure": "groove")", R"("closure": "grooved")"),
+              "follower.closure: must be \"spring\" or \"groove\" (got \"grooved\")");
+    EXPECT_EQ(grooveProblem(R"("groove_clearance_mm": 0.05,)", ""),
+              "follower.groove_clearance_mm: missing");
+    EXPECT_EQ(grooveProblem(R"("groove_clearance_mm": 0.05)", R"("groove_clearance_mm": -0.01)"),
+              "follower.groove_clearance_mm: must be between 0 and 1000000 mm (got -0.01)");
+    EXPECT_EQ(grooveProblem(R"("type": "roller", "radius": 8,)", R"("type": "knife",)"),
+              "follower.closure: a groove needs a roller follower: a knife or a flat face cannot "
+              "run in a groove; choose a roller or the spring closure");
+    EXPECT_EQ(grooveProblem(R"("inner_land_radius_mm": 12.5)", R"("inner_land_radius_mm": 0)"),
+              "follower.inner_land_radius_mm: must be > 0 (got 0)");
+    EXPECT_EQ(grooveProblem(R"("outer_land_radius_mm": 70)", R"("outer_land_radius_mm": 12)"),
+              "follower.outer_land_radius_mm: must be larger than the inner land radius 12.5 mm "
+              "(got 12 mm): the groove runs between the two");
+    // Without the groove the clearance is not needed, and a spring-closed cam may be checked
+    // against its lands too.
+    EXPECT_EQ(grooveProblem(R"("closure": "groove", "groove_clearance_mm": 0.05,)",
+                            R"("closure": "spring",)"),
+              "(no problem)");
+}
+
 }  // namespace
 }  // namespace cam

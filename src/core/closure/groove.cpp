@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "common/angles.h"
+
 namespace cam {
 
 Result<GrooveFlanks> grooveFlanks(const Contour& contour, double rollerRadius, double clearance) {
@@ -36,7 +38,88 @@ Result<GrooveFlanks> grooveFlanks(const Contour& contour, double rollerRadius, d
         }
         return errors;
     }
-    return GrooveFlanks{std::move(pitch).value(), std::move(outer).value()};
+    auto inner = offsetContour(contour, 0.0, kSplineToleranceMm);
+    if (!inner.ok()) return inner.errors();
+    return GrooveFlanks{std::move(inner).value().path, std::move(pitch).value(),
+                        std::move(outer).value()};
+}
+
+namespace {
+
+/// Whether polar angle `a` about an arc's centre lies within the arc (its start plus a sweep of
+/// either sign).
+bool withinSweep(const PathSegment& arc, double a) {
+    const double from = arc.sweep >= 0.0 ? arc.startAngle : arc.startAngle + arc.sweep;
+    return wrapTwoPi(a - from) <= std::abs(arc.sweep);
+}
+
+/// The points of `piece` where its distance from the origin can be extreme.
+template <typename Visit>
+void radialCandidates(const PathSegment& piece, Visit&& visit) {
+    const Eigen::Vector2d a = piece.start.head<2>(), b = piece.end.head<2>();
+    visit(a);
+    visit(b);
+    if (piece.kind == PathSegment::Kind::Line) {
+        const Eigen::Vector2d d = b - a;
+        const double t = d.squaredNorm() > 0.0 ? -a.dot(d) / d.squaredNorm() : 0.0;
+        if (t > 0.0 && t < 1.0) visit(Eigen::Vector2d(a + t * d));
+        return;
+    }
+    const double c = piece.center.norm();
+    if (!(c > 0.0)) return;  // centred on the origin: every point is as far, the ends say it
+    const Eigen::Vector2d u = piece.center / c;
+    for (const Eigen::Vector2d& p : {Eigen::Vector2d(piece.center - piece.radius * u),
+                                     Eigen::Vector2d(piece.center + piece.radius * u)}) {
+        const Eigen::Vector2d r = p - piece.center;
+        if (withinSweep(piece, std::atan2(r.y(), r.x()))) visit(p);
+    }
+}
+
+template <typename Better>
+RadialExtreme radialExtreme(const ToolPath& path, Better better) {
+    RadialExtreme best;
+    bool any = false;
+    for (const PathSegment& piece : path.segments) {
+        radialCandidates(piece, [&](const Eigen::Vector2d& p) {
+            const double r = p.norm();
+            if (any && !better(r, best.radius)) return;
+            best = {r, p, wrapTwoPi(std::atan2(p.y(), p.x()))};
+            any = true;
+        });
+    }
+    return best;
+}
+
+}  // namespace
+
+RadialExtreme nearestToCentre(const ToolPath& path) {
+    return radialExtreme(path, [](double r, double best) { return r < best; });
+}
+
+RadialExtreme farthestFromCentre(const ToolPath& path) {
+    return radialExtreme(path, [](double r, double best) { return r > best; });
+}
+
+GrooveLands grooveLands(const GrooveFlanks& flanks, std::optional<double> innerLandRadius,
+                        std::optional<double> outerLandRadius) {
+    return {nearestToCentre(flanks.inner), farthestFromCentre(flanks.outer), innerLandRadius,
+            outerLandRadius};
+}
+
+FollowerSpec outerFlankRoller(const FollowerSpec& grooved) {
+    FollowerSpec wide = grooved;
+    wide.radius = grooved.radius + grooved.grooveClearance;
+    wide.closure = Closure::Spring;
+    return wide;
+}
+
+FollowerState onOuterFlank(const FollowerState& wide, double rollerRadius, double clearance) {
+    FollowerState out = wide;
+    // wide.normal points out of the inner flank towards the centre; the outer flank lies ρ on.
+    out.contact = wide.center + rollerRadius * wide.normal;
+    out.normal = -wide.normal;
+    out.rhoProfile = wide.rhoProfile + 2.0 * rollerRadius + clearance;
+    return out;
 }
 
 }  // namespace cam

@@ -25,4 +25,10 @@ inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
     return m < 0.0 ? m + 360.0 : m;
 }
 
+/// @brief An angle in radians reduced into [0, 2π).
+[[nodiscard]] inline double wrapTwoPi(double rad) {
+    const double m = std::fmod(rad, kTwoPi);
+    return m < 0.0 ? (m + kTwoPi < kTwoPi ? m + kTwoPi : 0.0) : m;
+}
+
 }  // namespace cam

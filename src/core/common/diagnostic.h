@@ -122,6 +122,8 @@ enum class Severity { Error, Info };
     X(OffsetCornerUnmet)                 \
     X(ToolTrimsSegment)                  \
     X(GrooveOuterFlankUndercut)          \
+    X(GrooveNeedsRoller)                 \
+    X(LandRadiiCrossed)                  \
     X(SeedStepTooSmall)                  \
     X(SeedStepTooMany)                   \
     X(AccelerationLimitMissing)          \

@@ -253,6 +253,14 @@ constexpr std::array<DiagnosticEntry, kDiagnosticCodeCount> kCatalogue{{
                         "undercuts the groove's outer flank: for a roller of %1 mm with %2 mm "
                         "clearance this concave stretch of radius %3 mm must be wider than twice "
                         "the roller radius plus the clearance")},
+    {Code::GrooveNeedsRoller, "",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "a groove needs a roller follower: a knife or a flat face cannot run in "
+                        "a groove; choose a roller or the spring closure")},
+    {Code::LandRadiiCrossed, "nn",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "must be larger than the inner land radius %1 mm (got %2 mm): the groove "
+                        "runs between the two")},
     {Code::SeedStepTooSmall, "nn",
      CAM_TRANSLATE_NOOP("Diagnostic", "must be a finite length of at least %1 mm (got %2)")},
     {Code::SeedStepTooMany, "nnnnn",

@@ -107,8 +107,14 @@ std::string_view fieldKey(Field field) {
             return "follower.pivot";
         case Field::FollowerArmLength:
             return "follower.arm_length";
+        case Field::FollowerClosure:
+            return "follower.closure";
         case Field::FollowerGrooveClearance:
             return "follower.groove_clearance_mm";
+        case Field::FollowerInnerLandRadius:
+            return "follower.inner_land_radius_mm";
+        case Field::FollowerOuterLandRadius:
+            return "follower.outer_land_radius_mm";
         case Field::SamplesPerTurn:
             return "sampling.samples_per_turn";
         case Field::MachiningAxisAccel:

@@ -62,11 +62,22 @@ ProjectEvaluation evaluateProject(const Project& project) {
     if (e.contour) {
         // A follower that cannot ride this cam (a pivot inside it, an arm that cannot reach it,
         // a roller wider than a concave arc) makes the project invalid.
-        auto follower = FollowerModel::build(*e.contour, project.follower.value_or(FollowerSpec{}));
+        const FollowerSpec spec = project.follower.value_or(FollowerSpec{});
+        auto follower = FollowerModel::build(*e.contour, spec);
         if (follower.ok()) {
             e.follower = std::make_shared<const FollowerModel>(std::move(follower).value());
         } else {
             e.followerProblems = follower.errors();
+        }
+        // A groove whose outer flank would fold cannot be milled: the roller cannot run in it.
+        if (e.follower && spec.grooved() && spec.type == FollowerType::Roller) {
+            auto groove = grooveFlanks(*e.contour, spec.radius, spec.grooveClearance);
+            if (groove.ok()) {
+                e.groove = std::move(groove).value();
+            } else {
+                e.follower.reset();
+                e.followerProblems = groove.errors();
+            }
         }
     }
     // Only once nothing else is wrong: a follower placed on a contour with problems says little.

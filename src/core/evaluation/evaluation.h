@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 
+#include "closure/groove.h"
 #include "common/diagnostic.h"
 #include "contour/contour.h"
 #include "follower/follower.h"
@@ -52,6 +53,9 @@ struct ProjectEvaluation {
     /// without a contour or when it cannot ride it (then `followerProblems` says why).
     std::shared_ptr<const FollowerModel> follower;
     Diagnostics followerProblems;
+    /// A grooved cam's flanks (closure/groove.h), with the follower; a groove that cannot be
+    /// milled (its outer flank folds) is one of `followerProblems`.
+    std::optional<GrooveFlanks> groove;
     /// The cam's speed (rad/s, signed) and the time of one turn (s); 0 while the project's
     /// motion gives none a computation can use.
     double omega = 0.0;

@@ -282,7 +282,8 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
     if (!f || !rd.object(*f, "follower")) return;
     rd.onlyKeys(*f, "follower",
                 {"type", "motion", "offset", "radius", "pivot", "arm_length", "arm",
-                 "max_pressure_angle_deg"});
+                 "max_pressure_angle_deg", "closure", "groove_clearance_mm",
+                 "inner_land_radius_mm", "outer_land_radius_mm"});
     FollowerSpec spec;
     if (const auto type = rd.string(*f, "follower", "type", false)) {
         if (const auto known = followerTypeFromName(*type)) {
@@ -320,6 +321,26 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
     }
     if (const auto v = rd.number(*f, "follower", "max_pressure_angle_deg", false)) {
         spec.maxPressureAngleDeg = *v;
+    }
+    if (const auto closure = rd.string(*f, "follower", "closure", false)) {
+        if (*closure == "spring") {
+            spec.closure = Closure::Spring;
+        } else if (*closure == "groove") {
+            spec.closure = Closure::Groove;
+        } else {
+            rd.notOneOf("follower.closure", {"spring", "groove"}, *closure);
+        }
+    }
+    // The groove's lengths are in millimetres whatever the project's unit: their keys say so.
+    const bool grooved = spec.closure == Closure::Groove;
+    if (const auto v = rd.number(*f, "follower", "groove_clearance_mm", grooved)) {
+        spec.grooveClearance = *v;
+    }
+    if (const auto v = rd.number(*f, "follower", "inner_land_radius_mm", false)) {
+        spec.innerLandRadius = *v;
+    }
+    if (const auto v = rd.number(*f, "follower", "outer_land_radius_mm", false)) {
+        spec.outerLandRadius = *v;
     }
     p.follower = spec;
 }

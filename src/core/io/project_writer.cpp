@@ -108,6 +108,12 @@ std::string serializeProject(const Project& p) {
         }
         if (followerKind(f.type).hasRadius) j["radius"] = length(f.radius);
         if (f.maxPressureAngleDeg) j["max_pressure_angle_deg"] = *f.maxPressureAngleDeg;
+        if (f.closure == Closure::Groove) {
+            j["closure"] = "groove";
+            j["groove_clearance_mm"] = f.grooveClearance;
+        }
+        if (f.innerLandRadius) j["inner_land_radius_mm"] = *f.innerLandRadius;
+        if (f.outerLandRadius) j["outer_land_radius_mm"] = *f.outerLandRadius;
         root["follower"] = std::move(j);
     }
     if (p.samplesPerTurn) root["sampling"] = {{"samples_per_turn", *p.samplesPerTurn}};
@@ -208,6 +214,13 @@ Diagnostics nonFiniteValues(const Project& p) {
     if (p.follower) {
         check(p.follower->offset, FieldPlace{Field::FollowerOffset});
         check(p.follower->radius, FieldPlace{Field::FollowerRadius});
+        check(p.follower->grooveClearance, FieldPlace{Field::FollowerGrooveClearance});
+        if (p.follower->innerLandRadius) {
+            check(*p.follower->innerLandRadius, FieldPlace{Field::FollowerInnerLandRadius});
+        }
+        if (p.follower->outerLandRadius) {
+            check(*p.follower->outerLandRadius, FieldPlace{Field::FollowerOuterLandRadius});
+        }
     }
     if (p.design) {
         check(p.design->baseRadius, FieldPlace{Field::DesignBaseRadius});

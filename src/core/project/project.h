@@ -112,6 +112,10 @@ enum class FollowerType { Knife, Roller, Flat };
 enum class FollowerMotion { Translating, Oscillating };
 /// @brief Which side of the line from the pivot to the cam centre an arm's roller is on.
 enum class ArmSide { Ccw, Cw };
+/// @brief What keeps the follower on the cam (project-format.md `follower.closure`): a spring
+/// (the contour is the cam's profile), or a groove milled into the disc (the contour is its
+/// inner flank; a roller runs in it, closure/groove.h).
+enum class Closure { Spring, Groove };
 
 /// @brief The usual limits of the pressure angle when the project sets none (math.md §7).
 inline constexpr double kDefaultMaxPressureAngleTranslatingDeg = 30.0;
@@ -126,7 +130,13 @@ struct FollowerSpec {
     double armLength = 0.0;           ///< oscillating, mm
     ArmSide arm = ArmSide::Ccw;       ///< oscillating
     std::optional<double> maxPressureAngleDeg;
+    Closure closure = Closure::Spring;
+    double grooveClearance = 0.0;  ///< groove: the roller's play between its flanks, mm
+    /// Groove: the smallest radius the inner flank may come to (the bore's land) and the
+    /// largest the outer flank may reach (the rim's), mm; unchecked when not given.
+    std::optional<double> innerLandRadius, outerLandRadius;
 
+    [[nodiscard]] bool grooved() const { return closure == Closure::Groove; }
     [[nodiscard]] double maxPressureAngleOrDefault() const {
         return maxPressureAngleDeg.value_or(motion == FollowerMotion::Translating
                                                 ? kDefaultMaxPressureAngleTranslatingDeg

@@ -330,6 +330,32 @@ private:
         }
     }
 
+    /// A groove (closure/groove.h): a roller's, with a clearance of 0 to 1e6 mm, and the land
+    /// radii, when given, positive lengths with the inner one below the outer.
+    void checkGroove(const FollowerSpec& f) {
+        if (f.grooved()) {
+            if (f.type != FollowerType::Roller) {
+                error(FieldPlace{Field::FollowerClosure}, Code::GrooveNeedsRoller);
+            }
+            checkRange(FieldPlace{Field::FollowerGrooveClearance}, f.grooveClearance, 0.0,
+                       kMaxLengthMm, " mm");
+        }
+        bool landsOk = true;
+        if (f.innerLandRadius) {
+            landsOk &= checkPositiveLength(FieldPlace{Field::FollowerInnerLandRadius},
+                                           *f.innerLandRadius);
+        }
+        if (f.outerLandRadius) {
+            landsOk &= checkPositiveLength(FieldPlace{Field::FollowerOuterLandRadius},
+                                           *f.outerLandRadius);
+        }
+        if (landsOk && f.innerLandRadius && f.outerLandRadius &&
+            !(*f.outerLandRadius > *f.innerLandRadius)) {
+            error(FieldPlace{Field::FollowerOuterLandRadius}, Code::LandRadiiCrossed,
+                  {*f.innerLandRadius, *f.outerLandRadius});
+        }
+    }
+
     void checkFollower() {
         if (!m_project.follower) return;
         const FollowerSpec& f = *m_project.follower;
@@ -347,6 +373,7 @@ private:
             checkPoint(FieldPlace{Field::FollowerPivot}, f.pivot);
             checkPositiveLength(FieldPlace{Field::FollowerArmLength}, f.armLength);
         }
+        checkGroove(f);
         // A roller must fit into every concave arc it rides (its pitch circle R − ρ > 0).
         if (!kind.hasRadius || !radiusOk) return;
         for (std::size_t k = 0; k < m_project.contour.size(); ++k) {
