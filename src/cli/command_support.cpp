@@ -51,8 +51,12 @@ Loaded load(const std::string& path) {
         }
         throw CliError{kInvalidInput, placeOf(path, d), message};
     }
-    return {std::move(project).value(), std::move(*evaluation->contour), evaluation->omega,
-            *evaluation->follower};
+    return {std::move(project).value(),
+            std::move(*evaluation->contour),
+            evaluation->omega,
+            *evaluation->follower,
+            std::move(evaluation->groove),
+            evaluation->outerFlankFollower};
 }
 
 void requireFinite(const Json& value, const std::string& where) {

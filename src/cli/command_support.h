@@ -5,11 +5,13 @@
 /// finite numbers, and files written whole or not at all.
 
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
 #include <string>
 
+#include "closure/groove.h"
 #include "common/diagnostic.h"
 #include "contour/contour.h"
 #include "follower/follower.h"
@@ -26,6 +28,9 @@ struct Loaded {
     double omega;
     /// The project's follower placed on the contour (a radial knife when it names none).
     FollowerModel follower;
+    /// A grooved cam's flanks and its roller pressed on the outer flank (evaluation.h).
+    std::optional<GrooveFlanks> groove;
+    std::shared_ptr<const FollowerModel> outerFlank;
 };
 
 /// @brief "PATH: LOCATION" as the CLI names a project's problem (a problem of the file as a

@@ -55,6 +55,56 @@ Json followerJson(const FollowerModel& model, const FollowerState& f) {
     return json;
 }
 
+Json outerFlankJson(const FollowerModel& inner, const FollowerState& f) {
+    Json json = followerJson(inner, f);
+    json.erase("type");
+    json.erase("motion");
+    return json;
+}
+
+namespace {
+
+/// analyze's `groove` of a grooved cam: the outer flank's checks (its pressure angle and
+/// curvature where the roller touches it, pressed outwards) and the lands.
+Json grooveAnalysisJson(const Loaded& loaded) {
+    const FollowerSpec& spec = loaded.follower.spec();
+    const double width = 2.0 * spec.radius + spec.grooveClearance;
+    const FollowerAnalysis wide =
+        analyzeFollower(*loaded.outerFlank, loaded.omega, loaded.contour.phiBegin(),
+                        kFollowerCheckSamples, nullptr, phasesOf(loaded.project));
+    // The outer flank's radius at its contact is the inner flank's there + 2ρ + c (signed as
+    // the inner flank's): a convex stretch grows by the width, a concave one shrinks by it.
+    const auto shifted = [&](const std::optional<FollowerExtremum>& e, double by) {
+        if (!e) return Json(nullptr);
+        return Json{{"value", radiusJson(e->value + by)}, {"phi_deg", radToDeg(e->phi)}};
+    };
+    const GrooveLands lands =
+        grooveLands(*loaded.groove, spec.innerLandRadius, spec.outerLandRadius);
+    const auto land = [](const RadialExtreme& at, const std::optional<double>& limit, bool kept) {
+        return Json{{"radius", at.radius},
+                    {"phi_deg", radToDeg(at.phi)},
+                    {"point", {at.point.x(), at.point.y()}},
+                    {"land_radius", limit ? Json(*limit) : Json(nullptr)},
+                    {"kept", kept}};
+    };
+    return Json{{"roller_radius", spec.radius},
+                {"clearance_mm", spec.grooveClearance},
+                {"width_mm", width},
+                {"outer_flank",
+                 {{"pressure_angle",
+                   {{"max",
+                     {{"value_deg", radToDeg(wide.pressure.max.value)},
+                      {"phi_deg", radToDeg(wide.pressure.max.phi)}}}}},
+                  {"curvature",
+                   {{"min_convex", shifted(wide.profileCurvature.minConvex, width)},
+                    {"min_concave", shifted(wide.profileCurvature.minConcave, -width)}}}}},
+                {"lands",
+                 {{"inner", land(lands.innerMost, lands.innerLand, lands.innerKept())},
+                  {"outer", land(lands.outerMost, lands.outerLand, lands.outerKept())}}}};
+}
+
+}  // namespace
+
 /// cli.md's `follower` object of `analyze`: the design checks of math.md §7.
 Json followerAnalysisJson(const Loaded& loaded) {
     const FollowerModel& model = loaded.follower;
@@ -138,6 +188,7 @@ Json followerAnalysisJson(const Loaded& loaded) {
                   {"curvature", std::move(curvatures)},
                   {"undercut", std::move(undercut)}});
     if (followerKind(model.spec().type).flatFace) f["face_width"] = a.faceWidth;
+    if (loaded.groove && loaded.outerFlank) f["groove"] = grooveAnalysisJson(loaded);
     return f;
 }
 

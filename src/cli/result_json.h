@@ -16,6 +16,9 @@ namespace cam::cli {
 /// @brief cli.md's `follower` object of `state`; a swinging arm gives psi_deg, omega_arm,
 /// alpha_arm and jerk_arm (rad/s…) in place of s, v, a, j, and its lift in degrees.
 [[nodiscard]] Json followerJson(const FollowerModel& model, const FollowerState& f);
+/// @brief cli.md's `outer_flank` of a grooved cam's follower: `f` (onOuterFlank's) as
+/// followerJson gives it, less the type and motion, its lift measured as the inner flank's.
+[[nodiscard]] Json outerFlankJson(const FollowerModel& inner, const FollowerState& f);
 
 /// @brief cli.md's `follower` object of `analyze`: the design checks over the turn.
 [[nodiscard]] Json followerAnalysisJson(const Loaded& loaded);

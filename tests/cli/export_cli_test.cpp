@@ -225,6 +225,46 @@ TEST(ExportDxf, ToolPathLayerKeepsTheToolRadius) {
     EXPECT_LE(s.value("toolpath_worst_mm", 1.0), 1e-3);
 }
 
+// Fact: a grooved cam's DXF has its inner flank (the contour, exact as on CONTOUR), its outer
+// flank and the roller's pitch curve on layers FLANK_INNER, FLANK_OUTER and PITCH, as true arcs
+// about the profile's own centres, every point of the outer flank 2ρ + c from the profile along
+// its normals to 1e-9 mm; the SVG draws both flanks and the pitch curve, each within 1e-6 mm of
+// that offset measured against the profile's arcs (tests/reference/check_export.py).
+TEST(ExportGroove, DxfAndSvgCarryBothFlanksAsTrueArcs) {
+    test::TempDir dir;
+    Json project = Json::parse(test::readFile(test::examplePath("six-lobe-arc-cam.cam.json")));
+    project["follower"] = {
+        {"type", "roller"}, {"radius", 1.5}, {"closure", "groove"}, {"groove_clearance_mm", 0.4}};
+    const std::string cam = dir.file("grooved.cam.json");
+    std::ofstream(cam) << project.dump(1);
+    const std::string dxf = dir.file("g.dxf"), svg = dir.file("g.svg");
+    ASSERT_EQ(test::runCli({"export", cam, "--format", "dxf", "--out", dxf}).exitCode, 0);
+    const Json d = check("dxf", cam, dxf, {"--groove", "1.5", "0.4"});
+    EXPECT_EQ(d.value("contour_entities", 0), 13);  // FLANK_INNER
+    EXPECT_EQ(d.value("flank_outer_entities", 0), 13);
+    EXPECT_EQ(d.value("pitch_entities", 0), 13);
+    EXPECT_LE(d.value("worst_exact_mm", 1.0), 1e-9);
+    EXPECT_LE(d.value("worst_flank_outer_exact_mm", 1.0), 1e-9);
+    EXPECT_LE(d.value("worst_pitch_exact_mm", 1.0), 1e-9);
+    EXPECT_LE(d.value("worst_flank_outer_dense_mm", 1.0), 1e-2);
+    // No CONTOUR layer: the contour is the inner flank.
+    EXPECT_EQ(test::readFile(dxf).find("\nCONTOUR\n"), std::string::npos);
+    ASSERT_EQ(test::runCli({"export", cam, "--format", "svg", "--out", svg}).exitCode, 0);
+    const Json v = check("svg", cam, svg, {"--groove", "1.5", "0.4", "--tolerance", "1e-6"});
+    EXPECT_LE(v.value("worst_outer_flank_mm", 1.0), 1e-6);
+    EXPECT_LE(v.value("worst_pitch_mm", 1.0), 1e-6);
+    // A groove that cannot be milled (the notches, radius 4.84 mm, are tighter than 2ρ + c)
+    // exports nothing and says where.
+    project["follower"]["groove_clearance_mm"] = 2.0;
+    std::ofstream(cam) << project.dump(1);
+    fs::remove(dxf);
+    const auto refused = test::runCli({"export", cam, "--format", "dxf", "--out", dxf});
+    EXPECT_EQ(refused.exitCode, 2) << refused.err;
+    EXPECT_NE(refused.err.find("undercuts the groove's outer flank"), std::string::npos)
+        << refused.err;
+    EXPECT_FALSE(fs::exists(dxf));
+}
+
 // Fact: export csv is the sampled turn, byte for byte what `sample` writes (whose numbers the
 // reference tests check).
 TEST(ExportCsv, IsTheSampledTurnWithTheFollowersColumns) {

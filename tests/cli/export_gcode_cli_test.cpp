@@ -827,5 +827,165 @@ TEST(CliExportGcode, ProgramTextIsPlainAndSaysHowItMills) {
     }
 }
 
+// ---- A grooved cam: the program mills the groove between its flanks -------------------------
+
+/// The outer flank of an arc profile, built here from the profile's own arcs: the same centres
+/// and angles, the radius grown by the groove's width w on a convex arc (counter-clockwise
+/// about its centre) and shrunk by it on a concave one.
+Profile outerFlankOf(const Profile& inner, double w) {
+    Profile outer;
+    for (Piece p : inner.pieces) {
+        EXPECT_EQ(p.kind, Piece::Arc) << "the groove tests use arc profiles";
+        p.r += p.sweep > 0 ? w : -w;
+        p.a = p.at(0.0);
+        p.b = p.at(1.0);
+        outer.pieces.push_back(p);
+        for (int i = 0; i < 256; ++i) outer.polygon.push_back(p.at(i / 256.0));
+    }
+    return outer;
+}
+
+/// A copy of the bundled six-lobe cam run by a roller of radius ρ in a groove with clearance c.
+std::string groovedSixLobe(const test::TempDir& dir, double rho, double clearance) {
+    nlohmann::json project =
+        nlohmann::json::parse(test::readFile(test::examplePath("six-lobe-arc-cam.cam.json")));
+    project["follower"] = {{"type", "roller"},
+                           {"radius", rho},
+                           {"closure", "groove"},
+                           {"groove_clearance_mm", clearance}};
+    return writeProject(dir, "grooved.cam.json", project.dump(1));
+}
+
+/// The checks of a groove's program at every depth: no cutting point comes nearer either flank
+/// than the tool radius r (nothing beyond the groove is cut), every point of both flanks and of
+/// the groove between them lies within r of the tool's centre (the groove is cleared), and the
+/// plunge lies on the centre line. Returns, per pass, each cutting point's distance from the
+/// inner flank.
+std::vector<std::vector<double>> checkGroove(const Milled& milled, const Profile& inner, double w,
+                                             double r, const std::string& what) {
+    SCOPED_TRACE(what);
+    const Profile outer = outerFlankOf(inner, w);
+    const std::vector<Pass> passes = passesOf(milled.moves);
+    std::vector<std::vector<double>> distances;
+    for (const Pass& pass : passes) {
+        SCOPED_TRACE(std::string("pass at Z").append(std::to_string(pass.z)));
+        std::vector<Vec2> centres;
+        std::vector<double> fromInner;
+        double worstInner = 0, worstOuter = 0;
+        int outside = 0;
+        for (const CanonMove& m : pass.moves) {
+            for (const Vec2& q : m.samples(kSampleStepMm)) {
+                const double dIn = inner.distance(q), dOut = outer.distance(q);
+                worstInner = std::max(worstInner, r - dIn);
+                worstOuter = std::max(worstOuter, r - dOut);
+                // In the groove: outside the cam's body, inside the outer flank.
+                if (inner.winding(q) != 0 || outer.winding(q) == 0) ++outside;
+                fromInner.push_back(dIn);
+                centres.push_back(q);
+            }
+        }
+        EXPECT_LE(worstInner, kTolMm) << "the tool cuts into the inner flank";
+        EXPECT_LE(worstOuter, kTolMm) << "the tool cuts into the outer flank";
+        EXPECT_EQ(outside, 0) << "tool centres outside the groove";
+        EXPECT_TRUE(pass.plunge);
+        if (pass.plunge) {
+            EXPECT_NEAR(inner.distance(pass.plunge->end.head<2>()), w / 2, kTolMm)
+                << "the plunge is not on the groove's centre line";
+        }
+        // Cleared: points across the groove at every 0.05 mm along each arc, at 0, w/8, …, w
+        // from the inner flank, each within r of some tool centre.
+        int uncleared = 0;
+        double worst = 0;
+        for (const Piece& p : inner.pieces) {
+            const int n = std::max(50, static_cast<int>(p.length() / kSampleStepMm));
+            for (int i = 0; i <= n; ++i) {
+                const Vec2 onArc = p.at(double(i) / n);
+                const Vec2 out = (onArc - p.c).normalized() * (p.sweep > 0 ? 1.0 : -1.0);
+                for (int k = 0; k <= 8; ++k) {
+                    const Vec2 q = onArc + w * k / 8.0 * out;
+                    double d = std::numeric_limits<double>::infinity();
+                    for (const Vec2& c : centres) d = std::min(d, (q - c).squaredNorm());
+                    worst = std::max(worst, std::sqrt(d) - r);
+                    // The centres are samples 0.05 mm apart: between two the tool reaches
+                    // at least √(r² − 0.025²) – r further, a little less than r itself.
+                    if (std::sqrt(d) > r + kTolMm + kSampleStepMm * kSampleStepMm / r) ++uncleared;
+                }
+            }
+        }
+        EXPECT_EQ(uncleared, 0) << "groove points the tool never reaches; worst by " << worst;
+        distances.push_back(std::move(fromInner));
+    }
+    return distances;
+}
+
+TEST(CliExportGcodeGroove, OneSlotPassOnTheCentreLineByDefault) {
+    const test::TempDir dir;
+    const double rho = 2.0, clearance = 0.5, w = 2 * rho + clearance;
+    const std::string project = groovedSixLobe(dir, rho, clearance);
+    const Milled m = exportAndInterpret(dir, project, {"--depth", "6", "--step-down", "3"});
+    const Profile inner = profileOfFile(project);
+    const auto passes = checkGroove(m, inner, w, w / 2, "slot");
+    ASSERT_EQ(passes.size(), 2u);  // Z −3 and −6
+    // Every cutting point runs on the centre line, ρ + c/2 from both flanks.
+    for (const auto& pass : passes) {
+        for (const double d : pass) EXPECT_NEAR(d, w / 2, kTolMm);
+    }
+    EXPECT_NE(m.program.find("one slot pass on the groove's centre line"), std::string::npos);
+    EXPECT_EQ(m.program.find("G41"), std::string::npos);
+    EXPECT_EQ(m.program.find("G42"), std::string::npos);
+}
+
+TEST(CliExportGcodeGroove, ANarrowerToolRoughsTheCentreAndFinishesEachFlank) {
+    const test::TempDir dir;
+    const double rho = 2.0, clearance = 0.5, w = 2 * rho + clearance, tool = 1.2;
+    const std::string project = groovedSixLobe(dir, rho, clearance);
+    const Milled m = exportAndInterpret(dir, project, {"--tool-radius", "1.2", "--depth", "4"});
+    const Profile inner = profileOfFile(project);
+    const auto passes = checkGroove(m, inner, w, tool, "rough and finish");
+    ASSERT_EQ(passes.size(), 1u);
+    // The three loops: on the centre line, the tool radius off the inner flank, and the tool
+    // radius off the outer one; only the sideways moves between them lie elsewhere.
+    int centre = 0, innerLoop = 0, outerLoop = 0, between = 0;
+    for (const double d : passes.front()) {
+        if (std::abs(d - w / 2) <= kTolMm) {
+            ++centre;
+        } else if (std::abs(d - tool) <= kTolMm) {
+            ++innerLoop;
+        } else if (std::abs(d - (w - tool)) <= kTolMm) {
+            ++outerLoop;
+        } else {
+            ++between;
+        }
+    }
+    // Each loop is about as long as its flank: hundreds of 0.05 mm samples.
+    EXPECT_GT(centre, 2000);
+    EXPECT_GT(innerLoop, 2000);
+    EXPECT_GT(outerLoop, 2000);
+    EXPECT_LT(between, 200);
+    EXPECT_NE(m.program.find("finishing the inner flank, climbing: clockwise"), std::string::npos);
+}
+
+TEST(CliExportGcodeGroove, AToolWiderThanTheGrooveOrTooNarrowIsRefused) {
+    const test::TempDir dir;
+    const std::string project = groovedSixLobe(dir, 2.0, 0.5);
+    const std::string out = dir.file("cam.ngc");
+    const auto wide = test::runCli(
+        {"export", project, "--format", "gcode", "--out", out, "--tool-radius", "2.3"});
+    EXPECT_EQ(wide.exitCode, 2);
+    EXPECT_NE(wide.err.find("--tool-radius: the tool radius 2.3 mm is wider than the groove"),
+              std::string::npos)
+        << wide.err;
+    const auto narrow = test::runCli(
+        {"export", project, "--format", "gcode", "--out", out, "--tool-radius", "0.7"});
+    EXPECT_EQ(narrow.exitCode, 2);
+    EXPECT_NE(narrow.err.find("at least 0.75 mm"), std::string::npos) << narrow.err;
+    const auto compensated =
+        test::runCli({"export", project, "--format", "gcode", "--out", out, "--compensation"});
+    EXPECT_EQ(compensated.exitCode, 2);
+    EXPECT_NE(compensated.err.find("--compensation: a groove is milled"), std::string::npos)
+        << compensated.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 }  // namespace
 }  // namespace cam

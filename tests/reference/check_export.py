@@ -153,7 +153,7 @@ def check_extents(doc, msp, summary):
         fail(f"the active view ({vport.dxf.height} high) does not show the whole drawing")
 
 
-def check_dxf(project, path, tolerance, tool_radius):
+def check_dxf(project, path, tolerance, tool_radius, groove=None):
     import ezdxf
 
     doc = ezdxf.readfile(path)
@@ -168,7 +168,9 @@ def check_dxf(project, path, tolerance, tool_radius):
 
     msp = doc.modelspace()
     check_extents(doc, msp, summary)
-    contour = [e for e in msp if e.dxf.layer == "CONTOUR"]
+    # A grooved cam's contour is its inner flank (closure: groove).
+    layer = "FLANK_INNER" if groove else "CONTOUR"
+    contour = [e for e in msp if e.dxf.layer == layer]
     summary["contour_entities"] = len(contour)
     summary["types"] = sorted({e.dxftype() for e in contour})
     segments = project["segments"]
@@ -263,7 +265,57 @@ def check_dxf(project, path, tolerance, tool_radius):
     summary["toolpath_entities"] = len(toolpath)
     if tool_radius is not None:
         check_toolpath(project, toolpath, tool_radius, summary)
+    if groove:
+        check_groove(project, msp, groove[0], groove[1], summary)
     return summary
+
+
+def check_groove(project, msp, roller, clearance, summary):
+    """A groove's FLANK_OUTER and PITCH of an arc cam: per profile arc one ARC about the same
+    centre, its radius grown (convex arc) or shrunk (concave) by 2*roller + clearance (PITCH:
+    by roller), spanning the same angles about the centre - so every point of it lies that far
+    from the profile along the profile's normal, to 1e-9 mm. Then, independently of the arcs,
+    dense points of both layers against a dense profile (to the sampling's error)."""
+    width = 2 * roller + clearance
+    segments = project["segments"]
+    profile = dense_profile(project)
+    for layer, offset in (("FLANK_OUTER", width), ("PITCH", roller)):
+        entities = [e for e in msp if e.dxf.layer == layer]
+        key = layer.lower()
+        summary[key + "_entities"] = len(entities)
+        if len(entities) != len(segments):
+            fail(f"{layer}: {len(entities)} entities for {len(segments)} segments")
+            continue
+        worst = 0.0
+        for k, (seg, e) in enumerate(zip(segments, entities)):
+            if seg["type"] != "arc" or e.dxftype() not in ("ARC", "CIRCLE"):
+                fail(f"{layer}: contour[{k}] is not an arc written as an arc")
+                continue
+            c = (float(seg["center"][0]), float(seg["center"][1]))
+            grown = float(seg["radius"]) + (offset if seg["branch"] == "outer" else -offset)
+            worst = max(worst, dist((e.dxf.center.x, e.dxf.center.y), c),
+                        abs(e.dxf.radius - grown))
+            if e.dxftype() == "ARC":
+                # Its ends on the normals through the profile arc's ends.
+                a, b, _ = entity_shape(e)
+                p_start, p_end = ends(seg)
+                on_normal = [
+                    (c[0] + grown * (p[0] - c[0]) / dist(p, c),
+                     c[1] + grown * (p[1] - c[1]) / dist(p, c)) for p in (p_start, p_end)]
+                if dist(a, on_normal[0]) + dist(b, on_normal[1]) > \
+                        dist(b, on_normal[0]) + dist(a, on_normal[1]):
+                    a, b = b, a
+                worst = max(worst, dist(a, on_normal[0]), dist(b, on_normal[1]))
+        summary["worst_" + key + "_exact_mm"] = worst
+        if worst > 1e-9:
+            fail(f"{layer}: an arc is {worst} mm from the profile's offset by {offset} mm")
+        dense = 0.0
+        for e in entities:
+            for p in sampled_points(e)[::400]:
+                dense = max(dense, abs(min(dist(p, q) for q in profile) - offset))
+        summary["worst_" + key + "_dense_mm"] = dense
+        if dense > 1e-2:
+            fail(f"{layer}: a point is {dense} mm off {offset} mm from the dense profile")
 
 
 def check_polyline(project, poly, tolerance, summary):
@@ -331,7 +383,49 @@ def check_toolpath(project, toolpath, tool_radius, summary):
 # SVG
 # ---------------------------------------------------------------------------
 
-def check_svg(project, path, tolerance):
+def distance_to_arc(seg, p):
+    """The exact distance from p to an arc segment of the profile: radial within its span about
+    its centre (counter-clockwise for a convex arc, clockwise for a concave one), else its
+    nearer end."""
+    c = (float(seg["center"][0]), float(seg["center"][1]))
+    a, b = ends(seg)
+    angle = lambda q: math.atan2(q[1] - c[1], q[0] - c[0])
+    ccw = seg["branch"] == "outer"
+    span = (angle(b) - angle(a)) if ccw else (angle(a) - angle(b))
+    along = (angle(p) - angle(a)) if ccw else (angle(a) - angle(p))
+    span %= 2 * math.pi
+    if span < 1e-12:
+        span = 2 * math.pi
+    if along % (2 * math.pi) <= span:
+        return abs(dist(p, c) - float(seg["radius"]))
+    return min(dist(p, a), dist(p, b))
+
+
+def check_svg_groove(project, paths, roller, clearance, summary):
+    """A groove's outer flank and pitch paths of an arc cam: every point lies 2*roller +
+    clearance (roller) from the profile, measured exactly against its arcs."""
+    import svgelements
+
+    for name, offset in (("outer-flank", 2 * roller + clearance), ("pitch", roller)):
+        found = [q for q in paths if q.get("id") == name]
+        if len(found) != 1:
+            fail(f"{len(found)} paths with id={name}")
+            continue
+        worst = 0.0
+        for piece in svgelements.Path(found[0].get("d")):
+            if isinstance(piece, svgelements.Move):
+                continue
+            for i in range(9):
+                q = piece.point(i / 8)
+                point = (q.x, -q.y)
+                d = min(distance_to_arc(seg, point) for seg in project["segments"])
+                worst = max(worst, abs(d - offset))
+        summary["worst_" + name.replace("-", "_") + "_mm"] = worst
+        if worst > 1e-6:
+            fail(f"{name}: a point is {worst} mm off {offset} mm from the profile")
+
+
+def check_svg(project, path, tolerance, groove=None):
     import xml.etree.ElementTree as ET
 
     import svgelements
@@ -375,6 +469,9 @@ def check_svg(project, path, tolerance):
     summary["worst_mm"] = worst
     if worst > max(tolerance, 1e-6):
         fail(f"the path is {worst} mm from the profile (limit {max(tolerance, 1e-6)})")
+    if groove:
+        check_svg_groove(project, list(root.iter("{http://www.w3.org/2000/svg}path")),
+                         groove[0], groove[1], summary)
     return summary
 
 
@@ -582,12 +679,13 @@ def main():
     parser.add_argument("file")
     parser.add_argument("--tolerance", type=float, default=0.001)
     parser.add_argument("--tool-radius", type=float)
+    parser.add_argument("--groove", type=float, nargs=2, metavar=("ROLLER", "CLEARANCE"))
     args = parser.parse_args()
     project = ref.load_project(args.project)
     if args.kind == "dxf":
-        summary = check_dxf(project, args.file, args.tolerance, args.tool_radius)
+        summary = check_dxf(project, args.file, args.tolerance, args.tool_radius, args.groove)
     elif args.kind == "svg":
-        summary = check_svg(project, args.file, args.tolerance)
+        summary = check_svg(project, args.file, args.tolerance, args.groove)
     elif args.kind == "codesys":
         summary = check_codesys(project, args.file)
     else:

@@ -17,6 +17,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "closure/groove.h"
 #include "export/export_formats.h"
 #include "widgets/number_spin_box.h"
 #include "widgets/quantity_format.h"
@@ -71,6 +72,7 @@ ExportDialog::ExportDialog(const Project& project, const QString& baseName,
     if (project.machining && project.machining->toolRadius > 0.0) {
         m_projectToolRadius = project.machining->toolRadius;
     }
+    if (const auto groove = grooveOf(project)) m_grooveToolRadius = groove->width() / 2.0;
     QFormLayout* form = nullptr;
 
     // CSV
@@ -124,9 +126,13 @@ ExportDialog::ExportDialog(const Project& project, const QString& baseName,
 
     // G-code
     page(m_pages, form);
-    m_gcodeToolRadius = lengthBox(this, "gcodeToolRadius", 1e-6, 1e6, toolRadius,
-                                  tr("The cutter's radius (the project's machining section "
-                                     "gives the default)"));
+    m_gcodeToolRadius = lengthBox(
+        this, "gcodeToolRadius", 1e-6, 1e6, m_grooveToolRadius.value_or(toolRadius),
+        m_grooveToolRadius
+            ? tr("The cutter's radius. The groove's half width (the default) cuts it in one "
+                 "slot pass; a narrower tool, at least a third of that, roughs its centre line "
+                 "and finishes each flank")
+            : tr("The cutter's radius (the project's machining section gives the default)"));
     form->addRow(tr("Tool &radius:"), m_gcodeToolRadius);
     // A feed the machine takes: the project's feed limit, else a cautious one to start with.
     m_feedLimit =
@@ -303,6 +309,7 @@ void ExportDialog::restoreOptions() {
         m_dxfToolRadius->setValue(*m_projectToolRadius);
         m_gcodeToolRadius->setValue(*m_projectToolRadius);
     }
+    if (m_grooveToolRadius) m_gcodeToolRadius->setValue(*m_grooveToolRadius);
 }
 
 ExportFormat ExportDialog::format() const {

@@ -78,6 +78,8 @@ private:
     /// gives them: the feed stays below the one, the tool radii are the other.
     std::optional<double> m_feedLimit;
     std::optional<double> m_projectToolRadius;
+    /// A grooved cam's: half the groove's width, the tool that cuts it in one slot pass.
+    std::optional<double> m_grooveToolRadius;
     NumberSpinBox* m_gcodeDepth = nullptr;
     QCheckBox* m_gcodeStepDownOn = nullptr;
     NumberSpinBox* m_gcodeStepDown = nullptr;

@@ -50,12 +50,22 @@ Result<std::string> exportText(const Project& project, const ExportRequest& requ
             if (csv.ok() && request.csvGerman) return forGermanSpreadsheets(csv.value());
             return csv;
         }
-        case ExportFormat::Dxf:
-            return dxfDocument(contour.value(), request.dxf);
-        case ExportFormat::Svg:
-            return svgDocument(contour.value(), request.svg);
-        case ExportFormat::Gcode:
-            return gcodeProgram(contour.value(), request.gcode);
+        // A grooved cam's drawings show both flanks and its program mills the groove.
+        case ExportFormat::Dxf: {
+            DxfOptions options = request.dxf;
+            options.groove = grooveOf(project);
+            return dxfDocument(contour.value(), options);
+        }
+        case ExportFormat::Svg: {
+            SvgOptions options = request.svg;
+            options.groove = grooveOf(project);
+            return svgDocument(contour.value(), options);
+        }
+        case ExportFormat::Gcode: {
+            GcodeOptions options = request.gcode;
+            options.groove = grooveOf(project);
+            return gcodeProgram(contour.value(), options);
+        }
         case ExportFormat::CamTable: {
             CamTableOptions options = request.camTable;
             options.follower = project.follower.value_or(FollowerSpec{});

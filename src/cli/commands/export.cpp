@@ -100,12 +100,17 @@ int runExport(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
         if (const auto r = args.option("--tool-radius")) {
             options.toolRadiusMm = parseFiniteNumber("--tool-radius", *r, "a radius in mm");
         }
+        options.groove = grooveOf(loaded.project);
         text = dxfDocument(loaded.contour, options);
     } else if (kind.id == ExportFormatId::Gcode) {
         GcodeOptions options;
         const MachiningSpec machining = loaded.project.machining.value_or(MachiningSpec{});
+        options.groove = grooveOf(loaded.project);
         if (const auto r = args.option("--tool-radius")) {
             options.toolRadiusMm = parseFiniteNumber("--tool-radius", *r, "a radius in mm");
+        } else if (options.groove) {
+            // A groove is cut in one slot pass by a tool of half its width.
+            options.toolRadiusMm = options.groove->width() / 2.0;
         } else if (machining.toolRadius > 0.0) {
             options.toolRadiusMm = machining.toolRadius;
         } else {
@@ -128,6 +133,7 @@ int runExport(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
         SvgOptions options;
         options.toleranceMm = tolerance;
         options.title = exportName(loaded.project.name, input);
+        options.groove = grooveOf(loaded.project);
         text = svgDocument(loaded.contour, options);
     } else {
         CamTableOptions options;

@@ -36,6 +36,13 @@ int runState(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
     const double reduced = kTwoPi * (turns - std::floor(turns));
     const FollowerState at = follower.at(reduced, loaded.omega);
     state["follower"] = followerJson(follower, at);
+    // A grooved cam: the roller pressed against the outer flank instead, at the same angle.
+    if (loaded.outerFlank) {
+        const FollowerSpec& spec = follower.spec();
+        state["follower"]["outer_flank"] =
+            outerFlankJson(follower, onOuterFlank(loaded.outerFlank->at(reduced, loaded.omega),
+                                                  spec.radius, spec.grooveClearance));
+    }
     // With dynamics, the forces there (math.md §9).
     if (loaded.project.dynamics) {
         const ForceModel model = ForceModel::of(*loaded.project.dynamics, follower.spec());

@@ -6,7 +6,8 @@
 
 namespace cam {
 
-Result<GrooveFlanks> grooveFlanks(const Contour& contour, double rollerRadius, double clearance) {
+Result<GrooveFlanks> grooveFlanks(const Contour& contour, double rollerRadius, double clearance,
+                                  double splineToleranceMm) {
     Diagnostics errors;
     if (!(std::isfinite(rollerRadius) && rollerRadius > 0.0)) {
         errors.push_back(Diagnostic::make(FieldPlace{Field::FollowerRadius},
@@ -18,11 +19,11 @@ Result<GrooveFlanks> grooveFlanks(const Contour& contour, double rollerRadius, d
                                           {0.0, kMaxLengthMm, std::string(" mm"), clearance}));
     }
     if (!errors.empty()) return errors;
-    auto pitch = toolPathFromContour(contour, rollerRadius);
+    auto pitch = offsetContour(contour, rollerRadius, splineToleranceMm);
     if (!pitch.ok()) return pitch.errors();
     // The outer flank is the inner one offset by 2ρ + c: where that offset degenerates, the
     // pitch curve's concave stretch is tighter than ρ + c and the outer flank folds over.
-    auto outer = toolPathFromContour(contour, 2.0 * rollerRadius + clearance);
+    auto outer = offsetContour(contour, 2.0 * rollerRadius + clearance, splineToleranceMm);
     if (!outer.ok()) {
         for (const Diagnostic& d : outer.errors()) {
             const bool undercut = d.code == DiagnosticCode::ToolNotBelowArcRadius ||
@@ -38,10 +39,10 @@ Result<GrooveFlanks> grooveFlanks(const Contour& contour, double rollerRadius, d
         }
         return errors;
     }
-    auto inner = offsetContour(contour, 0.0, kSplineToleranceMm);
+    auto inner = offsetContour(contour, 0.0, splineToleranceMm);
     if (!inner.ok()) return inner.errors();
-    return GrooveFlanks{std::move(inner).value().path, std::move(pitch).value(),
-                        std::move(outer).value()};
+    return GrooveFlanks{std::move(inner).value().path, std::move(pitch).value().path,
+                        std::move(outer).value().path};
 }
 
 namespace {

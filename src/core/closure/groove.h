@@ -17,6 +17,24 @@
 
 namespace cam {
 
+/// @brief A groove's size: the roller's radius ρ and its clearance c between the flanks, mm.
+struct GrooveSize {
+    double rollerRadiusMm = 0.0;
+    double clearanceMm = 0.0;
+    /// The groove's width 2ρ + c, mm.
+    [[nodiscard]] double width() const { return 2.0 * rollerRadiusMm + clearanceMm; }
+    /// The groove of a grooved roller follower; none for any other.
+    [[nodiscard]] static std::optional<GrooveSize> of(const FollowerSpec& follower) {
+        if (!follower.grooved() || follower.type != FollowerType::Roller) return std::nullopt;
+        return GrooveSize{follower.radius, follower.grooveClearance};
+    }
+};
+
+/// @brief The project's groove: its follower's, when that runs in one.
+[[nodiscard]] inline std::optional<GrooveSize> grooveOf(const Project& project) {
+    return project.follower ? GrooveSize::of(*project.follower) : std::nullopt;
+}
+
 /// @brief The pitch curve (the roller centre's path) and the outer flank of a groove, closed
 /// paths of lines and arcs at z = 0 in the cam frame, in the contour's order.
 struct GrooveFlanks {
@@ -60,7 +78,8 @@ struct GrooveLands {
 /// the inner flank); a radius or clearance that is not finite, or out of range, is an error
 /// (`follower.radius`, `follower.groove_clearance_mm`).
 [[nodiscard]] Result<GrooveFlanks> grooveFlanks(const Contour& contour, double rollerRadius,
-                                                double clearance);
+                                                double clearance,
+                                                double splineToleranceMm = kSplineToleranceMm);
 
 /// @brief The roller pressed against the outer flank (where the load turns it over to the other
 /// side of the groove) runs with its centre on the outer flank offset inwards by ρ, which is the

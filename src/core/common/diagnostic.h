@@ -123,6 +123,9 @@ enum class Severity { Error, Info };
     X(ToolTrimsSegment)                  \
     X(GrooveOuterFlankUndercut)          \
     X(GrooveNeedsRoller)                 \
+    X(GrooveToolTooWide)                 \
+    X(GrooveToolTooNarrow)               \
+    X(GrooveNoCompensation)              \
     X(LandRadiiCrossed)                  \
     X(SeedStepTooSmall)                  \
     X(SeedStepTooMany)                   \

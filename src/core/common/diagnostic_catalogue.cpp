@@ -257,6 +257,19 @@ constexpr std::array<DiagnosticEntry, kDiagnosticCodeCount> kCatalogue{{
      CAM_TRANSLATE_NOOP("Diagnostic",
                         "a groove needs a roller follower: a knife or a flat face cannot run in "
                         "a groove; choose a roller or the spring closure")},
+    {Code::GrooveToolTooWide, "nn",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "the tool radius %1 mm is wider than the groove: at most half its width, "
+                        "%2 mm (the roller radius plus half the clearance)")},
+    {Code::GrooveToolTooNarrow, "nn",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "the tool radius %1 mm is too small to clear the groove in a roughing pass "
+                        "on its centre line and a finishing pass along each flank: at least %2 mm "
+                        "(a sixth of its width)")},
+    {Code::GrooveNoCompensation, "",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "a groove is milled on computed tool-centre paths: a controller's cutter "
+                        "compensation (G41/G42) cannot follow both flanks")},
     {Code::LandRadiiCrossed, "nn",
      CAM_TRANSLATE_NOOP("Diagnostic",
                         "must be larger than the inner land radius %1 mm (got %2 mm): the groove "

@@ -159,6 +159,8 @@ std::string_view fieldKey(Field field) {
             return "--tolerance";
         case Field::ToolRadiusOption:
             return "--tool-radius";
+        case Field::CompensationOption:
+            return "--compensation";
         case Field::DepthOption:
             return "--depth";
         case Field::StepDownOption:

@@ -100,6 +100,7 @@ enum class Field : std::uint8_t {
     ToolRadiusOption,
     DepthOption,
     StepDownOption,
+    CompensationOption,
     PointsOption,
     GcodeSafeZ,  ///< the G-code options without an option of their own
     GcodeFeed,

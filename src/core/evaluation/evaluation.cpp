@@ -72,11 +72,18 @@ ProjectEvaluation evaluateProject(const Project& project) {
         // A groove whose outer flank would fold cannot be milled: the roller cannot run in it.
         if (e.follower && spec.grooved() && spec.type == FollowerType::Roller) {
             auto groove = grooveFlanks(*e.contour, spec.radius, spec.grooveClearance);
-            if (groove.ok()) {
+            auto wide = FollowerModel::build(*e.contour, outerFlankRoller(spec));
+            if (groove.ok() && wide.ok()) {
                 e.groove = std::move(groove).value();
-            } else {
+                e.outerFlankFollower =
+                    std::make_shared<const FollowerModel>(std::move(wide).value());
+            } else if (!groove.ok()) {
                 e.follower.reset();
                 e.followerProblems = groove.errors();
+            } else {
+                // Pressed on the outer flank, a swinging arm's roller may not reach the cam.
+                e.follower.reset();
+                e.followerProblems = wide.errors();
             }
         }
     }

@@ -56,6 +56,9 @@ struct ProjectEvaluation {
     /// A grooved cam's flanks (closure/groove.h), with the follower; a groove that cannot be
     /// milled (its outer flank folds) is one of `followerProblems`.
     std::optional<GrooveFlanks> groove;
+    /// With a groove: the roller pressed against its outer flank (outerFlankRoller, placed
+    /// like `follower`; onOuterFlank turns its states into the outer flank's contacts).
+    std::shared_ptr<const FollowerModel> outerFlankFollower;
     /// The cam's speed (rad/s, signed) and the time of one turn (s); 0 while the project's
     /// motion gives none a computation can use.
     double omega = 0.0;

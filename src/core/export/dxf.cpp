@@ -45,6 +45,8 @@ enum Handle : unsigned {
     kModelSpaceEnd = 0x2E,
     kPaperSpaceBlock = 0x2F,
     kPaperSpaceEnd = 0x30,
+    kLayerFlankOuter = 0x31,
+    kLayerPitch = 0x32,
     kFirstEntityHandle = 0x100,
 };
 
@@ -417,10 +419,22 @@ Result<std::string> dxfDocument(const Contour& contour, const DxfOptions& option
         if (!offset.ok()) return offset.errors();
         toolPath = std::move(offset.value().path);
     }
+    std::optional<GrooveFlanks> groove;
+    if (options.groove) {
+        auto flanks = grooveFlanks(contour, options.groove->rollerRadiusMm,
+                                   options.groove->clearanceMm, options.toleranceMm);
+        if (!flanks.ok()) return flanks.errors();
+        groove = std::move(flanks).value();
+    }
     const ContourOffset& p = profile.value();
     const bool fullCircle = contour.size() == 1 && contour.segment(0).type == SegmentType::Arc;
+    const char* contourLayer = groove ? "FLANK_INNER" : "CONTOUR";
 
-    std::vector<Layer> layers{{"0", kLayer0, 7}, {"CONTOUR", kLayerContour, 7}};
+    std::vector<Layer> layers{{"0", kLayer0, 7}, {contourLayer, kLayerContour, 7}};
+    if (groove) {
+        layers.push_back({"FLANK_OUTER", kLayerFlankOuter, 5});
+        layers.push_back({"PITCH", kLayerPitch, 8});
+    }
     if (toolPath) layers.push_back({"TOOLPATH", kLayerToolpath, 1});
     if (options.centres) layers.push_back({"CENTRES", kLayerCentres, 3});
 
@@ -432,6 +446,9 @@ Result<std::string> dxfDocument(const Contour& contour, const DxfOptions& option
     }
     if (toolPath) {
         for (const PathSegment& s : toolPath->segments) extendBounds(s, lo, hi);
+    }
+    if (groove) {
+        for (const PathSegment& s : groove->outer.segments) extendBounds(s, lo, hi);
     }
     if (options.splineEntities) {
         // Written as SPLINE entities: the curves' own extremes, not their arcs'.
@@ -454,19 +471,25 @@ Result<std::string> dxfDocument(const Contour& contour, const DxfOptions& option
     if (options.polyline) {
         std::vector<PathSegment> pieces =
             fullCircle ? halves(p.path.segments.front()) : p.path.segments;
-        entities.polyline(pieces, "CONTOUR");
+        entities.polyline(pieces, contourLayer);
     } else {
         for (std::size_t i = 0; i < p.path.segments.size(); ++i) {
             const ContourSegment& seg = contour.segment(p.origin[i]);
             if (options.splineEntities && isSpline(seg.type)) {
                 // One SPLINE per segment, written where its first arc pair was.
                 if (i == 0 || p.origin[i - 1] != p.origin[i]) {
-                    entities.spline(CubicBezier{seg.bezierKernel.p}, "CONTOUR");
+                    entities.spline(CubicBezier{seg.bezierKernel.p}, contourLayer);
                 }
                 continue;
             }
-            entities.piece(p.path.segments[i], "CONTOUR", fullCircle);
+            entities.piece(p.path.segments[i], contourLayer, fullCircle);
         }
+    }
+    if (groove) {
+        for (const PathSegment& s : groove->outer.segments) {
+            entities.piece(s, "FLANK_OUTER", fullCircle);
+        }
+        for (const PathSegment& s : groove->pitch.segments) entities.piece(s, "PITCH", fullCircle);
     }
     if (toolPath) {
         for (const PathSegment& s : toolPath->segments) {

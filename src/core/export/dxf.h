@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "closure/groove.h"
 #include "common/diagnostic.h"
 #include "contour/contour.h"
 
@@ -26,13 +27,17 @@ struct DxfOptions {
     bool centres = false;
     /// Layer TOOLPATH: the tool-centre path for this tool radius (mm, > 0), LINE and ARC.
     std::optional<double> toolRadiusMm;
+    /// A grooved cam (closure/groove.h): the contour on layer FLANK_INNER instead of CONTOUR,
+    /// the outer flank on FLANK_OUTER and the roller's pitch curve on PITCH, LINE and ARC
+    /// entities (arcs stay arcs; splines' offsets as tangent arcs within the tolerance).
+    std::optional<GrooveSize> groove;
 };
 
 /// @brief The DXF text (CRLF-free, "\n" line ends, C locale, numbers exact and shortest). Every
 /// LINE/ARC of layer CONTOUR is one line or arc segment of the contour, exact to rounding; a
 /// one-segment contour (a full circle) is a CIRCLE. Errors: a tolerance or tool radius out of
-/// range (located `--tolerance`, `--tool-radius`), a tool path that cannot be made (located
-/// `contour[k]`).
+/// range (located `--tolerance`, `--tool-radius`), a tool path or groove that cannot be made
+/// (located `contour[k]`).
 [[nodiscard]] Result<std::string> dxfDocument(const Contour& contour, const DxfOptions& options);
 
 }  // namespace cam

@@ -326,6 +326,144 @@ void checkLength(double value, Field field, const char* what, Diagnostics& error
     }
 }
 
+/// The place on a closed path nearest to `target`.
+PathPlace nearestPlace(const std::vector<PathSegment>& pieces, const Vec2& target) {
+    PathPlace best;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        const PathSegment& s = pieces[i];
+        if (s.kind == PathSegment::Kind::Line) {
+            // Lines start the loop at their start: the nearest of their ends will do, as the
+            // start is a point of the path that lies on the common normal only at its ends.
+            const double d = (xy(s.start) - target).norm();
+            if (d < nearest) best = {i, 0.0}, nearest = d;
+            continue;
+        }
+        const Vec2 w = target - s.center;
+        double along = std::remainder(s.sweep >= 0 ? std::atan2(w.y(), w.x()) - s.startAngle
+                                                   : s.startAngle - std::atan2(w.y(), w.x()),
+                                      kTwoPi);
+        if (along < 0) along += kTwoPi;
+        along = std::min(along, std::abs(s.sweep));
+        const double sign = s.sweep >= 0 ? 1.0 : -1.0;
+        const Vec2 p = s.center + s.radius * Vec2(std::cos(s.startAngle + sign * along),
+                                                  std::sin(s.startAngle + sign * along));
+        const double d = (p - target).norm();
+        if (d < nearest) best = {i, along}, nearest = d;
+    }
+    return best;
+}
+
+/// One closed tool-centre loop of a groove: the contour offset by `offset`, in the travel order
+/// of `direction`, starting nearest to `near`.
+struct GrooveLoop {
+    std::string what;
+    std::vector<Move> moves;
+    Vec2 start{0, 0};
+};
+
+Result<GrooveLoop> grooveLoop(const Contour& contour, double offset, MillingDirection direction,
+                              double tolerance, const std::optional<Vec2>& near, std::string what) {
+    auto path = offsetContour(contour, offset, tolerance);
+    if (!path.ok()) return path.errors();
+    const std::vector<PathSegment> pieces = inTravelOrder(path.value().path.segments, direction);
+    const PathPlace at = near ? nearestPlace(pieces, *near) : farthestPoint(pieces);
+    const std::vector<PathSegment> loop = startingAt(pieces, at);
+    return GrooveLoop{std::move(what), movesOf(loop), xy(loop.front().start)};
+}
+
+/// The groove's program (GcodeOptions::groove): per depth a plunge on the centre line, the
+/// centre loop, and with a narrower tool a move sideways onto each flank's loop and back.
+Result<std::string> grooveProgram(const Contour& contour, const GcodeOptions& options,
+                                  long long passes) {
+    const GrooveSize& g = *options.groove;
+    const double width = g.width(), half = width / 2.0, rho = options.toolRadiusMm;
+    Diagnostics errors;
+    if (options.compensation) {
+        errors.push_back(Diagnostic::make(FieldPlace{Field::CompensationOption},
+                                          DiagnosticCode::GrooveNoCompensation));
+    }
+    // A tool of half the width to rounding cuts the slot in one pass.
+    const bool slot = std::abs(rho - half) <= 1e-9 * std::max(1.0, half);
+    if (!slot && rho > half) {
+        errors.push_back(Diagnostic::make(FieldPlace{Field::ToolRadiusOption},
+                                          DiagnosticCode::GrooveToolTooWide, {rho, half}));
+    } else if (!slot && rho < width / 6.0) {
+        // The centre pass clears [ρ + c/2 − r, ρ + c/2 + r] from the inner flank, the flank
+        // passes [0, 2r] and [w − 2r, w]: they meet when 3r ≥ w/2.
+        errors.push_back(Diagnostic::make(FieldPlace{Field::ToolRadiusOption},
+                                          DiagnosticCode::GrooveToolTooNarrow, {rho, width / 6.0}));
+    }
+    if (!errors.empty()) return errors;
+
+    // The centre line starts farthest from the rotation centre: there its normal is radial, and
+    // the flanks' loops start across the groove on the same normal.
+    auto centre = grooveLoop(contour, half, MillingDirection::Climb, options.toleranceMm,
+                             std::nullopt, "the groove's centre line");
+    if (!centre.ok()) return centre.errors();
+    std::vector<GrooveLoop> loops{std::move(centre).value()};
+    if (!slot) {
+        const Vec2 start = loops.front().start, out = start.normalized();
+        auto inner = grooveLoop(contour, rho, MillingDirection::Climb, options.toleranceMm,
+                                Vec2(start - (half - rho) * out),
+                                "finishing the inner flank, climbing: clockwise");
+        if (!inner.ok()) return inner.errors();
+        auto outer = grooveLoop(contour, width - rho, MillingDirection::Conventional,
+                                options.toleranceMm, Vec2(start + (half - rho) * out),
+                                "finishing the outer flank, climbing: counter-clockwise");
+        if (!outer.ok()) return outer.errors();
+        loops.push_back(std::move(inner).value());
+        loops.push_back(std::move(outer).value());
+    }
+
+    const double feed = options.feedMmMin, plungeFeed = options.feedMmMin / 2.0;
+    Program program;
+    program.line("%");
+    program.comment("Camwright G-code: " + commentSafe(options.projectName));
+    program.comment("origin: X0 Y0 the cam's rotation centre, Z0 the top of the stock; mm");
+    program.comment("the groove of a grooved cam: inner flank the contour, outer flank " +
+                    fixed(width) + " mm beyond it (roller " + fixed(g.rollerRadiusMm) +
+                    " mm, clearance " + fixed(g.clearanceMm) + " mm)");
+    if (slot) {
+        program.comment("one slot pass on the groove's centre line (the contour offset by " +
+                        fixed(half) + " mm) with a tool of radius " + fixed(rho) + " mm");
+    } else {
+        program.comment("tool radius " + fixed(rho) + " mm: roughing on the centre line (offset " +
+                        fixed(half) + " mm), then finishing the inner flank (offset " + fixed(rho) +
+                        " mm) and the outer flank (offset " + fixed(width - rho) + " mm)");
+    }
+    program.comment(
+        "every pass plunges on the centre line, inside the groove; spindle clockwise "
+        "M3; start the spindle before running");
+    program.comment("splines as arcs within " + fixed(options.toleranceMm) + " mm");
+    program.comment("depth " + fixed(options.depthMm) + " mm in " + std::to_string(passes) +
+                    (passes == 1 ? " pass" : " passes") + "; safe Z " + fixed(options.safeZMm) +
+                    " mm");
+    program.comment("feed " + fixed(feed, 3) + " mm/min, plunge " + fixed(plungeFeed, 3) +
+                    " mm/min");
+    program.line("G21 G90 G91.1 G17 G94 G40");
+    program.rapidZ(options.safeZMm);
+    const Vec2 plungeAt = loops.front().start;
+    for (long long k = 1; k <= passes; ++k) {
+        const double depth =
+            k == passes ? options.depthMm : static_cast<double>(k) * *options.stepDownMm;
+        program.comment("pass " + std::to_string(k) + " of " + std::to_string(passes) + ": Z" +
+                        fixed(-depth));
+        program.rapidXY(plungeAt);
+        program.feedZ(-depth, plungeFeed);
+        for (const GrooveLoop& loop : loops) {
+            program.comment(loop.what);
+            program.move({false, loop.start}, feed);
+            for (const Move& m : loop.moves) program.move(m, feed);
+        }
+        program.move({false, plungeAt}, feed);
+        program.rapidZ(options.safeZMm);
+    }
+    program.line("M30");
+    program.line("%");
+    return program.take();
+}
+
 }  // namespace
 
 Result<std::string> gcodeProgram(const Contour& contour, const GcodeOptions& options) {
@@ -360,6 +498,7 @@ Result<std::string> gcodeProgram(const Contour& contour, const GcodeOptions& opt
         if (errors.empty()) passes = std::max(1LL, static_cast<long long>(count));
     }
     if (!errors.empty()) return errors;
+    if (options.groove) return grooveProgram(contour, options, passes);
 
     const double rho = options.toolRadiusMm;
     // The tool-centre path; it also refuses a tool too wide for a concave arc or corner, which

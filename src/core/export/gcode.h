@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "closure/groove.h"
 #include "common/diagnostic.h"
 #include "contour/contour.h"
 
@@ -48,6 +49,12 @@ struct GcodeOptions {
     bool compensation = false;
     int toolNumber = 1;  ///< the D word of G41/G42, 1 … 99999
     MillingDirection direction = MillingDirection::Climb;
+    /// Mill this groove: a tool of half its width (ρ + c/2) cuts it in one slot pass on its
+    /// centre line; a narrower one (at least a sixth of the width) roughs there and then
+    /// finishes each flank, the inner one climbing clockwise, the outer counter-clockwise.
+    /// Every pass plunges on the centre line and moves sideways onto a flank's path: no lead
+    /// arcs, nothing outside the groove is cut. Never with `compensation`.
+    std::optional<GrooveSize> groove;
 };
 
 /// @brief The program, "\n" line ends, numbers in the C locale: `%`, header comments, `G21 G90
@@ -63,7 +70,9 @@ struct GcodeOptions {
 /// (located `--tool-radius`, `--tolerance`, `--depth`, `--step-down`, or the field's name), a tool
 /// too wide for a concave arc or corner (located `contour[k]`), and under compensation a concave
 /// corner whose crossing lies beyond the next programmed arc of a spline (`contour[k]`), which a
-/// controller's compensation would turn into a cut through the part.
+/// controller's compensation would turn into a cut through the part. With `groove`, the
+/// groove's program (GcodeOptions::groove), and a tool wider than the groove or too narrow to
+/// clear it in three passes is an error (located `--tool-radius`).
 [[nodiscard]] Result<std::string> gcodeProgram(const Contour& contour, const GcodeOptions& options);
 
 }  // namespace cam

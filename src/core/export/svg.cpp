@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "common/angles.h"
 #include "export/export_checks.h"
@@ -58,6 +59,37 @@ void appendCross(std::string& out, const Eigen::Vector2d& c, double size, const 
     out += "\"/>\n";
 }
 
+/// A closed <path> through `pieces`: lines, and arcs in pieces of at most a quarter turn.
+void appendClosedPath(std::string& out, const std::vector<PathSegment>& pieces, const char* id,
+                      const char* cssClass) {
+    out += "  <path id=\"";
+    out += id;
+    out += "\" class=\"";
+    out += cssClass;
+    out += "\" d=\"M ";
+    appendPoint(out, pieces.front().start);
+    for (const PathSegment& s : pieces) {
+        if (s.kind == PathSegment::Kind::Line) {
+            out += " L ";
+            appendPoint(out, s.end);
+        } else {
+            // An SVG arc is given by its end points and radius; its centre is well determined
+            // only well away from a half turn (and a full turn has no second point): pieces of
+            // at most a quarter turn each.
+            const int parts =
+                std::max(1, static_cast<int>(std::ceil(std::abs(s.sweep) / (kPi / 2) - 1e-9)));
+            for (int i = 0; i < parts; ++i) {
+                const double part = s.sweep / parts;
+                PathSegment piece =
+                    PathSegment::arc(s.center, s.radius, s.startAngle + i * part, part, 0.0);
+                if (i + 1 == parts) piece.end = s.end;  // exactly where the next piece starts
+                appendArc(out, piece);
+            }
+        }
+    }
+    out += " Z\"/>\n";
+}
+
 }  // namespace
 
 Result<std::string> svgDocument(const Contour& contour, const SvgOptions& options) {
@@ -67,10 +99,21 @@ Result<std::string> svgDocument(const Contour& contour, const SvgOptions& option
     auto profile = offsetContour(contour, 0.0, options.toleranceMm);
     if (!profile.ok()) return profile.errors();
     const std::vector<PathSegment>& pieces = profile.value().path.segments;
+    std::optional<GrooveFlanks> groove;
+    if (options.groove) {
+        auto flanks = grooveFlanks(contour, options.groove->rollerRadiusMm,
+                                   options.groove->clearanceMm, options.toleranceMm);
+        if (!flanks.ok()) return flanks.errors();
+        groove = std::move(flanks).value();
+    }
 
-    // The drawing's box: the profile (arcs through their extreme points) and the rotation centre.
+    // The drawing's box: the profile, a groove's outer flank (arcs through their extreme
+    // points) and the rotation centre.
     Eigen::Vector2d lo = Eigen::Vector2d::Zero(), hi = Eigen::Vector2d::Zero();
-    for (const PathSegment& s : pieces) {
+    std::vector<PathSegment> drawn = pieces;
+    if (groove)
+        drawn.insert(drawn.end(), groove->outer.segments.begin(), groove->outer.segments.end());
+    for (const PathSegment& s : drawn) {
         const int samples = s.kind == PathSegment::Kind::Arc ? 64 : 1;
         for (int i = 0; i <= samples; ++i) {
             const Eigen::Vector2d p = s.point(s.length() * i / samples).head<2>();
@@ -110,34 +153,23 @@ Result<std::string> svgDocument(const Contour& contour, const SvgOptions& option
         "written by Camwright</desc>\n";
     out += "  <style>.profile{fill:none;stroke:#000;stroke-width:";
     appendExact(out, stroke);
+    out += "} .pitch{fill:none;stroke:#888;stroke-dasharray:";
+    appendExact(out, 4 * stroke);
+    out += ' ';
+    appendExact(out, 2 * stroke);
+    out += ";stroke-width:";
+    appendExact(out, stroke / 2);
     out += "} .centre{fill:none;stroke:#c00;stroke-width:";
     appendExact(out, stroke / 2);
     out += "} .title{font-family:sans-serif;font-size:";
     appendExact(out, text);
     out += "px}</style>\n";
 
-    out += "  <path id=\"profile\" class=\"profile\" d=\"M ";
-    appendPoint(out, pieces.front().start);
-    for (const PathSegment& s : pieces) {
-        if (s.kind == PathSegment::Kind::Line) {
-            out += " L ";
-            appendPoint(out, s.end);
-        } else {
-            // An SVG arc is given by its end points and radius; its centre is well determined
-            // only well away from a half turn (and a full turn has no second point): pieces of
-            // at most a quarter turn each.
-            const int parts =
-                std::max(1, static_cast<int>(std::ceil(std::abs(s.sweep) / (kPi / 2) - 1e-9)));
-            for (int i = 0; i < parts; ++i) {
-                const double part = s.sweep / parts;
-                PathSegment piece =
-                    PathSegment::arc(s.center, s.radius, s.startAngle + i * part, part, 0.0);
-                if (i + 1 == parts) piece.end = s.end;  // exactly where the next piece starts
-                appendArc(out, piece);
-            }
-        }
+    appendClosedPath(out, pieces, "profile", "profile");
+    if (groove) {
+        appendClosedPath(out, groove->outer.segments, "outer-flank", "profile");
+        appendClosedPath(out, groove->pitch.segments, "pitch", "pitch");
     }
-    out += " Z\"/>\n";
     appendCross(out, Eigen::Vector2d::Zero(), mark, "centre");
     for (std::size_t k = 0; k < contour.size(); ++k) {
         if (contour.segment(k).type == SegmentType::Arc) {

@@ -2,8 +2,10 @@
 /// @file
 /// @brief The profile as a 1:1 SVG drawing in millimetres (exports.md).
 
+#include <optional>
 #include <string>
 
+#include "closure/groove.h"
 #include "common/diagnostic.h"
 #include "contour/contour.h"
 #include "export/dxf.h"
@@ -19,6 +21,9 @@ struct SvgOptions {
     double toleranceMm = kSvgToleranceMm;
     /// Shown above the drawing and as its <title>.
     std::string title;
+    /// A grooved cam (closure/groove.h): its outer flank as <path id="outer-flank"> beside the
+    /// profile (the inner flank) and the roller's pitch curve dashed (<path id="pitch">).
+    std::optional<GrooveSize> groove;
 };
 
 /// @brief The SVG text: width, height and viewBox in mm (1 user unit = 1 mm); y up is drawn up

@@ -1,0 +1,121 @@
+// camwright-cli on a grooved cam (issue 32, cli.md): `state` gives the roller's contact with
+// both flanks and `analyze` the outer flank's checks and the lands, checked on an eccentric
+// disc against closed forms: its flanks are circles about the disc's centre c, of radius R and
+// R + 2ρ + c_l, and a roller on a line through the rotation centre sits where that line
+// crosses the circle R + ρ (pressed on the inner flank) or R + ρ + c_l (on the outer one).
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <string>
+
+#include "test_support.h"
+
+namespace cam {
+namespace {
+
+using Json = nlohmann::json;
+
+constexpr double kE = 5.0, kR = 30.0, kRho = 4.0, kClearance = 0.25;
+
+/// The disc: a circle of radius kR about (kE, 0), run by a radial roller in a groove.
+std::string grooveDisc(const test::TempDir& dir, const std::string& lands = "") {
+    const std::string path = dir.file("disc.cam.json");
+    std::ofstream(path) << R"({"format": "camwright", "version": 1, "name": "Grooved disc",
+      "motion": {"period_s": 2},
+      "contour": [{"type": "arc", "center": [5, 0], "radius": 30, "branch": "outer",
+                   "phi_start": 0, "phi_end": 360}],
+      "follower": {"type": "roller", "radius": 4, "closure": "groove",
+                   "groove_clearance_mm": 0.25)"
+                        << lands << "}}";
+    return path;
+}
+
+Eigen::Vector2d vec(const Json& j) { return {j.at(0).get<double>(), j.at(1).get<double>()}; }
+
+TEST(CliGroove, StatePlacesTheRollerOnBothFlanksWhereTheClosedFormPutsIt) {
+    const test::TempDir dir;
+    const std::string project = grooveDisc(dir);
+    const Eigen::Vector2d c(kE, 0.0);
+    for (const double t : {0.0, 0.13, 0.5, 0.77, 1.31, 1.9}) {
+        SCOPED_TRACE("t=" + std::to_string(t));
+        const auto run = test::runCli({"state", project, "--t", std::to_string(t)});
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        const Json f = Json::parse(run.out).at("follower");
+        ASSERT_TRUE(f.contains("outer_flank")) << f.dump();
+        const Json& o = f.at("outer_flank");
+        // The line of motion through the rotation centre, as the follower's centre shows it.
+        const Eigen::Vector2d centre = vec(f.at("center")), u = centre.normalized();
+        const Eigen::Vector2d n(-u.y(), u.x());
+        const double side = n.dot(c);
+        const auto sOn = [&](double radius) {
+            return u.dot(c) + std::sqrt(radius * radius - side * side);
+        };
+        EXPECT_NEAR(f.at("s").get<double>(), sOn(kR + kRho), 1e-9);
+        EXPECT_NEAR(o.at("s").get<double>(), sOn(kR + kRho + kClearance), 1e-9);
+        EXPECT_NEAR(vec(o.at("center")).dot(n), 0.0, 1e-9);  // on the same line
+        // Contacts: the inner on the disc, the outer on the outer flank ρ across the roller.
+        EXPECT_NEAR((vec(f.at("contact")) - c).norm(), kR, 1e-9);
+        EXPECT_NEAR((vec(o.at("contact")) - c).norm(), kR + 2 * kRho + kClearance, 1e-9);
+        EXPECT_NEAR((vec(o.at("contact")) - vec(o.at("center"))).norm(), kRho, 1e-9);
+        // The outer flank's radius of curvature and both pressure angles: the line of force
+        // runs through c, at sin α = side / (radius of the roller centre's circle).
+        EXPECT_NEAR(o.at("rho_profile").get<double>(), kR + 2 * kRho + kClearance, 1e-9);
+        EXPECT_NEAR(
+            std::abs(std::sin(o.at("pressure_angle_deg").get<double>() * std::numbers::pi / 180)),
+            std::abs(side) / (kR + kRho + kClearance), 1e-9);
+        EXPECT_NEAR(
+            std::abs(std::sin(f.at("pressure_angle_deg").get<double>() * std::numbers::pi / 180)),
+            std::abs(side) / (kR + kRho), 1e-9);
+        // Pressed outwards the follower stands c_l/cos-ish further out: its lift is measured
+        // from the same zero as the inner flank's.
+        EXPECT_NEAR(o.at("lift").get<double>() - f.at("lift").get<double>(),
+                    o.at("s").get<double>() - f.at("s").get<double>(), 1e-12);
+    }
+}
+
+TEST(CliGroove, AnalyzeGivesTheOuterFlankAndTheLandsInClosedForm) {
+    const test::TempDir dir;
+    const double width = 2 * kRho + kClearance;
+    // The inner flank comes to R − E = 25 mm from the centre (at 180°), the outer flank
+    // reaches R + w + E = 43.25 mm (at 0°).
+    const auto analyze = [&](const std::string& lands) {
+        const auto run = test::runCli({"analyze", grooveDisc(dir, lands)});
+        EXPECT_EQ(run.exitCode, 0) << run.err;
+        return Json::parse(run.out).at("follower").at("groove");
+    };
+    const Json g = analyze(R"(, "inner_land_radius_mm": 24, "outer_land_radius_mm": 43)");
+    EXPECT_EQ(g.at("width_mm").get<double>(), width);
+    EXPECT_EQ(g.at("clearance_mm").get<double>(), kClearance);
+    const Json& inner = g.at("lands").at("inner");
+    const Json& outer = g.at("lands").at("outer");
+    EXPECT_NEAR(inner.at("radius").get<double>(), kR - kE, 1e-12);
+    EXPECT_NEAR(inner.at("phi_deg").get<double>(), 180.0, 1e-9);
+    EXPECT_TRUE(inner.at("kept").get<bool>());
+    EXPECT_NEAR(outer.at("radius").get<double>(), kR + width + kE, 1e-12);
+    EXPECT_NEAR(std::remainder(outer.at("phi_deg").get<double>(), 360.0), 0.0, 1e-9);
+    EXPECT_FALSE(outer.at("kept").get<bool>());  // 43.25 > 43
+    EXPECT_EQ(outer.at("land_radius").get<double>(), 43.0);
+    // The outer flank is the circle R + w everywhere; a disc has no hollow.
+    const Json& curvature = g.at("outer_flank").at("curvature");
+    EXPECT_NEAR(curvature.at("min_convex").at("value").get<double>(), kR + width, 1e-9);
+    EXPECT_TRUE(curvature.at("min_concave").is_null());
+    // Without land radii nothing is checked against them.
+    const Json free = analyze("");
+    EXPECT_TRUE(free.at("lands").at("inner").at("land_radius").is_null());
+    EXPECT_TRUE(free.at("lands").at("outer").at("kept").get<bool>());
+}
+
+TEST(CliGroove, ASpringClosedCamHasNoOuterFlank) {
+    const auto run =
+        test::runCli({"state", test::examplePath("six-lobe-arc-cam.cam.json"), "--t", "0.1"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_FALSE(Json::parse(run.out).at("follower").contains("outer_flank"));
+}
+
+}  // namespace
+}  // namespace cam
