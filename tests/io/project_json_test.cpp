@@ -596,11 +596,12 @@ TEST(ProjectJsonGroove, ReadsEveryKeyAndWritesItBackAsTyped) {
     ASSERT_TRUE(plain.ok());
     EXPECT_EQ(plain.value().follower->closure, Closure::Spring);
     EXPECT_FALSE(Json::parse(serializeProject(plain.value()))["follower"].contains("closure"));
-    const auto metres = parseProject(withReplaced(
-        withReplaced(withReplaced(kGrooved, R"("name": "disc",)",
-                                  R"("name": "disc", "units": { "length": "m" },)"),
-                     R"("center": [5, 0], "radius": 30)", R"("center": [0.005, 0], "radius": 0.03)"),
-        R"("radius": 8,)", R"("radius": 0.008,)"));
+    const auto metres = parseProject(
+        withReplaced(withReplaced(withReplaced(kGrooved, R"("name": "disc",)",
+                                               R"("name": "disc", "units": { "length": "m" },)"),
+                                  R"("center": [5, 0], "radius": 30)",
+                                  R"("center": [0.005, 0], "radius": 0.03)"),
+                     R"("radius": 8,)", R"("radius": 0.008,)"));
     ASSERT_TRUE(metres.ok()) << metres.errors().front().text();
     EXPECT_DOUBLE_EQ(metres.value().follower->radius, 8.0);
     EXPECT_EQ(metres.value().follower->grooveClearance, 0.05);

@@ -282,8 +282,8 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
     if (!f || !rd.object(*f, "follower")) return;
     rd.onlyKeys(*f, "follower",
                 {"type", "motion", "offset", "radius", "pivot", "arm_length", "arm",
-                 "max_pressure_angle_deg", "closure", "groove_clearance_mm",
-                 "inner_land_radius_mm", "outer_land_radius_mm"});
+                 "max_pressure_angle_deg", "closure", "groove_clearance_mm", "inner_land_radius_mm",
+                 "outer_land_radius_mm"});
     FollowerSpec spec;
     if (const auto type = rd.string(*f, "follower", "type", false)) {
         if (const auto known = followerTypeFromName(*type)) {

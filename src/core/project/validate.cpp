@@ -342,12 +342,12 @@ private:
         }
         bool landsOk = true;
         if (f.innerLandRadius) {
-            landsOk &= checkPositiveLength(FieldPlace{Field::FollowerInnerLandRadius},
-                                           *f.innerLandRadius);
+            landsOk &=
+                checkPositiveLength(FieldPlace{Field::FollowerInnerLandRadius}, *f.innerLandRadius);
         }
         if (f.outerLandRadius) {
-            landsOk &= checkPositiveLength(FieldPlace{Field::FollowerOuterLandRadius},
-                                           *f.outerLandRadius);
+            landsOk &=
+                checkPositiveLength(FieldPlace{Field::FollowerOuterLandRadius}, *f.outerLandRadius);
         }
         if (landsOk && f.innerLandRadius && f.outerLandRadius &&
             !(*f.outerLandRadius > *f.innerLandRadius)) {
