@@ -444,6 +444,31 @@
     </message>
     <message>
         <location line="+5" />
+        <source>a groove needs a roller follower: a knife or a flat face cannot run in a groove; choose a roller or the spring closure</source>
+        <translation>eine Nut braucht einen Rollenstößel: eine Schneide oder ein Flachstößel kann nicht in einer Nut laufen; wählen Sie eine Rolle oder den Kraftschluss durch eine Feder</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the tool radius %1 mm is wider than the groove: at most half its width, %2 mm (the roller radius plus half the clearance)</source>
+        <translation>der Werkzeugradius %1 mm ist breiter als die Nut: höchstens ihre halbe Breite, %2 mm (Rollenradius plus halbes Spiel)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the tool radius %1 mm is too small to clear the groove in a roughing pass on its centre line and a finishing pass along each flank: at least %2 mm (a sixth of its width)</source>
+        <translation>der Werkzeugradius %1 mm ist zu klein, um die Nut mit einem Schruppgang auf ihrer Mittellinie und einem Schlichtgang an jeder Flanke auszuräumen: mindestens %2 mm (ein Sechstel ihrer Breite)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>a groove is milled on computed tool-centre paths: a controller's cutter compensation (G41/G42) cannot follow both flanks</source>
+        <translation>eine Nut wird auf berechneten Werkzeugmittelpunktbahnen gefräst: die Fräserradiuskorrektur einer Steuerung (G41/G42) kann nicht beiden Flanken folgen</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>must be larger than the inner land radius %1 mm (got %2 mm): the groove runs between the two</source>
+        <translation>muss größer sein als der innere Stegradius %1 mm (angegeben %2 mm): die Nut verläuft zwischen beiden</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>must be a finite length of at least %1 mm (got %2)</source>
         <translation>muss eine endliche Länge von mindestens %1 mm sein (ist %2)</translation>
     </message>
@@ -1048,7 +1073,7 @@
         <translation>eine Tangente</translation>
     </message>
     <message>
-        <location filename="../../src/core/export/gcode.cpp" line="+335" />
+        <location filename="../../src/core/export/gcode.cpp" line="+473" />
         <source>the depth</source>
         <translation>die Tiefe</translation>
     </message>
@@ -1132,12 +1157,12 @@
     <message>
         <location line="+1" />
         <location line="+141" />
-        <location line="+308" />
+        <location line="+329" />
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location line="-371" />
+        <location line="-392" />
         <source>true or false</source>
         <translation>true oder false</translation>
     </message>
@@ -1152,7 +1177,7 @@
         <translation>ein Array aus Zahlen</translation>
     </message>
     <message>
-        <location line="+281" />
+        <location line="+302" />
         <location line="+87" />
         <source>an array of segments</source>
         <translation>ein Array aus Segmenten</translation>
@@ -1226,7 +1251,7 @@
         <translation>%1, y</translation>
     </message>
     <message>
-        <location line="+165" />
+        <location line="+170" />
         <source>law</source>
         <translation>Gesetz</translation>
     </message>
@@ -1256,7 +1281,7 @@
         <translation>Bewegungsentwurf, Übergang zwischen Segment %1 und %2</translation>
     </message>
     <message>
-        <location line="-97" />
+        <location line="-102" />
         <source>Machining, acceleration of axis %1</source>
         <translation>Zerspanung, Beschleunigung der Achse %1</translation>
     </message>
@@ -1287,12 +1312,12 @@
     </message>
     <message>
         <location line="+6" />
-        <location line="+67" />
+        <location line="+72" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-66" />
+        <location line="-71" />
         <source>Points</source>
         <translation>Punkte</translation>
     </message>
@@ -1352,9 +1377,24 @@
         <translation>Stößel, Hebellänge</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>Follower, closure</source>
+        <translation>Stößel, Schlussart</translation>
+    </message>
+    <message>
         <location line="+2" />
         <source>Follower, groove clearance</source>
         <translation>Stößel, Spiel in der Nut</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Follower, groove's inner land radius</source>
+        <translation>Stößel, innerer Stegradius der Nut</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Follower, groove's outer land radius</source>
+        <translation>Stößel, äußerer Stegradius der Nut</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1407,12 +1447,12 @@
         <translation>Bewegungsentwurf, Segmente</translation>
     </message>
     <message>
-        <location line="-70" />
+        <location line="-75" />
         <source>is empty: the design's contour was never synthesised (Synthesize Contour, F6, makes it)</source>
         <translation>ist leer: die Kontur des Entwurfs wurde noch nie synthetisiert (Kontur synthetisieren, F6, erzeugt sie)</translation>
     </message>
     <message>
-        <location line="+106" />
+        <location line="+111" />
         <source>Joint between segments %1 and %2</source>
         <translation>Übergang zwischen Segment %1 und %2</translation>
     </message>
@@ -2337,7 +2377,17 @@
         <translation>Mausrad: zoomen · Ziehen: verschieben · quadratischen/rautenförmigen Griff ziehen: Mittelpunkt verschieben oder Radius des gewählten Bogens ändern. Gezogene Punkte rasten an Mittelpunkten, Übergängen und am Raster ein; Umschalt hält eine Achse fest, Alt rastet nicht ein.</translation>
     </message>
     <message>
-        <location line="+37" />
+        <location line="+36" />
+        <source>outer flank</source>
+        <translation>Außenflanke</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>pitch curve</source>
+        <translation>Rollenmittelpunktsbahn</translation>
+    </message>
+    <message>
+        <location line="+9" />
         <source>centres</source>
         <translation>Mittelpunkte</translation>
     </message>
@@ -2882,18 +2932,18 @@
 <context>
     <name>cam::ExportDialog</name>
     <message>
-        <location filename="../../src/app/export/export_dialog.cpp" line="+54" />
-        <location line="+293" />
+        <location filename="../../src/app/export/export_dialog.cpp" line="+55" />
+        <location line="+299" />
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location line="-284" />
+        <location line="-290" />
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+20" />
         <source>Instants over one turn, equally spaced in time</source>
         <translation>Zeitpunkte über eine Umdrehung, zeitlich gleichabständig</translation>
     </message>
@@ -2905,19 +2955,19 @@
     <message>
         <location line="+14" />
         <location line="+25" />
-        <location line="+44" />
+        <location line="+48" />
         <source>Splines become tangent arc pairs within this distance</source>
         <translation>Splines werden zu tangentialen Bogenpaaren innerhalb dieses Abstands</translation>
     </message>
     <message>
-        <location line="-68" />
+        <location line="-72" />
         <location line="+25" />
-        <location line="+44" />
+        <location line="+48" />
         <source>Spline &amp;tolerance:</source>
         <translation>Spline-&amp;Toleranz:</translation>
     </message>
     <message>
-        <location line="-68" />
+        <location line="-72" />
         <source>One closed &amp;polyline with bulges</source>
         <translation>Eine geschlossene &amp;Polylinie mit Bögen</translation>
     </message>
@@ -2943,22 +2993,22 @@
     </message>
     <message>
         <location line="+2" />
-        <location line="+14" />
+        <location line="+18" />
         <source>Tool &amp;radius:</source>
         <translation>Werkzeug&amp;radius:</translation>
     </message>
     <message>
-        <location line="-2" />
+        <location line="-1" />
         <source>The cutter's radius (the project's machining section gives the default)</source>
         <translation>Der Werkzeugradius (vorgegeben aus dem Bearbeitungsabschnitt des Projekts)</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+27" />
         <source>Total depth of cut below the stock's top (Z0)</source>
         <translation>Gesamte Schnitttiefe unter der Rohteiloberkante (Z0)</translation>
     </message>
     <message>
-        <location line="-53" />
+        <location line="-57" />
         <source>Splines as SP&amp;LINE entities</source>
         <translation>Splines als SP&amp;LINE-Elemente</translation>
     </message>
@@ -2978,7 +3028,12 @@
         <translation>Werkzeugmittelpunktsbahn auf Layer TOOLPAT&amp;H</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+20" />
+        <source>The cutter's radius. The groove's half width (the default) cuts it in one slot pass; a narrower tool, at least a third of that, roughs its centre line and finishes each flank</source>
+        <translation>Der Radius des Fräsers. Die halbe Nutbreite (die Vorgabe) fräst die Nut in einem Gang; ein schmaleres Werkzeug, mindestens ein Drittel davon, schruppt ihre Mittellinie und schlichtet jede Flanke</translation>
+    </message>
+    <message>
+        <location line="+10" />
         <source>Feed along the profile; plunges go at half. At most the project's feed limit (Machining dock): %1 mm/min</source>
         <translation>Vorschub entlang des Profils; Eintauchen mit der Hälfte. Höchstens die Vorschubgrenze des Projekts (Dock Zerspanung): %1 mm/min</translation>
     </message>
@@ -3073,7 +3128,7 @@
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location line="+136" />
+        <location line="+137" />
         <source>Name the file to write.</source>
         <translation>Geben Sie die zu schreibende Datei an.</translation>
     </message>
@@ -3200,7 +3255,37 @@
         <translation>Vorgabe</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+3" />
+        <source>Spring</source>
+        <translation>Feder (Kraftschluss)</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Groove</source>
+        <translation>Nut (Formschluss)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>What keeps the roller on the cam: a spring, or a groove milled into the disc (the contour is its inner flank, the outer flank lies twice the roller radius plus the clearance beyond it)</source>
+        <translation>Was die Rolle an der Scheibe hält: eine Feder oder eine in die Scheibe gefräste Nut (die Kontur ist ihre Innenflanke, die Außenflanke liegt den doppelten Rollenradius plus das Spiel weiter außen)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>The roller's play between the groove's flanks</source>
+        <translation>Das Spiel der Rolle zwischen den Flanken der Nut</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The smallest radius the groove's inner flank may come to: the bore or hub plus the wall it needs (none: not checked)</source>
+        <translation>Der kleinste Radius, bis zu dem die Innenflanke der Nut reichen darf: Bohrung oder Nabe plus die nötige Wand (keiner: nicht geprüft)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>The largest radius the groove's outer flank may reach: the disc's rim less the wall it needs (none: not checked)</source>
+        <translation>Der größte Radius, bis zu dem die Außenflanke der Nut reichen darf: der Rand der Scheibe abzüglich der nötigen Wand (keiner: nicht geprüft)</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Type</source>
         <translation>Typ</translation>
     </message>
@@ -3220,7 +3305,7 @@
         <translation>Versatz</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+10" />
         <source>Pivot x</source>
         <translation>Drehpunkt x</translation>
     </message>
@@ -3228,6 +3313,11 @@
         <location line="+1" />
         <source>Pivot y</source>
         <translation>Drehpunkt y</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Pivot</source>
+        <translation>Drehpunkt</translation>
     </message>
     <message>
         <location line="+1" />
@@ -3245,6 +3335,56 @@
         <translation>Grenze Druckwinkel</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>Groove clearance</source>
+        <translation>Spiel der Nut</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>play </source>
+        <translation>Spiel </translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Inner land radius</source>
+        <translation>Innerer Stegradius</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Outer land radius</source>
+        <translation>Äußerer Stegradius</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>inner </source>
+        <translation>innen </translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>outer </source>
+        <translation>außen </translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>inner: none</source>
+        <translation>innen: keiner</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>outer: none</source>
+        <translation>außen: keiner</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Closure</source>
+        <translation>Schlussart</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Groove lands</source>
+        <translation>Stege der Nut</translation>
+    </message>
+    <message>
         <location line="+4" />
         <source>Turning clockwise</source>
         <translation>Dreht im Uhrzeigersinn</translation>
@@ -3255,7 +3395,7 @@
         <translation>Drehrichtung</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+10" />
         <source>Design checks (click one to go there):</source>
         <translation>Auslegungsprüfungen (Klick springt zur Stelle):</translation>
     </message>
@@ -3270,7 +3410,42 @@
         <translation>Druckwinkel über eine Umdrehung; gestrichelt: die Grenze; rot: darüber</translation>
     </message>
     <message>
-        <location line="-2" />
+        <location line="+400" />
+        <source>Groove: %1 wide (roller radius %2, clearance %3)</source>
+        <translation>Nut: %1 breit (Rollenradius %2, Spiel %3)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Smallest convex radius of the outer flank: %1 at %2</source>
+        <translation>Kleinster konvexer Radius der Außenflanke: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Smallest concave radius of the outer flank: %1 at %2</source>
+        <translation>Kleinster konkaver Radius der Außenflanke: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Inner flank nearest the centre: %1 at %2 (land to %3)</source>
+        <translation>Innenflanke am nächsten zur Mitte: %1 bei %2 (Steg bis %3)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Inner flank nearest the centre: %1 at %2 (no inner land radius given)</source>
+        <translation>Innenflanke am nächsten zur Mitte: %1 bei %2 (kein innerer Stegradius angegeben)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Outer flank farthest from the centre: %1 at %2 (land from %3)</source>
+        <translation>Außenflanke am weitesten von der Mitte: %1 bei %2 (Steg ab %3)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Outer flank farthest from the centre: %1 at %2 (no outer land radius given)</source>
+        <translation>Außenflanke am weitesten von der Mitte: %1 bei %2 (kein äußerer Stegradius angegeben)</translation>
+    </message>
+    <message>
+        <location line="-431" />
         <source>Pressure angle [°]</source>
         <translation>Druckwinkel [°]</translation>
     </message>
@@ -3285,12 +3460,12 @@
         <translation>ρ [mm]</translation>
     </message>
     <message>
-        <location line="-69" />
+        <location line="-119" />
         <source>Offset e of the follower's line of motion from the cam's centre: positive to the left of its direction as seen from the centre, negative to the right (the Turning picture shows it). A positive offset lowers the rise's pressure angle when the cam turns clockwise, a negative one when it turns counter-clockwise; either raises the return's</source>
         <translation>Versatz e der Bewegungslinie des Stößels vom Scheibenmittelpunkt: positiv links seiner Richtung, vom Mittelpunkt aus gesehen, negativ rechts (das Bild Drehrichtung zeigt es). Ein positiver Versatz senkt den Druckwinkel des Hubs, wenn sich die Scheibe im Uhrzeigersinn dreht, ein negativer, wenn sie sich gegen den Uhrzeigersinn dreht; beide erhöhen den des Rückhubs</translation>
     </message>
     <message>
-        <location line="+256" />
+        <location line="+343" />
         <location line="+29" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
@@ -3403,7 +3578,7 @@
         <translation>Nötige Tellerbreite: %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>Every check passes.</source>
         <translation>Alle Prüfungen bestanden.</translation>
     </message>

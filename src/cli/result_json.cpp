@@ -72,11 +72,11 @@ Json grooveAnalysisJson(const Loaded& loaded) {
     const FollowerAnalysis wide =
         analyzeFollower(*loaded.outerFlank, loaded.omega, loaded.contour.phiBegin(),
                         kFollowerCheckSamples, nullptr, phasesOf(loaded.project));
-    // The outer flank's radius at its contact is the inner flank's there + 2ρ + c (signed as
-    // the inner flank's): a convex stretch grows by the width, a concave one shrinks by it.
-    const auto shifted = [&](const std::optional<FollowerExtremum>& e, double by) {
-        if (!e) return Json(nullptr);
-        return Json{{"value", radiusJson(e->value + by)}, {"phi_deg", radToDeg(e->phi)}};
+    // The outer flank's tightest arcs, bending round the cam centre's side and away.
+    const PathBends bends = pathBends(loaded.groove->outer);
+    const auto bend = [](const std::optional<RadialExtreme>& b) {
+        if (!b) return Json(nullptr);
+        return Json{{"value", b->radius}, {"phi_deg", radToDeg(b->phi)}};
     };
     const GrooveLands lands =
         grooveLands(*loaded.groove, spec.innerLandRadius, spec.outerLandRadius);
@@ -87,20 +87,20 @@ Json grooveAnalysisJson(const Loaded& loaded) {
                     {"land_radius", limit ? Json(*limit) : Json(nullptr)},
                     {"kept", kept}};
     };
-    return Json{{"roller_radius", spec.radius},
-                {"clearance_mm", spec.grooveClearance},
-                {"width_mm", width},
-                {"outer_flank",
-                 {{"pressure_angle",
-                   {{"max",
-                     {{"value_deg", radToDeg(wide.pressure.max.value)},
-                      {"phi_deg", radToDeg(wide.pressure.max.phi)}}}}},
-                  {"curvature",
-                   {{"min_convex", shifted(wide.profileCurvature.minConvex, width)},
-                    {"min_concave", shifted(wide.profileCurvature.minConcave, -width)}}}}},
-                {"lands",
-                 {{"inner", land(lands.innerMost, lands.innerLand, lands.innerKept())},
-                  {"outer", land(lands.outerMost, lands.outerLand, lands.outerKept())}}}};
+    return Json{
+        {"roller_radius", spec.radius},
+        {"clearance_mm", spec.grooveClearance},
+        {"width_mm", width},
+        {"outer_flank",
+         {{"pressure_angle",
+           {{"max",
+             {{"value_deg", radToDeg(wide.pressure.max.value)},
+              {"phi_deg", radToDeg(wide.pressure.max.phi)}}}}},
+          {"curvature",
+           {{"min_convex", bend(bends.minConvex)}, {"min_concave", bend(bends.minConcave)}}}}},
+        {"lands",
+         {{"inner", land(lands.innerMost, lands.innerLand, lands.innerKept())},
+          {"outer", land(lands.outerMost, lands.outerLand, lands.outerKept())}}}};
 }
 
 }  // namespace

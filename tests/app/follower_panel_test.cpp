@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <qcustomplot.h>
+#include <Eigen/Geometry>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -12,6 +13,7 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QTest>
+#include <QUndoStack>
 
 #include "app_test_support.h"
 #include "common/angles.h"
@@ -408,6 +410,128 @@ TEST(FollowerInContourView, TheArmRollerContactAndNormalAreDrawnWhereTheCoreSays
     ASSERT_TRUE(waitForResult(window));
     window.contourView()->setCursorAngle(0.3);
     EXPECT_FALSE(window.contourView()->followerMarkers().shown);
+}
+
+TEST(FollowerPanel, TheGrooveIsOneSettingDrawnCheckedAndUndone) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
+    window.show();
+    window.findChild<QDockWidget*>("followerDock")->show();
+    ASSERT_TRUE(waitForResult(window));
+    ContourView* view = window.contourView();
+    EXPECT_EQ(view->outerFlankCurve()->dataCount(), 0);
+
+    // One setting: the closure. The knife becomes a roller whose groove fits the notches
+    // (radius 4.84 mm): (4.84 − 0.05) / 2 rounded down to 2.3 mm.
+    auto* closure = child<QComboBox>(window, "followerClosureComboBox");
+    closure->setCurrentIndex(1);
+    const auto spec = window.document()->project().follower;
+    ASSERT_TRUE(spec.has_value());
+    EXPECT_EQ(spec->closure, Closure::Groove);
+    EXPECT_EQ(spec->type, FollowerType::Roller);
+    EXPECT_EQ(spec->radius, 2.3);
+    EXPECT_EQ(spec->grooveClearance, 0.05);
+    EXPECT_EQ(window.document()->undoStack()->count(), 1);
+    ASSERT_TRUE(waitForResult(window));
+    ComputeResultPtr result = window.engine()->latestResult();
+    ASSERT_TRUE(result->valid());
+    ASSERT_NE(result->groove, nullptr);
+
+    // Drawn: every point of the outer flank is 2ρ + c from the profile and of the dashed
+    // pitch curve ρ, measured against r(φ) sampled every 0.005° (to the sampling's 1e-4 mm).
+    const Contour contour = Contour::build(*result->project).value();
+    std::vector<Eigen::Vector2d> profile;
+    for (int k = 0; k < 72000; ++k) {
+        const double phi = kTwoPi * k / 72000;
+        profile.push_back(contour.evaluate(phi).r * Eigen::Vector2d(std::cos(phi), std::sin(phi)));
+    }
+    const auto worstOff = [&](const QCPCurve* curve, double offset) {
+        double worst = 0.0;
+        for (int i = 0; i < curve->dataCount(); i += 13) {
+            const Eigen::Vector2d p(curve->data()->at(i)->key, curve->data()->at(i)->value);
+            double d = 1e300;
+            for (const Eigen::Vector2d& q : profile) d = std::min(d, (p - q).squaredNorm());
+            worst = std::max(worst, std::abs(std::sqrt(d) - offset));
+        }
+        return worst;
+    };
+    ASSERT_GT(view->outerFlankCurve()->dataCount(), 360);
+    ASSERT_GT(view->pitchCurve()->dataCount(), 360);
+    EXPECT_LT(worstOff(view->outerFlankCurve(), 2 * 2.3 + 0.05), 1e-3);
+    EXPECT_LT(worstOff(view->pitchCurve(), 2.3), 1e-3);
+    EXPECT_EQ(view->pitchCurve()->pen().style(), Qt::DashLine);
+
+    // Checked: the groove's lines, and a land the inner flank (down to 20.897 mm) cuts into.
+    EXPECT_EQ(window.followerPanel()->checkLines().filter("Groove: ").size(), 1);
+    const int before = window.followerPanel()->problemCount();
+    auto* innerLand = child<QDoubleSpinBox>(window, "innerLandSpinBox");
+    ASSERT_TRUE(innerLand->isEnabled());
+    innerLand->setValue(22.0);
+    emit innerLand->editingFinished();
+    EXPECT_EQ(window.document()->project().follower->innerLandRadius, 22.0);
+    ASSERT_TRUE(waitForResult(window));
+    const QStringList lines = window.followerPanel()->checkLines();
+    const QStringList land = lines.filter("Inner flank nearest the centre");
+    ASSERT_EQ(land.size(), 1);
+    EXPECT_TRUE(land.front().contains("(land to 22 mm)")) << land.front().toStdString();
+    EXPECT_EQ(window.followerPanel()->problemCount(), before + 1);
+
+    // A clearance the notches (4.84 mm) cannot hold (2·2.3 + 1 = 5.6 mm): the follower cannot
+    // ride it, and no outer flank is drawn.
+    auto* clearance = child<QDoubleSpinBox>(window, "grooveClearanceSpinBox");
+    clearance->setValue(1.0);
+    emit clearance->editingFinished();
+    ASSERT_TRUE(waitForResult(window));
+    EXPECT_FALSE(window.engine()->latestResult()->valid());
+    qsizetype notches = 0;  // one line per concave arc
+    for (const SegmentSpec& segment : window.document()->project().contour) {
+        notches += segment.as<Arc>() && segment.as<Arc>()->branch == Branch::Inner ? 1 : 0;
+    }
+    EXPECT_EQ(window.followerPanel()->checkLines().filter("undercuts the groove").size(), notches)
+        << window.followerPanel()->checkLines().join("\n").toStdString();
+    EXPECT_EQ(view->outerFlankCurve()->dataCount(), 0);
+
+    // Undone step by step, back to the spring-closed knife.
+    QUndoStack* undo = window.document()->undoStack();
+    ASSERT_EQ(undo->count(), 3);
+    undo->undo();
+    EXPECT_EQ(window.document()->project().follower->grooveClearance, 0.05);
+    undo->undo();
+    EXPECT_FALSE(window.document()->project().follower->innerLandRadius);
+    EXPECT_EQ(innerLand->value(), 0.0);
+    undo->undo();
+    EXPECT_FALSE(window.document()->project().follower.has_value());
+    EXPECT_EQ(closure->currentIndex(), 0);
+    ASSERT_TRUE(waitForResult(window));
+    EXPECT_EQ(view->outerFlankCurve()->dataCount(), 0);
+}
+
+TEST(FollowerPanel, TurningTheCamTurnsItsGrooveWithIt) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kExampleFile).isEmpty());
+    window.show();
+    ASSERT_TRUE(waitForResult(window));
+    child<QComboBox>(window, "followerClosureComboBox")->setCurrentIndex(1);
+    ASSERT_TRUE(waitForResult(window));
+    ContourView* view = window.contourView();
+    const auto standing = [&](int i) {
+        return Eigen::Vector2d(view->outerFlankCurve()->data()->at(i)->key,
+                               view->outerFlankCurve()->data()->at(i)->value);
+    };
+    std::vector<Eigen::Vector2d> before;
+    for (int i = 0; i < view->outerFlankCurve()->dataCount(); i += 50)
+        before.push_back(standing(i));
+    view->setTurning(true);
+    const double phi = degToRad(37.0);
+    view->setCursorAngle(phi);
+    EXPECT_NEAR(view->turnedBy(), -phi, 1e-15);
+    // Every point turned by −φ about the rotation centre, as the profile is.
+    const Eigen::Rotation2Dd turn(-phi);
+    for (std::size_t k = 0; k < before.size(); ++k) {
+        EXPECT_NEAR((standing(static_cast<int>(k) * 50) - turn * before[k]).norm(), 0.0, 1e-12);
+    }
+    view->setTurning(false);
+    EXPECT_NEAR((standing(0) - before[0]).norm(), 0.0, 1e-15);
 }
 
 }  // namespace

@@ -170,6 +170,36 @@ TEST(GrooveLands, TheSixLobeCamsExtremesAgreeWithADenseSampling) {
     EXPECT_NEAR(contour.evaluate(lands.innerMost.phi).r, lands.innerMost.radius, 1e-9);
 }
 
+TEST(GrooveBends, TheOuterFlanksTightestArcsAreTheProfilesGrownAndShrunkByTheWidth) {
+    // The six-lobe cam's arcs, read from the contour: lobes (convex) grow by w = 2ρ + c on the
+    // outer flank, notches (concave) shrink by it.
+    const Contour contour = sixLobe();
+    const double rho = 1.0, c = 0.2, w = 2 * rho + c;
+    double lobe = 1e300, notch = 1e300;
+    for (std::size_t k = 0; k < contour.size(); ++k) {
+        const ContourSegment& s = contour.segment(k);
+        (s.arc.branch == Branch::Outer ? lobe : notch) =
+            std::min(s.arc.branch == Branch::Outer ? lobe : notch, s.arc.radius);
+    }
+    const auto groove = grooveFlanks(contour, rho, c);
+    ASSERT_TRUE(groove.ok());
+    const PathBends outer = pathBends(groove.value().outer);
+    ASSERT_TRUE(outer.minConvex && outer.minConcave);
+    EXPECT_NEAR(outer.minConvex->radius, lobe + w, 1e-9);
+    EXPECT_NEAR(outer.minConcave->radius, notch - w, 1e-9);
+    // Its place is on the flank, at the polar angle it names.
+    EXPECT_NEAR(std::atan2(outer.minConcave->point.y(), outer.minConcave->point.x()),
+                std::remainder(outer.minConcave->phi, kTwoPi), 1e-12);
+    const PathBends inner = pathBends(groove.value().inner);
+    EXPECT_NEAR(inner.minConvex->radius, lobe, 1e-12);
+    EXPECT_NEAR(inner.minConcave->radius, notch, 1e-12);
+    // A disc bends one way only.
+    const auto disc = grooveFlanks(test::disc({5.0, 0.0}, 30.0), 5.0, 0.3);
+    ASSERT_TRUE(disc.ok());
+    EXPECT_NEAR(pathBends(disc.value().outer).minConvex->radius, 40.3, 1e-12);
+    EXPECT_FALSE(pathBends(disc.value().outer).minConcave);
+}
+
 TEST(GrooveRoller, InTheGrooveOfAnEccentricDiscItSitsWhereTheClosedFormPutsIt) {
     // A roller on an offset line in the groove of a disc of radius R about c. In the cam frame
     // at angle φ the line runs along u(φ), offset e along n(φ); the centre x = s·u + e·n lies

@@ -87,6 +87,35 @@ std::vector<QVector<QPointF>> outlinesOf(const Contour& c) {
     return outlines;
 }
 
+/// A closed path as a polyline: its ends, and arcs every half degree of their sweep.
+QVector<QPointF> outlineOf(const ToolPath& path) {
+    QVector<QPointF> out;
+    for (const PathSegment& piece : path.segments) {
+        const int steps =
+            piece.kind == PathSegment::Kind::Arc
+                ? std::max(2, static_cast<int>(std::ceil(std::abs(piece.sweep) / degToRad(0.5))))
+                : 1;
+        for (int i = 0; i < steps; ++i) {
+            const Eigen::Vector3d p = piece.point(piece.length() * i / steps);
+            out.append({p.x(), p.y()});
+        }
+    }
+    if (!out.isEmpty()) out.append(out.front());
+    return out;
+}
+
+/// The contour view's and the Follower dock's view of a groove.
+std::shared_ptr<const GrooveView> grooveViewOf(const GrooveFlanks& flanks,
+                                               const FollowerSpec& spec) {
+    auto view = std::make_shared<GrooveView>();
+    view->flanks = flanks;
+    view->lands = grooveLands(flanks, spec.innerLandRadius, spec.outerLandRadius);
+    view->outerBends = pathBends(flanks.outer);
+    view->outer = outlineOf(flanks.outer);
+    view->pitch = outlineOf(flanks.pitch);
+    return view;
+}
+
 /// What the contour view and the Joints tab need of the contour alone.
 struct ContourPart {
     std::vector<JointAnalysis> joints;
@@ -284,6 +313,7 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
     if (project.follower) {
         result->follower = evaluation.follower;
         result->followerErrors = evaluation.followerProblems;
+        if (evaluation.groove) result->groove = grooveViewOf(*evaluation.groove, *project.follower);
     }
     // The follower's checks and curve need only the contour: on the pool's other core while
     // this thread samples the turn (a swinging arm's pressure-angle curve costs about as much

@@ -76,6 +76,15 @@ struct ForceCurves {
     std::vector<double> contactX, contactY;
 };
 
+/// @brief A grooved cam (closure/groove.h): its flanks, their checks, and the outer flank and
+/// the roller's pitch curve as the contour view draws them (x, y in mm, closed).
+struct GrooveView {
+    GrooveFlanks flanks;
+    GrooveLands lands;
+    PathBends outerBends;
+    QVector<QPointF> outer, pitch;
+};
+
 /// @brief One finished computation. Never modified after it leaves the worker.
 struct ComputeResult {
     std::uint64_t generation = 0;
@@ -102,6 +111,9 @@ struct ComputeResult {
     std::vector<JointAnalysis> joints;
     /// Per segment, its outline for the contour view (x, y in mm), ends included.
     std::vector<QVector<QPointF>> outlines;
+    /// A grooved cam's flanks (null for a spring-closed cam, or one whose groove cannot be
+    /// made: then `problems` says why).
+    std::shared_ptr<const GrooveView> groove;
     /// The kinematics curves over angle or time at several resolutions, with their ranges.
     PlotCurves curves;
     double computeMs = 0.0;

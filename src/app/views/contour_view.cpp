@@ -65,6 +65,14 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
         curve->setPen(QPen(segmentColor(c), 2));
         m_colourCurves[static_cast<std::size_t>(c)] = curve;
     }
+    // A groove's outer flank, drawn as the profile is, and the roller centre's path dashed.
+    for (std::size_t g = 0; g < 2; ++g) {
+        auto* curve = new QCPCurve(xAxis, yAxis);
+        curve->setName(g == 0 ? tr("outer flank") : tr("pitch curve"));
+        curve->setPen(g == 0 ? QPen(QColor(40, 40, 40), 2)
+                             : QPen(QColor(120, 120, 120), 1, Qt::DashLine));
+        m_grooveCurves[g] = curve;
+    }
     // Over the segments' colours, under the markers: the profile coloured by stress.
     m_stress = std::make_unique<StressOverlay>(this);
     m_centers = addGraph();
@@ -99,6 +107,8 @@ void ContourView::setResult(const ComputeResultPtr& result) {
     if (result->awaitsContour()) {
         // Nothing to draw yet; an earlier project's contour would only mislead.
         for (QCPCurve* curve : m_colourCurves) curve->data()->clear();
+        for (QCPCurve* curve : m_grooveCurves) curve->data()->clear();
+        m_standingGroove = {};
         m_centers->data()->clear();
         m_joints->data()->clear();
         setStale(staleText(*result));
@@ -147,6 +157,23 @@ void ContourView::setResult(const ComputeResultPtr& result) {
             cy << s.arc.center.y();
         }
     }
+    std::array<QVector<QCPCurveData>, 2> groove;
+    if (result->groove) {
+        // The outer flank lies outside the contour: the view's bounds hold it.
+        for (std::size_t g = 0; g < 2; ++g) {
+            const QVector<QPointF>& outline =
+                g == 0 ? result->groove->outer : result->groove->pitch;
+            for (const QPointF& p : outline) {
+                groove[g].append(QCPCurveData(groove[g].size(), p.x(), p.y()));
+                if (g == 0 && any) {
+                    left = std::min(left, p.x());
+                    right = std::max(right, p.x());
+                    bottom = std::min(bottom, p.y());
+                    top = std::max(top, p.y());
+                }
+            }
+        }
+    }
     m_hasBounds = any;
     if (any && result->follower && result->follower->oscillating()) {
         // The pivot turns round the cam on a circle: keep it, and so the whole arm, in view.
@@ -171,7 +198,9 @@ void ContourView::setResult(const ComputeResultPtr& result) {
     m_standingCy = cy;
     m_standingJx = jx;
     m_standingJy = jy;
+    m_standingGroove = groove;
     m_turnedBy = 0.0;
+    for (std::size_t g = 0; g < 2; ++g) m_grooveCurves[g]->data()->set(groove[g], true);
     for (int c = 0; c < kSegmentColorCount; ++c) {
         m_colourCurves[static_cast<std::size_t>(c)]->data()->set(data[static_cast<std::size_t>(c)],
                                                                  true);
@@ -289,6 +318,15 @@ void ContourView::turnDrawing(double angle) {
         }
         m_colourCurves[k]->data()->set(points, true);
     }
+    for (std::size_t g = 0; g < 2; ++g) {
+        QVector<QCPCurveData> points = m_standingGroove[g];
+        for (QCPCurveData& p : points) {
+            const double x = p.key, y = p.value;
+            p.key = c * x - s * y;
+            p.value = s * x + c * y;
+        }
+        m_grooveCurves[g]->data()->set(points, true);
+    }
     const auto turned = [c, s](const QVector<double>& x, const QVector<double>& y,
                                QCPGraph* graph) {
         QVector<double> tx(x.size()), ty(y.size());
@@ -316,6 +354,9 @@ void ContourView::setTurning(bool on) {
             for (const QCPCurveData& p : curve) {
                 if (std::isfinite(p.key)) reach = std::max(reach, std::hypot(p.key, p.value));
             }
+        }
+        for (const QCPCurveData& p : m_standingGroove[0]) {
+            reach = std::max(reach, std::hypot(p.key, p.value));
         }
         for (double v : {m_xBounds.lower, m_xBounds.upper, m_yBounds.lower, m_yBounds.upper}) {
             reach = std::max(reach, std::abs(v));

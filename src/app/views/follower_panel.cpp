@@ -83,15 +83,59 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
                       0.0);
     m_limit->setMaximum(89.0);
     m_limit->setSpecialValueText(tr("default"));
+    m_closure = new QComboBox(this);
+    m_closure->setObjectName("followerClosureComboBox");
+    m_closure->addItems({tr("Spring"), tr("Groove")});
+    m_closure->setToolTip(
+        tr("What keeps the roller on the cam: a spring, or a groove milled into the disc (the "
+           "contour is its inner flank, the outer flank lies twice the roller radius plus the "
+           "clearance beyond it)"));
+    m_clearance = spinBox(this, "grooveClearanceSpinBox", " mm",
+                          tr("The roller's play between the groove's flanks"), 0.0);
+    m_clearance->setDecimals(3);
+    m_clearance->setSingleStep(0.01);
+    m_clearance->setValue(0.05);
+    m_innerLand =
+        spinBox(this, "innerLandSpinBox", " mm",
+                tr("The smallest radius the groove's inner flank may come to: the bore or hub plus "
+                   "the wall it needs (none: not checked)"),
+                0.0);
+    m_outerLand =
+        spinBox(this, "outerLandSpinBox", " mm",
+                tr("The largest radius the groove's outer flank may reach: the disc's rim less the "
+                   "wall it needs (none: not checked)"),
+                0.0);
     form->addRow(tr("Type"), m_type);
     form->addRow(tr("Motion"), m_motion);
     form->addRow(tr("Roller radius"), m_radius);
     form->addRow(tr("Offset"), m_offset);
-    form->addRow(tr("Pivot x"), m_pivotX);
-    form->addRow(tr("Pivot y"), m_pivotY);
+    // Pairs share a row (the dock holds its checks and two plots too): each box is named.
+    const auto pair = [this](QWidget* a, QWidget* b) {
+        auto* row = new QWidget(this);
+        auto* layout = new QHBoxLayout(row);
+        layout->setContentsMargins(0, 0, 0, 0);
+        layout->addWidget(a, 1);
+        layout->addWidget(b, 1);
+        return row;
+    };
+    m_pivotX->setAccessibleName(tr("Pivot x"));
+    m_pivotY->setAccessibleName(tr("Pivot y"));
+    m_pivotX->setPrefix(QStringLiteral("x "));
+    m_pivotY->setPrefix(QStringLiteral("y "));
+    form->addRow(tr("Pivot"), pair(m_pivotX, m_pivotY));
     form->addRow(tr("Arm length"), m_armLength);
     form->addRow(tr("Arm side"), m_side);
     form->addRow(tr("Pressure-angle limit"), m_limit);
+    m_clearance->setAccessibleName(tr("Groove clearance"));
+    m_clearance->setPrefix(tr("play "));
+    m_innerLand->setAccessibleName(tr("Inner land radius"));
+    m_outerLand->setAccessibleName(tr("Outer land radius"));
+    m_innerLand->setPrefix(tr("inner "));
+    m_outerLand->setPrefix(tr("outer "));
+    m_innerLand->setSpecialValueText(tr("inner: none"));
+    m_outerLand->setSpecialValueText(tr("outer: none"));
+    form->addRow(tr("Closure"), pair(m_closure, m_clearance));
+    form->addRow(tr("Groove lands"), pair(m_innerLand, m_outerLand));
     // How the cam turns against this follower: the offset's sign only means something with
     // it. The picture is the setting: a click turns the cam round (the speed's sign).
     m_turning = new TurningPicture(this);
@@ -105,7 +149,13 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     turningRow->addWidget(m_turning);
     turningRow->addWidget(m_turningText, 1);
     form->addRow(tr("Turning"), turning);
-    layout->addLayout(form);
+    // The settings keep their height (squeezed, a box's text was cut off); the checks and the
+    // plots below share what is left.
+    auto* settings = new QWidget(this);
+    settings->setLayout(form);
+    settings->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
+    form->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(settings);
 
     m_checks = new CheckList(
         tr("Design checks (click one to go there):"), "designChecksList", "designChecksSummary",
@@ -114,7 +164,7 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     connect(m_checks, &CheckList::anglePicked, this, &FollowerPanel::anglePicked);
 
     m_pressurePlot = newAlongXPlot(this, "pressureAnglePlot", tr("Pressure angle [°]"));
-    m_pressurePlot->setMinimumHeight(160);
+    m_pressurePlot->setMinimumHeight(110);
     m_pressurePlot->setToolTip(tr("Pressure angle over the turn; dashed: the limit; red: beyond"));
     QCPGraph* angle = m_pressurePlot->addGraph();
     // One pixel wide, as the kinematics curves: Qt strokes a wider pen through its general
@@ -130,7 +180,7 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     layout->addWidget(m_pressurePlot, 1);
 
     m_curvaturePlot = newAlongXPlot(this, "curvaturePlot", tr("ρ [mm]"));
-    m_curvaturePlot->setMinimumHeight(160);
+    m_curvaturePlot->setMinimumHeight(110);
     m_curvaturePlot->setToolTip(
         tr("Radius of curvature over the turn, positive where convex, negative where hollow; "
            "clipped at twice the cam's largest radius (a straight stretch reads as the clip). "
@@ -166,6 +216,28 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
         f.type = static_cast<FollowerType>(i);
         if (followerKind(f.type).hasRadius && !(f.radius > 0.0)) f.radius = fittingRadius();
         if (!followerKind(f.type).canSwing) f.motion = FollowerMotion::Translating;
+        // Only a roller runs in a groove.
+        if (f.type != FollowerType::Roller) f.closure = Closure::Spring;
+    });
+    choice(m_closure, [this](FollowerSpec& f, int i) {
+        f.closure = static_cast<Closure>(i);
+        if (f.closure != Closure::Groove) return;
+        f.grooveClearance = m_clearance->value();
+        // A groove takes a roller: the one the follower has, or a first whose groove, twice
+        // its radius plus the clearance, fits into every concave arc: 5 mm at most.
+        if (f.type != FollowerType::Roller) {
+            f.type = FollowerType::Roller;
+            if (!(f.radius > 0.0)) {
+                double radius = 5.0;
+                for (const SegmentSpec& segment : m_document->project().contour) {
+                    if (const Arc* arc = segment.as<Arc>()) {
+                        const double room = (arc->radius - f.grooveClearance) / 2.0;
+                        radius = std::min(radius, std::floor(room * 10.0) / 10.0);
+                    }
+                }
+                f.radius = std::max(radius, 0.1);
+            }
+        }
     });
     choice(m_motion, [fittingRadius](FollowerSpec& f, int i) {
         f.motion = static_cast<FollowerMotion>(i);
@@ -188,6 +260,13 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     number(m_pivotX, [](FollowerSpec& f, double v) { f.pivot.x() = v; });
     number(m_pivotY, [](FollowerSpec& f, double v) { f.pivot.y() = v; });
     number(m_armLength, [](FollowerSpec& f, double v) { f.armLength = v; });
+    number(m_clearance, [](FollowerSpec& f, double v) { f.grooveClearance = v; });
+    number(m_innerLand, [](FollowerSpec& f, double v) {
+        f.innerLandRadius = v > 0.0 ? std::optional<double>(v) : std::nullopt;
+    });
+    number(m_outerLand, [](FollowerSpec& f, double v) {
+        f.outerLandRadius = v > 0.0 ? std::optional<double>(v) : std::nullopt;
+    });
     number(m_limit, [](FollowerSpec& f, double v) {
         f.maxPressureAngleDeg = v > 0.0 ? std::optional<double>(v) : std::nullopt;
     });
@@ -249,6 +328,14 @@ void FollowerPanel::refresh() {
     }
     m_side->setCurrentIndex(static_cast<int>(f.arm));
     m_limit->setValue(f.maxPressureAngleDeg.value_or(0.0));
+    m_closure->setCurrentIndex(static_cast<int>(f.closure));
+    if (f.grooved()) m_clearance->setValue(f.grooveClearance);
+    m_innerLand->setValue(f.innerLandRadius.value_or(0.0));
+    m_outerLand->setValue(f.outerLandRadius.value_or(0.0));
+    m_closure->setEnabled(f.type == FollowerType::Roller || f.grooved());
+    m_clearance->setEnabled(f.grooved());
+    m_innerLand->setEnabled(f.grooved());
+    m_outerLand->setEnabled(f.grooved());
     m_radius->setEnabled(followerKind(f.type).hasRadius);
     m_offset->setEnabled(!arm);
     m_pivotX->setEnabled(arm);
@@ -471,9 +558,48 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
         }
     }
     if (flat) add(tr("Face width needed: %1").arg(millimetres(a.faceWidth)), std::nullopt, false);
+    if (result->groove) addGrooveChecks(*result->groove, spec);
     const int problems = m_checks->problemCount();
     m_checks->setSummary(problems == 0 ? tr("Every check passes.")
                                        : tr("%n check(s) fail.", nullptr, problems));
+}
+
+void FollowerPanel::addGrooveChecks(const GrooveView& groove, const FollowerSpec& spec) {
+    add(tr("Groove: %1 wide (roller radius %2, clearance %3)")
+            .arg(millimetres(2.0 * spec.radius + spec.grooveClearance), millimetres(spec.radius),
+                 millimetres(spec.grooveClearance)),
+        std::nullopt, false);
+    const PathBends& bends = groove.outerBends;
+    if (bends.minConvex) {
+        add(tr("Smallest convex radius of the outer flank: %1 at %2")
+                .arg(millimetres(bends.minConvex->radius), formatRadians(bends.minConvex->phi)),
+            bends.minConvex->phi, false);
+    }
+    if (bends.minConcave) {
+        add(tr("Smallest concave radius of the outer flank: %1 at %2")
+                .arg(millimetres(bends.minConcave->radius), formatRadians(bends.minConcave->phi)),
+            bends.minConcave->phi, false);
+    }
+    const GrooveLands& lands = groove.lands;
+    const RadialExtreme& in = lands.innerMost;
+    add(lands.innerLand
+            ? tr("Inner flank nearest the centre: %1 at %2 (land to %3)")
+                  .arg(millimetres(in.radius), formatRadians(in.phi), millimetres(*lands.innerLand))
+            : tr("Inner flank nearest the centre: %1 at %2 (no inner land radius given)")
+                  .arg(millimetres(in.radius), formatRadians(in.phi)),
+        in.phi, !lands.innerKept());
+    const RadialExtreme& out = lands.outerMost;
+    add(lands.outerLand
+            ? tr("Outer flank farthest from the centre: %1 at %2 (land from %3)")
+                  .arg(millimetres(out.radius), formatRadians(out.phi),
+                       millimetres(*lands.outerLand))
+            : tr("Outer flank farthest from the centre: %1 at %2 (no outer land radius given)")
+                  .arg(millimetres(out.radius), formatRadians(out.phi)),
+        out.phi, !lands.outerKept());
+}
+
+void FollowerPanel::add(const QString& text, std::optional<double> phi, bool problem) {
+    m_checks->add(text, phi, problem);
 }
 
 QStringList FollowerPanel::checkLines() const { return m_checks->lines(); }

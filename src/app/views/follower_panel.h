@@ -1,13 +1,16 @@
 #pragma once
 /// @file
-/// @brief The follower (type, motion, radius, offset, pivot, arm, pressure-angle limit; every
-/// edit an undo command) and its design checks over the turn (math.md §7): the largest pressure
-/// angles against the limit, the ranges beyond it, the smallest radii of curvature, the flat
-/// face's width and every stretch the follower cannot reach. Clicking a check goes to its angle.
+/// @brief The follower (type, motion, radius, offset, pivot, arm, pressure-angle limit, its
+/// closure: spring or groove with clearance and lands; every edit an undo command) and its
+/// design checks over the turn (math.md §7): the largest pressure angles against the limit,
+/// the ranges beyond it, the smallest radii of curvature, the flat face's width, every stretch
+/// the follower cannot reach, and a groove's outer flank and lands. Clicking a check goes to
+/// its angle.
 
 #include <QWidget>
 #include <array>
 #include <functional>
+#include <optional>
 
 #include "engine/compute_result.h"
 
@@ -56,6 +59,9 @@ signals:
     void anglePicked(double phi);
 
 private:
+    /// The groove's lines of the checks: its width, the outer flank's tightest bends, the lands.
+    void addGrooveChecks(const GrooveView& groove, const FollowerSpec& spec);
+    void add(const QString& text, std::optional<double> phi, bool problem);
     void showCurvature(const ComputeResultPtr& result);
     void refresh();
     void edit(const std::function<void(FollowerSpec&)>& change);
@@ -72,6 +78,10 @@ private:
     NumberSpinBox* m_armLength;
     QComboBox* m_side;
     NumberSpinBox* m_limit;
+    QComboBox* m_closure;
+    NumberSpinBox* m_clearance;
+    NumberSpinBox* m_innerLand;
+    NumberSpinBox* m_outerLand;
     TurningPicture* m_turning;
     QLabel* m_turningText;
     CheckList* m_checks;

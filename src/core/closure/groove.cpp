@@ -101,6 +101,20 @@ RadialExtreme farthestFromCentre(const ToolPath& path) {
     return radialExtreme(path, [](double r, double best) { return r > best; });
 }
 
+PathBends pathBends(const ToolPath& path) {
+    PathBends bends;
+    for (const PathSegment& piece : path.segments) {
+        if (piece.kind != PathSegment::Kind::Arc) continue;
+        std::optional<RadialExtreme>& tightest =
+            piece.sweep > 0.0 ? bends.minConvex : bends.minConcave;
+        if (tightest && !(piece.radius < tightest->radius)) continue;
+        const Eigen::Vector3d middle = piece.point(piece.length() / 2.0);
+        tightest = RadialExtreme{piece.radius, middle.head<2>(),
+                                 wrapTwoPi(std::atan2(middle.y(), middle.x()))};
+    }
+    return bends;
+}
+
 GrooveLands grooveLands(const GrooveFlanks& flanks, std::optional<double> innerLandRadius,
                         std::optional<double> outerLandRadius) {
     return {nearestToCentre(flanks.inner), farthestFromCentre(flanks.outer), innerLandRadius,

@@ -57,6 +57,16 @@ struct RadialExtreme {
 [[nodiscard]] RadialExtreme nearestToCentre(const ToolPath& path);
 [[nodiscard]] RadialExtreme farthestFromCentre(const ToolPath& path);
 
+/// @brief The tightest bends of a closed path of lines and arcs running counter-clockwise round
+/// the cam (as offsetContour makes them): the smallest radius of an arc bending round the cam
+/// centre's side (convex, counter-clockwise about its own centre) and of one bending away
+/// (concave), each at its middle; none where no arc bends that way. Exact on an arc cam's
+/// flanks; a spline's flank is its tangent arcs'.
+struct PathBends {
+    std::optional<RadialExtreme> minConvex, minConcave;  ///< `radius`: the arc's radius
+};
+[[nodiscard]] PathBends pathBends(const ToolPath& path);
+
 /// @brief The groove's lands (project-format.md `inner_land_radius_mm`, `outer_land_radius_mm`):
 /// where the inner flank comes nearest the bore and the outer flank nearest the rim, and
 /// whether each keeps its land (unchecked, and true, when the project gives no radius).
