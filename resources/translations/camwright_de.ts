@@ -3430,7 +3430,7 @@
         <translation>Innenflanke am nächsten zur Mitte: %1 bei %2 (Steg bis %3)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+2" />
         <source>Inner flank nearest the centre: %1 at %2 (no inner land radius given)</source>
         <translation>Innenflanke am nächsten zur Mitte: %1 bei %2 (kein innerer Stegradius angegeben)</translation>
     </message>
@@ -3445,7 +3445,7 @@
         <translation>Außenflanke am weitesten von der Mitte: %1 bei %2 (kein äußerer Stegradius angegeben)</translation>
     </message>
     <message>
-        <location line="-431" />
+        <location line="-430" />
         <source>Pressure angle [°]</source>
         <translation>Druckwinkel [°]</translation>
     </message>
@@ -3710,7 +3710,32 @@
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+23" />
+        <source>The inner flank carries the load over the whole turn.</source>
+        <translation>Die Innenflanke trägt die Last über die ganze Umdrehung.</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The roller crosses to the outer flank at %1 and back at %2</source>
+        <translation>Die Rolle wechselt bei %1 an die Außenflanke und bei %2 zurück</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Largest normal force on the outer flank: %1 at %2</source>
+        <translation>Größte Normalkraft an der Außenflanke: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>Largest contact stress on the outer flank: %1 at %2, %3 % of the allowable %4</source>
+        <translation>Größte Kontaktpressung an der Außenflanke: %1 bei %2, %3 % der zulässigen %4</translation>
+    </message>
+    <message>
+        <location line="+7" />
+        <source>Largest contact stress on the outer flank: %1 at %2</source>
+        <translation>Größte Kontaktpressung an der Außenflanke: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>The follower stays on the cam over the whole turn.</source>
         <translation>Der Stößel bleibt über die ganze Umdrehung an der Kurve.</translation>
     </message>
@@ -3735,7 +3760,12 @@
         <translation>Kleinste Vorspannkraft für einen Sicherheitsfaktor von %1: %2 bei %3 (die Feder hat %4)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
+        <source>Largest normal force on the inner flank: %1 at %2</source>
+        <translation>Größte Normalkraft an der Innenflanke: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Largest normal force: %1 at %2</source>
         <translation>Größte Normalkraft: %1 bei %2</translation>
     </message>
@@ -3751,11 +3781,21 @@
     </message>
     <message>
         <location line="+4" />
+        <source>Largest contact stress on the inner flank: %1 at %2, %3 % of the allowable %4</source>
+        <translation>Größte Kontaktpressung an der Innenflanke: %1 bei %2, %3 % der zulässigen %4</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Largest contact stress: %1 at %2, %3 % of the allowable %4</source>
         <translation>Größte Kontaktpressung: %1 bei %2, %3 % der zulässigen %4</translation>
     </message>
     <message>
         <location line="+8" />
+        <source>Largest contact stress on the inner flank: %1 at %2 (no allowable stress given)</source>
+        <translation>Größte Kontaktpressung an der Innenflanke: %1 bei %2 (keine zulässige Pressung angegeben)</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Largest contact stress: %1 at %2 (no allowable stress given)</source>
         <translation>Größte Kontaktpressung: %1 bei %2 (keine zulässige Pressung angegeben)</translation>
     </message>

@@ -221,11 +221,28 @@ Json forcesAnalysisJson(const Loaded& loaded) {
     Json liftOff = Json::array();
     for (const auto& [from, to] : s.liftOff) liftOff.push_back({degrees(from), degrees(to)});
     const double rpm = 60.0 / kTwoPi;
-    Json j{{"samples", n}, {"lift_off_deg", std::move(liftOff)}};
-    j["jump_speed_rpm"] = finiteOrNull(s.jumpSpeed * rpm);
-    j["jump_speed_at_deg"] = std::isfinite(s.jumpSpeed) ? Json(degrees(s.jumpSpeedAt)) : Json();
-    j[model.swinging ? "min_preload_Nm" : "min_preload_N"] = s.minPreload;
-    j["min_preload_at_deg"] = degrees(s.minPreloadAt);
+    Json j{{"samples", n}};
+    if (model.grooved()) {
+        // In a groove the follower never leaves the cam: where the load turns negative the
+        // roller crosses its clearance and the outer flank carries it; a spring's jump speed
+        // and preload mean nothing.
+        Json crossovers = Json::array();
+        for (const auto& [from, to] : s.liftOff) {
+            crossovers.push_back({{"to_outer_deg", degrees(from)}, {"to_inner_deg", degrees(to)}});
+        }
+        j["outer_flank_carries_deg"] = std::move(liftOff);
+        j["crossovers"] = std::move(crossovers);
+        j["jump_speed_rpm"] = nullptr;
+        j["jump_speed_at_deg"] = nullptr;
+        j[model.swinging ? "min_preload_Nm" : "min_preload_N"] = nullptr;
+        j["min_preload_at_deg"] = nullptr;
+    } else {
+        j["lift_off_deg"] = std::move(liftOff);
+        j["jump_speed_rpm"] = finiteOrNull(s.jumpSpeed * rpm);
+        j["jump_speed_at_deg"] = std::isfinite(s.jumpSpeed) ? Json(degrees(s.jumpSpeedAt)) : Json();
+        j[model.swinging ? "min_preload_Nm" : "min_preload_N"] = s.minPreload;
+        j["min_preload_at_deg"] = degrees(s.minPreloadAt);
+    }
     j["max_normal_N"] = s.maxNormal;
     j["max_normal_at_deg"] = degrees(s.maxNormalAt);
     j["peak_torque_Nm"] = s.peakTorque;
@@ -235,8 +252,22 @@ Json forcesAnalysisJson(const Loaded& loaded) {
     j["max_contact_stress_MPa"] = s.maxStress ? Json(*s.maxStress) : Json();
     j["max_contact_stress_at_deg"] = s.maxStressAt ? Json(degrees(*s.maxStressAt)) : Json();
     j["allowable_contact_stress_MPa"] = model.allowableMpa ? Json(*model.allowableMpa) : Json();
+    // The larger of both flanks' in a groove.
+    const std::optional<double> worst =
+        s.maxStressOuter && (!s.maxStress || *s.maxStressOuter > *s.maxStress) ? s.maxStressOuter
+                                                                               : s.maxStress;
     j["contact_stress_ratio"] =
-        s.maxStress && model.allowableMpa ? Json(*s.maxStress / *model.allowableMpa) : Json();
+        worst && model.allowableMpa ? Json(*worst / *model.allowableMpa) : Json();
+    if (model.grooved()) {
+        const auto orNull = [](const std::optional<double>& v) { return v ? Json(*v) : Json(); };
+        const auto atDeg = [&](const std::optional<double>& v) {
+            return v ? Json(degrees(*v)) : Json();
+        };
+        j["outer_flank"] = {{"max_normal_N", orNull(s.maxNormalOuter)},
+                            {"max_normal_at_deg", atDeg(s.maxNormalOuterAt)},
+                            {"max_contact_stress_MPa", orNull(s.maxStressOuter)},
+                            {"max_contact_stress_at_deg", atDeg(s.maxStressOuterAt)}};
+    }
     // Where the contact passes a joint and the forces jump: both sides (an arc table's s''
     // jumps at every joint).
     Json jumps = Json::array();

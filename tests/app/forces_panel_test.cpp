@@ -277,5 +277,43 @@ TEST(ForcesPanel, CtrlZInTheBoxJustCommittedUndoesTheEditNotTheTyping) {
     EXPECT_EQ(window.document()->project().dynamics->values[0], 1.6);
 }
 
+TEST(ForcesPanel, InAGrooveBeyondTheJumpSpeedTheRollerCrossesToTheOuterFlank) {
+    // The spring-loaded example beyond its jump speed leaves the cam; the same cam grooved
+    // never does: the outer flank takes the load in the same ranges (to the clearance's
+    // effect, neglected), and the dock names the crossovers and the outer flank's stress.
+    MainWindow window;
+    ASSERT_TRUE(openWithForces(window, kSpringCam));
+    const double jump = window.engine()->latestResult()->forces->summary.jumpSpeed;
+    window.document()->undoStack()->push(
+        new SetMotion(window.document(), MotionSpec{SpeedUnit::OmegaRadS, 1.05 * jump}));
+    ASSERT_TRUE(window.waitForCurrentResult(20000));
+    const auto liftOff = window.engine()->latestResult()->forces->summary.liftOff;
+    ASSERT_FALSE(liftOff.empty());
+    FollowerSpec grooved = *window.document()->project().follower;
+    grooved.closure = Closure::Groove;
+    grooved.grooveClearance = 0.05;
+    window.document()->undoStack()->push(new SetFollower(window.document(), grooved));
+    ASSERT_TRUE(window.waitForCurrentResult(20000));
+    const ComputeResultPtr r = window.engine()->latestResult();
+    ASSERT_TRUE(r->valid()) << (r->problems.empty() ? "" : r->problems.front().text());
+    const ForceSummary& s = r->forces->summary;
+    ASSERT_EQ(s.liftOff.size(), liftOff.size());
+    for (std::size_t k = 0; k < liftOff.size(); ++k) {
+        EXPECT_EQ(s.liftOff[k], liftOff[k]);  // the same motion and load: the same crossings
+    }
+    ForcesPanel* panel = window.forcesPanel();
+    const QStringList lines = panel->resultLines();
+    EXPECT_EQ(lines.filter("crosses to the outer flank").size(),
+              static_cast<qsizetype>(liftOff.size()));
+    EXPECT_EQ(lines.filter("leaves the cam").size(), 0);
+    EXPECT_EQ(lines.filter("Jump speed").size(), 0);
+    EXPECT_EQ(lines.filter("Least preload").size(), 0);
+    ASSERT_TRUE(s.maxStressOuter && s.maxNormalOuter);
+    EXPECT_EQ(lines.filter("Largest contact stress on the outer flank").size(), 1);
+    EXPECT_EQ(lines.filter("Largest normal force on the inner flank").size(), 1);
+    // Crossing is no failure: nothing is red unless a stress is beyond the allowable.
+    EXPECT_EQ(panel->problemCount(), 0);
+}
+
 }  // namespace
 }  // namespace cam

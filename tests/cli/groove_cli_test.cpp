@@ -23,7 +23,8 @@ using Json = nlohmann::json;
 constexpr double kE = 5.0, kR = 30.0, kRho = 4.0, kClearance = 0.25;
 
 /// The disc: a circle of radius kR about (kE, 0), run by a radial roller in a groove.
-std::string grooveDisc(const test::TempDir& dir, const std::string& lands = "") {
+std::string grooveDisc(const test::TempDir& dir, const std::string& lands = "",
+                       const std::string& more = "") {
     const std::string path = dir.file("disc.cam.json");
     std::ofstream(path) << R"({"format": "camwright", "version": 1, "name": "Grooved disc",
       "motion": {"period_s": 2},
@@ -31,7 +32,7 @@ std::string grooveDisc(const test::TempDir& dir, const std::string& lands = "") 
                    "phi_start": 0, "phi_end": 360}],
       "follower": {"type": "roller", "radius": 4, "closure": "groove",
                    "groove_clearance_mm": 0.25)"
-                        << lands << "}}";
+                        << lands << "}" << more << "}";
     return path;
 }
 
@@ -115,6 +116,54 @@ TEST(CliGroove, ASpringClosedCamHasNoOuterFlank) {
         test::runCli({"state", test::examplePath("six-lobe-arc-cam.cam.json"), "--t", "0.1"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_FALSE(Json::parse(run.out).at("follower").contains("outer_flank"));
+}
+
+TEST(CliGroove, AnalyzeNamesTheCrossoversWhereTheLoadTurnsNegative) {
+    // Inertia alone: the load m·s''·ω² is negative where s'' is, s(φ) = E·cos φ +
+    // √((R + ρ)² − E²·sin² φ) on the radial line at φ. Its zeros, by bisection here, are the
+    // crossovers; a groove has no jump speed and needs no preload.
+    const test::TempDir dir;
+    const auto run =
+        test::runCli({"analyze", grooveDisc(dir, "", R"(, "dynamics": {"mass_kg": 0.5})")});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Json f = Json::parse(run.out).at("forces");
+    EXPECT_TRUE(f.at("jump_speed_rpm").is_null());
+    EXPECT_TRUE(f.at("min_preload_N").is_null());
+    EXPECT_FALSE(f.contains("lift_off_deg"));
+    const auto s = [](double phi) {
+        const double k = kR + kRho;
+        return kE * std::cos(phi) + std::sqrt(k * k - kE * kE * std::sin(phi) * std::sin(phi));
+    };
+    const auto s2 = [&](double phi) {
+        const double h = 1e-3;
+        return (-s(phi - 2 * h) + 16 * s(phi - h) - 30 * s(phi) + 16 * s(phi + h) -
+                s(phi + 2 * h)) /
+               (12 * h * h);
+    };
+    const auto root = [&](double a, double b) {
+        const bool negativeAtA = s2(a) < 0;
+        for (int i = 0; i < 60; ++i) {
+            const double m = 0.5 * (a + b);
+            ((s2(m) < 0) == negativeAtA ? a : b) = m;
+        }
+        return 0.5 * (a + b) * 180 / std::numbers::pi;
+    };
+    // s'' < 0 round φ = 0 (the disc's far side under the roller), > 0 round 180°.
+    ASSERT_LT(s2(0.0), 0.0);
+    ASSERT_GT(s2(std::numbers::pi), 0.0);
+    const double back = root(0.0, std::numbers::pi);                   // turns positive
+    const double into = root(std::numbers::pi, 2 * std::numbers::pi);  // turns negative
+    const Json& crossovers = f.at("crossovers");
+    ASSERT_EQ(crossovers.size(), 1u) << f.dump();
+    const auto sameAngle = [](double a, double b) {
+        return std::abs(std::remainder(a - b, 360.0)) < 1e-6;
+    };
+    // The turn's direction decides which end comes first: both are the closed form's zeros.
+    const double to = crossovers[0].at("to_outer_deg"), from = crossovers[0].at("to_inner_deg");
+    EXPECT_TRUE(sameAngle(to, into) || sameAngle(to, back)) << to;
+    EXPECT_TRUE(sameAngle(from, into) || sameAngle(from, back)) << from;
+    EXPECT_FALSE(sameAngle(to, from));
+    EXPECT_TRUE(f.at("outer_flank").at("max_normal_N").get<double>() > 0.0);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "core/follower_geometry.h"
 #include "core/test_projects.h"
 #include "evaluation/evaluation.h"
+#include "evaluation/force_evaluation.h"
 
 namespace cam {
 namespace {
@@ -268,6 +269,95 @@ TEST(GrooveEvaluation, AGroovedProjectCarriesItsFlanksAndAnUndercutMakesItInvali
     // A spring-closed roller has no groove.
     p.follower->closure = Closure::Spring;
     EXPECT_FALSE(evaluateProject(p).groove);
+}
+
+TEST(GrooveForces, TheRollerCrossesToTheOuterFlankWhereTheClosedFormsLoadTurnsNegative) {
+    // A radial roller in the groove of an eccentric disc, driven by inertia alone: the load is
+    // m·s''·ω², s(φ) = u·c + √((R + ρ)² − (n·c)²) in closed form. It turns negative, and the
+    // outer flank takes it, exactly where s'' changes sign; the outer flank (the circle
+    // R + 2ρ + c) wraps round the roller: 1/R' = 1/ρ − 1/(R + 2ρ + c).
+    const Eigen::Vector2d centre(6.0, 0.0);
+    const double R = 25.0, rho = 4.0, clearance = 0.3, mass = 0.5, omega = 20.0;
+    const double width = 2 * rho + clearance, b = 10.0, E = 210000.0, nu = 0.3;
+    Project p;
+    p.motion = {SpeedUnit::OmegaRadS, omega};
+    p.contour.push_back(SegmentSpec{Arc{centre, R, Branch::Outer}, 0.0, 360.0});
+    FollowerSpec spec;
+    spec.type = FollowerType::Roller;
+    spec.radius = rho;
+    spec.closure = Closure::Groove;
+    spec.grooveClearance = clearance;
+    p.follower = spec;
+    DynamicsSpec d;
+    d[DynamicsKey::MassKg] = mass;
+    d[DynamicsKey::ContactWidthMm] = b;
+    d[DynamicsKey::CamModulusMpa] = E;
+    d[DynamicsKey::CamPoisson] = nu;
+    d[DynamicsKey::FollowerModulusMpa] = E;
+    d[DynamicsKey::FollowerPoisson] = nu;
+    p.dynamics = d;
+    const ProjectEvaluation e = evaluateProject(p);
+    ASSERT_EQ(e.status, EvaluationStatus::Computed);
+    ForceEvaluation forces;
+    ASSERT_TRUE(evaluateForces(p, *e.follower, e.omega, forces));
+    ASSERT_TRUE(forces.model.grooved());
+
+    // The closed form: s(φ) and s''(φ) by a central difference of order 4 (to ~1e-9 mm).
+    const auto s = [&](double phi) {
+        const Eigen::Vector2d u = test::unit(phi), n = test::normalOf(phi);
+        const double side = n.dot(centre);
+        return u.dot(centre) + std::sqrt((R + rho) * (R + rho) - side * side);
+    };
+    const auto s2 = [&](double phi) {
+        const double h = 1e-3;
+        return (-s(phi - 2 * h) + 16 * s(phi - h) - 30 * s(phi) + 16 * s(phi + h) -
+                s(phi + 2 * h)) /
+               (12 * h * h);
+    };
+    // Its sign changes, found by bisection on the closed form alone.
+    std::vector<double> roots;
+    const int n = 3600;
+    for (int k = 0; k < n; ++k) {
+        double a = kTwoPi * k / n, c = kTwoPi * (k + 1) / n;
+        if ((s2(a) < 0) == (s2(c) < 0)) continue;
+        const bool negativeAtA = s2(a) < 0;
+        for (int i = 0; i < 60; ++i) {
+            const double m = 0.5 * (a + c);
+            ((s2(m) < 0) == negativeAtA ? a : c) = m;
+        }
+        roots.push_back(0.5 * (a + c));
+    }
+    ASSERT_EQ(roots.size(), 2u);
+    const ForceSummary& summary = forces.summary;
+    ASSERT_EQ(summary.liftOff.size(), 1u);
+    // The crossover into the outer flank and back: where s'' turns negative and positive.
+    const double into = std::remainder(summary.liftOff[0][0], kTwoPi);
+    const double back = std::remainder(summary.liftOff[0][1], kTwoPi);
+    bool matchedInto = false, matchedBack = false;
+    for (const double r : roots) {
+        const bool turnsNegative = s2(r + 1e-4) < 0;
+        if (std::abs(std::remainder(r - into, kTwoPi)) < 1e-7) matchedInto = turnsNegative;
+        if (std::abs(std::remainder(r - back, kTwoPi)) < 1e-7) matchedBack = !turnsNegative;
+    }
+    EXPECT_TRUE(matchedInto) << into;
+    EXPECT_TRUE(matchedBack) << back;
+
+    // Each flank's largest stress against a dense search of the closed form: the normal force
+    // m·|s''|·ω²/cos α (N; s'' in mm → m) on 1/R' of the flank carrying it.
+    const double eStar = 1.0 / (2 * (1 - nu * nu) / E);
+    double innerPeak = 0.0, outerPeak = 0.0;
+    for (int k = 0; k < 200000; ++k) {
+        const double phi = kTwoPi * k / 200000;
+        const double side = test::normalOf(phi).dot(centre);
+        const double cosAlpha = std::sqrt(1 - side * side / ((R + rho) * (R + rho)));
+        const double normal = mass * s2(phi) * 1e-3 * omega * omega / cosAlpha;
+        const double curvature = normal >= 0 ? 1 / rho + 1 / R : 1 / rho - 1 / (R + width);
+        const double p = std::sqrt(std::abs(normal) * eStar * curvature / (kPi * b));
+        (normal >= 0 ? innerPeak : outerPeak) = std::max(normal >= 0 ? innerPeak : outerPeak, p);
+    }
+    ASSERT_TRUE(summary.maxStress && summary.maxStressOuter && summary.maxNormalOuter);
+    EXPECT_NEAR(*summary.maxStress, innerPeak, 1e-6 * innerPeak);
+    EXPECT_NEAR(*summary.maxStressOuter, outerPeak, 1e-6 * outerPeak);
 }
 
 }  // namespace

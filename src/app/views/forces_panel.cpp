@@ -309,31 +309,66 @@ void ForcesPanel::showSummary(const ComputeResult& r) {
     const auto rpm = [](double radPerS) {
         return formatQuantity(DisplayQuantity::RotationSpeed, radPerS * 60.0 / kTwoPi);
     };
-    if (s.liftOff.empty()) {
-        add(tr("The follower stays on the cam over the whole turn."), std::nullopt, false);
-    }
-    for (const auto& [from, to] : s.liftOff) {
-        add(tr("The follower leaves the cam from %1 to %2")
-                .arg(formatRadians(from), formatRadians(to)),
-            from, true);
-    }
-    const double speed = std::abs(r.omega);
-    if (std::isfinite(s.jumpSpeed)) {
-        add(tr("Jump speed: %1 at %2 (the cam runs at %3)")
-                .arg(rpm(s.jumpSpeed), formatRadians(s.jumpSpeedAt), rpm(speed)),
-            s.jumpSpeedAt, s.jumpSpeed <= speed);
+    if (m.grooved()) {
+        // A groove holds the roller: where the load turns negative it crosses its clearance
+        // and strikes the outer flank (a knock a designer moves into a slow stretch).
+        if (s.liftOff.empty()) {
+            add(tr("The inner flank carries the load over the whole turn."), std::nullopt, false);
+        }
+        for (const auto& [from, to] : s.liftOff) {
+            add(tr("The roller crosses to the outer flank at %1 and back at %2")
+                    .arg(formatRadians(from), formatRadians(to)),
+                from, false);
+        }
+        if (s.maxNormalOuter && s.maxNormalOuterAt) {
+            add(tr("Largest normal force on the outer flank: %1 at %2")
+                    .arg(formatQuantity(DisplayQuantity::Force, *s.maxNormalOuter),
+                         formatRadians(*s.maxNormalOuterAt)),
+                *s.maxNormalOuterAt, false);
+        }
+        if (s.maxStressOuter && s.maxStressOuterAt) {
+            const bool over = m.allowableMpa && *s.maxStressOuter > *m.allowableMpa;
+            add(m.allowableMpa
+                    ? tr("Largest contact stress on the outer flank: %1 at %2, %3 % of the "
+                         "allowable %4")
+                          .arg(formatQuantity(DisplayQuantity::Stress, *s.maxStressOuter),
+                               formatRadians(*s.maxStressOuterAt),
+                               formatQuantity(DisplayQuantity::Ratio,
+                                              100.0 * *s.maxStressOuter / *m.allowableMpa),
+                               formatQuantity(DisplayQuantity::Stress, *m.allowableMpa))
+                    : tr("Largest contact stress on the outer flank: %1 at %2")
+                          .arg(formatQuantity(DisplayQuantity::Stress, *s.maxStressOuter),
+                               formatRadians(*s.maxStressOuterAt)),
+                *s.maxStressOuterAt, over);
+        }
     } else {
-        add(tr("No speed lifts the follower off the cam."), std::nullopt, false);
+        if (s.liftOff.empty()) {
+            add(tr("The follower stays on the cam over the whole turn."), std::nullopt, false);
+        }
+        for (const auto& [from, to] : s.liftOff) {
+            add(tr("The follower leaves the cam from %1 to %2")
+                    .arg(formatRadians(from), formatRadians(to)),
+                from, true);
+        }
+        const double speed = std::abs(r.omega);
+        if (std::isfinite(s.jumpSpeed)) {
+            add(tr("Jump speed: %1 at %2 (the cam runs at %3)")
+                    .arg(rpm(s.jumpSpeed), formatRadians(s.jumpSpeedAt), rpm(speed)),
+                s.jumpSpeedAt, s.jumpSpeed <= speed);
+        } else {
+            add(tr("No speed lifts the follower off the cam."), std::nullopt, false);
+        }
+        const DynamicsSpec& d = *r.project->dynamics;
+        const double preload = dynamicsValue(
+            d, m.swinging ? DynamicsKey::SpringPreloadNm : DynamicsKey::SpringPreloadN);
+        add(tr("Least preload for a safety factor of %1: %2 at %3 (the spring has %4)")
+                .arg(formatQuantity(DisplayQuantity::Ratio, m.safetyFactor),
+                     formatQuantity(load, s.minPreload), formatRadians(s.minPreloadAt),
+                     formatQuantity(load, preload)),
+            s.minPreloadAt, preload < s.minPreload);
     }
-    const DynamicsSpec& d = *r.project->dynamics;
-    const double preload =
-        dynamicsValue(d, m.swinging ? DynamicsKey::SpringPreloadNm : DynamicsKey::SpringPreloadN);
-    add(tr("Least preload for a safety factor of %1: %2 at %3 (the spring has %4)")
-            .arg(formatQuantity(DisplayQuantity::Ratio, m.safetyFactor),
-                 formatQuantity(load, s.minPreload), formatRadians(s.minPreloadAt),
-                 formatQuantity(load, preload)),
-        s.minPreloadAt, preload < s.minPreload);
-    add(tr("Largest normal force: %1 at %2")
+    add((m.grooved() ? tr("Largest normal force on the inner flank: %1 at %2")
+                     : tr("Largest normal force: %1 at %2"))
             .arg(formatQuantity(DisplayQuantity::Force, s.maxNormal), formatRadians(s.maxNormalAt)),
         s.maxNormalAt, false);
     add(tr("Peak torque on the camshaft: %1 at %2; RMS %3")
@@ -345,7 +380,9 @@ void ForcesPanel::showSummary(const ComputeResult& r) {
         false);
     if (s.maxStress && s.maxStressAt) {
         if (m.allowableMpa) {
-            add(tr("Largest contact stress: %1 at %2, %3 % of the allowable %4")
+            add((m.grooved() ? tr("Largest contact stress on the inner flank: %1 at %2, %3 % of "
+                                  "the allowable %4")
+                             : tr("Largest contact stress: %1 at %2, %3 % of the allowable %4"))
                     .arg(formatQuantity(DisplayQuantity::Stress, *s.maxStress),
                          formatRadians(*s.maxStressAt),
                          formatQuantity(DisplayQuantity::Ratio,
@@ -353,7 +390,9 @@ void ForcesPanel::showSummary(const ComputeResult& r) {
                          formatQuantity(DisplayQuantity::Stress, *m.allowableMpa)),
                 *s.maxStressAt, *s.maxStress > *m.allowableMpa);
         } else {
-            add(tr("Largest contact stress: %1 at %2 (no allowable stress given)")
+            add((m.grooved() ? tr("Largest contact stress on the inner flank: %1 at %2 (no "
+                                  "allowable stress given)")
+                             : tr("Largest contact stress: %1 at %2 (no allowable stress given)"))
                     .arg(formatQuantity(DisplayQuantity::Stress, *s.maxStress),
                          formatRadians(*s.maxStressAt)),
                 *s.maxStressAt, false);

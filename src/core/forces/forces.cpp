@@ -16,6 +16,15 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+/// The contact's 1/R' (1/mm): the profile's curvature at the contact plus the follower's; on a
+/// groove's outer flank (radius ρ_profile + 2ρ + c, signed as the profile's) the follower's
+/// less the flank's, which wraps round the roller where it is convex.
+double contactCurvature(const ForceModel& m, double rhoProfile, bool outer) {
+    if (!outer) return (std::abs(rhoProfile) < kInf ? 1.0 / rhoProfile : 0.0) + m.followerCurvature;
+    const double rho = rhoProfile + m.grooveWidthMm;
+    return m.followerCurvature - (std::abs(rho) < kInf ? 1.0 / rho : 0.0);
+}
+
 }  // namespace
 
 ForceModel ForceModel::of(const DynamicsSpec& d, const FollowerSpec& follower) {
@@ -48,6 +57,9 @@ ForceModel ForceModel::of(const DynamicsSpec& d, const FollowerSpec& follower) {
                               (1.0 - nu2 * nu2) / *d[K::FollowerModulusMpa]);
         m.followerCurvature = followerKind(follower.type).hasRadius ? 1.0 / follower.radius : 0.0;
     }
+    if (follower.grooved() && follower.type == FollowerType::Roller) {
+        m.grooveWidthMm = 2.0 * follower.radius + follower.grooveClearance;
+    }
     return m;
 }
 
@@ -67,14 +79,15 @@ ForcePoint forceAt(const ForceModel& m, const ForceMotion& motion, double omega)
     f.torque = f.load * d1;
     f.power = f.torque * omega;
     f.stress = f.halfWidth = f.shear = kNaN;
-    if (m.hasStress && f.normal >= 0.0) {
-        // 1/R' = 1/ρ_profile + 1/ρ_f (ρ_profile < 0 where the profile is concave).
-        const double curvature =
-            (std::isfinite(motion.rhoProfile) ? 1.0 / motion.rhoProfile : 0.0) +
-            m.followerCurvature;
+    if (m.hasStress && (f.normal >= 0.0 || m.grooved())) {
+        // 1/R' = 1/ρ_profile + 1/ρ_f (ρ_profile < 0 where the profile is concave). On a groove's
+        // outer flank the roller touches it from the other side: 1/R' = 1/ρ_f − 1/ρ_outer.
+        const bool outer = f.normal < 0.0;
+        const double curvature = contactCurvature(m, motion.rhoProfile, outer);
+        const double normal = std::abs(f.normal);
         if (curvature > 0.0) {
-            f.stress = std::sqrt(f.normal * m.modulusMpa * curvature / (kPi * m.widthMm));
-            f.halfWidth = std::sqrt(4.0 * f.normal / (kPi * m.widthMm * m.modulusMpa * curvature));
+            f.stress = std::sqrt(normal * m.modulusMpa * curvature / (kPi * m.widthMm));
+            f.halfWidth = std::sqrt(4.0 * normal / (kPi * m.widthMm * m.modulusMpa * curvature));
         } else {
             // Flat on flat (or a roller as wide as its concave arc): no Hertz line contact,
             // the load spreads over the stretch.
@@ -174,8 +187,8 @@ ForcePoint ForceTurn::point(std::size_t k, const ForceModel& model, const Follow
     f.power = torque[k] * omega;
     f.stress = stress[k];
     f.shear = 0.30 * stress[k];
-    const double rho = turn.rhoProfile[k];
-    const double curvature = (std::isfinite(rho) ? 1.0 / rho : 0.0) + model.followerCurvature;
+    const double curvature =
+        contactCurvature(model, turn.rhoProfile[k], model.grooved() && normal[k] < 0.0);
     f.halfWidth = !std::isfinite(stress[k]) ? kNaN
                   : curvature > 0.0         ? 2.0 * stress[k] / (model.modulusMpa * curvature)
                                             : kInf;
@@ -214,6 +227,16 @@ void stressesOfTurn(const double* __restrict normal, const double* __restrict rh
     }
 }
 
+/// The same in a groove: where the normal force is negative, the outer flank's (forceAt).
+void grooveStressesOfTurn(const double* normal, const double* rhoProfile, double* stress,
+                          std::size_t n, const ForceModel& m) {
+    const double scale = m.modulusMpa / (kPi * m.widthMm);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double curvature = contactCurvature(m, rhoProfile[i], normal[i] < 0.0);
+        stress[i] = std::sqrt(std::max(std::abs(normal[i]) * curvature, 0.0) * scale);
+    }
+}
+
 }  // namespace
 
 void forcesOfTurn(const ForceModel& model, const FollowerModel& follower, const FollowerTurn& turn,
@@ -231,13 +254,37 @@ void forcesOfTurn(const ForceModel& model, const FollowerModel& follower, const 
                 out.load.data(), out.normal.data(), out.torque.data(), n, model.mass, model.damping,
                 model.rate, model.preload + model.external, q0, sign, unit,
                 arm ? model.armLength : 1.0, omega);
-    if (model.hasStress) {
+    if (model.hasStress && model.grooved()) {
+        grooveStressesOfTurn(out.normal.data(), turn.rhoProfile.data(), out.stress.data(), n,
+                             model);
+    } else if (model.hasStress) {
         stressesOfTurn(out.normal.data(), turn.rhoProfile.data(), out.stress.data(), n,
                        model.followerCurvature, model.modulusMpa / (kPi * model.widthMm));
     } else {
         std::fill(out.stress.begin(), out.stress.end(), kNaN);
     }
 }
+
+namespace {
+
+/// A point's stress and (in a groove, on the outer flank) normal force into the summary's
+/// extremes, at cam angle `phi`.
+void takeStress(ForceSummary& s, const ForceModel& model, const ForcePoint& f, double phi) {
+    const bool outer = model.grooved() && f.normal < 0.0;
+    if (outer && (!s.maxNormalOuter || -f.normal > *s.maxNormalOuter)) {
+        s.maxNormalOuter = -f.normal;
+        s.maxNormalOuterAt = phi;
+    }
+    if (!std::isfinite(f.stress)) return;
+    std::optional<double>& peak = outer ? s.maxStressOuter : s.maxStress;
+    std::optional<double>& at = outer ? s.maxStressOuterAt : s.maxStressAt;
+    if (!peak || f.stress > *peak) {
+        peak = f.stress;
+        at = phi;
+    }
+}
+
+}  // namespace
 
 ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follower,
                              const FollowerTurn& turn, const ForceTurn& forces, double omega) {
@@ -269,10 +316,7 @@ ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follo
             s.peakTorqueAt = phiOf(k);
         }
         torqueSquares += f.torque * f.torque;
-        if (std::isfinite(f.stress) && (!s.maxStress || f.stress > *s.maxStress)) {
-            s.maxStress = f.stress;
-            s.maxStressAt = phiOf(k);
-        }
+        takeStress(s, model, f, phiOf(k));
     }
     s.rmsTorque = std::sqrt(torqueSquares / static_cast<double>(n));
     // The joints between samples whose contact changes segment: both sides, by bisection on
@@ -311,10 +355,7 @@ ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follo
                 s.peakTorque = f.torque;
                 s.peakTorqueAt = jump.phi;
             }
-            if (std::isfinite(f.stress) && (!s.maxStress || f.stress > *s.maxStress)) {
-                s.maxStress = f.stress;
-                s.maxStressAt = jump.phi;
-            }
+            takeStress(s, model, f, jump.phi);
         }
         s.jumps.push_back(jump);
     }
@@ -355,16 +396,36 @@ ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follo
             forceAt(model, forceMotion(follower, follower.at(s.peakTorqueAt, omega)), omega).torque;
     }
     s.peakPower = s.peakTorque * omega;  // P = T·ω: its peak is the torque's
+    // In a groove each flank's own: a sample of the other flank does not count.
+    const auto onOuter = [&](const ForcePoint& f) { return model.grooved() && f.normal < 0.0; };
     if (s.maxStress) {
         double stress = *s.maxStress, at = *s.maxStressAt;
         refineMax(
             [&](const ForceMotion& m) {
-                const double p = forceAt(model, m, omega).stress;
-                return std::isfinite(p) ? p : -kInf;
+                const ForcePoint f = forceAt(model, m, omega);
+                return std::isfinite(f.stress) && !onOuter(f) ? f.stress : -kInf;
             },
             stress, at);
         s.maxStress = stress;
         s.maxStressAt = at;
+    }
+    if (s.maxStressOuter) {
+        double stress = *s.maxStressOuter, at = *s.maxStressOuterAt;
+        refineMax(
+            [&](const ForceMotion& m) {
+                const ForcePoint f = forceAt(model, m, omega);
+                return std::isfinite(f.stress) && onOuter(f) ? f.stress : -kInf;
+            },
+            stress, at);
+        s.maxStressOuter = stress;
+        s.maxStressOuterAt = at;
+    }
+    if (s.maxNormalOuter) {
+        double normal = *s.maxNormalOuter, at = *s.maxNormalOuterAt;
+        refineMax([&](const ForceMotion& m) { return -forceAt(model, m, omega).normal; }, normal,
+                  at);
+        s.maxNormalOuter = normal;
+        s.maxNormalOuterAt = at;
     }
     // The runs of samples where the load is negative, a run across the turn's end as one.
     std::size_t k = 0;

@@ -36,6 +36,12 @@ struct ForceModel {
     /// 1/ρ_f of the follower's contact (1/mm): a roller's curvature, 0 for a flat face.
     double followerCurvature = 0.0;
     std::optional<double> allowableMpa;
+    /// A grooved cam's width 2ρ + c (mm; 0: spring-closed). In a groove the follower never
+    /// leaves the cam: where the load turns negative the outer flank carries it, whose radius
+    /// across the roller from the inner contact is ρ_profile + 2ρ + c (exact within an arc of
+    /// an arc table; the roller's shift by the clearance is neglected there and in the motion).
+    double grooveWidthMm = 0.0;
+    [[nodiscard]] bool grooved() const { return grooveWidthMm > 0.0; }
 
     /// @brief From the project's `dynamics` (absent keys take their defaults) and follower.
     [[nodiscard]] static ForceModel of(const DynamicsSpec& dynamics, const FollowerSpec& follower);
@@ -60,6 +66,7 @@ struct ForcePoint {
     double power = 0.0;    ///< W
     /// Hertz p_max, the contact half-width a and the largest subsurface shear (about 0.30·p_max
     /// at 0.786·a); NaN for a knife edge, without width or materials, or where contact is lost.
+    /// In a groove, where the normal force is negative, those of the outer flank's contact.
     double stress = 0.0, halfWidth = 0.0, shear = 0.0;
 };
 
@@ -96,7 +103,10 @@ struct ForceJump {
 
 /// @brief A turn's forces and what a designer releases a cam on.
 struct ForceSummary {
-    /// rad ranges [from, to] where the load < 0 (its first and last angle with load < 0)
+    /// rad ranges [from, to] where the load < 0 (its first and last angle with load < 0): the
+    /// follower leaves the cam there — in a groove, the roller crosses its clearance at `from`
+    /// and the outer flank carries the load until `to` (the crossovers a designer moves into
+    /// stretches of low velocity).
     std::vector<std::array<double, 2>> liftOff;
     double jumpSpeed = 0.0;                     ///< rad/s, the smallest over the turn (+∞: none)
     double jumpSpeedAt = 0.0;                   ///< rad
@@ -107,6 +117,11 @@ struct ForceSummary {
     double rmsTorque = 0.0;                        ///< N·m over the turn
     double peakPower = 0.0;                        ///< W (largest |P|, signed)
     std::optional<double> maxStress, maxStressAt;  ///< MPa, rad; none without a contact stress
+    /// In a groove: the largest normal force on the outer flank (N, a magnitude) and its
+    /// largest contact stress (MPa), with where; none where it never carries. (maxNormal and
+    /// maxStress are then the inner flank's.)
+    std::optional<double> maxNormalOuter, maxNormalOuterAt;
+    std::optional<double> maxStressOuter, maxStressOuterAt;
     /// Every joint where the load jumps by more than 1e-9 of the largest load; their one-sided
     /// values take part in every extreme above and in the lift-off ranges.
     std::vector<ForceJump> jumps;
