@@ -166,5 +166,37 @@ TEST(CliGroove, AnalyzeNamesTheCrossoversWhereTheLoadTurnsNegative) {
     EXPECT_TRUE(f.at("outer_flank").at("max_normal_N").get<double>() > 0.0);
 }
 
+TEST(CliGroove, SynthesizeBuildsAGroovedCamFromADesign) {
+    // The bundled cycloidal design (base radius 40 mm, lift 10 mm) with its roller (8 mm) in a
+    // groove: synthesize fits the inner flank; the groove follows. At the top dwell the inner
+    // flank is the circle 40 + 10 and the outer flank reaches 2ρ + c beyond it.
+    const test::TempDir dir;
+    Json project =
+        Json::parse(test::readFile(test::examplePath("synthesised-cycloidal-roller.cam.json")));
+    project["contour"] = Json::array();
+    project["follower"]["closure"] = "groove";
+    project["follower"]["groove_clearance_mm"] = 0.1;
+    const std::string in = dir.file("design.cam.json"), out = dir.file("grooved.cam.json");
+    std::ofstream(in) << project.dump(1);
+    const auto made = test::runCli({"synthesize", in, "--out", out});
+    ASSERT_EQ(made.exitCode, 0) << made.err;
+    const Json written = Json::parse(test::readFile(out));
+    EXPECT_EQ(written.at("follower").at("closure"), "groove");
+    EXPECT_EQ(written.at("follower").at("groove_clearance_mm"), 0.1);
+    EXPECT_GT(written.at("contour").size(), 10u);
+    const auto analyzed = test::runCli({"analyze", out});
+    ASSERT_EQ(analyzed.exitCode, 0) << analyzed.err;
+    const Json lands = Json::parse(analyzed.out).at("follower").at("groove").at("lands");
+    const double tolerance = project.at("design").at("tolerance");
+    EXPECT_NEAR(lands.at("outer").at("radius").get<double>(), 40.0 + 10.0 + 2 * 8.0 + 0.1,
+                tolerance);
+    EXPECT_NEAR(lands.at("inner").at("radius").get<double>(), 40.0, tolerance);
+    // And its groove is milled.
+    const std::string ngc = dir.file("grooved.ngc");
+    ASSERT_EQ(test::runCli({"export", out, "--format", "gcode", "--out", ngc}).exitCode, 0);
+    EXPECT_NE(test::readFile(ngc).find("one slot pass on the groove's centre line"),
+              std::string::npos);
+}
+
 }  // namespace
 }  // namespace cam
