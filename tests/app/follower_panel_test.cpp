@@ -424,6 +424,13 @@ TEST(FollowerPanel, TheGrooveIsOneSettingDrawnCheckedAndUndone) {
     // One setting: the closure. The knife becomes a roller whose groove fits the notches
     // (radius 4.84 mm): (4.84 − 0.05) / 2 rounded down to 2.3 mm.
     auto* closure = child<QComboBox>(window, "followerClosureComboBox");
+    ASSERT_TRUE(closure->isEnabled());  // from any follower, the knife of a new project too
+    // Rows a follower does not use are hidden: the lands without a groove, an arm's on a line.
+    FollowerPanel* panel = window.followerPanel();
+    auto* innerLandBox = child<QDoubleSpinBox>(window, "innerLandSpinBox");
+    EXPECT_FALSE(innerLandBox->isVisibleTo(panel));
+    EXPECT_FALSE(child<QDoubleSpinBox>(window, "pivotXSpinBox")->isVisibleTo(panel));
+    EXPECT_TRUE(child<QDoubleSpinBox>(window, "followerOffsetSpinBox")->isVisibleTo(panel));
     closure->setCurrentIndex(1);
     const auto spec = window.document()->project().follower;
     ASSERT_TRUE(spec.has_value());
@@ -466,6 +473,7 @@ TEST(FollowerPanel, TheGrooveIsOneSettingDrawnCheckedAndUndone) {
     const int before = window.followerPanel()->problemCount();
     auto* innerLand = child<QDoubleSpinBox>(window, "innerLandSpinBox");
     ASSERT_TRUE(innerLand->isEnabled());
+    EXPECT_TRUE(innerLand->isVisibleTo(panel));
     innerLand->setValue(22.0);
     emit innerLand->editingFinished();
     EXPECT_EQ(window.document()->project().follower->innerLandRadius, 22.0);

@@ -45,6 +45,7 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document) {
     auto* layout = new QVBoxLayout(this);
     auto* form = new QFormLayout;
+    m_form = form;
     m_type = new QComboBox(this);
     m_type->setObjectName("followerTypeComboBox");
     for (const FollowerKind& kind : followerKinds()) {
@@ -332,10 +333,14 @@ void FollowerPanel::refresh() {
     if (f.grooved()) m_clearance->setValue(f.grooveClearance);
     m_innerLand->setValue(f.innerLandRadius.value_or(0.0));
     m_outerLand->setValue(f.outerLandRadius.value_or(0.0));
-    m_closure->setEnabled(f.type == FollowerType::Roller || f.grooved());
     m_clearance->setEnabled(f.grooved());
     m_innerLand->setEnabled(f.grooved());
     m_outerLand->setEnabled(f.grooved());
+    m_form->setRowVisible(m_offset, !arm);
+    m_form->setRowVisible(m_pivotX->parentWidget(), arm);
+    m_form->setRowVisible(m_armLength, arm);
+    m_form->setRowVisible(m_side, arm);
+    m_form->setRowVisible(m_innerLand->parentWidget(), f.grooved());
     m_radius->setEnabled(followerKind(f.type).hasRadius);
     m_offset->setEnabled(!arm);
     m_pivotX->setEnabled(arm);

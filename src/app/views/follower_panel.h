@@ -78,6 +78,10 @@ private:
     NumberSpinBox* m_armLength;
     QComboBox* m_side;
     NumberSpinBox* m_limit;
+    /// The settings; the rows a follower does not use are hidden (an arm's on a line, the
+    /// line's offset on an arm, the lands without a groove) so that the checks and plots keep
+    /// their room.
+    class QFormLayout* m_form = nullptr;
     QComboBox* m_closure;
     NumberSpinBox* m_clearance;
     NumberSpinBox* m_innerLand;
