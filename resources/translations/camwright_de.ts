@@ -464,6 +464,21 @@
     </message>
     <message>
         <location line="+4" />
+        <source>a conjugate yoke needs a translating roller follower: its second roller runs on the same line</source>
+        <translation>ein Doppelrollenstößel für Kurvenpaare braucht einen geradegeführten Rollenstößel: seine zweite Rolle läuft auf derselben Geraden</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>must put the second roller beyond the cam centre at every angle: at %1° its centre is only %2 mm behind it</source>
+        <translation>muss die zweite Rolle bei jedem Winkel jenseits der Scheibenmitte halten: bei %1° liegt ihr Mittelpunkt nur %2 mm hinter ihr</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>the second roller of %1 mm is wider than its path's bend at %2°: the second plate would fold over</source>
+        <translation>die zweite Rolle von %1 mm ist breiter als die Krümmung ihrer Bahn bei %2°: die zweite Scheibe würde sich überschlagen</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>must be larger than the inner land radius %1 mm (got %2 mm): the groove runs between the two</source>
         <translation>muss größer sein als der innere Stegradius %1 mm (angegeben %2 mm): die Nut verläuft zwischen beiden</translation>
     </message>
@@ -1251,7 +1266,7 @@
         <translation>%1, y</translation>
     </message>
     <message>
-        <location line="+170" />
+        <location line="+174" />
         <source>law</source>
         <translation>Gesetz</translation>
     </message>
@@ -1281,7 +1296,7 @@
         <translation>Bewegungsentwurf, Übergang zwischen Segment %1 und %2</translation>
     </message>
     <message>
-        <location line="-102" />
+        <location line="-106" />
         <source>Machining, acceleration of axis %1</source>
         <translation>Zerspanung, Beschleunigung der Achse %1</translation>
     </message>
@@ -1312,12 +1327,12 @@
     </message>
     <message>
         <location line="+6" />
-        <location line="+72" />
+        <location line="+76" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-71" />
+        <location line="-75" />
         <source>Points</source>
         <translation>Punkte</translation>
     </message>
@@ -1397,6 +1412,16 @@
         <translation>Stößel, äußerer Stegradius der Nut</translation>
     </message>
     <message>
+        <location line="+2" />
+        <source>Follower, second roller's distance</source>
+        <translation>Stößel, Abstand der zweiten Rolle</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Follower, second roller's radius</source>
+        <translation>Stößel, Radius der zweiten Rolle</translation>
+    </message>
+    <message>
         <location line="+1" />
         <source>Samples per turn</source>
         <translation>Abtastpunkte pro Umdrehung</translation>
@@ -1447,12 +1472,12 @@
         <translation>Bewegungsentwurf, Segmente</translation>
     </message>
     <message>
-        <location line="-75" />
+        <location line="-79" />
         <source>is empty: the design's contour was never synthesised (Synthesize Contour, F6, makes it)</source>
         <translation>ist leer: die Kontur des Entwurfs wurde noch nie synthetisiert (Kontur synthetisieren, F6, erzeugt sie)</translation>
     </message>
     <message>
-        <location line="+111" />
+        <location line="+115" />
         <source>Joint between segments %1 and %2</source>
         <translation>Übergang zwischen Segment %1 und %2</translation>
     </message>
@@ -3190,7 +3215,7 @@
 <context>
     <name>cam::FollowerPanel</name>
     <message>
-        <location filename="../../src/app/views/follower_panel.cpp" line="+53" />
+        <location filename="../../src/app/views/follower_panel.cpp" line="+54" />
         <source>What touches the cam (math.md §7)</source>
         <translation>Was die Kurvenscheibe berührt (math.md §7)</translation>
     </message>
@@ -3410,7 +3435,7 @@
         <translation>Druckwinkel über eine Umdrehung; gestrichelt: die Grenze; rot: darüber</translation>
     </message>
     <message>
-        <location line="+400" />
+        <location line="+404" />
         <source>Groove: %1 wide (roller radius %2, clearance %3)</source>
         <translation>Nut: %1 breit (Rollenradius %2, Spiel %3)</translation>
     </message>
@@ -3445,7 +3470,7 @@
         <translation>Außenflanke am weitesten von der Mitte: %1 bei %2 (kein äußerer Stegradius angegeben)</translation>
     </message>
     <message>
-        <location line="-430" />
+        <location line="-434" />
         <source>Pressure angle [°]</source>
         <translation>Druckwinkel [°]</translation>
     </message>
@@ -3465,7 +3490,7 @@
         <translation>Versatz e der Bewegungslinie des Stößels vom Scheibenmittelpunkt: positiv links seiner Richtung, vom Mittelpunkt aus gesehen, negativ rechts (das Bild Drehrichtung zeigt es). Ein positiver Versatz senkt den Druckwinkel des Hubs, wenn sich die Scheibe im Uhrzeigersinn dreht, ein negativer, wenn sie sich gegen den Uhrzeigersinn dreht; beide erhöhen den des Rückhubs</translation>
     </message>
     <message>
-        <location line="+343" />
+        <location line="+347" />
         <location line="+29" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>

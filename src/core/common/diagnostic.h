@@ -126,6 +126,9 @@ enum class Severity { Error, Info };
     X(GrooveToolTooWide)                 \
     X(GrooveToolTooNarrow)               \
     X(GrooveNoCompensation)              \
+    X(ConjugateNeedsTranslatingRoller)   \
+    X(ConjugateRollerNotBeyondCentre)    \
+    X(ConjugatePlateFolds)               \
     X(LandRadiiCrossed)                  \
     X(SeedStepTooSmall)                  \
     X(SeedStepTooMany)                   \

@@ -270,6 +270,18 @@ constexpr std::array<DiagnosticEntry, kDiagnosticCodeCount> kCatalogue{{
      CAM_TRANSLATE_NOOP("Diagnostic",
                         "a groove is milled on computed tool-centre paths: a controller's cutter "
                         "compensation (G41/G42) cannot follow both flanks")},
+    {Code::ConjugateNeedsTranslatingRoller, "",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "a conjugate yoke needs a translating roller follower: its second roller "
+                        "runs on the same line")},
+    {Code::ConjugateRollerNotBeyondCentre, "nn",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "must put the second roller beyond the cam centre at every angle: at %1° "
+                        "its centre is only %2 mm behind it")},
+    {Code::ConjugatePlateFolds, "nn",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "the second roller of %1 mm is wider than its path's bend at %2°: the "
+                        "second plate would fold over")},
     {Code::LandRadiiCrossed, "nn",
      CAM_TRANSLATE_NOOP("Diagnostic",
                         "must be larger than the inner land radius %1 mm (got %2 mm): the groove "

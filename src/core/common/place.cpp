@@ -115,6 +115,10 @@ std::string_view fieldKey(Field field) {
             return "follower.inner_land_radius_mm";
         case Field::FollowerOuterLandRadius:
             return "follower.outer_land_radius_mm";
+        case Field::FollowerConjugateDistance:
+            return "follower.conjugate_distance_mm";
+        case Field::FollowerConjugateRadius:
+            return "follower.conjugate_radius_mm";
         case Field::SamplesPerTurn:
             return "sampling.samples_per_turn";
         case Field::MachiningAxisAccel:

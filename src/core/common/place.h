@@ -76,6 +76,8 @@ enum class Field : std::uint8_t {
     FollowerGrooveClearance,
     FollowerInnerLandRadius,
     FollowerOuterLandRadius,
+    FollowerConjugateDistance,
+    FollowerConjugateRadius,
     SamplesPerTurn,
     MachiningAxisAccel,
     MachiningAxisVmax,

@@ -26,41 +26,6 @@ double polarAfter(const Eigen::Vector2d& x, double after) {
     return angle;
 }
 
-/// The arcs as contour segments with polar windows (degrees) rising from the first joint's
-/// angle through one turn; each arc takes the branch of the ray that holds its midpoint.
-std::vector<SegmentSpec> contourOf(const std::vector<FittedArc>& arcs) {
-    std::vector<SegmentSpec> out;
-    const double begin = std::atan2(arcs.front().from.y(), arcs.front().from.x());
-    double start = begin;
-    for (std::size_t k = 0; k < arcs.size(); ++k) {
-        const FittedArc& a = arcs[k];
-        // The last window closes the turn exactly.
-        const double end = k + 1 == arcs.size() ? begin + kTwoPi : polarAfter(a.to, start);
-        SegmentSpec s;
-        if (a.straight) {
-            s.shape = Line{a.from, a.to};
-        } else {
-            const double half = a.sweep / 2.0;
-            const Eigen::Vector2d r = a.from - a.center;
-            const Eigen::Vector2d mid =
-                a.center + Eigen::Vector2d(std::cos(half) * r.x() - std::sin(half) * r.y(),
-                                           std::sin(half) * r.x() + std::cos(half) * r.y());
-            const Eigen::Vector2d u = mid.normalized();
-            const double mu = a.center.dot(u);
-            const double root =
-                std::sqrt(std::max(0.0, mu * mu - (a.center.squaredNorm() - a.radius * a.radius)));
-            const bool outer = std::abs(mu + root - mid.norm()) <= std::abs(mu - root - mid.norm());
-            s.shape = Arc{a.center, a.radius, outer ? Branch::Outer : Branch::Inner};
-        }
-        s.phiStartDeg = radToDeg(start);
-        s.phiEndDeg = radToDeg(end);
-        out.push_back(s);
-        start = end;
-    }
-    out.back().phiEndDeg = out.front().phiStartDeg + 360.0;
-    return out;
-}
-
 /// Where the exact profile lies farthest from the centre (mm), over the fit's own density of
 /// cam angles.
 double profileExtent(const ExactProfile& profile) {
@@ -144,6 +109,39 @@ std::optional<Measured> measureDeviation(const ExactProfile& profile, const Cont
 constexpr int kRefits = 3;
 
 }  // namespace
+
+std::vector<SegmentSpec> contourOfArcs(const std::vector<FittedArc>& arcs) {
+    std::vector<SegmentSpec> out;
+    const double begin = std::atan2(arcs.front().from.y(), arcs.front().from.x());
+    double start = begin;
+    for (std::size_t k = 0; k < arcs.size(); ++k) {
+        const FittedArc& a = arcs[k];
+        // The last window closes the turn exactly.
+        const double end = k + 1 == arcs.size() ? begin + kTwoPi : polarAfter(a.to, start);
+        SegmentSpec s;
+        if (a.straight) {
+            s.shape = Line{a.from, a.to};
+        } else {
+            const double half = a.sweep / 2.0;
+            const Eigen::Vector2d r = a.from - a.center;
+            const Eigen::Vector2d mid =
+                a.center + Eigen::Vector2d(std::cos(half) * r.x() - std::sin(half) * r.y(),
+                                           std::sin(half) * r.x() + std::cos(half) * r.y());
+            const Eigen::Vector2d u = mid.normalized();
+            const double mu = a.center.dot(u);
+            const double root =
+                std::sqrt(std::max(0.0, mu * mu - (a.center.squaredNorm() - a.radius * a.radius)));
+            const bool outer = std::abs(mu + root - mid.norm()) <= std::abs(mu - root - mid.norm());
+            s.shape = Arc{a.center, a.radius, outer ? Branch::Outer : Branch::Inner};
+        }
+        s.phiStartDeg = radToDeg(start);
+        s.phiEndDeg = radToDeg(end);
+        out.push_back(s);
+        start = end;
+    }
+    out.back().phiEndDeg = out.front().phiStartDeg + 360.0;
+    return out;
+}
 
 Diagnostics placeArcTableProblems(const Diagnostics& problems, const std::vector<FittedArc>& arcs,
                                   const MotionDesign& motion) {
@@ -250,7 +248,7 @@ Result<Synthesis> synthesize(const Project& project, std::optional<double> toler
             0.0, target, cancel, rollerRadius);
         if (!fit.ok()) return fit.errors();
         arcs = std::move(fit).value().arcs;
-        made.contour = contourOf(arcs);
+        made.contour = contourOfArcs(arcs);
         auto contour = Contour::build(made);
         if (!contour.ok()) return placeArcTableProblems(contour.errors(), arcs, motion.value());
         built = std::move(contour).value();

@@ -37,6 +37,11 @@ struct Synthesis {
     SynthesisReport report;
 };
 
+/// @brief Fitted arcs (closed, counter-clockwise round the cam) as contour segments with polar
+/// windows (degrees) rising from the first joint's angle through one turn; each arc takes the
+/// branch of the ray that holds its midpoint.
+[[nodiscard]] std::vector<SegmentSpec> contourOfArcs(const std::vector<FittedArc>& arcs);
+
 /// @brief The validator's problems with a synthesised arc table (`arcs`, contour[k] made from
 /// arcs[k]), the first placed: the arc it names (by its place, or the segment argument of its
 /// code), the cam angles that arc was made for and the design segment they lie in, located

@@ -1,0 +1,103 @@
+#include "closure/conjugate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "common/angles.h"
+#include "design/synthesis.h"
+#include "geometry/planar.h"
+
+namespace cam {
+ConjugatePoint conjugatePoint(const FollowerModel& first, const ConjugateYoke& yoke, double phi) {
+    const FollowerState st = first.at(phi, 1.0);
+    const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), n(-u.y(), u.x());
+    const double e = first.spec().offset;
+    // P = a·u + e·n with a = s − D; u' = n, n' = −u.
+    const double a = st.sPhi[0] - yoke.distanceMm, a1 = st.sPhi[1], a2 = st.sPhi[2];
+    ConjugatePoint out;
+    out.centre = a * u + e * n;
+    const Eigen::Vector2d d1 = (a1 - e) * u + a * n;
+    const Eigen::Vector2d d2 = (a2 - a) * u + (2.0 * a1 - e) * n;
+    const double speed = d1.norm();
+    // The path runs counter-clockwise round the cam: its outward normal is d1 turned clockwise,
+    // and the plate lies the roller's radius inwards, towards the cam centre.
+    const Eigen::Vector2d outward = Eigen::Vector2d(d1.y(), -d1.x()) / speed;
+    const double curvature = cross(d1, d2) / (speed * speed * speed);
+    out.plate = out.centre - yoke.rollerRadiusMm * outward;
+    out.spread = 1.0 - yoke.rollerRadiusMm * curvature;
+    out.plateTangent = out.spread * d1;
+    return out;
+}
+
+Result<ConjugatePlate> conjugatePlate(const FollowerModel& first, const ConjugateYoke& yoke,
+                                      double toleranceMm, int samples,
+                                      const std::atomic<bool>* cancel) {
+    Diagnostics errors;
+    const FollowerSpec& spec = first.spec();
+    if (spec.type != FollowerType::Roller || spec.motion != FollowerMotion::Translating) {
+        errors.push_back(Diagnostic::make(FieldPlace{Field::FollowerClosure},
+                                          DiagnosticCode::ConjugateNeedsTranslatingRoller));
+    }
+    for (const auto& [value, field] :
+         {std::pair{yoke.distanceMm, Field::FollowerConjugateDistance},
+          std::pair{yoke.rollerRadiusMm, Field::FollowerConjugateRadius}}) {
+        if (!(std::isfinite(value) && value >= kMinLengthMm && value <= kMaxLengthMm)) {
+            errors.push_back(
+                Diagnostic::make(FieldPlace{field}, DiagnosticCode::OutOfRange,
+                                 {kMinLengthMm, kMaxLengthMm, std::string(" mm"), value}));
+        }
+    }
+    if (!errors.empty()) return errors;
+    // The second roller beyond the centre (s − D < 0, with room for its radius) and a plate
+    // that does not fold, at every sample.
+    for (int k = 0; k < samples; ++k) {
+        const double phi = kTwoPi * k / samples;
+        const FollowerState st = first.at(phi, 1.0);
+        const double behind = yoke.distanceMm - st.sPhi[0];
+        if (!(behind > yoke.rollerRadiusMm)) {
+            return Diagnostics{Diagnostic::make(FieldPlace{Field::FollowerConjugateDistance},
+                                                DiagnosticCode::ConjugateRollerNotBeyondCentre,
+                                                {radToDeg(phi), behind})};
+        }
+        if (!(conjugatePoint(first, yoke, phi).spread > 0.0)) {
+            return Diagnostics{Diagnostic::make(FieldPlace{Field::FollowerConjugateRadius},
+                                                DiagnosticCode::ConjugatePlateFolds,
+                                                {yoke.rollerRadiusMm, radToDeg(phi)})};
+        }
+    }
+    auto fit = fitArcs(
+        [&](double phi) {
+            const ConjugatePoint p = conjugatePoint(first, yoke, phi);
+            return CurveSample{p.plate, p.plateTangent};
+        },
+        0.0, toleranceMm, cancel, yoke.rollerRadiusMm);
+    if (!fit.ok()) return fit.errors();
+    if (cancel && cancel->load()) return Diagnostics{};
+    ConjugatePlate plate;
+    plate.fit = std::move(fit).value();
+    plate.contour = contourOfArcs(plate.fit.arcs);
+    plate.maxPlay = -std::numeric_limits<double>::infinity();
+    plate.minPlay = std::numeric_limits<double>::infinity();
+    // The play: the roller's centre, with the first roller on the first plate, against the arcs.
+    for (int k = 0; k < samples; ++k) {
+        const double phi = kTwoPi * k / samples;
+        const Eigen::Vector2d centre = conjugatePoint(first, yoke, phi).centre;
+        double distance = std::numeric_limits<double>::infinity();
+        for (const FittedArc& arc : plate.fit.arcs) {
+            distance = std::min(distance, distanceToArc(arc, centre));
+        }
+        const double play = distance - yoke.rollerRadiusMm;
+        if (play > plate.maxPlay) {
+            plate.maxPlay = play;
+            plate.maxPlayAt = phi;
+        }
+        if (play < plate.minPlay) {
+            plate.minPlay = play;
+            plate.minPlayAt = phi;
+        }
+    }
+    return plate;
+}
+
+}  // namespace cam

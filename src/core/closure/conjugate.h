@@ -1,0 +1,64 @@
+#pragma once
+/// @file
+/// @brief A conjugate cam pair (issue 32, `closure: conjugate`): two plates on one shaft drive
+/// two rollers on one follower, the first plate the contour, the second computed so that its
+/// roller touches it at every angle while the first roller touches the first plate. Here the
+/// translating yoke: the second roller on the follower's line, `distance` behind the first
+/// (on the far side of the cam). Its centre runs on P(φ) = (s(φ) − D)·u(φ) + e·n(φ) in the cam
+/// frame (u along the line, n its left normal, s the first roller's coordinate); the second
+/// plate is that path offset towards the cam centre by the second roller's radius, fitted by
+/// G1 arcs within the tolerance (design/arc_fit.h, the synthesis machinery).
+
+#include <atomic>
+#include <vector>
+
+#include "common/diagnostic.h"
+#include "design/arc_fit.h"
+#include "follower/follower.h"
+#include "project/project.h"
+
+namespace cam {
+
+/// @brief The second roller of a translating conjugate yoke.
+struct ConjugateYoke {
+    double distanceMm = 0.0;      ///< from the first roller's centre, back along the line
+    double rollerRadiusMm = 0.0;  ///< the second roller's radius
+};
+
+/// @brief The second plate and how well it holds the second roller.
+struct ConjugatePlate {
+    ArcFit fit;  ///< the plate's G1 arcs, counter-clockwise round the cam
+    /// The same arcs as a contour table (design/synthesis.h contourOfArcs): the second plate,
+    /// for every check, drawing and export a contour has.
+    std::vector<SegmentSpec> contour;
+    /// The play between the second roller and the fitted plate over the turn, with the first
+    /// roller on the first plate: distance from the roller's centre to the arcs less its radius
+    /// (mm): the largest gap and the deepest interference (negative), and where (rad).
+    double maxPlay = 0.0, maxPlayAt = 0.0;
+    double minPlay = 0.0, minPlayAt = 0.0;
+};
+
+/// @brief The second roller's centre and the second plate's point at cam angle φ, with the
+/// plate's derivative by φ: exact, from `first` (a translating roller on the first plate).
+struct ConjugatePoint {
+    Eigen::Vector2d centre{0.0, 0.0};
+    Eigen::Vector2d plate{0.0, 0.0};
+    Eigen::Vector2d plateTangent{1.0, 0.0};
+    /// 1 − ρ₂·κ of the centre's path: where it is not positive the plate folds (undercut).
+    double spread = 1.0;
+};
+[[nodiscard]] ConjugatePoint conjugatePoint(const FollowerModel& first, const ConjugateYoke& yoke,
+                                            double phi);
+
+/// @brief The second plate for `yoke` behind the translating roller `first`, fitted within
+/// `toleranceMm`, and its play over the turn measured at `samples` angles. Errors: a first
+/// follower that is not a translating roller, a second roller or distance that is not a
+/// positive length, a distance that does not put the second roller beyond the cam centre at
+/// every angle, a plate that folds (its roller too large for the path's bend), a fit that
+/// cannot meet the tolerance. None returned once `cancel` reads true.
+[[nodiscard]] Result<ConjugatePlate> conjugatePlate(const FollowerModel& first,
+                                                    const ConjugateYoke& yoke, double toleranceMm,
+                                                    int samples = 7200,
+                                                    const std::atomic<bool>* cancel = nullptr);
+
+}  // namespace cam

@@ -1,0 +1,129 @@
+// A conjugate yoke's second plate (closure/conjugate.h), checked against closed forms: on an
+// eccentric disc of radius R about c, a roller on a line at offset e sits at
+// s(φ) = u·c + √((R + ρ)² − (e − n·c)²); the second roller, D behind it on the same line, at
+// (s − D)·u + e·n. The fitted second plate must hold that roller, at every angle, within the
+// tolerance; and a roller placed by contact on the second plate (the follower machinery, the
+// line turned half a turn) must stand D from the first.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "closure/conjugate.h"
+#include "common/angles.h"
+#include "core/follower_geometry.h"
+
+namespace cam {
+namespace {
+
+struct Disc {
+    Eigen::Vector2d c{6.0, -2.0};
+    double R = 25.0, rho = 4.0, e = 3.0;
+};
+
+FollowerModel firstRoller(const Disc& d) {
+    FollowerSpec spec;
+    spec.type = FollowerType::Roller;
+    spec.radius = d.rho;
+    spec.offset = d.e;
+    return FollowerModel::build(test::disc(d.c, d.R), spec).value();
+}
+
+double sOf(const Disc& d, double phi) {
+    const Eigen::Vector2d u = test::unit(phi), n = test::normalOf(phi);
+    const double side = d.e - n.dot(d.c);
+    return u.dot(d.c) + std::sqrt((d.R + d.rho) * (d.R + d.rho) - side * side);
+}
+
+TEST(Conjugate, TheSecondRollerOfAYokeOnAnEccentricDiscIsHeldWithinTheTolerance) {
+    const Disc d;
+    const ConjugateYoke yoke{80.0, 5.0};
+    const double tolerance = 1e-3;
+    const FollowerModel first = firstRoller(d);
+    // The second roller's centre: the closed form.
+    for (double deg = 0.0; deg < 360.0; deg += 7.7) {
+        const double phi = degToRad(deg);
+        const Eigen::Vector2d expected =
+            (sOf(d, phi) - yoke.distanceMm) * test::unit(phi) + d.e * test::normalOf(phi);
+        EXPECT_NEAR((conjugatePoint(first, yoke, phi).centre - expected).norm(), 0.0, 1e-10) << deg;
+    }
+    const auto plate = conjugatePlate(first, yoke, tolerance);
+    ASSERT_TRUE(plate.ok()) << plate.errors().front().text();
+    const ConjugatePlate& p = plate.value();
+    EXPECT_GT(p.fit.arcs.size(), 4u);
+    EXPECT_LE(p.maxPlay, tolerance);
+    EXPECT_GE(p.minPlay, -tolerance);
+    // Independently of the plate's own measure: every closed-form centre, densely, is the
+    // roller's radius from the arcs to the tolerance, and each arc's ends meet the next.
+    double worst = 0.0;
+    for (int k = 0; k < 20000; ++k) {
+        const double phi = kTwoPi * k / 20000;
+        const Eigen::Vector2d centre =
+            (sOf(d, phi) - yoke.distanceMm) * test::unit(phi) + d.e * test::normalOf(phi);
+        double distance = 1e300;
+        for (const FittedArc& arc : p.fit.arcs) {
+            distance = std::min(distance, distanceToArc(arc, centre));
+        }
+        worst = std::max(worst, std::abs(distance - yoke.rollerRadiusMm));
+    }
+    EXPECT_LE(worst, tolerance);
+    // Not zero by construction: the arcs do deviate, by a part of the tolerance.
+    EXPECT_GT(worst, tolerance / 100);
+    ::testing::Test::RecordProperty("worst_mm", std::to_string(worst));
+    for (std::size_t k = 0; k < p.fit.arcs.size(); ++k) {
+        const auto& next = p.fit.arcs[(k + 1) % p.fit.arcs.size()];
+        EXPECT_NEAR((p.fit.arcs[k].to - next.from).norm(), 0.0, 1e-9) << k;
+    }
+}
+
+TEST(Conjugate, ARollerPlacedByContactOnTheSecondPlateStandsTheYokesLengthBehind) {
+    // The second plate as a contour, a roller on it running on the same line turned half a
+    // turn (its line's direction −u, its offset −e): placed by contact alone, it stands at
+    // s₂(φ + π) = D − s(φ) to the fit's tolerance.
+    const Disc d;
+    const ConjugateYoke yoke{80.0, 5.0};
+    const double tolerance = 1e-4;
+    const auto plate = conjugatePlate(firstRoller(d), yoke, tolerance);
+    ASSERT_TRUE(plate.ok()) << plate.errors().front().text();
+    Project second;
+    second.contour = plate.value().contour;
+    const auto contour = Contour::build(second);
+    ASSERT_TRUE(contour.ok()) << contour.errors().front().text();
+    FollowerSpec spec;
+    spec.type = FollowerType::Roller;
+    spec.radius = yoke.rollerRadiusMm;
+    spec.offset = -d.e;
+    const auto roller = FollowerModel::build(contour.value(), spec);
+    ASSERT_TRUE(roller.ok()) << roller.errors().front().text();
+    double worst = 0.0;
+    for (int k = 0; k < 3600; ++k) {
+        const double phi = kTwoPi * k / 3600;
+        const double s2 = roller.value().at(phi + kPi, 1.0).s;
+        worst = std::max(worst, std::abs(sOf(d, phi) + s2 - yoke.distanceMm));
+    }
+    // The contact moves along the normal, not the line: by at most the play over cos α.
+    EXPECT_LE(worst, 2 * tolerance);
+    ::testing::Test::RecordProperty("worst_mm", std::to_string(worst));
+}
+
+TEST(Conjugate, WhatCannotBeMadeIsRefusedAtItsKey) {
+    const Disc d;
+    const FollowerModel first = firstRoller(d);
+    // Too short: the second roller would stand in front of the cam centre.
+    const auto shortYoke = conjugatePlate(first, {20.0, 5.0}, 1e-3);
+    ASSERT_FALSE(shortYoke.ok());
+    EXPECT_EQ(shortYoke.errors().front().location, "follower.conjugate_distance_mm");
+    EXPECT_EQ(shortYoke.errors().front().code, DiagnosticCode::ConjugateRollerNotBeyondCentre);
+    const auto noRadius = conjugatePlate(first, {80.0, 0.0}, 1e-3);
+    ASSERT_FALSE(noRadius.ok());
+    EXPECT_EQ(noRadius.errors().front().location, "follower.conjugate_radius_mm");
+    // A knife has no second roller.
+    FollowerSpec knife;
+    const auto plain = FollowerModel::build(test::disc(d.c, d.R), knife).value();
+    const auto refused = conjugatePlate(plain, {80.0, 5.0}, 1e-3);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.errors().front().code, DiagnosticCode::ConjugateNeedsTranslatingRoller);
+}
+
+}  // namespace
+}  // namespace cam
