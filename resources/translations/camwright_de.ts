@@ -1172,12 +1172,12 @@
     <message>
         <location line="+1" />
         <location line="+141" />
-        <location line="+329" />
+        <location line="+338" />
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location line="-392" />
+        <location line="-401" />
         <source>true or false</source>
         <translation>true oder false</translation>
     </message>
@@ -1192,7 +1192,7 @@
         <translation>ein Array aus Zahlen</translation>
     </message>
     <message>
-        <location line="+302" />
+        <location line="+311" />
         <location line="+87" />
         <source>an array of segments</source>
         <translation>ein Array aus Segmenten</translation>
@@ -3215,7 +3215,7 @@
 <context>
     <name>cam::FollowerPanel</name>
     <message>
-        <location filename="../../src/app/views/follower_panel.cpp" line="+54" />
+        <location filename="../../src/app/views/follower_panel.cpp" line="+55" />
         <source>What touches the cam (math.md §7)</source>
         <translation>Was die Kurvenscheibe berührt (math.md §7)</translation>
     </message>
@@ -3290,7 +3290,17 @@
         <translation>Nut (Formschluss)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+0" />
+        <source>Conjugate plates</source>
+        <translation>Kurvenpaar (Formschluss)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>A second plate driving a second roller: set in the project file (conjugate_distance_mm, conjugate_radius_mm); camwright-cli computes, checks and exports it</source>
+        <translation>Eine zweite Scheibe treibt eine zweite Rolle: in der Projektdatei festgelegt (conjugate_distance_mm, conjugate_radius_mm); camwright-cli berechnet, prüft und exportiert sie</translation>
+    </message>
+    <message>
+        <location line="+5" />
         <source>What keeps the roller on the cam: a spring, or a groove milled into the disc (the contour is its inner flank, the outer flank lies twice the roller radius plus the clearance beyond it)</source>
         <translation>Was die Rolle an der Scheibe hält: eine Feder oder eine in die Scheibe gefräste Nut (die Kontur ist ihre Innenflanke, die Außenflanke liegt den doppelten Rollenradius plus das Spiel weiter außen)</translation>
     </message>
@@ -3485,12 +3495,12 @@
         <translation>ρ [mm]</translation>
     </message>
     <message>
-        <location line="-119" />
+        <location line="-128" />
         <source>Offset e of the follower's line of motion from the cam's centre: positive to the left of its direction as seen from the centre, negative to the right (the Turning picture shows it). A positive offset lowers the rise's pressure angle when the cam turns clockwise, a negative one when it turns counter-clockwise; either raises the return's</source>
         <translation>Versatz e der Bewegungslinie des Stößels vom Scheibenmittelpunkt: positiv links seiner Richtung, vom Mittelpunkt aus gesehen, negativ rechts (das Bild Drehrichtung zeigt es). Ein positiver Versatz senkt den Druckwinkel des Hubs, wenn sich die Scheibe im Uhrzeigersinn dreht, ein negativer, wenn sie sich gegen den Uhrzeigersinn dreht; beide erhöhen den des Rückhubs</translation>
     </message>
     <message>
-        <location line="+347" />
+        <location line="+356" />
         <location line="+29" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>

@@ -59,6 +59,17 @@ Loaded load(const std::string& path) {
             evaluation->outerFlankFollower};
 }
 
+std::optional<ConjugatePlate> secondPlate(const Loaded& loaded, const std::string& path) {
+    const std::optional<ConjugateYoke> yoke = ConjugateYoke::of(loaded.project);
+    if (!yoke) return std::nullopt;
+    auto plate = conjugatePlate(loaded.follower, *yoke, conjugateTolerance(loaded.project));
+    if (!plate.ok()) {
+        const Diagnostic& d = plate.errors().front();
+        throw CliError{kInvalidInput, placeOf(path, d), d.message};
+    }
+    return std::move(plate).value();
+}
+
 void requireFinite(const Json& value, const std::string& where) {
     if (value.is_number_float() && !std::isfinite(value.get<double>())) {
         throw CliError{kNotComputable, where,

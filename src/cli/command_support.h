@@ -11,6 +11,7 @@
 #include <ostream>
 #include <string>
 
+#include "closure/conjugate.h"
 #include "closure/groove.h"
 #include "common/diagnostic.h"
 #include "contour/contour.h"
@@ -45,6 +46,12 @@ struct Loaded {
 /// @brief Loads PROJECT and evaluates it, or throws its first problem (exit 2); the rest go to
 /// stderr via `validate`, which is the command for seeing them all.
 [[nodiscard]] Loaded load(const std::string& path);
+
+/// @brief A conjugate pair's second plate (closure/conjugate.h), fitted within the project's
+/// conjugateTolerance; none for another closure. Throws what cannot be made, located at its
+/// key (exit 2).
+[[nodiscard]] std::optional<ConjugatePlate> secondPlate(const Loaded& loaded,
+                                                        const std::string& path);
 
 /// @brief No command prints a non-finite number with exit 0: a result that is not a finite
 /// number is "not computable" (exit 3), named by its place in the output

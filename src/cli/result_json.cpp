@@ -62,6 +62,18 @@ Json outerFlankJson(const FollowerModel& inner, const FollowerState& f) {
     return json;
 }
 
+Json conjugateJson(const Loaded& loaded, const ConjugatePlate& plate) {
+    const FollowerSpec& spec = loaded.follower.spec();
+    return Json{{"distance_mm", spec.conjugateDistance},
+                {"roller_radius", spec.conjugateRadius},
+                {"tolerance_mm", conjugateTolerance(loaded.project)},
+                {"plate_arcs", plate.fit.arcs.size()},
+                {"max_play_mm", plate.maxPlay},
+                {"max_play_at_deg", radToDeg(plate.maxPlayAt)},
+                {"min_play_mm", plate.minPlay},
+                {"min_play_at_deg", radToDeg(plate.minPlayAt)}};
+}
+
 namespace {
 
 /// analyze's `groove` of a grooved cam: the outer flank's checks (its pressure angle and

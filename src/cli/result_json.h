@@ -19,6 +19,8 @@ namespace cam::cli {
 /// @brief cli.md's `outer_flank` of a grooved cam's follower: `f` (onOuterFlank's) as
 /// followerJson gives it, less the type and motion, its lift measured as the inner flank's.
 [[nodiscard]] Json outerFlankJson(const FollowerModel& inner, const FollowerState& f);
+/// @brief analyze's `follower.conjugate`: the second roller, the plate's arcs and the play.
+[[nodiscard]] Json conjugateJson(const Loaded& loaded, const ConjugatePlate& plate);
 
 /// @brief cli.md's `follower` object of `analyze`: the design checks over the turn.
 [[nodiscard]] Json followerAnalysisJson(const Loaded& loaded);

@@ -198,5 +198,102 @@ TEST(CliGroove, SynthesizeBuildsAGroovedCamFromADesign) {
               std::string::npos);
 }
 
+// A conjugate yoke on the same disc, its line offset by e = 3 mm: the second roller (5 mm) 80
+// mm behind the first, at (s − D)·u + e·n with s = u·c + √((R + ρ)² − (e − n·c)²).
+std::string conjugateDisc(const test::TempDir& dir) {
+    const std::string path = dir.file("conjugate.cam.json");
+    std::ofstream(path) << R"({"format": "camwright", "version": 1, "name": "Conjugate disc",
+      "motion": {"period_s": 2},
+      "contour": [{"type": "arc", "center": [5, 0], "radius": 30, "branch": "outer",
+                   "phi_start": 0, "phi_end": 360}],
+      "follower": {"type": "roller", "radius": 4, "offset": 3, "closure": "conjugate",
+                   "conjugate_distance_mm": 80, "conjugate_radius_mm": 5}})";
+    return path;
+}
+
+Eigen::Vector2d secondCentre(const Eigen::Vector2d& u) {
+    const Eigen::Vector2d n(-u.y(), u.x()), c(kE, 0.0);
+    const double e = 3.0, side = e - n.dot(c);
+    const double s = u.dot(c) + std::sqrt((kR + kRho) * (kR + kRho) - side * side);
+    return (s - 80.0) * u + e * n;
+}
+
+TEST(CliConjugate, StateAnalyzeAndTheDxfHoldTheSecondRollerWhereTheClosedFormPutsIt) {
+    const test::TempDir dir;
+    const std::string project = conjugateDisc(dir);
+    // state: the second roller's centre, ρ₂ from its contact.
+    for (const double t : {0.0, 0.37, 1.21}) {
+        const auto run = test::runCli({"state", project, "--t", std::to_string(t)});
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        const Json f = Json::parse(run.out).at("follower");
+        const Eigen::Vector2d first = vec(f.at("center"));
+        // The cam angle is found from the first roller's centre by brute force over the closed
+        // form (every 1e-3°: the second centre, 80 mm on, is then known to 1e-3 mm).
+        double best = 1e300;
+        Eigen::Vector2d expected = Eigen::Vector2d::Zero();
+        for (int k = 0; k < 360000; ++k) {
+            const double phi = 2 * std::numbers::pi * k / 360000;
+            const Eigen::Vector2d u(std::cos(phi), std::sin(phi));
+            const Eigen::Vector2d candidate = secondCentre(u) + 80.0 * u;  // the first's
+            if ((candidate - first).norm() < best) {
+                best = (candidate - first).norm();
+                expected = secondCentre(u);
+            }
+        }
+        EXPECT_LT(best, 1e-3);
+        const Json& second = f.at("second_roller");
+        EXPECT_NEAR((vec(second.at("center")) - expected).norm(), 0.0, 1e-3);
+        EXPECT_NEAR((vec(second.at("center")) - vec(second.at("contact"))).norm(), 5.0, 1e-9);
+    }
+    // analyze: the play the fitted plate leaves, within the 0.001 mm it was fitted to.
+    const auto analyzed = test::runCli({"analyze", project});
+    ASSERT_EQ(analyzed.exitCode, 0) << analyzed.err;
+    const Json c = Json::parse(analyzed.out).at("follower").at("conjugate");
+    EXPECT_EQ(c.at("tolerance_mm").get<double>(), 1e-3);
+    EXPECT_LE(c.at("max_play_mm").get<double>(), 1e-3);
+    EXPECT_GE(c.at("min_play_mm").get<double>(), -1e-3);
+    // The DXF: the first plate on PLATE_1, the second's arcs on PLATE_2, read by ezdxf; every
+    // closed-form centre of the second roller lies 5 mm from them to the tolerance.
+    const std::string dxf = dir.file("pair.dxf");
+    ASSERT_EQ(test::runCli({"export", project, "--format", "dxf", "--out", dxf}).exitCode, 0);
+    const auto read = test::run(
+        "/usr/bin/python3",
+        {"-c",
+         "import ezdxf, json, sys\n"
+         "doc = ezdxf.readfile(sys.argv[1])\n"
+         "assert not doc.audit().errors\n"
+         "print(json.dumps({'plate1': len([e for e in doc.modelspace() if e.dxf.layer == "
+         "'PLATE_1']), 'arcs': [[e.dxf.center.x, e.dxf.center.y, e.dxf.radius, "
+         "e.dxf.start_angle, e.dxf.end_angle] for e in doc.modelspace() if e.dxf.layer == "
+         "'PLATE_2' and e.dxftype() == 'ARC']}))\n",
+         dxf},
+        120);
+    ASSERT_EQ(read.exitCode, 0) << read.err;
+    const Json layers = Json::parse(read.out);
+    EXPECT_EQ(layers.at("plate1").get<int>(), 1);
+    const Json& arcs = layers.at("arcs");
+    ASSERT_GT(arcs.size(), 4u);
+    double worst = 0.0;
+    for (int k = 0; k < 7200; ++k) {
+        const double phi = 2 * std::numbers::pi * k / 7200;
+        const Eigen::Vector2d q = secondCentre({std::cos(phi), std::sin(phi)});
+        double d = 1e300;
+        for (const Json& a : arcs) {
+            const Eigen::Vector2d centre(a[0].get<double>(), a[1].get<double>());
+            const double radius = a[2], from = a[3].get<double>() * std::numbers::pi / 180,
+                         to = a[4].get<double>() * std::numbers::pi / 180;
+            const Eigen::Vector2d w = q - centre;
+            const double along =
+                std::remainder(std::atan2(w.y(), w.x()) - from, 2 * std::numbers::pi);
+            const double span = std::remainder(to - from - 1e-12, 2 * std::numbers::pi);
+            const double a0 = along < 0 ? along + 2 * std::numbers::pi : along;
+            const double s0 = span <= 0 ? span + 2 * std::numbers::pi : span;
+            if (a0 <= s0) d = std::min(d, std::abs(w.norm() - radius));
+        }
+        worst = std::max(worst, std::abs(d - 5.0));
+    }
+    EXPECT_LE(worst, 1e-3 + 1e-9);
+}
+
 }  // namespace
 }  // namespace cam

@@ -616,7 +616,8 @@ std::string grooveProblem(const std::string& from, const std::string& to) {
 
 TEST(ProjectJsonGroove, EveryRuleIsLocatedAtItsKey) {
     EXPECT_EQ(grooveProblem(R"("closure": "groove")", R"("closure": "grooved")"),
-              "follower.closure: must be \"spring\" or \"groove\" (got \"grooved\")");
+              "follower.closure: must be \"spring\", \"groove\" or \"conjugate\" (got "
+              "\"grooved\")");
     EXPECT_EQ(grooveProblem(R"("groove_clearance_mm": 0.05,)", ""),
               "follower.groove_clearance_mm: missing");
     EXPECT_EQ(grooveProblem(R"("groove_clearance_mm": 0.05)", R"("groove_clearance_mm": -0.01)"),
@@ -634,6 +635,32 @@ TEST(ProjectJsonGroove, EveryRuleIsLocatedAtItsKey) {
     EXPECT_EQ(grooveProblem(R"("closure": "groove", "groove_clearance_mm": 0.05,)",
                             R"("closure": "spring",)"),
               "(no problem)");
+}
+
+TEST(ProjectJsonConjugate, ReadsItsKeysWritesThemBackAndLocatesEveryRule) {
+    const std::string conjugate = withReplaced(
+        kGrooved, R"("closure": "groove", "groove_clearance_mm": 0.05,)",
+        R"("closure": "conjugate", "conjugate_distance_mm": 80, "conjugate_radius_mm": 6.5,)");
+    const auto p = parseProject(conjugate);
+    ASSERT_TRUE(p.ok()) << p.errors().front().text();
+    const FollowerSpec& f = *p.value().follower;
+    EXPECT_TRUE(f.conjugate());
+    EXPECT_EQ(f.conjugateDistance, 80.0);
+    EXPECT_EQ(f.conjugateRadius, 6.5);
+    const std::string saved = serializeProject(p.value());
+    EXPECT_EQ(Json::parse(saved)["follower"]["conjugate_radius_mm"], 6.5);
+    EXPECT_EQ(parseProject(saved).value(), p.value());
+    const auto problem = [&](const std::string& from, const std::string& to) {
+        const auto q = parseProject(withReplaced(conjugate, from, to));
+        return q.ok() ? std::string("(no problem)") : q.errors().front().text();
+    };
+    EXPECT_EQ(problem(R"("conjugate_radius_mm": 6.5,)", ""),
+              "follower.conjugate_radius_mm: missing");
+    EXPECT_EQ(problem(R"("conjugate_distance_mm": 80)", R"("conjugate_distance_mm": -80)"),
+              "follower.conjugate_distance_mm: must be > 0 (got -80)");
+    EXPECT_EQ(problem(R"("type": "roller", "radius": 8,)", R"("type": "knife",)"),
+              "follower.closure: a conjugate yoke needs a translating roller follower: its second "
+              "roller runs on the same line");
 }
 
 }  // namespace

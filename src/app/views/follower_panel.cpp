@@ -7,6 +7,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QStandardItemModel>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -86,7 +87,16 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     m_limit->setSpecialValueText(tr("default"));
     m_closure = new QComboBox(this);
     m_closure->setObjectName("followerClosureComboBox");
-    m_closure->addItems({tr("Spring"), tr("Groove")});
+    m_closure->addItems({tr("Spring"), tr("Groove"), tr("Conjugate plates")});
+    // A conjugate pair is read, checked and exported (camwright-cli); the window shows the
+    // choice of a project that makes it, but does not draw or edit its second plate yet.
+    if (auto* items = qobject_cast<QStandardItemModel*>(m_closure->model())) {
+        items->item(2)->setEnabled(false);
+        items->item(2)->setToolTip(
+            tr("A second plate driving a second roller: set in the project file "
+               "(conjugate_distance_mm, conjugate_radius_mm); camwright-cli computes, checks "
+               "and exports it"));
+    }
     m_closure->setToolTip(
         tr("What keeps the roller on the cam: a spring, or a groove milled into the disc (the "
            "contour is its inner flank, the outer flank lies twice the roller radius plus the "

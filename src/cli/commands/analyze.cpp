@@ -64,6 +64,10 @@ int runAnalyze(const Arguments& args, std::ostream& out, std::ostream& /*err*/) 
                 {"jerk_unbounded_at", std::move(unbounded)},
                 {"follower", followerAnalysisJson(loaded)}};
     if (loaded.project.dynamics) result["forces"] = forcesAnalysisJson(loaded);
+    // A conjugate pair: its second plate and the play it leaves the second roller.
+    if (const auto plate = secondPlate(loaded, args.positional.at(0))) {
+        result["follower"]["conjugate"] = conjugateJson(loaded, *plate);
+    }
     // The follower's jerk jumps with the contour's acceleration at the same joints.
     for (const char* q : {"j", "jerk_arm"}) {
         if (result["follower"].contains(q)) result["follower"][q]["between_joints_only"] = between;

@@ -101,6 +101,7 @@ int runExport(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
             options.toolRadiusMm = parseFiniteNumber("--tool-radius", *r, "a radius in mm");
         }
         options.groove = grooveOf(loaded.project);
+        if (const auto plate = secondPlate(loaded, input)) options.secondPlate = plate->path;
         text = dxfDocument(loaded.contour, options);
     } else if (kind.id == ExportFormatId::Gcode) {
         GcodeOptions options;

@@ -43,6 +43,15 @@ int runState(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
             outerFlankJson(follower, onOuterFlank(loaded.outerFlank->at(reduced, loaded.omega),
                                                   spec.radius, spec.grooveClearance));
     }
+    // A conjugate pair: the second roller on the second plate (exact, not the fitted arcs).
+    if (const auto yoke = ConjugateYoke::of(loaded.project)) {
+        const ConjugatePoint p = conjugatePoint(follower, *yoke, reduced);
+        state["follower"]["second_roller"] = {
+            {"center", {p.centre.x(), p.centre.y()}},
+            {"contact", {p.plate.x(), p.plate.y()}},
+            {"pressure_angle_deg", radToDeg(p.pressureAngle)},
+            {"rho_plate", std::isfinite(p.rhoPlate) ? Json(p.rhoPlate) : Json(nullptr)}};
+    }
     // With dynamics, the forces there (math.md §9).
     if (loaded.project.dynamics) {
         const ForceModel model = ForceModel::of(*loaded.project.dynamics, follower.spec());

@@ -26,6 +26,9 @@ ConjugatePoint conjugatePoint(const FollowerModel& first, const ConjugateYoke& y
     const double curvature = cross(d1, d2) / (speed * speed * speed);
     out.plate = out.centre - yoke.rollerRadiusMm * outward;
     out.spread = 1.0 - yoke.rollerRadiusMm * curvature;
+    out.rhoPlate = curvature != 0.0 ? 1.0 / curvature - yoke.rollerRadiusMm
+                                    : std::numeric_limits<double>::infinity();
+    out.pressureAngle = std::atan2(cross(-u, outward), (-u).dot(outward));
     out.plateTangent = out.spread * d1;
     return out;
 }
@@ -77,6 +80,20 @@ Result<ConjugatePlate> conjugatePlate(const FollowerModel& first, const Conjugat
     ConjugatePlate plate;
     plate.fit = std::move(fit).value();
     plate.contour = contourOfArcs(plate.fit.arcs);
+    for (const FittedArc& arc : plate.fit.arcs) {
+        const Eigen::Vector3d from(arc.from.x(), arc.from.y(), 0.0),
+            to(arc.to.x(), arc.to.y(), 0.0);
+        if (arc.straight) {
+            plate.path.segments.push_back(PathSegment::line(from, to));
+            continue;
+        }
+        const Eigen::Vector2d r = arc.from - arc.center;
+        PathSegment piece =
+            PathSegment::arc(arc.center, arc.radius, std::atan2(r.y(), r.x()), arc.sweep, 0.0);
+        piece.start = from;  // exactly where the neighbours meet
+        piece.end = to;
+        plate.path.segments.push_back(piece);
+    }
     plate.maxPlay = -std::numeric_limits<double>::infinity();
     plate.minPlay = std::numeric_limits<double>::infinity();
     // The play: the roller's centre, with the first roller on the first plate, against the arcs.

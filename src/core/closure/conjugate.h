@@ -10,12 +10,14 @@
 /// G1 arcs within the tolerance (design/arc_fit.h, the synthesis machinery).
 
 #include <atomic>
+#include <optional>
 #include <vector>
 
 #include "common/diagnostic.h"
 #include "design/arc_fit.h"
 #include "follower/follower.h"
 #include "project/project.h"
+#include "toolpath/tool_path.h"
 
 namespace cam {
 
@@ -23,7 +25,20 @@ namespace cam {
 struct ConjugateYoke {
     double distanceMm = 0.0;      ///< from the first roller's centre, back along the line
     double rollerRadiusMm = 0.0;  ///< the second roller's radius
+
+    /// @brief The project's second roller (`closure: conjugate`); none for another closure.
+    [[nodiscard]] static std::optional<ConjugateYoke> of(const Project& project) {
+        if (!project.follower || !project.follower->conjugate()) return std::nullopt;
+        return ConjugateYoke{project.follower->conjugateDistance,
+                             project.follower->conjugateRadius};
+    }
 };
+
+/// @brief The tolerance a project's second plate is fitted within: its motion design's, else
+/// 0.001 mm (a drawing's default, export/dxf.h).
+[[nodiscard]] inline double conjugateTolerance(const Project& project) {
+    return project.design ? project.design->tolerance : 1e-3;
+}
 
 /// @brief The second plate and how well it holds the second roller.
 struct ConjugatePlate {
@@ -31,6 +46,8 @@ struct ConjugatePlate {
     /// The same arcs as a contour table (design/synthesis.h contourOfArcs): the second plate,
     /// for every check, drawing and export a contour has.
     std::vector<SegmentSpec> contour;
+    /// The same arcs as a path of lines and arcs (for drawings: export/dxf.h PLATE_2).
+    ToolPath path;
     /// The play between the second roller and the fitted plate over the turn, with the first
     /// roller on the first plate: distance from the roller's centre to the arcs less its radius
     /// (mm): the largest gap and the deepest interference (negative), and where (rad).
@@ -46,6 +63,13 @@ struct ConjugatePoint {
     Eigen::Vector2d plateTangent{1.0, 0.0};
     /// 1 − ρ₂·κ of the centre's path: where it is not positive the plate folds (undercut).
     double spread = 1.0;
+    /// The plate's radius of curvature at the contact (mm, positive where it bends round the
+    /// cam centre, +∞ where straight): the centre path's 1/κ less ρ₂.
+    double rhoPlate = 0.0;
+    /// The pressure angle at the second roller (rad): from the line's direction towards the
+    /// cam (−u), the second roller's direction of travel away from it, to the contact normal
+    /// (from the plate to the roller's centre), counter-clockwise positive.
+    double pressureAngle = 0.0;
 };
 [[nodiscard]] ConjugatePoint conjugatePoint(const FollowerModel& first, const ConjugateYoke& yoke,
                                             double phi);

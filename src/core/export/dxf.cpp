@@ -47,6 +47,7 @@ enum Handle : unsigned {
     kPaperSpaceEnd = 0x30,
     kLayerFlankOuter = 0x31,
     kLayerPitch = 0x32,
+    kLayerPlate2 = 0x33,
     kFirstEntityHandle = 0x100,
 };
 
@@ -428,13 +429,14 @@ Result<std::string> dxfDocument(const Contour& contour, const DxfOptions& option
     }
     const ContourOffset& p = profile.value();
     const bool fullCircle = contour.size() == 1 && contour.segment(0).type == SegmentType::Arc;
-    const char* contourLayer = groove ? "FLANK_INNER" : "CONTOUR";
+    const char* contourLayer = groove ? "FLANK_INNER" : options.secondPlate ? "PLATE_1" : "CONTOUR";
 
     std::vector<Layer> layers{{"0", kLayer0, 7}, {contourLayer, kLayerContour, 7}};
     if (groove) {
         layers.push_back({"FLANK_OUTER", kLayerFlankOuter, 5});
         layers.push_back({"PITCH", kLayerPitch, 8});
     }
+    if (options.secondPlate) layers.push_back({"PLATE_2", kLayerPlate2, 5});
     if (toolPath) layers.push_back({"TOOLPATH", kLayerToolpath, 1});
     if (options.centres) layers.push_back({"CENTRES", kLayerCentres, 3});
 
@@ -449,6 +451,9 @@ Result<std::string> dxfDocument(const Contour& contour, const DxfOptions& option
     }
     if (groove) {
         for (const PathSegment& s : groove->outer.segments) extendBounds(s, lo, hi);
+    }
+    if (options.secondPlate) {
+        for (const PathSegment& s : options.secondPlate->segments) extendBounds(s, lo, hi);
     }
     if (options.splineEntities) {
         // Written as SPLINE entities: the curves' own extremes, not their arcs'.
@@ -490,6 +495,11 @@ Result<std::string> dxfDocument(const Contour& contour, const DxfOptions& option
             entities.piece(s, "FLANK_OUTER", fullCircle);
         }
         for (const PathSegment& s : groove->pitch.segments) entities.piece(s, "PITCH", fullCircle);
+    }
+    if (options.secondPlate) {
+        for (const PathSegment& s : options.secondPlate->segments) {
+            entities.piece(s, "PLATE_2", false);
+        }
     }
     if (toolPath) {
         for (const PathSegment& s : toolPath->segments) {

@@ -9,6 +9,7 @@
 #include "closure/groove.h"
 #include "common/diagnostic.h"
 #include "contour/contour.h"
+#include "toolpath/tool_path.h"
 
 namespace cam {
 
@@ -31,6 +32,9 @@ struct DxfOptions {
     /// the outer flank on FLANK_OUTER and the roller's pitch curve on PITCH, LINE and ARC
     /// entities (arcs stay arcs; splines' offsets as tangent arcs within the tolerance).
     std::optional<GrooveSize> groove;
+    /// A conjugate pair (closure/conjugate.h): the contour on layer PLATE_1 instead of
+    /// CONTOUR, this second plate (its fitted lines and arcs) on PLATE_2.
+    std::optional<ToolPath> secondPlate;
 };
 
 /// @brief The DXF text (CRLF-free, "\n" line ends, C locale, numbers exact and shortest). Every

@@ -283,7 +283,7 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
     rd.onlyKeys(*f, "follower",
                 {"type", "motion", "offset", "radius", "pivot", "arm_length", "arm",
                  "max_pressure_angle_deg", "closure", "groove_clearance_mm", "inner_land_radius_mm",
-                 "outer_land_radius_mm"});
+                 "outer_land_radius_mm", "conjugate_distance_mm", "conjugate_radius_mm"});
     FollowerSpec spec;
     if (const auto type = rd.string(*f, "follower", "type", false)) {
         if (const auto known = followerTypeFromName(*type)) {
@@ -327,8 +327,10 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
             spec.closure = Closure::Spring;
         } else if (*closure == "groove") {
             spec.closure = Closure::Groove;
+        } else if (*closure == "conjugate") {
+            spec.closure = Closure::Conjugate;
         } else {
-            rd.notOneOf("follower.closure", {"spring", "groove"}, *closure);
+            rd.notOneOf("follower.closure", {"spring", "groove", "conjugate"}, *closure);
         }
     }
     // The groove's lengths are in millimetres whatever the project's unit: their keys say so.
@@ -341,6 +343,13 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
     }
     if (const auto v = rd.number(*f, "follower", "outer_land_radius_mm", false)) {
         spec.outerLandRadius = *v;
+    }
+    const bool conjugate = spec.closure == Closure::Conjugate;
+    if (const auto v = rd.number(*f, "follower", "conjugate_distance_mm", conjugate)) {
+        spec.conjugateDistance = *v;
+    }
+    if (const auto v = rd.number(*f, "follower", "conjugate_radius_mm", conjugate)) {
+        spec.conjugateRadius = *v;
     }
     p.follower = spec;
 }

@@ -112,6 +112,11 @@ std::string serializeProject(const Project& p) {
             j["closure"] = "groove";
             j["groove_clearance_mm"] = f.grooveClearance;
         }
+        if (f.closure == Closure::Conjugate) {
+            j["closure"] = "conjugate";
+            j["conjugate_distance_mm"] = f.conjugateDistance;
+            j["conjugate_radius_mm"] = f.conjugateRadius;
+        }
         if (f.innerLandRadius) j["inner_land_radius_mm"] = *f.innerLandRadius;
         if (f.outerLandRadius) j["outer_land_radius_mm"] = *f.outerLandRadius;
         root["follower"] = std::move(j);
@@ -215,6 +220,8 @@ Diagnostics nonFiniteValues(const Project& p) {
         check(p.follower->offset, FieldPlace{Field::FollowerOffset});
         check(p.follower->radius, FieldPlace{Field::FollowerRadius});
         check(p.follower->grooveClearance, FieldPlace{Field::FollowerGrooveClearance});
+        check(p.follower->conjugateDistance, FieldPlace{Field::FollowerConjugateDistance});
+        check(p.follower->conjugateRadius, FieldPlace{Field::FollowerConjugateRadius});
         if (p.follower->innerLandRadius) {
             check(*p.follower->innerLandRadius, FieldPlace{Field::FollowerInnerLandRadius});
         }

@@ -113,9 +113,11 @@ enum class FollowerMotion { Translating, Oscillating };
 /// @brief Which side of the line from the pivot to the cam centre an arm's roller is on.
 enum class ArmSide { Ccw, Cw };
 /// @brief What keeps the follower on the cam (project-format.md `follower.closure`): a spring
-/// (the contour is the cam's profile), or a groove milled into the disc (the contour is its
-/// inner flank; a roller runs in it, closure/groove.h).
-enum class Closure { Spring, Groove };
+/// (the contour is the cam's profile), a groove milled into the disc (the contour is its
+/// inner flank; a roller runs in it, closure/groove.h), or a second plate on the same shaft
+/// driving a second roller on the follower (the contour is the first plate,
+/// closure/conjugate.h).
+enum class Closure { Spring, Groove, Conjugate };
 
 /// @brief The usual limits of the pressure angle when the project sets none (math.md §7).
 inline constexpr double kDefaultMaxPressureAngleTranslatingDeg = 30.0;
@@ -135,8 +137,13 @@ struct FollowerSpec {
     /// Groove: the smallest radius the inner flank may come to (the bore's land) and the
     /// largest the outer flank may reach (the rim's), mm; unchecked when not given.
     std::optional<double> innerLandRadius, outerLandRadius;
+    /// Conjugate (a translating roller): the second roller's centre this far behind the first
+    /// on the same line, beyond the cam centre, and its radius, mm.
+    double conjugateDistance = 0.0;
+    double conjugateRadius = 0.0;
 
     [[nodiscard]] bool grooved() const { return closure == Closure::Groove; }
+    [[nodiscard]] bool conjugate() const { return closure == Closure::Conjugate; }
     [[nodiscard]] double maxPressureAngleOrDefault() const {
         return maxPressureAngleDeg.value_or(motion == FollowerMotion::Translating
                                                 ? kDefaultMaxPressureAngleTranslatingDeg

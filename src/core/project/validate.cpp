@@ -340,6 +340,13 @@ private:
             checkRange(FieldPlace{Field::FollowerGrooveClearance}, f.grooveClearance, 0.0,
                        kMaxLengthMm, " mm");
         }
+        if (f.conjugate()) {
+            if (f.type != FollowerType::Roller || f.motion != FollowerMotion::Translating) {
+                error(FieldPlace{Field::FollowerClosure}, Code::ConjugateNeedsTranslatingRoller);
+            }
+            checkPositiveLength(FieldPlace{Field::FollowerConjugateDistance}, f.conjugateDistance);
+            checkPositiveLength(FieldPlace{Field::FollowerConjugateRadius}, f.conjugateRadius);
+        }
         bool landsOk = true;
         if (f.innerLandRadius) {
             landsOk &=
