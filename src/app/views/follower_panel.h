@@ -15,6 +15,7 @@
 #include "engine/compute_result.h"
 
 class QComboBox;
+class QFormLayout;
 class QLabel;
 class QCPItemStraightLine;
 class QCustomPlot;
@@ -81,7 +82,7 @@ private:
     /// The settings; the rows a follower does not use are hidden (an arm's on a line, the
     /// line's offset on an arm, the lands without a groove) so that the checks and plots keep
     /// their room.
-    class QFormLayout* m_form = nullptr;
+    QFormLayout* m_form = nullptr;
     QComboBox* m_closure;
     NumberSpinBox* m_clearance;
     NumberSpinBox* m_innerLand;
