@@ -333,8 +333,8 @@ PathPlace nearestPlace(const std::vector<PathSegment>& pieces, const Vec2& targe
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         const PathSegment& s = pieces[i];
         if (s.kind == PathSegment::Kind::Line) {
-            // Lines start the loop at their start: the nearest of their ends will do, as the
-            // start is a point of the path that lies on the common normal only at its ends.
+            // A loop starts on a line only at its start (startingAt splits arcs alone): a
+            // target across the groove from a line's start is that start.
             const double d = (xy(s.start) - target).norm();
             if (d < nearest) best = {i, 0.0}, nearest = d;
             continue;
