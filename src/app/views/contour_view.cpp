@@ -309,24 +309,17 @@ void ContourView::setCursorAngle(double phi) {
 void ContourView::turnDrawing(double angle) {
     m_turnedBy = angle;
     const double c = std::cos(angle), s = std::sin(angle);
-    for (std::size_t k = 0; k < m_standing.size(); ++k) {
-        QVector<QCPCurveData> points = m_standing[k];
+    // The standing points turned into `curve` (the colour curves, a groove's two curves).
+    const auto turnInto = [c, s](QVector<QCPCurveData> points, QCPCurve* curve) {
         for (QCPCurveData& p : points) {
             const double x = p.key, y = p.value;
             p.key = c * x - s * y;
             p.value = s * x + c * y;
         }
-        m_colourCurves[k]->data()->set(points, true);
-    }
-    for (std::size_t g = 0; g < 2; ++g) {
-        QVector<QCPCurveData> points = m_standingGroove[g];
-        for (QCPCurveData& p : points) {
-            const double x = p.key, y = p.value;
-            p.key = c * x - s * y;
-            p.value = s * x + c * y;
-        }
-        m_grooveCurves[g]->data()->set(points, true);
-    }
+        curve->data()->set(points, true);
+    };
+    for (std::size_t k = 0; k < m_standing.size(); ++k) turnInto(m_standing[k], m_colourCurves[k]);
+    for (std::size_t g = 0; g < 2; ++g) turnInto(m_standingGroove[g], m_grooveCurves[g]);
     const auto turned = [c, s](const QVector<double>& x, const QVector<double>& y,
                                QCPGraph* graph) {
         QVector<double> tx(x.size()), ty(y.size());

@@ -17,6 +17,7 @@ ConjugatePoint conjugatePoint(const FollowerModel& first, const ConjugateYoke& y
     const double a = st.sPhi[0] - yoke.distanceMm, a1 = st.sPhi[1], a2 = st.sPhi[2];
     ConjugatePoint out;
     out.centre = a * u + e * n;
+    out.behind = -a;
     const Eigen::Vector2d d1 = (a1 - e) * u + a * n;
     const Eigen::Vector2d d2 = (a2 - a) * u + (2.0 * a1 - e) * n;
     const double speed = d1.norm();
@@ -56,14 +57,13 @@ Result<ConjugatePlate> conjugatePlate(const FollowerModel& first, const Conjugat
     // that does not fold, at every sample.
     for (int k = 0; k < samples; ++k) {
         const double phi = kTwoPi * k / samples;
-        const FollowerState st = first.at(phi, 1.0);
-        const double behind = yoke.distanceMm - st.sPhi[0];
-        if (!(behind > yoke.rollerRadiusMm)) {
+        const ConjugatePoint p = conjugatePoint(first, yoke, phi);
+        if (!(p.behind > yoke.rollerRadiusMm)) {
             return Diagnostics{Diagnostic::make(FieldPlace{Field::FollowerConjugateDistance},
                                                 DiagnosticCode::ConjugateRollerNotBeyondCentre,
-                                                {radToDeg(phi), behind})};
+                                                {radToDeg(phi), p.behind})};
         }
-        if (!(conjugatePoint(first, yoke, phi).spread > 0.0)) {
+        if (!(p.spread > 0.0)) {
             return Diagnostics{Diagnostic::make(FieldPlace{Field::FollowerConjugateRadius},
                                                 DiagnosticCode::ConjugatePlateFolds,
                                                 {yoke.rollerRadiusMm, radToDeg(phi)})};

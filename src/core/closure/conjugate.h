@@ -59,6 +59,7 @@ struct ConjugatePlate {
 /// plate's derivative by φ: exact, from `first` (a translating roller on the first plate).
 struct ConjugatePoint {
     Eigen::Vector2d centre{0.0, 0.0};
+    double behind = 0.0;  ///< D − s: how far the second roller's centre is beyond the first's foot
     Eigen::Vector2d plate{0.0, 0.0};
     Eigen::Vector2d plateTangent{1.0, 0.0};
     /// 1 − ρ₂·κ of the centre's path: where it is not positive the plate folds (undercut).

@@ -45,6 +45,15 @@ Result<GrooveFlanks> grooveFlanks(const Contour& contour, double rollerRadius, d
                         std::move(outer).value().path};
 }
 
+Result<std::optional<GrooveFlanks>> grooveFlanksIf(const Contour& contour,
+                                                   const std::optional<GrooveSize>& size,
+                                                   double splineToleranceMm) {
+    if (!size) return std::optional<GrooveFlanks>{};
+    auto flanks = grooveFlanks(contour, size->rollerRadiusMm, size->clearanceMm, splineToleranceMm);
+    if (!flanks.ok()) return flanks.errors();
+    return std::optional<GrooveFlanks>{std::move(flanks).value()};
+}
+
 namespace {
 
 /// Whether polar angle `a` about an arc's centre lies within the arc (its start plus a sweep of

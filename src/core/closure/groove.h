@@ -43,6 +43,11 @@ struct GrooveFlanks {
     ToolPath outer;
 };
 
+/// @brief grooveFlanks for `size` when there is one (a drawing of a grooved cam); none, and no
+/// error, without.
+[[nodiscard]] Result<std::optional<GrooveFlanks>> grooveFlanksIf(
+    const Contour& contour, const std::optional<GrooveSize>& size, double splineToleranceMm);
+
 /// @brief The point of a closed path nearest to the cam centre or farthest from it: its
 /// distance (mm), the point, and its polar angle in the cam frame (rad, in [0, 2π)).
 struct RadialExtreme {

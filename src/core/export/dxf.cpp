@@ -420,13 +420,9 @@ Result<std::string> dxfDocument(const Contour& contour, const DxfOptions& option
         if (!offset.ok()) return offset.errors();
         toolPath = std::move(offset.value().path);
     }
-    std::optional<GrooveFlanks> groove;
-    if (options.groove) {
-        auto flanks = grooveFlanks(contour, options.groove->rollerRadiusMm,
-                                   options.groove->clearanceMm, options.toleranceMm);
-        if (!flanks.ok()) return flanks.errors();
-        groove = std::move(flanks).value();
-    }
+    auto grooved = grooveFlanksIf(contour, options.groove, options.toleranceMm);
+    if (!grooved.ok()) return grooved.errors();
+    const std::optional<GrooveFlanks>& groove = grooved.value();
     const ContourOffset& p = profile.value();
     const bool fullCircle = contour.size() == 1 && contour.segment(0).type == SegmentType::Arc;
     const char* contourLayer = groove ? "FLANK_INNER" : options.secondPlate ? "PLATE_1" : "CONTOUR";

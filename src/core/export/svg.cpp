@@ -99,13 +99,9 @@ Result<std::string> svgDocument(const Contour& contour, const SvgOptions& option
     auto profile = offsetContour(contour, 0.0, options.toleranceMm);
     if (!profile.ok()) return profile.errors();
     const std::vector<PathSegment>& pieces = profile.value().path.segments;
-    std::optional<GrooveFlanks> groove;
-    if (options.groove) {
-        auto flanks = grooveFlanks(contour, options.groove->rollerRadiusMm,
-                                   options.groove->clearanceMm, options.toleranceMm);
-        if (!flanks.ok()) return flanks.errors();
-        groove = std::move(flanks).value();
-    }
+    auto grooved = grooveFlanksIf(contour, options.groove, options.toleranceMm);
+    if (!grooved.ok()) return grooved.errors();
+    const std::optional<GrooveFlanks>& groove = grooved.value();
 
     // The drawing's box: the profile, a groove's outer flank (arcs through their extreme
     // points) and the rotation centre.
