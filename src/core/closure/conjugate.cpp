@@ -34,9 +34,7 @@ ConjugatePoint conjugatePoint(const FollowerModel& first, const ConjugateYoke& y
     return out;
 }
 
-Result<ConjugatePlate> conjugatePlate(const FollowerModel& first, const ConjugateYoke& yoke,
-                                      double toleranceMm, int samples,
-                                      const std::atomic<bool>* cancel) {
+Diagnostics conjugateProblems(const FollowerModel& first, const ConjugateYoke& yoke) {
     Diagnostics errors;
     const FollowerSpec& spec = first.spec();
     if (spec.type != FollowerType::Roller || spec.motion != FollowerMotion::Translating) {
@@ -55,8 +53,8 @@ Result<ConjugatePlate> conjugatePlate(const FollowerModel& first, const Conjugat
     if (!errors.empty()) return errors;
     // The second roller beyond the centre (s − D < 0, with room for its radius) and a plate
     // that does not fold, at every sample.
-    for (int k = 0; k < samples; ++k) {
-        const double phi = kTwoPi * k / samples;
+    for (int k = 0; k < kConjugateCheckSamples; ++k) {
+        const double phi = kTwoPi * k / kConjugateCheckSamples;
         const ConjugatePoint p = conjugatePoint(first, yoke, phi);
         if (!(p.behind > yoke.rollerRadiusMm)) {
             return Diagnostics{Diagnostic::make(FieldPlace{Field::FollowerConjugateDistance},
@@ -69,6 +67,13 @@ Result<ConjugatePlate> conjugatePlate(const FollowerModel& first, const Conjugat
                                                 {yoke.rollerRadiusMm, radToDeg(phi)})};
         }
     }
+    return errors;
+}
+
+Result<ConjugatePlate> conjugatePlate(const FollowerModel& first, const ConjugateYoke& yoke,
+                                      double toleranceMm, int samples,
+                                      const std::atomic<bool>* cancel) {
+    if (Diagnostics errors = conjugateProblems(first, yoke); !errors.empty()) return errors;
     auto fit = fitArcs(
         [&](double phi) {
             const ConjugatePoint p = conjugatePoint(first, yoke, phi);

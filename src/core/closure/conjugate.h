@@ -75,12 +75,21 @@ struct ConjugatePoint {
 [[nodiscard]] ConjugatePoint conjugatePoint(const FollowerModel& first, const ConjugateYoke& yoke,
                                             double phi);
 
-/// @brief The second plate for `yoke` behind the translating roller `first`, fitted within
-/// `toleranceMm`, and its play over the turn measured at `samples` angles. Errors: a first
-/// follower that is not a translating roller, a second roller or distance that is not a
+/// @brief How many equal steps of the turn conjugateProblems checks the second roller at.
+inline constexpr int kConjugateCheckSamples = 3600;
+
+/// @brief Why the second plate for `yoke` behind `first` cannot be made, each at its key: a
+/// first follower that is not a translating roller, a second roller or distance that is not a
 /// positive length, a distance that does not put the second roller beyond the cam centre at
-/// every angle, a plate that folds (its roller too large for the path's bend), a fit that
-/// cannot meet the tolerance. None returned once `cancel` reads true.
+/// every angle, a plate that folds (its roller too large for the path's bend) — checked at
+/// kConjugateCheckSamples angles. Empty: conjugatePlate can fit it. Part of the one verdict
+/// (evaluation/evaluation.h), so cheap: about 0.1 µs … 4 µs an angle (arcs … splines).
+[[nodiscard]] Diagnostics conjugateProblems(const FollowerModel& first, const ConjugateYoke& yoke);
+
+/// @brief The second plate for `yoke` behind the translating roller `first`, fitted within
+/// `toleranceMm`, and its play over the turn measured at `samples` angles. Errors:
+/// conjugateProblems', a fit that cannot meet the tolerance. None returned once `cancel` reads
+/// true.
 [[nodiscard]] Result<ConjugatePlate> conjugatePlate(const FollowerModel& first,
                                                     const ConjugateYoke& yoke, double toleranceMm,
                                                     int samples = 7200,

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "closure/conjugate.h"
 #include "common/angles.h"
 #include "design/motion_design.h"
 #include "project/validate.h"
@@ -84,6 +85,14 @@ ProjectEvaluation evaluateProject(const Project& project) {
                 // Pressed on the outer flank, a swinging arm's roller may not reach the cam.
                 e.follower.reset();
                 e.followerProblems = wide.errors();
+            }
+        }
+        // A conjugate pair whose second roller cannot stand beyond the centre, or whose second
+        // plate would fold, cannot be made (the plate itself is fitted by its consumers).
+        if (const auto yoke = ConjugateYoke::of(project); e.follower && yoke) {
+            if (Diagnostics problems = conjugateProblems(*e.follower, *yoke); !problems.empty()) {
+                e.follower.reset();
+                e.followerProblems = std::move(problems);
             }
         }
     }

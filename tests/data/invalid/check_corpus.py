@@ -197,6 +197,34 @@ def r_at(seg, phi_deg):
     return (arc_r if seg["type"] == "arc" else line_r)(seg, phi)[0]
 
 
+def check_conjugate(doc, f, probs):
+    """A conjugate yoke's second roller must stand beyond the cam centre at every angle: D less
+    the first roller's s(phi) (found by brute force over the contour's points: the largest
+    u.p + sqrt(rho^2 - (e - n.p)^2) of the points within rho of the line) exceeds its radius."""
+    try:
+        rho, e = f["radius"], f.get("offset", 0.0)
+        dist, rho2 = f["conjugate_distance_mm"], f["conjugate_radius_mm"]
+        points = []
+        for seg in doc["contour"]:
+            arc = {"type": "arc", "c": seg["center"], "R": seg["radius"],
+                   "branch": seg.get("branch", "outer")}
+            for i in range(721):
+                phi = seg["phi_start"] + (seg["phi_end"] - seg["phi_start"]) * i / 720
+                r = r_at(arc, phi)
+                points.append((r * math.cos(math.radians(phi)), r * math.sin(math.radians(phi))))
+    except (KeyError, TypeError, ValueError):
+        return
+    for k in range(360):
+        phi = math.radians(k)
+        u, n = (math.cos(phi), math.sin(phi)), (-math.sin(phi), math.cos(phi))
+        s = max((u[0] * x + u[1] * y + math.sqrt(rho * rho - (e - n[0] * x - n[1] * y) ** 2)
+                 for x, y in points if abs(e - n[0] * x - n[1] * y) <= rho), default=None)
+        if s is not None and not dist - s > rho2:
+            probs.add("follower.conjugate_distance_mm",
+                      f"the second roller stands {dist - s:.6g} mm beyond the centre at {k} deg")
+            return
+
+
 def check_segment_geometry(k, seg, probs, n=20000):
     at = f"contour[{k}]"
     a, b = seg["a"], seg["b"]
@@ -374,6 +402,8 @@ def validate(doc, probs):
                 if cross < 0 and r >= seg["radius"]:
                     probs.add("follower.radius",
                               f"not smaller than the concave arc contour[{k}] (R {seg['radius']})")
+        if t == "roller" and f.get("closure") == "conjugate":
+            check_conjugate(doc, f, probs)
     s = doc.get("sampling")
     if s is not None:
         n = s.get("samples_per_turn")
