@@ -64,6 +64,13 @@ Json outerFlankJson(const FollowerModel& inner, const FollowerState& f) {
 
 Json conjugateJson(const Loaded& loaded, const ConjugatePlate& plate) {
     const FollowerSpec& spec = loaded.follower.spec();
+    // The plate's tightest arcs, at the cam angle the second roller touches their middle.
+    const auto bend = [](const std::optional<RadialExtreme>& b) {
+        if (!b) return Json(nullptr);
+        return Json{{"value", b->radius},
+                    {"phi_deg", radToDeg(b->phi)},
+                    {"point", {b->point.x(), b->point.y()}}};
+    };
     return Json{{"distance_mm", spec.conjugateDistance},
                 {"roller_radius", spec.conjugateRadius},
                 {"tolerance_mm", conjugateTolerance(loaded.project)},
@@ -71,7 +78,14 @@ Json conjugateJson(const Loaded& loaded, const ConjugatePlate& plate) {
                 {"max_play_mm", plate.maxPlay},
                 {"max_play_at_deg", radToDeg(plate.maxPlayAt)},
                 {"min_play_mm", plate.minPlay},
-                {"min_play_at_deg", radToDeg(plate.minPlayAt)}};
+                {"min_play_at_deg", radToDeg(plate.minPlayAt)},
+                {"pressure_angle",
+                 {{"max",
+                   {{"value_deg", radToDeg(plate.maxPressureAngle)},
+                    {"phi_deg", radToDeg(plate.maxPressureAt)}}}}},
+                {"curvature",
+                 {{"min_convex", bend(plate.bends.minConvex)},
+                  {"min_concave", bend(plate.bends.minConcave)}}}};
 }
 
 namespace {

@@ -252,6 +252,25 @@ TEST(CliConjugate, StateAnalyzeAndTheDxfHoldTheSecondRollerWhereTheClosedFormPut
     EXPECT_EQ(c.at("tolerance_mm").get<double>(), 1e-3);
     EXPECT_LE(c.at("max_play_mm").get<double>(), 1e-3);
     EXPECT_GE(c.at("min_play_mm").get<double>(), -1e-3);
+    // The second plate's largest pressure angle, from the closed-form centre path's tangent
+    // (central differences): the contact normal is that tangent turned clockwise, from −u.
+    double largest = 0.0;
+    for (int k = 0; k < 36000; ++k) {
+        const double phi = 2 * std::numbers::pi * k / 36000, h = 1e-5;
+        const Eigen::Vector2d u(std::cos(phi), std::sin(phi));
+        const Eigen::Vector2d t = (secondCentre({std::cos(phi + h), std::sin(phi + h)}) -
+                                   secondCentre({std::cos(phi - h), std::sin(phi - h)}))
+                                      .normalized();
+        const Eigen::Vector2d normal(t.y(), -t.x()), towards = -u;
+        const double a =
+            std::atan2(towards.x() * normal.y() - towards.y() * normal.x(), towards.dot(normal));
+        if (std::abs(a) > std::abs(largest)) largest = a;
+    }
+    EXPECT_NEAR(c.at("pressure_angle").at("max").at("value_deg").get<double>(),
+                largest * 180 / std::numbers::pi, 1e-4);
+    // A disc's second plate is convex all round.
+    EXPECT_TRUE(c.at("curvature").at("min_concave").is_null());
+    EXPECT_GT(c.at("curvature").at("min_convex").at("value").get<double>(), 0.0);
     // The DXF: the first plate on PLATE_1, the second's arcs on PLATE_2, read by ezdxf; every
     // closed-form centre of the second roller lies 5 mm from them to the tolerance.
     const std::string dxf = dir.file("pair.dxf");

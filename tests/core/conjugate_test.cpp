@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "closure/conjugate.h"
@@ -74,6 +75,58 @@ TEST(Conjugate, TheSecondRollerOfAYokeOnAnEccentricDiscIsHeldWithinTheTolerance)
         const auto& next = p.fit.arcs[(k + 1) % p.fit.arcs.size()];
         EXPECT_NEAR((p.fit.arcs[k].to - next.from).norm(), 0.0, 1e-9) << k;
     }
+}
+
+TEST(Conjugate, TheSecondPlatesChecksMeanWhatTheySayAtTheCamAngle) {
+    // The second roller's pressure angle from the closed-form centre path alone: its tangent by
+    // central differences, the contact normal that tangent turned clockwise (the path runs
+    // counter-clockwise round the cam), measured from −u.
+    const Disc d;
+    const ConjugateYoke yoke{80.0, 5.0};
+    const FollowerModel first = firstRoller(d);
+    const auto centre = [&](double phi) {
+        return Eigen::Vector2d((sOf(d, phi) - yoke.distanceMm) * test::unit(phi) +
+                               d.e * test::normalOf(phi));
+    };
+    const auto pressure = [&](double phi) {
+        const double h = 1e-5;
+        const Eigen::Vector2d t = (centre(phi + h) - centre(phi - h)).normalized();
+        const Eigen::Vector2d normal(t.y(), -t.x()), towards = -test::unit(phi);
+        return std::atan2(towards.x() * normal.y() - towards.y() * normal.x(), towards.dot(normal));
+    };
+    double largest = 0.0, largestAt = 0.0;
+    for (int k = 0; k < 36000; ++k) {
+        const double phi = kTwoPi * k / 36000;
+        const double a = pressure(phi);
+        EXPECT_NEAR(conjugatePoint(first, yoke, phi).pressureAngle, a, 1e-8) << k;
+        if (std::abs(a) > std::abs(largest)) {
+            largest = a;
+            largestAt = phi;
+        }
+    }
+    const auto plate = conjugatePlate(first, yoke, 1e-3);
+    ASSERT_TRUE(plate.ok());
+    const ConjugatePlate& p = plate.value();
+    // Sampled every 0.05° against every 0.01°: the peak is flat, its value agrees closely.
+    EXPECT_NEAR(p.maxPressureAngle, largest, 1e-6);
+    EXPECT_NEAR(p.maxPressureAt, largestAt, degToRad(0.05));
+    // A disc's second plate bends round its centre everywhere: convex arcs only. The tightest
+    // one's `phi` is a cam angle and `point` where the roller touches the plate then: the
+    // closed-form centre at that angle is the roller's radius from it, and it lies on that arc
+    // to the tolerance (its polar angle lies about half a turn from the cam angle).
+    ASSERT_TRUE(p.bends.minConvex);
+    EXPECT_FALSE(p.bends.minConcave);
+    const RadialExtreme& tight = *p.bends.minConvex;
+    double smallest = 1e300;
+    for (const FittedArc& arc : p.fit.arcs) smallest = std::min(smallest, arc.radius);
+    EXPECT_EQ(tight.radius, smallest);
+    EXPECT_NEAR((centre(tight.phi) - tight.point).norm(), yoke.rollerRadiusMm, 1e-9);
+    const auto on = std::find_if(p.fit.arcs.begin(), p.fit.arcs.end(),
+                                 [&](const FittedArc& arc) { return arc.radius == smallest; });
+    EXPECT_LE(std::abs((tight.point - on->center).norm() - smallest), 1e-3);
+    EXPECT_GT(
+        std::abs(std::remainder(std::atan2(tight.point.y(), tight.point.x()) - tight.phi, kTwoPi)),
+        degToRad(90.0));
 }
 
 TEST(Conjugate, ARollerPlacedByContactOnTheSecondPlateStandsTheYokesLengthBehind) {

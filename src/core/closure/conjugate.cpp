@@ -99,12 +99,25 @@ Result<ConjugatePlate> conjugatePlate(const FollowerModel& first, const Conjugat
         piece.end = to;
         plate.path.segments.push_back(piece);
     }
+    for (const FittedArc& arc : plate.fit.arcs) {
+        if (arc.straight) continue;
+        std::optional<RadialExtreme>& tightest =
+            arc.sweep > 0.0 ? plate.bends.minConvex : plate.bends.minConcave;
+        if (tightest && !(arc.radius < tightest->radius)) continue;
+        const double middle = wrapTwoPi((arc.t0 + arc.t1) / 2.0);
+        tightest = RadialExtreme{arc.radius, conjugatePoint(first, yoke, middle).plate, middle};
+    }
     plate.maxPlay = -std::numeric_limits<double>::infinity();
     plate.minPlay = std::numeric_limits<double>::infinity();
     // The play: the roller's centre, with the first roller on the first plate, against the arcs.
     for (int k = 0; k < samples; ++k) {
         const double phi = kTwoPi * k / samples;
-        const Eigen::Vector2d centre = conjugatePoint(first, yoke, phi).centre;
+        const ConjugatePoint point = conjugatePoint(first, yoke, phi);
+        const Eigen::Vector2d& centre = point.centre;
+        if (std::abs(point.pressureAngle) > std::abs(plate.maxPressureAngle)) {
+            plate.maxPressureAngle = point.pressureAngle;
+            plate.maxPressureAt = phi;
+        }
         double distance = std::numeric_limits<double>::infinity();
         for (const FittedArc& arc : plate.fit.arcs) {
             distance = std::min(distance, distanceToArc(arc, centre));

@@ -13,6 +13,7 @@
 #include <optional>
 #include <vector>
 
+#include "closure/groove.h"
 #include "common/diagnostic.h"
 #include "design/arc_fit.h"
 #include "follower/follower.h"
@@ -53,6 +54,14 @@ struct ConjugatePlate {
     /// (mm): the largest gap and the deepest interference (negative), and where (rad).
     double maxPlay = 0.0, maxPlayAt = 0.0;
     double minPlay = 0.0, minPlayAt = 0.0;
+    /// The largest pressure angle at the second roller over the turn (rad, signed as
+    /// ConjugatePoint::pressureAngle; the largest magnitude), and the cam angle (rad).
+    double maxPressureAngle = 0.0, maxPressureAt = 0.0;
+    /// The plate's tightest arcs, convex and concave (closure/groove.h PathBends: the arc's
+    /// radius), exact for what is milled. `phi` is here the cam angle in the middle of the
+    /// stretch the arc stands for and `point` where the second roller touches the plate then,
+    /// not its polar angle (the second plate is touched across the centre from the first).
+    PathBends bends;
 };
 
 /// @brief The second roller's centre and the second plate's point at cam angle φ, with the
