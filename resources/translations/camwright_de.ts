@@ -2403,11 +2403,12 @@
     </message>
     <message>
         <location line="+36" />
+        <location line="+94" />
         <source>outer flank</source>
         <translation>Außenflanke</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="-94" />
         <source>pitch curve</source>
         <translation>Rollenmittelpunktsbahn</translation>
     </message>
@@ -2420,6 +2421,11 @@
         <location line="+5" />
         <source>joints</source>
         <translation>Übergänge</translation>
+    </message>
+    <message>
+        <location line="+80" />
+        <source>second plate</source>
+        <translation>zweite Scheibe</translation>
     </message>
 </context>
 <context>
@@ -3215,7 +3221,7 @@
 <context>
     <name>cam::FollowerPanel</name>
     <message>
-        <location filename="../../src/app/views/follower_panel.cpp" line="+55" />
+        <location filename="../../src/app/views/follower_panel.cpp" line="+54" />
         <source>What touches the cam (math.md §7)</source>
         <translation>Was die Kurvenscheibe berührt (math.md §7)</translation>
     </message>
@@ -3295,17 +3301,7 @@
         <translation>Kurvenpaar (Formschluss)</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>A second plate driving a second roller: set in the project file (conjugate_distance_mm, conjugate_radius_mm); camwright-cli computes, checks and exports it</source>
-        <translation>Eine zweite Scheibe treibt eine zweite Rolle: in der Projektdatei festgelegt (conjugate_distance_mm, conjugate_radius_mm); camwright-cli berechnet, prüft und exportiert sie</translation>
-    </message>
-    <message>
-        <location line="+5" />
-        <source>What keeps the roller on the cam: a spring, or a groove milled into the disc (the contour is its inner flank, the outer flank lies twice the roller radius plus the clearance beyond it)</source>
-        <translation>Was die Rolle an der Scheibe hält: eine Feder oder eine in die Scheibe gefräste Nut (die Kontur ist ihre Innenflanke, die Außenflanke liegt den doppelten Rollenradius plus das Spiel weiter außen)</translation>
-    </message>
-    <message>
-        <location line="+4" />
+        <location line="+18" />
         <source>The roller's play between the groove's flanks</source>
         <translation>Das Spiel der Rolle zwischen den Flanken der Nut</translation>
     </message>
@@ -3420,6 +3416,31 @@
         <translation>Stege der Nut</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>Second roller's distance</source>
+        <translation>Abstand der zweiten Rolle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Second roller's radius</source>
+        <translation>Radius der zweiten Rolle</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>distance </source>
+        <translation>Abstand </translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>radius </source>
+        <translation>Radius </translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Second roller</source>
+        <translation>Zweite Rolle</translation>
+    </message>
+    <message>
         <location line="+4" />
         <source>Turning clockwise</source>
         <translation>Dreht im Uhrzeigersinn</translation>
@@ -3445,7 +3466,7 @@
         <translation>Druckwinkel über eine Umdrehung; gestrichelt: die Grenze; rot: darüber</translation>
     </message>
     <message>
-        <location line="+404" />
+        <location line="+431" />
         <source>Groove: %1 wide (roller radius %2, clearance %3)</source>
         <translation>Nut: %1 breit (Rollenradius %2, Spiel %3)</translation>
     </message>
@@ -3480,7 +3501,35 @@
         <translation>Außenflanke am weitesten von der Mitte: %1 bei %2 (kein äußerer Stegradius angegeben)</translation>
     </message>
     <message>
-        <location line="-434" />
+        <location line="+8" />
+        <source>The second plate cannot be made: %1</source>
+        <translation>Die zweite Scheibe lässt sich nicht herstellen: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+9" />
+        <source>Second plate: %n arc(s) within %1; the second roller's play from %2 at %3 to %4 at %5</source>
+        <translation>
+            <numerusform>Zweite Scheibe: %n Bogen innerhalb %1; Spiel der zweiten Rolle von %2 bei %3 bis %4 bei %5</numerusform>
+            <numerusform>Zweite Scheibe: %n Bögen innerhalb %1; Spiel der zweiten Rolle von %2 bei %3 bis %4 bei %5</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Largest pressure angle at the second roller: %1 at %2 (limit %3)</source>
+        <translation>Größter Druckwinkel an der zweiten Rolle: %1 bei %2 (Grenze %3)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Smallest convex radius of the second plate: %1, touched at %2</source>
+        <translation>Kleinster konvexer Radius der zweiten Scheibe: %1, berührt bei %2</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>Smallest concave radius of the second plate: %1, touched at %2 (second roller radius %3)</source>
+        <translation>Kleinster konkaver Radius der zweiten Scheibe: %1, berührt bei %2 (Radius der zweiten Rolle %3)</translation>
+    </message>
+    <message>
+        <location line="-495" />
         <source>Pressure angle [°]</source>
         <translation>Druckwinkel [°]</translation>
     </message>
@@ -3495,12 +3544,27 @@
         <translation>ρ [mm]</translation>
     </message>
     <message>
-        <location line="-128" />
+        <location line="-136" />
         <source>Offset e of the follower's line of motion from the cam's centre: positive to the left of its direction as seen from the centre, negative to the right (the Turning picture shows it). A positive offset lowers the rise's pressure angle when the cam turns clockwise, a negative one when it turns counter-clockwise; either raises the return's</source>
         <translation>Versatz e der Bewegungslinie des Stößels vom Scheibenmittelpunkt: positiv links seiner Richtung, vom Mittelpunkt aus gesehen, negativ rechts (das Bild Drehrichtung zeigt es). Ein positiver Versatz senkt den Druckwinkel des Hubs, wenn sich die Scheibe im Uhrzeigersinn dreht, ein negativer, wenn sie sich gegen den Uhrzeigersinn dreht; beide erhöhen den des Rückhubs</translation>
     </message>
     <message>
-        <location line="+356" />
+        <location line="+27" />
+        <source>What keeps the roller on the cam: a spring; a groove milled into the disc (the contour is its inner flank, the outer flank lies twice the roller radius plus the clearance beyond it); or conjugate plates (a second plate on the same shaft drives a second roller on the same line, across the cam centre)</source>
+        <translation>Was die Rolle an der Scheibe hält: eine Feder; eine in die Scheibe gefräste Nut (die Kontur ist ihre Innenflanke, die Außenflanke liegt zweimal den Rollenradius plus das Spiel weiter außen); oder ein Kurvenpaar (eine zweite Scheibe auf derselben Welle treibt eine zweite Rolle auf derselben Geraden, jenseits des Drehpunkts)</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>From the first roller's centre back along the line to the second roller's: it must put the second roller beyond the cam centre at every angle</source>
+        <translation>Vom Mittelpunkt der ersten Rolle entlang der Geraden zurück zu dem der zweiten: Die zweite Rolle muss bei jedem Winkel jenseits des Drehpunkts stehen</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>The second roller's radius</source>
+        <translation>Der Radius der zweiten Rolle</translation>
+    </message>
+    <message>
+        <location line="+351" />
         <location line="+29" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>
@@ -3598,7 +3662,7 @@
         <translation>Der Stößel erreicht das Profil bei %1 nicht: er springt von %2 nach %3</translation>
     </message>
     <message>
-        <location line="-163" />
+        <location line="-164" />
         <source>clockwise (click the picture: the other way)</source>
         <translation>im Uhrzeigersinn (Klick auf das Bild: andersherum)</translation>
     </message>
@@ -3608,12 +3672,12 @@
         <translation>gegen den Uhrzeigersinn (Klick auf das Bild: andersherum)</translation>
     </message>
     <message>
-        <location line="+209" />
+        <location line="+210" />
         <source>Face width needed: %1</source>
         <translation>Nötige Tellerbreite: %1</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Every check passes.</source>
         <translation>Alle Prüfungen bestanden.</translation>
     </message>
@@ -4293,7 +4357,7 @@
         <translation>Die Wiederherstellungskopie konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
-        <location line="+156" />
+        <location line="+158" />
         <source>Cursor at %1</source>
         <translation>Cursor bei %1</translation>
     </message>

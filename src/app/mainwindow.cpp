@@ -131,6 +131,8 @@ void MainWindow::wireResults() {
             [&v](const ComputeResultPtr& result, bool checks) {
                 v.plots->setResult(result);
                 if (checks) v.follower->showChecks(result);
+                // A conjugate pair's second plate is fitted with the checks: draw it now.
+                if (checks && result->conjugate) v.contour->setResult(result);
             });
     // Then the views beside the plots: the contour, the Joints tab, the path study, the design.
     const auto beside = [&v](const ComputeResultPtr& result) {

@@ -542,5 +542,101 @@ TEST(FollowerPanel, TurningTheCamTurnsItsGrooveWithIt) {
     EXPECT_NEAR((standing(0) - before[0]).norm(), 0.0, 1e-15);
 }
 
+TEST(FollowerPanel, TheConjugatePairIsOneSettingDrawnCheckedAndUndone) {
+    // The roller lobe cam (a 5 mm roller, r up to 30 mm): one setting makes it a conjugate
+    // pair whose second roller, as large, stands 2·(30 + 5) = 70 mm behind the first.
+    MainWindow window;
+    ASSERT_TRUE(openAndCompute(window, "roller-lobe-cam.cam.json"));
+    window.findChild<QDockWidget*>("followerDock")->show();
+    ContourView* view = window.contourView();
+    EXPECT_EQ(view->secondPlateCurve()->dataCount(), 0);
+    FollowerPanel* panel = window.followerPanel();
+    auto* distance = child<QDoubleSpinBox>(window, "conjugateDistanceSpinBox");
+    EXPECT_FALSE(distance->isVisibleTo(panel));
+    child<QComboBox>(window, "followerClosureComboBox")->setCurrentIndex(2);
+    const FollowerSpec spec = *window.document()->project().follower;
+    EXPECT_EQ(spec.closure, Closure::Conjugate);
+    EXPECT_EQ(spec.conjugateDistance, 70.0);
+    EXPECT_EQ(spec.conjugateRadius, 5.0);
+    EXPECT_TRUE(distance->isVisibleTo(panel));
+    EXPECT_EQ(distance->value(), 70.0);
+    ASSERT_TRUE(waitForResult(window));
+    const ComputeResultPtr result = window.engine()->latestResult();
+    ASSERT_TRUE(result->valid());
+    ASSERT_NE(result->conjugate, nullptr)
+        << (result->conjugateErrors.empty() ? std::string()
+                                            : result->conjugateErrors.front().text());
+
+    // Drawn: every point of the second plate is the second roller's radius from the path its
+    // centre runs on, 70 mm behind the first roller's (sampled every 0.01°).
+    const FollowerModel& first = *result->follower;
+    std::vector<Eigen::Vector2d> centres;
+    for (int k = 0; k < 36000; ++k) {
+        const double phi = kTwoPi * k / 36000;
+        centres.push_back((first.at(phi, 1.0).s - 70.0) *
+                          Eigen::Vector2d(std::cos(phi), std::sin(phi)));
+    }
+    const QCPCurve* plate = view->secondPlateCurve();
+    ASSERT_GT(plate->dataCount(), 360);
+    double worst = 0.0;
+    for (int i = 0; i < plate->dataCount(); i += 7) {
+        const Eigen::Vector2d p(plate->data()->at(i)->key, plate->data()->at(i)->value);
+        double d = 1e300;
+        for (const Eigen::Vector2d& c : centres) d = std::min(d, (p - c).squaredNorm());
+        worst = std::max(worst, std::abs(std::sqrt(d) - 5.0));
+    }
+    // The fit's 0.001 mm, and the centres' spacing (0.007 mm at 40 mm) across a 5 mm roller.
+    EXPECT_LT(worst, 1.1e-3);
+    // Both rollers drawn at the cursor, the second 70 mm behind the first on its line.
+    for (const double deg : {0.0, 90.0, 200.0}) {
+        view->setCursorAngle(degToRad(deg));
+        const auto m = view->followerMarkers();
+        ASSERT_TRUE(m.secondShown);
+        EXPECT_EQ(m.secondRadius, 5.0);
+        const Eigen::Vector2d a(m.center.x(), m.center.y()),
+            b(m.secondCenter.x(), m.secondCenter.y()),
+            contact(m.secondContact.x(), m.secondContact.y());
+        EXPECT_NEAR((a - b).norm(), 70.0, 1e-9) << deg;
+        EXPECT_NEAR((a - b).normalized().dot(
+                        Eigen::Vector2d(std::cos(degToRad(deg)), std::sin(degToRad(deg)))),
+                    1.0, 1e-12);
+        EXPECT_NEAR((contact - b).norm(), 5.0, 1e-9);
+    }
+    // Turning with Play, the second plate turns with the cam.
+    const Eigen::Vector2d before(plate->data()->at(0)->key, plate->data()->at(0)->value);
+    view->setTurning(true);
+    view->setCursorAngle(degToRad(50.0));
+    const Eigen::Vector2d turned(plate->data()->at(0)->key, plate->data()->at(0)->value);
+    EXPECT_NEAR((turned - Eigen::Rotation2Dd(degToRad(-50.0)) * before).norm(), 0.0, 1e-12);
+    view->setTurning(false);
+
+    // Checked: the play within the tolerance, the second roller's pressure angle, the bends.
+    const QStringList lines = panel->checkLines();
+    EXPECT_EQ(lines.filter("Second plate: ").size(), 1) << lines.join("\n").toStdString();
+    EXPECT_EQ(lines.filter("Largest pressure angle at the second roller").size(), 1);
+    EXPECT_EQ(lines.filter("Smallest convex radius of the second plate").size(), 1);
+    EXPECT_EQ(panel->problemCount(), 0) << lines.join("\n").toStdString();
+
+    // Too short a yoke: the project is invalid at the distance, and no second plate is drawn.
+    distance->setValue(30.0);
+    emit distance->editingFinished();
+    ASSERT_TRUE(waitForResult(window));
+    EXPECT_FALSE(window.engine()->latestResult()->valid());
+    EXPECT_EQ(panel->checkLines().filter("beyond the cam centre").size(), 1)
+        << panel->checkLines().join("\n").toStdString();
+    EXPECT_EQ(view->secondPlateCurve()->dataCount(), 0);
+
+    // Undone step by step, back to the spring.
+    QUndoStack* undo = window.document()->undoStack();
+    ASSERT_EQ(undo->count(), 2);
+    undo->undo();
+    EXPECT_EQ(window.document()->project().follower->conjugateDistance, 70.0);
+    undo->undo();
+    EXPECT_EQ(window.document()->project().follower->closure, Closure::Spring);
+    ASSERT_TRUE(waitForResult(window));
+    EXPECT_EQ(view->secondPlateCurve()->dataCount(), 0);
+    EXPECT_FALSE(view->followerMarkers().secondShown);
+}
+
 }  // namespace
 }  // namespace cam

@@ -140,7 +140,30 @@ struct FollowerPart {
     std::vector<double> jointX;
     std::vector<std::size_t> jointLeft;
     std::shared_ptr<const ForceCurves> forces;
+    std::shared_ptr<const ConjugateView> conjugate;
+    Diagnostics conjugateErrors;
 };
+
+/// A conjugate pair's second plate, fitted within the project's tolerance (null for another
+/// closure, or with `errors` set when it cannot be fitted, or when cancelled).
+std::shared_ptr<const ConjugateView> computeConjugate(const Project& project,
+                                                      const FollowerModel& model,
+                                                      Diagnostics& errors,
+                                                      const std::atomic<bool>* cancel) {
+    const std::optional<ConjugateYoke> yoke = ConjugateYoke::of(project);
+    if (!yoke) return nullptr;
+    auto view = std::make_shared<ConjugateView>();
+    view->yoke = *yoke;
+    view->toleranceMm = conjugateTolerance(project);
+    auto plate = conjugatePlate(model, *yoke, view->toleranceMm, 7200, cancel);
+    if (!plate.ok()) {
+        errors = plate.errors();
+        return nullptr;
+    }
+    view->plate = std::move(plate).value();
+    view->outline = outlineOf(view->plate.path);
+    return view;
+}
 
 /// The forces of the project's dynamics: the summary on the project's samples per turn (as
 /// the CLI finds it), the curves on the follower curve's `turn`.
@@ -191,6 +214,7 @@ FollowerPart computeFollower(const Project* project, const FollowerModel* model,
     if (checks) {
         part.checks =
             analyzeFollower(*model, omega, phiBegin, kFollowerCheckSamples, nullptr, phases);
+        part.conjugate = computeConjugate(*project, *model, part.conjugateErrors, cancel);
     }
     constexpr std::size_t n = ComputeResult::kFollowerCurvePoints;
     FollowerTurn turn;
@@ -374,6 +398,8 @@ ComputeResultPtr computeProject(const ComputeRequest& request, const std::atomic
         result->followerJointX = std::move(part.jointX);
         result->followerJointLeft = std::move(part.jointLeft);
         result->forces = std::move(part.forces);
+        result->conjugate = std::move(part.conjugate);
+        result->conjugateErrors = std::move(part.conjugateErrors);
     }
     if (preparer) {
         result->prepared = preparer->prepare(*result, cancel);
@@ -395,6 +421,9 @@ ComputeResultPtr refineResult(const ComputeResult& first, const std::atomic<bool
         result->followerChecks =
             analyzeFollower(*first.follower, first.omega, first.contour->phiBegin(),
                             kFollowerCheckSamples, &cancel, phasesOf(*first.project));
+        if (cancel.load()) return nullptr;
+        result->conjugate =
+            computeConjugate(*first.project, *first.follower, result->conjugateErrors, &cancel);
         result->followerChecksPending = false;
         if (cancel.load()) return nullptr;
     }

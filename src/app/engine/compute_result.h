@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "analysis/analysis.h"
+#include "closure/conjugate.h"
 #include "common/diagnostic.h"
 #include "contour/contour.h"
 #include "engine/plot_levels.h"
@@ -85,6 +86,15 @@ struct GrooveView {
     QVector<QPointF> outer, pitch;
 };
 
+/// @brief A conjugate pair's second plate (closure/conjugate.h), fitted in the worker, and its
+/// outline as the contour view draws it (x, y in mm, closed).
+struct ConjugateView {
+    ConjugateYoke yoke;
+    double toleranceMm = 0.0;  ///< what the plate was fitted within
+    ConjugatePlate plate;
+    QVector<QPointF> outline;
+};
+
 /// @brief One finished computation. Never modified after it leaves the worker.
 struct ComputeResult {
     std::uint64_t generation = 0;
@@ -114,6 +124,11 @@ struct ComputeResult {
     /// A grooved cam's flanks (null for a spring-closed cam, or one whose groove cannot be
     /// made: then `problems` says why).
     std::shared_ptr<const GrooveView> groove;
+    /// A conjugate pair's second plate (null for another closure, while the design checks are
+    /// pending — see followerChecksPending — or when it cannot be fitted: then `conjugateErrors`
+    /// says why, e.g. a tolerance no arcs meet).
+    std::shared_ptr<const ConjugateView> conjugate;
+    Diagnostics conjugateErrors;
     /// The kinematics curves over angle or time at several resolutions, with their ranges.
     PlotCurves curves;
     double computeMs = 0.0;
@@ -124,8 +139,8 @@ struct ComputeResult {
     std::shared_ptr<const FollowerModel> follower;
     Diagnostics followerErrors;
     FollowerAnalysis followerChecks;
-    /// The design checks are not computed yet (a first picture: a swinging arm's take longer
-    /// than the kinematics); refineResult() adds them.
+    /// The design checks (and a conjugate pair's second plate) are not computed yet (a first
+    /// picture: a swinging arm's take longer than the kinematics); refineResult() adds them.
     bool followerChecksPending = false;
     /// The pressure angle (deg) over the turn at kFollowerCurvePoints + 1 equal time steps, on
     /// the plots' x axis (degrees or seconds, as `curves`).

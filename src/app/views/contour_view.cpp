@@ -71,7 +71,7 @@ ContourView::ContourView(ProjectDocument* document, QWidget* parent)
         curve->setName(g == 0 ? tr("outer flank") : tr("pitch curve"));
         curve->setPen(g == 0 ? QPen(QColor(40, 40, 40), 2)
                              : QPen(QColor(120, 120, 120), 1, Qt::DashLine));
-        m_grooveCurves[g] = curve;
+        m_closureCurves[g] = curve;
     }
     // Over the segments' colours, under the markers: the profile coloured by stress.
     m_stress = std::make_unique<StressOverlay>(this);
@@ -107,8 +107,8 @@ void ContourView::setResult(const ComputeResultPtr& result) {
     if (result->awaitsContour()) {
         // Nothing to draw yet; an earlier project's contour would only mislead.
         for (QCPCurve* curve : m_colourCurves) curve->data()->clear();
-        for (QCPCurve* curve : m_grooveCurves) curve->data()->clear();
-        m_standingGroove = {};
+        for (QCPCurve* curve : m_closureCurves) curve->data()->clear();
+        m_standingClosure = {};
         m_centers->data()->clear();
         m_joints->data()->clear();
         setStale(staleText(*result));
@@ -157,12 +157,18 @@ void ContourView::setResult(const ComputeResultPtr& result) {
             cy << s.arc.center.y();
         }
     }
+    // A groove's outer flank and pitch curve, or a conjugate pair's second plate.
     std::array<QVector<QCPCurveData>, 2> groove;
-    if (result->groove) {
-        // The outer flank lies outside the contour: the view's bounds hold it.
+    std::array<const QVector<QPointF>*, 2> closure{};
+    if (result->groove) closure = {&result->groove->outer, &result->groove->pitch};
+    if (result->conjugate) closure[0] = &result->conjugate->outline;
+    m_closureCurves[0]->setName(result->conjugate ? tr("second plate") : tr("outer flank"));
+    {
+        // The outer flank lies outside the contour, the second plate across the centre: the
+        // view's bounds hold them.
         for (std::size_t g = 0; g < 2; ++g) {
-            const QVector<QPointF>& outline =
-                g == 0 ? result->groove->outer : result->groove->pitch;
+            if (!closure[g]) continue;
+            const QVector<QPointF>& outline = *closure[g];
             for (const QPointF& p : outline) {
                 groove[g].append(QCPCurveData(groove[g].size(), p.x(), p.y()));
                 if (g == 0 && any) {
@@ -184,8 +190,11 @@ void ContourView::setResult(const ComputeResultPtr& result) {
         top = std::max(top, reach);
     }
     if (any && result->follower && contactRadius(result->follower->spec()) > 0.0) {
-        // A roller rides outside the contour, up to its diameter beyond it: keep it in view.
-        const double reach = 2.0 * contactRadius(result->follower->spec());
+        // A roller rides outside the contour, up to its diameter beyond it (a second roller
+        // beyond its plate): keep it in view.
+        const double reach =
+            2.0 * std::max(contactRadius(result->follower->spec()),
+                           result->conjugate ? result->conjugate->yoke.rollerRadiusMm : 0.0);
         left -= reach;
         right += reach;
         bottom -= reach;
@@ -198,9 +207,9 @@ void ContourView::setResult(const ComputeResultPtr& result) {
     m_standingCy = cy;
     m_standingJx = jx;
     m_standingJy = jy;
-    m_standingGroove = groove;
+    m_standingClosure = groove;
     m_turnedBy = 0.0;
-    for (std::size_t g = 0; g < 2; ++g) m_grooveCurves[g]->data()->set(groove[g], true);
+    for (std::size_t g = 0; g < 2; ++g) m_closureCurves[g]->data()->set(groove[g], true);
     for (int c = 0; c < kSegmentColorCount; ++c) {
         m_colourCurves[static_cast<std::size_t>(c)]->data()->set(data[static_cast<std::size_t>(c)],
                                                                  true);
@@ -296,6 +305,9 @@ void ContourView::setCursorAngle(double phi) {
     std::optional<FollowerGlyphShape> glyph = follower && !m_staleLabel->isStale()
                                                   ? followerGlyphAt(*follower, phi, m_result->omega)
                                                   : std::nullopt;
+    if (glyph && m_result->conjugate) {
+        glyph = withSecondRoller(*glyph, *follower, m_result->conjugate->yoke, phi);
+    }
     if (glyph && turn != 0.0) glyph = cam::turnedBy(*glyph, turn);
     m_follower->show(glyph);
     if (turn != m_turnedBy) {
@@ -319,7 +331,7 @@ void ContourView::turnDrawing(double angle) {
         curve->data()->set(points, true);
     };
     for (std::size_t k = 0; k < m_standing.size(); ++k) turnInto(m_standing[k], m_colourCurves[k]);
-    for (std::size_t g = 0; g < 2; ++g) turnInto(m_standingGroove[g], m_grooveCurves[g]);
+    for (std::size_t g = 0; g < 2; ++g) turnInto(m_standingClosure[g], m_closureCurves[g]);
     const auto turned = [c, s](const QVector<double>& x, const QVector<double>& y,
                                QCPGraph* graph) {
         QVector<double> tx(x.size()), ty(y.size());
@@ -348,7 +360,7 @@ void ContourView::setTurning(bool on) {
                 if (std::isfinite(p.key)) reach = std::max(reach, std::hypot(p.key, p.value));
             }
         }
-        for (const QCPCurveData& p : m_standingGroove[0]) {
+        for (const QCPCurveData& p : m_standingClosure[0]) {
             reach = std::max(reach, std::hypot(p.key, p.value));
         }
         for (double v : {m_xBounds.lower, m_xBounds.upper, m_yBounds.lower, m_yBounds.upper}) {

@@ -41,8 +41,11 @@ public:
     [[nodiscard]] std::pair<int, int> segmentRun(int k) const;
     /// @brief A grooved cam's outer flank and the roller's pitch curve (dashed), as drawn now:
     /// empty for a spring-closed cam.
-    [[nodiscard]] QCPCurve* outerFlankCurve() const { return m_grooveCurves[0]; }
-    [[nodiscard]] QCPCurve* pitchCurve() const { return m_grooveCurves[1]; }
+    [[nodiscard]] QCPCurve* outerFlankCurve() const { return m_closureCurves[0]; }
+    /// @brief A conjugate pair's second plate, as drawn now (the same curve as the outer flank:
+    /// a cam has one or the other).
+    [[nodiscard]] QCPCurve* secondPlateCurve() const { return m_closureCurves[0]; }
+    [[nodiscard]] QCPCurve* pitchCurve() const { return m_closureCurves[1]; }
     /// @brief Colours the profile by the contact stress where the follower touches it (a
     /// project with dynamics, a contact width and materials), or not.
     void setStressColouring(bool on);
@@ -124,9 +127,10 @@ private:
     /// The cam as the result has it (turned by 0): the colour curves, centres, joints.
     std::array<QVector<QCPCurveData>, kSegmentColorCount> m_standing;
     QVector<double> m_standingCx, m_standingCy, m_standingJx, m_standingJy;
-    /// A groove's outer flank and pitch curve, turned by 0, and their curves.
-    std::array<QVector<QCPCurveData>, 2> m_standingGroove;
-    std::array<QCPCurve*, 2> m_grooveCurves{};
+    /// A groove's outer flank and pitch curve, or a conjugate pair's second plate, turned by 0,
+    /// and their curves.
+    std::array<QVector<QCPCurveData>, 2> m_standingClosure;
+    std::array<QCPCurve*, 2> m_closureCurves{};
     /// One curve per segment colour: segment k is a run of colourCurves[its slot], the runs
     /// separated by a NaN point (a gap). Ten curves whatever the number of segments: drawing,
     /// replacing and closing cost what the points cost, not a plottable per segment.

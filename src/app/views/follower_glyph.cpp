@@ -46,6 +46,15 @@ std::optional<FollowerGlyphShape> followerGlyphAt(const FollowerModel& model, do
     return followerGlyphShape(model.spec(), model.at(phi, omega), phi);
 }
 
+FollowerGlyphShape withSecondRoller(FollowerGlyphShape shape, const FollowerModel& model,
+                                    const ConjugateYoke& yoke, double phi) {
+    const ConjugatePoint second = conjugatePoint(model, yoke, phi);
+    shape.second =
+        FollowerGlyphShape::SecondRoller{second.centre, second.plate, yoke.rollerRadiusMm};
+    shape.guideStart = second.centre;
+    return shape;
+}
+
 FollowerGlyph::FollowerGlyph(QCustomPlot* plot, QCPLayer* layer) {
     const QColor follower(20, 90, 160);
     m_guide = new QCPItemLine(plot);
@@ -68,6 +77,14 @@ FollowerGlyph::FollowerGlyph(QCustomPlot* plot, QCPLayer* layer) {
     m_normal = new QCPItemLine(plot);
     m_normal->setPen(QPen(QColor(200, 40, 40), 1.2));
     m_normal->setHead(QCPLineEnding::esSpikeArrow);
+    m_secondRoller = new QCPItemEllipse(plot);
+    m_secondRoller->setPen(QPen(follower, 1.5));
+    m_secondRoller->setBrush(QColor(20, 90, 160, 40));
+    m_secondContact = new QCPItemTracer(plot);
+    m_secondContact->setStyle(QCPItemTracer::tsCircle);
+    m_secondContact->setSize(6);
+    m_secondContact->setPen(QPen(QColor(200, 40, 40)));
+    m_secondContact->setBrush(QColor(200, 40, 40));
     for (QCPAbstractItem* item : items()) {
         item->setLayer(layer);
         item->setVisible(false);
@@ -75,8 +92,9 @@ FollowerGlyph::FollowerGlyph(QCustomPlot* plot, QCPLayer* layer) {
     }
 }
 
-std::array<QCPAbstractItem*, 6> FollowerGlyph::items() const {
-    return {m_guide, m_pivot, m_roller, m_face, m_contact, m_normal};
+std::array<QCPAbstractItem*, 8> FollowerGlyph::items() const {
+    return {m_guide,   m_pivot,  m_roller,       m_face,
+            m_contact, m_normal, m_secondRoller, m_secondContact};
 }
 
 FollowerGlyphShape turnedBy(FollowerGlyphShape shape, double angle) {
@@ -88,6 +106,10 @@ FollowerGlyphShape turnedBy(FollowerGlyphShape shape, double angle) {
     if (shape.pivot) shape.pivot = turn * *shape.pivot;
     if (shape.face) {
         for (Eigen::Vector2d& p : *shape.face) p = turn * p;
+    }
+    if (shape.second) {
+        shape.second->center = turn * shape.second->center;
+        shape.second->contact = turn * shape.second->contact;
     }
     return shape;
 }
@@ -121,6 +143,14 @@ void FollowerGlyph::show(const std::optional<FollowerGlyphShape>& shape) {
     m_normal->start->setCoords(g.contact.x(), g.contact.y());
     m_normal->end->setCoords(g.normalTip.x(), g.normalTip.y());
     m_normal->setVisible(true);
+    if (g.second) {
+        const FollowerGlyphShape::SecondRoller& r = *g.second;
+        m_secondRoller->topLeft->setCoords(r.center.x() - r.radius, r.center.y() + r.radius);
+        m_secondRoller->bottomRight->setCoords(r.center.x() + r.radius, r.center.y() - r.radius);
+        m_secondRoller->setVisible(true);
+        m_secondContact->position->setCoords(r.contact.x(), r.contact.y());
+        m_secondContact->setVisible(true);
+    }
 }
 
 FollowerMarkers FollowerGlyph::markers() const {
@@ -133,6 +163,14 @@ FollowerMarkers FollowerGlyph::markers() const {
     if (m_roller->visible()) {
         const QPointF a = m_roller->topLeft->coords(), b = m_roller->bottomRight->coords();
         m.rollerRadius = (b.x() - a.x()) / 2.0;
+    }
+    m.secondShown = m_secondRoller->visible();
+    if (m.secondShown) {
+        const QPointF a = m_secondRoller->topLeft->coords(),
+                      b = m_secondRoller->bottomRight->coords();
+        m.secondCenter = (a + b) / 2.0;
+        m.secondRadius = (b.x() - a.x()) / 2.0;
+        m.secondContact = m_secondContact->position->coords();
     }
     // The follower point itself, not an end of the guide: a translating knife's or flat
     // face's line of motion runs on past it.

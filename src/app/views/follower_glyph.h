@@ -2,8 +2,8 @@
 /// @file
 /// @brief The follower drawn in the contour view at the cursor angle (math.md §7): its line of
 /// motion, or its arm and pivot; the roller's circle or the flat face; the contact point and the
-/// contact normal. followerGlyphShape() says where each part goes (plane geometry, no Qt);
-/// FollowerGlyph holds the QCustomPlot items that show it.
+/// contact normal; a conjugate yoke's second roller. followerGlyphShape() says where each part goes
+/// (plane geometry, no Qt); FollowerGlyph holds the QCustomPlot items that show it.
 
 #include <qcustomplot.h>
 
@@ -11,6 +11,7 @@
 #include <array>
 #include <optional>
 
+#include "closure/conjugate.h"
 #include "follower/follower.h"
 
 namespace cam {
@@ -28,6 +29,13 @@ struct FollowerGlyphShape {
     std::optional<std::array<Eigen::Vector2d, 2>> face;
     Eigen::Vector2d contact{0.0, 0.0};
     Eigen::Vector2d normalTip{0.0, 0.0};  ///< the contact normal's arrow runs contact → tip
+    /// A conjugate yoke's second roller (closure/conjugate.h): its circle and its contact on the
+    /// second plate. The line of motion then runs from it through the first roller: the yoke.
+    struct SecondRoller {
+        Eigen::Vector2d center{0.0, 0.0}, contact{0.0, 0.0};
+        double radius = 0.0;
+    };
+    std::optional<SecondRoller> second;
 };
 
 /// @brief The glyph of follower `spec` in `state`, at cam angle `phi` (rad); none when the state
@@ -42,6 +50,12 @@ struct FollowerGlyphShape {
 [[nodiscard]] std::optional<FollowerGlyphShape> followerGlyphAt(const FollowerModel& model,
                                                                 double phi, double omega);
 
+/// @brief `shape` of the translating roller `model` at cam angle `phi` with the second roller
+/// of `yoke` added (ConjugatePoint: exact, on the second plate as computed, not as fitted).
+[[nodiscard]] FollowerGlyphShape withSecondRoller(FollowerGlyphShape shape,
+                                                  const FollowerModel& model,
+                                                  const ConjugateYoke& yoke, double phi);
+
 /// @brief `shape` turned by `angle` (rad, counter-clockwise) about the cam's centre.
 [[nodiscard]] FollowerGlyphShape turnedBy(FollowerGlyphShape shape, double angle);
 
@@ -51,6 +65,9 @@ struct FollowerMarkers {
     bool pivotShown = false;
     QPointF pivot, center, contact, normalTip;
     double rollerRadius = 0.0;  ///< 0 unless a roller is drawn
+    bool secondShown = false;   ///< a conjugate yoke's second roller
+    QPointF secondCenter, secondContact;
+    double secondRadius = 0.0;
 };
 
 /// @brief The plot items that draw a FollowerGlyphShape; the plot owns them.
@@ -64,7 +81,7 @@ public:
     [[nodiscard]] FollowerMarkers markers() const;
 
 private:
-    [[nodiscard]] std::array<QCPAbstractItem*, 6> items() const;
+    [[nodiscard]] std::array<QCPAbstractItem*, 8> items() const;
 
     QCPItemLine* m_guide = nullptr;  ///< the line of motion, or the arm
     QCPItemTracer* m_pivot = nullptr;
@@ -72,6 +89,8 @@ private:
     QCPItemLine* m_face = nullptr;
     QCPItemTracer* m_contact = nullptr;
     QCPItemLine* m_normal = nullptr;
+    QCPItemEllipse* m_secondRoller = nullptr;
+    QCPItemTracer* m_secondContact = nullptr;
     QPointF m_center;  ///< the follower point of the shape shown last
 };
 

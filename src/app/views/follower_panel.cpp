@@ -7,7 +7,6 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QStandardItemModel>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -88,19 +87,22 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     m_closure = new QComboBox(this);
     m_closure->setObjectName("followerClosureComboBox");
     m_closure->addItems({tr("Spring"), tr("Groove"), tr("Conjugate plates")});
-    // A conjugate pair is read, checked and exported (camwright-cli); the window shows the
-    // choice of a project that makes it, but does not draw or edit its second plate yet.
-    if (auto* items = qobject_cast<QStandardItemModel*>(m_closure->model())) {
-        items->item(2)->setEnabled(false);
-        items->item(2)->setToolTip(
-            tr("A second plate driving a second roller: set in the project file "
-               "(conjugate_distance_mm, conjugate_radius_mm); camwright-cli computes, checks "
-               "and exports it"));
-    }
     m_closure->setToolTip(
-        tr("What keeps the roller on the cam: a spring, or a groove milled into the disc (the "
+        tr("What keeps the roller on the cam: a spring; a groove milled into the disc (the "
            "contour is its inner flank, the outer flank lies twice the roller radius plus the "
-           "clearance beyond it)"));
+           "clearance beyond it); or conjugate plates (a second plate on the same shaft drives a "
+           "second roller on the same line, across the cam centre)"));
+    m_conjugateDistance = spinBox(
+        this, "conjugateDistanceSpinBox", " mm",
+        tr("From the first roller's centre back along the line to the second roller's: it must "
+           "put the second roller beyond the cam centre at every angle"),
+        0.001);
+    m_conjugateDistance->setSingleStep(1.0);
+    m_conjugateDistance->setValue(100.0);
+    m_conjugateRadius =
+        spinBox(this, "conjugateRadiusSpinBox", " mm", tr("The second roller's radius"), 0.001);
+    m_conjugateRadius->setSingleStep(0.5);
+    m_conjugateRadius->setValue(5.0);
     m_clearance = spinBox(this, "grooveClearanceSpinBox", " mm",
                           tr("The roller's play between the groove's flanks"), 0.0);
     m_clearance->setDecimals(3);
@@ -147,6 +149,11 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     m_outerLand->setSpecialValueText(tr("outer: none"));
     form->addRow(tr("Closure"), pair(m_closure, m_clearance));
     form->addRow(tr("Groove lands"), pair(m_innerLand, m_outerLand));
+    m_conjugateDistance->setAccessibleName(tr("Second roller's distance"));
+    m_conjugateRadius->setAccessibleName(tr("Second roller's radius"));
+    m_conjugateDistance->setPrefix(tr("distance "));
+    m_conjugateRadius->setPrefix(tr("radius "));
+    form->addRow(tr("Second roller"), pair(m_conjugateDistance, m_conjugateRadius));
     // How the cam turns against this follower: the offset's sign only means something with
     // it. The picture is the setting: a click turns the cam round (the speed's sign).
     m_turning = new TurningPicture(this);
@@ -232,6 +239,22 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     });
     choice(m_closure, [this](FollowerSpec& f, int i) {
         f.closure = static_cast<Closure>(i);
+        if (f.closure == Closure::Conjugate) {
+            // A yoke takes a translating roller; its second roller the same radius, as far
+            // behind the first as twice the cam's largest radius and a roller: beyond the
+            // centre at every angle, with room to spare.
+            f.motion = FollowerMotion::Translating;
+            if (f.type != FollowerType::Roller) {
+                f.type = FollowerType::Roller;
+                if (!(f.radius > 0.0)) f.radius = m_radius->value();
+            }
+            if (!(f.conjugateRadius > 0.0)) f.conjugateRadius = f.radius;
+            if (!(f.conjugateDistance > 0.0)) {
+                const double reach = m_largestRadius > 0.0 ? m_largestRadius : 50.0;
+                f.conjugateDistance = std::ceil(2.0 * (reach + f.radius));
+            }
+            return;
+        }
         if (f.closure != Closure::Groove) return;
         f.grooveClearance = m_clearance->value();
         // A groove takes a roller: the one the follower has, or a first whose groove, twice
@@ -278,6 +301,8 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     number(m_outerLand, [](FollowerSpec& f, double v) {
         f.outerLandRadius = v > 0.0 ? std::optional<double>(v) : std::nullopt;
     });
+    number(m_conjugateDistance, [](FollowerSpec& f, double v) { f.conjugateDistance = v; });
+    number(m_conjugateRadius, [](FollowerSpec& f, double v) { f.conjugateRadius = v; });
     number(m_limit, [](FollowerSpec& f, double v) {
         f.maxPressureAngleDeg = v > 0.0 ? std::optional<double>(v) : std::nullopt;
     });
@@ -351,6 +376,13 @@ void FollowerPanel::refresh() {
     m_form->setRowVisible(m_armLength, arm);
     m_form->setRowVisible(m_side, arm);
     m_form->setRowVisible(m_innerLand->parentWidget(), f.grooved());
+    if (f.conjugate()) {
+        m_conjugateDistance->setValue(f.conjugateDistance);
+        m_conjugateRadius->setValue(f.conjugateRadius);
+    }
+    m_conjugateDistance->setEnabled(f.conjugate());
+    m_conjugateRadius->setEnabled(f.conjugate());
+    m_form->setRowVisible(m_conjugateDistance->parentWidget(), f.conjugate());
     m_radius->setEnabled(followerKind(f.type).hasRadius);
     m_offset->setEnabled(!arm);
     m_pivotX->setEnabled(arm);
@@ -380,6 +412,7 @@ void FollowerPanel::showCurvature(const ComputeResultPtr& result) {
         for (const QPointF& p : outline) size = std::max(size, std::hypot(p.x(), p.y()));
     }
     m_curvatureClip = 2.0 * size;
+    m_largestRadius = size;
     const double clip = m_curvatureClip;
     const auto clipped = [clip](const std::vector<double>& rho) {
         QVector<double> y(static_cast<qsizetype>(rho.size()));
@@ -574,6 +607,7 @@ void FollowerPanel::showChecks(const ComputeResultPtr& result) {
     }
     if (flat) add(tr("Face width needed: %1").arg(millimetres(a.faceWidth)), std::nullopt, false);
     if (result->groove) addGrooveChecks(*result->groove, spec);
+    if (spec.conjugate()) addConjugateChecks(*result, limit);
     const int problems = m_checks->problemCount();
     m_checks->setSummary(problems == 0 ? tr("Every check passes.")
                                        : tr("%n check(s) fail.", nullptr, problems));
@@ -611,6 +645,42 @@ void FollowerPanel::addGrooveChecks(const GrooveView& groove, const FollowerSpec
             : tr("Outer flank farthest from the centre: %1 at %2 (no outer land radius given)")
                   .arg(millimetres(out.radius), formatRadians(out.phi)),
         out.phi, !lands.outerKept());
+}
+
+void FollowerPanel::addConjugateChecks(const ComputeResult& result, double limit) {
+    if (!result.conjugate) {
+        for (const Diagnostic& d : result.conjugateErrors) {
+            add(tr("The second plate cannot be made: %1").arg(diagnosticText(d)), std::nullopt,
+                true);
+        }
+        return;
+    }
+    const ConjugateView& c = *result.conjugate;
+    const ConjugatePlate& p = c.plate;
+    // The play the fitted arcs leave the second roller, the first on the first plate: within
+    // the tolerance they were fitted to, or the pair rattles (a gap) or jams (interference).
+    add(tr("Second plate: %n arc(s) within %1; the second roller's play from %2 at %3 to %4 "
+           "at %5",
+           nullptr, static_cast<int>(p.fit.arcs.size()))
+            .arg(millimetres(c.toleranceMm), millimetres(p.minPlay), formatRadians(p.minPlayAt),
+                 millimetres(p.maxPlay), formatRadians(p.maxPlayAt)),
+        p.minPlayAt, p.maxPlay > c.toleranceMm || p.minPlay < -c.toleranceMm);
+    add(tr("Largest pressure angle at the second roller: %1 at %2 (limit %3)")
+            .arg(formatRadians(std::abs(p.maxPressureAngle)), formatRadians(p.maxPressureAt),
+                 formatRadians(limit)),
+        p.maxPressureAt, std::abs(p.maxPressureAngle) > limit);
+    if (p.bends.minConvex) {
+        add(tr("Smallest convex radius of the second plate: %1, touched at %2")
+                .arg(millimetres(p.bends.minConvex->radius), formatRadians(p.bends.minConvex->phi)),
+            p.bends.minConvex->phi, false);
+    }
+    if (p.bends.minConcave) {
+        add(tr("Smallest concave radius of the second plate: %1, touched at %2 (second roller "
+               "radius %3)")
+                .arg(millimetres(p.bends.minConcave->radius),
+                     formatRadians(p.bends.minConcave->phi), millimetres(c.yoke.rollerRadiusMm)),
+            p.bends.minConcave->phi, !(p.bends.minConcave->radius > c.yoke.rollerRadiusMm));
+    }
 }
 
 void FollowerPanel::add(const QString& text, std::optional<double> phi, bool problem) {

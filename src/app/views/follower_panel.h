@@ -1,11 +1,12 @@
 #pragma once
 /// @file
 /// @brief The follower (type, motion, radius, offset, pivot, arm, pressure-angle limit, its
-/// closure: spring or groove with clearance and lands; every edit an undo command) and its
-/// design checks over the turn (math.md §7): the largest pressure angles against the limit,
-/// the ranges beyond it, the smallest radii of curvature, the flat face's width, every stretch
-/// the follower cannot reach, and a groove's outer flank and lands. Clicking a check goes to
-/// its angle.
+/// closure: spring, groove with clearance and lands, or conjugate plates with the second
+/// roller's distance and radius; every edit an undo command) and its design checks over the
+/// turn (math.md §7): the largest pressure angles against the limit, the ranges beyond it, the
+/// smallest radii of curvature, the flat face's width, every stretch the follower cannot reach,
+/// a groove's outer flank and lands, a second plate's play, pressure angle and bends. Clicking
+/// a check goes to its angle.
 
 #include <QWidget>
 #include <array>
@@ -62,6 +63,9 @@ signals:
 private:
     /// The groove's lines of the checks: its width, the outer flank's tightest bends, the lands.
     void addGrooveChecks(const GrooveView& groove, const FollowerSpec& spec);
+    /// The second plate's lines: how well it holds the second roller, its pressure angle and
+    /// its tightest arcs; or why it cannot be fitted.
+    void addConjugateChecks(const ComputeResult& result, double limit);
     void add(const QString& text, std::optional<double> phi, bool problem);
     void showCurvature(const ComputeResultPtr& result);
     void refresh();
@@ -87,6 +91,11 @@ private:
     NumberSpinBox* m_clearance;
     NumberSpinBox* m_innerLand;
     NumberSpinBox* m_outerLand;
+    NumberSpinBox* m_conjugateDistance;
+    NumberSpinBox* m_conjugateRadius;
+    /// The cam's largest radius in the last result (mm; 0 before one): a first conjugate yoke
+    /// reaches twice its radius plus the roller's across.
+    double m_largestRadius = 0.0;
     TurningPicture* m_turning;
     QLabel* m_turningText;
     CheckList* m_checks;
