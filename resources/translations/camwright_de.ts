@@ -3524,12 +3524,12 @@
         <translation>Kleinster konvexer Radius der zweiten Scheibe: %1, berührt bei %2</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+5" />
         <source>Smallest concave radius of the second plate: %1, touched at %2 (second roller radius %3)</source>
         <translation>Kleinster konkaver Radius der zweiten Scheibe: %1, berührt bei %2 (Radius der zweiten Rolle %3)</translation>
     </message>
     <message>
-        <location line="-495" />
+        <location line="-494" />
         <source>Pressure angle [°]</source>
         <translation>Druckwinkel [°]</translation>
     </message>
@@ -3809,19 +3809,34 @@
         <translation>t [s]</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+25" />
         <source>The inner flank carries the load over the whole turn.</source>
         <translation>Die Innenflanke trägt die Last über die ganze Umdrehung.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+1" />
+        <source>The first plate carries the load over the whole turn.</source>
+        <translation>Die erste Scheibe trägt die Last über die ganze Umdrehung.</translation>
+    </message>
+    <message>
+        <location line="+4" />
         <source>The roller crosses to the outer flank at %1 and back at %2</source>
         <translation>Die Rolle wechselt bei %1 an die Außenflanke und bei %2 zurück</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+1" />
+        <source>The second roller takes the load over at %1 and gives it back at %2</source>
+        <translation>Die zweite Rolle übernimmt die Last bei %1 und gibt sie bei %2 zurück</translation>
+    </message>
+    <message>
+        <location line="+6" />
         <source>Largest normal force on the outer flank: %1 at %2</source>
         <translation>Größte Normalkraft an der Außenflanke: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest normal force on the second roller: %1 at %2</source>
+        <translation>Größte Normalkraft an der zweiten Rolle: %1 bei %2</translation>
     </message>
     <message>
         <location line="+8" />
@@ -3829,9 +3844,19 @@
         <translation>Größte Kontaktpressung an der Außenflanke: %1 bei %2, %3 % der zulässigen %4</translation>
     </message>
     <message>
+        <location line="+2" />
+        <source>Largest contact stress on the second plate: %1 at %2, %3 % of the allowable %4</source>
+        <translation>Größte Kontaktpressung an der zweiten Scheibe: %1 bei %2, %3 % der zulässigen %4</translation>
+    </message>
+    <message>
         <location line="+7" />
         <source>Largest contact stress on the outer flank: %1 at %2</source>
         <translation>Größte Kontaktpressung an der Außenflanke: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Largest contact stress on the second plate: %1 at %2</source>
+        <translation>Größte Kontaktpressung an der zweiten Scheibe: %1 bei %2</translation>
     </message>
     <message>
         <location line="+7" />
@@ -3865,6 +3890,11 @@
     </message>
     <message>
         <location line="+1" />
+        <source>Largest normal force on the first roller: %1 at %2</source>
+        <translation>Größte Normalkraft an der ersten Rolle: %1 bei %2</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Largest normal force: %1 at %2</source>
         <translation>Größte Normalkraft: %1 bei %2</translation>
     </message>
@@ -3884,6 +3914,11 @@
         <translation>Größte Kontaktpressung an der Innenflanke: %1 bei %2, %3 % der zulässigen %4</translation>
     </message>
     <message>
+        <location line="+3" />
+        <source>Largest contact stress on the first plate: %1 at %2, %3 % of the allowable %4</source>
+        <translation>Größte Kontaktpressung an der ersten Scheibe: %1 bei %2, %3 % der zulässigen %4</translation>
+    </message>
+    <message>
         <location line="+2" />
         <source>Largest contact stress: %1 at %2, %3 % of the allowable %4</source>
         <translation>Größte Kontaktpressung: %1 bei %2, %3 % der zulässigen %4</translation>
@@ -3892,6 +3927,11 @@
         <location line="+8" />
         <source>Largest contact stress on the inner flank: %1 at %2 (no allowable stress given)</source>
         <translation>Größte Kontaktpressung an der Innenflanke: %1 bei %2 (keine zulässige Pressung angegeben)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Largest contact stress on the first plate: %1 at %2 (no allowable stress given)</source>
+        <translation>Größte Kontaktpressung an der ersten Scheibe: %1 bei %2 (keine zulässige Pressung angegeben)</translation>
     </message>
     <message>
         <location line="+2" />

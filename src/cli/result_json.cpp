@@ -248,15 +248,17 @@ Json forcesAnalysisJson(const Loaded& loaded) {
     for (const auto& [from, to] : s.liftOff) liftOff.push_back({degrees(from), degrees(to)});
     const double rpm = 60.0 / kTwoPi;
     Json j{{"samples", n}};
-    if (model.grooved()) {
-        // In a groove the follower never leaves the cam: where the load turns negative the
-        // roller crosses its clearance and the outer flank carries it; a spring's jump speed
-        // and preload mean nothing.
+    if (model.formClosed()) {
+        // Form-closed, the follower never leaves the cam: where the load turns negative the
+        // roller crosses its clearance and the outer flank carries it, or the second roller of
+        // a conjugate pair does; a spring's jump speed and preload mean nothing.
+        const bool groove = model.grooved();
         Json crossovers = Json::array();
         for (const auto& [from, to] : s.liftOff) {
-            crossovers.push_back({{"to_outer_deg", degrees(from)}, {"to_inner_deg", degrees(to)}});
+            crossovers.push_back({{groove ? "to_outer_deg" : "to_second_deg", degrees(from)},
+                                  {groove ? "to_inner_deg" : "to_first_deg", degrees(to)}});
         }
-        j["outer_flank_carries_deg"] = std::move(liftOff);
+        j[groove ? "outer_flank_carries_deg" : "second_roller_carries_deg"] = std::move(liftOff);
         j["crossovers"] = std::move(crossovers);
         j["jump_speed_rpm"] = nullptr;
         j["jump_speed_at_deg"] = nullptr;
@@ -278,21 +280,22 @@ Json forcesAnalysisJson(const Loaded& loaded) {
     j["max_contact_stress_MPa"] = s.maxStress ? Json(*s.maxStress) : Json();
     j["max_contact_stress_at_deg"] = s.maxStressAt ? Json(degrees(*s.maxStressAt)) : Json();
     j["allowable_contact_stress_MPa"] = model.allowableMpa ? Json(*model.allowableMpa) : Json();
-    // The larger of both flanks' in a groove.
+    // The larger of both contacts' when form-closed.
     const std::optional<double> worst =
-        s.maxStressOuter && (!s.maxStress || *s.maxStressOuter > *s.maxStress) ? s.maxStressOuter
-                                                                               : s.maxStress;
+        s.maxStressSecond && (!s.maxStress || *s.maxStressSecond > *s.maxStress) ? s.maxStressSecond
+                                                                                 : s.maxStress;
     j["contact_stress_ratio"] =
         worst && model.allowableMpa ? Json(*worst / *model.allowableMpa) : Json();
-    if (model.grooved()) {
+    if (model.formClosed()) {
         const auto orNull = [](const std::optional<double>& v) { return v ? Json(*v) : Json(); };
         const auto atDeg = [&](const std::optional<double>& v) {
             return v ? Json(degrees(*v)) : Json();
         };
-        j["outer_flank"] = {{"max_normal_N", orNull(s.maxNormalOuter)},
-                            {"max_normal_at_deg", atDeg(s.maxNormalOuterAt)},
-                            {"max_contact_stress_MPa", orNull(s.maxStressOuter)},
-                            {"max_contact_stress_at_deg", atDeg(s.maxStressOuterAt)}};
+        j[model.grooved() ? "outer_flank" : "second_roller"] = {
+            {"max_normal_N", orNull(s.maxNormalSecond)},
+            {"max_normal_at_deg", atDeg(s.maxNormalSecondAt)},
+            {"max_contact_stress_MPa", orNull(s.maxStressSecond)},
+            {"max_contact_stress_at_deg", atDeg(s.maxStressSecondAt)}};
     }
     // Where the contact passes a joint and the forces jump: both sides (an arc table's s''
     // jumps at every joint).

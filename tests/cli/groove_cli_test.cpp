@@ -314,5 +314,55 @@ TEST(CliConjugate, StateAnalyzeAndTheDxfHoldTheSecondRollerWhereTheClosedFormPut
     EXPECT_LE(worst, 1e-3 + 1e-9);
 }
 
+TEST(CliConjugate, WithDynamicsTheSecondRollerTakesTheLoadOverWhereItTurnsNegative) {
+    // The same yoke driven by inertia alone: the load m·s''·ω² is negative where s'' is, and
+    // no spring is needed — no lift-off, jump speed or preload, but the second roller's share.
+    const test::TempDir dir;
+    std::string text = test::readFile(conjugateDisc(dir));
+    text.replace(text.rfind('}'), 1,
+                 R"(, "dynamics": {"mass_kg": 0.5, "contact_width_mm": 10,
+                    "cam_material": {"E_MPa": 210000, "poisson": 0.3},
+                    "follower_material": {"E_MPa": 210000, "poisson": 0.3}}})");
+    const std::string path = dir.file("conjugate-dynamics.cam.json");
+    std::ofstream(path) << text;
+    const auto run = test::runCli({"analyze", path});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Json f = Json::parse(run.out).at("forces");
+    EXPECT_TRUE(f.at("jump_speed_rpm").is_null());
+    EXPECT_TRUE(f.at("min_preload_N").is_null());
+    EXPECT_FALSE(f.contains("lift_off_deg"));
+    ASSERT_EQ(f.at("crossovers").size(), 1u);
+    const Json& crossing = f.at("crossovers")[0];
+    // Where s'' of the closed form changes sign (central differences, bisected).
+    const auto s = [](double phi) {
+        const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), n(-u.y(), u.x()), c(kE, 0.0);
+        const double side = 3.0 - n.dot(c);
+        return u.dot(c) + std::sqrt((kR + kRho) * (kR + kRho) - side * side);
+    };
+    const auto s2 = [&](double phi) {
+        const double h = 1e-3;
+        return (-s(phi - 2 * h) + 16 * s(phi - h) - 30 * s(phi) + 16 * s(phi + h) -
+                s(phi + 2 * h)) /
+               (12 * h * h);
+    };
+    for (const char* key : {"to_second_deg", "to_first_deg"}) {
+        double phi = crossing.at(key).get<double>() * std::numbers::pi / 180;
+        // Refined on the closed form from the reported angle: within 1e-6° of it.
+        double a = phi - 1e-3, b = phi + 1e-3;
+        ASSERT_NE(s2(a) < 0, s2(b) < 0) << key;
+        const bool negativeAtA = s2(a) < 0;
+        for (int i = 0; i < 60; ++i) {
+            const double m = 0.5 * (a + b);
+            ((s2(m) < 0) == negativeAtA ? a : b) = m;
+        }
+        EXPECT_NEAR(phi, 0.5 * (a + b), 1e-6 * std::numbers::pi / 180) << key;
+        // Into the second roller the load turns negative; back, positive.
+        EXPECT_EQ(negativeAtA, std::string(key) == "to_first_deg") << key;
+    }
+    EXPECT_EQ(f.at("second_roller_carries_deg").size(), 1u);
+    EXPECT_GT(f.at("second_roller").at("max_normal_N").get<double>(), 0.0);
+    EXPECT_GT(f.at("second_roller").at("max_contact_stress_MPa").get<double>(), 0.0);
+}
+
 }  // namespace
 }  // namespace cam

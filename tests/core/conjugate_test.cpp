@@ -13,6 +13,8 @@
 #include "closure/conjugate.h"
 #include "common/angles.h"
 #include "core/follower_geometry.h"
+#include "evaluation/evaluation.h"
+#include "evaluation/force_evaluation.h"
 
 namespace cam {
 namespace {
@@ -176,6 +178,107 @@ TEST(Conjugate, WhatCannotBeMadeIsRefusedAtItsKey) {
     const auto refused = conjugatePlate(plain, {80.0, 5.0}, 1e-3);
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.errors().front().code, DiagnosticCode::ConjugateNeedsTranslatingRoller);
+}
+
+TEST(ConjugateForces, TheSecondRollerCarriesWhereTheClosedFormsLoadTurnsNegative) {
+    // The yoke on the eccentric disc, driven by inertia alone: the load m·s''·ω² turns negative
+    // where s'' does (found on the closed form alone), and the second roller then carries it on
+    // the second plate — at its own pressure angle and on the plate's curvature, both taken
+    // from the closed-form centre path (s − D)·u + e·n by finite differences.
+    const Disc d;
+    const double mass = 0.5, omega = 20.0, b = 10.0, E = 210000.0, nu = 0.3;
+    const ConjugateYoke yoke{80.0, 5.0};
+    Project p;
+    p.motion = {SpeedUnit::OmegaRadS, omega};
+    p.contour.push_back(SegmentSpec{Arc{d.c, d.R, Branch::Outer}, 0.0, 360.0});
+    FollowerSpec spec;
+    spec.type = FollowerType::Roller;
+    spec.radius = d.rho;
+    spec.offset = d.e;
+    spec.closure = Closure::Conjugate;
+    spec.conjugateDistance = yoke.distanceMm;
+    spec.conjugateRadius = yoke.rollerRadiusMm;
+    p.follower = spec;
+    DynamicsSpec dyn;
+    dyn[DynamicsKey::MassKg] = mass;
+    dyn[DynamicsKey::ContactWidthMm] = b;
+    dyn[DynamicsKey::CamModulusMpa] = E;
+    dyn[DynamicsKey::CamPoisson] = nu;
+    dyn[DynamicsKey::FollowerModulusMpa] = E;
+    dyn[DynamicsKey::FollowerPoisson] = nu;
+    p.dynamics = dyn;
+    const ProjectEvaluation e = evaluateProject(p);
+    ASSERT_EQ(e.status, EvaluationStatus::Computed);
+    ForceEvaluation forces;
+    ASSERT_TRUE(evaluateForces(p, *e.follower, e.omega, forces));
+    ASSERT_TRUE(forces.model.conjugate());
+
+    const double h = 1e-3;
+    const auto d2 = [h](auto&& f, double x) {
+        return (-f(x - 2 * h) + 16 * f(x - h) - 30 * f(x) + 16 * f(x + h) - f(x + 2 * h)) /
+               (12 * h * h);
+    };
+    const auto d1 = [h](auto&& f, double x) {
+        return (f(x - 2 * h) - 8 * f(x - h) + 8 * f(x + h) - f(x + 2 * h)) / (12 * h);
+    };
+    const auto s = [&](double phi) { return sOf(d, phi); };
+    const auto s2 = [&](double phi) { return d2(s, phi); };
+    // The sign changes of s'', by bisection on the closed form.
+    std::vector<double> roots;
+    for (int k = 0; k < 3600; ++k) {
+        double a = kTwoPi * k / 3600, c = kTwoPi * (k + 1) / 3600;
+        if ((s2(a) < 0) == (s2(c) < 0)) continue;
+        const bool negativeAtA = s2(a) < 0;
+        for (int i = 0; i < 60; ++i) {
+            const double m = 0.5 * (a + c);
+            ((s2(m) < 0) == negativeAtA ? a : c) = m;
+        }
+        roots.push_back(0.5 * (a + c));
+    }
+    ASSERT_EQ(roots.size(), 2u);
+    const ForceSummary& summary = forces.summary;
+    ASSERT_EQ(summary.liftOff.size(), 1u);
+    for (const double end : summary.liftOff[0]) {
+        double nearest = 1e300;
+        for (const double r : roots)
+            nearest = std::min(nearest, std::abs(std::remainder(r - end, kTwoPi)));
+        EXPECT_LT(nearest, 1e-7) << end;
+    }
+    // The second roller's normal force and stress over the turn, densely, against the summary.
+    const double eStar = 1.0 / (2 * (1 - nu * nu) / E);
+    double normalPeak = 0.0, stressPeak = 0.0;
+    for (int k = 0; k < 100000; ++k) {
+        const double phi = kTwoPi * k / 100000;
+        const double load = mass * s2(phi) * 1e-3 * omega * omega;
+        if (load >= 0) continue;
+        const auto x = [&](double t) {
+            return (s(t) - yoke.distanceMm) * std::cos(t) - d.e * std::sin(t);
+        };
+        const auto y = [&](double t) {
+            return (s(t) - yoke.distanceMm) * std::sin(t) + d.e * std::cos(t);
+        };
+        const Eigen::Vector2d p1(d1(x, phi), d1(y, phi)), p2(d2(x, phi), d2(y, phi));
+        const double kappa = (p1.x() * p2.y() - p1.y() * p2.x()) / std::pow(p1.norm(), 3);
+        const double rhoPlate = 1 / kappa - yoke.rollerRadiusMm;
+        const Eigen::Vector2d outward(p1.y() / p1.norm(), -p1.x() / p1.norm());
+        const Eigen::Vector2d towards = -test::unit(phi);
+        const double cosAlpha = towards.dot(outward);
+        const double normal = -load / cosAlpha;
+        const double p =
+            std::sqrt(normal * eStar * (1 / rhoPlate + 1 / yoke.rollerRadiusMm) / (kPi * b));
+        normalPeak = std::max(normalPeak, normal);
+        stressPeak = std::max(stressPeak, p);
+    }
+    ASSERT_TRUE(summary.maxNormalSecond && summary.maxStressSecond);
+    EXPECT_NEAR(*summary.maxNormalSecond, normalPeak, 1e-6 * normalPeak);
+    EXPECT_NEAR(*summary.maxStressSecond, stressPeak, 1e-6 * stressPeak);
+    // The torque does not care which roller pushes: F·λ' throughout.
+    for (std::size_t k = 0; k < forces.turn.size(); k += 97) {
+        const double phi =
+            kTwoPi * static_cast<double>(k) / static_cast<double>(forces.turn.size());
+        const double load = mass * s2(phi) * 1e-3 * omega * omega;
+        EXPECT_NEAR(forces.forces.torque[k], load * d1(s, phi) * 1e-3, 1e-7) << k;
+    }
 }
 
 }  // namespace

@@ -355,9 +355,9 @@ TEST(GrooveForces, TheRollerCrossesToTheOuterFlankWhereTheClosedFormsLoadTurnsNe
         const double p = std::sqrt(std::abs(normal) * eStar * curvature / (kPi * b));
         (normal >= 0 ? innerPeak : outerPeak) = std::max(normal >= 0 ? innerPeak : outerPeak, p);
     }
-    ASSERT_TRUE(summary.maxStress && summary.maxStressOuter && summary.maxNormalOuter);
+    ASSERT_TRUE(summary.maxStress && summary.maxStressSecond && summary.maxNormalSecond);
     EXPECT_NEAR(*summary.maxStress, innerPeak, 1e-6 * innerPeak);
-    EXPECT_NEAR(*summary.maxStressOuter, outerPeak, 1e-6 * outerPeak);
+    EXPECT_NEAR(*summary.maxStressSecond, outerPeak, 1e-6 * outerPeak);
 }
 
 }  // namespace

@@ -21,8 +21,9 @@ CORE_LAYERS = [
     ["contour"],
     ["kinematics", "construction", "spline", "follower"],
     ["analysis", "design"],
-    ["fillet", "toolpath", "forces"],
+    ["fillet", "toolpath"],
     ["closure"],
+    ["forces"],
     ["timing", "export", "evaluation"],
     ["io"],
 ]

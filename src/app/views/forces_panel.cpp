@@ -309,37 +309,47 @@ void ForcesPanel::showSummary(const ComputeResult& r) {
     const auto rpm = [](double radPerS) {
         return formatQuantity(DisplayQuantity::RotationSpeed, radPerS * 60.0 / kTwoPi);
     };
-    if (m.grooved()) {
+    if (m.formClosed()) {
         // A groove holds the roller: where the load turns negative it crosses its clearance
-        // and strikes the outer flank (a knock a designer moves into a slow stretch).
+        // and strikes the outer flank (a knock a designer moves into a slow stretch). On a
+        // conjugate pair the second roller takes the load over from the first there.
+        const bool groove = m.grooved();
         if (s.liftOff.empty()) {
-            add(tr("The inner flank carries the load over the whole turn."), std::nullopt, false);
+            add(groove ? tr("The inner flank carries the load over the whole turn.")
+                       : tr("The first plate carries the load over the whole turn."),
+                std::nullopt, false);
         }
         for (const auto& [from, to] : s.liftOff) {
-            add(tr("The roller crosses to the outer flank at %1 and back at %2")
+            add((groove ? tr("The roller crosses to the outer flank at %1 and back at %2")
+                        : tr("The second roller takes the load over at %1 and gives it back at "
+                             "%2"))
                     .arg(formatRadians(from), formatRadians(to)),
                 from, false);
         }
-        if (s.maxNormalOuter && s.maxNormalOuterAt) {
-            add(tr("Largest normal force on the outer flank: %1 at %2")
-                    .arg(formatQuantity(DisplayQuantity::Force, *s.maxNormalOuter),
-                         formatRadians(*s.maxNormalOuterAt)),
-                *s.maxNormalOuterAt, false);
+        if (s.maxNormalSecond && s.maxNormalSecondAt) {
+            add((groove ? tr("Largest normal force on the outer flank: %1 at %2")
+                        : tr("Largest normal force on the second roller: %1 at %2"))
+                    .arg(formatQuantity(DisplayQuantity::Force, *s.maxNormalSecond),
+                         formatRadians(*s.maxNormalSecondAt)),
+                *s.maxNormalSecondAt, false);
         }
-        if (s.maxStressOuter && s.maxStressOuterAt) {
-            const bool over = m.allowableMpa && *s.maxStressOuter > *m.allowableMpa;
+        if (s.maxStressSecond && s.maxStressSecondAt) {
+            const bool over = m.allowableMpa && *s.maxStressSecond > *m.allowableMpa;
             add(m.allowableMpa
-                    ? tr("Largest contact stress on the outer flank: %1 at %2, %3 % of the "
-                         "allowable %4")
-                          .arg(formatQuantity(DisplayQuantity::Stress, *s.maxStressOuter),
-                               formatRadians(*s.maxStressOuterAt),
+                    ? (groove ? tr("Largest contact stress on the outer flank: %1 at %2, %3 % of "
+                                   "the allowable %4")
+                              : tr("Largest contact stress on the second plate: %1 at %2, %3 % "
+                                   "of the allowable %4"))
+                          .arg(formatQuantity(DisplayQuantity::Stress, *s.maxStressSecond),
+                               formatRadians(*s.maxStressSecondAt),
                                formatQuantity(DisplayQuantity::Ratio,
-                                              100.0 * *s.maxStressOuter / *m.allowableMpa),
+                                              100.0 * *s.maxStressSecond / *m.allowableMpa),
                                formatQuantity(DisplayQuantity::Stress, *m.allowableMpa))
-                    : tr("Largest contact stress on the outer flank: %1 at %2")
-                          .arg(formatQuantity(DisplayQuantity::Stress, *s.maxStressOuter),
-                               formatRadians(*s.maxStressOuterAt)),
-                *s.maxStressOuterAt, over);
+                    : (groove ? tr("Largest contact stress on the outer flank: %1 at %2")
+                              : tr("Largest contact stress on the second plate: %1 at %2"))
+                          .arg(formatQuantity(DisplayQuantity::Stress, *s.maxStressSecond),
+                               formatRadians(*s.maxStressSecondAt)),
+                *s.maxStressSecondAt, over);
         }
     } else {
         if (s.liftOff.empty()) {
@@ -367,8 +377,9 @@ void ForcesPanel::showSummary(const ComputeResult& r) {
                      formatQuantity(load, preload)),
             s.minPreloadAt, preload < s.minPreload);
     }
-    add((m.grooved() ? tr("Largest normal force on the inner flank: %1 at %2")
-                     : tr("Largest normal force: %1 at %2"))
+    add((m.grooved()     ? tr("Largest normal force on the inner flank: %1 at %2")
+         : m.conjugate() ? tr("Largest normal force on the first roller: %1 at %2")
+                         : tr("Largest normal force: %1 at %2"))
             .arg(formatQuantity(DisplayQuantity::Force, s.maxNormal), formatRadians(s.maxNormalAt)),
         s.maxNormalAt, false);
     add(tr("Peak torque on the camshaft: %1 at %2; RMS %3")
@@ -382,7 +393,10 @@ void ForcesPanel::showSummary(const ComputeResult& r) {
         if (m.allowableMpa) {
             add((m.grooved() ? tr("Largest contact stress on the inner flank: %1 at %2, %3 % of "
                                   "the allowable %4")
-                             : tr("Largest contact stress: %1 at %2, %3 % of the allowable %4"))
+                 : m.conjugate()
+                     ? tr("Largest contact stress on the first plate: %1 at %2, %3 % of the "
+                          "allowable %4")
+                     : tr("Largest contact stress: %1 at %2, %3 % of the allowable %4"))
                     .arg(formatQuantity(DisplayQuantity::Stress, *s.maxStress),
                          formatRadians(*s.maxStressAt),
                          formatQuantity(DisplayQuantity::Ratio,
@@ -392,7 +406,10 @@ void ForcesPanel::showSummary(const ComputeResult& r) {
         } else {
             add((m.grooved() ? tr("Largest contact stress on the inner flank: %1 at %2 (no "
                                   "allowable stress given)")
-                             : tr("Largest contact stress: %1 at %2 (no allowable stress given)"))
+                 : m.conjugate()
+                     ? tr("Largest contact stress on the first plate: %1 at %2 (no allowable "
+                          "stress given)")
+                     : tr("Largest contact stress: %1 at %2 (no allowable stress given)"))
                     .arg(formatQuantity(DisplayQuantity::Stress, *s.maxStress),
                          formatRadians(*s.maxStressAt)),
                 *s.maxStressAt, false);

@@ -11,10 +11,15 @@
 namespace cam {
 ConjugatePoint conjugatePoint(const FollowerModel& first, const ConjugateYoke& yoke, double phi) {
     const FollowerState st = first.at(phi, 1.0);
+    return conjugatePointOf(phi, {st.sPhi[0], st.sPhi[1], st.sPhi[2]}, first.spec().offset, yoke);
+}
+
+ConjugatePoint conjugatePointOf(double phi, const std::array<double, 3>& sPhi, double offset,
+                                const ConjugateYoke& yoke) {
     const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), n(-u.y(), u.x());
-    const double e = first.spec().offset;
+    const double e = offset;
     // P = a·u + e·n with a = s − D; u' = n, n' = −u.
-    const double a = st.sPhi[0] - yoke.distanceMm, a1 = st.sPhi[1], a2 = st.sPhi[2];
+    const double a = sPhi[0] - yoke.distanceMm, a1 = sPhi[1], a2 = sPhi[2];
     ConjugatePoint out;
     out.centre = a * u + e * n;
     out.behind = -a;

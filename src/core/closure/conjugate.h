@@ -9,6 +9,7 @@
 /// plate is that path offset towards the cam centre by the second roller's radius, fitted by
 /// G1 arcs within the tolerance (design/arc_fit.h, the synthesis machinery).
 
+#include <array>
 #include <atomic>
 #include <optional>
 #include <vector>
@@ -27,11 +28,14 @@ struct ConjugateYoke {
     double distanceMm = 0.0;      ///< from the first roller's centre, back along the line
     double rollerRadiusMm = 0.0;  ///< the second roller's radius
 
-    /// @brief The project's second roller (`closure: conjugate`); none for another closure.
+    /// @brief The follower's second roller (`closure: conjugate`); none for another closure.
+    [[nodiscard]] static std::optional<ConjugateYoke> of(const FollowerSpec& follower) {
+        if (!follower.conjugate()) return std::nullopt;
+        return ConjugateYoke{follower.conjugateDistance, follower.conjugateRadius};
+    }
+    /// @brief The project's second roller; none without a follower or for another closure.
     [[nodiscard]] static std::optional<ConjugateYoke> of(const Project& project) {
-        if (!project.follower || !project.follower->conjugate()) return std::nullopt;
-        return ConjugateYoke{project.follower->conjugateDistance,
-                             project.follower->conjugateRadius};
+        return project.follower ? of(*project.follower) : std::nullopt;
     }
 };
 
@@ -83,6 +87,11 @@ struct ConjugatePoint {
 };
 [[nodiscard]] ConjugatePoint conjugatePoint(const FollowerModel& first, const ConjugateYoke& yoke,
                                             double phi);
+/// @brief The same from the first roller's s(φ) and its first two derivatives by φ (mm, per
+/// rad) on a line at offset `offset` (mm): what a sampled turn holds (FollowerTurn's s, v/ω,
+/// a/ω²).
+[[nodiscard]] ConjugatePoint conjugatePointOf(double phi, const std::array<double, 3>& sPhi,
+                                              double offset, const ConjugateYoke& yoke);
 
 /// @brief How many equal steps of the turn conjugateProblems checks the second roller at.
 inline constexpr int kConjugateCheckSamples = 3600;

@@ -25,6 +25,11 @@ double contactCurvature(const ForceModel& m, double rhoProfile, bool outer) {
     return m.followerCurvature - (std::abs(rho) < kInf ? 1.0 / rho : 0.0);
 }
 
+/// The second roller's contact on a conjugate pair's second plate: 1/ρ_plate + 1/ρ₂.
+double secondCurvature(const ForceModel& m, double rhoPlate) {
+    return (std::abs(rhoPlate) < kInf ? 1.0 / rhoPlate : 0.0) + m.secondFollowerCurvature;
+}
+
 }  // namespace
 
 ForceModel ForceModel::of(const DynamicsSpec& d, const FollowerSpec& follower) {
@@ -60,6 +65,9 @@ ForceModel ForceModel::of(const DynamicsSpec& d, const FollowerSpec& follower) {
     if (follower.grooved() && follower.type == FollowerType::Roller) {
         m.grooveWidthMm = 2.0 * follower.radius + follower.grooveClearance;
     }
+    m.yoke = ConjugateYoke::of(follower);
+    m.offsetMm = follower.offset;
+    if (m.yoke && m.hasStress) m.secondFollowerCurvature = 1.0 / m.yoke->rollerRadiusMm;
     return m;
 }
 
@@ -68,22 +76,27 @@ ForcePoint forceAt(const ForceModel& m, const ForceMotion& motion, double omega)
     ForcePoint f;
     f.load = m.mass * d2 * omega * omega + m.damping * d1 * omega + m.rate * lift + m.preload +
              m.external;
-    const double cosAlpha = std::cos(motion.pressureAngle);
+    // A conjugate pair's second roller carries a negative load, at its own pressure angle.
+    const bool second = m.conjugate() && f.load < 0.0 && motion.second;
+    const double alpha = second ? motion.second->pressureAngle : motion.pressureAngle;
+    const double cosAlpha = std::cos(alpha);
     if (m.swinging) {
         f.normal = f.load / (m.armLength * cosAlpha);
         f.lateral = kNaN;
     } else {
         f.normal = f.load / cosAlpha;
-        f.lateral = f.normal * std::sin(motion.pressureAngle);
+        f.lateral = f.normal * std::sin(alpha);
     }
     f.torque = f.load * d1;
     f.power = f.torque * omega;
     f.stress = f.halfWidth = f.shear = kNaN;
-    if (m.hasStress && (f.normal >= 0.0 || m.grooved())) {
+    if (m.hasStress && (f.normal >= 0.0 || m.grooved() || second)) {
         // 1/R' = 1/ρ_profile + 1/ρ_f (ρ_profile < 0 where the profile is concave). On a groove's
-        // outer flank the roller touches it from the other side: 1/R' = 1/ρ_f − 1/ρ_outer.
+        // outer flank the roller touches it from the other side: 1/R' = 1/ρ_f − 1/ρ_outer; the
+        // second roller of a conjugate pair touches its plate as the first does the first.
         const bool outer = f.normal < 0.0;
-        const double curvature = contactCurvature(m, motion.rhoProfile, outer);
+        const double curvature = second ? secondCurvature(m, motion.second->rhoPlate)
+                                        : contactCurvature(m, motion.rhoProfile, outer);
         const double normal = std::abs(f.normal);
         if (curvature > 0.0) {
             f.stress = std::sqrt(normal * m.modulusMpa * curvature / (kPi * m.widthMm));
@@ -102,7 +115,17 @@ ForcePoint forceAt(const ForceModel& m, const ForceMotion& motion, double omega)
 ForceMotion forceMotion(const FollowerModel& follower, const FollowerState& state) {
     const std::array<double, 4> l = follower.liftPhi(state);
     const double unit = follower.oscillating() ? kPi / 180.0 : 1e-3;  // deg → rad, mm → m
-    return {{l[0] * unit, l[1] * unit, l[2] * unit}, state.pressureAngle, state.rhoProfile};
+    ForceMotion motion{{l[0] * unit, l[1] * unit, l[2] * unit},
+                       state.pressureAngle,
+                       state.rhoProfile,
+                       std::nullopt};
+    if (const auto yoke = ConjugateYoke::of(follower.spec())) {
+        const ConjugatePoint p =
+            conjugatePointOf(state.phi, {state.sPhi[0], state.sPhi[1], state.sPhi[2]},
+                             follower.spec().offset, *yoke);
+        motion.second = ForceMotion::Second{p.pressureAngle, p.rhoPlate};
+    }
+    return motion;
 }
 
 ForceMotion designForceMotion(const MotionDesign& design, const ExactProfile& profile, double phi,
@@ -155,6 +178,16 @@ double preloadNeededAt(const ForceModel& m, const ForceMotion& motion, double om
 
 namespace {
 
+/// A conjugate pair's second roller at sample k of a turn (φ_k = 2π·k/n in the turning
+/// direction): from the first's s and its φ-derivatives v/ω and a/ω².
+ConjugatePoint secondOfSample(double offset, const ConjugateYoke& yoke, const FollowerTurn& turn,
+                              std::size_t k, double omega) {
+    const double step = (omega < 0.0 ? -kTwoPi : kTwoPi) / static_cast<double>(turn.size());
+    return conjugatePointOf(step * static_cast<double>(k),
+                            {turn.s[k], turn.v[k] / omega, turn.a[k] / (omega * omega)}, offset,
+                            yoke);
+}
+
 ForceMotion sampleMotion(const FollowerModel& follower, const FollowerTurn& turn, std::size_t k,
                          double omega) {
     const double q = turn.s[k], v = turn.v[k], a = turn.a[k];
@@ -168,6 +201,10 @@ ForceMotion sampleMotion(const FollowerModel& follower, const FollowerTurn& turn
     }
     motion.pressureAngle = turn.pressureAngle[k];
     motion.rhoProfile = turn.rhoProfile[k];
+    if (const auto yoke = ConjugateYoke::of(follower.spec())) {
+        const ConjugatePoint p = secondOfSample(follower.spec().offset, *yoke, turn, k, omega);
+        motion.second = ForceMotion::Second{p.pressureAngle, p.rhoPlate};
+    }
     return motion;
 }
 
@@ -182,13 +219,20 @@ ForcePoint ForceTurn::point(std::size_t k, const ForceModel& model, const Follow
     ForcePoint f;
     f.load = load[k];
     f.normal = normal[k];
-    f.lateral = model.swinging ? kNaN : normal[k] * std::sin(turn.pressureAngle[k]);
     f.torque = torque[k];
     f.power = torque[k] * omega;
     f.stress = stress[k];
     f.shear = 0.30 * stress[k];
-    const double curvature =
-        contactCurvature(model, turn.rhoProfile[k], model.grooved() && normal[k] < 0.0);
+    double alpha = turn.pressureAngle[k];
+    double curvature = 0.0;
+    if (model.conjugate() && normal[k] < 0.0) {
+        const ConjugatePoint p = secondOfSample(model.offsetMm, *model.yoke, turn, k, omega);
+        alpha = p.pressureAngle;
+        curvature = secondCurvature(model, p.rhoPlate);
+    } else {
+        curvature = contactCurvature(model, turn.rhoProfile[k], model.grooved() && normal[k] < 0.0);
+    }
+    f.lateral = model.swinging ? kNaN : normal[k] * std::sin(alpha);
     f.halfWidth = !std::isfinite(stress[k]) ? kNaN
                   : curvature > 0.0         ? 2.0 * stress[k] / (model.modulusMpa * curvature)
                                             : kInf;
@@ -237,6 +281,22 @@ void grooveStressesOfTurn(const double* normal, const double* rhoProfile, double
     }
 }
 
+/// A conjugate pair's turn: where the load is negative the second roller carries it, at its
+/// own pressure angle, on the second plate's curvature (forceAt); elsewhere as spring-closed.
+void conjugateForcesOfTurn(const ForceModel& m, const FollowerTurn& turn, double omega,
+                           ForceTurn& out) {
+    const double scale = m.hasStress ? m.modulusMpa / (kPi * m.widthMm) : 0.0;
+    for (std::size_t k = 0; k < turn.size(); ++k) {
+        if (!(out.load[k] < 0.0)) continue;
+        const ConjugatePoint p = secondOfSample(m.offsetMm, *m.yoke, turn, k, omega);
+        out.normal[k] = out.load[k] / std::cos(p.pressureAngle);
+        if (m.hasStress) {
+            const double curvature = secondCurvature(m, p.rhoPlate);
+            out.stress[k] = std::sqrt(std::max(-out.normal[k] * curvature, 0.0) * scale);
+        }
+    }
+}
+
 }  // namespace
 
 void forcesOfTurn(const ForceModel& model, const FollowerModel& follower, const FollowerTurn& turn,
@@ -263,6 +323,7 @@ void forcesOfTurn(const ForceModel& model, const FollowerModel& follower, const 
     } else {
         std::fill(out.stress.begin(), out.stress.end(), kNaN);
     }
+    if (model.conjugate()) conjugateForcesOfTurn(model, turn, omega, out);
 }
 
 namespace {
@@ -270,14 +331,14 @@ namespace {
 /// A point's stress and (in a groove, on the outer flank) normal force into the summary's
 /// extremes, at cam angle `phi`.
 void takeStress(ForceSummary& s, const ForceModel& model, const ForcePoint& f, double phi) {
-    const bool outer = model.grooved() && f.normal < 0.0;
-    if (outer && (!s.maxNormalOuter || -f.normal > *s.maxNormalOuter)) {
-        s.maxNormalOuter = -f.normal;
-        s.maxNormalOuterAt = phi;
+    const bool outer = model.formClosed() && f.normal < 0.0;
+    if (outer && (!s.maxNormalSecond || -f.normal > *s.maxNormalSecond)) {
+        s.maxNormalSecond = -f.normal;
+        s.maxNormalSecondAt = phi;
     }
     if (!std::isfinite(f.stress)) return;
-    std::optional<double>& peak = outer ? s.maxStressOuter : s.maxStress;
-    std::optional<double>& at = outer ? s.maxStressOuterAt : s.maxStressAt;
+    std::optional<double>& peak = outer ? s.maxStressSecond : s.maxStress;
+    std::optional<double>& at = outer ? s.maxStressSecondAt : s.maxStressAt;
     if (!peak || f.stress > *peak) {
         peak = f.stress;
         at = phi;
@@ -396,8 +457,8 @@ ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follo
             forceAt(model, forceMotion(follower, follower.at(s.peakTorqueAt, omega)), omega).torque;
     }
     s.peakPower = s.peakTorque * omega;  // P = T·ω: its peak is the torque's
-    // In a groove each flank's own: a sample of the other flank does not count.
-    const auto onOuter = [&](const ForcePoint& f) { return model.grooved() && f.normal < 0.0; };
+    // Form-closed, each contact's own: a sample of the other one does not count.
+    const auto onOuter = [&](const ForcePoint& f) { return model.formClosed() && f.normal < 0.0; };
     if (s.maxStress) {
         double stress = *s.maxStress, at = *s.maxStressAt;
         refineMax(
@@ -409,23 +470,23 @@ ForceSummary summarizeForces(const ForceModel& model, const FollowerModel& follo
         s.maxStress = stress;
         s.maxStressAt = at;
     }
-    if (s.maxStressOuter) {
-        double stress = *s.maxStressOuter, at = *s.maxStressOuterAt;
+    if (s.maxStressSecond) {
+        double stress = *s.maxStressSecond, at = *s.maxStressSecondAt;
         refineMax(
             [&](const ForceMotion& m) {
                 const ForcePoint f = forceAt(model, m, omega);
                 return std::isfinite(f.stress) && onOuter(f) ? f.stress : -kInf;
             },
             stress, at);
-        s.maxStressOuter = stress;
-        s.maxStressOuterAt = at;
+        s.maxStressSecond = stress;
+        s.maxStressSecondAt = at;
     }
-    if (s.maxNormalOuter) {
-        double normal = *s.maxNormalOuter, at = *s.maxNormalOuterAt;
+    if (s.maxNormalSecond) {
+        double normal = *s.maxNormalSecond, at = *s.maxNormalSecondAt;
         refineMax([&](const ForceMotion& m) { return -forceAt(model, m, omega).normal; }, normal,
                   at);
-        s.maxNormalOuter = normal;
-        s.maxNormalOuterAt = at;
+        s.maxNormalSecond = normal;
+        s.maxNormalSecondAt = at;
     }
     // The runs of samples where the load is negative, a run across the turn's end as one.
     std::size_t k = 0;

@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "closure/conjugate.h"
 #include "design/exact_profile.h"
 #include "design/motion_design.h"
 #include "follower/follower.h"
@@ -42,6 +43,16 @@ struct ForceModel {
     /// an arc table; the roller's shift by the clearance is neglected there and in the motion).
     double grooveWidthMm = 0.0;
     [[nodiscard]] bool grooved() const { return grooveWidthMm > 0.0; }
+    /// A conjugate pair's second roller (closure/conjugate.h): where the load turns negative
+    /// it carries it, pressed on the second plate at its own pressure angle and on the plate's
+    /// curvature there (ForceMotion::second), with its own radius (1/ρ₂ in 1/mm).
+    std::optional<ConjugateYoke> yoke;
+    double secondFollowerCurvature = 0.0;
+    double offsetMm = 0.0;  ///< the line's offset e, on which the second roller runs too
+    [[nodiscard]] bool conjugate() const { return yoke.has_value(); }
+    /// @brief Form-closed: the follower never leaves the cam; a negative load is carried by a
+    /// second contact (a groove's outer flank, a conjugate pair's second roller).
+    [[nodiscard]] bool formClosed() const { return grooved() || conjugate(); }
 
     /// @brief From the project's `dynamics` (absent keys take their defaults) and follower.
     [[nodiscard]] static ForceModel of(const DynamicsSpec& dynamics, const FollowerSpec& follower);
@@ -55,6 +66,13 @@ struct ForceMotion {
     std::array<double, 3> lift{};
     double pressureAngle = 0.0;
     double rhoProfile = 0.0;
+    /// A conjugate pair's second roller: its pressure angle (rad) and the second plate's
+    /// radius of curvature at its contact (mm, positive where convex, +∞ where straight).
+    struct Second {
+        double pressureAngle = 0.0;
+        double rhoPlate = 0.0;
+    };
+    std::optional<Second> second;
 };
 
 /// @brief The forces at one angle. Units: N, N·m, W, MPa, mm.
@@ -66,7 +84,8 @@ struct ForcePoint {
     double power = 0.0;    ///< W
     /// Hertz p_max, the contact half-width a and the largest subsurface shear (about 0.30·p_max
     /// at 0.786·a); NaN for a knife edge, without width or materials, or where contact is lost.
-    /// In a groove, where the normal force is negative, those of the outer flank's contact.
+    /// Form-closed, where the normal force is negative, those of the second contact (a
+    /// groove's outer flank, a conjugate pair's second roller).
     double stress = 0.0, halfWidth = 0.0, shear = 0.0;
 };
 
@@ -74,7 +93,7 @@ struct ForcePoint {
 [[nodiscard]] ForcePoint forceAt(const ForceModel& model, const ForceMotion& motion, double omega);
 
 /// @brief The state's motion in the forces' units (the follower's lift and its φ-derivatives
-/// from `follower`).
+/// from `follower`; a conjugate pair's second roller at the same angle).
 [[nodiscard]] ForceMotion forceMotion(const FollowerModel& follower, const FollowerState& state);
 
 /// @brief The motion the design's law asks for at cam angle φ, as the forces need it: its
@@ -106,7 +125,7 @@ struct ForceSummary {
     /// rad ranges [from, to] where the load < 0 (its first and last angle with load < 0): the
     /// follower leaves the cam there — in a groove, the roller crosses its clearance at `from`
     /// and the outer flank carries the load until `to` (the crossovers a designer moves into
-    /// stretches of low velocity).
+    /// stretches of low velocity); on a conjugate pair the second roller carries it.
     std::vector<std::array<double, 2>> liftOff;
     double jumpSpeed = 0.0;                     ///< rad/s, the smallest over the turn (+∞: none)
     double jumpSpeedAt = 0.0;                   ///< rad
@@ -117,11 +136,12 @@ struct ForceSummary {
     double rmsTorque = 0.0;                        ///< N·m over the turn
     double peakPower = 0.0;                        ///< W (largest |P|, signed)
     std::optional<double> maxStress, maxStressAt;  ///< MPa, rad; none without a contact stress
-    /// In a groove: the largest normal force on the outer flank (N, a magnitude) and its
-    /// largest contact stress (MPa), with where; none where it never carries. (maxNormal and
-    /// maxStress are then the inner flank's.)
-    std::optional<double> maxNormalOuter, maxNormalOuterAt;
-    std::optional<double> maxStressOuter, maxStressOuterAt;
+    /// Form-closed: the largest normal force on the second contact — a groove's outer flank,
+    /// a conjugate pair's second roller on its plate — (N, a magnitude) and its largest
+    /// contact stress (MPa), with where; none where it never carries. (maxNormal and
+    /// maxStress are then the first contact's: the inner flank, the first plate.)
+    std::optional<double> maxNormalSecond, maxNormalSecondAt;
+    std::optional<double> maxStressSecond, maxStressSecondAt;
     /// Every joint where the load jumps by more than 1e-9 of the largest load; their one-sided
     /// values take part in every extreme above and in the lift-off ranges.
     std::vector<ForceJump> jumps;
