@@ -282,6 +282,8 @@ std::vector<CommandHelp> makeTable() {
           {"--depth", "MM",
            "gcode: the depth to cut to (default " + formatNumber(kDefaultGcodeDepthMm) + " mm)"},
           {"--step-down", "MM", "gcode: cut in passes at most this deep"},
+          {"--plate", "1|2",
+           "gcode: which plate of a conjugate pair to mill (default 1, the contour)"},
           {"--compensation", "",
            "gcode: program the contour itself with cutter compensation G41/G42 instead of the "
            "tool-centre path"},

@@ -11,6 +11,7 @@
 #include <QImage>
 #include <QSignalSpy>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "app_test_support.h"
@@ -156,6 +157,36 @@ TEST(PlotPictureContour, ASplineCamKeepsEqualScalesInThePdf) {
         test::run(kPython, {checker(), "pdf", out, "--title", titleOf(project, "contour"), "--size",
                             "600x900", "--text", "x [mm]", "--equal-scales"});
     EXPECT_EQ(check.exitCode, 0) << check.out << check.err;
+}
+
+TEST(PlotPictureContour, AFormClosedCamShowsItsSecondCurve) {
+    // The contour picture of a conjugate pair draws the second plate, and of a groove the
+    // outer flank, as the profile's dark grey beside the coloured profile: far more such
+    // pixels than the same disc closed by a spring (whose picture has none but the centres').
+    const std::string disc =
+        R"({"format": "camwright", "version": 1, "name": "Disc", "motion": {"period_s": 2},
+          "contour": [{"type": "arc", "center": [5, 0], "radius": 30, "branch": "outer",
+                       "phi_start": 0, "phi_end": 360}],
+          "follower": {"type": "roller", "radius": 4, "offset": 3 CLOSURE}})";
+    const auto grey = [&](const std::string& closure) {
+        test::TempDir dir;
+        std::string text = disc;
+        text.replace(text.find("CLOSURE"), 7, closure);
+        const std::string project = dir.file("disc.cam.json"), out = dir.file("plot.png");
+        std::ofstream(project) << text;
+        const auto r =
+            test::runCli({"export", project, "--format", "png", "--plot", "contour", "--out", out});
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        const QImage image(QString::fromStdString(out));
+        EXPECT_FALSE(image.isNull());
+        return image.isNull() ? 0 : pixelsNear(image, QColor(40, 40, 40));
+    };
+    const int spring = grey("");
+    const int pair = grey(R"(, "closure": "conjugate", "conjugate_distance_mm": 80,
+                             "conjugate_radius_mm": 5)");
+    const int groove = grey(R"(, "closure": "groove", "groove_clearance_mm": 0.5)");
+    EXPECT_GT(pair, spring + 500) << spring << " " << pair;
+    EXPECT_GT(groove, spring + 500) << spring << " " << groove;
 }
 
 TEST(PlotPictureMachining, FeedAndAxisAccelerationNeedAMachiningSection) {

@@ -987,5 +987,82 @@ TEST(CliExportGcodeGroove, AToolWiderThanTheGrooveOrTooNarrowIsRefused) {
     EXPECT_FALSE(fs::exists(out));
 }
 
+// ---- A conjugate pair: each plate its own program --------------------------------------------
+
+// The yoke on an eccentric disc (a circle of radius 30 about (5, 0)), its line offset by 3 mm:
+// the first roller (4 mm) at s = u·c + √(34² − (3 − n·c)²), the second (5 mm) 80 mm behind.
+constexpr const char* kConjugateDisc = R"json({"format": "camwright", "version": 1,
+  "name": "Conjugate disc", "motion": {"period_s": 2},
+  "contour": [{"type": "arc", "center": [5, 0], "radius": 30, "branch": "outer",
+               "phi_start": 0, "phi_end": 360}],
+  "follower": {"type": "roller", "radius": 4, "offset": 3, "closure": "conjugate",
+               "conjugate_distance_mm": 80, "conjugate_radius_mm": 5}})json";
+
+/// The second roller's centre at cam angle φ, in closed form.
+Vec2 secondRollerCentre(double phi) {
+    const Vec2 u(std::cos(phi), std::sin(phi)), n(-u.y(), u.x()), c(5.0, 0.0);
+    const double side = 3.0 - n.dot(c);
+    const double s = u.dot(c) + std::sqrt(34.0 * 34.0 - side * side);
+    return (s - 80.0) * u + 3.0 * n;
+}
+
+TEST(CliExportGcodeConjugate, TheSecondPlateIsMilledSoThatItHoldsTheSecondRoller) {
+    // --plate 2: the tool (3 mm) runs round the second plate, between it and the path of the
+    // second roller's centre (5 mm out): 2 mm from that closed-form path at every point of the
+    // loop, to the plate's fitting tolerance (0.001 mm) and the program's.
+    const test::TempDir dir;
+    const std::string project = writeProject(dir, "conjugate.cam.json", kConjugateDisc);
+    const Milled m =
+        exportAndInterpret(dir, project, {"--plate", "2", "--tool-radius", "3", "--depth", "5"});
+    EXPECT_NE(m.program.find("Conjugate disc, second plate"), std::string::npos);
+    std::vector<Vec2> path;
+    for (int k = 0; k < 72000; ++k)
+        path.push_back(secondRollerCentre(2 * std::numbers::pi * k / 72000));
+    const std::vector<Pass> passes = passesOf(m.moves);
+    ASSERT_EQ(passes.size(), 1u);
+    const Pass& pass = passes.front();
+    ASSERT_GT(pass.moves.size(), 4u);
+    double worst = 0;
+    std::size_t points = 0;
+    for (std::size_t i = 1; i + 1 < pass.moves.size(); ++i) {  // the loop, without its leads
+        for (const Vec2& q : pass.moves[i].samples(kSampleStepMm)) {
+            double d = std::numeric_limits<double>::infinity();
+            for (const Vec2& c : path) d = std::min(d, (q - c).squaredNorm());
+            // The path's samples lie 0.005 mm apart: the nearest is off by ≤ 3e-6 mm.
+            worst = std::max(worst, std::abs(std::sqrt(d) - 2.0));
+            ++points;
+        }
+    }
+    EXPECT_GT(points, 2000u);
+    EXPECT_LE(worst, 1e-3 + kTolMm);
+    ::testing::Test::RecordProperty("worst_mm", std::to_string(worst));
+    // The loop closes.
+    EXPECT_LE((pass.moves[1].start - pass.moves[pass.moves.size() - 2].end).norm(), kTolMm);
+    // --plate 1 is the contour, as without it.
+    const Milled first = exportAndInterpret(dir, project, {"--plate", "1", "--tool-radius", "3"});
+    checkProgram(first, profileOfFile(project), {3.0}, "first plate");
+}
+
+TEST(CliExportGcodeConjugate, APlateIsOneOrTwoOfAConjugatePair) {
+    const test::TempDir dir;
+    const std::string out = dir.file("cam.ngc");
+    const std::string pair = writeProject(dir, "conjugate.cam.json", kConjugateDisc);
+    const auto third = test::runCli(
+        {"export", pair, "--format", "gcode", "--out", out, "--tool-radius", "3", "--plate", "3"});
+    EXPECT_EQ(third.exitCode, 1);
+    EXPECT_NE(third.err.find("--plate: must be 1 or 2 (got '3')"), std::string::npos) << third.err;
+    const std::string single = writeProject(dir, "circle.cam.json", kCircle);
+    const auto one =
+        test::runCli({"export", single, "--format", "gcode", "--out", out, "--plate", "2"});
+    EXPECT_EQ(one.exitCode, 1);
+    EXPECT_NE(one.err.find("--plate: is for a conjugate pair"), std::string::npos) << one.err;
+    const auto dxf =
+        test::runCli({"export", pair, "--format", "dxf", "--out", out, "--plate", "2"});
+    EXPECT_EQ(dxf.exitCode, 1);
+    EXPECT_NE(dxf.err.find("--plate: is not an option of --format dxf"), std::string::npos)
+        << dxf.err;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 }  // namespace
 }  // namespace cam

@@ -312,6 +312,36 @@ TEST(CliConjugate, StateAnalyzeAndTheDxfHoldTheSecondRollerWhereTheClosedFormPut
         worst = std::max(worst, std::abs(d - 5.0));
     }
     EXPECT_LE(worst, 1e-3 + 1e-9);
+    // The SVG draws the second plate as its own path: read by svgelements (y up drawn up, so
+    // negated), its points lie 5 mm from the closed-form path of the second roller's centre.
+    const std::string svg = dir.file("pair.svg");
+    ASSERT_EQ(test::runCli({"export", project, "--format", "svg", "--out", svg}).exitCode, 0);
+    const auto points = test::run(
+        "/usr/bin/python3",
+        {"-c",
+         "import json, sys, svgelements\n"
+         "doc = svgelements.SVG.parse(sys.argv[1], reify=False)\n"
+         "plate = [e for e in doc.elements() if e.values.get('id') == 'second-plate']\n"
+         "assert len(plate) == 1\n"
+         "path = plate[0]\n"
+         "print(json.dumps([[p.x, -p.y] for p in (path.point(i / 3000) for i in range(3000))]))\n",
+         svg},
+        120);
+    ASSERT_EQ(points.exitCode, 0) << points.err;
+    std::vector<Eigen::Vector2d> path;
+    for (int k = 0; k < 36000; ++k) {
+        const double phi = 2 * std::numbers::pi * k / 36000;
+        path.push_back(secondCentre({std::cos(phi), std::sin(phi)}));
+    }
+    double svgWorst = 0.0;
+    for (const Json& p : Json::parse(points.out)) {
+        const Eigen::Vector2d q(p[0].get<double>(), p[1].get<double>());
+        double d = 1e300;
+        for (const Eigen::Vector2d& c : path) d = std::min(d, (q - c).squaredNorm());
+        svgWorst = std::max(svgWorst, std::abs(std::sqrt(d) - 5.0));
+    }
+    // The fit's 0.001 mm and the closed form's samples, 0.01° apart at 55 mm (≤ 1e-5 mm).
+    EXPECT_LE(svgWorst, 1e-3 + 1e-5);
 }
 
 TEST(CliConjugate, WithDynamicsTheSecondRollerTakesTheLoadOverWhereItTurnsNegative) {
@@ -362,6 +392,47 @@ TEST(CliConjugate, WithDynamicsTheSecondRollerTakesTheLoadOverWhereItTurnsNegati
     EXPECT_EQ(f.at("second_roller_carries_deg").size(), 1u);
     EXPECT_GT(f.at("second_roller").at("max_normal_N").get<double>(), 0.0);
     EXPECT_GT(f.at("second_roller").at("max_contact_stress_MPa").get<double>(), 0.0);
+}
+
+TEST(CliConjugate, SynthesizeReportsTheSecondPlateOfTheNewFirstOne) {
+    // The bundled cycloidal design (base radius 40 mm, lift 10 mm, an 8 mm roller) as a
+    // conjugate pair: synthesize fits the first plate and reports the second's play, within
+    // the design's tolerance; too short a yoke is a note, and the project is written anyway.
+    const test::TempDir dir;
+    Json project =
+        Json::parse(test::readFile(test::examplePath("synthesised-cycloidal-roller.cam.json")));
+    project["contour"] = Json::array();
+    project["follower"]["closure"] = "conjugate";
+    project["follower"]["conjugate_distance_mm"] = 150;
+    project["follower"]["conjugate_radius_mm"] = 8;
+    const std::string in = dir.file("design.cam.json"), out = dir.file("pair.cam.json");
+    std::ofstream(in) << project.dump(1);
+    const auto made = test::runCli({"synthesize", in, "--out", out});
+    ASSERT_EQ(made.exitCode, 0) << made.err;
+    const Json report = Json::parse(made.out);
+    const double tolerance = project.at("design").at("tolerance");
+    const Json& second = report.at("second_plate");
+    EXPECT_GT(second.at("plate_arcs").get<int>(), 4);
+    EXPECT_LE(second.at("max_play_mm").get<double>(), tolerance);
+    EXPECT_GE(second.at("min_play_mm").get<double>(), -tolerance);
+    // The same figures as analyze gives the written project.
+    const auto analyzed = test::runCli({"analyze", out});
+    ASSERT_EQ(analyzed.exitCode, 0) << analyzed.err;
+    const Json c = Json::parse(analyzed.out).at("follower").at("conjugate");
+    EXPECT_EQ(c.at("max_play_mm"), second.at("max_play_mm"));
+
+    project["follower"]["conjugate_distance_mm"] = 40;  // the roller reaches 58 mm
+    std::ofstream(in) << project.dump(1);
+    const auto short_ = test::runCli({"synthesize", in, "--out", out});
+    ASSERT_EQ(short_.exitCode, 0) << short_.err;
+    const Json shortReport = Json::parse(short_.out);
+    EXPECT_TRUE(shortReport.at("second_plate").is_null());
+    bool noted = false;
+    for (const Json& note : shortReport.at("notes")) {
+        noted |= note.get<std::string>().find("no second plate: follower.conjugate_distance_mm") !=
+                 std::string::npos;
+    }
+    EXPECT_TRUE(noted) << shortReport.dump(1);
 }
 
 }  // namespace

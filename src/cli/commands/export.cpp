@@ -129,12 +129,32 @@ int runExport(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
         }
         options.compensation = args.hasFlag("--compensation");
         options.projectName = exportName(loaded.project.name, input);
-        text = gcodeProgram(loaded.contour, options);
+        // A conjugate pair's plates are milled one by one: the second is its fitted arcs.
+        const std::optional<std::string> plate = args.option("--plate");
+        if (plate && *plate != "1" && *plate != "2") {
+            throw CliError{kUsage, "--plate", "must be 1 or 2 (got '" + *plate + "')"};
+        }
+        if (plate && !loaded.project.follower.value_or(FollowerSpec{}).conjugate()) {
+            throw CliError{kUsage, "--plate",
+                           "is for a conjugate pair; this project's follower has one plate"};
+        }
+        if (plate == "2") {
+            const ConjugatePlate second = *secondPlate(loaded, input);
+            Project alone;
+            alone.contour = second.contour;
+            auto contour = Contour::build(alone);
+            if (!contour.ok()) exportFailed(input, contour.errors());
+            options.projectName += ", second plate";
+            text = gcodeProgram(contour.value(), options);
+        } else {
+            text = gcodeProgram(loaded.contour, options);
+        }
     } else if (kind.id == ExportFormatId::Svg) {
         SvgOptions options;
         options.toleranceMm = tolerance;
         options.title = exportName(loaded.project.name, input);
         options.groove = grooveOf(loaded.project);
+        if (const auto plate = secondPlate(loaded, input)) options.secondPlate = plate->path;
         text = svgDocument(loaded.contour, options);
     } else {
         CamTableOptions options;

@@ -4,6 +4,7 @@
 
 #include "analysis/analysis.h"
 #include "cli/command_support.h"
+#include "closure/conjugate.h"
 #include "contour/contour.h"
 #include "design/synthesis.h"
 #include "evaluation/evaluation.h"
@@ -70,19 +71,42 @@ int runSynthesize(const Arguments& args, std::ostream& out, std::ostream& /*err*
     }
     Json notes = Json::array();
     for (const Diagnostic& d : r.notes) notes.push_back(d.text());
-    const Json report{{"segments", r.segments},
-                      {"max_deviation_mm", r.maxDeviationMm},
-                      {swinging ? "max_lift_error_deg" : "max_lift_error_mm", r.maxLiftError},
-                      {"max_velocity_error", r.maxVelocityError},
-                      {"max_acceleration_error", r.maxAccelerationError},
-                      {"velocity_unit", swinging ? "deg/s" : "mm/s"},
-                      {"acceleration_unit", swinging ? "deg/s^2" : "mm/s^2"},
-                      {"tolerance_mm", tolerance.value_or(project.design->tolerance)},
-                      {"acceleration_jumps", jumps},
-                      {"max_acceleration_jump", largestJump},
-                      {"jerk", jumps > 0 ? "unbounded at each acceleration jump" : "bounded"},
-                      {"notes", notes},
-                      {"out", *outPath}};
+    // A conjugate pair: the second plate for the new first one, and the play it leaves; or,
+    // as a note, why it cannot be made (the project is written all the same: its distance or
+    // second roller is the designer's to change).
+    Json second;
+    if (const auto yoke = ConjugateYoke::of(project)) {
+        const ProjectEvaluation e = evaluateProject(project);
+        Diagnostics problems = e.followerProblems;
+        if (e.follower) {
+            auto plate = conjugatePlate(*e.follower, *yoke, conjugateTolerance(project));
+            if (plate.ok()) {
+                const ConjugatePlate& p = plate.value();
+                second = {{"plate_arcs", p.fit.arcs.size()},
+                          {"max_play_mm", p.maxPlay},
+                          {"min_play_mm", p.minPlay}};
+            } else {
+                problems = plate.errors();
+            }
+        }
+        for (const Diagnostic& d : problems) {
+            notes.push_back("no second plate: " + d.text());
+        }
+    }
+    Json report{{"segments", r.segments},
+                {"max_deviation_mm", r.maxDeviationMm},
+                {swinging ? "max_lift_error_deg" : "max_lift_error_mm", r.maxLiftError},
+                {"max_velocity_error", r.maxVelocityError},
+                {"max_acceleration_error", r.maxAccelerationError},
+                {"velocity_unit", swinging ? "deg/s" : "mm/s"},
+                {"acceleration_unit", swinging ? "deg/s^2" : "mm/s^2"},
+                {"tolerance_mm", tolerance.value_or(project.design->tolerance)},
+                {"acceleration_jumps", jumps},
+                {"max_acceleration_jump", largestJump},
+                {"jerk", jumps > 0 ? "unbounded at each acceleration jump" : "bounded"},
+                {"notes", notes},
+                {"out", *outPath}};
+    if (ConjugateYoke::of(project)) report["second_plate"] = second;
     writeProjectOut(*outPath, project, report);
     printJson(out, report);
     return kOk;

@@ -15,7 +15,8 @@ constexpr Names kCsvOptions[] = {"--points"};
 constexpr Names kDxfOptions[] = {"--tolerance", "--tool-radius"};
 constexpr Names kDxfFlags[] = {"--polyline", "--spline-entities", "--centres"};
 constexpr Names kSvgOptions[] = {"--tolerance"};
-constexpr Names kGcodeOptions[] = {"--tolerance", "--tool-radius", "--depth", "--step-down"};
+constexpr Names kGcodeOptions[] = {"--tolerance", "--tool-radius", "--depth", "--step-down",
+                                   "--plate"};
 constexpr Names kGcodeFlags[] = {"--compensation"};
 constexpr Names kCamTableOptions[] = {"--points", "--dialect"};
 constexpr Names kPictureOptions[] = {"--plot", "--size"};

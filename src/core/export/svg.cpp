@@ -103,12 +103,16 @@ Result<std::string> svgDocument(const Contour& contour, const SvgOptions& option
     if (!grooved.ok()) return grooved.errors();
     const std::optional<GrooveFlanks>& groove = grooved.value();
 
-    // The drawing's box: the profile, a groove's outer flank (arcs through their extreme
-    // points) and the rotation centre.
+    // The drawing's box: the profile, a groove's outer flank or a second plate (arcs through
+    // their extreme points) and the rotation centre.
     Eigen::Vector2d lo = Eigen::Vector2d::Zero(), hi = Eigen::Vector2d::Zero();
     std::vector<PathSegment> drawn = pieces;
     if (groove)
         drawn.insert(drawn.end(), groove->outer.segments.begin(), groove->outer.segments.end());
+    if (options.secondPlate) {
+        drawn.insert(drawn.end(), options.secondPlate->segments.begin(),
+                     options.secondPlate->segments.end());
+    }
     for (const PathSegment& s : drawn) {
         const int samples = s.kind == PathSegment::Kind::Arc ? 64 : 1;
         for (int i = 0; i <= samples; ++i) {
@@ -165,6 +169,9 @@ Result<std::string> svgDocument(const Contour& contour, const SvgOptions& option
     if (groove) {
         appendClosedPath(out, groove->outer.segments, "outer-flank", "profile");
         appendClosedPath(out, groove->pitch.segments, "pitch", "pitch");
+    }
+    if (options.secondPlate) {
+        appendClosedPath(out, options.secondPlate->segments, "second-plate", "profile");
     }
     appendCross(out, Eigen::Vector2d::Zero(), mark, "centre");
     for (std::size_t k = 0; k < contour.size(); ++k) {

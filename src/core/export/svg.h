@@ -24,6 +24,9 @@ struct SvgOptions {
     /// A grooved cam (closure/groove.h): its outer flank as <path id="outer-flank"> beside the
     /// profile (the inner flank) and the roller's pitch curve dashed (<path id="pitch">).
     std::optional<GrooveSize> groove;
+    /// A conjugate pair (closure/conjugate.h): its second plate's fitted lines and arcs as
+    /// <path id="second-plate">, drawn as the profile (the first plate) is.
+    std::optional<ToolPath> secondPlate;
 };
 
 /// @brief The SVG text: width, height and viewBox in mm (1 user unit = 1 mm); y up is drawn up
