@@ -1608,7 +1608,7 @@
 <context>
     <name>ExportFormat</name>
     <message>
-        <location filename="../../src/core/export/export_formats.cpp" line="+26" />
+        <location filename="../../src/core/export/export_formats.cpp" line="+27" />
         <source>CSV</source>
         <translation>CSV</translation>
     </message>
@@ -2964,12 +2964,12 @@
     <name>cam::ExportDialog</name>
     <message>
         <location filename="../../src/app/export/export_dialog.cpp" line="+55" />
-        <location line="+299" />
+        <location line="+309" />
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location line="-290" />
+        <location line="-300" />
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
@@ -2986,19 +2986,19 @@
     <message>
         <location line="+14" />
         <location line="+25" />
-        <location line="+48" />
+        <location line="+58" />
         <source>Splines become tangent arc pairs within this distance</source>
         <translation>Splines werden zu tangentialen Bogenpaaren innerhalb dieses Abstands</translation>
     </message>
     <message>
-        <location line="-72" />
+        <location line="-82" />
         <location line="+25" />
-        <location line="+48" />
+        <location line="+58" />
         <source>Spline &amp;tolerance:</source>
         <translation>Spline-&amp;Toleranz:</translation>
     </message>
     <message>
-        <location line="-72" />
+        <location line="-82" />
         <source>One closed &amp;polyline with bulges</source>
         <translation>Eine geschlossene &amp;Polylinie mit Bögen</translation>
     </message>
@@ -3034,12 +3034,12 @@
         <translation>Der Werkzeugradius (vorgegeben aus dem Bearbeitungsabschnitt des Projekts)</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+37" />
         <source>Total depth of cut below the stock's top (Z0)</source>
         <translation>Gesamte Schnitttiefe unter der Rohteiloberkante (Z0)</translation>
     </message>
     <message>
-        <location line="-57" />
+        <location line="-67" />
         <source>Splines as SP&amp;LINE entities</source>
         <translation>Splines als SP&amp;LINE-Elemente</translation>
     </message>
@@ -3064,7 +3064,27 @@
         <translation>Der Radius des Fräsers. Die halbe Nutbreite (die Vorgabe) fräst die Nut in einem Gang; ein schmaleres Werkzeug, mindestens ein Drittel davon, schruppt ihre Mittellinie und schlichtet jede Flanke</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+9" />
+        <source>First plate (the contour)</source>
+        <translation>Erste Scheibe (die Kontur)</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Second plate</source>
+        <translation>Zweite Scheibe</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Which plate of the conjugate pair this program mills: the second is fitted by arcs within the design's tolerance, as the window draws it</source>
+        <translation>Welche Scheibe des Kurvenpaars dieses Programm fräst: Die zweite wird durch Bögen innerhalb der Toleranz des Entwurfs angenähert, wie das Fenster sie zeichnet</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>P&amp;late:</source>
+        <translation>&amp;Scheibe:</translation>
+    </message>
+    <message>
+        <location line="+7" />
         <source>Feed along the profile; plunges go at half. At most the project's feed limit (Machining dock): %1 mm/min</source>
         <translation>Vorschub entlang des Profils; Eintauchen mit der Hälfte. Höchstens die Vorschubgrenze des Projekts (Dock Zerspanung): %1 mm/min</translation>
     </message>
@@ -3159,7 +3179,7 @@
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location line="+137" />
+        <location line="+138" />
         <source>Name the file to write.</source>
         <translation>Geben Sie die zu schreibende Datei an.</translation>
     </message>

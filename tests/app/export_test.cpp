@@ -147,6 +147,67 @@ TEST(ExportInWindow, EveryFormatWritesWhatTheCliWrites) {
     }
 }
 
+TEST(ExportInWindow, AConjugatePairWritesWhatTheCliWrites) {
+    // Both plates in the drawings, and the second plate's program: byte for byte the CLI's.
+    test::TempDir dir;
+    const std::string project = dir.file("pair.cam.json");
+    std::ofstream(project) << R"({"format": "camwright", "version": 1, "name": "Pair",
+      "motion": {"period_s": 2},
+      "contour": [{"type": "arc", "center": [5, 0], "radius": 30, "branch": "outer",
+                   "phi_start": 0, "phi_end": 360}],
+      "follower": {"type": "roller", "radius": 4, "offset": 3, "closure": "conjugate",
+                   "conjugate_distance_mm": 80, "conjugate_radius_mm": 5}})";
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(QString::fromStdString(project)).isEmpty());
+    const FormatCase cases[] = {
+        {"dxf", {"--format", "dxf"}, [](ExportRequest& r) { r.format = ExportFormat::Dxf; }},
+        {"svg",
+         {"--format", "svg"},
+         [](ExportRequest& r) {
+             r.format = ExportFormat::Svg;
+             r.svg.title = "Pair";
+         }},
+        {"gcode-plate-2",
+         {"--format", "gcode", "--tool-radius", "3", "--depth", "3", "--plate", "2"},
+         [](ExportRequest& r) {
+             r.format = ExportFormat::Gcode;
+             r.gcodePlate = 2;
+             r.gcode.toolRadiusMm = 3.0;
+             r.gcode.depthMm = 3.0;
+             r.gcode.feedMmMin = MachiningSpec{}.feedMax * 60.0;
+             r.gcode.projectName = "Pair";
+         }},
+    };
+    for (const FormatCase& c : cases) {
+        const std::string cliFile = dir.file(std::string("cli-") + c.name);
+        std::vector<std::string> args{"export", project};
+        args.insert(args.end(), c.cliOptions.begin(), c.cliOptions.end());
+        args.insert(args.end(), {"--out", cliFile});
+        const auto cli = test::runCli(args);
+        ASSERT_EQ(cli.exitCode, 0) << c.name << ": " << cli.err;
+        ExportRequest request;
+        c.setUp(request);
+        request.path = QString::fromStdString(dir.file(std::string("app-") + c.name));
+        const QString problem = exportAndWait(window, request);
+        ASSERT_TRUE(problem.isEmpty()) << c.name << ": " << problem.toStdString();
+        const std::string written = test::readFile(request.path.toStdString());
+        EXPECT_EQ(written, test::readFile(cliFile)) << c.name;
+    }
+    EXPECT_NE(test::readFile(dir.file("app-dxf")).find("PLATE_2"), std::string::npos);
+    EXPECT_NE(test::readFile(dir.file("app-svg")).find("id=\"second-plate\""), std::string::npos);
+    // The dialog offers the plate for a conjugate pair only.
+    ExportDialog pair(window.document()->project(), "pair", {});
+    auto* plate = pair.findChild<QComboBox*>("gcodePlate");
+    ASSERT_NE(plate, nullptr);
+    plate->setCurrentIndex(1);
+    pair.setFormat(ExportFormat::Gcode);
+    EXPECT_EQ(pair.request().gcodePlate, 2);
+    Project single = window.document()->project();
+    single.follower->closure = Closure::Spring;
+    ExportDialog one(single, "single", {});
+    EXPECT_EQ(one.findChild<QComboBox*>("gcodePlate"), nullptr);
+}
+
 TEST(ExportInWindow, ACsvWithForcesWritesWhatTheCliWrites) {
     // A project with dynamics: the forces' columns follow the follower's, from the app as
     // from the CLI (cli_tests CliForces.* check the numbers).

@@ -315,5 +315,54 @@ TEST(ForcesPanel, InAGrooveBeyondTheJumpSpeedTheRollerCrossesToTheOuterFlank) {
     EXPECT_EQ(panel->problemCount(), 0);
 }
 
+TEST(ForcesPanel, OnAConjugatePairBeyondTheJumpSpeedTheSecondRollerTakesTheLoad) {
+    // The same cam as a conjugate pair: the second roller takes the load over in the ranges
+    // the spring would lose it, and the dock names the handovers and the second plate's
+    // stress, each roller's own.
+    MainWindow window;
+    ASSERT_TRUE(openWithForces(window, kSpringCam));
+    const double jump = window.engine()->latestResult()->forces->summary.jumpSpeed;
+    window.document()->undoStack()->push(
+        new SetMotion(window.document(), MotionSpec{SpeedUnit::OmegaRadS, 1.05 * jump}));
+    ASSERT_TRUE(window.waitForCurrentResult(20000));
+    const auto liftOff = window.engine()->latestResult()->forces->summary.liftOff;
+    ASSERT_FALSE(liftOff.empty());
+    FollowerSpec pair = *window.document()->project().follower;
+    pair.closure = Closure::Conjugate;
+    pair.conjugateDistance = 150.0;
+    pair.conjugateRadius = pair.radius;
+    window.document()->undoStack()->push(new SetFollower(window.document(), pair));
+    ASSERT_TRUE(window.waitForCurrentResult(20000));
+    const ComputeResultPtr r = window.engine()->latestResult();
+    ASSERT_TRUE(r->valid()) << (r->problems.empty() ? "" : r->problems.front().text());
+    const ForceSummary& s = r->forces->summary;
+    ASSERT_EQ(s.liftOff.size(), liftOff.size());
+    for (std::size_t k = 0; k < liftOff.size(); ++k) EXPECT_EQ(s.liftOff[k], liftOff[k]);
+    ForcesPanel* panel = window.forcesPanel();
+    const QStringList lines = panel->resultLines();
+    EXPECT_EQ(lines.filter("The second roller takes the load over").size(),
+              static_cast<qsizetype>(liftOff.size()))
+        << lines.join("\n").toStdString();
+    EXPECT_EQ(lines.filter("leaves the cam").size(), 0);
+    EXPECT_EQ(lines.filter("Jump speed").size(), 0);
+    ASSERT_TRUE(s.maxNormalSecond);
+    EXPECT_EQ(lines.filter("Largest normal force on the second roller").size(), 1);
+    EXPECT_EQ(lines.filter("Largest normal force on the first roller").size(), 1);
+    if (s.maxStressSecond) {
+        EXPECT_EQ(lines.filter("Largest contact stress on the second plate").size(), 1);
+    }
+    // The second roller's normal force where it carries most is the load over its own
+    // pressure angle (the core's ConjugatePoint), not the first roller's.
+    const FollowerModel& first = *r->follower;
+    const double at = *s.maxNormalSecondAt;
+    const ConjugatePoint second = conjugatePoint(first, {150.0, pair.radius}, at);
+    const ForcePoint f =
+        forceAt(r->forces->model, forceMotion(first, first.at(at, r->omega)), r->omega);
+    EXPECT_LT(f.load, 0.0);
+    EXPECT_NEAR(*s.maxNormalSecond, -f.load / std::cos(second.pressureAngle),
+                1e-9 * *s.maxNormalSecond);
+    EXPECT_EQ(panel->problemCount(), 0);
+}
+
 }  // namespace
 }  // namespace cam

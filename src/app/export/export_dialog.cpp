@@ -134,6 +134,16 @@ ExportDialog::ExportDialog(const Project& project, const QString& baseName,
                  "and finishes each flank")
             : tr("The cutter's radius (the project's machining section gives the default)"));
     form->addRow(tr("Tool &radius:"), m_gcodeToolRadius);
+    if (project.follower && project.follower->conjugate()) {
+        // Each plate of a conjugate pair is its own program.
+        m_gcodePlate = new QComboBox(this);
+        m_gcodePlate->setObjectName("gcodePlate");
+        m_gcodePlate->addItems({tr("First plate (the contour)"), tr("Second plate")});
+        m_gcodePlate->setToolTip(
+            tr("Which plate of the conjugate pair this program mills: the second is fitted by "
+               "arcs within the design's tolerance, as the window draws it"));
+        form->addRow(tr("P&late:"), m_gcodePlate);
+    }
     // A feed the machine takes: the project's feed limit, else a cautious one to start with.
     m_feedLimit =
         project.machining ? std::optional(project.machining->feedMax * 60.0) : std::nullopt;
@@ -374,6 +384,7 @@ ExportRequest ExportDialog::request() const {
     if (m_gcodeStepDownOn->isChecked()) r.gcode.stepDownMm = m_gcodeStepDown->value();
     r.gcode.toleranceMm = m_gcodeTolerance->value();
     r.gcode.compensation = m_gcodeCompensation->isChecked();
+    r.gcodePlate = m_gcodePlate ? m_gcodePlate->currentIndex() + 1 : 1;
     r.gcode.projectName = m_title;
     r.camTable.points = static_cast<std::size_t>(m_tablePoints->value());
     r.camTable.dialect = static_cast<CamTableDialect>(m_tableDialect->currentData().toInt());

@@ -85,6 +85,8 @@ private:
     NumberSpinBox* m_gcodeStepDown = nullptr;
     NumberSpinBox* m_gcodeTolerance = nullptr;
     QCheckBox* m_gcodeCompensation = nullptr;
+    /// A conjugate pair's: which plate the program mills (none for another cam).
+    QComboBox* m_gcodePlate = nullptr;
     QSpinBox* m_tablePoints = nullptr;
     QComboBox* m_tableDialect = nullptr;
     QComboBox* m_plot = nullptr;

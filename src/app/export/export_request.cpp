@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 
+#include "closure/conjugate.h"
 #include "contour/contour.h"
 #include "export/sample_csv.h"
 
@@ -50,20 +51,38 @@ Result<std::string> exportText(const Project& project, const ExportRequest& requ
             if (csv.ok() && request.csvGerman) return forGermanSpreadsheets(csv.value());
             return csv;
         }
-        // A grooved cam's drawings show both flanks and its program mills the groove.
+        // A grooved cam's drawings show both flanks and its program mills the groove; a
+        // conjugate pair's show both plates and its program mills the plate asked for.
         case ExportFormat::Dxf: {
             DxfOptions options = request.dxf;
             options.groove = grooveOf(project);
+            auto plate = secondPlateOf(project, contour.value());
+            if (!plate.ok()) return plate.errors();
+            if (plate.value()) options.secondPlate = plate.value()->path;
             return dxfDocument(contour.value(), options);
         }
         case ExportFormat::Svg: {
             SvgOptions options = request.svg;
             options.groove = grooveOf(project);
+            auto plate = secondPlateOf(project, contour.value());
+            if (!plate.ok()) return plate.errors();
+            if (plate.value()) options.secondPlate = plate.value()->path;
             return svgDocument(contour.value(), options);
         }
         case ExportFormat::Gcode: {
             GcodeOptions options = request.gcode;
             options.groove = grooveOf(project);
+            if (request.gcodePlate == 2) {
+                auto plate = secondPlateOf(project, contour.value());
+                if (!plate.ok()) return plate.errors();
+                if (!plate.value()) {
+                    return Diagnostics{{"plate", "only a conjugate pair has a second plate"}};
+                }
+                auto second = plateContour(*plate.value());
+                if (!second.ok()) return second.errors();
+                options.projectName += ", second plate";
+                return gcodeProgram(second.value(), options);
+            }
             return gcodeProgram(contour.value(), options);
         }
         case ExportFormat::CamTable: {

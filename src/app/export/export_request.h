@@ -30,6 +30,8 @@ struct ExportRequest {
     DxfOptions dxf;
     SvgOptions svg;
     GcodeOptions gcode;
+    /// A conjugate pair's program mills this plate: 1 (the contour) or 2 (the second plate).
+    int gcodePlate = 1;
     CamTableOptions camTable;
     PlotKind plot = PlotKind::Contour;
     PictureFormat picture = PictureFormat::Png;

@@ -139,10 +139,7 @@ int runExport(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
                            "is for a conjugate pair; this project's follower has one plate"};
         }
         if (plate == "2") {
-            const ConjugatePlate second = *secondPlate(loaded, input);
-            Project alone;
-            alone.contour = second.contour;
-            auto contour = Contour::build(alone);
+            auto contour = plateContour(*secondPlate(loaded, input));
             if (!contour.ok()) exportFailed(input, contour.errors());
             options.projectName += ", second plate";
             text = gcodeProgram(contour.value(), options);

@@ -140,4 +140,21 @@ Result<ConjugatePlate> conjugatePlate(const FollowerModel& first, const Conjugat
     return plate;
 }
 
+Result<std::optional<ConjugatePlate>> secondPlateOf(const Project& project, const Contour& contour,
+                                                    const std::atomic<bool>* cancel) {
+    const std::optional<ConjugateYoke> yoke = ConjugateYoke::of(project);
+    if (!yoke) return std::optional<ConjugatePlate>{};
+    auto first = FollowerModel::build(contour, *project.follower);
+    if (!first.ok()) return first.errors();
+    auto plate = conjugatePlate(first.value(), *yoke, conjugateTolerance(project), 7200, cancel);
+    if (!plate.ok()) return plate.errors();
+    return std::optional<ConjugatePlate>(std::move(plate).value());
+}
+
+Result<Contour> plateContour(const ConjugatePlate& plate) {
+    Project alone;
+    alone.contour = plate.contour;
+    return Contour::build(alone);
+}
+
 }  // namespace cam

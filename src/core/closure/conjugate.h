@@ -16,6 +16,7 @@
 
 #include "closure/groove.h"
 #include "common/diagnostic.h"
+#include "contour/contour.h"
 #include "design/arc_fit.h"
 #include "follower/follower.h"
 #include "project/project.h"
@@ -112,5 +113,17 @@ inline constexpr int kConjugateCheckSamples = 3600;
                                                     const ConjugateYoke& yoke, double toleranceMm,
                                                     int samples = 7200,
                                                     const std::atomic<bool>* cancel = nullptr);
+
+/// @brief The second plate of `project` on `contour` (its compiled contour), when its follower
+/// is a conjugate pair: the follower placed on the contour and conjugatePlate within
+/// conjugateTolerance. None for another closure (or once `cancel` reads true); errors: why the
+/// follower cannot ride the contour or the plate cannot be made. What every export of a pair
+/// asks (the CLI's and the window's).
+[[nodiscard]] Result<std::optional<ConjugatePlate>> secondPlateOf(
+    const Project& project, const Contour& contour, const std::atomic<bool>* cancel = nullptr);
+
+/// @brief The second plate as a contour of its own (its fitted arcs compiled), to be milled or
+/// checked as any cam is.
+[[nodiscard]] Result<Contour> plateContour(const ConjugatePlate& plate);
 
 }  // namespace cam
