@@ -464,13 +464,18 @@
     </message>
     <message>
         <location line="+4" />
-        <source>a conjugate yoke needs a translating roller follower: its second roller runs on the same line</source>
-        <translation>ein Doppelrollenstößel für Kurvenpaare braucht einen geradegeführten Rollenstößel: seine zweite Rolle läuft auf derselben Geraden</translation>
+        <source>a conjugate pair needs a roller follower: its second roller runs on the same line (a yoke) or on a second arm of the same pivot (a bell crank)</source>
+        <translation>ein Kurvenpaar braucht einen Rollenstößel: Seine zweite Rolle läuft auf derselben Geraden (ein Joch) oder an einem zweiten Arm am selben Drehpunkt (ein Winkelhebel)</translation>
     </message>
     <message>
         <location line="+4" />
         <source>must put the second roller beyond the cam centre at every angle: at %1° its centre is only %2 mm behind it</source>
         <translation>muss die zweite Rolle bei jedem Winkel jenseits der Scheibenmitte halten: bei %1° liegt ihr Mittelpunkt nur %2 mm hinter ihr</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>must let the second plate turn round the cam centre with the cam: at %1° the second roller moves backwards round it or reaches across it</source>
+        <translation>muss die zweite Scheibe mit der Kurvenscheibe um deren Mitte laufen lassen: bei %1° läuft die zweite Rolle rückwärts um sie oder reicht über sie hinweg</translation>
     </message>
     <message>
         <location line="+4" />
@@ -1172,12 +1177,12 @@
     <message>
         <location line="+1" />
         <location line="+141" />
-        <location line="+338" />
+        <location line="+347" />
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location line="-401" />
+        <location line="-410" />
         <source>true or false</source>
         <translation>true oder false</translation>
     </message>
@@ -1192,7 +1197,7 @@
         <translation>ein Array aus Zahlen</translation>
     </message>
     <message>
-        <location line="+311" />
+        <location line="+320" />
         <location line="+87" />
         <source>an array of segments</source>
         <translation>ein Array aus Segmenten</translation>
@@ -1266,7 +1271,7 @@
         <translation>%1, y</translation>
     </message>
     <message>
-        <location line="+174" />
+        <location line="+178" />
         <source>law</source>
         <translation>Gesetz</translation>
     </message>
@@ -1296,7 +1301,7 @@
         <translation>Bewegungsentwurf, Übergang zwischen Segment %1 und %2</translation>
     </message>
     <message>
-        <location line="-106" />
+        <location line="-110" />
         <source>Machining, acceleration of axis %1</source>
         <translation>Zerspanung, Beschleunigung der Achse %1</translation>
     </message>
@@ -1327,12 +1332,12 @@
     </message>
     <message>
         <location line="+6" />
-        <location line="+76" />
+        <location line="+80" />
         <source>Contour</source>
         <translation>Kontur</translation>
     </message>
     <message>
-        <location line="-75" />
+        <location line="-79" />
         <source>Points</source>
         <translation>Punkte</translation>
     </message>
@@ -1422,6 +1427,16 @@
         <translation>Stößel, Radius der zweiten Rolle</translation>
     </message>
     <message>
+        <location line="+2" />
+        <source>Follower, second arm's angle</source>
+        <translation>Stößel, Winkel des zweiten Arms</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Follower, second arm's length</source>
+        <translation>Stößel, Länge des zweiten Arms</translation>
+    </message>
+    <message>
         <location line="+1" />
         <source>Samples per turn</source>
         <translation>Abtastpunkte pro Umdrehung</translation>
@@ -1472,12 +1487,12 @@
         <translation>Bewegungsentwurf, Segmente</translation>
     </message>
     <message>
-        <location line="-79" />
+        <location line="-83" />
         <source>is empty: the design's contour was never synthesised (Synthesize Contour, F6, makes it)</source>
         <translation>ist leer: die Kontur des Entwurfs wurde noch nie synthetisiert (Kontur synthetisieren, F6, erzeugt sie)</translation>
     </message>
     <message>
-        <location line="+115" />
+        <location line="+119" />
         <source>Joint between segments %1 and %2</source>
         <translation>Übergang zwischen Segment %1 und %2</translation>
     </message>
@@ -3321,7 +3336,17 @@
         <translation>Kurvenpaar (Formschluss)</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+19" />
+        <source>A bell crank: the second arm's angle from the first about the pivot, counter-clockwise positive</source>
+        <translation>Ein Winkelhebel: der Winkel des zweiten Arms zum ersten um den Drehpunkt, gegen den Uhrzeigersinn positiv</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>A bell crank: from the pivot to the second roller's centre</source>
+        <translation>Ein Winkelhebel: vom Drehpunkt zum Mittelpunkt der zweiten Rolle</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>The roller's play between the groove's flanks</source>
         <translation>Das Spiel der Rolle zwischen den Flanken der Nut</translation>
     </message>
@@ -3461,6 +3486,31 @@
         <translation>Zweite Rolle</translation>
     </message>
     <message>
+        <location line="+1" />
+        <source>Second arm's angle</source>
+        <translation>Winkel des zweiten Arms</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Second arm's length</source>
+        <translation>Länge des zweiten Arms</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>angle </source>
+        <translation>Winkel </translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>length </source>
+        <translation>Länge </translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Second arm</source>
+        <translation>Zweiter Arm</translation>
+    </message>
+    <message>
         <location line="+4" />
         <source>Turning clockwise</source>
         <translation>Dreht im Uhrzeigersinn</translation>
@@ -3486,7 +3536,7 @@
         <translation>Druckwinkel über eine Umdrehung; gestrichelt: die Grenze; rot: darüber</translation>
     </message>
     <message>
-        <location line="+431" />
+        <location line="+458" />
         <source>Groove: %1 wide (roller radius %2, clearance %3)</source>
         <translation>Nut: %1 breit (Rollenradius %2, Spiel %3)</translation>
     </message>
@@ -3549,7 +3599,7 @@
         <translation>Kleinster konkaver Radius der zweiten Scheibe: %1, berührt bei %2 (Radius der zweiten Rolle %3)</translation>
     </message>
     <message>
-        <location line="-494" />
+        <location line="-521" />
         <source>Pressure angle [°]</source>
         <translation>Druckwinkel [°]</translation>
     </message>
@@ -3564,19 +3614,19 @@
         <translation>ρ [mm]</translation>
     </message>
     <message>
-        <location line="-136" />
+        <location line="-150" />
         <source>Offset e of the follower's line of motion from the cam's centre: positive to the left of its direction as seen from the centre, negative to the right (the Turning picture shows it). A positive offset lowers the rise's pressure angle when the cam turns clockwise, a negative one when it turns counter-clockwise; either raises the return's</source>
         <translation>Versatz e der Bewegungslinie des Stößels vom Scheibenmittelpunkt: positiv links seiner Richtung, vom Mittelpunkt aus gesehen, negativ rechts (das Bild Drehrichtung zeigt es). Ein positiver Versatz senkt den Druckwinkel des Hubs, wenn sich die Scheibe im Uhrzeigersinn dreht, ein negativer, wenn sie sich gegen den Uhrzeigersinn dreht; beide erhöhen den des Rückhubs</translation>
     </message>
     <message>
         <location line="+27" />
         <source>What keeps the roller on the cam: a spring; a groove milled into the disc (the contour is its inner flank, the outer flank lies twice the roller radius plus the clearance beyond it); or conjugate plates (a second plate on the same shaft drives a second roller on the same line, across the cam centre)</source>
-        <translation>Was die Rolle an der Scheibe hält: eine Feder; eine in die Scheibe gefräste Nut (die Kontur ist ihre Innenflanke, die Außenflanke liegt zweimal den Rollenradius plus das Spiel weiter außen); oder ein Kurvenpaar (eine zweite Scheibe auf derselben Welle treibt eine zweite Rolle auf derselben Geraden, jenseits des Drehpunkts)</translation>
+        <translation>Was die Rolle an der Scheibe hält: eine Feder; eine in die Scheibe gefräste Nut (die Kontur ist ihre Innenflanke, die Außenflanke liegt zweimal den Rollenradius plus das Spiel weiter außen); oder ein Kurvenpaar (eine zweite Scheibe auf derselben Welle treibt eine zweite Rolle auf derselben Geraden, jenseits der Scheibenmitte)</translation>
     </message>
     <message>
         <location line="+6" />
         <source>From the first roller's centre back along the line to the second roller's: it must put the second roller beyond the cam centre at every angle</source>
-        <translation>Vom Mittelpunkt der ersten Rolle entlang der Geraden zurück zu dem der zweiten: Die zweite Rolle muss bei jedem Winkel jenseits des Drehpunkts stehen</translation>
+        <translation>Vom Mittelpunkt der ersten Rolle entlang der Geraden zurück zu dem der zweiten: Die zweite Rolle muss bei jedem Winkel jenseits der Scheibenmitte stehen</translation>
     </message>
     <message>
         <location line="+6" />
@@ -3584,7 +3634,7 @@
         <translation>Der Radius der zweiten Rolle</translation>
     </message>
     <message>
-        <location line="+351" />
+        <location line="+392" />
         <location line="+29" />
         <source>φ [°]</source>
         <translation>φ [°]</translation>

@@ -60,7 +60,7 @@ Loaded load(const std::string& path) {
 }
 
 std::optional<ConjugatePlate> secondPlate(const Loaded& loaded, const std::string& path) {
-    const std::optional<ConjugateYoke> yoke = ConjugateYoke::of(loaded.project);
+    const std::optional<SecondRoller> yoke = SecondRoller::of(loaded.project);
     if (!yoke) return std::nullopt;
     auto plate = conjugatePlate(loaded.follower, *yoke, conjugateTolerance(loaded.project));
     if (!plate.ok()) {

@@ -71,21 +71,25 @@ Json conjugateJson(const Loaded& loaded, const ConjugatePlate& plate) {
                     {"phi_deg", radToDeg(b->phi)},
                     {"point", {b->point.x(), b->point.y()}}};
     };
-    return Json{{"distance_mm", spec.conjugateDistance},
-                {"roller_radius", spec.conjugateRadius},
-                {"tolerance_mm", conjugateTolerance(loaded.project)},
-                {"plate_arcs", plate.fit.arcs.size()},
-                {"max_play_mm", plate.maxPlay},
-                {"max_play_at_deg", radToDeg(plate.maxPlayAt)},
-                {"min_play_mm", plate.minPlay},
-                {"min_play_at_deg", radToDeg(plate.minPlayAt)},
-                {"pressure_angle",
-                 {{"max",
-                   {{"value_deg", radToDeg(plate.maxPressureAngle)},
-                    {"phi_deg", radToDeg(plate.maxPressureAt)}}}}},
-                {"curvature",
-                 {{"min_convex", bend(plate.bends.minConvex)},
-                  {"min_concave", bend(plate.bends.minConcave)}}}};
+    Json out = spec.motion == FollowerMotion::Oscillating
+                   ? Json{{"angle_deg", spec.conjugateAngleDeg},
+                          {"arm_length_mm", spec.conjugateArmLength}}
+                   : Json{{"distance_mm", spec.conjugateDistance}};
+    out.update(Json{{"roller_radius", spec.conjugateRadius},
+                    {"tolerance_mm", conjugateTolerance(loaded.project)},
+                    {"plate_arcs", plate.fit.arcs.size()},
+                    {"max_play_mm", plate.maxPlay},
+                    {"max_play_at_deg", radToDeg(plate.maxPlayAt)},
+                    {"min_play_mm", plate.minPlay},
+                    {"min_play_at_deg", radToDeg(plate.minPlayAt)},
+                    {"pressure_angle",
+                     {{"max",
+                       {{"value_deg", radToDeg(plate.maxPressureAngle)},
+                        {"phi_deg", radToDeg(plate.maxPressureAt)}}}}},
+                    {"curvature",
+                     {{"min_convex", bend(plate.bends.minConvex)},
+                      {"min_concave", bend(plate.bends.minConcave)}}}});
+    return out;
 }
 
 namespace {

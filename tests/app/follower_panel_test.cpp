@@ -638,5 +638,49 @@ TEST(FollowerPanel, TheConjugatePairIsOneSettingDrawnCheckedAndUndone) {
     EXPECT_FALSE(view->followerMarkers().secondShown);
 }
 
+TEST(FollowerPanel, OnASwingingArmTheConjugatePairIsABellCrank) {
+    // The swinging-arm example: the same setting gives the arm a second arm on its pivot, the
+    // first mirrored about the line to the cam centre, as long; its roller is drawn that far
+    // from the pivot, and the second plate holds it within the tolerance.
+    MainWindow window;
+    ASSERT_TRUE(openAndCompute(window, "swinging-arm-cam.cam.json"));
+    window.findChild<QDockWidget*>("followerDock")->show();
+    FollowerPanel* panel = window.followerPanel();
+    child<QComboBox>(window, "followerClosureComboBox")->setCurrentIndex(2);
+    const FollowerSpec spec = *window.document()->project().follower;
+    ASSERT_EQ(spec.closure, Closure::Conjugate);
+    EXPECT_EQ(spec.motion, FollowerMotion::Oscillating);
+    EXPECT_EQ(spec.conjugateArmLength, spec.armLength);
+    EXPECT_NE(spec.conjugateAngleDeg, 0.0);
+    EXPECT_EQ(spec.conjugateDistance, 0.0);
+    EXPECT_TRUE(child<QDoubleSpinBox>(window, "conjugateAngleSpinBox")->isVisibleTo(panel));
+    EXPECT_FALSE(child<QDoubleSpinBox>(window, "conjugateDistanceSpinBox")->isVisibleTo(panel));
+    ASSERT_TRUE(waitForResult(window));
+    const ComputeResultPtr result = window.engine()->latestResult();
+    ASSERT_TRUE(result->valid()) << (result->problems.empty() ? ""
+                                                              : result->problems.front().text());
+    ASSERT_NE(result->conjugate, nullptr);
+    EXPECT_LE(result->conjugate->plate.maxPlay, result->conjugate->toleranceMm);
+    EXPECT_GE(result->conjugate->plate.minPlay, -result->conjugate->toleranceMm);
+    ContourView* view = window.contourView();
+    for (const double deg : {0.0, 100.0, 250.0}) {
+        view->setCursorAngle(degToRad(deg));
+        const auto m = view->followerMarkers();
+        ASSERT_TRUE(m.secondShown && m.pivotShown);
+        const Eigen::Vector2d pivot(m.pivot.x(), m.pivot.y());
+        EXPECT_NEAR((Eigen::Vector2d(m.secondCenter.x(), m.secondCenter.y()) - pivot).norm(),
+                    spec.armLength, 1e-9);
+        EXPECT_NEAR((Eigen::Vector2d(m.center.x(), m.center.y()) - pivot).norm(), spec.armLength,
+                    1e-9);
+    }
+    EXPECT_EQ(panel->checkLines().filter("Second plate: ").size(), 1);
+    // Back to a line: a yoke again, the distance shown.
+    child<QComboBox>(window, "followerMotionComboBox")->setCurrentIndex(0);
+    const FollowerSpec line = *window.document()->project().follower;
+    EXPECT_GT(line.conjugateDistance, 0.0);
+    EXPECT_EQ(line.conjugateArmLength, 0.0);
+    EXPECT_TRUE(child<QDoubleSpinBox>(window, "conjugateDistanceSpinBox")->isVisibleTo(panel));
+}
+
 }  // namespace
 }  // namespace cam

@@ -435,5 +435,55 @@ TEST(CliConjugate, SynthesizeReportsTheSecondPlateOfTheNewFirstOne) {
     EXPECT_TRUE(noted) << shortReport.dump(1);
 }
 
+TEST(CliConjugate, ABellCrankCarriesItsSecondRollerRigidlyOnThePivot) {
+    // A swinging roller (pivot (70, 0), arm 60 mm) with a second arm of 60 mm at −48°: at every
+    // instant the second roller's centre is 60 mm from the pivot (turned with the cam to
+    // R(φ)·(70, 0)) and 2·60·sin 24° from the first roller's — the crank is rigid; the fitted
+    // plate holds it within the tolerance; the second plate is milled, and rs274 accepts it.
+    const test::TempDir dir;
+    const std::string path = dir.file("crank.cam.json");
+    std::ofstream(path) << R"({"format": "camwright", "version": 1, "name": "Bell crank",
+      "motion": {"period_s": 2},
+      "contour": [{"type": "arc", "center": [6, -2], "radius": 25, "branch": "outer",
+                   "phi_start": 0, "phi_end": 360}],
+      "follower": {"type": "roller", "radius": 4, "motion": "oscillating", "pivot": [70, 0],
+                   "arm_length": 60, "closure": "conjugate", "conjugate_angle_deg": -48,
+                   "conjugate_arm_length_mm": 60, "conjugate_radius_mm": 5}})";
+    for (const double t : {0.0, 0.3, 1.45}) {
+        const auto run = test::runCli({"state", path, "--t", std::to_string(t)});
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        const Json state = Json::parse(run.out);
+        const double phi = state.at("phi_deg").get<double>() * std::numbers::pi / 180;
+        const Eigen::Vector2d pivot = 70.0 * Eigen::Vector2d(std::cos(phi), std::sin(phi));
+        const Json& f = state.at("follower");
+        const Eigen::Vector2d first = vec(f.at("center"));
+        const Eigen::Vector2d second = vec(f.at("second_roller").at("center"));
+        EXPECT_NEAR((first - pivot).norm(), 60.0, 1e-9) << t;
+        EXPECT_NEAR((second - pivot).norm(), 60.0, 1e-9) << t;
+        EXPECT_NEAR((second - first).norm(), 2 * 60.0 * std::sin(24.0 * std::numbers::pi / 180),
+                    1e-9)
+            << t;
+        // Turned clockwise (−48°) from the first arm about the pivot.
+        const Eigen::Vector2d a = first - pivot, b = second - pivot;
+        EXPECT_NEAR(std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b)),
+                    -48.0 * std::numbers::pi / 180, 1e-9);
+    }
+    const auto analyzed = test::runCli({"analyze", path});
+    ASSERT_EQ(analyzed.exitCode, 0) << analyzed.err;
+    const Json c = Json::parse(analyzed.out).at("follower").at("conjugate");
+    EXPECT_EQ(c.at("angle_deg").get<double>(), -48.0);
+    EXPECT_EQ(c.at("arm_length_mm").get<double>(), 60.0);
+    EXPECT_FALSE(c.contains("distance_mm"));
+    EXPECT_LE(c.at("max_play_mm").get<double>(), 1e-3);
+    EXPECT_GE(c.at("min_play_mm").get<double>(), -1e-3);
+    const std::string ngc = dir.file("crank-2.ngc");
+    ASSERT_EQ(test::runCli({"export", path, "--format", "gcode", "--plate", "2", "--tool-radius",
+                            "3", "--out", ngc})
+                  .exitCode,
+              0);
+    const auto accepted = test::run(test::kRs274, {ngc, dir.file("canon.txt")}, 120);
+    EXPECT_EQ(accepted.exitCode, 0) << accepted.err;
+}
+
 }  // namespace
 }  // namespace cam

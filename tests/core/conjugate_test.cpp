@@ -40,7 +40,7 @@ double sOf(const Disc& d, double phi) {
 
 TEST(Conjugate, TheSecondRollerOfAYokeOnAnEccentricDiscIsHeldWithinTheTolerance) {
     const Disc d;
-    const ConjugateYoke yoke{80.0, 5.0};
+    const SecondRoller yoke{80.0, 5.0};
     const double tolerance = 1e-3;
     const FollowerModel first = firstRoller(d);
     // The second roller's centre: the closed form.
@@ -84,7 +84,7 @@ TEST(Conjugate, TheSecondPlatesChecksMeanWhatTheySayAtTheCamAngle) {
     // central differences, the contact normal that tangent turned clockwise (the path runs
     // counter-clockwise round the cam), measured from −u.
     const Disc d;
-    const ConjugateYoke yoke{80.0, 5.0};
+    const SecondRoller yoke{80.0, 5.0};
     const FollowerModel first = firstRoller(d);
     const auto centre = [&](double phi) {
         return Eigen::Vector2d((sOf(d, phi) - yoke.distanceMm) * test::unit(phi) +
@@ -136,7 +136,7 @@ TEST(Conjugate, ARollerPlacedByContactOnTheSecondPlateStandsTheYokesLengthBehind
     // turn (its line's direction −u, its offset −e): placed by contact alone, it stands at
     // s₂(φ + π) = D − s(φ) to the fit's tolerance.
     const Disc d;
-    const ConjugateYoke yoke{80.0, 5.0};
+    const SecondRoller yoke{80.0, 5.0};
     const double tolerance = 1e-4;
     const auto plate = conjugatePlate(firstRoller(d), yoke, tolerance);
     ASSERT_TRUE(plate.ok()) << plate.errors().front().text();
@@ -177,7 +177,7 @@ TEST(Conjugate, WhatCannotBeMadeIsRefusedAtItsKey) {
     const auto plain = FollowerModel::build(test::disc(d.c, d.R), knife).value();
     const auto refused = conjugatePlate(plain, {80.0, 5.0}, 1e-3);
     ASSERT_FALSE(refused.ok());
-    EXPECT_EQ(refused.errors().front().code, DiagnosticCode::ConjugateNeedsTranslatingRoller);
+    EXPECT_EQ(refused.errors().front().code, DiagnosticCode::ConjugateNeedsRoller);
 }
 
 TEST(ConjugateForces, TheSecondRollerCarriesWhereTheClosedFormsLoadTurnsNegative) {
@@ -187,7 +187,7 @@ TEST(ConjugateForces, TheSecondRollerCarriesWhereTheClosedFormsLoadTurnsNegative
     // from the closed-form centre path (s − D)·u + e·n by finite differences.
     const Disc d;
     const double mass = 0.5, omega = 20.0, b = 10.0, E = 210000.0, nu = 0.3;
-    const ConjugateYoke yoke{80.0, 5.0};
+    const SecondRoller yoke{80.0, 5.0};
     Project p;
     p.motion = {SpeedUnit::OmegaRadS, omega};
     p.contour.push_back(SegmentSpec{Arc{d.c, d.R, Branch::Outer}, 0.0, 360.0});
@@ -279,6 +279,192 @@ TEST(ConjugateForces, TheSecondRollerCarriesWhereTheClosedFormsLoadTurnsNegative
         const double load = mass * s2(phi) * 1e-3 * omega * omega;
         EXPECT_NEAR(forces.forces.torque[k], load * d1(s, phi) * 1e-3, 1e-7) << k;
     }
+}
+
+// A bell crank on the eccentric disc: the first arm (pivot (70, 0) in the follower frame, 60 mm,
+// counter-clockwise of the line to the centre) carries a 4 mm roller on the disc; the second
+// arm, 60 mm on the same pivot turned by β = −48°, a 5 mm roller. In the cam frame the pivot is
+// Q(φ) = R(φ)·q; the first roller's centre is where the circle of radius R + ρ about c meets
+// the circle of radius L about Q, on the arm's side — a closed form, without the follower
+// machinery; the second roller's centre Q + L₂·(cos(θ + β), sin(θ + β)), θ the first arm's
+// direction.
+struct Crank {
+    Disc d;
+    Eigen::Vector2d q{70.0, 0.0};
+    double L = 60.0, L2 = 60.0, beta = degToRad(-48.0), rho2 = 5.0;
+
+    [[nodiscard]] Eigen::Vector2d pivot(double phi) const {
+        return q.x() * test::unit(phi) + q.y() * test::normalOf(phi);
+    }
+    [[nodiscard]] Eigen::Vector2d first(double phi) const {
+        const Eigen::Vector2d Q = pivot(phi), w = Q - d.c;
+        const double dist = w.norm(), r1 = d.R + d.rho;
+        const double a = (r1 * r1 - L * L + dist * dist) / (2 * dist);
+        const double h = std::sqrt(r1 * r1 - a * a);
+        const Eigen::Vector2d base = d.c + a * w / dist, across(-w.y() / dist, w.x() / dist);
+        for (const double side : {1.0, -1.0}) {
+            const Eigen::Vector2d c1 = base + side * h * across;
+            const Eigen::Vector2d arm = c1 - Q;
+            if (-Q.x() * arm.y() + Q.y() * arm.x() > 0) return c1;  // ccw of Q → centre
+        }
+        return {NAN, NAN};
+    }
+    [[nodiscard]] Eigen::Vector2d second(double phi) const {
+        const Eigen::Vector2d Q = pivot(phi), arm = first(phi) - Q;
+        const double theta = std::atan2(arm.y(), arm.x()) + beta;
+        return Q + L2 * Eigen::Vector2d(std::cos(theta), std::sin(theta));
+    }
+    [[nodiscard]] FollowerSpec spec() const {
+        FollowerSpec f;
+        f.type = FollowerType::Roller;
+        f.radius = d.rho;
+        f.motion = FollowerMotion::Oscillating;
+        f.pivot = q;
+        f.armLength = L;
+        f.arm = ArmSide::Ccw;
+        f.closure = Closure::Conjugate;
+        f.conjugateAngleDeg = radToDeg(beta);
+        f.conjugateArmLength = L2;
+        f.conjugateRadius = rho2;
+        return f;
+    }
+};
+
+TEST(ConjugateBellCrank, TheSecondArmsRollerIsHeldWhereTheClosedFormPutsIt) {
+    const Crank k;
+    const FollowerModel first = FollowerModel::build(test::disc(k.d.c, k.d.R), k.spec()).value();
+    const std::optional<SecondRoller> crank = SecondRoller::of(k.spec());
+    ASSERT_TRUE(crank && crank->bellCrank());
+    for (double deg = 0.0; deg < 360.0; deg += 7.7) {
+        const double phi = degToRad(deg);
+        ASSERT_NEAR((first.at(phi, 1.0).center - k.first(phi)).norm(), 0.0, 1e-9) << deg;
+        EXPECT_NEAR((conjugatePoint(first, *crank, phi).centre - k.second(phi)).norm(), 0.0, 1e-9)
+            << deg;
+    }
+    ASSERT_TRUE(conjugateProblems(first, *crank).empty());
+    const double tolerance = 1e-3;
+    const auto plate = conjugatePlate(first, *crank, tolerance);
+    ASSERT_TRUE(plate.ok()) << plate.errors().front().text();
+    const ConjugatePlate& p = plate.value();
+    EXPECT_LE(p.maxPlay, tolerance);
+    EXPECT_GE(p.minPlay, -tolerance);
+    // Every closed-form centre is the roller's radius from the arcs, to the tolerance.
+    double worst = 0.0;
+    for (int i = 0; i < 20000; ++i) {
+        const Eigen::Vector2d centre = k.second(kTwoPi * i / 20000);
+        double distance = 1e300;
+        for (const FittedArc& arc : p.fit.arcs) {
+            distance = std::min(distance, distanceToArc(arc, centre));
+        }
+        worst = std::max(worst, std::abs(distance - k.rho2));
+    }
+    EXPECT_LE(worst, tolerance);
+    EXPECT_GT(worst, tolerance / 100);
+    // The pressure angle at the second roller: from the way its centre moves when it leaves its
+    // plate — across the second arm, against the first roller's way away from its cam (the
+    // crank turns both) — to the normal of the closed-form path, turned clockwise.
+    for (double deg = 3.0; deg < 360.0; deg += 11.0) {
+        const double phi = degToRad(deg), h = 1e-5;
+        const Eigen::Vector2d t = (k.second(phi + h) - k.second(phi - h)).normalized();
+        const Eigen::Vector2d normal(t.y(), -t.x());
+        const Eigen::Vector2d arm = k.second(phi) - k.pivot(phi);
+        const Eigen::Vector2d leaving = -Eigen::Vector2d(-arm.y(), arm.x()).normalized();
+        // Leaving the plate is leaving along its normal: the two agree within 90°.
+        EXPECT_GT(leaving.dot(normal), 0.0) << deg;
+        const double expected =
+            std::atan2(leaving.x() * normal.y() - leaving.y() * normal.x(), leaving.dot(normal));
+        EXPECT_NEAR(conjugatePoint(first, *crank, phi).pressureAngle, expected, 1e-8) << deg;
+    }
+}
+
+TEST(ConjugateBellCrank, ARollerPlacedByContactOnTheSecondPlateSwingsWithTheFirstArm) {
+    // The second plate as a contour, a swinging roller on it from the same pivot with the
+    // second arm (clockwise of the line to the centre, as the mirrored crank lies): placed by
+    // contact alone, its centre is where the crank carries the second roller, to the fit's
+    // tolerance over the cosine of its pressure angle.
+    const Crank k;
+    const double tolerance = 1e-4;
+    const FollowerModel first = FollowerModel::build(test::disc(k.d.c, k.d.R), k.spec()).value();
+    const auto plate = conjugatePlate(first, *SecondRoller::of(k.spec()), tolerance);
+    ASSERT_TRUE(plate.ok()) << plate.errors().front().text();
+    const auto contour = plateContour(plate.value());
+    ASSERT_TRUE(contour.ok()) << contour.errors().front().text();
+    FollowerSpec spec;
+    spec.type = FollowerType::Roller;
+    spec.radius = k.rho2;
+    spec.motion = FollowerMotion::Oscillating;
+    spec.pivot = k.q;
+    spec.armLength = k.L2;
+    spec.arm = ArmSide::Cw;
+    const auto roller = FollowerModel::build(contour.value(), spec);
+    ASSERT_TRUE(roller.ok()) << roller.errors().front().text();
+    double worst = 0.0;
+    for (int i = 0; i < 3600; ++i) {
+        const double phi = kTwoPi * i / 3600;
+        worst = std::max(worst, (roller.value().at(phi, 1.0).center - k.second(phi)).norm());
+    }
+    EXPECT_LE(worst, 3 * tolerance);
+    ::testing::Test::RecordProperty("worst_mm", std::to_string(worst));
+}
+
+TEST(ConjugateBellCrank, ASecondArmThatSwingsAcrossTheCentreIsRefusedAtItsAngle) {
+    // A second arm as long as the pivot is far, pointing at the cam centre: as the crank
+    // swings, its roller crosses the centre back and forth and runs round it no way a plate
+    // could make it. (Any roller off the centre turns round it with the frame: a second arm
+    // pointing away from the cam makes a large ring of a plate, which is a cam.)
+    Crank k;
+    k.L2 = 70.0;
+    k.rho2 = 2.0;
+    k.beta = -std::acos((70.0 * 70.0 + 60.0 * 60.0 - 29.0 * 29.0) / (2 * 70.0 * 60.0));
+    const FollowerModel first = FollowerModel::build(test::disc(k.d.c, k.d.R), k.spec()).value();
+    const Diagnostics problems = conjugateProblems(first, *SecondRoller::of(k.spec()));
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems.front().location, "follower.conjugate_angle_deg");
+    EXPECT_EQ(problems.front().code, DiagnosticCode::ConjugatePlateNotRoundCentre);
+}
+
+TEST(ConjugateBellCrank, ANegativeMomentIsCarriedByTheSecondArmsRoller) {
+    // The crank driven by its inertia alone: the moment I·ψ''·ω² turns negative where ψ'' does,
+    // and the second roller then takes |M| / (L₂·cos α₂) — ψ and α₂ from the closed form.
+    const Crank k;
+    const double inertia = 2e-3, omega = 15.0;
+    Project p;
+    p.motion = {SpeedUnit::OmegaRadS, omega};
+    p.contour.push_back(SegmentSpec{Arc{k.d.c, k.d.R, Branch::Outer}, 0.0, 360.0});
+    p.follower = k.spec();
+    DynamicsSpec dyn;
+    dyn[DynamicsKey::InertiaKgM2] = inertia;
+    p.dynamics = dyn;
+    const ProjectEvaluation e = evaluateProject(p);
+    ASSERT_EQ(e.status, EvaluationStatus::Computed)
+        << (e.problems.empty() ? "" : e.problems.front().text());
+    ForceEvaluation forces;
+    ASSERT_TRUE(evaluateForces(p, *e.follower, e.omega, forces));
+    const auto psi = [&](double phi) {
+        const Eigen::Vector2d arm = k.first(phi) - k.pivot(phi);
+        return std::remainder(std::atan2(arm.y(), arm.x()) - phi, kTwoPi);
+    };
+    const double h = 1e-3;
+    const auto psi2 = [&](double phi) {
+        return (-psi(phi - 2 * h) + 16 * psi(phi - h) - 30 * psi(phi) + 16 * psi(phi + h) -
+                psi(phi + 2 * h)) /
+               (12 * h * h);
+    };
+    double peak = 0.0;
+    for (int i = 0; i < 100000; ++i) {
+        const double phi = kTwoPi * i / 100000;
+        const double moment = inertia * psi2(phi) * omega * omega;
+        if (moment >= 0) continue;
+        const double g = 1e-5;
+        const Eigen::Vector2d t = (k.second(phi + g) - k.second(phi - g)).normalized();
+        const Eigen::Vector2d normal(t.y(), -t.x()), arm = k.second(phi) - k.pivot(phi);
+        const Eigen::Vector2d leaving = -Eigen::Vector2d(-arm.y(), arm.x()).normalized();
+        peak = std::max(peak, -moment / (k.L2 * 1e-3 * leaving.dot(normal)));
+    }
+    ASSERT_GT(peak, 0.0);
+    ASSERT_TRUE(forces.summary.maxNormalSecond);
+    EXPECT_NEAR(*forces.summary.maxNormalSecond, peak, 1e-6 * peak);
+    EXPECT_FALSE(forces.summary.liftOff.empty());
 }
 
 }  // namespace

@@ -659,8 +659,45 @@ TEST(ProjectJsonConjugate, ReadsItsKeysWritesThemBackAndLocatesEveryRule) {
     EXPECT_EQ(problem(R"("conjugate_distance_mm": 80)", R"("conjugate_distance_mm": -80)"),
               "follower.conjugate_distance_mm: must be > 0 (got -80)");
     EXPECT_EQ(problem(R"("type": "roller", "radius": 8,)", R"("type": "knife",)"),
-              "follower.closure: a conjugate yoke needs a translating roller follower: its second "
-              "roller runs on the same line");
+              "follower.closure: a conjugate pair needs a roller follower: its second roller "
+              "runs on the same line (a yoke) or on a second arm of the same pivot (a bell "
+              "crank)");
+    // A bell crank's keys belong to an arm.
+    EXPECT_EQ(problem(R"("conjugate_distance_mm": 80)",
+                      R"("conjugate_distance_mm": 80, "conjugate_angle_deg": -40)"),
+              "follower.conjugate_angle_deg: is for a swinging arm; this project's follower "
+              "translates");
+}
+
+TEST(ProjectJsonConjugate, ABellCrankTakesTheSecondArmsAngleAndLength) {
+    const std::string crank = withReplaced(
+        kGrooved,
+        R"("type": "roller", "radius": 8, "closure": "groove", "groove_clearance_mm": 0.05,)",
+        R"("type": "roller", "radius": 4, "motion": "oscillating", "pivot": [70, 0],
+           "arm_length": 60, "closure": "conjugate", "conjugate_angle_deg": -48,
+           "conjugate_arm_length_mm": 60, "conjugate_radius_mm": 5,)");
+    const auto p = parseProject(crank);
+    ASSERT_TRUE(p.ok()) << p.errors().front().text();
+    const FollowerSpec& f = *p.value().follower;
+    EXPECT_EQ(f.conjugateAngleDeg, -48.0);
+    EXPECT_EQ(f.conjugateArmLength, 60.0);
+    const Json saved = Json::parse(serializeProject(p.value()));
+    EXPECT_EQ(saved["follower"]["conjugate_angle_deg"], -48.0);
+    EXPECT_EQ(saved["follower"]["conjugate_arm_length_mm"], 60.0);
+    EXPECT_FALSE(saved["follower"].contains("conjugate_distance_mm"));
+    EXPECT_EQ(parseProject(saved.dump()).value(), p.value());
+    const auto problem = [&](const std::string& from, const std::string& to) {
+        const auto q = parseProject(withReplaced(crank, from, to));
+        return q.ok() ? std::string("(no problem)") : q.errors().front().text();
+    };
+    EXPECT_EQ(problem(R"("conjugate_arm_length_mm": 60,)", ""),
+              "follower.conjugate_arm_length_mm: missing");
+    EXPECT_EQ(problem(R"("conjugate_angle_deg": -48,)", R"("conjugate_angle_deg": 400,)"),
+              "follower.conjugate_angle_deg: must be between -360 and 360° (got 400)");
+    EXPECT_EQ(problem(R"("conjugate_angle_deg": -48,)",
+                      R"("conjugate_angle_deg": -48, "conjugate_distance_mm": 80,)"),
+              "follower.conjugate_distance_mm: is for a translating follower; this project's "
+              "follower swings on an arm");
 }
 
 }  // namespace

@@ -150,7 +150,7 @@ std::shared_ptr<const ConjugateView> computeConjugate(const Project& project,
                                                       const FollowerModel& model,
                                                       Diagnostics& errors,
                                                       const std::atomic<bool>* cancel) {
-    const std::optional<ConjugateYoke> yoke = ConjugateYoke::of(project);
+    const std::optional<SecondRoller> yoke = SecondRoller::of(project);
     if (!yoke) return nullptr;
     auto view = std::make_shared<ConjugateView>();
     view->yoke = *yoke;

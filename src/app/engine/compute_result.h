@@ -89,7 +89,7 @@ struct GrooveView {
 /// @brief A conjugate pair's second plate (closure/conjugate.h), fitted in the worker, and its
 /// outline as the contour view draws it (x, y in mm, closed).
 struct ConjugateView {
-    ConjugateYoke yoke;
+    SecondRoller yoke;
     double toleranceMm = 0.0;  ///< what the plate was fitted within
     ConjugatePlate plate;
     QVector<QPointF> outline;

@@ -47,11 +47,15 @@ std::optional<FollowerGlyphShape> followerGlyphAt(const FollowerModel& model, do
 }
 
 FollowerGlyphShape withSecondRoller(FollowerGlyphShape shape, const FollowerModel& model,
-                                    const ConjugateYoke& yoke, double phi) {
+                                    const SecondRoller& yoke, double phi) {
     const ConjugatePoint second = conjugatePoint(model, yoke, phi);
     shape.second =
-        FollowerGlyphShape::SecondRoller{second.centre, second.plate, yoke.rollerRadiusMm};
-    shape.guideStart = second.centre;
+        FollowerGlyphShape::Second{second.centre, second.plate, yoke.rollerRadiusMm, std::nullopt};
+    if (yoke.bellCrank()) {
+        shape.second->arm = shape.pivot;
+    } else {
+        shape.guideStart = second.centre;
+    }
     return shape;
 }
 
@@ -85,6 +89,8 @@ FollowerGlyph::FollowerGlyph(QCustomPlot* plot, QCPLayer* layer) {
     m_secondContact->setSize(6);
     m_secondContact->setPen(QPen(QColor(200, 40, 40)));
     m_secondContact->setBrush(QColor(200, 40, 40));
+    m_secondArm = new QCPItemLine(plot);
+    m_secondArm->setPen(QPen(follower, 2.0));
     for (QCPAbstractItem* item : items()) {
         item->setLayer(layer);
         item->setVisible(false);
@@ -92,9 +98,9 @@ FollowerGlyph::FollowerGlyph(QCustomPlot* plot, QCPLayer* layer) {
     }
 }
 
-std::array<QCPAbstractItem*, 8> FollowerGlyph::items() const {
-    return {m_guide,   m_pivot,  m_roller,       m_face,
-            m_contact, m_normal, m_secondRoller, m_secondContact};
+std::array<QCPAbstractItem*, 9> FollowerGlyph::items() const {
+    return {m_guide,  m_pivot,        m_roller,        m_face,     m_contact,
+            m_normal, m_secondRoller, m_secondContact, m_secondArm};
 }
 
 FollowerGlyphShape turnedBy(FollowerGlyphShape shape, double angle) {
@@ -110,6 +116,7 @@ FollowerGlyphShape turnedBy(FollowerGlyphShape shape, double angle) {
     if (shape.second) {
         shape.second->center = turn * shape.second->center;
         shape.second->contact = turn * shape.second->contact;
+        if (shape.second->arm) shape.second->arm = turn * *shape.second->arm;
     }
     return shape;
 }
@@ -144,12 +151,17 @@ void FollowerGlyph::show(const std::optional<FollowerGlyphShape>& shape) {
     m_normal->end->setCoords(g.normalTip.x(), g.normalTip.y());
     m_normal->setVisible(true);
     if (g.second) {
-        const FollowerGlyphShape::SecondRoller& r = *g.second;
+        const FollowerGlyphShape::Second& r = *g.second;
         m_secondRoller->topLeft->setCoords(r.center.x() - r.radius, r.center.y() + r.radius);
         m_secondRoller->bottomRight->setCoords(r.center.x() + r.radius, r.center.y() - r.radius);
         m_secondRoller->setVisible(true);
         m_secondContact->position->setCoords(r.contact.x(), r.contact.y());
         m_secondContact->setVisible(true);
+        if (r.arm) {
+            m_secondArm->start->setCoords(r.arm->x(), r.arm->y());
+            m_secondArm->end->setCoords(r.center.x(), r.center.y());
+            m_secondArm->setVisible(true);
+        }
     }
 }
 

@@ -29,13 +29,15 @@ struct FollowerGlyphShape {
     std::optional<std::array<Eigen::Vector2d, 2>> face;
     Eigen::Vector2d contact{0.0, 0.0};
     Eigen::Vector2d normalTip{0.0, 0.0};  ///< the contact normal's arrow runs contact → tip
-    /// A conjugate yoke's second roller (closure/conjugate.h): its circle and its contact on the
-    /// second plate. The line of motion then runs from it through the first roller: the yoke.
-    struct SecondRoller {
+    /// A conjugate pair's second roller (closure/conjugate.h): its circle and its contact on
+    /// the second plate. On a yoke the line of motion runs from it through the first roller; on
+    /// a bell crank its own arm runs from the pivot (`arm`).
+    struct Second {
         Eigen::Vector2d center{0.0, 0.0}, contact{0.0, 0.0};
         double radius = 0.0;
+        std::optional<Eigen::Vector2d> arm;  ///< a bell crank's pivot, where its arm starts
     };
-    std::optional<SecondRoller> second;
+    std::optional<Second> second;
 };
 
 /// @brief The glyph of follower `spec` in `state`, at cam angle `phi` (rad); none when the state
@@ -50,11 +52,11 @@ struct FollowerGlyphShape {
 [[nodiscard]] std::optional<FollowerGlyphShape> followerGlyphAt(const FollowerModel& model,
                                                                 double phi, double omega);
 
-/// @brief `shape` of the translating roller `model` at cam angle `phi` with the second roller
-/// of `yoke` added (ConjugatePoint: exact, on the second plate as computed, not as fitted).
+/// @brief `shape` of the roller `model` at cam angle `phi` with the second roller of `yoke`
+/// added (ConjugatePoint: exact, on the second plate as computed, not as fitted).
 [[nodiscard]] FollowerGlyphShape withSecondRoller(FollowerGlyphShape shape,
                                                   const FollowerModel& model,
-                                                  const ConjugateYoke& yoke, double phi);
+                                                  const SecondRoller& yoke, double phi);
 
 /// @brief `shape` turned by `angle` (rad, counter-clockwise) about the cam's centre.
 [[nodiscard]] FollowerGlyphShape turnedBy(FollowerGlyphShape shape, double angle);
@@ -81,7 +83,7 @@ public:
     [[nodiscard]] FollowerMarkers markers() const;
 
 private:
-    [[nodiscard]] std::array<QCPAbstractItem*, 8> items() const;
+    [[nodiscard]] std::array<QCPAbstractItem*, 9> items() const;
 
     QCPItemLine* m_guide = nullptr;  ///< the line of motion, or the arm
     QCPItemTracer* m_pivot = nullptr;
@@ -91,6 +93,7 @@ private:
     QCPItemLine* m_normal = nullptr;
     QCPItemEllipse* m_secondRoller = nullptr;
     QCPItemTracer* m_secondContact = nullptr;
+    QCPItemLine* m_secondArm = nullptr;
     QPointF m_center;  ///< the follower point of the shape shown last
 };
 

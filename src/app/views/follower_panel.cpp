@@ -103,6 +103,15 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
         spinBox(this, "conjugateRadiusSpinBox", " mm", tr("The second roller's radius"), 0.001);
     m_conjugateRadius->setSingleStep(0.5);
     m_conjugateRadius->setValue(5.0);
+    m_conjugateAngle =
+        spinBox(this, "conjugateAngleSpinBox", "°",
+                tr("A bell crank: the second arm's angle from the first about the pivot, "
+                   "counter-clockwise positive"),
+                -360.0);
+    m_conjugateAngle->setMaximum(360.0);
+    m_conjugateArm =
+        spinBox(this, "conjugateArmSpinBox", " mm",
+                tr("A bell crank: from the pivot to the second roller's centre"), 0.001);
     m_clearance = spinBox(this, "grooveClearanceSpinBox", " mm",
                           tr("The roller's play between the groove's flanks"), 0.0);
     m_clearance->setDecimals(3);
@@ -154,6 +163,11 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     m_conjugateDistance->setPrefix(tr("distance "));
     m_conjugateRadius->setPrefix(tr("radius "));
     form->addRow(tr("Second roller"), pair(m_conjugateDistance, m_conjugateRadius));
+    m_conjugateAngle->setAccessibleName(tr("Second arm's angle"));
+    m_conjugateArm->setAccessibleName(tr("Second arm's length"));
+    m_conjugateAngle->setPrefix(tr("angle "));
+    m_conjugateArm->setPrefix(tr("length "));
+    form->addRow(tr("Second arm"), pair(m_conjugateAngle, m_conjugateArm));
     // How the cam turns against this follower: the offset's sign only means something with
     // it. The picture is the setting: a click turns the cam round (the speed's sign).
     m_turning = new TurningPicture(this);
@@ -240,19 +254,13 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     choice(m_closure, [this](FollowerSpec& f, int i) {
         f.closure = static_cast<Closure>(i);
         if (f.closure == Closure::Conjugate) {
-            // A yoke takes a translating roller; its second roller the same radius, as far
-            // behind the first as twice the cam's largest radius and a roller: beyond the
-            // centre at every angle, with room to spare.
-            f.motion = FollowerMotion::Translating;
+            // A pair takes a roller; its second roller the same radius, on a yoke or a bell
+            // crank as conjugateDefaults() makes it.
             if (f.type != FollowerType::Roller) {
                 f.type = FollowerType::Roller;
                 if (!(f.radius > 0.0)) f.radius = m_radius->value();
             }
-            if (!(f.conjugateRadius > 0.0)) f.conjugateRadius = f.radius;
-            if (!(f.conjugateDistance > 0.0)) {
-                const double reach = m_largestRadius > 0.0 ? m_largestRadius : 50.0;
-                f.conjugateDistance = std::ceil(2.0 * (reach + f.radius));
-            }
+            conjugateDefaults(f);
             return;
         }
         if (f.closure != Closure::Groove) return;
@@ -273,12 +281,14 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
             }
         }
     });
-    choice(m_motion, [fittingRadius](FollowerSpec& f, int i) {
+    choice(m_motion, [this, fittingRadius](FollowerSpec& f, int i) {
         f.motion = static_cast<FollowerMotion>(i);
         if (f.motion == FollowerMotion::Oscillating) {
             if (!followerKind(f.type).canSwing) f.type = FollowerType::Roller;
             if (followerKind(f.type).hasRadius && !(f.radius > 0.0)) f.radius = fittingRadius();
         }
+        // A conjugate pair keeps its second roller: on a yoke or a bell crank now.
+        if (f.conjugate()) conjugateDefaults(f);
     });
     choice(m_side, [](FollowerSpec& f, int i) { f.arm = static_cast<ArmSide>(i); });
     const auto number = [this](NumberSpinBox* box, std::function<void(FollowerSpec&, double)> set) {
@@ -303,6 +313,8 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     });
     number(m_conjugateDistance, [](FollowerSpec& f, double v) { f.conjugateDistance = v; });
     number(m_conjugateRadius, [](FollowerSpec& f, double v) { f.conjugateRadius = v; });
+    number(m_conjugateAngle, [](FollowerSpec& f, double v) { f.conjugateAngleDeg = v; });
+    number(m_conjugateArm, [](FollowerSpec& f, double v) { f.conjugateArmLength = v; });
     number(m_limit, [](FollowerSpec& f, double v) {
         f.maxPressureAngleDeg = v > 0.0 ? std::optional<double>(v) : std::nullopt;
     });
@@ -311,6 +323,26 @@ FollowerPanel::FollowerPanel(ProjectDocument* document, QWidget* parent)
     connect(document, &ProjectDocument::followerChanged, this, &FollowerPanel::refresh);
     connect(document, &ProjectDocument::motionChanged, this, &FollowerPanel::refresh);
     refresh();
+}
+
+void FollowerPanel::conjugateDefaults(FollowerSpec& f) const {
+    if (!(f.conjugateRadius > 0.0)) f.conjugateRadius = f.radius > 0.0 ? f.radius : 5.0;
+    const double reach = m_largestRadius > 0.0 ? m_largestRadius : 50.0;
+    if (f.motion != FollowerMotion::Oscillating) {
+        f.conjugateAngleDeg = f.conjugateArmLength = 0.0;
+        // Beyond the centre at every angle, with room to spare.
+        if (!(f.conjugateDistance > 0.0)) f.conjugateDistance = std::ceil(2.0 * (reach + f.radius));
+        return;
+    }
+    f.conjugateDistance = 0.0;
+    if (f.conjugateArmLength > 0.0) return;
+    // The first arm mirrored about the line from the pivot to the cam centre: the first roller
+    // at the cam's largest radius lies γ from that line (law of cosines), the second −γ.
+    f.conjugateArmLength = f.armLength;
+    const double a = f.pivot.norm(), L = f.armLength, r = reach + f.radius;
+    const double cosine = std::clamp((a * a + L * L - r * r) / (2.0 * a * L), -1.0, 1.0);
+    const double gamma = std::acos(cosine) * 180.0 / kPi;
+    f.conjugateAngleDeg = std::round(f.arm == ArmSide::Ccw ? -2.0 * gamma : 2.0 * gamma);
 }
 
 void FollowerPanel::turnRound(bool clockwise) {
@@ -376,13 +408,22 @@ void FollowerPanel::refresh() {
     m_form->setRowVisible(m_armLength, arm);
     m_form->setRowVisible(m_side, arm);
     m_form->setRowVisible(m_innerLand->parentWidget(), f.grooved());
+    const bool crank = f.conjugate() && arm;
     if (f.conjugate()) {
-        m_conjugateDistance->setValue(f.conjugateDistance);
+        if (!crank) m_conjugateDistance->setValue(f.conjugateDistance);
         m_conjugateRadius->setValue(f.conjugateRadius);
     }
-    m_conjugateDistance->setEnabled(f.conjugate());
+    if (crank) {
+        m_conjugateAngle->setValue(f.conjugateAngleDeg);
+        m_conjugateArm->setValue(f.conjugateArmLength);
+    }
+    m_conjugateDistance->setEnabled(f.conjugate() && !crank);
+    m_conjugateDistance->setVisible(!crank);
     m_conjugateRadius->setEnabled(f.conjugate());
+    m_conjugateAngle->setEnabled(crank);
+    m_conjugateArm->setEnabled(crank);
     m_form->setRowVisible(m_conjugateDistance->parentWidget(), f.conjugate());
+    m_form->setRowVisible(m_conjugateAngle->parentWidget(), crank);
     m_radius->setEnabled(followerKind(f.type).hasRadius);
     m_offset->setEnabled(!arm);
     m_pivotX->setEnabled(arm);

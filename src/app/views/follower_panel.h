@@ -93,6 +93,12 @@ private:
     NumberSpinBox* m_outerLand;
     NumberSpinBox* m_conjugateDistance;
     NumberSpinBox* m_conjugateRadius;
+    NumberSpinBox* m_conjugateAngle;
+    NumberSpinBox* m_conjugateArm;
+    /// A conjugate pair's first carrier of the second roller, where the follower has none:
+    /// a yoke of 2·(largest radius + roller), or on an arm the first arm mirrored about the line
+    /// from the pivot to the cam centre.
+    void conjugateDefaults(FollowerSpec& f) const;
     /// The cam's largest radius in the last result (mm; 0 before one): a first conjugate yoke
     /// reaches twice its radius plus the roller's across.
     double m_largestRadius = 0.0;

@@ -44,7 +44,7 @@ int runState(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
                                                   spec.radius, spec.grooveClearance));
     }
     // A conjugate pair: the second roller on the second plate (exact, not the fitted arcs).
-    if (const auto yoke = ConjugateYoke::of(loaded.project)) {
+    if (const auto yoke = SecondRoller::of(loaded.project)) {
         const ConjugatePoint p = conjugatePoint(follower, *yoke, reduced);
         state["follower"]["second_roller"] = {
             {"center", {p.centre.x(), p.centre.y()}},

@@ -75,7 +75,7 @@ int runSynthesize(const Arguments& args, std::ostream& out, std::ostream& /*err*
     // as a note, why it cannot be made (the project is written all the same: its distance or
     // second roller is the designer's to change).
     Json second;
-    if (const auto yoke = ConjugateYoke::of(project)) {
+    if (const auto yoke = SecondRoller::of(project)) {
         const ProjectEvaluation e = evaluateProject(project);
         Diagnostics problems = e.followerProblems;
         if (e.follower) {
@@ -106,7 +106,7 @@ int runSynthesize(const Arguments& args, std::ostream& out, std::ostream& /*err*
                 {"jerk", jumps > 0 ? "unbounded at each acceleration jump" : "bounded"},
                 {"notes", notes},
                 {"out", *outPath}};
-    if (ConjugateYoke::of(project)) report["second_plate"] = second;
+    if (SecondRoller::of(project)) report["second_plate"] = second;
     writeProjectOut(*outPath, project, report);
     printJson(out, report);
     return kOk;

@@ -9,22 +9,44 @@
 #include "geometry/planar.h"
 
 namespace cam {
-ConjugatePoint conjugatePoint(const FollowerModel& first, const ConjugateYoke& yoke, double phi) {
+ConjugatePoint conjugatePoint(const FollowerModel& first, const SecondRoller& yoke, double phi) {
     const FollowerState st = first.at(phi, 1.0);
-    return conjugatePointOf(phi, {st.sPhi[0], st.sPhi[1], st.sPhi[2]}, first.spec().offset, yoke);
+    return conjugatePointOf(phi, {st.sPhi[0], st.sPhi[1], st.sPhi[2]}, first.spec(), yoke);
 }
 
-ConjugatePoint conjugatePointOf(double phi, const std::array<double, 3>& sPhi, double offset,
-                                const ConjugateYoke& yoke) {
+ConjugatePoint conjugatePointOf(double phi, const std::array<double, 3>& sPhi,
+                                const FollowerSpec& first, const SecondRoller& yoke) {
     const Eigen::Vector2d u(std::cos(phi), std::sin(phi)), n(-u.y(), u.x());
-    const double e = offset;
-    // P = a·u + e·n with a = s − D; u' = n, n' = −u.
-    const double a = sPhi[0] - yoke.distanceMm, a1 = sPhi[1], a2 = sPhi[2];
     ConjugatePoint out;
-    out.centre = a * u + e * n;
-    out.behind = -a;
-    const Eigen::Vector2d d1 = (a1 - e) * u + a * n;
-    const Eigen::Vector2d d2 = (a2 - a) * u + (2.0 * a1 - e) * n;
+    Eigen::Vector2d d1, d2, leaving;
+    if (first.motion == FollowerMotion::Oscillating) {
+        // The pivot turns with the follower frame: Q = R(φ)·q, Q' = R(φ)·J·q, Q'' = −Q. The
+        // second arm points along θ + β, θ = φ + ψ: P = Q + L₂·a(θ + β), a' = θ'·b, b' = −θ'·a.
+        const Eigen::Vector2d q = first.pivot;
+        const Eigen::Vector2d pivot = q.x() * u + q.y() * n, pivot1 = q.x() * n - q.y() * u;
+        const double theta = phi + sPhi[0] + yoke.armAngleRad, t1 = 1.0 + sPhi[1], t2 = sPhi[2];
+        const Eigen::Vector2d along(std::cos(theta), std::sin(theta)),
+            across(-along.y(), along.x());
+        const double L = yoke.armLengthMm;
+        out.centre = pivot + L * along;
+        out.behind = std::numeric_limits<double>::infinity();
+        d1 = pivot1 + L * t1 * across;
+        d2 = -pivot + L * (t2 * across - t1 * t1 * along);
+        // The first roller leaves its plate as ψ grows with awaySign; the crank carries the
+        // second towards its own then: it leaves it the other way.
+        const double away = first.arm == ArmSide::Cw ? -1.0 : 1.0;
+        leaving = -away * across;
+    } else {
+        // P = a·u + e·n with a = s − D; u' = n, n' = −u.
+        const double e = first.offset;
+        const double a = sPhi[0] - yoke.distanceMm, a1 = sPhi[1], a2 = sPhi[2];
+        out.centre = a * u + e * n;
+        out.behind = -a;
+        d1 = (a1 - e) * u + a * n;
+        d2 = (a2 - a) * u + (2.0 * a1 - e) * n;
+        leaving = -u;
+    }
+    out.roundCentre = cross(out.centre, d1);
     const double speed = d1.norm();
     // The path runs counter-clockwise round the cam: its outward normal is d1 turned clockwise,
     // and the plate lies the roller's radius inwards, towards the cam centre.
@@ -34,20 +56,23 @@ ConjugatePoint conjugatePointOf(double phi, const std::array<double, 3>& sPhi, d
     out.spread = 1.0 - yoke.rollerRadiusMm * curvature;
     out.rhoPlate = curvature != 0.0 ? 1.0 / curvature - yoke.rollerRadiusMm
                                     : std::numeric_limits<double>::infinity();
-    out.pressureAngle = std::atan2(cross(-u, outward), (-u).dot(outward));
+    out.pressureAngle = std::atan2(cross(leaving, outward), leaving.dot(outward));
     out.plateTangent = out.spread * d1;
     return out;
 }
 
-Diagnostics conjugateProblems(const FollowerModel& first, const ConjugateYoke& yoke) {
+Diagnostics conjugateProblems(const FollowerModel& first, const SecondRoller& yoke) {
     Diagnostics errors;
     const FollowerSpec& spec = first.spec();
-    if (spec.type != FollowerType::Roller || spec.motion != FollowerMotion::Translating) {
+    if (spec.type != FollowerType::Roller) {
         errors.push_back(Diagnostic::make(FieldPlace{Field::FollowerClosure},
-                                          DiagnosticCode::ConjugateNeedsTranslatingRoller));
+                                          DiagnosticCode::ConjugateNeedsRoller));
     }
+    const bool crank = spec.motion == FollowerMotion::Oscillating;
+    const Field carrier =
+        crank ? Field::FollowerConjugateArmLength : Field::FollowerConjugateDistance;
     for (const auto& [value, field] :
-         {std::pair{yoke.distanceMm, Field::FollowerConjugateDistance},
+         {std::pair{crank ? yoke.armLengthMm : yoke.distanceMm, carrier},
           std::pair{yoke.rollerRadiusMm, Field::FollowerConjugateRadius}}) {
         if (!(std::isfinite(value) && value >= kMinLengthMm && value <= kMaxLengthMm)) {
             errors.push_back(
@@ -56,8 +81,8 @@ Diagnostics conjugateProblems(const FollowerModel& first, const ConjugateYoke& y
         }
     }
     if (!errors.empty()) return errors;
-    // The second roller beyond the centre (s − D < 0, with room for its radius) and a plate
-    // that does not fold, at every sample.
+    // A yoke's second roller beyond the centre (s − D < 0, with room for its radius), a plate
+    // that does not fold and runs round the centre, at every sample.
     for (int k = 0; k < kConjugateCheckSamples; ++k) {
         const double phi = kTwoPi * k / kConjugateCheckSamples;
         const ConjugatePoint p = conjugatePoint(first, yoke, phi);
@@ -66,16 +91,26 @@ Diagnostics conjugateProblems(const FollowerModel& first, const ConjugateYoke& y
                                                 DiagnosticCode::ConjugateRollerNotBeyondCentre,
                                                 {radToDeg(phi), p.behind})};
         }
+        // The plate is a cam: its roller's centre and the plate itself run counter-clockwise
+        // round the centre (a bell crank whose arm swings across it makes none).
+        const auto notRound = [&] {
+            return Diagnostics{
+                Diagnostic::make(FieldPlace{crank ? Field::FollowerConjugateAngle
+                                                  : Field::FollowerConjugateDistance},
+                                 DiagnosticCode::ConjugatePlateNotRoundCentre, {radToDeg(phi)})};
+        };
+        if (!(p.roundCentre > 0.0)) return notRound();
         if (!(p.spread > 0.0)) {
             return Diagnostics{Diagnostic::make(FieldPlace{Field::FollowerConjugateRadius},
                                                 DiagnosticCode::ConjugatePlateFolds,
                                                 {yoke.rollerRadiusMm, radToDeg(phi)})};
         }
+        if (!(cross(p.plate, p.plateTangent) > 0.0)) return notRound();
     }
     return errors;
 }
 
-Result<ConjugatePlate> conjugatePlate(const FollowerModel& first, const ConjugateYoke& yoke,
+Result<ConjugatePlate> conjugatePlate(const FollowerModel& first, const SecondRoller& yoke,
                                       double toleranceMm, int samples,
                                       const std::atomic<bool>* cancel) {
     if (Diagnostics errors = conjugateProblems(first, yoke); !errors.empty()) return errors;
@@ -142,7 +177,7 @@ Result<ConjugatePlate> conjugatePlate(const FollowerModel& first, const Conjugat
 
 Result<std::optional<ConjugatePlate>> secondPlateOf(const Project& project, const Contour& contour,
                                                     const std::atomic<bool>* cancel) {
-    const std::optional<ConjugateYoke> yoke = ConjugateYoke::of(project);
+    const std::optional<SecondRoller> yoke = SecondRoller::of(project);
     if (!yoke) return std::optional<ConjugatePlate>{};
     auto first = FollowerModel::build(contour, *project.follower);
     if (!first.ok()) return first.errors();

@@ -2,12 +2,15 @@
 /// @file
 /// @brief A conjugate cam pair (issue 32, `closure: conjugate`): two plates on one shaft drive
 /// two rollers on one follower, the first plate the contour, the second computed so that its
-/// roller touches it at every angle while the first roller touches the first plate. Here the
-/// translating yoke: the second roller on the follower's line, `distance` behind the first
-/// (on the far side of the cam). Its centre runs on P(φ) = (s(φ) − D)·u(φ) + e·n(φ) in the cam
-/// frame (u along the line, n its left normal, s the first roller's coordinate); the second
-/// plate is that path offset towards the cam centre by the second roller's radius, fitted by
-/// G1 arcs within the tolerance (design/arc_fit.h, the synthesis machinery).
+/// roller touches it at every angle while the first roller touches the first plate. On a
+/// translating roller the yoke: the second roller on the follower's line, `distance` behind
+/// the first (on the far side of the cam), its centre on P(φ) = (s(φ) − D)·u(φ) + e·n(φ) in
+/// the cam frame (u along the line, n its left normal, s the first roller's coordinate). On a
+/// swinging arm the bell crank: a second arm of length L₂ on the same pivot Q(φ), turned by β
+/// from the first, its roller on P(φ) = Q(φ) + L₂·(cos(θ + β), sin(θ + β)) with θ = φ + ψ(φ)
+/// the first arm's direction. The second plate is that path offset towards the cam centre by
+/// the second roller's radius, fitted by G1 arcs within the tolerance (design/arc_fit.h, the
+/// synthesis machinery).
 
 #include <array>
 #include <atomic>
@@ -24,18 +27,27 @@
 
 namespace cam {
 
-/// @brief The second roller of a translating conjugate yoke.
-struct ConjugateYoke {
-    double distanceMm = 0.0;      ///< from the first roller's centre, back along the line
+/// @brief The second roller of a conjugate pair and what carries it: a translating yoke, or a
+/// swinging arm's bell crank (armLengthMm > 0).
+struct SecondRoller {
+    double distanceMm = 0.0;      ///< a yoke: from the first roller's centre, back along the line
     double rollerRadiusMm = 0.0;  ///< the second roller's radius
+    double armAngleRad = 0.0;     ///< a bell crank: the second arm's turn from the first (ccw)
+    double armLengthMm = 0.0;     ///< a bell crank: from the pivot to the second roller's centre
 
+    [[nodiscard]] bool bellCrank() const { return armLengthMm > 0.0; }
     /// @brief The follower's second roller (`closure: conjugate`); none for another closure.
-    [[nodiscard]] static std::optional<ConjugateYoke> of(const FollowerSpec& follower) {
+    [[nodiscard]] static std::optional<SecondRoller> of(const FollowerSpec& follower) {
         if (!follower.conjugate()) return std::nullopt;
-        return ConjugateYoke{follower.conjugateDistance, follower.conjugateRadius};
+        if (follower.motion == FollowerMotion::Oscillating) {
+            return SecondRoller{0.0, follower.conjugateRadius,
+                                follower.conjugateAngleDeg * (3.14159265358979323846 / 180.0),
+                                follower.conjugateArmLength};
+        }
+        return SecondRoller{follower.conjugateDistance, follower.conjugateRadius};
     }
     /// @brief The project's second roller; none without a follower or for another closure.
-    [[nodiscard]] static std::optional<ConjugateYoke> of(const Project& project) {
+    [[nodiscard]] static std::optional<SecondRoller> of(const Project& project) {
         return project.follower ? of(*project.follower) : std::nullopt;
     }
 };
@@ -73,7 +85,12 @@ struct ConjugatePlate {
 /// plate's derivative by φ: exact, from `first` (a translating roller on the first plate).
 struct ConjugatePoint {
     Eigen::Vector2d centre{0.0, 0.0};
-    double behind = 0.0;  ///< D − s: how far the second roller's centre is beyond the first's foot
+    /// A yoke's D − s: how far the second roller's centre is beyond the first's foot (+∞ on a
+    /// bell crank).
+    double behind = 0.0;
+    /// cross(P, P') of the centre's path: positive where it runs counter-clockwise round the
+    /// cam centre, as the plate must.
+    double roundCentre = 0.0;
     Eigen::Vector2d plate{0.0, 0.0};
     Eigen::Vector2d plateTangent{1.0, 0.0};
     /// 1 − ρ₂·κ of the centre's path: where it is not positive the plate folds (undercut).
@@ -81,36 +98,38 @@ struct ConjugatePoint {
     /// The plate's radius of curvature at the contact (mm, positive where it bends round the
     /// cam centre, +∞ where straight): the centre path's 1/κ less ρ₂.
     double rhoPlate = 0.0;
-    /// The pressure angle at the second roller (rad): from the line's direction towards the
-    /// cam (−u), the second roller's direction of travel away from it, to the contact normal
-    /// (from the plate to the roller's centre), counter-clockwise positive.
+    /// The pressure angle at the second roller (rad): from the direction its centre moves when
+    /// it leaves its plate (a yoke's: −u, along the line towards the cam; a bell crank's:
+    /// across the second arm) to the contact normal (from the plate to the roller's centre),
+    /// counter-clockwise positive.
     double pressureAngle = 0.0;
 };
-[[nodiscard]] ConjugatePoint conjugatePoint(const FollowerModel& first, const ConjugateYoke& yoke,
+[[nodiscard]] ConjugatePoint conjugatePoint(const FollowerModel& first, const SecondRoller& yoke,
                                             double phi);
-/// @brief The same from the first roller's s(φ) and its first two derivatives by φ (mm, per
-/// rad) on a line at offset `offset` (mm): what a sampled turn holds (FollowerTurn's s, v/ω,
-/// a/ω²).
+/// @brief The same from the first follower's coordinate q(φ) (s in mm, or ψ in rad) and its
+/// first two derivatives by φ (per rad), `first` its spec: what a sampled turn holds
+/// (FollowerTurn's s, v/ω, a/ω²).
 [[nodiscard]] ConjugatePoint conjugatePointOf(double phi, const std::array<double, 3>& sPhi,
-                                              double offset, const ConjugateYoke& yoke);
+                                              const FollowerSpec& first, const SecondRoller& yoke);
 
 /// @brief How many equal steps of the turn conjugateProblems checks the second roller at.
 inline constexpr int kConjugateCheckSamples = 3600;
 
 /// @brief Why the second plate for `yoke` behind `first` cannot be made, each at its key: a
-/// first follower that is not a translating roller, a second roller or distance that is not a
+/// first follower that is not a roller, a second roller, distance or arm that is not a
 /// positive length, a distance that does not put the second roller beyond the cam centre at
-/// every angle, a plate that folds (its roller too large for the path's bend) — checked at
-/// kConjugateCheckSamples angles. Empty: conjugatePlate can fit it. Part of the one verdict
-/// (evaluation/evaluation.h), so cheap: about 0.1 µs … 4 µs an angle (arcs … splines).
-[[nodiscard]] Diagnostics conjugateProblems(const FollowerModel& first, const ConjugateYoke& yoke);
+/// every angle, a second roller that does not run round the cam centre with the cam (a plate
+/// that is not a cam), a plate that folds (its roller too large for the path's bend) —
+/// checked at kConjugateCheckSamples angles. Empty: conjugatePlate can fit it. Part of the one
+/// verdict (evaluation/evaluation.h), so cheap: about 0.1 µs … 4 µs an angle (arcs … splines).
+[[nodiscard]] Diagnostics conjugateProblems(const FollowerModel& first, const SecondRoller& yoke);
 
 /// @brief The second plate for `yoke` behind the translating roller `first`, fitted within
 /// `toleranceMm`, and its play over the turn measured at `samples` angles. Errors:
 /// conjugateProblems', a fit that cannot meet the tolerance. None returned once `cancel` reads
 /// true.
 [[nodiscard]] Result<ConjugatePlate> conjugatePlate(const FollowerModel& first,
-                                                    const ConjugateYoke& yoke, double toleranceMm,
+                                                    const SecondRoller& yoke, double toleranceMm,
                                                     int samples = 7200,
                                                     const std::atomic<bool>* cancel = nullptr);
 

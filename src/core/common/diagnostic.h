@@ -126,8 +126,9 @@ enum class Severity { Error, Info };
     X(GrooveToolTooWide)                 \
     X(GrooveToolTooNarrow)               \
     X(GrooveNoCompensation)              \
-    X(ConjugateNeedsTranslatingRoller)   \
+    X(ConjugateNeedsRoller)              \
     X(ConjugateRollerNotBeyondCentre)    \
+    X(ConjugatePlateNotRoundCentre)      \
     X(ConjugatePlateFolds)               \
     X(LandRadiiCrossed)                  \
     X(SeedStepTooSmall)                  \

@@ -270,14 +270,18 @@ constexpr std::array<DiagnosticEntry, kDiagnosticCodeCount> kCatalogue{{
      CAM_TRANSLATE_NOOP("Diagnostic",
                         "a groove is milled on computed tool-centre paths: a controller's cutter "
                         "compensation (G41/G42) cannot follow both flanks")},
-    {Code::ConjugateNeedsTranslatingRoller, "",
+    {Code::ConjugateNeedsRoller, "",
      CAM_TRANSLATE_NOOP("Diagnostic",
-                        "a conjugate yoke needs a translating roller follower: its second roller "
-                        "runs on the same line")},
+                        "a conjugate pair needs a roller follower: its second roller runs on the "
+                        "same line (a yoke) or on a second arm of the same pivot (a bell crank)")},
     {Code::ConjugateRollerNotBeyondCentre, "nn",
      CAM_TRANSLATE_NOOP("Diagnostic",
                         "must put the second roller beyond the cam centre at every angle: at %1° "
                         "its centre is only %2 mm behind it")},
+    {Code::ConjugatePlateNotRoundCentre, "n",
+     CAM_TRANSLATE_NOOP("Diagnostic",
+                        "must let the second plate turn round the cam centre with the cam: at %1° "
+                        "the second roller moves backwards round it or reaches across it")},
     {Code::ConjugatePlateFolds, "nn",
      CAM_TRANSLATE_NOOP("Diagnostic",
                         "the second roller of %1 mm is wider than its path's bend at %2°: the "

@@ -119,6 +119,10 @@ std::string_view fieldKey(Field field) {
             return "follower.conjugate_distance_mm";
         case Field::FollowerConjugateRadius:
             return "follower.conjugate_radius_mm";
+        case Field::FollowerConjugateAngle:
+            return "follower.conjugate_angle_deg";
+        case Field::FollowerConjugateArmLength:
+            return "follower.conjugate_arm_length_mm";
         case Field::SamplesPerTurn:
             return "sampling.samples_per_turn";
         case Field::MachiningAxisAccel:

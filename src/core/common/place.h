@@ -78,6 +78,8 @@ enum class Field : std::uint8_t {
     FollowerOuterLandRadius,
     FollowerConjugateDistance,
     FollowerConjugateRadius,
+    FollowerConjugateAngle,
+    FollowerConjugateArmLength,
     SamplesPerTurn,
     MachiningAxisAccel,
     MachiningAxisVmax,

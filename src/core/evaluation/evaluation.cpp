@@ -89,7 +89,7 @@ ProjectEvaluation evaluateProject(const Project& project) {
         }
         // A conjugate pair whose second roller cannot stand beyond the centre, or whose second
         // plate would fold, cannot be made (the plate itself is fitted by its consumers).
-        if (const auto yoke = ConjugateYoke::of(project); e.follower && yoke) {
+        if (const auto yoke = SecondRoller::of(project); e.follower && yoke) {
             if (Diagnostics problems = conjugateProblems(*e.follower, *yoke); !problems.empty()) {
                 e.follower.reset();
                 e.followerProblems = std::move(problems);

@@ -65,8 +65,9 @@ ForceModel ForceModel::of(const DynamicsSpec& d, const FollowerSpec& follower) {
     if (follower.grooved() && follower.type == FollowerType::Roller) {
         m.grooveWidthMm = 2.0 * follower.radius + follower.grooveClearance;
     }
-    m.yoke = ConjugateYoke::of(follower);
-    m.offsetMm = follower.offset;
+    m.yoke = SecondRoller::of(follower);
+    m.follower = follower;
+    if (m.yoke && m.yoke->bellCrank()) m.secondLever = m.yoke->armLengthMm * 1e-3;
     if (m.yoke && m.hasStress) m.secondFollowerCurvature = 1.0 / m.yoke->rollerRadiusMm;
     return m;
 }
@@ -81,7 +82,7 @@ ForcePoint forceAt(const ForceModel& m, const ForceMotion& motion, double omega)
     const double alpha = second ? motion.second->pressureAngle : motion.pressureAngle;
     const double cosAlpha = std::cos(alpha);
     if (m.swinging) {
-        f.normal = f.load / (m.armLength * cosAlpha);
+        f.normal = f.load / ((second ? m.secondLever : m.armLength) * cosAlpha);
         f.lateral = kNaN;
     } else {
         f.normal = f.load / cosAlpha;
@@ -119,10 +120,9 @@ ForceMotion forceMotion(const FollowerModel& follower, const FollowerState& stat
                        state.pressureAngle,
                        state.rhoProfile,
                        std::nullopt};
-    if (const auto yoke = ConjugateYoke::of(follower.spec())) {
-        const ConjugatePoint p =
-            conjugatePointOf(state.phi, {state.sPhi[0], state.sPhi[1], state.sPhi[2]},
-                             follower.spec().offset, *yoke);
+    if (const auto yoke = SecondRoller::of(follower.spec())) {
+        const ConjugatePoint p = conjugatePointOf(
+            state.phi, {state.sPhi[0], state.sPhi[1], state.sPhi[2]}, follower.spec(), *yoke);
         motion.second = ForceMotion::Second{p.pressureAngle, p.rhoPlate};
     }
     return motion;
@@ -133,7 +133,7 @@ ForceMotion designForceMotion(const MotionDesign& design, const ExactProfile& pr
     const std::array<double, 4> l = design.liftAt(phi);
     const double unit = swinging ? kPi / 180.0 : 1e-3;
     const ProfilePoint p = profile.at(phi);
-    return {{l[0] * unit, l[1] * unit, l[2] * unit}, p.pressureAngle, p.rho};
+    return {{l[0] * unit, l[1] * unit, l[2] * unit}, p.pressureAngle, p.rho, std::nullopt};
 }
 
 double jumpSpeedAt(const ForceModel& m, const ForceMotion& motion, double omega) {
@@ -180,11 +180,11 @@ namespace {
 
 /// A conjugate pair's second roller at sample k of a turn (φ_k = 2π·k/n in the turning
 /// direction): from the first's s and its φ-derivatives v/ω and a/ω².
-ConjugatePoint secondOfSample(double offset, const ConjugateYoke& yoke, const FollowerTurn& turn,
-                              std::size_t k, double omega) {
+ConjugatePoint secondOfSample(const FollowerSpec& first, const SecondRoller& yoke,
+                              const FollowerTurn& turn, std::size_t k, double omega) {
     const double step = (omega < 0.0 ? -kTwoPi : kTwoPi) / static_cast<double>(turn.size());
     return conjugatePointOf(step * static_cast<double>(k),
-                            {turn.s[k], turn.v[k] / omega, turn.a[k] / (omega * omega)}, offset,
+                            {turn.s[k], turn.v[k] / omega, turn.a[k] / (omega * omega)}, first,
                             yoke);
 }
 
@@ -201,8 +201,8 @@ ForceMotion sampleMotion(const FollowerModel& follower, const FollowerTurn& turn
     }
     motion.pressureAngle = turn.pressureAngle[k];
     motion.rhoProfile = turn.rhoProfile[k];
-    if (const auto yoke = ConjugateYoke::of(follower.spec())) {
-        const ConjugatePoint p = secondOfSample(follower.spec().offset, *yoke, turn, k, omega);
+    if (const auto yoke = SecondRoller::of(follower.spec())) {
+        const ConjugatePoint p = secondOfSample(follower.spec(), *yoke, turn, k, omega);
         motion.second = ForceMotion::Second{p.pressureAngle, p.rhoPlate};
     }
     return motion;
@@ -226,7 +226,7 @@ ForcePoint ForceTurn::point(std::size_t k, const ForceModel& model, const Follow
     double alpha = turn.pressureAngle[k];
     double curvature = 0.0;
     if (model.conjugate() && normal[k] < 0.0) {
-        const ConjugatePoint p = secondOfSample(model.offsetMm, *model.yoke, turn, k, omega);
+        const ConjugatePoint p = secondOfSample(model.follower, *model.yoke, turn, k, omega);
         alpha = p.pressureAngle;
         curvature = secondCurvature(model, p.rhoPlate);
     } else {
@@ -288,8 +288,8 @@ void conjugateForcesOfTurn(const ForceModel& m, const FollowerTurn& turn, double
     const double scale = m.hasStress ? m.modulusMpa / (kPi * m.widthMm) : 0.0;
     for (std::size_t k = 0; k < turn.size(); ++k) {
         if (!(out.load[k] < 0.0)) continue;
-        const ConjugatePoint p = secondOfSample(m.offsetMm, *m.yoke, turn, k, omega);
-        out.normal[k] = out.load[k] / std::cos(p.pressureAngle);
+        const ConjugatePoint p = secondOfSample(m.follower, *m.yoke, turn, k, omega);
+        out.normal[k] = out.load[k] / (m.secondLever * std::cos(p.pressureAngle));
         if (m.hasStress) {
             const double curvature = secondCurvature(m, p.rhoPlate);
             out.stress[k] = std::sqrt(std::max(-out.normal[k] * curvature, 0.0) * scale);

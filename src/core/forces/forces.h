@@ -46,9 +46,14 @@ struct ForceModel {
     /// A conjugate pair's second roller (closure/conjugate.h): where the load turns negative
     /// it carries it, pressed on the second plate at its own pressure angle and on the plate's
     /// curvature there (ForceMotion::second), with its own radius (1/ρ₂ in 1/mm).
-    std::optional<ConjugateYoke> yoke;
+    std::optional<SecondRoller> yoke;
     double secondFollowerCurvature = 0.0;
-    double offsetMm = 0.0;  ///< the line's offset e, on which the second roller runs too
+    /// The first follower (its line's offset, or its pivot and side), which the second
+    /// roller's place follows.
+    FollowerSpec follower;
+    /// What a negative load pushes the second roller by: 1 on a yoke (the load is a force), a
+    /// bell crank's second arm (m) on an arm (the load is a moment).
+    double secondLever = 1.0;
     [[nodiscard]] bool conjugate() const { return yoke.has_value(); }
     /// @brief Form-closed: the follower never leaves the cam; a negative load is carried by a
     /// second contact (a groove's outer flank, a conjugate pair's second roller).

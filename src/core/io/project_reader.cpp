@@ -283,7 +283,8 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
     rd.onlyKeys(*f, "follower",
                 {"type", "motion", "offset", "radius", "pivot", "arm_length", "arm",
                  "max_pressure_angle_deg", "closure", "groove_clearance_mm", "inner_land_radius_mm",
-                 "outer_land_radius_mm", "conjugate_distance_mm", "conjugate_radius_mm"});
+                 "outer_land_radius_mm", "conjugate_distance_mm", "conjugate_radius_mm",
+                 "conjugate_angle_deg", "conjugate_arm_length_mm"});
     FollowerSpec spec;
     if (const auto type = rd.string(*f, "follower", "type", false)) {
         if (const auto known = followerTypeFromName(*type)) {
@@ -344,9 +345,17 @@ void readFollower(Reader& rd, const Json& root, const UnitsSpec& units, Project&
     if (const auto v = rd.number(*f, "follower", "outer_land_radius_mm", false)) {
         spec.outerLandRadius = *v;
     }
+    // A yoke's distance on a line, a bell crank's second arm on an arm.
     const bool conjugate = spec.closure == Closure::Conjugate;
-    if (const auto v = rd.number(*f, "follower", "conjugate_distance_mm", conjugate)) {
+    if (const auto v = rd.number(*f, "follower", "conjugate_distance_mm", conjugate && !swinging)) {
         spec.conjugateDistance = *v;
+    }
+    if (const auto v = rd.number(*f, "follower", "conjugate_angle_deg", conjugate && swinging)) {
+        spec.conjugateAngleDeg = *v;
+    }
+    if (const auto v =
+            rd.number(*f, "follower", "conjugate_arm_length_mm", conjugate && swinging)) {
+        spec.conjugateArmLength = *v;
     }
     if (const auto v = rd.number(*f, "follower", "conjugate_radius_mm", conjugate)) {
         spec.conjugateRadius = *v;

@@ -114,7 +114,12 @@ std::string serializeProject(const Project& p) {
         }
         if (f.closure == Closure::Conjugate) {
             j["closure"] = "conjugate";
-            j["conjugate_distance_mm"] = f.conjugateDistance;
+            if (f.motion == FollowerMotion::Oscillating) {
+                j["conjugate_angle_deg"] = f.conjugateAngleDeg;
+                j["conjugate_arm_length_mm"] = f.conjugateArmLength;
+            } else {
+                j["conjugate_distance_mm"] = f.conjugateDistance;
+            }
             j["conjugate_radius_mm"] = f.conjugateRadius;
         }
         if (f.innerLandRadius) j["inner_land_radius_mm"] = *f.innerLandRadius;
@@ -222,6 +227,8 @@ Diagnostics nonFiniteValues(const Project& p) {
         check(p.follower->grooveClearance, FieldPlace{Field::FollowerGrooveClearance});
         check(p.follower->conjugateDistance, FieldPlace{Field::FollowerConjugateDistance});
         check(p.follower->conjugateRadius, FieldPlace{Field::FollowerConjugateRadius});
+        check(p.follower->conjugateAngleDeg, FieldPlace{Field::FollowerConjugateAngle});
+        check(p.follower->conjugateArmLength, FieldPlace{Field::FollowerConjugateArmLength});
         if (p.follower->innerLandRadius) {
             check(*p.follower->innerLandRadius, FieldPlace{Field::FollowerInnerLandRadius});
         }

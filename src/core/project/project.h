@@ -137,10 +137,14 @@ struct FollowerSpec {
     /// Groove: the smallest radius the inner flank may come to (the bore's land) and the
     /// largest the outer flank may reach (the rim's), mm; unchecked when not given.
     std::optional<double> innerLandRadius, outerLandRadius;
-    /// Conjugate (a translating roller): the second roller's centre this far behind the first
-    /// on the same line, beyond the cam centre, and its radius, mm.
+    /// Conjugate: the second roller's radius, mm; on a translating roller's yoke its centre
+    /// this far behind the first on the same line, beyond the cam centre, mm; on a swinging
+    /// arm's bell crank a second arm of this length (mm) on the same pivot, turned by this
+    /// angle (degrees, counter-clockwise) from the first.
     double conjugateDistance = 0.0;
     double conjugateRadius = 0.0;
+    double conjugateAngleDeg = 0.0;
+    double conjugateArmLength = 0.0;
 
     [[nodiscard]] bool grooved() const { return closure == Closure::Groove; }
     [[nodiscard]] bool conjugate() const { return closure == Closure::Conjugate; }

@@ -341,10 +341,29 @@ private:
                        kMaxLengthMm, " mm");
         }
         if (f.conjugate()) {
-            if (f.type != FollowerType::Roller || f.motion != FollowerMotion::Translating) {
-                error(FieldPlace{Field::FollowerClosure}, Code::ConjugateNeedsTranslatingRoller);
+            if (f.type != FollowerType::Roller) {
+                error(FieldPlace{Field::FollowerClosure}, Code::ConjugateNeedsRoller);
             }
-            checkPositiveLength(FieldPlace{Field::FollowerConjugateDistance}, f.conjugateDistance);
+            if (f.motion == FollowerMotion::Oscillating) {
+                // A bell crank: a second arm on the same pivot, at an angle from the first.
+                if (f.conjugateDistance != 0.0) {
+                    error(FieldPlace{Field::FollowerConjugateDistance},
+                          Code::DynamicsKeyForTranslating);
+                }
+                checkPositiveLength(FieldPlace{Field::FollowerConjugateArmLength},
+                                    f.conjugateArmLength);
+                checkRange(FieldPlace{Field::FollowerConjugateAngle}, f.conjugateAngleDeg, -360.0,
+                           360.0, "°");
+            } else {
+                if (f.conjugateAngleDeg != 0.0) {
+                    error(FieldPlace{Field::FollowerConjugateAngle}, Code::DynamicsKeyForArm);
+                }
+                if (f.conjugateArmLength != 0.0) {
+                    error(FieldPlace{Field::FollowerConjugateArmLength}, Code::DynamicsKeyForArm);
+                }
+                checkPositiveLength(FieldPlace{Field::FollowerConjugateDistance},
+                                    f.conjugateDistance);
+            }
             checkPositiveLength(FieldPlace{Field::FollowerConjugateRadius}, f.conjugateRadius);
         }
         bool landsOk = true;
