@@ -362,6 +362,38 @@ TEST(ForcesPanel, OnAConjugatePairBeyondTheJumpSpeedTheSecondRollerTakesTheLoad)
     EXPECT_NEAR(*s.maxNormalSecond, -f.load / std::cos(second.pressureAngle),
                 1e-9 * *s.maxNormalSecond);
     EXPECT_EQ(panel->problemCount(), 0);
+    // Coloured by stress, the profile shows it where it acts: on the second plate, the second
+    // roller's radius from its centre, while that roller carries; and no stroke jumps across
+    // from one plate to the other (the steps are 0.1° apart: under a millimetre each).
+    const ForceCurves& curves = *r->forces;
+    const std::size_t n = ComputeResult::kFollowerCurvePoints;
+    int onSecond = 0;
+    for (std::size_t k = 0; k < n; k += 7) {
+        const double phi = r->omega * r->period * static_cast<double>(k) / n;
+        const Eigen::Vector2d contact(curves.contactX[k], curves.contactY[k]);
+        const bool carries = curves.curves.normal[k] < 0.0;
+        const Eigen::Vector2d centre = carries
+                                           ? conjugatePoint(first, {150.0, pair.radius}, phi).centre
+                                           : first.at(phi, r->omega).center;
+        EXPECT_NEAR((contact - centre).norm(), pair.radius, 1e-9) << k;
+        onSecond += carries ? 1 : 0;
+    }
+    EXPECT_GT(onSecond, 0);
+    auto* action = window.findChild<QAction*>("actionStressColours");
+    ASSERT_NE(action, nullptr);
+    action->setChecked(true);
+    const StressOverlay& overlay = window.contourView()->stressOverlay();
+    double longest = 0.0;
+    for (int i = 0; i < StressOverlay::kBands; ++i) {
+        const QCPCurve* band = overlay.band(i);
+        for (int k = 1; k < band->dataCount(); ++k) {
+            const auto a = band->data()->at(k - 1);
+            const auto b = band->data()->at(k);
+            if (std::isnan(a->key) || std::isnan(b->key)) continue;
+            longest = std::max(longest, std::hypot(b->key - a->key, b->value - a->value));
+        }
+    }
+    EXPECT_LT(longest, 1.0);
 }
 
 }  // namespace

@@ -197,7 +197,13 @@ std::shared_ptr<const ForceCurves> computeForces(const Project& project, const F
         for (std::size_t k = 0; k <= n; ++k) {
             if ((k & 1023) == 0 && cancel->load()) return nullptr;
             const double t = period * static_cast<double>(k % n) / static_cast<double>(n);
-            const Eigen::Vector2d c = model.at(omega * t, omega).contact;
+            const FollowerState state = model.at(omega * t, omega);
+            Eigen::Vector2d c = state.contact;
+            if (out->model.formClosed() && out->curves.normal[k] < 0.0) {
+                c = out->model.yoke
+                        ? conjugatePoint(model, *out->model.yoke, omega * t).plate
+                        : Eigen::Vector2d(state.center + model.spec().radius * state.normal);
+            }
             out->contactX[k] = c.x();
             out->contactY[k] = c.y();
         }

@@ -72,8 +72,10 @@ struct ForceCurves {
     /// Load, normal force, torque and stress at kFollowerCurvePoints + 1 equal time steps, on
     /// followerX (the last closes the turn).
     ForceTurn curves;
-    /// Where the follower touches the profile at the same steps (mm, the cam's frame): the
-    /// contour view colours the profile by the stress there.
+    /// Where the contact that carries the load lies at the same steps (mm, the cam's frame):
+    /// the contour view colours the profile by the stress there. Form-closed, where the load
+    /// is negative, that is the second contact: a groove's outer flank (ρ across the roller),
+    /// a conjugate pair's second plate.
     std::vector<double> contactX, contactY;
 };
 

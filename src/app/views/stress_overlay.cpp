@@ -60,8 +60,15 @@ void StressOverlay::show(const ComputeResult* r, bool on) {
     constexpr double kGap = std::numeric_limits<double>::quiet_NaN();
     std::array<QVector<QCPCurveData>, kBands> data;
     int previous = -1;
+    const std::vector<double>& normal = f.curves.normal;
     for (std::size_t k = 0; k + 1 < stress.size(); ++k) {
         if (!std::isfinite(stress[k])) {  // the follower has left the cam: nothing touches
+            previous = -1;
+            continue;
+        }
+        // Form-closed, the load passes to the other contact (the outer flank, the second
+        // plate) and back: no line across from one to the other.
+        if (f.model.formClosed() && (normal[k] < 0.0) != (normal[k + 1] < 0.0)) {
             previous = -1;
             continue;
         }

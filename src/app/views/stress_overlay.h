@@ -1,8 +1,9 @@
 #pragma once
 /// @file
 /// @brief The contour view's colouring of the profile by contact stress (on demand, View ▸
-/// Colour by Contact Stress): where the follower touches the profile over the turn, the stretch
-/// drawn thick in the colour of the Hertz stress there, from blue (none) to red (at or above
+/// Colour by Contact Stress): where the follower touches the profile over the turn (or,
+/// form-closed, the outer flank or second plate while it carries), the stretch drawn thick in
+/// the colour of the Hertz stress there, from blue (none) to red (at or above
 /// the allowable stress, or the largest stress when the project gives none), with the scale
 /// named in a label.
 
