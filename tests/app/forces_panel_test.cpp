@@ -43,6 +43,18 @@ bool openWithForces(MainWindow& w, const char* name) {
     return w.waitForCurrentResult(20000);
 }
 
+/// The spring-loaded example at 1.05 times its jump speed, computed: where it leaves the cam.
+std::vector<std::array<double, 2>> springCamBeyondItsJumpSpeed(MainWindow& window) {
+    EXPECT_TRUE(openWithForces(window, kSpringCam));
+    const double jump = window.engine()->latestResult()->forces->summary.jumpSpeed;
+    window.document()->undoStack()->push(
+        new SetMotion(window.document(), MotionSpec{SpeedUnit::OmegaRadS, 1.05 * jump}));
+    EXPECT_TRUE(window.waitForCurrentResult(20000));
+    const auto liftOff = window.engine()->latestResult()->forces->summary.liftOff;
+    EXPECT_FALSE(liftOff.empty());
+    return liftOff;
+}
+
 /// math.md §9 for the example's translating roller (c 5 N·s/m, k 3 N/mm, F0 40 N, no external
 /// force), from the follower's state: s in mm from its lowest, v in mm/s, a in mm/s².
 double loadOf(const FollowerState& f, double mass, double lowest) {
@@ -282,13 +294,8 @@ TEST(ForcesPanel, InAGrooveBeyondTheJumpSpeedTheRollerCrossesToTheOuterFlank) {
     // never does: the outer flank takes the load in the same ranges (to the clearance's
     // effect, neglected), and the dock names the crossovers and the outer flank's stress.
     MainWindow window;
-    ASSERT_TRUE(openWithForces(window, kSpringCam));
-    const double jump = window.engine()->latestResult()->forces->summary.jumpSpeed;
-    window.document()->undoStack()->push(
-        new SetMotion(window.document(), MotionSpec{SpeedUnit::OmegaRadS, 1.05 * jump}));
-    ASSERT_TRUE(window.waitForCurrentResult(20000));
-    const auto liftOff = window.engine()->latestResult()->forces->summary.liftOff;
-    ASSERT_FALSE(liftOff.empty());
+    std::vector<std::array<double, 2>> liftOff;
+    ASSERT_NO_FATAL_FAILURE(liftOff = springCamBeyondItsJumpSpeed(window));
     FollowerSpec grooved = *window.document()->project().follower;
     grooved.closure = Closure::Groove;
     grooved.grooveClearance = 0.05;
@@ -320,13 +327,8 @@ TEST(ForcesPanel, OnAConjugatePairBeyondTheJumpSpeedTheSecondRollerTakesTheLoad)
     // the spring would lose it, and the dock names the handovers and the second plate's
     // stress, each roller's own.
     MainWindow window;
-    ASSERT_TRUE(openWithForces(window, kSpringCam));
-    const double jump = window.engine()->latestResult()->forces->summary.jumpSpeed;
-    window.document()->undoStack()->push(
-        new SetMotion(window.document(), MotionSpec{SpeedUnit::OmegaRadS, 1.05 * jump}));
-    ASSERT_TRUE(window.waitForCurrentResult(20000));
-    const auto liftOff = window.engine()->latestResult()->forces->summary.liftOff;
-    ASSERT_FALSE(liftOff.empty());
+    std::vector<std::array<double, 2>> liftOff;
+    ASSERT_NO_FATAL_FAILURE(liftOff = springCamBeyondItsJumpSpeed(window));
     FollowerSpec pair = *window.document()->project().follower;
     pair.closure = Closure::Conjugate;
     pair.conjugateDistance = 150.0;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "closure/groove.h"
+#include "common/angles.h"
 #include "common/diagnostic.h"
 #include "contour/contour.h"
 #include "design/arc_fit.h"
@@ -40,8 +41,7 @@ struct SecondRoller {
     [[nodiscard]] static std::optional<SecondRoller> of(const FollowerSpec& follower) {
         if (!follower.conjugate()) return std::nullopt;
         if (follower.motion == FollowerMotion::Oscillating) {
-            return SecondRoller{0.0, follower.conjugateRadius,
-                                follower.conjugateAngleDeg * (3.14159265358979323846 / 180.0),
+            return SecondRoller{0.0, follower.conjugateRadius, degToRad(follower.conjugateAngleDeg),
                                 follower.conjugateArmLength};
         }
         return SecondRoller{follower.conjugateDistance, follower.conjugateRadius};
