@@ -11,12 +11,14 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QFile>
 #include <QIcon>
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTableView>
+#include <QTemporaryDir>
 #include <QTest>
 #include <cmath>
 #include <limits>
@@ -787,6 +789,34 @@ TEST(MotionDesignLaws, ImportTableReadsInventorsTwoColumnsOrSaysWhereItCannot) {
     EXPECT_EQ(panel->model()->index(0, DesignTableModel::Points).data().toInt(), 5);
     doc->undoStack()->undo();
     EXPECT_EQ(doc->project(), before);
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(MotionDesignLaws, ADesignWhoseLawsCannotMeetIsStillADesign) {
+    // A cycloid beside a line: not computable, but the dock must not say there is no design.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("line.cam.json");
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "camwright", "version": 1, "name": "line", "motion": {"rpm": 60},
+      "contour": [], "design": {"base_radius": 60, "segments": [
+        {"law": "dwell", "to_deg": 60}, {"law": "cycloidal", "to_deg": 120, "lift": 5},
+        {"law": "line", "to_deg": 200, "lift": 15}, {"law": "cycloidal", "to_deg": 360,
+        "lift": 0}]}})");
+    file.close();
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(path).isEmpty());
+    EXPECT_FALSE(window.document()->isValid());
+    auto* report = window.motionDesignPanel()->findChild<QLabel*>("synthesisReportLabel");
+    ASSERT_NE(report, nullptr);
+    EXPECT_FALSE(report->text().contains("no motion design")) << report->text().toStdString();
+    EXPECT_EQ(window.motionDesignPanel()->model()->index(1, DesignTableModel::EndClass).data(),
+              "Velocity");
 }
 
 }  // namespace

@@ -592,6 +592,10 @@ void MotionDesignPanel::refresh() {
         m_plotArea->hide();
         m_notes->clear();
         m_report->setText(noDesignText());
+    } else if (m_reportText.isEmpty()) {
+        // A design that cannot be computed yet (a law its neighbours cannot meet) brings no
+        // result to say so: it is a design all the same.
+        m_report->setText(synthesizeHint());
     }
 }
 
