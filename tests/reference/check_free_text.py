@@ -81,8 +81,11 @@ def check_camtable(path, points):
     comments = [line for line in lines if line.startswith("#")]
     if any(not line.startswith("#") for line in lines[:6]):
         fail(path, f"the first 6 lines are not all comments: {lines[:6]}")
-    elif len(comments) != 6:
-        fail(path, f"{len(comments)} comment lines, not the 6 of the header")
+    elif len(comments) != 12:
+        # The header's 6, the source, and the 5 lines of the motion's characteristics.
+        fail(path, f"{len(comments)} comment lines, not the 12 of the header")
+    elif any(not line.startswith("#") for line in lines[:12]):
+        fail(path, f"the comment lines are not all at the top: {lines[:12]}")
     for line in comments:
         for cell in re.split(r"[,;]", line):
             if FORMULA.match(cell):
