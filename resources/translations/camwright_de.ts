@@ -1633,7 +1633,22 @@
         <translation>CODESYS Strukturierter Text (SMC_CAMXYVA)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+2" />
+        <source>Beckhoff TwinCAT Structured Text (MC_MotionFunctionPoint)</source>
+        <translation>Beckhoff TwinCAT Strukturierter Text (MC_MotionFunctionPoint)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Rockwell Logix Structured Text (CAM array)</source>
+        <translation>Rockwell Logix Strukturierter Text (CAM-Array)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Kollmorgen KAS cam profile CSV</source>
+        <translation>Kollmorgen KAS Kurvenprofil-CSV</translation>
+    </message>
+    <message>
+        <location line="+10" />
         <source>PNG image</source>
         <translation>PNG-Bild</translation>
     </message>
@@ -3341,12 +3356,12 @@
         <translation>Ein Winkelhebel: der Winkel des zweiten Arms zum ersten um den Drehpunkt, gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>A bell crank: from the pivot to the second roller's centre</source>
         <translation>Ein Winkelhebel: vom Drehpunkt zum Mittelpunkt der zweiten Rolle</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+2" />
         <source>The roller's play between the groove's flanks</source>
         <translation>Das Spiel der Rolle zwischen den Flanken der Nut</translation>
     </message>
@@ -5859,7 +5874,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>cam::StressOverlay</name>
     <message>
-        <location filename="../../src/app/views/stress_overlay.cpp" line="+85" />
+        <location filename="../../src/app/views/stress_overlay.cpp" line="+92" />
         <source>Contact stress
 blue 0 … red %1 (allowable)</source>
         <translation>Kontaktpressung
