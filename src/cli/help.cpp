@@ -272,7 +272,9 @@ std::vector<CommandHelp> makeTable() {
                formatNumber(kDefaultGcodeToleranceMm) +
                " for gcode); camtable: the largest "
                "position error of the controller's interpolation allowed (mm, or deg on a "
-               "swinging arm): the fewest points that meet it are written (not with --points)"},
+               "swinging arm): the fewest points that meet it are written (beyond about 700, a "
+               "count "
+               "found by bisection; not with --points)"},
           {"--points", "N",
            "csv: instants per turn (default: the project's samples per turn); camtable: table "
            "rows, " +

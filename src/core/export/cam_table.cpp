@@ -806,16 +806,26 @@ std::optional<std::size_t> camTablePointsFor(const CamMotion& motion,
         return interpolationError(motion, camKnots(motion, n), options.dialect).position <=
                toleranceMm;
     };
+    // The error is not monotone in the count: it drops where knots fall on the motion's joints
+    // (a law's jerk jumps there). Every count is tried from the smallest while that costs at
+    // most kScanSamples evaluations of the motion, so such a count is found; beyond, doubling
+    // and bisection find a count that meets the tolerance where one point fewer does not.
+    constexpr std::size_t kScanSamples = 4'000'000;
     const auto most = static_cast<std::size_t>(kMaxCamTablePoints);
-    std::size_t failed = 0;
     auto n = static_cast<std::size_t>(kMinCamTablePoints);
+    std::size_t spent = 0;
+    for (; spent + kErrorSamples * n <= kScanSamples; ++n) {
+        if (meets(n)) return n;
+        spent += kErrorSamples * n;
+    }
+    std::size_t failed = n - 1;
     while (!meets(n)) {
         if (n == most) return std::nullopt;
         failed = n;
         n = std::min(2 * n, most);
     }
-    // Here `failed` fails (or is 0: the first count met it) and n meets it.
-    while (failed != 0 && n - failed > 1) {
+    // Here `failed` fails and n meets.
+    while (n - failed > 1) {
         const std::size_t mid = failed + (n - failed) / 2;
         if (meets(mid)) {
             n = mid;
