@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -179,6 +180,34 @@ TEST(CamTableSource, TheLawIsExactInTheDwellsTheArcFittedContourIsNot) {
         if (contour[deg][1] != lift || contour[deg][2] != 0.0 || contour[deg][3] != 0.0) ++inexact;
     }
     EXPECT_GT(inexact, 0);
+}
+
+// Fact: on a swinging arm the law's table is in degrees of swing like the contour's (both say
+// slave=lift_deg and slave_unit "deg"), and the two agree to what the arcs cost (within 0.005°
+// and 0.005°/° at every point, the design's tolerance being 0.001 mm): the law's derivatives
+// per radian were made per master degree, not left per radian (180/π apart).
+TEST(CamTableSource, ASwingingArmsLawIsInDegreesLikeItsContour) {
+    const test::TempDir dir;
+    const std::string project = test::examplePath("swinging-arm-cam.cam.json");
+    std::vector<std::vector<std::vector<double>>> tables;
+    for (const char* source : {"law", "contour"}) {
+        const std::string out = dir.file(std::string(source) + ".csv");
+        const auto r = test::runCli(
+            {"export", project, "--format", "camtable", "--source", source, "--out", out});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_EQ(Json::parse(r.out).value("slave_unit", ""), "deg");
+        EXPECT_NE(test::readFile(out).find("# slave=lift_deg\n"), std::string::npos);
+        tables.push_back(csvRows(test::readFile(out)));
+    }
+    ASSERT_EQ(tables[0].size(), 360u);
+    ASSERT_EQ(tables[1].size(), 360u);
+    double stroke = 0.0;
+    for (std::size_t i = 0; i < 360; ++i) {
+        stroke = std::max(stroke, tables[0][i][1]);
+        EXPECT_NEAR(tables[0][i][1], tables[1][i][1], 0.005) << i;
+        EXPECT_NEAR(tables[0][i][2], tables[1][i][2], 0.005) << i;
+    }
+    EXPECT_GT(stroke, 1.0);
 }
 
 // Fact: a design never synthesised (no contour) exports its law as a cam table, by default and

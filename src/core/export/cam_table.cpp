@@ -178,8 +178,6 @@ constexpr std::string_view kReservedWords[] = {"ABSTRACT",
                                                "CAL",
                                                "CALC",
                                                "CALCN",
-                                               "CAM",
-                                               "CAM_PROFILE",
                                                "CASE",
                                                "CHAR",
                                                "CLASS",
@@ -520,6 +518,11 @@ void appendLogixReal(std::string& out, double value) {
 /// identifier, shortened to leave room for "_profile".
 std::string logixName(const std::string& name) {
     std::string id = identifier(name);
+    // Logix's own data types for cams: "cam_" in front, as identifier() does for keywords (and
+    // its name for an empty one, "cam").
+    std::string upper;
+    for (char c : id) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (upper == "CAM" || upper == "CAM_PROFILE") id = "cam_" + id;
     if (id.size() > 32) id.resize(32);
     while (!id.empty() && id.back() == '_') id.pop_back();
     return id;
