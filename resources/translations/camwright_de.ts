@@ -1713,7 +1713,22 @@
         <translation>CODESYS Strukturierter Text (SMC_CAMXYVA)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+2" />
+        <source>Beckhoff TwinCAT Structured Text (MC_MotionFunctionPoint)</source>
+        <translation>Beckhoff TwinCAT Strukturierter Text (MC_MotionFunctionPoint)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Rockwell Logix Structured Text (CAM array)</source>
+        <translation>Rockwell Logix Strukturierter Text (CAM-Array)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Kollmorgen KAS cam profile CSV</source>
+        <translation>Kollmorgen KAS Kurvenprofil-CSV</translation>
+    </message>
+    <message>
+        <location line="+10" />
         <source>PNG image</source>
         <translation>PNG-Bild</translation>
     </message>

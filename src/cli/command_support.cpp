@@ -22,7 +22,10 @@ Project loadStructure(const std::string& path) {
     return std::move(loaded).value();
 }
 
-Loaded load(const std::string& path) {
+namespace {
+
+/// load(), or with `allowDesignOnly` the project alone when its status is AwaitsContour.
+LoadedOrDesign loadEvaluated(const std::string& path, bool allowDesignOnly) {
     auto project = loadProjectStructure(path);
     Diagnostics problems = project.ok() ? Diagnostics{} : project.errors();
     std::optional<ProjectEvaluation> evaluation;
@@ -32,6 +35,7 @@ Loaded load(const std::string& path) {
             case EvaluationStatus::Computed:
                 break;
             case EvaluationStatus::AwaitsContour:
+                if (allowDesignOnly) return {std::nullopt, std::move(project).value()};
                 problems = {contourNeverSynthesised()};
                 break;
             case EvaluationStatus::Invalid:
@@ -51,13 +55,17 @@ Loaded load(const std::string& path) {
         }
         throw CliError{kInvalidInput, placeOf(path, d), message};
     }
-    return {std::move(project).value(),
-            std::move(*evaluation->contour),
-            evaluation->omega,
-            *evaluation->follower,
-            std::move(evaluation->groove),
-            evaluation->outerFlankFollower};
+    return {Loaded{std::move(project).value(), std::move(*evaluation->contour), evaluation->omega,
+                   *evaluation->follower, std::move(evaluation->groove),
+                   evaluation->outerFlankFollower},
+            std::nullopt};
 }
+
+}  // namespace
+
+Loaded load(const std::string& path) { return *loadEvaluated(path, false).loaded; }
+
+LoadedOrDesign loadAllowingDesignOnly(const std::string& path) { return loadEvaluated(path, true); }
 
 std::optional<ConjugatePlate> secondPlate(const Loaded& loaded, const std::string& path) {
     const std::optional<SecondRoller> yoke = SecondRoller::of(loaded.project);

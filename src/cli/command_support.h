@@ -47,6 +47,16 @@ struct Loaded {
 /// stderr via `validate`, which is the command for seeing them all.
 [[nodiscard]] Loaded load(const std::string& path);
 
+/// @brief What load() gives (`loaded`), or for a valid motion design whose contour was never
+/// synthesised (evaluation status AwaitsContour, which load() refuses) the project alone
+/// (`designOnly`): a cam table can still be made from its law. Anything else load() refuses is
+/// refused the same way.
+struct LoadedOrDesign {
+    std::optional<Loaded> loaded;
+    std::optional<Project> designOnly;
+};
+[[nodiscard]] LoadedOrDesign loadAllowingDesignOnly(const std::string& path);
+
 /// @brief A conjugate pair's second plate (closure/conjugate.h), fitted within the project's
 /// conjugateTolerance; none for another closure. Throws what cannot be made, located at its
 /// key (exit 2).

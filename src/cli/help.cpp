@@ -271,7 +271,11 @@ std::vector<CommandHelp> makeTable() {
          "segment on layer CONTOUR (splines as tangent arcs within the tolerance). svg: the "
          "profile 1:1 in mm. gcode: a LinuxCNC program milling the contour from outside with "
          "G2/G3 arcs. camtable: a servo drive's electronic cam, master angle → follower lift "
-         "with velocity and acceleration per degree, equidistant over one period. csv: the "
+         "with velocity and acceleration per degree, equidistant over one period, from the "
+         "design's motion law or the contour (--source), in the dialect of a drive's "
+         "controller; it prints on stdout a JSON report: the points, the largest difference "
+         "between the controller's interpolation of the table and the exact motion "
+         "(max_error) and the motion's extremes (characteristics). csv: the "
          "sampled turn with the follower's motion. png, pdf, and svg with --plot: a plot as "
          "the desktop application draws it (drawn by the program camwright beside this "
          "one).\n\n"
@@ -282,14 +286,25 @@ std::vector<CommandHelp> makeTable() {
            "dxf, svg, gcode: how far arcs standing in for splines may deviate (default " +
                formatNumber(kDefaultExportToleranceMm) + " mm for dxf, " +
                formatNumber(kSvgToleranceMm) + " for svg, " +
-               formatNumber(kDefaultGcodeToleranceMm) + " for gcode)"},
+               formatNumber(kDefaultGcodeToleranceMm) +
+               " for gcode); camtable: the largest "
+               "position error of the controller's interpolation allowed (mm, or deg on a "
+               "swinging arm): the fewest points that meet it are written (beyond about 700, a "
+               "count "
+               "found by bisection; not with --points)"},
           {"--points", "N",
            "csv: instants per turn (default: the project's samples per turn); camtable: table "
            "rows, " +
                std::to_string(kMinCamTablePoints) + " to " + std::to_string(kMaxCamTablePoints) +
                " (default " + std::to_string(kDefaultCamTablePoints) + ")"},
           {"--dialect", joinNames(dialectNames(ExportFormatId::CamTable), "|"),
-           "camtable: plain CSV (default) or a CODESYS cam table"},
+           "camtable: plain CSV (default), CODESYS SMC_CAMXYVA, Beckhoff TwinCAT "
+           "MC_MotionFunctionPoint, Rockwell Logix CAM array or Kollmorgen KAS cam profile "
+           "CSV"},
+          {"--source", "law|contour",
+           "camtable: the design's motion law, exact (default when the project has a design; "
+           "the only source of a design never synthesised) or the follower on the contour "
+           "(default otherwise)"},
           {"--tool-radius", "MM",
            "dxf: add the tool-centre path on layer TOOLPATH; gcode: the cutter radius "
            "(default: the project's machining.tool_radius)"},

@@ -164,6 +164,37 @@ TEST(ExportInWindow, EveryFormatWritesWhatTheCliWrites) {
     }
 }
 
+TEST(ExportInWindow, ADesignsCamTableIsItsLawAsTheCliWritesIt) {
+    // Issue 33: a project with a design exports its law by default, in the window as in the
+    // CLI, byte for byte, in every dialect.
+    test::TempDir dir;
+    const std::string project = test::examplePath("synthesised-cycloidal-roller.cam.json");
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(QString::fromStdString(project)).isEmpty());
+    const std::string title =
+        "Synthesised from motion: cycloidal rise, modified-sine return, roller 8 mm";
+    const std::pair<const char*, CamTableDialect> dialects[] = {
+        {"csv", CamTableDialect::Csv},
+        {"codesys", CamTableDialect::Codesys},
+        {"beckhoff", CamTableDialect::Beckhoff},
+        {"rockwell", CamTableDialect::Rockwell},
+        {"kollmorgen", CamTableDialect::Kollmorgen}};
+    for (const auto& [name, dialect] : dialects) {
+        const FormatCase c{name,
+                           {"--format", "camtable", "--dialect", name},
+                           [&, dialect = dialect](ExportRequest& r) {
+                               r.format = ExportFormat::CamTable;
+                               r.camTable.dialect = dialect;
+                               r.camTable.name = title;
+                           }};
+        ExportedBothWays both;
+        ASSERT_NO_FATAL_FAILURE(both = exportBothWays(window, project, c, dir));
+        EXPECT_GT(both.app.size(), 200u) << name;
+        EXPECT_EQ(both.app, both.cli) << name;
+    }
+    EXPECT_NE(test::readFile(dir.file("app-csv")).find("# source=law\n"), std::string::npos);
+}
+
 TEST(ExportInWindow, AConjugatePairWritesWhatTheCliWrites) {
     // Both plates in the drawings, and the second plate's program: byte for byte the CLI's.
     test::TempDir dir;
@@ -446,7 +477,7 @@ TEST(ExportDialogTest, ListsEveryFormatAndDialectOfTheTable) {
     EXPECT_EQ(titles("tableDialect"), tables);
     EXPECT_EQ(titles("pictureFormat"), pictures);
     EXPECT_EQ(formats.size(), 6);
-    EXPECT_EQ(tables.size(), 2);
+    EXPECT_EQ(tables.size(), 5);
     EXPECT_EQ(pictures.size(), 3);
     // Each picture dialect is the PictureFormat of its place in the table.
     for (int k = 0; k < pictures.size(); ++k) {

@@ -316,9 +316,10 @@ TEST(ExportArguments, BadArgumentsAreLocatedAndLeaveNoFile) {
         {{"--format", "dxf", "--out", out, "--tolerance", "nan"}, 2, "--tolerance"},
         {{"--format", "camtable", "--out", out, "--points", "0"}, 2, "--points"},
         {{"--format", "camtable", "--out", out, "--points", "-5"}, 2, "--points"},
-        {{"--format", "camtable", "--out", out, "--dialect", "siemens"},
+        {{"--format", "camtable", "--out", out, "--dialect", "punched-tape"},
          2,
-         "--dialect: unknown cam table dialect 'siemens' (csv, codesys)"},
+         "--dialect: unknown cam table dialect 'punched-tape' (csv, codesys, beckhoff, rockwell, "
+         "kollmorgen)"},
         {{"--format", "svg", "--out", out, "--points", "10"},
          1,
          "--points: is not an option of --format svg"},

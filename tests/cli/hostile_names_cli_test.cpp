@@ -48,6 +48,9 @@ TEST(HostileNames, EveryExportCarryingTheNameStaysValidForItsReader) {
         const std::vector<std::vector<std::string>> exports{
             {"--format", "camtable", "--dialect", "csv", "--out", stem + ".camtable.csv"},
             {"--format", "camtable", "--dialect", "codesys", "--out", stem + ".codesys.st"},
+            {"--format", "camtable", "--dialect", "beckhoff", "--out", stem + ".beckhoff.st"},
+            {"--format", "camtable", "--dialect", "rockwell", "--out", stem + ".rockwell.st"},
+            {"--format", "camtable", "--dialect", "kollmorgen", "--out", stem + ".kollmorgen.csv"},
             {"--format", "svg", "--out", stem + ".drawing.svg"},
             {"--format", "gcode", "--tool-radius", "3", "--out", stem + ".program.ngc"},
         };
@@ -58,7 +61,7 @@ TEST(HostileNames, EveryExportCarryingTheNameStaysValidForItsReader) {
             EXPECT_EQ(r.exitCode, 0) << options[1] << ": " << r.err;
         }
     }
-    EXPECT_TRUE(test::exportsAreValid(out.string(), 4 * names.size()));
+    EXPECT_TRUE(test::exportsAreValid(out.string(), 7 * names.size()));
 }
 
 TEST(HostileNames, TheCheckerRefusesWhatTheProbeFound) {

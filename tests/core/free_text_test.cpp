@@ -111,7 +111,9 @@ TEST(CamTableText, TheCsvHeaderKeepsItsLinesWhateverTheName) {
     EXPECT_EQ(text.value().substr(0, text.value().find('\n')),
               "# camwright cam table of cam  =1+1,'@x # points=99: master angle -> follower "
               "lift s(phi) - min s");
-    EXPECT_EQ(std::count(text.value().begin(), text.value().end(), '\n'), 6 + 1 + 4);
+    // The header's 6 comment lines, the source and 5 of characteristics, the column names and
+    // 4 rows: the name added none.
+    EXPECT_EQ(std::count(text.value().begin(), text.value().end(), '\n'), 6 + 6 + 1 + 4);
 }
 
 }  // namespace

@@ -81,8 +81,11 @@ def check_camtable(path, points):
     comments = [line for line in lines if line.startswith("#")]
     if any(not line.startswith("#") for line in lines[:6]):
         fail(path, f"the first 6 lines are not all comments: {lines[:6]}")
-    elif len(comments) != 6:
-        fail(path, f"{len(comments)} comment lines, not the 6 of the header")
+    elif len(comments) != 12:
+        # The header's 6, the source, and the 5 lines of the motion's characteristics.
+        fail(path, f"{len(comments)} comment lines, not the 12 of the header")
+    elif any(not line.startswith("#") for line in lines[:12]):
+        fail(path, f"the comment lines are not all at the top: {lines[:12]}")
     for line in comments:
         for cell in re.split(r"[,;]", line):
             if FORMULA.match(cell):
@@ -126,7 +129,7 @@ LD LDN ST STN S R ANDN ORN XORN ADD SUB MUL DIV GT GE EQ NE LE LT JMP JMPC JMPCN
 CALCN RET RETC RETCN
 POINTER REFERENCE UNION END_UNION VAR_INST VAR_STAT PERSISTENT AND_THEN OR_ELSE ADR BITADR
 SIZEOF INI PROPERTY END_PROPERTY
-MC_CAM_REF SMC_CAMXYVA
+MC_CAM_REF SMC_CAMXYVA MC_MOTIONFUNCTIONPOINT
 """.split())
 IDENTIFIER = re.compile(r"^(?:[A-Za-z]|_[A-Za-z0-9])(?:_?[A-Za-z0-9])*$")
 NUMBER = r"-?[0-9]+\.[0-9]*(?:e[-+]?[0-9]+)?"
@@ -180,6 +183,87 @@ def check_codesys(path, points):
         fail(path, f"ARRAY[0..{m['n']}] with nElements {m['elements']} for {points} points")
 
 
+def check_beckhoff(path, points):
+    """TwinCAT's MC_MotionFunctionPoint array: an IEC identifier that is no keyword, points
+    numbered from 1 without gaps, points + 1 of them."""
+    text = strip_st_comments(path, open(path, encoding="utf-8").read())
+    if text is None:
+        return
+    point = (r"\(PointIndex := ([0-9]+), FunctionType := MOTIONFUNCTYPE_POLYNOM5_MM, "
+             r"PointType := MOTIONPOINTTYPE_MOTION,\s*RelIndexNextPoint := 1, "
+             rf"MasterPos := {NUMBER}, SlavePos := {NUMBER},\s*SlaveVelo := {NUMBER}, "
+             rf"SlaveAcc := {NUMBER}, SlaveJerk := {NUMBER}\)")
+    m = re.match(r"^\s*VAR_GLOBAL\s+(?P<id>\w+) : ARRAY\[1\.\.(?P<n>[0-9]+)\] OF "
+                 rf"MC_MotionFunctionPoint := \[\s*(?P<points>{point}(?:,\s*{point})*)\s*\];"
+                 r"\s*END_VAR\s*$", text)
+    if not m:
+        fail(path, "not the VAR_GLOBAL block of motion function points once its comments are "
+                   "taken away")
+        return
+    if not IDENTIFIER.match(m["id"]) or m["id"].upper() in IEC_RESERVED:
+        fail(path, f"{m['id']!r} is no IEC 61131-3 identifier or a reserved word")
+    indices = [int(i) for i in re.findall(r"PointIndex := ([0-9]+)", m["points"])]
+    if indices != list(range(1, points + 2)) or int(m["n"]) != points + 1:
+        fail(path, f"points numbered {indices[:3]}…, ARRAY[1..{m['n']}], for {points} points")
+
+
+# Logix tag names: a letter or underscore first, then letters, digits and single underscores,
+# no underscore last, at most 40 characters (the name plus "_profile" for the CAM_PROFILE).
+LOGIX_TAG = re.compile(r"^[A-Za-z_](?:_?[A-Za-z0-9])*$")
+
+
+def check_rockwell(path, points):
+    """Logix Structured Text filling a CAM array: one tag, elements 0 … points, cubic."""
+    text = strip_st_comments(path, open(path, encoding="utf-8").read())
+    if text is None:
+        return
+    statement = re.compile(rf"^(\w+)\[([0-9]+)\]\.Master := {NUMBER}; \1\[\2\]\.Slave := "
+                           rf"{NUMBER}; \1\[\2\]\.SegmentType := 1;$")
+    names, indices = set(), []
+    for line in text.split("\n"):
+        if not line.strip():
+            continue
+        m = statement.match(line)
+        if not m:
+            fail(path, f"not a statement filling the CAM array: {line[:80]!r}")
+            return
+        names.add(m[1])
+        indices.append(int(m[2]))
+    if len(names) != 1:
+        fail(path, f"the elements of {len(names)} tags")
+        return
+    name = names.pop()
+    if not LOGIX_TAG.match(name) or len(name) + len("_profile") > 40 or \
+            name.upper() in IEC_RESERVED | {"CAM", "CAM_PROFILE"}:
+        fail(path, f"{name!r} is no Logix tag name")
+    if indices != list(range(points + 1)):
+        fail(path, f"elements {indices[:3]}… for {points} points")
+
+
+def check_kollmorgen(path, points):
+    """KAS IDE's cam profile CSV: its fixed lines and points + 1 rows X;Y;SPLINE, nothing of the
+    name (the format has no comments)."""
+    data = open(path, "rb").read()
+    if b"\r" in data or not data.endswith(b"\n"):
+        fail(path, "a carriage return, or no line feed at the end")
+    lines = data.decode("ascii", errors="replace").split("\n")[:-1]
+    if lines[:2] != ["CYCLIC;YES;", "TABLE_BEGIN;;"] or lines[-1:] != ["TABLE_END;;"]:
+        fail(path, f"not a KAS cam profile: {lines[:2]} … {lines[-1:]}")
+        return
+    rows = lines[2:-1]
+    if len(rows) != points + 1:
+        fail(path, f"{len(rows)} rows, not {points + 1}")
+    for row in rows:
+        cells = row.split(";")
+        try:
+            ok = len(cells) == 3 and cells[2] == "SPLINE" and [float(v) for v in cells[:2]]
+        except ValueError:
+            ok = False
+        if not ok:
+            fail(path, f"not a row X;Y;SPLINE: {row[:80]!r}")
+            return
+
+
 def check_gcode(path, rs274):
     data = open(path, "rb").read()
     if any(b < 0x20 and b != 0x0A or b >= 0x7F for b in data):
@@ -220,8 +304,14 @@ def main():
             check_svg(path)
         elif name.endswith(".pdf"):
             check_pdf(path)
+        elif name.endswith(".kollmorgen.csv"):
+            check_kollmorgen(path, args.points)
         elif name.endswith(".csv"):
             check_camtable(path, args.points)
+        elif name.endswith(".beckhoff.st"):
+            check_beckhoff(path, args.points)
+        elif name.endswith(".rockwell.st"):
+            check_rockwell(path, args.points)
         elif name.endswith(".st"):
             check_codesys(path, args.points)
         elif name.endswith(".ngc"):

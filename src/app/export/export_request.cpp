@@ -4,6 +4,7 @@
 
 #include "closure/conjugate.h"
 #include "contour/contour.h"
+#include "design/motion_design.h"
 #include "export/sample_csv.h"
 
 namespace cam {
@@ -88,6 +89,17 @@ Result<std::string> exportText(const Project& project, const ExportRequest& requ
         case ExportFormat::CamTable: {
             CamTableOptions options = request.camTable;
             options.follower = project.follower.value_or(FollowerSpec{});
+            // As camwright-cli's default --source: the design's law when there is one (the
+            // arc-fitted contour is only C1), else the follower on the contour.
+            if (project.design) {
+                auto design = MotionDesign::build(*project.design);
+                if (!design.ok()) return design.errors();
+                auto table = camTable(lawMotion(design.value(), options.follower.motion ==
+                                                                    FollowerMotion::Oscillating),
+                                      options);
+                if (!table.ok()) return table.errors();
+                return std::move(table).value().text;
+            }
             return camTableText(contour.value(), options);
         }
         case ExportFormat::Picture:

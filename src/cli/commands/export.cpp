@@ -10,6 +10,7 @@
 #include "cli/command_support.h"
 #include "cli/export_choice.h"
 #include "cli/plot_pictures.h"
+#include "design/motion_design.h"
 #include "export/cam_table.h"
 #include "export/dxf.h"
 #include "export/export_formats.h"
@@ -25,6 +26,124 @@ namespace {
     const Diagnostic& d = errors.front();
     if (d.location.rfind("--", 0) == 0) throw CliError{kInvalidInput, d.location, d.message};
     throw CliError{kNotComputable, project + ": " + d.location, d.message};
+}
+
+Json extremes(const CamExtreme& lo, const CamExtreme& hi) {
+    return {
+        {"min", lo.value}, {"min_at_deg", lo.atDeg}, {"max", hi.value}, {"max_at_deg", hi.atDeg}};
+}
+
+/// The JSON report of a cam table (printed on stdout).
+Json camTableJson(const CamTableReport& r, std::string_view dialect, CamTableSource source,
+                  bool arm, std::optional<double> tolerance) {
+    Json json;
+    json["format"] = "camtable";
+    json["dialect"] = dialect;
+    json["source"] = source == CamTableSource::Law ? "law" : "contour";
+    json["slave_unit"] = arm ? "deg" : "mm";
+    json["points"] = r.points;
+    if (tolerance) json["tolerance"] = *tolerance;
+    json["interpolation"] = r.interpolation;
+    json["max_error"] = {{"position", r.positionError},
+                         {"position_at_deg", r.positionErrorAtDeg},
+                         {"velocity_per_deg", r.velocityError},
+                         {"acceleration_per_deg2", r.accelerationError}};
+    const CamCharacteristics& c = r.characteristics;
+    json["characteristics"] = {
+        {"position", extremes(c.positionMin, c.positionMax)},
+        {"velocity_per_deg", extremes(c.velocityMin, c.velocityMax)},
+        {"acceleration_per_deg2", extremes(c.accelerationMin, c.accelerationMax)},
+        {"jerk_per_deg3", extremes(c.jerkMin, c.jerkMax)}};
+    return json;
+}
+
+/// `export --format camtable`: the table of the design's law or of the follower on the contour
+/// (`--source`), its points given (`--points`) or chosen for `--tolerance`; the report on stdout.
+int exportCamTable(const Arguments& args, const ExportFormatKind& kind, const std::string& input,
+                   const std::string& outPath, std::ostream& out) {
+    CamTableOptions options;
+    const std::optional<std::string> pointsText = args.option("--points");
+    const std::optional<std::string> toleranceText = args.option("--tolerance");
+    if (pointsText && toleranceText) {
+        throw CliError{kUsage, "--tolerance",
+                       "cannot be given with --points: the tolerance chooses the number of points"};
+    }
+    if (pointsText) {
+        options.points = static_cast<std::size_t>(
+            parseCount("--points", *pointsText, kMinCamTablePoints, kMaxCamTablePoints));
+    }
+    std::optional<double> tolerance;
+    if (toleranceText) tolerance = parsePositive("--tolerance", *toleranceText, "mm");
+    const ExportDialectKind* dialect = kind.dialects.data();
+    if (const auto d = args.option("--dialect")) {
+        dialect = findDialect(kind, *d);
+        if (!dialect) {
+            throw CliError{kInvalidInput, "--dialect",
+                           "unknown cam table dialect '" + *d + "' (" +
+                               joinNames(dialectNames(kind.id), ", ") + ")"};
+        }
+    }
+    // The table lists the dialects in CamTableDialect's order.
+    options.dialect = static_cast<CamTableDialect>(dialect - kind.dialects.data());
+    std::optional<CamTableSource> source;
+    if (const auto s = args.option("--source")) {
+        if (*s == "law") {
+            source = CamTableSource::Law;
+        } else if (*s == "contour") {
+            source = CamTableSource::Contour;
+        } else {
+            throw CliError{kInvalidInput, "--source", "unknown source '" + *s + "' (law, contour)"};
+        }
+    }
+
+    // A design never synthesised is a plain electronic cam, master to slave directly: its law
+    // makes the table.
+    const LoadedOrDesign loaded = loadAllowingDesignOnly(input);
+    const Project& project = loaded.loaded ? loaded.loaded->project : *loaded.designOnly;
+    const CamTableSource chosen =
+        source.value_or(project.design ? CamTableSource::Law : CamTableSource::Contour);
+    const FollowerSpec follower = project.follower.value_or(FollowerSpec{});
+    const bool arm = follower.motion == FollowerMotion::Oscillating;
+    CamMotion motion;
+    if (chosen == CamTableSource::Law) {
+        if (!project.design) {
+            throw CliError{
+                kInvalidInput, "--source",
+                "law: " + input + " has no design (no motion law to sample); use --source contour"};
+        }
+        auto design = MotionDesign::build(*project.design);
+        if (!design.ok()) exportFailed(input, design.errors());
+        motion = lawMotion(design.value(), arm);
+    } else {
+        if (!loaded.loaded) {
+            throw CliError{kInvalidInput, "--source",
+                           "contour: " + input +
+                               " has no contour (its design was never synthesised: run "
+                               "'camwright-cli synthesize', or use --source law)"};
+        }
+        auto fromContour = contourMotion(loaded.loaded->contour, follower);
+        if (!fromContour.ok()) exportFailed(input, fromContour.errors());
+        motion = std::move(fromContour).value();
+    }
+    if (tolerance) {
+        const std::optional<std::size_t> points = camTablePointsFor(motion, options, *tolerance);
+        if (!points) {
+            throw CliError{kNotComputable, "--tolerance",
+                           formatNumber(*tolerance) + " cannot be met with " +
+                               std::to_string(kMaxCamTablePoints) + " points in the " +
+                               std::string(dialect->name) + " dialect"};
+        }
+        options.points = *points;
+    }
+    options.name = exportName(project.name, input);
+    options.follower = follower;
+    Result<CamTable> table = camTable(motion, options);
+    if (!table.ok()) exportFailed(input, table.errors());
+    const Json report = camTableJson(table.value().report, dialect->name, chosen, arm, tolerance);
+    requireFinite(report, "");
+    writeExport(outPath, table.value().text);
+    printJson(out, report);
+    return kOk;
 }
 
 }  // namespace
@@ -66,6 +185,8 @@ int runExport(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
                            "is the project being exported; choose another file"};
         }
     }
+    if (kind.id == ExportFormatId::CamTable)
+        return exportCamTable(args, kind, input, *outPath, out);
     double tolerance = kind.id == ExportFormatId::Svg ? kSvgToleranceMm : kDefaultExportToleranceMm;
     if (const auto text = args.option("--tolerance")) {
         tolerance = parseFiniteNumber("--tolerance", *text, "a tolerance in mm");
@@ -153,25 +274,6 @@ int runExport(const Arguments& args, std::ostream& out, std::ostream& /*err*/) {
         options.groove = grooveOf(loaded.project);
         if (const auto plate = secondPlate(loaded, input)) options.secondPlate = plate->path;
         text = svgDocument(loaded.contour, options);
-    } else {
-        CamTableOptions options;
-        if (const auto p = args.option("--points")) {
-            options.points = static_cast<std::size_t>(
-                parseCount("--points", *p, kMinCamTablePoints, kMaxCamTablePoints));
-        }
-        if (const auto d = args.option("--dialect")) {
-            const ExportDialectKind* dialect = findDialect(kind, *d);
-            if (!dialect) {
-                throw CliError{kInvalidInput, "--dialect",
-                               "unknown cam table dialect '" + *d + "' (" +
-                                   joinNames(dialectNames(kind.id), ", ") + ")"};
-            }
-            // The table lists the dialects in CamTableDialect's order.
-            options.dialect = static_cast<CamTableDialect>(dialect - kind.dialects.data());
-        }
-        options.name = exportName(loaded.project.name, input);
-        options.follower = loaded.project.follower.value_or(FollowerSpec{});
-        text = camTableText(loaded.contour, options);
     }
     if (!text.ok()) exportFailed(input, text.errors());
     writeExport(*outPath, text.value());

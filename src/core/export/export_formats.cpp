@@ -18,7 +18,7 @@ constexpr Names kSvgOptions[] = {"--tolerance"};
 constexpr Names kGcodeOptions[] = {"--tolerance", "--tool-radius", "--depth", "--step-down",
                                    "--plate"};
 constexpr Names kGcodeFlags[] = {"--compensation"};
-constexpr Names kCamTableOptions[] = {"--points", "--dialect"};
+constexpr Names kCamTableOptions[] = {"--points", "--dialect", "--source", "--tolerance"};
 constexpr Names kPictureOptions[] = {"--plot", "--size"};
 
 /// The first dialect is the default; a cam table's are in CamTableDialect's order, a
@@ -26,9 +26,21 @@ constexpr Names kPictureOptions[] = {"--plot", "--size"};
 constexpr ExportDialectKind kCamTableDialects[] = {
     {"csv", CAM_TRANSLATE_NOOP("ExportFormat", "CSV"), "csv"},
     {"codesys", CAM_TRANSLATE_NOOP("ExportFormat", "CODESYS Structured Text (SMC_CAMXYVA)"), "st"},
+    {"beckhoff",
+     CAM_TRANSLATE_NOOP("ExportFormat",
+                        "Beckhoff TwinCAT Structured Text (MC_MotionFunctionPoint)"),
+     "st"},
+    {"rockwell", CAM_TRANSLATE_NOOP("ExportFormat", "Rockwell Logix Structured Text (CAM array)"),
+     "st"},
+    {"kollmorgen", CAM_TRANSLATE_NOOP("ExportFormat", "Kollmorgen KAS cam profile CSV"), "csv"},
 };
 static_assert(kCamTableDialects[static_cast<int>(CamTableDialect::Csv)].name == "csv" &&
-              kCamTableDialects[static_cast<int>(CamTableDialect::Codesys)].name == "codesys");
+              kCamTableDialects[static_cast<int>(CamTableDialect::Codesys)].name == "codesys" &&
+              kCamTableDialects[static_cast<int>(CamTableDialect::Beckhoff)].name == "beckhoff" &&
+              kCamTableDialects[static_cast<int>(CamTableDialect::Rockwell)].name == "rockwell" &&
+              kCamTableDialects[static_cast<int>(CamTableDialect::Kollmorgen)].name ==
+                  "kollmorgen" &&
+              std::size(kCamTableDialects) == 5);
 constexpr ExportDialectKind kPictureDialects[] = {
     {"png", CAM_TRANSLATE_NOOP("ExportFormat", "PNG image"), "png"},
     {"pdf", CAM_TRANSLATE_NOOP("ExportFormat", "PDF document (vector)"), "pdf"},
