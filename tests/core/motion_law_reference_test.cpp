@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -133,6 +134,7 @@ constexpr RefRow kPoly7Rise[] = {
     {0.9, 12.3011983125, -0.42416137193259233, -6.8206046832606498, 14.480181694478079},
     {0.97, 12.124030400837344, -1.4278066477048574, -4.1760339350937715, 12.992405330497251},
 };
+constexpr double kPoly7RiseTerms[] = {1314.0, 2556.5376818737332, 4228.254578815126, 5748.6863655980389};
 // u, s, s', s'', s''' per rad: poly7 150..360 deg, lift 12 -> 0 (8x8 system, mpmath)
 constexpr RefRow kPoly7Return[] = {
     {0.03, 11.793107096570521, -2.027755632703249, -2.3780599880243873, 7.0824234270622899},
@@ -147,6 +149,7 @@ constexpr RefRow kPoly7Return[] = {
     {0.9, -0.5040669975, -0.28168854067977157, 9.3896398280360544, 1.1439960208248438},
     {0.97, -0.27157732263424575, 2.0448355461977584, 8.2123579194665967, -11.3708379265399},
 };
+constexpr double kPoly7ReturnTerms[] = {505.95, 618.50793984372365, 681.41680379529482, 651.79271650384526};
 // x, y, y', y'', y''' of the quintic spline (mpmath)
 constexpr RefRow kTable6[] = {
     {0.0123, 4.2387636347274571e-5, 0.01014866168710198, 1.5890816425972291, 114.53813795640996},
@@ -233,6 +236,49 @@ constexpr RefRow kTable6V[] = {
     {0.9623, 0.99962575185451399, 0.029609762745204258, -1.5517613735712282, 39.528573281513657},
     {0.9873, 0.99998553987438318, 0.0034100697786696876, -0.53518753230938101, 41.694940827631203},
 };
+// x, y, y', y'', y''' of the spline with y'(0) = y'(1) = 3
+constexpr RefRow kTableEndV[] = {
+    {0.0123, 0.036810934687699483, 2.9785715319208349, -3.3890039825651709, -252.51390092753053},
+    {0.0373, 0.109616790180085, 2.8241917952066947, -8.6029604236185481, -166.49441350013042},
+    {0.0623, 0.17715041010822616, 2.5651618628226633, -11.808314614741231, -91.825720933074958},
+    {0.0873, 0.23739366842186352, 2.2481496676231505, -13.288836427441835, -28.507823226364154},
+    {0.1123, 0.28940645930725148, 1.9127288956748504, -13.328295733228977, 23.459279620001994},
+    {0.1373, 0.33314934101746534, 1.591378986256742, -12.210462403611274, 64.075587606023486},
+    {0.1623, 0.36930617970270841, 1.3094851318600886, -10.219106310097342, 93.341100731700322},
+    {0.1873, 0.39910679324061916, 1.0853382781884384, -7.6379973241957965, 111.2558189970325},
+    {0.2123, 0.42414959506657832, 0.93013512415762377, -4.7509053174152552, 117.81974240202003},
+    {0.2373, 0.44622423800401599, 0.84797812189576209, -1.8416001612643339, 113.0328709466629},
+    {0.2623, 0.46713425809471875, 0.83587547674325511, 0.8061482727483509, 96.895204630961111},
+    {0.2873, 0.48851971842913679, 0.8837411472527892, 2.9085701131141829, 69.406743454914669},
+    {0.3123, 0.51167991624671029, 0.97442056470936963, 4.1902595598804125, 32.607504871174039},
+    {0.3373, 0.53741193660651537, 1.0857371280817871, 4.5756084198078706, -0.86219675405282499},
+    {0.3623, 0.56596371547914769, 1.1968015057713354, 4.1930196883239993, -28.827502441732319},
+    {0.3873, 0.59710330208964019, 1.290135381723215, 3.1801032638674828, -51.288412191864443},
+    {0.4123, 0.63020479085491788, 1.3517006873435932, 1.6744690448770052, -68.244926004449197},
+    {0.4373, 0.66433432757032208, 1.3708996014996046, -0.18627307020874899, -79.697043879486581},
+    {0.4623, 0.69833611559613452, 1.3405745505193508, -2.2645131829510957, -85.644765816976595},
+    {0.4873, 0.7309184220441016, 1.2570082081919006, -4.4226413949113506, -86.088091816919238},
+    {0.5123, 0.7607395839639585, 1.1199234957672898, -6.5230478076508295, -81.027021879314512},
+    {0.5373, 0.78649401452995339, 0.93248358195652128, -8.4281225227308482, -70.461556004162416},
+    {0.5623, 0.80699820922737162, 0.70129188293156522, -10.000255641712722, -54.39169419146295},
+    {0.5873, 0.82127675203905986, 0.43639206232535874, -11.101837266157768, -32.817436441216114},
+    {0.6123, 0.82864832163195029, 0.15126803123180612, -11.5952574976273, -5.7387827534219076},
+    {0.6373, 0.82881169754358483, -0.13715605179422127, -11.342906437682635, 26.844266871919669},
+    {0.6623, 0.82193176636863922, -0.40851578073688495, -10.207174187885088, 64.931712434808615},
+    {0.6873, 0.80872552794544728, -0.63900650211937931, -8.0504508497959761, 108.52355393524493},
+    {0.7123, 0.7905480173975146, -0.80141752029273472, -4.7462501961320802, 154.90670084750508},
+    {0.7373, 0.76945715226719595, -0.86785380261365855, -0.43380382135360817, 187.27035721267728},
+    {0.7623, 0.74812628956701942, -0.81812694040231389, 4.4763350683970136, 202.72210204527705},
+    {0.7873, 0.7296022453849378, -0.64257959313832588, 9.561368684805474, 201.26193534530438},
+    {0.8123, 0.71704114501306498, -0.34212436500917746, 14.398499239557462, 182.88985711275927},
+    {0.8373, 0.7134441743299796, 0.071756195089790694, 18.564928944338667, 147.60586734764171},
+    {0.8623, 0.72139333118302854, 0.5770095935553801, 21.637860010834777, 95.409966049951725},
+    {0.8873, 0.7427871767706305, 1.1410133920765345, 23.194494650731483, 26.302153219689297},
+    {0.9123, 0.77857658702457954, 1.7205752076343399, 22.812035075714472, -59.717571143145571},
+    {0.9373, 0.82850050399234867, 2.2619327125020246, 20.067683497469434, -162.64920703855288},
+    {0.9623, 0.89082168721939337, 2.7007536342449588, 14.538642127682058, -282.49275446653262},
+    {0.9873, 0.96206246513145515, 2.9621357557206554, 5.8021131780380325, -419.24821342708481},
+};
 // poly4567 sampled at x = k/20, k = 0..20, through the quintic spline: its largest
 // deviation from the polynomial over 4001 points, for y, y', y'', y'''.
 constexpr double kPoly4567SplineDeviation[] = {6.2259864556595306e-8, 3.6055082665467443e-6, 3.9594586868445148e-4, 0.058595765250143668};
@@ -316,16 +362,32 @@ LawCoefficients sampled(const SegmentView& s) {
             peak([&](double x) { return s.at(x).j; })};
 }
 
-/// |got − want| ≤ tol·max(1, |want|) for y, y', y'' and 10·tol·max(1, |want|) for y''' (whose
-/// size is tens to thousands), each message naming what and where.
+/// |got − want| ≤ tol·max(1, |want|) + dx·|want'| for y, y', y'' (dx: how far x itself may be
+/// off, so want' the next derivative) and 10·tol·max(1, |want|) for y''' (tens to thousands),
+/// each message naming what and where.
 void expectPoint(const LawPoint& got, const LawPoint& want, double tol, const std::string& what,
-                 bool checkJerk = true) {
-    EXPECT_TRUE(relClose(got.y, want.y, tol, 1.0)) << what << " y";
-    EXPECT_TRUE(relClose(got.v, want.v, tol, 1.0)) << what << " y'";
-    EXPECT_TRUE(relClose(got.a, want.a, tol, 1.0)) << what << " y''";
+                 bool checkJerk = true, double dx = 0.0) {
+    const auto near = [&](double g, double w, double next) {
+        const double bound = tol * std::max(1.0, std::abs(w)) + dx * std::abs(next);
+        if (std::abs(g - w) <= bound) return ::testing::AssertionSuccess();
+        return ::testing::AssertionFailure() << "got " << g << " want " << w << ": difference "
+                                             << std::abs(g - w) << " > " << bound;
+    };
+    EXPECT_TRUE(near(got.y, want.y, want.v)) << what << " y";
+    EXPECT_TRUE(near(got.v, want.v, want.a)) << what << " y'";
+    EXPECT_TRUE(near(got.a, want.a, want.j)) << what << " y''";
     if (checkJerk) {
         EXPECT_TRUE(relClose(got.j, want.j, 10 * tol, 1.0)) << what << " y'''";
     }
+}
+
+/// expectPoint for segment s at x. The design finds x as (φ − φ0)/h from φ = φ0 + x·h, so x is
+/// known to a few ulps of φ/h: dx = 8ε·(φ0 + h)/h (with y''' up to ~1700, as for λ = 0.9, that
+/// is ~1e-12 in y'').
+void expectAt(const SegmentView& s, double x, const LawPoint& want, double tol,
+              const std::string& what, bool checkJerk = true) {
+    const double dx = 8 * std::numeric_limits<double>::epsilon() * (s.phi0 + s.h) / s.h;
+    expectPoint(s.at(x), want, tol, what, checkJerk, dx);
 }
 
 // ------------------------------------------------------------- the classic laws, written out
@@ -441,6 +503,12 @@ LawCoefficients sccaCoefficients(double b, double d) {
     return {ca * (b / kPi + c / 2.0 + d / kPi), ca, smallest > 0.0 ? ca * kPi / smallest : 0.0};
 }
 
+/// The coefficients of a law without a closed form (poly5, poly7, table) may be found by
+/// sampling: a maximum of f sampled every δ is low by at most |f''|·δ²/8, with δ = 1/20 000 at
+/// most 2e-8 relative for every poly7 here (e.g. poly4567's Ca = 7.51 where |y''''| = 376). 1e-6
+/// relative allows that and still catches a wrong normalisation (h in degrees, a missing 1/Δ).
+constexpr double kSampledCoefficients = 1e-6;
+
 void expectCoefficients(const LawCoefficients& got, const LawCoefficients& want, double rel,
                         const std::string& what) {
     EXPECT_TRUE(relClose(got.cv, want.cv, rel, 1e-12)) << what << " Cv";
@@ -498,8 +566,8 @@ TEST(MotionLawReference, InclinedSineWithoutEndVelocityIsTheCycloid) {
     for (std::size_t k : {0u, 2u}) {
         const SegmentView s = viewOf(m, k);
         for (double x : samplesOfX()) {
-            expectPoint(s.at(x), cycloid(x), 1e-12,
-                        "segment " + std::to_string(k) + " x " + std::to_string(x));
+            expectAt(s, x, cycloid(x), 1e-12,
+                     "segment " + std::to_string(k) + " x " + std::to_string(x));
         }
         expectCoefficients(m.coefficients(k), {2.0, kTwoPi, 4 * kPi * kPi}, 1e-12, "vn 0");
     }
@@ -529,8 +597,8 @@ TEST(MotionLawReference, InclinedSineIsItsClosedFormWithTheLinesSlope) {
     for (const auto& [k, vn] : cases) {
         const SegmentView s = viewOf(m, k);
         for (double x : samplesOfX()) {
-            expectPoint(s.at(x), inclinedSine(vn, x), 1e-12,
-                        "vn " + std::to_string(vn) + " x " + std::to_string(x));
+            expectAt(s, x, inclinedSine(vn, x), 1e-12,
+                     "vn " + std::to_string(vn) + " x " + std::to_string(x));
         }
         // y' runs from vn to 2 − vn (at x = 1/2); y'' = (1 − vn)·2π·sin 2πx; y''' its derivative.
         const LawCoefficients want{std::max(std::abs(vn), std::abs(2.0 - vn)),
@@ -611,8 +679,8 @@ TEST(MotionLawReference, ModifiedLawsTakeTheInflectionPoint) {
             for (std::size_t k : {0u, 2u}) {  // the rise and the return
                 const SegmentView s = viewOf(m, k);
                 for (double x : samplesOfX()) {
-                    expectPoint(s.at(x), withInflection(law.symmetric, lambda, x), 1e-12,
-                                name + " x " + std::to_string(x));
+                    expectAt(s, x, withInflection(law.symmetric, lambda, x), 1e-12,
+                             name + " x " + std::to_string(x));
                 }
                 expectCoefficients(m.coefficients(k), want, 1e-12, name);
                 expectCoefficients(sampled(s), want, 1e-9, "sampled " + name);
@@ -628,8 +696,8 @@ TEST(MotionLawReference, ModifiedLawsTakeTheInflectionPoint) {
                 EXPECT_NEAR(left.a, right.a, 4e-9 * want.cj) << name;
                 EXPECT_NEAR(m.liftAt(phi)[0], s.s0 + lambda * s.delta, 1e-12) << name;
                 // The ends at rest: y, y', y'' = 0 at 0 and 1, 1, 0, 0 at 1.
-                expectPoint(s.at(0.0), {0.0, 0.0, 0.0, 0.0}, 1e-13, name + " start", false);
-                expectPoint(s.at(1.0 - 1e-13), {1.0, 0.0, 0.0, 0.0}, 1e-9, name + " end", false);
+                expectAt(s, 0.0, {0.0, 0.0, 0.0, 0.0}, 1e-13, name + " start", false);
+                expectAt(s, 1.0 - 1e-13, {1.0, 0.0, 0.0, 0.0}, 1e-9, name + " end", false);
             }
             if (lambda == 0.5) {  // math.md §8's values, to their last digit
                 const LawCoefficients c = sampled(viewOf(m, 0));
@@ -671,8 +739,7 @@ TEST(MotionLawReference, SccaReproducesTheClassicLaws) {
         for (std::size_t k : {0u, 2u}) {
             const SegmentView s = viewOf(m, k);
             for (double x : samplesOfX()) {
-                expectPoint(s.at(x), c.law(x), 1e-12,
-                            std::string(c.name) + " x " + std::to_string(x));
+                expectAt(s, x, c.law(x), 1e-12, std::string(c.name) + " x " + std::to_string(x));
             }
             expectCoefficients(m.coefficients(k), c.c, 1e-12, c.name);
             expectCoefficients(sampled(s), c.c, 1e-9, std::string("sampled ") + c.name);
@@ -708,8 +775,7 @@ TEST(MotionLawReference, SccaIsNortonsAccelerationIntegrated) {
             const SegmentView s = viewOf(m, k);
             for (std::size_t i = 0; i < c.n; ++i) {
                 const RefRow& r = c.rows[i];
-                expectPoint(s.at(r.x), {r.y, r.v, r.a, r.j}, 1e-12,
-                            name + " x " + std::to_string(r.x));
+                expectAt(s, r.x, {r.y, r.v, r.a, r.j}, 1e-12, name + " x " + std::to_string(r.x));
             }
             expectCoefficients(m.coefficients(k), want, 1e-12, name);
             expectCoefficients(sampled(s), want, 1e-9, "sampled " + name);
@@ -739,30 +805,47 @@ DesignSpec twoPoly7() {
     return d;
 }
 
+/// How far a value of s, s', s'', s''' (per rad) of a poly7 may be off by rounding alone:
+/// evaluating Σ c_n·u^n in double errs by at most γ_2n·Σ|c_n| (n = 7, γ_14 ≈ 14ε: Higham,
+/// Accuracy and Stability of Numerical Algorithms, 2nd ed., §5.1), the k-th derivative by
+/// γ_14·Σ n!/(n−k)!·|c_n|/h^k (the reference's kPoly7…Terms). Twice that (32ε) leaves room for
+/// the rounding of the coefficients themselves.
+double poly7Rounding(const double* terms, int k) {
+    return 32 * std::numeric_limits<double>::epsilon() * terms[k];
+}
+
 TEST(MotionLawReference, Poly7MeetsItsEightBoundaryValues) {
     const std::optional<MotionDesign> design = built(twoPoly7());
     ASSERT_TRUE(design);
     const MotionDesign& m = *design;
     EXPECT_TRUE(m.jumps().empty()) << m.jumps().front().text();
-    const double perDeg = kPi / 180.0;
-    struct End {
-        double deg, lift;
-        std::array<double, 3> values;
-        double side;  // 0: the segment's start (its own value); −1e-13 rad: just before its end
-    };
     // Segment 0 starts at 0° with A, ends at 150° with B; segment 1 starts with B, ends with A.
-    const End ends[] = {{0.0, 0.0, kP7A, 0.0},
-                        {150.0, 12.0, kP7B, -1e-13},
-                        {150.0, 12.0, kP7B, 0.0},
-                        {360.0, 0.0, kP7A, -1e-13}};
+    // Each segment's own values at its ends (startOf, endOf; liftAt at a joint is the later
+    // segment's), per degree as the spec gives them: s^(k) per rad times (π/180)^k.
+    struct End {
+        std::array<double, 4> s;
+        double lift;
+        std::array<double, 3> values;
+        const double* terms;
+        const char* what;
+    };
+    const End ends[] = {{m.startOf(0), 0.0, kP7A, kPoly7RiseTerms, "start of 0"},
+                        {m.liftAt(0.0), 0.0, kP7A, kPoly7RiseTerms, "liftAt 0°"},
+                        {m.endOf(0), 12.0, kP7B, kPoly7RiseTerms, "end of 0"},
+                        {m.startOf(1), 12.0, kP7B, kPoly7ReturnTerms, "start of 1"},
+                        {m.liftAt(degToRad(150.0)), 12.0, kP7B, kPoly7ReturnTerms, "liftAt 150°"},
+                        {m.endOf(1), 0.0, kP7A, kPoly7ReturnTerms, "end of 1"}};
     for (const End& e : ends) {
-        const auto s = m.liftAt(degToRad(e.deg) + e.side);
-        const std::string at = std::to_string(e.deg) + "° " + std::to_string(e.side);
-        // Just before the end the Taylor terms of 1e-13 rad are below 1e-12 of each value.
-        EXPECT_NEAR(s[0], e.lift, 1e-12) << at;
-        EXPECT_TRUE(relClose(s[1] * perDeg, e.values[0], 1e-12)) << at;
-        EXPECT_TRUE(relClose(s[2] * perDeg * perDeg, e.values[1], 1e-12)) << at;
-        EXPECT_TRUE(relClose(s[3] * perDeg * perDeg * perDeg, e.values[2], 1e-12)) << at;
+        EXPECT_NEAR(e.s[0], e.lift, poly7Rounding(e.terms, 0)) << e.what;
+        double perDegK = 1.0;
+        for (int k = 1; k <= 3; ++k) {
+            perDegK *= kPi / 180.0;
+            EXPECT_NEAR(e.s[k] * perDegK, e.values[k - 1], poly7Rounding(e.terms, k) * perDegK)
+                << e.what << " derivative " << k;
+            // …which is within 1e-11 of each value (the brief's ~1e-12 where rounding allows).
+            EXPECT_TRUE(relClose(e.s[k] * perDegK, e.values[k - 1], 1e-11))
+                << e.what << " derivative " << k;
+        }
     }
 }
 
@@ -770,21 +853,28 @@ TEST(MotionLawReference, Poly7IsTheDegreeSevenPolynomialOfTheReference) {
     const std::optional<MotionDesign> design = built(twoPoly7());
     ASSERT_TRUE(design);
     const MotionDesign& m = *design;
-    const std::pair<const RefRow*, std::size_t> segments[] = {
-        {kPoly7Rise, std::size(kPoly7Rise)}, {kPoly7Return, std::size(kPoly7Return)}};
+    struct Segment {
+        const RefRow* rows;
+        std::size_t n;
+        const double* terms;
+    };
+    const Segment segments[] = {{kPoly7Rise, std::size(kPoly7Rise), kPoly7RiseTerms},
+                                {kPoly7Return, std::size(kPoly7Return), kPoly7ReturnTerms}};
     for (std::size_t k = 0; k < 2; ++k) {
         const SegmentView view = viewOf(m, k);
-        for (std::size_t i = 0; i < segments[k].second; ++i) {
-            const RefRow& r = segments[k].first[i];
+        const double* terms = segments[k].terms;
+        for (std::size_t i = 0; i < segments[k].n; ++i) {
+            const RefRow& r = segments[k].rows[i];
             const auto s = m.liftAt(view.phi0 + r.x * view.h);
             const std::string at = "segment " + std::to_string(k) + " u " + std::to_string(r.x);
-            EXPECT_TRUE(relClose(s[0], r.y, 1e-12, 1.0)) << at;
-            EXPECT_TRUE(relClose(s[1], r.v, 1e-12, 1.0)) << at;
-            EXPECT_TRUE(relClose(s[2], r.a, 1e-12, 1.0)) << at;
-            EXPECT_TRUE(relClose(s[3], r.j, 1e-11, 1.0)) << at;
+            EXPECT_NEAR(s[0], r.y, poly7Rounding(terms, 0)) << at;
+            EXPECT_NEAR(s[1], r.v, poly7Rounding(terms, 1)) << at;
+            EXPECT_NEAR(s[2], r.a, poly7Rounding(terms, 2)) << at;
+            EXPECT_NEAR(s[3], r.j, poly7Rounding(terms, 3)) << at;
         }
-        // Degree ≤ 7: the eighth difference of 9 equally spaced values vanishes (each value is
-        // about 10 mm; the binomial weights sum to 256, so rounding leaves ~256·1e-15·10).
+        // Degree ≤ 7: the eighth difference of 9 equally spaced values vanishes, to the rounding
+        // of the values (binomial weights summing to 256). A law of higher degree or a spline
+        // leaves h⁸·y⁽⁸⁾, here of the order of 0.1 mm.
         for (double u0 : {0.0, 0.05, 0.11}) {
             const double step = 0.1;
             double diff = 0.0, binom = 1.0;
@@ -793,10 +883,12 @@ TEST(MotionLawReference, Poly7IsTheDegreeSevenPolynomialOfTheReference) {
                         m.liftAt(view.phi0 + (u0 + i * step) * view.h)[0];
                 binom = binom * (8 - i) / (i + 1);
             }
-            EXPECT_NEAR(diff, 0.0, 1e-10) << "segment " << k << " u0 " << u0;
+            EXPECT_NEAR(diff, 0.0, 256 * poly7Rounding(terms, 0)) << "segment " << k << " " << u0;
         }
-        // Its coefficients are normalised like poly5's: the sampled maxima of y', y'', y'''.
-        expectCoefficients(m.coefficients(k), sampled(view), 1e-9, "poly7 " + std::to_string(k));
+        // Its coefficients are normalised like poly5's: the maxima of y', y'', y''' (sampled
+        // here; kSampledCoefficients says why 1e-6).
+        expectCoefficients(m.coefficients(k), sampled(view), kSampledCoefficients,
+                           "poly7 " + std::to_string(k));
     }
 }
 
@@ -809,14 +901,14 @@ TEST(MotionLawReference, Poly7AtRestIsPoly4567) {
     for (std::size_t k : {0u, 2u}) {
         const SegmentView s = viewOf(m, k);
         for (double x : samplesOfX()) {
-            expectPoint(s.at(x), poly4567(x), 1e-12, "x " + std::to_string(x));
+            expectAt(s, x, poly4567(x), 1e-12, "x " + std::to_string(x));
         }
         // math.md §8: poly4567 2.1875, 7.5132, 52.5 (y'(1/2) and |y'''(1/2)| exactly).
         const LawCoefficients c = m.coefficients(k);
         EXPECT_TRUE(relClose(c.cv, 2.1875, 1e-12));
         EXPECT_NEAR(c.ca, 7.5132, 0.5e-4);
         EXPECT_TRUE(relClose(c.cj, 52.5, 1e-12));
-        expectCoefficients(c, sampled(s), 1e-9, "poly7 at rest");
+        expectCoefficients(c, sampled(s), kSampledCoefficients, "poly7 at rest");
     }
 }
 
@@ -861,7 +953,7 @@ TEST(MotionLawReference, TableIsTheQuinticSplineOfTheReference) {
         const SegmentView s = viewOf(m, 0);
         for (std::size_t i = 0; i < std::size(kTable6); ++i) {
             const RefRow& r = rows[i];
-            expectPoint(s.at(r.x), {r.y, r.v, r.a, r.j}, 1e-12, name + " x " + std::to_string(r.x));
+            expectAt(s, r.x, {r.y, r.v, r.a, r.j}, 1e-12, name + " x " + std::to_string(r.x));
         }
         // Through every point; the given velocities from both sides; at rest at both ends.
         for (std::size_t k = 0; k < points.size(); ++k) {
@@ -876,7 +968,7 @@ TEST(MotionLawReference, TableIsTheQuinticSplineOfTheReference) {
                 EXPECT_NEAR(limit(s, p.x, -1, 1e-7).v, *p.v, 1e-11) << at;
             }
         }
-        expectPoint(s.at(0.0), {0.0, 0.0, 0.0, s.at(0.0).j}, 1e-13, name + " start", false);
+        expectAt(s, 0.0, {0.0, 0.0, 0.0, s.at(0.0).j}, 1e-13, name + " start", false);
         expectPoint(limit(s, 1.0, -1, 1e-7), {1.0, 0.0, 0.0, 0.0}, 1e-9, name + " end", false);
         // y, y', y'' continuous at every interior knot, y''' too (a knot with v is C3; one
         // without is C4). The one-sided limits from δ = 1e-7 (y, y', y'') and 1e-9 (y''': the
@@ -891,6 +983,37 @@ TEST(MotionLawReference, TableIsTheQuinticSplineOfTheReference) {
             EXPECT_NEAR(s.at(x - 1e-9).j, s.at(x + 1e-9).j, 1e-4) << at;
         }
     }
+}
+
+TEST(MotionLawReference, TableCoefficientsAreItsMaxima) {
+    const std::optional<MotionDesign> design = tableDesign(sixPoints(true));
+    ASSERT_TRUE(design);
+    const SegmentView s = viewOf(*design, 0);
+    expectCoefficients(design->coefficients(0), sampled(s), kSampledCoefficients, "table");
+    // …and those of the reference's spline at its 40 points are no larger.
+    for (const RefRow& r : kTable6V) {
+        EXPECT_LE(std::abs(r.v), design->coefficients(0).cv * (1 + 1e-12));
+        EXPECT_LE(std::abs(r.a), design->coefficients(0).ca * (1 + 1e-12));
+        EXPECT_LE(std::abs(r.j), design->coefficients(0).cj * (1 + 1e-12));
+    }
+}
+
+TEST(MotionLawReference, TableAtSpeedJoinsLines) {
+    // linesAndInclinedSines with its second inclined sine (150–240°, 16 → 19 mm) a table that
+    // starts and ends at the line's 0.1 mm/°: normalised y' = 0.1·90/3 = 3, and a = 0.
+    DesignSpec d = linesAndInclinedSines();
+    d.segments[2].law = MotionLawType::Table;
+    d.segments[2].table = {{0.0, 0.0, 3.0}, {0.3, 0.5, {}}, {0.7, 0.8, {}}, {1.0, 1.0, 3.0}};
+    const std::optional<MotionDesign> design = built(d);
+    ASSERT_TRUE(design);
+    const MotionDesign& m = *design;
+    EXPECT_TRUE(m.jumps().empty()) << m.jumps().front().text();
+    const SegmentView s = viewOf(m, 2);
+    for (const RefRow& r : kTableEndV) {
+        expectAt(s, r.x, {r.y, r.v, r.a, r.j}, 1e-12, "x " + std::to_string(r.x));
+    }
+    expectAt(s, 0.0, {0.0, 3.0, 0.0, s.at(0.0).j}, 1e-12, "start", false);
+    expectPoint(limit(s, 1.0, -1, 1e-7), {1.0, 3.0, 0.0, 0.0}, 1e-9, "end", false);
 }
 
 TEST(MotionLawReference, TableThroughPoly4567IsPoly4567) {

@@ -184,6 +184,9 @@ P7_US = ["0.03", "0.1", "0.21", "0.33", "0.4", "0.5", "0.57", "0.68", "0.79", "0
 TABLE_6 = [("0", "0"), ("0.15", "0.04"), ("0.4", "0.32"), ("0.55", "0.6"), ("0.8", "0.95"),
            ("1", "1")]
 TABLE_6_V = {1: "0.5", 3: "1.9"}  # the same points with velocities at x = 0.15 and 0.55
+# A table that starts and ends at speed (y' = 3, a = 0): the second inclined sine of the test's
+# design of lines and inclined sines replaced by it.
+TABLE_END_V = [("0", "0", "3"), ("0.3", "0.5", None), ("0.7", "0.8", None), ("1", "1", "3")]
 TABLE_XS = [str(mpf(k) / 40 + mpf("0.0123")) for k in range(40)]  # 40 points in (0, 1)
 
 
@@ -210,9 +213,16 @@ def self_checks():
     if max(abs(c[n] - w) for n, w in enumerate([0, 0, 0, 0, 35, -84, 70, -20])) > tol:
         sys.exit("poly7 at rest is not poly 4-5-6-7")
     # table: each spline meets its own conditions (interpolation, C4 or v and C3 at knots).
-    for vmap in ({}, TABLE_6_V):
-        pts = [(x, y, vmap.get(i)) for i, (x, y) in enumerate(TABLE_6)]
+    tables = [[(x, y, vmap.get(i)) for i, (x, y) in enumerate(TABLE_6)]
+              for vmap in ({}, TABLE_6_V)]
+    for pts in tables + [TABLE_END_V]:
         pieces = quintic_spline(pts)
+        first, last = pieces[0], pieces[-1]
+        ends = [poly_eval(first[2], mpf(0), m) for m in range(3)] + [
+            poly_eval(last[2], last[1] - last[0], m) for m in range(3)]
+        want = [0, pts[0][2] or 0, 0, 1, pts[-1][2] or 0, 0]
+        if max(abs(e - mpf(w)) for e, w in zip(ends, want)) > tol:
+            sys.exit("spline misses its end conditions")
         for k in range(1, len(pieces)):
             x0, x1, left = pieces[k - 1]
             l = [poly_eval(left, x1 - x0, m) for m in range(5)]
@@ -247,12 +257,20 @@ def main():
             rows.append([u] + [poly_eval(c, u, k) / hrad**k for k in range(4)])
         print_rows(name, rows, f"u, s, s', s'', s''' per rad: poly7 {deg0}..{deg1} deg, "
                    f"lift {y0} -> {y1} (8x8 system, mpmath)")
+        # sum_n n!/(n-k)! |c_n| / h^k: what rounding in evaluating s^(k) in double scales with
+        # (Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed., eq. 5.3).
+        terms = [sum(mpmath.ff(n, k) * abs(c[n]) for n in range(k, 8)) / hrad**k
+                 for k in range(4)]
+        print(f"constexpr double {name}Terms[] = {{" + ", ".join(g(t) for t in terms) + "};")
 
     for name, vmap in (("kTable6", {}), ("kTable6V", TABLE_6_V)):
         pts = [(x, y, vmap.get(i)) for i, (x, y) in enumerate(TABLE_6)]
         pieces = quintic_spline(pts)
         rows = [[mpf(x)] + spline_at(pieces, x) for x in TABLE_XS]
         print_rows(name, rows, "x, y, y', y'', y''' of the quintic spline (mpmath)")
+    pieces = quintic_spline(TABLE_END_V)
+    rows = [[mpf(x)] + spline_at(pieces, x) for x in TABLE_XS]
+    print_rows("kTableEndV", rows, "x, y, y', y'', y''' of the spline with y'(0) = y'(1) = 3")
 
     # poly4567 at 21 points: the spline's largest deviation from the polynomial, dense.
     def p4567(x, k):
