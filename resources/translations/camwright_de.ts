@@ -203,7 +203,52 @@
         <translation>die Geschwindigkeit springt von %1 auf %2 pro Grad; die Beschleunigung springt von %3 auf %4 pro Grad²</translation>
     </message>
     <message>
+        <location line="+4" />
+        <source>%1 cannot meet the %2 at its %3: its velocity there is %4 per degree, the neighbour's %5 (Suggest picks a law that can)</source>
+        <translation>%1 kann die Randbedingung %2 an seinem %3 nicht erfüllen: seine Geschwindigkeit dort ist %4 je Grad, die des Nachbarn %5 (Vorschlagen wählt ein Gesetz, das es kann)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>b + d must be at most 1, the constant acceleration taking the rest (got %1 + %2)</source>
+        <translation>b + d darf höchstens 1 sein, den Rest nimmt die konstante Beschleunigung (erhalten %1 + %2)</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>a motion table needs at least 2 points (got %1)</source>
+        <translation>eine Bewegungstabelle braucht mindestens 2 Punkte (erhalten %1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>a motion table takes at most %1 points (got %2)</source>
+        <translation>eine Bewegungstabelle fasst höchstens %1 Punkte (erhalten %2)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>point %1: x must be greater than the point before's (%2), got %3</source>
+        <translation>Punkt %1: x muss größer sein als beim Punkt davor (%2), erhalten %3</translation>
+    </message>
+    <message>
         <location line="+3" />
+        <source>must run from (0, 0) to (1, 1), normalised (got (%1, %2) to (%3, %4))</source>
+        <translation>muss normiert von (0, 0) bis (1, 1) laufen (erhalten (%1, %2) bis (%3, %4))</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>must hold x y or x y dy/dx (got %1 columns)</source>
+        <translation>muss x y oder x y dy/dx enthalten (erhalten %1 Spalten)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>is not a number: "%1"</source>
+        <translation>ist keine Zahl: „%1“</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>no spline runs through these points (their spacing is too uneven)</source>
+        <translation>durch diese Punkte läuft kein Spline (ihre Abstände sind zu ungleich)</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>missing</source>
         <translation>fehlt</translation>
     </message>
@@ -1153,7 +1198,7 @@
         <translation>eine Spezialdatei</translation>
     </message>
     <message>
-        <location filename="../../src/core/io/project_reader.cpp" line="+21" />
+        <location filename="../../src/core/io/project_reader.cpp" line="+22" />
         <location line="+94" />
         <source>a string</source>
         <translation>ein Text</translation>
@@ -1177,12 +1222,12 @@
     <message>
         <location line="+1" />
         <location line="+141" />
-        <location line="+347" />
+        <location line="+387" />
         <source>an object</source>
         <translation>ein Objekt</translation>
     </message>
     <message>
-        <location line="-410" />
+        <location line="-450" />
         <source>true or false</source>
         <translation>true oder false</translation>
     </message>
@@ -1197,13 +1242,18 @@
         <translation>ein Array aus Zahlen</translation>
     </message>
     <message>
-        <location line="+320" />
-        <location line="+87" />
+        <location line="+327" />
+        <location line="+120" />
         <source>an array of segments</source>
         <translation>ein Array aus Segmenten</translation>
     </message>
     <message>
-        <location line="-36" />
+        <location line="-79" />
+        <source>an array of points [x, y] or [x, y, dy/dx]</source>
+        <translation>eine Liste von Punkten [x, y] oder [x, y, dy/dx]</translation>
+    </message>
+    <message>
+        <location line="+43" />
         <source>a whole number</source>
         <translation>eine ganze Zahl</translation>
     </message>
@@ -1226,6 +1276,36 @@
         <location line="+2" />
         <source>the follower's reach</source>
         <translation>die Reichweite des Stößels</translation>
+    </message>
+    <message>
+        <location filename="../../src/core/design/boundary_classes.cpp" line="+34" />
+        <source>rest</source>
+        <translation>Rast</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>constant velocity</source>
+        <translation>konstante Geschwindigkeit</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>reversal</source>
+        <translation>Umkehr</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>movement</source>
+        <translation>Bewegung</translation>
+    </message>
+    <message>
+        <location filename="../../src/core/design/motion_design.cpp" line="+188" />
+        <source>start</source>
+        <translation>Anfang</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>end</source>
+        <translation>Ende</translation>
     </message>
 </context>
 <context>
@@ -1535,7 +1615,7 @@
 <context>
     <name>DynamicsKey</name>
     <message>
-        <location filename="../../src/app/messages/field_titles.cpp" line="+38" />
+        <location filename="../../src/app/messages/field_titles.cpp" line="+46" />
         <source>Moving mass [kg]</source>
         <translation>Bewegte Masse [kg]</translation>
     </message>
@@ -1960,49 +2040,134 @@
 <context>
     <name>MotionLaw</name>
     <message>
-        <location filename="../../src/core/design/motion_law.cpp" line="+143" />
+        <location filename="../../src/core/design/motion_law.cpp" line="+154" />
         <source>Dwell</source>
         <translation>Rast</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
+        <source>Rest: the follower keeps its lift.</source>
+        <translation>Rast: der Stößel behält seinen Hub.</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Harmonic</source>
         <translation>Harmonisch (Kosinus)</translation>
     </message>
     <message>
         <location line="+2" />
+        <source>Reversal to reversal: v = 0 at both ends; beside a dwell its acceleration jumps.</source>
+        <translation>Umkehr zu Umkehr: v = 0 an beiden Enden; neben einer Rast springt die Beschleunigung.</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Cycloidal</source>
         <translation>Zykloide</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+2" />
+        <source>Rest to rest with finite jerk.</source>
+        <translation>Rast zu Rast mit endlichem Ruck.</translation>
+    </message>
+    <message>
+        <location line="+2" />
         <source>Modified trapezoid</source>
         <translation>Modifiziertes Beschleunigungstrapez</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
+        <source>Rest to rest, the lowest acceleration with finite jerk; λ moves its inflection point (asymmetric).</source>
+        <translation>Rast zu Rast, die kleinste Beschleunigung bei endlichem Ruck; λ verschiebt den Wendepunkt (unsymmetrisch).</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Modified sine</source>
         <translation>Modifizierte Sinuslinie</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
+        <source>Rest to rest, low velocity and acceleration together; λ moves its inflection point.</source>
+        <translation>Rast zu Rast, kleine Geschwindigkeit und Beschleunigung zugleich; λ verschiebt den Wendepunkt.</translation>
+    </message>
+    <message>
+        <location line="+3" />
         <source>Poly 3-4-5</source>
         <translation>Polynom 3-4-5</translation>
     </message>
     <message>
         <location line="+2" />
+        <source>Rest to rest, a polynomial of degree 5.</source>
+        <translation>Rast zu Rast, ein Polynom 5. Grades.</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Poly 4-5-6-7</source>
         <translation>Polynom 4-5-6-7</translation>
     </message>
     <message>
         <location line="+2" />
+        <source>Rest to rest with zero jerk at both ends.</source>
+        <translation>Rast zu Rast mit Ruck null an beiden Enden.</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Poly 5 (boundary values)</source>
         <translation>Polynom 5 (Randwerte)</translation>
     </message>
     <message>
         <location line="+2" />
+        <source>Any boundary: velocity and acceleration at both ends.</source>
+        <translation>Beliebige Randwerte: Geschwindigkeit und Beschleunigung an beiden Enden.</translation>
+    </message>
+    <message>
+        <location line="+1" />
         <source>Constant velocity</source>
         <translation>Konstante Geschwindigkeit</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>A straight line: constant velocity, no acceleration.</source>
+        <translation>Eine Gerade: konstante Geschwindigkeit, keine Beschleunigung.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Inclined sine (Bestehorn)</source>
+        <translation>Geneigte Sinuslinie (Bestehorn)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Constant velocity v0 to the same velocity, no acceleration at the ends (v0 = 0: the cycloid).</source>
+        <translation>Konstante Geschwindigkeit v0 zur gleichen Geschwindigkeit, keine Beschleunigung an den Enden (v0 = 0: die Zykloide).</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>SCCA (sine-constant-cosine)</source>
+        <translation>SCCA (Sinus-Konstant-Kosinus)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Rest to rest; b and d are the shares of the sine ramps and of the cosine, the rest constant acceleration (Norton).</source>
+        <translation>Rast zu Rast; b und d sind die Anteile der Sinusrampen und des Kosinus, der Rest konstante Beschleunigung (Norton).</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Poly 7 (boundary values)</source>
+        <translation>Polynom 7 (Randwerte)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Any boundary: velocity, acceleration and jerk at both ends.</source>
+        <translation>Beliebige Randwerte: Geschwindigkeit, Beschleunigung und Ruck an beiden Enden.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Motion table</source>
+        <translation>Bewegungstabelle</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Your points (0…1, as Inventor takes them) joined by a C2 quintic spline, at rest at both ends.</source>
+        <translation>Ihre Punkte (0…1, wie Inventor sie nimmt), verbunden durch einen C2-Spline 5. Grades, in Rast an beiden Enden.</translation>
     </message>
 </context>
 <context>
@@ -2056,7 +2221,7 @@
 <context>
     <name>SegmentColumn</name>
     <message>
-        <location filename="../../src/app/messages/field_titles.cpp" line="-45" />
+        <location filename="../../src/app/messages/field_titles.cpp" line="-53" />
         <source>Type</source>
         <translation>Typ</translation>
     </message>
@@ -2567,7 +2732,7 @@
 <context>
     <name>cam::DesignTableModel</name>
     <message>
-        <location filename="../../src/app/models/design_table_model.cpp" line="+169" />
+        <location filename="../../src/app/models/design_table_model.cpp" line="+214" />
         <source>How the follower moves over this segment (VDI 2143)</source>
         <translation>Wie sich der Stößel über diesen Abschnitt bewegt (VDI 2143)</translation>
     </message>
@@ -2607,17 +2772,75 @@
         <translation>Größter Ruck als Vielfaches von Hub ÷ Dauer³</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>Poly 5: the lift's slope (v) or curvature (a) per degree of cam angle at the start (0) or the end (1)</source>
-        <translation>Polynom 5: Steigung (v) oder Krümmung (a) des Hubs je Grad Kurvenwinkel am Anfang (0) oder Ende (1)</translation>
+        <location line="-186" />
+        <source>Rest</source>
+        <translation>Rast</translation>
     </message>
     <message>
         <location line="+2" />
-        <source>Only for Poly 5</source>
-        <translation>Nur für Polynom 5</translation>
+        <location filename="../../src/app/views/motion_design_panel.cpp" line="+168" />
+        <source>Velocity</source>
+        <translation>Geschwindigkeit</translation>
     </message>
     <message>
-        <location line="+65" />
+        <location line="+2" />
+        <location filename="../../src/app/views/motion_design_panel.cpp" line="-1" />
+        <source>Reversal</source>
+        <translation>Umkehr</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <location filename="../../src/app/views/motion_design_panel.cpp" line="-1" />
+        <source>Movement</source>
+        <translation>Bewegung</translation>
+    </message>
+    <message>
+        <location line="+183" />
+        <source>The boundary class the neighbour demands here (VDI 2143): rest (v = 0, a = 0), constant velocity (a = 0), reversal (v = 0) or movement</source>
+        <translation>Die Randbedingung, die der Nachbar hier verlangt (VDI 2143): Rast (v = 0, a = 0), konstante Geschwindigkeit (a = 0), Umkehr (v = 0) oder Bewegung</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Where the acceleration changes sign, as a share of the segment (0.5: the symmetric law)</source>
+        <translation>Wo die Beschleunigung das Vorzeichen wechselt, als Anteil des Abschnitts (0,5: das symmetrische Gesetz)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Only for the modified sine and the modified trapezoid</source>
+        <translation>Nur für die modifizierte Sinuslinie und das modifizierte Beschleunigungstrapez</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>SCCA: b is the share of the sine ramps, d of the cosine; the constant acceleration takes the rest (b = d = 0.25: the modified trapezoid)</source>
+        <translation>SCCA: b ist der Anteil der Sinusrampen, d der des Kosinus; den Rest nimmt die konstante Beschleunigung (b = d = 0,25: das modifizierte Beschleunigungstrapez)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Only for SCCA</source>
+        <translation>Nur für SCCA</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>How many points the motion table has; Import Table… reads them from a two-column text file (x and y from 0 to 1)</source>
+        <translation>Wie viele Punkte die Bewegungstabelle hat; Tabelle importieren… liest sie aus einer Textdatei mit zwei Spalten (x und y von 0 bis 1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Only for a motion table</source>
+        <translation>Nur für eine Bewegungstabelle</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>The lift's slope (v), curvature (a) or its rate (j) per degree of cam angle at the start (0) or the end (1)</source>
+        <translation>Steigung (v), Krümmung (a) oder deren Änderung (j) des Hubs je Grad Drehwinkel am Anfang (0) oder Ende (1)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Not a value of this law</source>
+        <translation>Kein Wert dieses Gesetzes</translation>
+    </message>
+    <message>
+        <location line="+85" />
         <source>Law</source>
         <translation>Bewegungsgesetz</translation>
     </message>
@@ -2657,7 +2880,32 @@
         <translation>a1 [%1/°²]</translation>
     </message>
     <message>
-        <location line="+66" />
+        <location line="+2" />
+        <source>j0 [%1/°³]</source>
+        <translation>j0 [%1/°³]</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>j1 [%1/°³]</source>
+        <translation>j1 [%1/°³]</translation>
+    </message>
+    <message>
+        <location line="+9" />
+        <source>Points</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Start</source>
+        <translation>Anfang</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>End</source>
+        <translation>Ende</translation>
+    </message>
+    <message>
+        <location line="+101" />
         <source>Edit %1 of design segment %2</source>
         <translation>%1 von Bewegungsabschnitt %2 ändern</translation>
     </message>
@@ -3341,12 +3589,12 @@
         <translation>Ein Winkelhebel: der Winkel des zweiten Arms zum ersten um den Drehpunkt, gegen den Uhrzeigersinn positiv</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>A bell crank: from the pivot to the second roller's centre</source>
         <translation>Ein Winkelhebel: vom Drehpunkt zum Mittelpunkt der zweiten Rolle</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+2" />
         <source>The roller's play between the groove's flanks</source>
         <translation>Das Spiel der Rolle zwischen den Flanken der Nut</translation>
     </message>
@@ -4480,7 +4728,7 @@
 <context>
     <name>cam::MotionDesignPanel</name>
     <message>
-        <location filename="../../src/app/views/motion_design_panel.cpp" line="+95" />
+        <location filename="../../src/app/views/motion_design_panel.cpp" line="-62" />
         <source>New Design</source>
         <translation>Neuer Entwurf</translation>
     </message>
@@ -4515,7 +4763,7 @@
         <translation>Den kleinsten Grundkreisradius setzen, bei dem der Stößel alle Prüfungen besteht: Druckwinkel im Hub und Rückhub innerhalb der Grenze, kein Unterschnitt (ein Rückgängig-Schritt)</translation>
     </message>
     <message>
-        <location line="+228" />
+        <location line="+279" />
         <source>Best Offset</source>
         <translation>Bester Versatz</translation>
     </message>
@@ -4525,7 +4773,7 @@
         <translation>Den Versatz des Stößels setzen, der den kleinsten Grundkreisradius erlaubt, und diesen Radius, und den zulässigen Bereich über Grundkreisradius × Versatz zeigen (ein Rückgängig-Schritt; Spitzen- oder Rollenstößel mit Schubbewegung)</translation>
     </message>
     <message>
-        <location line="-215" />
+        <location line="-266" />
         <source>Largest distance of the arc table from the exact profile</source>
         <translation>Größter Abstand der Bogentabelle vom exakten Profil</translation>
     </message>
@@ -4550,7 +4798,7 @@
         <translation>Toleranz</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+31" />
         <source>Split</source>
         <translation>Teilen</translation>
     </message>
@@ -4570,7 +4818,37 @@
         <translation>Den gewählten Abschnitt löschen: der vorige übernimmt seinen Bereich und Hub</translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+4" />
+        <source>Suggest</source>
+        <translation>Vorschlagen</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Choose the recommended law for the selected segment from the boundary classes its neighbours demand (VDI 2143, CODESYS SoftMotion's table)</source>
+        <translation>Das empfohlene Gesetz für den gewählten Abschnitt aus den Randbedingungen wählen, die seine Nachbarn verlangen (VDI 2143, Tabelle von CODESYS SoftMotion)</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Suggest All</source>
+        <translation>Alle vorschlagen</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Choose the recommended law for every segment that is not a dwell or a line</source>
+        <translation>Das empfohlene Gesetz für jeden Abschnitt wählen, der keine Rast und keine Gerade ist</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Import Table…</source>
+        <translation>Tabelle importieren…</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>Make the selected segment a motion table from a text file of points: x and y from 0 to 1 in two columns (as Inventor writes them), optionally dy/dx in a third</source>
+        <translation>Den gewählten Abschnitt zur Bewegungstabelle aus einer Textdatei mit Punkten machen: x und y von 0 bis 1 in zwei Spalten (wie Inventor sie schreibt), wahlweise dy/dx in einer dritten</translation>
+    </message>
+    <message>
+        <location line="+37" />
         <location line="+12" />
         <source>law</source>
         <translation>Gesetz</translation>
@@ -4587,7 +4865,23 @@
         <translation>Entwurf entfernen</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+14" />
+        <location line="+11" />
+        <source>Import Motion Table</source>
+        <translation>Bewegungstabelle importieren</translation>
+    </message>
+    <message>
+        <location line="-10" />
+        <source>Motion tables (*.txt *.csv *.dat);;All files (*)</source>
+        <translation>Bewegungstabellen (*.txt *.csv *.dat);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>%1: cannot be read</source>
+        <translation>%1: kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <location line="+17" />
         <source>Change base radius</source>
         <translation>Grundkreisradius ändern</translation>
     </message>
@@ -4658,7 +4952,7 @@
         <translation>Bewegungsabschnitt %1 löschen</translation>
     </message>
     <message>
-        <location line="+57" />
+        <location line="+108" />
         <source>This project has no motion design. New Design starts one: lay out the follower's motion, then Synthesize makes the contour from it.</source>
         <translation>Dieses Projekt hat keinen Bewegungsentwurf. „Neuer Entwurf“ legt einen an: die Bewegung des Stößels festlegen, dann erzeugt Synthetisieren daraus die Kontur.</translation>
     </message>
@@ -4681,7 +4975,7 @@
         <translation>Der Entwurf ist nicht herstellbar: %1</translation>
     </message>
     <message>
-        <location line="-179" />
+        <location line="-230" />
         <source>Finding the placement that allows the smallest base radius…</source>
         <translation>Suche die Lage, die den kleinsten Grundkreisradius erlaubt…</translation>
     </message>
@@ -4696,7 +4990,47 @@
         <translation>Bester Drehpunkt</translation>
     </message>
     <message>
-        <location line="+154" />
+        <location line="+69" />
+        <source>Suggest needs a design that can be evaluated: %1</source>
+        <translation>Vorschlagen braucht einen auswertbaren Entwurf: %1</translation>
+    </message>
+    <message>
+        <location line="+8" />
+        <source>segment %1: %2</source>
+        <translation>Abschnitt %1: %2</translation>
+    </message>
+    <message>
+        <location line="+5" />
+        <source>Every law is already the one suggested.</source>
+        <translation>Jedes Gesetz ist schon das vorgeschlagene.</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Segment %1's law is already the one suggested.</source>
+        <translation>Das Gesetz von Abschnitt %1 ist schon das vorgeschlagene.</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>Suggested %1.</source>
+        <translation>Vorgeschlagen: %1.</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Suggest laws</source>
+        <translation>Gesetze vorschlagen</translation>
+    </message>
+    <message>
+        <location line="+0" />
+        <source>Suggest the law of design segment %1</source>
+        <translation>Gesetz von Entwurfsabschnitt %1 vorschlagen</translation>
+    </message>
+    <message>
+        <location line="+19" />
+        <source>Import a motion table into design segment %1</source>
+        <translation>Bewegungstabelle in Entwurfsabschnitt %1 importieren</translation>
+    </message>
+    <message>
+        <location line="+97" />
         <source>The design cannot be drawn at this speed.</source>
         <translation>Der Entwurf lässt sich bei dieser Drehzahl nicht zeichnen.</translation>
     </message>
@@ -4809,7 +5143,7 @@ T = %3</translation>
 <context>
     <name>cam::NumberDelegate</name>
     <message>
-        <location filename="../../src/app/models/delegates.cpp" line="+52" />
+        <location filename="../../src/app/models/delegates.cpp" line="+55" />
         <source>%1, row %2</source>
         <translation>%1, Zeile %2</translation>
     </message>
@@ -5859,7 +6193,7 @@ Grau: der zuletzt berechnete Stand, veraltet.</translation>
 <context>
     <name>cam::StressOverlay</name>
     <message>
-        <location filename="../../src/app/views/stress_overlay.cpp" line="+85" />
+        <location filename="../../src/app/views/stress_overlay.cpp" line="+92" />
         <source>Contact stress
 blue 0 … red %1 (allowable)</source>
         <translation>Kontaktpressung

@@ -20,6 +20,7 @@ int runFitWindows(const Arguments& args, std::ostream& out, std::ostream& err);
 int runExport(const Arguments& args, std::ostream& out, std::ostream& err);
 /// @brief `synthesize`: the design → an arc table (math.md §8), written to --out; a report.
 int runSynthesize(const Arguments& args, std::ostream& out, std::ostream& err);
+int runSuggest(const Arguments& args, std::ostream& out, std::ostream& err);
 int runSize(const Arguments& args, std::ostream& out, std::ostream& err);
 
 }  // namespace cam::cli

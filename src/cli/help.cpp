@@ -70,7 +70,7 @@ auto commandRunner(const std::string& name) -> decltype(CommandHelp::run) {
         {"validate", runValidate},      {"state", runState},           {"sample", runSample},
         {"analyze", runAnalyze},        {"timing", runTiming},         {"fillet", runFillet},
         {"fit-windows", runFitWindows}, {"synthesize", runSynthesize}, {"size", runSize},
-        {"export", runExport},
+        {"suggest", runSuggest},        {"export", runExport},
     };
     for (const auto& [known, run] : kRunners) {
         if (name == known) return run;
@@ -245,6 +245,23 @@ std::vector<CommandHelp> makeTable() {
           {"--best-pivot", "", "also find the arm's pivot distance that allows the smallest cam"},
           {"--out", "NEW", "the file for the project with the base radius found"}},
          {"size design.cam.json --min-radius 2 --out sized.cam.json"}});
+    t.push_back(
+        {"suggest",
+         "suggest PROJECT [--segment K] [--out NEW]",
+         "the recommended law for each stretch of the motion design",
+         "Prints the project's design segment by segment with each segment's boundary "
+         "classes (VDI 2143: rest, velocity, reversal or movement, as the neighbour at each "
+         "end demands) and its law's Cv, Ca, Cj, then the same for the design with the "
+         "recommended laws: for every segment that is not a dwell or a line, or only segment "
+         "K, the law CODESYS SoftMotion's table recommends for its pair of classes (rest to "
+         "rest: modified sine; equal velocities: a line or the inclined sine; every other "
+         "pair: poly5 with the joint's velocity and acceleration), so that no velocity or "
+         "acceleration jumps. changed lists the segments whose law changed. With --out, "
+         "writes the project with those laws to NEW, without a contour (synthesize makes "
+         "it). Exit 3 when even the suggested design cannot be built.",
+         {{"--segment", "K", "only this segment (0 is the first)"},
+          {"--out", "NEW", "the file for the project with the suggested laws"}},
+         {"suggest design.cam.json --out suggested.cam.json"}});
     t.push_back(
         {"export",
          "export PROJECT --format " + joinNames(exportFormatNames(), "|") +

@@ -11,11 +11,14 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QFile>
+#include <QIcon>
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTableView>
+#include <QTemporaryDir>
 #include <QTest>
 #include <cmath>
 #include <limits>
@@ -29,6 +32,7 @@
 #include "engine/compute_engine.h"
 #include "follower/follower.h"
 #include "mainwindow.h"
+#include "models/delegates.h"
 #include "models/design_table_model.h"
 #include "models/segment_table_model.h"
 #include "views/feasible_region_plot.h"
@@ -357,10 +361,11 @@ TEST(MotionDesign, AKeyInAComputedCellIsAnsweredAndTabPassesOverCellsALawHasNot)
     EXPECT_EQ(window.statusBar()->currentMessage().toStdString(),
               "From [°], row 1 is not typed in: Where the segment starts: the previous "
               "segment's end");
-    // A cycloid has no boundary values: Tab from Lift goes past them to Cv.
+    // A cycloid has no boundary values or parameters: Tab from Lift goes past them to its
+    // boundary classes.
     table->setCurrentIndex(model->index(1, DesignTableModel::Lift));
     QTest::keyClick(table, Qt::Key_Tab);
-    EXPECT_EQ(table->currentIndex(), model->index(1, DesignTableModel::Cv));
+    EXPECT_EQ(table->currentIndex(), model->index(1, DesignTableModel::StartClass));
 }
 
 TEST(MotionDesign, AFieldSaysWhatItRefusesByItsLabel) {
@@ -668,6 +673,150 @@ TEST(MotionDesignDock, TheFeasibleRegionOfAnArmIsShadedBetweenItsSmallestAndLarg
     EXPECT_NE(region.topGraph()->pen().style(), Qt::NoPen);
     EXPECT_TRUE(region.yAxis->range().contains(64.0));
     EXPECT_TRUE(region.yAxis->range().contains(3.0));
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(MotionDesignLaws, TheTableShowsClassesAndTheParametersEachLawTakes) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ProjectDocument* doc = window.document();
+    DesignTableModel* model = window.motionDesignPanel()->model();
+    // Every joint of the cycloidal cam is at rest.
+    for (int row = 0; row < 4; ++row) {
+        EXPECT_EQ(model->index(row, DesignTableModel::StartClass).data().toString(), "Rest");
+        EXPECT_EQ(model->index(row, DesignTableModel::EndClass).data().toString(), "Rest");
+    }
+    // SCCA opens b and d, nothing else; at b = 0.5, d = 0.5 it is the cycloid: Ca = 2π
+    // (math.md §8's 6.2832).
+    ASSERT_TRUE(model->setData(model->index(0, DesignTableModel::Law),
+                               static_cast<int>(MotionLawType::Scca), Qt::EditRole));
+    for (int c : {DesignTableModel::SccaB, DesignTableModel::SccaD}) {
+        EXPECT_TRUE(model->flags(model->index(0, c)) & Qt::ItemIsEditable) << c;
+    }
+    for (int c : {DesignTableModel::V0, DesignTableModel::J0, DesignTableModel::Lambda,
+                  DesignTableModel::Points}) {
+        EXPECT_FALSE(model->flags(model->index(0, c)) & Qt::ItemIsEditable) << c;
+    }
+    ASSERT_TRUE(model->setData(model->index(0, DesignTableModel::SccaB), 0.5, Qt::EditRole));
+    ASSERT_TRUE(model->setData(model->index(0, DesignTableModel::SccaD), 0.5, Qt::EditRole));
+    EXPECT_NEAR(model->index(0, DesignTableModel::Ca).data(Qt::EditRole).toDouble(), 2 * kPi_,
+                1e-12);
+    EXPECT_NEAR(model->index(0, DesignTableModel::Cv).data(Qt::EditRole).toDouble(), 2.0, 1e-12);
+    // b + d beyond 1 is refused at d's cell with the reason.
+    ASSERT_TRUE(model->setData(model->index(0, DesignTableModel::SccaD), 0.75, Qt::EditRole));
+    EXPECT_FALSE(doc->isValid());
+    ASSERT_FALSE(model->problemsAt(0, DesignTableModel::SccaD).isEmpty());
+    EXPECT_TRUE(model->problemsAt(0, DesignTableModel::SccaD).front().contains("b + d"));
+    doc->undoStack()->undo();
+    EXPECT_TRUE(doc->isValid());
+    // A line as the first segment: a cycloid cannot end at rest where the line runs, the
+    // neighbour's class is shown and the cycloid's law cell says why.
+    ASSERT_TRUE(model->setData(model->index(2, DesignTableModel::Law),
+                               static_cast<int>(MotionLawType::ConstantVelocity), Qt::EditRole));
+    EXPECT_EQ(model->index(1, DesignTableModel::EndClass).data().toString(), "Velocity");
+    EXPECT_FALSE(doc->isValid());
+    ASSERT_FALSE(model->problemsAt(2, DesignTableModel::Law).isEmpty())
+        << diagnosticsText(doc->diagnostics()).toStdString();
+    // The law list shows a picture and a tip per law.
+    const QVariantList icons =
+        model->index(0, DesignTableModel::Law).data(kChoiceIconsRole).toList();
+    const QStringList tips =
+        model->index(0, DesignTableModel::Law).data(kChoiceTipsRole).toStringList();
+    EXPECT_EQ(icons.size(), static_cast<int>(kMotionLawCount));
+    EXPECT_EQ(tips.size(), static_cast<int>(kMotionLawCount));
+    EXPECT_FALSE(icons.front().value<QIcon>().isNull());
+}
+
+TEST(MotionDesignLaws, SuggestAllMakesEveryJointContinuousInOneUndoStep) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ProjectDocument* doc = window.document();
+    MotionDesignPanel* panel = window.motionDesignPanel();
+    DesignTableModel* model = panel->model();
+    // The dwell after the rise becomes a line: the rise and the return cannot meet it.
+    ASSERT_TRUE(model->setData(model->index(1, DesignTableModel::Law),
+                               static_cast<int>(MotionLawType::ConstantVelocity), Qt::EditRole));
+    ASSERT_TRUE(model->setData(model->index(1, DesignTableModel::Lift), 14.0, Qt::EditRole));
+    EXPECT_FALSE(doc->isValid());
+    const int steps = doc->undoStack()->count();
+    auto* all = panel->findChild<QPushButton*>("suggestAllLawsButton");
+    ASSERT_NE(all, nullptr);
+    all->click();
+    EXPECT_EQ(doc->undoStack()->count(), steps + 1);
+    EXPECT_TRUE(doc->isValid()) << diagnosticsText(doc->diagnostics()).toStdString();
+    const auto& s = doc->project().design->segments;
+    // Rest → the line's 4/60 mm/°: poly5 with that velocity at its end (by hand).
+    EXPECT_EQ(s[0].law, MotionLawType::Poly5);
+    EXPECT_NEAR(s[0].v1, 4.0 / 60.0, 1e-15);
+    EXPECT_EQ(s[1].law, MotionLawType::ConstantVelocity);
+    EXPECT_EQ(s[2].law, MotionLawType::Poly5);
+    EXPECT_NEAR(s[2].v0, 4.0 / 60.0, 1e-15);
+    EXPECT_EQ(model->index(0, DesignTableModel::EndClass).data().toString(), "Velocity");
+    auto* say = panel->findChild<QLabel*>("suggestionLabel");
+    ASSERT_NE(say, nullptr);
+    EXPECT_TRUE(say->text().contains("segment 0: Poly 5")) << say->text().toStdString();
+    doc->undoStack()->undo();
+    EXPECT_EQ(doc->project().design->segments[0].law, MotionLawType::Cycloidal);
+}
+
+TEST(MotionDesignLaws, ImportTableReadsInventorsTwoColumnsOrSaysWhereItCannot) {
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(kDesignOnly).isEmpty());
+    ProjectDocument* doc = window.document();
+    MotionDesignPanel* panel = window.motionDesignPanel();
+    const Project before = doc->project();
+    // Line 3 is no number: said with its line, nothing changes.
+    const QString bad = panel->importTable(0, "0 0\n0.5 0.5\n0.7 x\n1 1\n");
+    EXPECT_TRUE(bad.startsWith("line 3")) << bad.toStdString();
+    EXPECT_EQ(doc->project(), before);
+    // Not ending at (1, 1): said, nothing changes.
+    EXPECT_FALSE(panel->importTable(0, "0 0\n0.5 0.5\n1 0.9\n").isEmpty());
+    EXPECT_EQ(doc->project(), before);
+    // Points of the 3-4-5 law, tab- and comma-separated, with a comment: one undo step.
+    const QString text = "# x\ty\n0\t0\n0.25\t0.103515625\n0.5,0.5\n0.75\t0.896484375\n1\t1\n";
+    EXPECT_TRUE(panel->importTable(0, text).isEmpty());
+    const DesignSegmentSpec& s = doc->project().design->segments[0];
+    EXPECT_EQ(s.law, MotionLawType::Table);
+    ASSERT_EQ(s.table.size(), 5u);
+    EXPECT_EQ(s.table[1].x, 0.25);
+    EXPECT_EQ(s.table[1].y, 0.103515625);  // 10u³ − 15u⁴ + 6u⁵ at 1/4
+    EXPECT_TRUE(doc->isValid()) << diagnosticsText(doc->diagnostics()).toStdString();
+    EXPECT_EQ(panel->model()->index(0, DesignTableModel::Points).data().toInt(), 5);
+    doc->undoStack()->undo();
+    EXPECT_EQ(doc->project(), before);
+}
+
+}  // namespace
+}  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(MotionDesignLaws, ADesignWhoseLawsCannotMeetIsStillADesign) {
+    // A cycloid beside a line: not computable, but the dock must not say there is no design.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("line.cam.json");
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "camwright", "version": 1, "name": "line", "motion": {"rpm": 60},
+      "contour": [], "design": {"base_radius": 60, "segments": [
+        {"law": "dwell", "to_deg": 60}, {"law": "cycloidal", "to_deg": 120, "lift": 5},
+        {"law": "line", "to_deg": 200, "lift": 15}, {"law": "cycloidal", "to_deg": 360,
+        "lift": 0}]}})");
+    file.close();
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(path).isEmpty());
+    EXPECT_FALSE(window.document()->isValid());
+    auto* report = window.motionDesignPanel()->findChild<QLabel*>("synthesisReportLabel");
+    ASSERT_NE(report, nullptr);
+    EXPECT_FALSE(report->text().contains("no motion design")) << report->text().toStdString();
+    EXPECT_EQ(window.motionDesignPanel()->model()->index(1, DesignTableModel::EndClass).data(),
+              "Velocity");
 }
 
 }  // namespace

@@ -288,10 +288,10 @@ TEST(CliSynthesize, AConstantVelocityLawBlendedToItsSlopeMakesArcsAndKeepsItsNam
     EXPECT_EQ(segments[6].at("lift"), 2.5);
 }
 
-TEST(CliSynthesize, AConstantVelocityLawNextToADwellIsValidButHasACorner) {
-    // Straight from a dwell: the velocity jumps (a note, so the design validates), and the
-    // roller's profile has a corner where the rise meets the dwell at 180°: no arcs within a
-    // tolerance fit there.
+TEST(CliSynthesize, AConstantVelocityLawNextToADwellIsRefusedBeforeItMakesACorner) {
+    // Straight from a dwell the velocity would jump: the roller's profile would have a corner
+    // at 180° that no arcs fit. The line cannot meet the dwell's rest: validate and synthesize
+    // refuse it at its law, with both velocities (10/120 mm per degree against 0).
     test::TempDir dir;
     const std::string in = dir.file("line.cam.json"), made = dir.file("made.cam.json");
     test::writeFileWithMode(in, lineDesign(R"(
@@ -299,12 +299,13 @@ TEST(CliSynthesize, AConstantVelocityLawNextToADwellIsValidButHasACorner) {
     { "law": "line", "to_deg": 180, "lift": 10 })"),
                             0644);
     const auto valid = test::runCli({"validate", in});
-    EXPECT_EQ(valid.exitCode, 0) << valid.err;
+    EXPECT_EQ(valid.exitCode, 2) << valid.err;
+    const std::string says = in + ": design.segments[1].law: line cannot meet the rest at its";
+    EXPECT_NE(valid.err.find(says), std::string::npos) << valid.err;
     const auto r = test::runCli({"synthesize", in, "--out", made});
-    EXPECT_EQ(r.exitCode, 3) << r.out;
-    EXPECT_NE(r.err.find(in + ": design.tolerance: cannot be met near 179.99"), std::string::npos)
-        << r.err;
-    EXPECT_NE(r.err.find("corner"), std::string::npos) << r.err;
+    EXPECT_EQ(r.exitCode, 2) << r.out;
+    EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("0.08333333333"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(made));
 }
 

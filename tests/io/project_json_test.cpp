@@ -335,7 +335,8 @@ TEST(SyntaxLocations, ANulByteIsAnErrorAtItsOffsetNotTheEndOfTheFile) {
 namespace cam {
 namespace {
 
-/// kMinimal with a design (math.md §8's cycloidal cam, a poly5 return) in the given units.
+/// kMinimal with a design (math.md §8's cycloidal cam, a poly5 return) in the given units; the
+/// poly5 ends at rest with a curvature the harmonic after it takes up (a note, not an error).
 std::string withDesign(const std::string& units, const std::string& follower) {
     std::string text = kMinimal;
     text.insert(text.rfind('}'), R"(,
@@ -343,7 +344,7 @@ std::string withDesign(const std::string& units, const std::string& follower) {
   "design": { "base_radius": 40, "tolerance": 0.01, "segments": [
     { "law": "cycloidal", "to_deg": 120, "lift": 10 },
     { "law": "dwell", "to_deg": 180 },
-    { "law": "poly5", "to_deg": 300, "lift": 0, "v0": 0, "a0": 0, "v1": -0.01, "a1": 0.002 },
+    { "law": "poly5", "to_deg": 300, "lift": 0, "v0": 0, "a0": 0, "v1": 0, "a1": 0.002 },
     { "law": "harmonic", "to_deg": 330, "lift": 2 },
     { "law": "modified-sine", "to_deg": 360, "lift": 0 } ] })");
     return text;
@@ -364,7 +365,7 @@ TEST(ProjectJsonDesign, ReadsEveryFieldAndWritesItBackAsTyped) {
     EXPECT_EQ(d.segments[1].law, MotionLawType::Dwell);
     EXPECT_EQ(d.segments[1].lift, 10.0);
     EXPECT_EQ(d.segments[2].law, MotionLawType::Poly5);
-    EXPECT_EQ(d.segments[2].v1, -0.01);
+    EXPECT_EQ(d.segments[2].v1, 0.0);
     EXPECT_EQ(d.segments[2].a1, 0.002);
     EXPECT_EQ(d.segments[3].law, MotionLawType::Harmonic);
     EXPECT_EQ(d.segments[4].law, MotionLawType::ModifiedSine);
@@ -391,7 +392,7 @@ TEST(ProjectJsonDesign, LengthsFollowTheFileUnitsAndAnArmsLiftIsInDegrees) {
     EXPECT_DOUBLE_EQ(m.value().design->baseRadius, 40000.0);
     EXPECT_DOUBLE_EQ(m.value().design->tolerance, 10.0);
     EXPECT_DOUBLE_EQ(m.value().design->segments[0].lift, 10000.0);
-    EXPECT_DOUBLE_EQ(m.value().design->segments[2].v1, -10.0);
+    EXPECT_DOUBLE_EQ(m.value().design->segments[2].a1, 2.0);
     // On a swinging arm a lift is the angle swung, in degrees whatever the length unit.
     const auto arm = parseProject(withDesign(
         R"({ "length": "m" }, "follower": { "type": "roller", "radius": 0.002, "motion": )"
@@ -400,7 +401,7 @@ TEST(ProjectJsonDesign, LengthsFollowTheFileUnitsAndAnArmsLiftIsInDegrees) {
     ASSERT_TRUE(arm.ok()) << arm.errors().front().text();
     EXPECT_DOUBLE_EQ(arm.value().design->baseRadius, 40000.0);
     EXPECT_DOUBLE_EQ(arm.value().design->segments[0].lift, 10.0);
-    EXPECT_DOUBLE_EQ(arm.value().design->segments[2].v1, -0.01);
+    EXPECT_DOUBLE_EQ(arm.value().design->segments[2].a1, 0.002);
     const std::string out = serializeProject(arm.value());
     EXPECT_EQ(parseProject(out).value(), arm.value());
     EXPECT_NE(out.find(R"("lift": 10)"), std::string::npos) << out;
@@ -443,21 +444,21 @@ TEST(ProjectJsonDesign, EveryProblemIsNamedWithItsPlace) {
 }
 
 TEST(ProjectJsonDesign, AConstantVelocityLawIsReadAndWrittenAsLine) {
-    // Dwell, a line up, dwell, a line down: valid (its velocity jumps are notes).
+    // A line of 0.1 mm/° blended from rest and back to rest by poly5s that meet its slope.
     std::string text = kMinimal;
     text.insert(text.rfind('}'), R"(,
   "design": { "base_radius": 40, "segments": [
-    { "law": "dwell", "to_deg": 60 },
-    { "law": "line", "to_deg": 180, "lift": 10 },
-    { "law": "dwell", "to_deg": 240 },
-    { "law": "line", "to_deg": 360, "lift": 0 } ] })");
+    { "law": "poly5", "to_deg": 60, "lift": 2, "v0": 0, "a0": 0, "v1": 0.1, "a1": 0 },
+    { "law": "line", "to_deg": 180, "lift": 14 },
+    { "law": "poly5", "to_deg": 240, "lift": 16, "v0": 0.1, "a0": 0, "v1": 0, "a1": 0 },
+    { "law": "modified-sine", "to_deg": 360, "lift": 0 } ] })");
     const auto p = parseProject(text);
     ASSERT_TRUE(p.ok()) << p.errors().front().text();
     const DesignSpec& d = *p.value().design;
     ASSERT_EQ(d.segments.size(), 4u);
     EXPECT_EQ(d.segments[1].law, MotionLawType::ConstantVelocity);
-    EXPECT_EQ(d.segments[3].law, MotionLawType::ConstantVelocity);
-    EXPECT_EQ(d.segments[3].toDeg, 360.0);
+    EXPECT_EQ(d.segments[1].toDeg, 180.0);
+    EXPECT_EQ(d.segments[2].v0, 0.1);
     const std::string out = serializeProject(p.value());
     EXPECT_NE(out.find(R"("law": "line")"), std::string::npos) << out;
     const auto again = parseProject(out);

@@ -32,6 +32,14 @@ QStringList motionLawTitles() {
     return titles;
 }
 
+QStringList motionLawSummaries() {
+    QStringList summaries;
+    for (const MotionLawKind& law : motionLaws()) {
+        summaries << QCoreApplication::translate("MotionLaw", law.summary);
+    }
+    return summaries;
+}
+
 QString dynamicsKeyTitle(DynamicsKey key) {
     using K = DynamicsKey;
     static constexpr std::pair<DynamicsKey, const char*> kTitles[] = {

@@ -35,6 +35,9 @@ struct SegmentColumns {
 
 /// @brief The motion laws' titles in the window's language, in MotionLawType order.
 [[nodiscard]] QStringList motionLawTitles();
+/// @brief Each law's one-line summary (the law list's tips), translated, in MotionLawType's
+/// order.
+[[nodiscard]] QStringList motionLawSummaries();
 
 /// @brief "Mass [kg]", "Cam material, E [MPa]": a dynamics value's title in the window.
 [[nodiscard]] QString dynamicsKeyTitle(DynamicsKey key);

@@ -1,11 +1,14 @@
 #include "models/delegates.h"
 
+#include <QIcon>
+
 #include <QComboBox>
 #include <QFontMetrics>
 #include <QPersistentModelIndex>
 #include <algorithm>
 
 #include "models/segment_table_model.h"
+#include "widgets/law_picture.h"
 #include "widgets/number_spin_box.h"
 
 namespace cam {
@@ -98,6 +101,13 @@ QWidget* ChoiceDelegate::createEditor(QWidget* parent, const QStyleOptionViewIte
                                       const QModelIndex& index) const {
     auto* combo = new QComboBox(parent);
     combo->addItems(index.data(SegmentTableModel::ChoicesRole).toStringList());
+    const QVariantList icons = index.data(kChoiceIconsRole).toList();
+    const QStringList tips = index.data(kChoiceTipsRole).toStringList();
+    for (int i = 0; i < combo->count(); ++i) {
+        if (i < icons.size()) combo->setItemIcon(i, icons[i].value<QIcon>());
+        if (i < tips.size()) combo->setItemData(i, tips[i], Qt::ToolTipRole);
+    }
+    if (!icons.isEmpty()) combo->setIconSize(kLawPictureSize);
     connect(combo, &QComboBox::activated, this,
             [this, combo] { emit const_cast<ChoiceDelegate*>(this)->commitData(combo); });
     return combo;

@@ -10,6 +10,10 @@ namespace cam {
 /// step with these roles; without them the segment table's columns decide.
 inline constexpr int kEditorSuffixRole = Qt::UserRole + 3;
 inline constexpr int kEditorStepRole = Qt::UserRole + 4;
+/// Beside SegmentTableModel::ChoicesRole, a model may give each choice a picture (a
+/// QVariantList of QIcon) and a tip (a QStringList) for ChoiceDelegate's list.
+inline constexpr int kChoiceIconsRole = Qt::UserRole + 5;
+inline constexpr int kChoiceTipsRole = Qt::UserRole + 6;
 
 /// @brief Edits a number in a NumberSpinBox with its unit, as in any spreadsheet: typed text is
 /// taken on Enter or Tab (so "12.5" is 12.5, never 12 on the way), arrow and wheel steps update

@@ -8,6 +8,7 @@
 #include "messages/field_titles.h"
 #include "models/delegates.h"
 #include "models/segment_table_model.h"
+#include "widgets/law_picture.h"
 #include "widgets/quantity_format.h"
 
 namespace cam {
@@ -15,11 +16,6 @@ namespace {
 
 quint64 cellKey(int row, int column) {
     return (static_cast<quint64>(row) << 8) | static_cast<quint64>(column);
-}
-
-bool isPoly5Column(int c) {
-    return c == DesignTableModel::V0 || c == DesignTableModel::A0 || c == DesignTableModel::V1 ||
-           c == DesignTableModel::A1;
 }
 
 /// The column a diagnostic's design field is in; -1 for the whole row.
@@ -33,16 +29,26 @@ int columnOfPart(DesignPart part) {
             return DesignTableModel::ToDeg;
         case DesignPart::Lift:
             return DesignTableModel::Lift;
-        case DesignPart::V0:
-            return DesignTableModel::V0;
-        case DesignPart::A0:
-            return DesignTableModel::A0;
-        case DesignPart::V1:
-            return DesignTableModel::V1;
-        case DesignPart::A1:
-            return DesignTableModel::A1;
+        default:
+            for (int c = 0; c < DesignTableModel::ColumnCount; ++c) {
+                if (DesignTableModel::partOf(c) == part) return c;
+            }
+            return -1;
     }
-    return -1;
+}
+
+QString classTitle(BoundaryClass c) {
+    switch (c) {
+        case BoundaryClass::Rest:
+            return DesignTableModel::tr("Rest");
+        case BoundaryClass::Velocity:
+            return DesignTableModel::tr("Velocity");
+        case BoundaryClass::Reversal:
+            return DesignTableModel::tr("Reversal");
+        case BoundaryClass::Movement:
+            return DesignTableModel::tr("Movement");
+    }
+    return {};
 }
 
 }  // namespace
@@ -79,8 +85,8 @@ DesignTableModel::DesignTableModel(ProjectDocument* document, QObject* parent)
     });
     // Lifts are mm on a translating follower and degrees on an arm.
     connect(document, &ProjectDocument::followerChanged, this, [this] {
-        emit headerDataChanged(Qt::Horizontal, Lift, A1);
-        if (rowCount() > 0) emit dataChanged(index(0, Lift), index(rowCount() - 1, A1));
+        emit headerDataChanged(Qt::Horizontal, Lift, J1);
+        if (rowCount() > 0) emit dataChanged(index(0, Lift), index(rowCount() - 1, J1));
     });
     // Problems can come and go with any change (the follower's base circle, the speed).
     connect(document, &ProjectDocument::changed, this, [this] {
@@ -95,6 +101,33 @@ DesignTableModel::DesignTableModel(ProjectDocument* document, QObject* parent)
 }
 
 QStringList DesignTableModel::lawNames() { return motionLawTitles(); }
+
+DesignPart DesignTableModel::partOf(int column) {
+    switch (column) {
+        case V0:
+            return DesignPart::V0;
+        case A0:
+            return DesignPart::A0;
+        case J0:
+            return DesignPart::J0;
+        case V1:
+            return DesignPart::V1;
+        case A1:
+            return DesignPart::A1;
+        case J1:
+            return DesignPart::J1;
+        case Lambda:
+            return DesignPart::Lambda;
+        case SccaB:
+            return DesignPart::SccaB;
+        case SccaD:
+            return DesignPart::SccaD;
+        case Points:
+            return DesignPart::Points;
+        default:
+            return DesignPart::Whole;
+    }
+}
 
 bool DesignTableModel::swinging() const {
     const auto& f = m_document->project().follower;
@@ -116,6 +149,12 @@ void DesignTableModel::setCoefficients(const std::vector<LawCoefficients>& coeff
 }
 
 void DesignTableModel::rebuild() {
+    // The classes of a few segments: a handful of evaluations, as the document's own check of
+    // the design (designProblems) makes on every change.
+    m_classes.clear();
+    if (const auto& design = m_document->project().design) {
+        if (auto classes = boundaryClasses(*design); classes.ok()) m_classes = classes.value();
+    }
     m_problems.clear();
     for (const Diagnostic& d : m_document->diagnostics()) {
         const auto* place = std::get_if<DesignSegmentPlace>(&d.place);
@@ -141,8 +180,11 @@ QVariant DesignTableModel::data(const QModelIndex& index, int role) const {
     const auto row = static_cast<std::size_t>(index.row());
     const DesignSegmentSpec& s = segments[row];
     const int c = index.column();
-    const bool poly5 = motionLaw(s.law).shape == LawShape::BoundaryValues;
+    const DesignPart part = partOf(c);
+    const bool uses = part != DesignPart::Whole && lawUses(s.law, part);
     if (role == SegmentTableModel::ChoicesRole && c == Law) return lawNames();
+    if (role == kChoiceIconsRole && c == Law) return motionLawPictures();
+    if (role == kChoiceTipsRole && c == Law) return motionLawSummaries();
     if (role == kEditorSuffixRole) {
         const QString unit = swinging() ? QStringLiteral("°") : QStringLiteral(" mm");
         switch (c) {
@@ -156,6 +198,9 @@ QVariant DesignTableModel::data(const QModelIndex& index, int role) const {
             case A0:
             case A1:
                 return unit + QStringLiteral("/°²");
+            case J0:
+            case J1:
+                return unit + QStringLiteral("/°³");
             default:
                 return {};
         }
@@ -182,10 +227,30 @@ QVariant DesignTableModel::data(const QModelIndex& index, int role) const {
                 return tr("Largest acceleration as a multiple of lift ÷ duration²");
             case Cj:
                 return tr("Largest jerk as a multiple of lift ÷ duration³");
+            case StartClass:
+            case EndClass:
+                return tr(
+                    "The boundary class the neighbour demands here (VDI 2143): rest (v = 0, "
+                    "a = 0), constant velocity (a = 0), reversal (v = 0) or movement");
+            case Lambda:
+                return uses ? tr("Where the acceleration changes sign, as a share of the "
+                                 "segment (0.5: the symmetric law)")
+                            : tr("Only for the modified sine and the modified trapezoid");
+            case SccaB:
+            case SccaD:
+                return uses ? tr("SCCA: b is the share of the sine ramps, d of the cosine; the "
+                                 "constant acceleration takes the rest (b = d = 0.25: the "
+                                 "modified trapezoid)")
+                            : tr("Only for SCCA");
+            case Points:
+                return uses ? tr("How many points the motion table has; Import Table… reads them "
+                                 "from a "
+                                 "two-column text file (x and y from 0 to 1)")
+                            : tr("Only for a motion table");
             default:
-                return poly5 ? tr("Poly 5: the lift's slope (v) or curvature (a) per degree of "
-                                  "cam angle at the start (0) or the end (1)")
-                             : tr("Only for Poly 5");
+                return uses ? tr("The lift's slope (v), curvature (a) or its rate (j) per degree "
+                                 "of cam angle at the start (0) or the end (1)")
+                            : tr("Not a value of this law");
         }
     }
     if (role == Qt::BackgroundRole) {
@@ -204,10 +269,14 @@ QVariant DesignTableModel::data(const QModelIndex& index, int role) const {
     const auto coefficient = [&](double LawCoefficients::*field) -> QVariant {
         if (motionLaw(s.law).shape == LawShape::Dwell) return {};
         double value = 0.0;
-        if (row < m_coefficients.size() && m_coefficients.size() == segments.size()) {
+        const LawShape shape = motionLaw(s.law).shape;
+        if (shape == LawShape::Normalised) {
+            // In closed form from the law's parameters, at once.
+            const double from = row == 0 ? 0.0 : segments[row - 1].toDeg;
+            const double lift0 = row == 0 ? 0.0 : segments[row - 1].lift;
+            value = lawCoefficients(s.law, lawParameters(s, s.toDeg - from, s.lift - lift0)).*field;
+        } else if (row < m_coefficients.size() && m_coefficients.size() == segments.size()) {
             value = m_coefficients[row].*field;
-        } else if (!poly5) {
-            value = lawCoefficients(s.law).*field;
         } else {
             return {};
         }
@@ -226,13 +295,29 @@ QVariant DesignTableModel::data(const QModelIndex& index, int role) const {
         case Lift:
             return number(s.lift);
         case V0:
-            return poly5 ? number(s.v0) : QVariant();
+            return uses ? number(s.v0) : QVariant();
         case A0:
-            return poly5 ? number(s.a0) : QVariant();
+            return uses ? number(s.a0) : QVariant();
+        case J0:
+            return uses ? number(s.j0) : QVariant();
         case V1:
-            return poly5 ? number(s.v1) : QVariant();
+            return uses ? number(s.v1) : QVariant();
         case A1:
-            return poly5 ? number(s.a1) : QVariant();
+            return uses ? number(s.a1) : QVariant();
+        case J1:
+            return uses ? number(s.j1) : QVariant();
+        case Lambda:
+            return uses ? number(s.lambda) : QVariant();
+        case SccaB:
+            return uses ? number(s.sccaB) : QVariant();
+        case SccaD:
+            return uses ? number(s.sccaD) : QVariant();
+        case Points:
+            return uses ? QVariant(static_cast<int>(s.table.size())) : QVariant();
+        case StartClass:
+        case EndClass:
+            if (row >= m_classes.size() || m_classes.size() != segments.size()) return {};
+            return classTitle(c == StartClass ? m_classes[row].start : m_classes[row].end);
         case Cv:
             return coefficient(&LawCoefficients::cv);
         case Ca:
@@ -265,6 +350,23 @@ QVariant DesignTableModel::headerData(int section, Qt::Orientation orientation, 
             return tr("v1 [%1/°]").arg(unit);
         case A1:
             return tr("a1 [%1/°²]").arg(unit);
+        case J0:
+            return tr("j0 [%1/°³]").arg(unit);
+        case J1:
+            return tr("j1 [%1/°³]").arg(unit);
+        // Shares of the stretch, without a unit; the header as wide as the values it heads.
+        case Lambda:
+            return QStringLiteral("λ [–]");
+        case SccaB:
+            return QStringLiteral("b [–]");
+        case SccaD:
+            return QStringLiteral("d [–]");
+        case Points:
+            return tr("Points");
+        case StartClass:
+            return tr("Start");
+        case EndClass:
+            return tr("End");
         case Cv:
             return QStringLiteral("Cv");
         case Ca:
@@ -281,14 +383,17 @@ Qt::ItemFlags DesignTableModel::flags(const QModelIndex& index) const {
     Qt::ItemFlags f = Qt::ItemIsSelectable | Qt::ItemIsEnabled;
     const int c = index.column();
     if (c == Law || c == ToDeg || c == Lift) return f | Qt::ItemIsEditable;
-    if (isPoly5Column(c)) {
-        // Poly 5's boundary values; other laws have none: no cell to go to (Tab passes over).
-        const bool poly5 =
+    const DesignPart part = partOf(c);
+    if (part != DesignPart::Whole) {
+        // A law's own values; other laws have none: no cell to go to (Tab passes over). A
+        // table's points are imported (Import Table…), not typed.
+        const bool uses =
             index.row() < rowCount() &&
-            motionLaw(
-                m_document->project().design->segments[static_cast<std::size_t>(index.row())].law)
-                    .shape == LawShape::BoundaryValues;
-        return poly5 ? f | Qt::ItemIsEditable : Qt::NoItemFlags;
+            lawUses(
+                m_document->project().design->segments[static_cast<std::size_t>(index.row())].law,
+                part);
+        if (!uses) return Qt::NoItemFlags;
+        return part == DesignPart::Points ? f : f | Qt::ItemIsEditable;
     }
     return f;
 }
@@ -321,12 +426,44 @@ bool DesignTableModel::setData(const QModelIndex& index, const QVariant& value, 
         const double number = v.toDouble(&ok);
         // A cell takes a finite number only; the editor never offers another.
         if (!ok || !std::isfinite(number)) return false;
-        double* field = c == ToDeg  ? &s.toDeg
-                        : c == Lift ? &s.lift
-                        : c == V0   ? &s.v0
-                        : c == A0   ? &s.a0
-                        : c == V1   ? &s.v1
-                                    : &s.a1;
+        double* field = nullptr;
+        switch (c) {
+            case ToDeg:
+                field = &s.toDeg;
+                break;
+            case Lift:
+                field = &s.lift;
+                break;
+            case V0:
+                field = &s.v0;
+                break;
+            case A0:
+                field = &s.a0;
+                break;
+            case J0:
+                field = &s.j0;
+                break;
+            case V1:
+                field = &s.v1;
+                break;
+            case A1:
+                field = &s.a1;
+                break;
+            case J1:
+                field = &s.j1;
+                break;
+            case Lambda:
+                field = &s.lambda;
+                break;
+            case SccaB:
+                field = &s.sccaB;
+                break;
+            case SccaD:
+                field = &s.sccaD;
+                break;
+            default:
+                return false;
+        }
         *field = number;
     }
     if (design == *m_document->project().design) return true;  // nothing changed: no undo step

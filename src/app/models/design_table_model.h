@@ -1,13 +1,16 @@
 #pragma once
 /// @file
 /// @brief The motion design's segments as a Qt model (Motion Design dock): law, end angle,
-/// lift and poly5's boundary values, editable through undo commands; where each segment starts
-/// and its law's Cv, Ca, Cj, read-only. Cells a diagnostic names are marked with its message.
+/// lift and the parameters its law takes (boundary values, λ, b, d; a table's points are
+/// imported, design/motion_table.h), editable through undo commands; where each segment starts,
+/// its boundary classes as its neighbours demand them (design/boundary_classes.h) and its law's
+/// Cv, Ca, Cj, read-only. Cells a diagnostic names are marked with its message.
 
 #include <QAbstractTableModel>
 #include <QHash>
 #include <vector>
 
+#include "design/boundary_classes.h"
 #include "design/motion_law.h"
 #include "document/project_document.h"
 
@@ -16,7 +19,28 @@ namespace cam {
 class DesignTableModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { Law, FromDeg, ToDeg, Lift, V0, A0, V1, A1, Cv, Ca, Cj, ColumnCount };
+    enum Column {
+        Law,
+        FromDeg,
+        ToDeg,
+        Lift,
+        V0,
+        A0,
+        J0,
+        V1,
+        A1,
+        J1,
+        Lambda,
+        SccaB,
+        SccaD,
+        Points,
+        StartClass,
+        EndClass,
+        Cv,
+        Ca,
+        Cj,
+        ColumnCount
+    };
 
     explicit DesignTableModel(ProjectDocument* document, QObject* parent = nullptr);
 
@@ -36,6 +60,8 @@ public:
     [[nodiscard]] QStringList problemsAt(int row, int column) const;
     /// @brief The law names as the Law column offers them, in MotionLawType's order.
     [[nodiscard]] static QStringList lawNames();
+    /// @brief The field of a segment a column edits (DesignPart::Whole for none).
+    [[nodiscard]] static DesignPart partOf(int column);
 
 private:
     void rebuild();
@@ -45,6 +71,7 @@ private:
     std::vector<LawCoefficients> m_coefficients;
     QHash<quint64, QStringList> m_problems;  ///< (row << 8 | column) → messages
     std::vector<DesignSegmentSpec> m_shown;  ///< the segments the views know of
+    std::vector<SegmentClasses> m_classes;   ///< each segment's, when the design has them
 };
 
 }  // namespace cam

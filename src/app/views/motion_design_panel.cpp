@@ -5,27 +5,36 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
 #include <QFormLayout>
 #include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QTableView>
 #include <QToolButton>
 #include <QUndoStack>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "common/angles.h"
 #include "common/diagnostic_catalogue.h"
+#include "design/boundary_classes.h"
+#include "design/motion_table.h"
 #include "design/sizing.h"
 #include "document/commands.h"
 #include "engine/background_priority.h"
 #include "messages/diagnostic_text.h"
+#include "messages/field_titles.h"
 #include "models/delegates.h"
 #include "models/design_table_model.h"
 #include "project/follower_kind.h"
@@ -150,6 +159,14 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
             c, c == DesignTableModel::Law ? static_cast<QAbstractItemDelegate*>(choices) : numbers);
     }
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
+    // Columns wide enough from the start for any class and any Cv, Ca, Cj a law can have, so
+    // that picking a law moves no column under the mouse.
+    m_table->horizontalHeader()->setMinimumSectionSize(
+        std::max({m_table->fontMetrics().horizontalAdvance(QStringLiteral("0000.000")),
+                  m_table->fontMetrics().horizontalAdvance(DesignTableModel::tr("Movement")),
+                  m_table->fontMetrics().horizontalAdvance(DesignTableModel::tr("Reversal")),
+                  m_table->fontMetrics().horizontalAdvance(DesignTableModel::tr("Velocity"))}) +
+        14);
     keepColumnsFitting(m_table);
     sayWhyCellsAreReadOnly(m_table);
     m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
@@ -169,10 +186,33 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
     m_synthesize = new QToolButton(this);
     m_synthesize->setObjectName("synthesizeButton");
     m_synthesize->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    m_suggest = new QPushButton(tr("Suggest"), this);
+    m_suggest->setObjectName("suggestLawButton");
+    m_suggest->setToolTip(
+        tr("Choose the recommended law for the selected segment from the boundary classes its "
+           "neighbours demand (VDI 2143, CODESYS SoftMotion's table)"));
+    m_suggestAll = new QPushButton(tr("Suggest All"), this);
+    m_suggestAll->setObjectName("suggestAllLawsButton");
+    m_suggestAll->setToolTip(
+        tr("Choose the recommended law for every segment that is not a "
+           "dwell or a line"));
+    m_importTable = new QPushButton(tr("Import Table…"), this);
+    m_importTable->setObjectName("importMotionTableButton");
+    m_importTable->setToolTip(
+        tr("Make the selected segment a motion table from a text file of points: x and y "
+           "from 0 to 1 in two columns (as Inventor writes them), optionally dy/dx in a third"));
     rows->addWidget(m_split);
     rows->addWidget(m_delete);
+    rows->addWidget(m_suggest);
+    rows->addWidget(m_suggestAll);
+    rows->addWidget(m_importTable);
     rows->addStretch(1);
     layout->addLayout(rows);
+    m_suggestion = new QLabel(this);
+    m_suggestion->setObjectName("suggestionLabel");
+    m_suggestion->setWordWrap(true);
+    m_suggestion->hide();
+    layout->addWidget(m_suggestion);
     m_synthesize->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     layout->addWidget(m_synthesize);
 
@@ -241,6 +281,27 @@ MotionDesignPanel::MotionDesignPanel(ProjectDocument* document, QWidget* parent)
     connect(m_bestPlacement, &QPushButton::clicked, this, &MotionDesignPanel::sizePlacement);
     connect(m_split, &QPushButton::clicked, this, [this] { splitSegment(currentRow()); });
     connect(m_delete, &QPushButton::clicked, this, [this] { deleteSegment(currentRow()); });
+    connect(m_suggest, &QPushButton::clicked, this, [this] {
+        if (currentRow() >= 0) suggestLaw(currentRow());
+    });
+    connect(m_suggestAll, &QPushButton::clicked, this, [this] { suggestLaw(-1); });
+    connect(m_importTable, &QPushButton::clicked, this, [this] {
+        const int row = currentRow();
+        if (row < 0) return;
+        const QString path =
+            QFileDialog::getOpenFileName(this, tr("Import Motion Table"), QString(),
+                                         tr("Motion tables (*.txt *.csv *.dat);;All files (*)"));
+        if (path.isEmpty()) return;
+        QFile file(path);
+        QString problem;
+        if (!file.open(QIODevice::ReadOnly) || file.size() > 16 * 1024 * 1024) {
+            problem = tr("%1: cannot be read").arg(QDir::toNativeSeparators(path));
+        } else {
+            problem = importTable(row, QString::fromUtf8(file.readAll()));
+            if (!problem.isEmpty()) problem = QDir::toNativeSeparators(path) + ": " + problem;
+        }
+        if (!problem.isEmpty()) QMessageBox::warning(this, tr("Import Motion Table"), problem);
+    });
     const auto number = [this](NumberSpinBox* box, std::function<void(DesignSpec&, double)> set,
                                QString text) {
         connect(box, &QDoubleSpinBox::valueChanged, this, [this, set, text](double v) {
@@ -461,13 +522,63 @@ void MotionDesignPanel::deleteSegment(int row) {
         tr("Delete design segment %1").arg(row), 0);
 }
 
+void MotionDesignPanel::suggestLaw(int row) {
+    const auto& design = m_document->project().design;
+    if (!design || row >= static_cast<int>(design->segments.size())) return;
+    const auto only = row < 0 ? std::nullopt : std::optional<std::size_t>(row);
+    const auto suggested = suggestLaws(*design, only);
+    m_suggestion->show();
+    if (!suggested.ok()) {
+        m_suggestion->setText(tr("Suggest needs a design that can be evaluated: %1")
+                                  .arg(DiagnosticText::message(suggested.errors().front())));
+        return;
+    }
+    QStringList changes;
+    const QStringList titles = motionLawTitles();
+    for (std::size_t k = 0; k < design->segments.size(); ++k) {
+        if (suggested.value().segments[k] == design->segments[k]) continue;
+        changes << tr("segment %1: %2")
+                       .arg(k)
+                       .arg(titles.value(static_cast<int>(suggested.value().segments[k].law)));
+    }
+    if (changes.isEmpty()) {
+        m_suggestion->setText(row < 0
+                                  ? tr("Every law is already the one suggested.")
+                                  : tr("Segment %1's law is already the one suggested.").arg(row));
+        return;
+    }
+    m_suggestion->setText(tr("Suggested %1.").arg(changes.join(QStringLiteral("; "))));
+    editDesign([&](DesignSpec& d) { d = suggested.value(); },
+               row < 0 ? tr("Suggest laws") : tr("Suggest the law of design segment %1").arg(row),
+               0);
+}
+
+QString MotionDesignPanel::importTable(int row, const QString& text) {
+    const auto& design = m_document->project().design;
+    if (!design || row < 0 || row >= static_cast<int>(design->segments.size())) return {};
+    const auto points = parseMotionTable(text.toStdString());
+    if (!points.ok()) return DiagnosticText::line(points.errors().front());
+    const Diagnostics problems = motionTableProblems(
+        points.value(), DesignSegmentPlace{static_cast<std::size_t>(row), DesignPart::Points});
+    if (!problems.empty()) return DiagnosticText::message(problems.front());
+    editDesign(
+        [&](DesignSpec& d) {
+            DesignSegmentSpec& s = d.segments[static_cast<std::size_t>(row)];
+            s.law = MotionLawType::Table;
+            s.table = points.value();
+        },
+        tr("Import a motion table into design segment %1").arg(row), 0);
+    return {};
+}
+
 void MotionDesignPanel::refresh() {
     m_refreshing = true;
     const auto& design = m_document->project().design;
     m_newDesign->setVisible(!design);
     m_removeDesign->setVisible(design.has_value());
     for (QWidget* w : std::initializer_list<QWidget*>{m_baseRadius, m_tolerance, m_strict, m_table,
-                                                      m_split, m_delete, m_synthesize}) {
+                                                      m_split, m_delete, m_suggest, m_suggestAll,
+                                                      m_importTable, m_synthesize}) {
         w->setEnabled(design.has_value());
     }
     updateSizingButtons();
@@ -481,6 +592,10 @@ void MotionDesignPanel::refresh() {
         m_plotArea->hide();
         m_notes->clear();
         m_report->setText(noDesignText());
+    } else if (m_reportText.isEmpty()) {
+        // A design that cannot be computed yet (a law its neighbours cannot meet) brings no
+        // result to say so: it is a design all the same.
+        m_report->setText(synthesizeHint());
     }
 }
 

@@ -61,6 +61,15 @@ public:
     /// @brief Deletes segment `row`; the segment before it (the next for the first) takes over
     /// its stretch and end lift (one undo step). The last segment cannot be deleted.
     void deleteSegment(int row);
+    /// @brief Suggest: the recommended law for segment `row`, or for every segment that is not a
+    /// dwell or a line when row < 0, from the boundary classes its neighbours demand
+    /// (design/boundary_classes.h suggestLaws; one undo step). The status line says what
+    /// changed.
+    void suggestLaw(int row);
+    /// @brief Makes segment `row` a motion table with the points of `text` (two or three
+    /// columns, x and y from 0 to 1: design/motion_table.h parseMotionTable; one undo step).
+    /// Returns the message of text it cannot read (empty when it took it).
+    QString importTable(int row, const QString& text);
     /// @brief Finds the smallest base radius that passes every check (design/sizing.h) in the
     /// background and sets it (one undo step), unless the design or the follower changed
     /// meanwhile; the panel's sizing line says which check binds, or why none passes.
@@ -122,6 +131,10 @@ private:
     QTableView* m_table;
     QPushButton* m_split;
     QPushButton* m_delete;
+    QPushButton* m_suggest;
+    QPushButton* m_suggestAll;
+    QPushButton* m_importTable;
+    QLabel* m_suggestion;
     QToolButton* m_synthesize;
     QLabel* m_report;
     QLabel* m_notes;

@@ -74,6 +74,15 @@ enum class Severity { Error, Info };
     X(DesignVelocityJump)                \
     X(DesignAccelerationJump)            \
     X(DesignVelocityAndAccelerationJump) \
+    X(DesignBoundaryMismatch)            \
+    X(SccaSharesExceedOne)               \
+    X(MotionTableTooFew)                 \
+    X(MotionTableTooMany)                \
+    X(MotionTableNotIncreasing)          \
+    X(MotionTableEnds)                   \
+    X(MotionTableColumns)                \
+    X(MotionTableNotANumber)             \
+    X(MotionTableSingular)               \
     X(Missing)                           \
     X(UnknownKey)                        \
     X(WrongType)                         \

@@ -203,6 +203,18 @@ std::string_view designPartKey(DesignPart part) {
             return "v1";
         case DesignPart::A1:
             return "a1";
+        case DesignPart::J0:
+            return "j0";
+        case DesignPart::J1:
+            return "j1";
+        case DesignPart::Lambda:
+            return "lambda";
+        case DesignPart::SccaB:
+            return "b";
+        case DesignPart::SccaD:
+            return "d";
+        case DesignPart::Points:
+            return "points";
     }
     return "";
 }

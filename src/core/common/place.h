@@ -120,7 +120,22 @@ struct FieldPlace {
 };
 
 /// @brief Which field of a segment of the motion design a problem concerns.
-enum class DesignPart { Whole, Law, ToDeg, Lift, V0, A0, V1, A1 };
+enum class DesignPart {
+    Whole,
+    Law,
+    ToDeg,
+    Lift,
+    V0,
+    A0,
+    V1,
+    A1,
+    J0,
+    J1,
+    Lambda,
+    SccaB,
+    SccaD,
+    Points
+};
 
 /// @brief A field of a segment of the motion design: "design.segments[2].lift".
 struct DesignSegmentPlace {

@@ -5,6 +5,8 @@
 #include <string>
 
 #include "common/angles.h"
+#include "common/translate_marker.h"
+#include "design/boundary_classes.h"
 #include "project/validate.h"
 
 namespace cam {
@@ -25,7 +27,13 @@ Diagnostics designProblems(const Project& project) {
     for (const Diagnostic& problem : motion.errors()) out.push_back(problem);
     return out;
 }
-Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
+Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) { return assemble(spec, true); }
+
+Result<MotionDesign> MotionDesign::buildIgnoringJoints(const DesignSpec& spec) {
+    return assemble(spec, false);
+}
+
+Result<MotionDesign> MotionDesign::assemble(const DesignSpec& spec, bool jointsMustFit) {
     Diagnostics errors;
     const auto error = [&](Place place, DiagnosticCode code, std::vector<DiagnosticArg> args) {
         errors.push_back(Diagnostic::make(std::move(place), code, std::move(args)));
@@ -49,7 +57,10 @@ Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
         for (auto [part, v] :
              {std::pair{DesignPart::ToDeg, s.toDeg}, std::pair{DesignPart::Lift, s.lift},
               std::pair{DesignPart::V0, s.v0}, std::pair{DesignPart::A0, s.a0},
-              std::pair{DesignPart::V1, s.v1}, std::pair{DesignPart::A1, s.a1}}) {
+              std::pair{DesignPart::V1, s.v1}, std::pair{DesignPart::A1, s.a1},
+              std::pair{DesignPart::J0, s.j0}, std::pair{DesignPart::J1, s.j1},
+              std::pair{DesignPart::Lambda, s.lambda}, std::pair{DesignPart::SccaB, s.sccaB},
+              std::pair{DesignPart::SccaD, s.sccaD}}) {
             if (!std::isfinite(v)) {
                 error(at(part), DiagnosticCode::NotFinite, {v});
                 finite = false;
@@ -62,15 +73,73 @@ Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
         } else if (s.toDeg > 360.0) {
             error(at(DesignPart::ToDeg), DiagnosticCode::DesignEndBeyondTurn, {s.toDeg});
         }
-        if (motionLaw(s.law).shape == LawShape::Dwell && s.lift != startLift) {
+        const LawShape shape = motionLaw(s.law).shape;
+        if (shape == LawShape::Dwell && s.lift != startLift) {
             error(at(DesignPart::Lift), DiagnosticCode::DwellLiftChanges, {startLift, s.lift});
-        } else if (motionLaw(s.law).shape == LawShape::Normalised && s.lift == startLift) {
+        } else if ((shape == LawShape::Normalised || shape == LawShape::Table) &&
+                   s.lift == startLift) {
             error(at(DesignPart::Lift), DiagnosticCode::LiftUnchanged,
                   {startLift, std::string(lawName(s.law))});
+        }
+        if (lawUses(s.law, DesignPart::Lambda) &&
+            !(s.lambda >= kMinLawLambda && s.lambda <= 1.0 - kMinLawLambda)) {
+            error(at(DesignPart::Lambda), DiagnosticCode::OutOfRange,
+                  {kMinLawLambda, 1.0 - kMinLawLambda, std::string{}, s.lambda});
+        }
+        if (lawUses(s.law, DesignPart::SccaB)) {
+            bool inRange = true;
+            for (auto [part, v] :
+                 {std::pair{DesignPart::SccaB, s.sccaB}, std::pair{DesignPart::SccaD, s.sccaD}}) {
+                if (!(v >= 0.0 && v <= 1.0)) {
+                    error(at(part), DiagnosticCode::OutOfRange, {0.0, 1.0, std::string{}, v});
+                    inRange = false;
+                }
+            }
+            if (inRange && s.sccaB + s.sccaD > 1.0 + 1e-12) {
+                error(at(DesignPart::SccaD), DiagnosticCode::SccaSharesExceedOne,
+                      {s.sccaB, s.sccaD});
+            }
         }
         design.m_startRad.push_back(degToRad(startDeg));
         design.m_endRad.push_back(degToRad(s.toDeg));
         design.m_startLift.push_back(startLift);
+        // The law, prepared (its parameters are checked above, its table here).
+        SegmentLaw law;
+        const double h = degToRad(s.toDeg) - degToRad(startDeg);
+        const double perRad = 180.0 / kPi;
+        switch (shape) {
+            case LawShape::Dwell:
+                break;
+            case LawShape::Normalised:
+                if (s.law == MotionLawType::Scca) {
+                    law = SccaLaw(s.sccaB, s.sccaD);
+                } else {
+                    law = lawParameters(s, s.toDeg - startDeg, s.lift - startLift);
+                }
+                break;
+            case LawShape::BoundaryValues:
+                // The file's slopes are per degree; the polynomial works per radian.
+                if (s.law == MotionLawType::Poly7) {
+                    law = Poly7Law(
+                        h, startLift, s.lift,
+                        {s.v0 * perRad, s.a0 * perRad * perRad, s.j0 * perRad * perRad * perRad},
+                        {s.v1 * perRad, s.a1 * perRad * perRad, s.j1 * perRad * perRad * perRad});
+                } else {
+                    law = Poly5Law(h, startLift, s.lift, s.v0 * perRad, s.a0 * perRad * perRad,
+                                   s.v1 * perRad, s.a1 * perRad * perRad);
+                }
+                break;
+            case LawShape::Table: {
+                auto spline = MotionTableSpline::build(s.table, at(DesignPart::Points));
+                if (!spline.ok()) {
+                    for (const Diagnostic& d : spline.errors()) errors.push_back(d);
+                } else {
+                    law = std::make_shared<const MotionTableSpline>(std::move(spline.value()));
+                }
+                break;
+            }
+        }
+        design.m_laws.push_back(std::move(law));
         startDeg = s.toDeg;
         startLift = s.lift;
     }
@@ -86,16 +155,42 @@ Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
         }
     }
     if (!errors.empty()) return errors;
-    // Where velocity or acceleration jump, the turn's end joining its start.
+    double stroke = 1.0;
+    for (const DesignSegmentSpec& s : spec.segments) stroke = std::max(stroke, std::abs(s.lift));
+    design.m_zero = 1e-9 * stroke;
+    // Where velocity or acceleration jump, the turn's end joining its start. A velocity jump
+    // is a law that cannot meet its boundary: refused at the law that must change.
     const std::size_t n = spec.segments.size();
+    const double perDeg = kPi / 180.0;
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t next = (k + 1) % n;
-        const std::array<double, 4> left = design.inSegment(k, design.m_endRad[k]);
-        const std::array<double, 4> right = design.inSegment(next, design.m_startRad[next]);
-        const double stroke = std::max({std::abs(left[0]), 1.0});
-        const double perDeg = kPi / 180.0;
-        const bool velocity = std::abs(left[1] - right[1]) > 1e-9 * stroke;
-        const bool acceleration = std::abs(left[2] - right[2]) > 1e-9 * stroke;
+        const std::array<double, 4> left = design.endOf(k);
+        const std::array<double, 4> right = design.startOf(next);
+        const bool velocity = std::abs(left[1] - right[1]) > design.m_zero;
+        const bool acceleration = std::abs(left[2] - right[2]) > design.m_zero;
+        if (velocity && jointsMustFit) {
+            // The side that must change: a dwell never can, a line only where the other side
+            // is a dwell; between equals, the later segment.
+            const auto rank = [&](std::size_t s) {
+                const MotionLawType law = spec.segments[s].law;
+                return law == MotionLawType::Dwell ? 2 : law == MotionLawType::ConstantVelocity;
+            };
+            const bool atStart = rank(next) <= rank(k);
+            const std::size_t changes = atStart ? next : k;
+            const double own = (atStart ? right[1] : left[1]) * perDeg;
+            const double other = (atStart ? left[1] : right[1]) * perDeg;
+            const double otherA = atStart ? left[2] : right[2];
+            const BoundaryClass required = classifyBoundary(other / perDeg, otherA, design.m_zero);
+            errors.push_back(
+                Diagnostic::make(DesignSegmentPlace{changes, DesignPart::Law},
+                                 DiagnosticCode::DesignBoundaryMismatch,
+                                 {std::string(lawName(spec.segments[changes].law)),
+                                  std::string(boundaryClassTerm(required)),
+                                  std::string(atStart ? CAM_TRANSLATE_NOOP("Diagnostic", "start")
+                                                      : CAM_TRANSLATE_NOOP("Diagnostic", "end")),
+                                  own, other}));
+            continue;
+        }
         std::vector<DiagnosticArg> args;
         if (velocity) args = {left[1] * perDeg, right[1] * perDeg};
         if (acceleration) {
@@ -110,24 +205,34 @@ Result<MotionDesign> MotionDesign::build(const DesignSpec& spec) {
                 Diagnostic::make(DesignJointPlace{k, next}, code, std::move(args), Severity::Info));
         }
     }
+    if (!errors.empty()) return errors;
     return design;
 }
 
 std::array<double, 4> MotionDesign::inSegment(std::size_t k, double phi) const {
     const DesignSegmentSpec& s = m_spec.segments[k];
     const double h = m_endRad[k] - m_startRad[k], y0 = m_startLift[k], d = s.lift - y0;
-    const double x = (phi - m_startRad[k]) / h;
-    if (motionLaw(s.law).shape == LawShape::Dwell) return {y0, 0.0, 0.0, 0.0};
-    if (motionLaw(s.law).shape == LawShape::BoundaryValues) {
-        // The file's slopes are per degree; the polynomial works per radian.
-        const double perRad = 180.0 / kPi;
-        const Poly5Law law(h, y0, s.lift, s.v0 * perRad, s.a0 * perRad * perRad, s.v1 * perRad,
-                           s.a1 * perRad * perRad);
-        const LawPoint p = law.at(std::clamp(x, 0.0, 1.0));
+    const double x = std::clamp((phi - m_startRad[k]) / h, 0.0, 1.0);
+    const SegmentLaw& law = m_laws[k];
+    const auto scaled = [&](const LawPoint& p) -> std::array<double, 4> {
+        return {y0 + d * p.y, d * p.v / h, d * p.a / (h * h), d * p.j / (h * h * h)};
+    };
+    if (const auto* params = std::get_if<LawParameters>(&law)) {
+        return scaled(normalisedLaw(s.law, x, *params));
+    }
+    if (const auto* scca = std::get_if<SccaLaw>(&law)) return scaled(scca->at(x));
+    if (const auto* table = std::get_if<std::shared_ptr<const MotionTableSpline>>(&law)) {
+        return scaled((*table)->at(x));
+    }
+    if (const auto* poly5 = std::get_if<Poly5Law>(&law)) {
+        const LawPoint p = poly5->at(x);
         return {p.y, p.v, p.a, p.j};
     }
-    const LawPoint p = normalisedLaw(s.law, x);
-    return {y0 + d * p.y, d * p.v / h, d * p.a / (h * h), d * p.j / (h * h * h)};
+    if (const auto* poly7 = std::get_if<Poly7Law>(&law)) {
+        const LawPoint p = poly7->at(x);
+        return {p.y, p.v, p.a, p.j};
+    }
+    return {y0, 0.0, 0.0, 0.0};
 }
 
 std::size_t MotionDesign::segmentAt(double phi) const {
@@ -146,7 +251,11 @@ std::array<double, 4> MotionDesign::liftAt(double phi) const {
 
 LawCoefficients MotionDesign::coefficients(std::size_t k) const {
     const DesignSegmentSpec& s = m_spec.segments[k];
-    if (motionLaw(s.law).shape != LawShape::BoundaryValues) return lawCoefficients(s.law);
+    if (const auto* params = std::get_if<LawParameters>(&m_laws[k])) {
+        return lawCoefficients(s.law, *params);
+    }
+    if (const auto* scca = std::get_if<SccaLaw>(&m_laws[k])) return scca->coefficients();
+    if (std::holds_alternative<std::monostate>(m_laws[k])) return {};
     // Sampled finely, normalised by the stretch: y' · h/Δ, y'' · h²/Δ, y''' · h³/Δ.
     const double h = m_endRad[k] - m_startRad[k], d = s.lift - m_startLift[k];
     const double scale = d != 0.0 ? 1.0 / std::abs(d) : 1.0;

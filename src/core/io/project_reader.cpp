@@ -1,5 +1,6 @@
 #include "io/project_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <span>
@@ -170,6 +171,13 @@ public:
     }
 
     /// Keys inside known objects must be known: a typo must not be silently ignored.
+    void onlyKeys(const Json& obj, const std::string& at, const std::vector<std::string>& keys) {
+        for (const auto& [key, value] : obj.items()) {
+            if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
+                error(join(at, key.c_str()), DiagnosticCode::UnknownKey);
+            }
+        }
+    }
     void onlyKeys(const Json& obj, const std::string& at, std::initializer_list<const char*> keys) {
         for (const auto& [key, value] : obj.items()) {
             bool known = false;
@@ -482,11 +490,12 @@ void readDesign(Reader& rd, const Json& root, const UnitsSpec& units, Project& p
                         rd.error(at + ".law", DiagnosticCode::UnknownLaw, {*name, knownLawNames()});
                     }
                 }
-                if (motionLaw(s.law).shape == LawShape::BoundaryValues) {
-                    rd.onlyKeys(j, at, {"law", "to_deg", "lift", "v0", "a0", "v1", "a1"});
-                } else {
-                    rd.onlyKeys(j, at, {"law", "to_deg", "lift"});
+                // The keys a law takes are its row's (design/motion_law.cpp).
+                std::vector<std::string> keys = {"law", "to_deg", "lift"};
+                for (DesignPart part : kLawParameterParts) {
+                    if (lawUses(s.law, part)) keys.emplace_back(designPartKey(part));
                 }
+                rd.onlyKeys(j, at, keys);
                 if (const auto v = rd.number(j, at, "to_deg", true)) s.toDeg = *v;
                 if (const auto v =
                         rd.number(j, at, "lift", motionLaw(s.law).shape != LawShape::Dwell)) {
@@ -494,9 +503,41 @@ void readDesign(Reader& rd, const Json& root, const UnitsSpec& units, Project& p
                 } else if (motionLaw(s.law).shape == LawShape::Dwell) {
                     s.lift = spec.segments.empty() ? 0.0 : spec.segments.back().lift;
                 }
-                for (auto [key, value] : {std::pair{"v0", &s.v0}, std::pair{"a0", &s.a0},
-                                          std::pair{"v1", &s.v1}, std::pair{"a1", &s.a1}}) {
+                for (auto [key, value] :
+                     {std::pair{"v0", &s.v0}, std::pair{"a0", &s.a0}, std::pair{"v1", &s.v1},
+                      std::pair{"a1", &s.a1}, std::pair{"j0", &s.j0}, std::pair{"j1", &s.j1}}) {
                     if (const auto v = rd.number(j, at, key, false)) *value = *v * liftUnit;
+                }
+                for (auto [key, value] : {std::pair{"lambda", &s.lambda}, std::pair{"b", &s.sccaB},
+                                          std::pair{"d", &s.sccaD}}) {
+                    if (const auto v = rd.number(j, at, key, false)) *value = *v;
+                }
+                if (lawUses(s.law, DesignPart::Points)) {
+                    if (const Json* list = rd.field(j, at, "points", true)) {
+                        const std::string loc = at + ".points";
+                        if (!list->is_array()) {
+                            rd.wrongType(loc,
+                                         CAM_TRANSLATE_NOOP("Diagnostic",
+                                                            "an array of points [x, y] or "
+                                                            "[x, y, dy/dx]"),
+                                         typeName(*list));
+                        } else {
+                            for (std::size_t i = 0; i < list->size(); ++i) {
+                                const Json& p = (*list)[i];
+                                const std::string pat = loc + "[" + std::to_string(i) + "]";
+                                if (!p.is_array() || (p.size() != 2 && p.size() != 3)) {
+                                    rd.error(pat, DiagnosticCode::MotionTableColumns,
+                                             {static_cast<double>(p.is_array() ? p.size() : 1)});
+                                    continue;
+                                }
+                                const auto x = rd.number(p[0], pat + "[0]");
+                                const auto y = rd.number(p[1], pat + "[1]");
+                                std::optional<double> v;
+                                if (p.size() == 3) v = rd.number(p[2], pat + "[2]");
+                                if (x && y && (p.size() == 2 || v)) s.table.push_back({*x, *y, v});
+                            }
+                        }
+                    }
                 }
                 spec.segments.push_back(s);
             }

@@ -152,11 +152,30 @@ std::string serializeProject(const Project& p) {
             j["law"] = std::string(lawName(s.law));
             j["to_deg"] = s.toDeg;
             j["lift"] = lift(s.lift);
-            if (motionLaw(s.law).shape == LawShape::BoundaryValues) {
-                j["v0"] = lift(s.v0);
-                j["a0"] = lift(s.a0);
-                j["v1"] = lift(s.v1);
-                j["a1"] = lift(s.a1);
+            // The keys a law takes are its row's (design/motion_law.cpp).
+            for (auto [part, value] :
+                 {std::pair{DesignPart::V0, s.v0}, std::pair{DesignPart::A0, s.a0},
+                  std::pair{DesignPart::J0, s.j0}, std::pair{DesignPart::V1, s.v1},
+                  std::pair{DesignPart::A1, s.a1}, std::pair{DesignPart::J1, s.j1}}) {
+                if (lawUses(s.law, part)) j[std::string(designPartKey(part))] = lift(value);
+            }
+            // λ only where it is not the classic symmetric law's, so that a file of the classic
+            // laws reads as it always did.
+            if (lawUses(s.law, DesignPart::Lambda) && s.lambda != DesignSegmentSpec{}.lambda) {
+                j["lambda"] = s.lambda;
+            }
+            for (auto [part, value] :
+                 {std::pair{DesignPart::SccaB, s.sccaB}, std::pair{DesignPart::SccaD, s.sccaD}}) {
+                if (lawUses(s.law, part)) j[std::string(designPartKey(part))] = value;
+            }
+            if (lawUses(s.law, DesignPart::Points)) {
+                Json points = Json::array();
+                for (const MotionTablePoint& p : s.table) {
+                    Json point = {p.x, p.y};
+                    if (p.v) point.push_back(*p.v);
+                    points.push_back(std::move(point));
+                }
+                j["points"] = std::move(points);
             }
             segments.push_back(std::move(j));
         }
@@ -244,8 +263,16 @@ Diagnostics nonFiniteValues(const Project& p) {
             for (auto [part, v] :
                  {std::pair{DesignPart::ToDeg, s.toDeg}, std::pair{DesignPart::Lift, s.lift},
                   std::pair{DesignPart::V0, s.v0}, std::pair{DesignPart::A0, s.a0},
-                  std::pair{DesignPart::V1, s.v1}, std::pair{DesignPart::A1, s.a1}}) {
+                  std::pair{DesignPart::V1, s.v1}, std::pair{DesignPart::A1, s.a1},
+                  std::pair{DesignPart::J0, s.j0}, std::pair{DesignPart::J1, s.j1},
+                  std::pair{DesignPart::Lambda, s.lambda}, std::pair{DesignPart::SccaB, s.sccaB},
+                  std::pair{DesignPart::SccaD, s.sccaD}}) {
                 check(v, DesignSegmentPlace{k, part});
+            }
+            for (const MotionTablePoint& point : s.table) {
+                for (double v : {point.x, point.y, point.v.value_or(0.0)}) {
+                    check(v, DesignSegmentPlace{k, DesignPart::Points});
+                }
             }
         }
     }

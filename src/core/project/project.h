@@ -211,7 +211,11 @@ inline constexpr double kMaxSpeedMmS = 1e9;
     X(Poly345)             \
     X(Poly4567)            \
     X(Poly5)               \
-    X(ConstantVelocity)
+    X(ConstantVelocity)    \
+    X(InclinedSine)        \
+    X(Scca)                \
+    X(Poly7)               \
+    X(Table)
 
 #define CAM_MOTION_LAW_ENUM(name) name,
 enum class MotionLawType { CAM_MOTION_LAWS(CAM_MOTION_LAW_ENUM) };
@@ -221,6 +225,14 @@ enum class MotionLawType { CAM_MOTION_LAWS(CAM_MOTION_LAW_ENUM) };
 #define CAM_MOTION_LAW_COUNT(name) +1
 inline constexpr std::size_t kMotionLawCount = 0 CAM_MOTION_LAWS(CAM_MOTION_LAW_COUNT);
 #undef CAM_MOTION_LAW_COUNT
+
+/// @brief A point of a user's motion table (law `table`), normalised to its stretch: x in
+/// [0, 1], y = 0 at x = 0 and 1 at x = 1, v = dy/dx where the user gives it.
+struct MotionTablePoint {
+    double x = 0.0, y = 0.0;
+    std::optional<double> v{};
+    friend bool operator==(const MotionTablePoint&, const MotionTablePoint&) = default;
+};
 
 /// @brief One stretch of the follower's motion: from where the previous segment ends (the
 /// first from 0°) to `toDeg`, from the previous segment's lift (the first from 0) to `lift`.
@@ -232,7 +244,20 @@ struct DesignSegmentSpec {
     double lift = 0.0;
     /// poly5 only: d(lift)/dφ and d²(lift)/dφ² at the start and the end, per degree of cam
     /// angle (mm/°, mm/°²; °/° on a swinging arm).
+    /// inclined-sine: v0 is its velocity at both ends (a line's beside it, 0 beside a dwell).
     double v0 = 0.0, a0 = 0.0, v1 = 0.0, a1 = 0.0;
+    /// poly7 only: d³(lift)/dφ³ at the start and the end, per degree³.
+    double j0 = 0.0, j1 = 0.0;
+    /// modified-sine, modified-trapezoid: where the acceleration changes sign, a fraction of
+    /// the stretch in (0, 1) (CODESYS's inflection point λ); 0.5 is the classic symmetric law.
+    double lambda = 0.5;
+    /// scca: Norton's b (the sine ramps' share) and d (the cosine's share) of the stretch;
+    /// the constant acceleration's share is c = 1 − b − d. The defaults are the modified
+    /// trapezoid.
+    double sccaB = 0.25, sccaD = 0.25;
+    /// table: the user's motion, normalised: x from 0 to 1 over the stretch, y from 0 to 1
+    /// over the lift, and where given dy/dx (a C2 quintic spline runs through them).
+    std::vector<MotionTablePoint> table{};
     friend bool operator==(const DesignSegmentSpec&, const DesignSegmentSpec&) = default;
 };
 

@@ -490,9 +490,14 @@ def check_dynamics(d, follower, probs):
         dyn_number(d, key, at, rule, probs)
 
 
-# The laws of math.md §8 and "line" (constant velocity), which the spec does not list yet.
-LAWS = ["dwell", "harmonic", "cycloidal", "modified-trapezoid", "modified-sine", "poly345",
-        "poly4567", "poly5", "line"]
+# The laws of math.md §8 and those docs/cli.md's table adds (issue 33), which the spec does not
+# list yet, with the keys each takes besides law, to_deg and lift.
+LAW_KEYS = {"dwell": set(), "harmonic": set(), "cycloidal": set(),
+            "modified-trapezoid": {"lambda"}, "modified-sine": {"lambda"}, "poly345": set(),
+            "poly4567": set(), "poly5": {"v0", "a0", "v1", "a1"}, "line": set(),
+            "inclined-sine": {"v0"}, "scca": {"b", "d"},
+            "poly7": {"v0", "a0", "j0", "v1", "a1", "j1"}, "table": {"points"}}
+LAWS = list(LAW_KEYS)
 
 
 def check_design(d, probs):
@@ -528,11 +533,11 @@ def check_design(d, probs):
             probs.add(at, "must be an object")
             continue
         law = string(s, "law", f"{at}.law", probs, LAWS)
-        allowed = {"law", "to_deg", "lift"} | ({"v0", "a0", "v1", "a1"} if law == "poly5" else set())
+        allowed = {"law", "to_deg", "lift"} | LAW_KEYS.get(law, set())
         for key in s:
             if key not in allowed:
                 probs.add(f"{at}.{key}", "unknown key")
-        for key in ("v0", "a0", "v1", "a1"):
+        for key in ("v0", "a0", "j0", "v1", "a1", "j1", "lambda", "b", "d"):
             if key in s and key in allowed:
                 number(s, key, f"{at}.{key}", probs)
         to = number(s, "to_deg", f"{at}.to_deg", probs)
@@ -544,7 +549,7 @@ def check_design(d, probs):
         if lift is not None:
             if law == "dwell" and lift != start_lift:
                 probs.add(f"{at}.lift", f"a dwell keeps the lift {start_lift} (got {lift})")
-            if law not in (None, "dwell", "poly5") and lift == start_lift:
+            if law not in (None, "dwell", "poly5", "poly7") and lift == start_lift:
                 probs.add(f"{at}.lift", f"{law} must change the lift {start_lift}")
         if to is not None:
             start_deg = to
