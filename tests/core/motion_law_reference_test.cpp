@@ -614,6 +614,29 @@ TEST(MotionLawReference, InclinedSineIsItsClosedFormWithTheLinesSlope) {
     }
 }
 
+TEST(MotionLawReference, InclinedSineReturnsWithTheLinesSlope) {
+    // The poly5 return of linesAndInclinedSines an inclined sine too (240–360°, 19 → 0 mm, at
+    // 0.1 mm/° at both ends): vn = 0.1·120/(−19), negative; the cam is lines and inclined sines.
+    DesignSpec d = linesAndInclinedSines();
+    d.segments[3] = segment(MotionLawType::InclinedSine, 360.0, 0.0);
+    d.segments[3].v0 = 0.1;
+    const std::optional<MotionDesign> design = built(d);
+    ASSERT_TRUE(design);
+    const MotionDesign& m = *design;
+    EXPECT_TRUE(m.jumps().empty()) << m.jumps().front().text();
+    const double vn = 0.1 * 120.0 / -19.0;
+    const SegmentView s = viewOf(m, 3);
+    for (double x : samplesOfX()) {
+        expectAt(s, x, inclinedSine(vn, x), 1e-12, "x " + std::to_string(x));
+    }
+    const LawCoefficients want{2.0 - vn, kTwoPi * (1.0 - vn), kTwoPi * kTwoPi * (1.0 - vn)};
+    expectCoefficients(m.coefficients(3), want, 1e-12, "return");
+    expectCoefficients(sampled(s), want, 1e-9, "sampled return");
+    // In mm/° at its ends, as the line's: +0.1.
+    EXPECT_TRUE(relClose(m.liftAt(degToRad(240.0))[1] * kPi / 180.0, 0.1, 1e-12));
+    EXPECT_TRUE(relClose(m.endOf(3)[1] * kPi / 180.0, 0.1, 1e-12));
+}
+
 TEST(MotionLawReference, LinesBetweenInclinedSinesJoinWithoutJumps) {
     const std::optional<MotionDesign> design = built(linesAndInclinedSines());
     ASSERT_TRUE(design);
@@ -1014,6 +1037,21 @@ TEST(MotionLawReference, TableAtSpeedJoinsLines) {
     }
     expectAt(s, 0.0, {0.0, 3.0, 0.0, s.at(0.0).j}, 1e-12, "start", false);
     expectPoint(limit(s, 1.0, -1, 1e-7), {1.0, 3.0, 0.0, 0.0}, 1e-9, "end", false);
+}
+
+TEST(MotionLawReference, TableOfItsEndsIsPoly345) {
+    // Two points: one quintic at rest with y'' = 0 at both ends, y = 10x³ − 15x⁴ + 6x⁵ (poly
+    // 3-4-5; math.md §8: Cv 1.875, Ca 5.7735, Cj 60).
+    const std::optional<MotionDesign> design = tableDesign({{0.0, 0.0, {}}, {1.0, 1.0, {}}});
+    ASSERT_TRUE(design);
+    const SegmentView s = viewOf(*design, 0);
+    for (double x : samplesOfX()) {
+        const double x2 = x * x;
+        const LawPoint want{x2 * x * (10.0 - 15.0 * x + 6.0 * x2),
+                            x2 * (30.0 - 60.0 * x + 30.0 * x2), x * (60.0 - 180.0 * x + 120.0 * x2),
+                            60.0 - 360.0 * x + 360.0 * x2};
+        expectAt(s, x, want, 1e-12, "x " + std::to_string(x));
+    }
 }
 
 TEST(MotionLawReference, TableThroughPoly4567IsPoly4567) {
