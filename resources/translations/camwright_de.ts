@@ -238,7 +238,7 @@
         <translation>muss x y oder x y dy/dx enthalten (erhalten %1 Spalten)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+1" />
         <source>is not a number: "%1"</source>
         <translation>ist keine Zahl: „%1“</translation>
     </message>
@@ -1298,7 +1298,7 @@
         <translation>Bewegung</translation>
     </message>
     <message>
-        <location filename="../../src/core/design/motion_design.cpp" line="+188" />
+        <location filename="../../src/core/design/motion_design.cpp" line="+189" />
         <source>start</source>
         <translation>Anfang</translation>
     </message>
@@ -1774,6 +1774,19 @@
     </message>
 </context>
 <context>
+    <name>ExportRequest</name>
+    <message>
+        <location filename="../../src/app/export/export_request.cpp" line="+40" />
+        <source>the project has no design: its law is the source only of a design's table</source>
+        <translation>das Projekt hat keinen Entwurf: sein Bewegungsgesetz ist nur bei einem Entwurf die Quelle der Tabelle</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>the project has no contour yet: Synthesize (F6) makes it from the design</source>
+        <translation>das Projekt hat noch keine Kontur: Synthetisieren (F6) erzeugt sie aus dem Entwurf</translation>
+    </message>
+</context>
+<context>
     <name>FollowerKind</name>
     <message>
         <location filename="../../src/core/project/follower_kind.cpp" line="+14" />
@@ -2055,7 +2068,7 @@
 <context>
     <name>MotionLaw</name>
     <message>
-        <location filename="../../src/core/design/motion_law.cpp" line="+154" />
+        <location filename="../../src/core/design/motion_law.cpp" line="+152" />
         <source>Dwell</source>
         <translation>Rast</translation>
     </message>
@@ -2140,7 +2153,7 @@
         <translation>Konstante Geschwindigkeit</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+2" />
         <source>A straight line: constant velocity, no acceleration.</source>
         <translation>Eine Gerade: konstante Geschwindigkeit, keine Beschleunigung.</translation>
     </message>
@@ -2815,7 +2828,7 @@
         <translation>Die Randbedingung, die der Nachbar hier verlangt (VDI 2143): Rast (v = 0, a = 0), konstante Geschwindigkeit (a = 0), Umkehr (v = 0) oder Bewegung</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+4" />
         <source>Where the acceleration changes sign, as a share of the segment (0.5: the symmetric law)</source>
         <translation>Wo die Beschleunigung das Vorzeichen wechselt, als Anteil des Abschnitts (0,5: das symmetrische Gesetz)</translation>
     </message>
@@ -2840,7 +2853,7 @@
         <translation>Wie viele Punkte die Bewegungstabelle hat; Tabelle importieren… liest sie aus einer Textdatei mit zwei Spalten (x und y von 0 bis 1)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>Only for a motion table</source>
         <translation>Nur für eine Bewegungstabelle</translation>
     </message>
@@ -3201,7 +3214,7 @@
         <translation>Diagramm „%1“</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+22" />
         <source>The project has no contour yet: Synthesize (F6) makes it from the design.</source>
         <translation>Das Projekt hat noch keine Kontur: Synthetisieren (F6) erzeugt sie aus dem Entwurf.</translation>
     </message>
@@ -3241,13 +3254,13 @@
 <context>
     <name>cam::ExportDialog</name>
     <message>
-        <location filename="../../src/app/export/export_dialog.cpp" line="+55" />
-        <location line="+309" />
+        <location filename="../../src/app/export/export_dialog.cpp" line="+61" />
+        <location line="+334" />
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
     <message>
-        <location line="-300" />
+        <location line="-325" />
         <source>&amp;Format:</source>
         <translation>&amp;Format:</translation>
     </message>
@@ -3427,7 +3440,27 @@
         <translation>&amp;Dialekt:</translation>
     </message>
     <message>
+        <location line="+4" />
+        <source>Motion law (exact)</source>
+        <translation>Bewegungsgesetz (exakt)</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>Contour (follower on the arcs)</source>
+        <translation>Kontur (Stößel auf den Bögen)</translation>
+    </message>
+    <message>
+        <location line="+3" />
+        <source>The design's law is exact; the arc-fitted contour's lift is only C1 (its acceleration steps at every arc joint)</source>
+        <translation>Das Gesetz des Entwurfs ist exakt; der Hub der aus Bögen gefügten Kontur ist nur C1 (ihre Beschleunigung springt an jedem Bogenübergang)</translation>
+    </message>
+    <message>
         <location line="+8" />
+        <source>&amp;Source:</source>
+        <translation>&amp;Quelle:</translation>
+    </message>
+    <message>
+        <location line="+16" />
         <source>&amp;Plot:</source>
         <translation>&amp;Diagramm:</translation>
     </message>
@@ -3457,7 +3490,7 @@
         <translation>&amp;Exportieren</translation>
     </message>
     <message>
-        <location line="+138" />
+        <location line="+140" />
         <source>Name the file to write.</source>
         <translation>Geben Sie die zu schreibende Datei an.</translation>
     </message>
@@ -3475,6 +3508,18 @@
         <location line="+2" />
         <source>No plot can be drawn yet.</source>
         <translation>Noch kann kein Diagramm gezeichnet werden.</translation>
+    </message>
+    <message>
+        <location line="+32" />
+        <source>Measuring the controller's interpolation…</source>
+        <translation>Die Interpolation der Steuerung wird gemessen…</translation>
+    </message>
+    <message>
+        <location line="+16" />
+        <source>The controller's interpolation (%1) of these %2 points is off the motion by at most %3%4 (at %5°), %6%4/° in velocity and %7%4/°² in acceleration.
+Velocity %8 … %9%4/°, acceleration %10 … %11%4/°², jerk %12 … %13%4/°³.</source>
+        <translation>Die Interpolation der Steuerung (%1) dieser %2 Punkte weicht höchstens %3%4 (bei %5°) von der Bewegung ab, %6%4/° in der Geschwindigkeit und %7%4/°² in der Beschleunigung.
+Geschwindigkeit %8 … %9%4/°, Beschleunigung %10 … %11%4/°², Ruck %12 … %13%4/°³.</translation>
     </message>
 </context>
 <context>
@@ -4778,7 +4823,7 @@
         <translation>Den kleinsten Grundkreisradius setzen, bei dem der Stößel alle Prüfungen besteht: Druckwinkel im Hub und Rückhub innerhalb der Grenze, kein Unterschnitt (ein Rückgängig-Schritt)</translation>
     </message>
     <message>
-        <location line="+279" />
+        <location line="+280" />
         <source>Best Offset</source>
         <translation>Bester Versatz</translation>
     </message>
@@ -4788,7 +4833,7 @@
         <translation>Den Versatz des Stößels setzen, der den kleinsten Grundkreisradius erlaubt, und diesen Radius, und den zulässigen Bereich über Grundkreisradius × Versatz zeigen (ein Rückgängig-Schritt; Spitzen- oder Rollenstößel mit Schubbewegung)</translation>
     </message>
     <message>
-        <location line="-266" />
+        <location line="-267" />
         <source>Largest distance of the arc table from the exact profile</source>
         <translation>Größter Abstand der Bogentabelle vom exakten Profil</translation>
     </message>
@@ -4848,7 +4893,7 @@
         <translation>Alle vorschlagen</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+3" />
         <source>Choose the recommended law for every segment that is not a dwell or a line</source>
         <translation>Das empfohlene Gesetz für jeden Abschnitt wählen, der keine Rast und keine Gerade ist</translation>
     </message>
@@ -4967,7 +5012,7 @@
         <translation>Bewegungsabschnitt %1 löschen</translation>
     </message>
     <message>
-        <location line="+108" />
+        <location line="+111" />
         <source>This project has no motion design. New Design starts one: lay out the follower's motion, then Synthesize makes the contour from it.</source>
         <translation>Dieses Projekt hat keinen Bewegungsentwurf. „Neuer Entwurf“ legt einen an: die Bewegung des Stößels festlegen, dann erzeugt Synthetisieren daraus die Kontur.</translation>
     </message>
@@ -4990,7 +5035,7 @@
         <translation>Der Entwurf ist nicht herstellbar: %1</translation>
     </message>
     <message>
-        <location line="-230" />
+        <location line="-233" />
         <source>Finding the placement that allows the smallest base radius…</source>
         <translation>Suche die Lage, die den kleinsten Grundkreisradius erlaubt…</translation>
     </message>
@@ -5015,7 +5060,7 @@
         <translation>Abschnitt %1: %2</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+6" />
         <source>Every law is already the one suggested.</source>
         <translation>Jedes Gesetz ist schon das vorgeschlagene.</translation>
     </message>
@@ -5025,7 +5070,7 @@
         <translation>Das Gesetz von Abschnitt %1 ist schon das vorgeschlagene.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+3" />
         <source>Suggested %1.</source>
         <translation>Vorgeschlagen: %1.</translation>
     </message>
@@ -5040,12 +5085,12 @@
         <translation>Gesetz von Entwurfsabschnitt %1 vorschlagen</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+18" />
         <source>Import a motion table into design segment %1</source>
         <translation>Bewegungstabelle in Entwurfsabschnitt %1 importieren</translation>
     </message>
     <message>
-        <location line="+97" />
+        <location line="+101" />
         <source>The design cannot be drawn at this speed.</source>
         <translation>Der Entwurf lässt sich bei dieser Drehzahl nicht zeichnen.</translation>
     </message>

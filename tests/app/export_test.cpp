@@ -4,6 +4,7 @@
 // evaluation); failures name the problem and lose nothing; long exports leave the GUI thread.
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <qcustomplot.h>
 #include <QApplication>
@@ -193,6 +194,59 @@ TEST(ExportInWindow, ADesignsCamTableIsItsLawAsTheCliWritesIt) {
         EXPECT_EQ(both.app, both.cli) << name;
     }
     EXPECT_NE(test::readFile(dir.file("app-csv")).find("# source=law\n"), std::string::npos);
+}
+
+TEST(ExportInWindow, ADesignNeverSynthesisedIsAPlainElectronicCamInTheWindowToo) {
+    // Issue 33: a design without a contour exports its law as a servo table, as the CLI does;
+    // its contour is refused with the reason; the dialog states the controller's
+    // interpolation error before the export, the very number the CLI reports.
+    test::TempDir dir;
+    const std::string project = test::dataPath("app/design-roller-no-contour.cam.json");
+    MainWindow window;
+    ASSERT_TRUE(window.loadFile(QString::fromStdString(project)).isEmpty());
+    const std::string title = "A design never synthesised: cycloidal rise and return, roller 8 mm";
+    const FormatCase c{"beckhoff",
+                       {"--format", "camtable", "--dialect", "beckhoff", "--points", "36"},
+                       [&](ExportRequest& r) {
+                           r.format = ExportFormat::CamTable;
+                           r.camTable.dialect = CamTableDialect::Beckhoff;
+                           r.camTable.points = 36;
+                           r.camTable.name = title;
+                           r.camTableSource = CamTableSource::Law;
+                       }};
+    ExportedBothWays both;
+    ASSERT_NO_FATAL_FAILURE(both = exportBothWays(window, project, c, dir));
+    EXPECT_GT(both.app.size(), 200u);
+    EXPECT_EQ(both.app, both.cli);
+    ExportRequest contour;
+    c.setUp(contour);
+    contour.camTableSource = CamTableSource::Contour;
+    contour.path = QString::fromStdString(dir.file("never"));
+    EXPECT_TRUE(exportAndWait(window, contour).contains("no contour yet"));
+    closeProblemBox(window);
+    EXPECT_FALSE(std::filesystem::exists(dir.file("never")));
+    // The dialog: the law by default, the contour not offered, the report the CLI's.
+    const auto cli = test::runCli({"export", project, "--format", "camtable", "--dialect",
+                                   "beckhoff", "--points", "36", "--out", dir.file("again")});
+    ASSERT_EQ(cli.exitCode, 0) << cli.err;
+    const double error =
+        nlohmann::json::parse(cli.out).at("max_error").at("position").get<double>();
+    ExportDialog dialog(window.document()->project(), "design", {});
+    dialog.setFormat(ExportFormat::CamTable);
+    auto* source = dialog.findChild<QComboBox*>("tableSource");
+    ASSERT_NE(source, nullptr);
+    EXPECT_EQ(source->currentData().toInt(), static_cast<int>(CamTableSource::Law));
+    auto* points = dialog.findChild<QSpinBox*>("tablePoints");
+    auto* dialect = dialog.findChild<QComboBox*>("tableDialect");
+    dialect->setCurrentIndex(static_cast<int>(CamTableDialect::Beckhoff));
+    points->setValue(36);
+    auto* report = dialog.findChild<QLabel*>("tableReport");
+    ASSERT_NE(report, nullptr);
+    const QString expected = QString::number(error, 'g', 3) + " mm";
+    EXPECT_TRUE(test::processEventsUntil(
+        [&] { return report->text().contains("36 points") && report->text().contains(expected); },
+        20000))
+        << report->text().toStdString() << " / " << expected.toStdString();
 }
 
 TEST(ExportInWindow, AConjugatePairWritesWhatTheCliWrites) {

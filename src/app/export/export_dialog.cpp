@@ -7,6 +7,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -15,10 +16,14 @@
 #include <QSpinBox>
 #include <QStackedWidget>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
 
 #include "closure/groove.h"
+#include "document/project_document.h"
+#include "engine/background_priority.h"
 #include "export/export_formats.h"
+#include "messages/diagnostic_text.h"
 #include "widgets/number_spin_box.h"
 #include "widgets/quantity_format.h"
 
@@ -51,6 +56,7 @@ ExportDialog::ExportDialog(const Project& project, const QString& baseName,
       m_baseName(baseName),
       m_plots(std::move(plots)),
       m_projectFile(projectFile),
+      m_project(project),
       m_title(exportName(project.name, baseName.toStdString())) {
     setWindowTitle(tr("Export"));
     setObjectName("exportDialog");
@@ -206,6 +212,30 @@ ExportDialog::ExportDialog(const Project& project, const QString& baseName,
     }
     form->addRow(tr("&Dialect:"), m_tableDialect);
     connect(m_tableDialect, &QComboBox::currentIndexChanged, this, &ExportDialog::matchSuffix);
+    m_tableSource = new QComboBox(this);
+    m_tableSource->setObjectName("tableSource");
+    m_tableSource->addItem(tr("Motion law (exact)"), static_cast<int>(CamTableSource::Law));
+    m_tableSource->addItem(tr("Contour (follower on the arcs)"),
+                           static_cast<int>(CamTableSource::Contour));
+    m_tableSource->setToolTip(
+        tr("The design's law is exact; the arc-fitted contour's lift is only C1 (its "
+           "acceleration steps at every arc joint)"));
+    // As camwright-cli's default: the law when there is a design; each source only where the
+    // project has it.
+    m_tableSource->setCurrentIndex(project.design ? 0 : 1);
+    m_tableSource->setItemData(0, project.design ? QVariant() : QVariant(0), Qt::UserRole - 1);
+    m_tableSource->setItemData(1, project.contour.empty() ? QVariant(0) : QVariant(),
+                               Qt::UserRole - 1);
+    form->addRow(tr("&Source:"), m_tableSource);
+    m_tableReport = new QLabel(this);
+    m_tableReport->setObjectName("tableReport");
+    m_tableReport->setWordWrap(true);
+    m_tableReport->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    form->addRow(m_tableReport);
+    for (QComboBox* box : {m_tableDialect, m_tableSource}) {
+        connect(box, &QComboBox::currentIndexChanged, this, &ExportDialog::updateTableReport);
+    }
+    connect(m_tablePoints, &QSpinBox::valueChanged, this, &ExportDialog::updateTableReport);
 
     // Plot picture
     page(m_pages, form);
@@ -335,6 +365,7 @@ void ExportDialog::setFileName(const QString& path) { m_file->setText(path); }
 void ExportDialog::formatChanged() {
     m_pages->setCurrentIndex(m_format->currentIndex());
     matchSuffix();
+    updateTableReport();
 }
 
 void ExportDialog::matchSuffix() {
@@ -388,6 +419,7 @@ ExportRequest ExportDialog::request() const {
     r.gcode.projectName = m_title;
     r.camTable.points = static_cast<std::size_t>(m_tablePoints->value());
     r.camTable.dialect = static_cast<CamTableDialect>(m_tableDialect->currentData().toInt());
+    r.camTableSource = static_cast<CamTableSource>(m_tableSource->currentData().toInt());
     r.camTable.name = m_title;
     if (m_plot->count() > 0) r.plot = static_cast<PlotKind>(m_plot->currentData().toInt());
     r.picture = static_cast<PictureFormat>(m_picture->currentData().toInt());
@@ -427,6 +459,52 @@ void ExportDialog::accept() {
             settings.setValue(key, combo->currentIndex());
     }
     QDialog::accept();
+}
+
+void ExportDialog::updateTableReport() {
+    if (format() != ExportFormat::CamTable) return;
+    // The GUI thread never computes: the report of the table as the fields say comes from a
+    // worker; a newer request makes an older answer stale.
+    const int request = ++m_tableReportRequest;
+    const auto source = static_cast<CamTableSource>(m_tableSource->currentData().toInt());
+    CamTableOptions options;
+    options.points = static_cast<std::size_t>(m_tablePoints->value());
+    options.dialect = static_cast<CamTableDialect>(m_tableDialect->currentData().toInt());
+    options.follower = m_project.follower.value_or(FollowerSpec{});
+    m_tableReport->setText(tr("Measuring the controller's interpolation…"));
+    auto* watcher = new QFutureWatcher<Result<CamTableReport>>(this);
+    connect(watcher, &QFutureWatcher<Result<CamTableReport>>::finished, this,
+            [this, watcher, request, arm = options.follower.motion == FollowerMotion::Oscillating] {
+                const Result<CamTableReport> answer = watcher->result();
+                watcher->deleteLater();
+                if (request != m_tableReportRequest) return;  // stale
+                if (!answer.ok()) {
+                    m_tableReport->setText(diagnosticsText(answer.errors(), 3));
+                    return;
+                }
+                const CamTableReport& r = answer.value();
+                const QString unit = arm ? QStringLiteral("°") : QStringLiteral(" mm");
+                const auto number = [](double v) { return QString::number(v, 'g', 3); };
+                const CamCharacteristics& c = r.characteristics;
+                m_tableReport->setText(
+                    tr("The controller's interpolation (%1) of these %2 points is off the "
+                       "motion by at most %3%4 (at %5°), %6%4/° in velocity and %7%4/°² in "
+                       "acceleration.\nVelocity %8 … %9%4/°, acceleration %10 … %11%4/°², "
+                       "jerk %12 … %13%4/°³.")
+                        .arg(QString::fromLatin1(r.interpolation))
+                        .arg(r.points)
+                        .arg(number(r.positionError), unit, number(r.positionErrorAtDeg),
+                             number(r.velocityError), number(r.accelerationError),
+                             number(c.velocityMin.value), number(c.velocityMax.value),
+                             number(c.accelerationMin.value), number(c.accelerationMax.value))
+                        .arg(number(c.jerkMin.value), number(c.jerkMax.value)));
+            });
+    watcher->setFuture(QtConcurrent::run([project = m_project, source, options] {
+        runInTheBackground();
+        auto motion = camTableMotion(project, source);
+        if (!motion.ok()) return Result<CamTableReport>(motion.errors());
+        return camTableReport(motion.value(), options);
+    }));
 }
 
 }  // namespace cam

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "export/export_request.h"
+#include "project/project.h"
 
 class QCheckBox;
 class QComboBox;
@@ -56,6 +57,8 @@ private:
     /// all but those the project gives (samples per turn, tool radius, feed) and the plot.
     [[nodiscard]] std::vector<QWidget*> rememberedOptions() const;
     void restoreOptions();
+    /// Asks for the cam table's report as the fields now say; its answer fills m_tableReport.
+    void updateTableReport();
 
     QString m_baseName;
     std::vector<PlotKind> m_plots;
@@ -89,6 +92,12 @@ private:
     QComboBox* m_gcodePlate = nullptr;
     QSpinBox* m_tablePoints = nullptr;
     QComboBox* m_tableDialect = nullptr;
+    QComboBox* m_tableSource = nullptr;
+    /// The controller's interpolation error and the motion's characteristics, computed in the
+    /// background for the table as the fields say (stale answers are dropped).
+    QLabel* m_tableReport = nullptr;
+    int m_tableReportRequest = 0;
+    Project m_project;  ///< the snapshot the report is computed from
     QComboBox* m_plot = nullptr;
     QComboBox* m_picture = nullptr;
     QSpinBox* m_width = nullptr;

@@ -32,7 +32,46 @@ QString exportSuffix(const ExportRequest& request) {
     return QString::fromUtf8(suffix.data(), static_cast<qsizetype>(suffix.size()));
 }
 
+Result<CamMotion> camTableMotion(const Project& project, CamTableSource source) {
+    const FollowerSpec follower = project.follower.value_or(FollowerSpec{});
+    if (source == CamTableSource::Law) {
+        if (!project.design) {
+            return Diagnostics{
+                {"source", QCoreApplication::translate("ExportRequest",
+                                                       "the project has no design: its law is the "
+                                                       "source only of a design's table")
+                               .toStdString()}};
+        }
+        auto design = MotionDesign::build(*project.design);
+        if (!design.ok()) return design.errors();
+        return lawMotion(design.value(), follower.motion == FollowerMotion::Oscillating);
+    }
+    if (project.contour.empty()) {
+        return Diagnostics{{"source", QCoreApplication::translate(
+                                          "ExportRequest",
+                                          "the project has no contour yet: Synthesize (F6) "
+                                          "makes it from the design")
+                                          .toStdString()}};
+    }
+    auto contour = Contour::build(project);
+    if (!contour.ok()) return contour.errors();
+    return contourMotion(contour.value(), follower);
+}
+
 Result<std::string> exportText(const Project& project, const ExportRequest& request) {
+    if (request.format == ExportFormat::CamTable) {
+        // As camwright-cli's --source: a design's law needs no contour (a plain electronic
+        // cam), the contour needs no design.
+        CamTableOptions options = request.camTable;
+        options.follower = project.follower.value_or(FollowerSpec{});
+        auto motion = camTableMotion(
+            project, request.camTableSource.value_or(project.design ? CamTableSource::Law
+                                                                    : CamTableSource::Contour));
+        if (!motion.ok()) return motion.errors();
+        auto table = camTable(motion.value(), options);
+        if (!table.ok()) return table.errors();
+        return std::move(table).value().text;
+    }
     auto contour = Contour::build(project);
     if (!contour.ok()) return contour.errors();
     switch (request.format) {
@@ -86,22 +125,7 @@ Result<std::string> exportText(const Project& project, const ExportRequest& requ
             }
             return gcodeProgram(contour.value(), options);
         }
-        case ExportFormat::CamTable: {
-            CamTableOptions options = request.camTable;
-            options.follower = project.follower.value_or(FollowerSpec{});
-            // As camwright-cli's default --source: the design's law when there is one (the
-            // arc-fitted contour is only C1), else the follower on the contour.
-            if (project.design) {
-                auto design = MotionDesign::build(*project.design);
-                if (!design.ok()) return design.errors();
-                auto table = camTable(lawMotion(design.value(), options.follower.motion ==
-                                                                    FollowerMotion::Oscillating),
-                                      options);
-                if (!table.ok()) return table.errors();
-                return std::move(table).value().text;
-            }
-            return camTableText(contour.value(), options);
-        }
+        case ExportFormat::CamTable:  // above
         case ExportFormat::Picture:
             break;
     }

@@ -6,6 +6,7 @@
 #include <QSize>
 #include <QString>
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "common/diagnostic.h"
@@ -33,6 +34,9 @@ struct ExportRequest {
     /// A conjugate pair's program mills this plate: 1 (the contour) or 2 (the second plate).
     int gcodePlate = 1;
     CamTableOptions camTable;
+    /// The cam table's motion: the design's law (exact) or the follower on the contour; none:
+    /// as camwright-cli's default, the law when the project has a design, else the contour.
+    std::optional<CamTableSource> camTableSource;
     PlotKind plot = PlotKind::Contour;
     PictureFormat picture = PictureFormat::Png;
     QSize pictureSize;  ///< empty: defaultPictureSize()
@@ -50,5 +54,10 @@ struct ExportRequest {
 /// core functions as `camwright-cli export`. Safe to call from any thread. Errors: the project's
 /// problems, an option out of range, a shape the format cannot take (a tool too wide).
 [[nodiscard]] Result<std::string> exportText(const Project& project, const ExportRequest& request);
+
+/// @brief The motion a cam table of `source` samples (the design's law, or the follower on the
+/// contour), from a snapshot of the project. Errors: no design for the law, no contour for the
+/// contour, the design's or the follower's problems.
+[[nodiscard]] Result<CamMotion> camTableMotion(const Project& project, CamTableSource source);
 
 }  // namespace cam

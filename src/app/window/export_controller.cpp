@@ -259,7 +259,11 @@ void ExportController::exportFile(const ExportRequest& request) {
         finishExport(request.path, what, outcome.bytes, outcome.problem);
         return;
     }
-    if (m_document->awaitsSynthesis()) {
+    // A design's cam table from its law needs no contour: a plain electronic cam.
+    const bool fromTheLaw =
+        request.format == ExportFormat::CamTable &&
+        request.camTableSource.value_or(CamTableSource::Law) == CamTableSource::Law;
+    if (m_document->awaitsSynthesis() && !fromTheLaw) {
         finishExport(request.path, what, 0,
                      tr("The project has no contour yet: Synthesize (F6) makes it from the "
                         "design."));
