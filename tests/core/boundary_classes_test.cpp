@@ -173,3 +173,33 @@ TEST(Suggest, JoinsTwoLinesOfOneVelocityByAnInclinedSine) {
 
 }  // namespace
 }  // namespace cam
+
+namespace cam {
+namespace {
+
+TEST(Suggest, AStretchThatComesBackWhereItStartedStaysAPoly5) {
+    // A poly5 out and back (lift 10 → 10) that leaves at 0.05 mm/°, where the dwell before it
+    // rests: no normalised law rises by nothing, so Suggest keeps poly5 and gives it the
+    // dwells' rest at both ends.
+    DesignSpec d = test::cycloidalDesign();
+    d.segments[1] = segment(MotionLawType::Poly5, 180.0, 10.0);
+    d.segments[1].v0 = 0.05;
+    ASSERT_FALSE(MotionDesign::build(d).ok());
+    const auto suggested = suggestLaws(d, 1);
+    ASSERT_TRUE(suggested.ok());
+    const DesignSegmentSpec& s = suggested.value().segments[1];
+    EXPECT_EQ(s.law, MotionLawType::Poly5);
+    EXPECT_EQ(s.v0, 0.0);
+    EXPECT_EQ(s.a0, 0.0);
+    EXPECT_EQ(s.v1, 0.0);
+    EXPECT_EQ(s.a1, 0.0);
+    const auto built = MotionDesign::build(suggested.value());
+    ASSERT_TRUE(built.ok()) << built.errors().front().text();
+    // All zero at both ends from 10 to 10: the poly5 is the constant 10 (its c1 … c5 vanish).
+    for (double deg : {120.0, 150.0, 179.0}) {
+        EXPECT_EQ(built.value().liftAt(degToRad(deg))[0], 10.0) << deg;
+    }
+}
+
+}  // namespace
+}  // namespace cam

@@ -1,5 +1,6 @@
 #include "design/boundary_classes.h"
 
+#include <array>
 #include <cmath>
 
 #include "common/angles.h"
@@ -106,8 +107,14 @@ Result<DesignSpec> suggestLaws(const DesignSpec& spec, std::optional<std::size_t
     const double zero = design.zeroScale(), perDeg = kPi / 180.0;
     for (std::size_t k = 0; k < n; ++k) {
         if (!suggested(k)) continue;
-        const auto [v0, a0] = joint((k + n - 1) % n, k, true);
-        const auto [v1, a1] = joint(k, (k + 1) % n, false);
+        // Not structured bindings: the lambda below captures them (clang 14 cannot).
+        const std::array<double, 2> start = joint((k + n - 1) % n, k, true);
+        const std::array<double, 2> end = joint(k, (k + 1) % n, false);
+        // Below the design's zero a value is what its class says: 0 (a cycloid's end
+        // acceleration is sin 2π ≈ −2e-16, not 0).
+        const auto clean = [zero](double v) { return std::abs(v) <= zero ? 0.0 : v; };
+        const double v0 = clean(start[0]), a0 = clean(start[1]), v1 = clean(end[0]),
+                     a1 = clean(end[1]);
         DesignSegmentSpec s;
         s.toDeg = spec.segments[k].toDeg;
         s.lift = spec.segments[k].lift;
@@ -116,7 +123,19 @@ Result<DesignSpec> suggestLaws(const DesignSpec& spec, std::optional<std::size_t
         const bool rest1 = classifyBoundary(v1, a1, zero) == BoundaryClass::Rest;
         const bool steady =
             std::abs(a0) <= zero && std::abs(a1) <= zero && std::abs(v0 - v1) <= zero;
-        if (rest0 && rest1) {
+        // Poly5 with the joint's velocity and acceleration at each end, per degree.
+        const auto poly5 = [&] {
+            s.law = MotionLawType::Poly5;
+            s.v0 = v0 * perDeg;
+            s.a0 = a0 * perDeg * perDeg;
+            s.v1 = v1 * perDeg;
+            s.a1 = a1 * perDeg * perDeg;
+        };
+        if (d == 0.0) {
+            // A stretch that comes back to where it started (a poly5 or poly7 out and back):
+            // no normalised law makes it.
+            poly5();
+        } else if (rest0 && rest1) {
             s.law = MotionLawType::ModifiedSine;
         } else if (steady && std::abs(v0 - slope) <= zero) {
             s.law = MotionLawType::ConstantVelocity;
@@ -125,11 +144,7 @@ Result<DesignSpec> suggestLaws(const DesignSpec& spec, std::optional<std::size_t
             s.law = MotionLawType::InclinedSine;
             s.v0 = v0 * perDeg;
         } else {
-            s.law = MotionLawType::Poly5;
-            s.v0 = v0 * perDeg;
-            s.a0 = a0 * perDeg * perDeg;
-            s.v1 = v1 * perDeg;
-            s.a1 = a1 * perDeg * perDeg;
+            poly5();
         }
         out.segments[k] = s;
     }
