@@ -616,6 +616,24 @@ TEST(ExportDialogTest, StartsFromTheProjectAndTheLastExport) {
     EXPECT_EQ(r.pictureSize, QSize(842, 595));
 }
 
+TEST(ExportDialogTest, AProjectNamedLikeAPlotKeepsItsName) {
+    // Seen under Xvfb: "design-roller-no-contour" became "design-roller-no.dxf", the tail
+    // taken for a plot's name. Only the plot tail the dialog added is renamed.
+    ExportDialog dialog(Project{}, "design-roller-no-contour",
+                        {PlotKind::Contour, PlotKind::Velocity});
+    // The file's name without its suffix (the suffixes follow the remembered options).
+    const auto stem = [&] { return QFileInfo(dialog.request().path).completeBaseName(); };
+    dialog.setFormat(ExportFormat::Dxf);
+    EXPECT_EQ(stem(), "design-roller-no-contour");
+    dialog.setFormat(ExportFormat::Picture);
+    dialog.findChild<QComboBox*>("plotKind")->setCurrentIndex(1);
+    EXPECT_EQ(stem(), "design-roller-no-contour-velocity");
+    dialog.findChild<QComboBox*>("plotKind")->setCurrentIndex(0);
+    EXPECT_EQ(stem(), "design-roller-no-contour-contour");
+    dialog.setFormat(ExportFormat::CamTable);
+    EXPECT_EQ(stem(), "design-roller-no-contour");
+}
+
 TEST(ExportDialogTest, TheFeedStartsCautiousIsRememberedAndStaysBelowTheProjectsLimit) {
     // Issue 31, point 6: a project without a machining section went out at 6,000 mm/min, and a
     // typed feed was forgotten by the next export.

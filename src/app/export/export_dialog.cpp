@@ -377,14 +377,14 @@ void ExportDialog::matchSuffix() {
         info.completeSuffix().isEmpty()
             ? info.fileName()
             : info.fileName().left(info.fileName().size() - info.suffix().size() - 1);
-    // A plot's name is part of its file's name: switching plots renames the file.
+    // A plot's name is part of its file's name: switching plots renames the file. Only the
+    // tail this dialog added goes again: a project called "…-contour" keeps its name.
     QString base = stem;
-    for (PlotKind kind : kPlotKinds) {
-        const QString tail = "-" + plotKindName(kind);
-        if (base.endsWith(tail)) base.chop(tail.size());
-    }
+    if (!m_plotTail.isEmpty() && base.endsWith(m_plotTail)) base.chop(m_plotTail.size());
+    m_plotTail.clear();
     if (format() == ExportFormat::Picture && m_plot->count() > 0) {
-        base += "-" + plotKindName(static_cast<PlotKind>(m_plot->currentData().toInt()));
+        m_plotTail = "-" + plotKindName(static_cast<PlotKind>(m_plot->currentData().toInt()));
+        base += m_plotTail;
     }
     m_file->setText(info.dir().filePath(base + "." + suffix));
 }

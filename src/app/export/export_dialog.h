@@ -61,6 +61,8 @@ private:
     void updateTableReport();
 
     QString m_baseName;
+    /// "-velocity": the plot's name matchSuffix added to the file's name (empty: none).
+    QString m_plotTail;
     std::vector<PlotKind> m_plots;
     QComboBox* m_format = nullptr;
     QStackedWidget* m_pages = nullptr;
