@@ -17,13 +17,7 @@
 namespace cam {
 namespace {
 
-DesignSegmentSpec segment(MotionLawType law, double toDeg, double lift) {
-    DesignSegmentSpec s;
-    s.law = law;
-    s.toDeg = toDeg;
-    s.lift = lift;
-    return s;
-}
+using test::designSegment;
 
 std::string letters(const std::vector<SegmentClasses>& classes) {
     std::string out;
@@ -44,11 +38,11 @@ TEST(BoundaryClasses, AreWhatTheNeighboursDemand) {
     // line's constant velocity demands it of the cycloids; a harmonic rise and return meet at
     // a reversal (v = 0, a = −π²/2·Δ/h² ≠ 0).
     DesignSpec d = test::cycloidalDesign();
-    d.segments = {segment(MotionLawType::Cycloidal, 60.0, 5.0),
-                  segment(MotionLawType::ConstantVelocity, 120.0, 10.0),
-                  segment(MotionLawType::Cycloidal, 180.0, 15.0),
-                  segment(MotionLawType::Harmonic, 270.0, 20.0),
-                  segment(MotionLawType::Harmonic, 360.0, 0.0)};
+    d.segments = {designSegment(MotionLawType::Cycloidal, 60.0, 5.0),
+                  designSegment(MotionLawType::ConstantVelocity, 120.0, 10.0),
+                  designSegment(MotionLawType::Cycloidal, 180.0, 15.0),
+                  designSegment(MotionLawType::Harmonic, 270.0, 20.0),
+                  designSegment(MotionLawType::Harmonic, 360.0, 0.0)};
     const auto classes = boundaryClasses(d);
     ASSERT_TRUE(classes.ok());
     // Segment 0 starts where the last harmonic ends (v = 0, a = π²/2·20/h² ≠ 0: reversal) and
@@ -69,12 +63,12 @@ TEST(Suggest, FillsADwellLineDwellCycleWithPoly5sAndAModifiedSine) {
     // Dwell, a rise to a line of 10 mm over 80° (1/8 mm per degree), a rise to a dwell, a
     // return.
     DesignSpec d = test::cycloidalDesign();
-    d.segments = {segment(MotionLawType::Dwell, 60.0, 0.0),
-                  segment(MotionLawType::Cycloidal, 120.0, 5.0),
-                  segment(MotionLawType::ConstantVelocity, 200.0, 15.0),
-                  segment(MotionLawType::Cycloidal, 260.0, 20.0),
-                  segment(MotionLawType::Dwell, 300.0, 20.0),
-                  segment(MotionLawType::Cycloidal, 360.0, 0.0)};
+    d.segments = {designSegment(MotionLawType::Dwell, 60.0, 0.0),
+                  designSegment(MotionLawType::Cycloidal, 120.0, 5.0),
+                  designSegment(MotionLawType::ConstantVelocity, 200.0, 15.0),
+                  designSegment(MotionLawType::Cycloidal, 260.0, 20.0),
+                  designSegment(MotionLawType::Dwell, 300.0, 20.0),
+                  designSegment(MotionLawType::Cycloidal, 360.0, 0.0)};
     ASSERT_FALSE(MotionDesign::build(d).ok());
     const auto suggested = suggestLaws(d);
     ASSERT_TRUE(suggested.ok());
@@ -109,9 +103,10 @@ TEST(Suggest, TurnsARiseIntoAReturnAtAReversal) {
     // v = 0 with a = 6(Δ₂/h₂² − Δ₁/h₁²) = −120/h², which for equal stretches makes each poly5
     // the quartic turn y = Δ(4u³ − 3u⁴) (its c5 vanishes: 6Δ − (a0 − a1)h²/2 = 0).
     DesignSpec d = test::cycloidalDesign();
-    d.segments = {
-        segment(MotionLawType::Dwell, 90.0, 0.0), segment(MotionLawType::Cycloidal, 180.0, 10.0),
-        segment(MotionLawType::Cycloidal, 270.0, 0.0), segment(MotionLawType::Dwell, 360.0, 0.0)};
+    d.segments = {designSegment(MotionLawType::Dwell, 90.0, 0.0),
+                  designSegment(MotionLawType::Cycloidal, 180.0, 10.0),
+                  designSegment(MotionLawType::Cycloidal, 270.0, 0.0),
+                  designSegment(MotionLawType::Dwell, 360.0, 0.0)};
     const auto suggested = suggestLaws(d);
     ASSERT_TRUE(suggested.ok());
     const DesignSpec& s = suggested.value();
@@ -138,13 +133,13 @@ TEST(Suggest, JoinsTwoLinesOfOneVelocityByAnInclinedSine) {
     // inclined sine with v0 = 0.1, whose lift is y0 + Δ(x − (1 − vn) sin 2πx / 2π) with
     // vn = 0.1·60/8 = 0.75 (VDI 2143's geneigte Sinuslinie).
     DesignSpec d = test::cycloidalDesign();
-    d.segments = {segment(MotionLawType::Dwell, 30.0, 0.0),
-                  segment(MotionLawType::Cycloidal, 90.0, 6.0),
-                  segment(MotionLawType::ConstantVelocity, 150.0, 12.0),
-                  segment(MotionLawType::Cycloidal, 210.0, 20.0),
-                  segment(MotionLawType::ConstantVelocity, 250.0, 24.0),
-                  segment(MotionLawType::Cycloidal, 300.0, 28.0),
-                  segment(MotionLawType::Cycloidal, 360.0, 0.0)};
+    d.segments = {designSegment(MotionLawType::Dwell, 30.0, 0.0),
+                  designSegment(MotionLawType::Cycloidal, 90.0, 6.0),
+                  designSegment(MotionLawType::ConstantVelocity, 150.0, 12.0),
+                  designSegment(MotionLawType::Cycloidal, 210.0, 20.0),
+                  designSegment(MotionLawType::ConstantVelocity, 250.0, 24.0),
+                  designSegment(MotionLawType::Cycloidal, 300.0, 28.0),
+                  designSegment(MotionLawType::Cycloidal, 360.0, 0.0)};
     const auto suggested = suggestLaws(d);
     ASSERT_TRUE(suggested.ok());
     const DesignSpec& s = suggested.value();
@@ -182,7 +177,7 @@ TEST(Suggest, AStretchThatComesBackWhereItStartedStaysAPoly5) {
     // rests: no normalised law rises by nothing, so Suggest keeps poly5 and gives it the
     // dwells' rest at both ends.
     DesignSpec d = test::cycloidalDesign();
-    d.segments[1] = segment(MotionLawType::Poly5, 180.0, 10.0);
+    d.segments[1] = designSegment(MotionLawType::Poly5, 180.0, 10.0);
     d.segments[1].v0 = 0.05;
     ASSERT_FALSE(MotionDesign::build(d).ok());
     const auto suggested = suggestLaws(d, 1);

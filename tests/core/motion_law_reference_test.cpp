@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "common/angles.h"
+#include "core/test_projects.h"
 #include "design/motion_design.h"
 #include "design/motion_law.h"
 #include "project/project.h"
@@ -287,13 +288,7 @@ constexpr double kPoly4567SplineDeviation[] = {6.2259864556595306e-8, 3.60550826
 
 // ------------------------------------------------------------------------------------ helpers
 
-DesignSegmentSpec segment(MotionLawType law, double toDeg, double lift) {
-    DesignSegmentSpec s;
-    s.law = law;
-    s.toDeg = toDeg;
-    s.lift = lift;
-    return s;
-}
+using test::designSegment;
 
 /// math.md §8's cam with `rise` (0–120°, 10 mm) and `ret` (180–300°, back to 0) between dwells.
 DesignSpec restToRest(DesignSegmentSpec rise, DesignSegmentSpec ret) {
@@ -303,8 +298,8 @@ DesignSpec restToRest(DesignSegmentSpec rise, DesignSegmentSpec ret) {
     ret.lift = 0.0;
     DesignSpec d;
     d.baseRadius = 40.0;
-    d.segments = {rise, segment(MotionLawType::Dwell, 180.0, 10.0), ret,
-                  segment(MotionLawType::Dwell, 360.0, 0.0)};
+    d.segments = {rise, designSegment(MotionLawType::Dwell, 180.0, 10.0), ret,
+                  designSegment(MotionLawType::Dwell, 360.0, 0.0)};
     return d;
 }
 
@@ -558,7 +553,7 @@ TEST(MotionLawReference, TheWrittenOutLawsAreSelfConsistent) {
 // ----------------------------------------------------------------------------- inclined sine
 
 TEST(MotionLawReference, InclinedSineWithoutEndVelocityIsTheCycloid) {
-    DesignSegmentSpec rise = segment(MotionLawType::InclinedSine, 0, 0);
+    DesignSegmentSpec rise = designSegment(MotionLawType::InclinedSine, 0, 0);
     const std::optional<MotionDesign> design = built(restToRest(rise, rise));
     ASSERT_TRUE(design);
     const MotionDesign& m = *design;
@@ -578,13 +573,13 @@ TEST(MotionLawReference, InclinedSineWithoutEndVelocityIsTheCycloid) {
 DesignSpec linesAndInclinedSines(double slopePerDeg = 0.1) {
     DesignSpec d;
     d.baseRadius = 40.0;
-    DesignSegmentSpec first = segment(MotionLawType::InclinedSine, 90.0, 10.0);
+    DesignSegmentSpec first = designSegment(MotionLawType::InclinedSine, 90.0, 10.0);
     first.v0 = slopePerDeg;
-    DesignSegmentSpec second = segment(MotionLawType::InclinedSine, 240.0, 19.0);
+    DesignSegmentSpec second = designSegment(MotionLawType::InclinedSine, 240.0, 19.0);
     second.v0 = slopePerDeg;
-    DesignSegmentSpec back = segment(MotionLawType::Poly5, 360.0, 0.0);
+    DesignSegmentSpec back = designSegment(MotionLawType::Poly5, 360.0, 0.0);
     back.v0 = back.v1 = slopePerDeg;
-    d.segments = {first, segment(MotionLawType::ConstantVelocity, 150.0, 16.0), second, back};
+    d.segments = {first, designSegment(MotionLawType::ConstantVelocity, 150.0, 16.0), second, back};
     return d;
 }
 
@@ -618,7 +613,7 @@ TEST(MotionLawReference, InclinedSineReturnsWithTheLinesSlope) {
     // The poly5 return of linesAndInclinedSines an inclined sine too (240–360°, 19 → 0 mm, at
     // 0.1 mm/° at both ends): vn = 0.1·120/(−19), negative; the cam is lines and inclined sines.
     DesignSpec d = linesAndInclinedSines();
-    d.segments[3] = segment(MotionLawType::InclinedSine, 360.0, 0.0);
+    d.segments[3] = designSegment(MotionLawType::InclinedSine, 360.0, 0.0);
     d.segments[3].v0 = 0.1;
     const std::optional<MotionDesign> design = built(d);
     ASSERT_TRUE(design);
@@ -660,7 +655,7 @@ TEST(MotionLawReference, LinesBetweenInclinedSinesJoinWithoutJumps) {
 TEST(MotionLawReference, ARestToRestLawBesideALineIsRefused) {
     // The first inclined sine becomes a cycloid: it ends at rest, the line starts at 0.1 mm/°.
     DesignSpec d = linesAndInclinedSines();
-    d.segments[0] = segment(MotionLawType::Cycloidal, 90.0, 10.0);
+    d.segments[0] = designSegment(MotionLawType::Cycloidal, 90.0, 10.0);
     d.segments[3].v1 = 0.0;  // so only the joint cycloid/line is wrong
     const auto m = MotionDesign::build(d);
     ASSERT_FALSE(m.ok());
@@ -690,7 +685,7 @@ TEST(MotionLawReference, ModifiedLawsTakeTheInflectionPoint) {
         for (double lambda : {0.5, 0.3, 0.65, 0.2, 0.9}) {
             const std::string name =
                 std::string(lawName(law.type)) + " λ " + std::to_string(lambda);
-            DesignSegmentSpec seg = segment(law.type, 0, 0);
+            DesignSegmentSpec seg = designSegment(law.type, 0, 0);
             seg.lambda = lambda;
             const std::optional<MotionDesign> design = built(restToRest(seg, seg));
             ASSERT_TRUE(design);
@@ -753,7 +748,7 @@ TEST(MotionLawReference, SccaReproducesTheClassicLaws) {
         {0.0, 0.0, parabola, {2.0, 4.0, 0.0}, "constant acceleration"},
     };
     for (const Case& c : cases) {
-        DesignSegmentSpec seg = segment(MotionLawType::Scca, 0, 0);
+        DesignSegmentSpec seg = designSegment(MotionLawType::Scca, 0, 0);
         seg.sccaB = c.b;
         seg.sccaD = c.d;
         const std::optional<MotionDesign> design = built(restToRest(seg, seg));
@@ -787,7 +782,7 @@ TEST(MotionLawReference, SccaIsNortonsAccelerationIntegrated) {
         // Norton's closed form against the quadrature (the script also checks it, to 1e-30).
         EXPECT_TRUE(relClose(sccaCoefficients(c.b, c.d).ca, c.ca, 1e-14)) << name;
         EXPECT_TRUE(relClose(sccaCoefficients(c.b, c.d).cv, c.cv, 1e-14)) << name;
-        DesignSegmentSpec seg = segment(MotionLawType::Scca, 0, 0);
+        DesignSegmentSpec seg = designSegment(MotionLawType::Scca, 0, 0);
         seg.sccaB = c.b;
         seg.sccaD = c.d;
         const std::optional<MotionDesign> design = built(restToRest(seg, seg));
@@ -813,8 +808,8 @@ TEST(MotionLawReference, SccaIsNortonsAccelerationIntegrated) {
 constexpr std::array<double, 3> kP7A{0.05, 0.002, -0.0001}, kP7B{-0.03, -0.001, 0.00005};
 
 DesignSpec twoPoly7() {
-    DesignSegmentSpec rise = segment(MotionLawType::Poly7, 150.0, 12.0);
-    DesignSegmentSpec back = segment(MotionLawType::Poly7, 360.0, 0.0);
+    DesignSegmentSpec rise = designSegment(MotionLawType::Poly7, 150.0, 12.0);
+    DesignSegmentSpec back = designSegment(MotionLawType::Poly7, 360.0, 0.0);
     const auto ends = [](DesignSegmentSpec& s, const std::array<double, 3>& start,
                          const std::array<double, 3>& end) {
         std::tie(s.v0, s.a0, s.j0) = std::tuple(start[0], start[1], start[2]);
@@ -916,8 +911,8 @@ TEST(MotionLawReference, Poly7IsTheDegreeSevenPolynomialOfTheReference) {
 }
 
 TEST(MotionLawReference, Poly7AtRestIsPoly4567) {
-    const std::optional<MotionDesign> design =
-        built(restToRest(segment(MotionLawType::Poly7, 0, 0), segment(MotionLawType::Poly7, 0, 0)));
+    const std::optional<MotionDesign> design = built(restToRest(
+        designSegment(MotionLawType::Poly7, 0, 0), designSegment(MotionLawType::Poly7, 0, 0)));
     ASSERT_TRUE(design);
     const MotionDesign& m = *design;
     EXPECT_TRUE(m.jumps().empty());
@@ -950,9 +945,9 @@ std::vector<MotionTablePoint> sixPoints(bool withVelocities) {
 }
 
 std::optional<MotionDesign> tableDesign(const std::vector<MotionTablePoint>& points) {
-    DesignSegmentSpec seg = segment(MotionLawType::Table, 0, 0);
+    DesignSegmentSpec seg = designSegment(MotionLawType::Table, 0, 0);
     seg.table = points;
-    return built(restToRest(seg, segment(MotionLawType::Cycloidal, 0, 0)));
+    return built(restToRest(seg, designSegment(MotionLawType::Cycloidal, 0, 0)));
 }
 
 /// The one-sided limits of y, y', y'' at x from the left (side −1) or right (+1): Taylor from

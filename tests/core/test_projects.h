@@ -58,6 +58,15 @@ inline Project splitCircle(double e, double radius, std::vector<double> boundari
 
 /// math.md §8's cam: base radius 40 mm, cycloidal rise of 10 mm over 0–120°, dwell to 180°,
 /// cycloidal return over 180–300°, dwell to 360°.
+/// A design segment of `law` ending at `toDeg` with `lift` there, its other fields default.
+inline DesignSegmentSpec designSegment(MotionLawType law, double toDeg, double lift) {
+    DesignSegmentSpec s;
+    s.law = law;
+    s.toDeg = toDeg;
+    s.lift = lift;
+    return s;
+}
+
 inline DesignSpec cycloidalDesign() {
     DesignSpec d;
     d.baseRadius = 40.0;

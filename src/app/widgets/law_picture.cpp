@@ -1,5 +1,7 @@
 #include "widgets/law_picture.h"
 
+#include "design/motion_table.h"
+
 #include <QIcon>
 #include <QPainter>
 #include <QPainterPath>
@@ -23,17 +25,13 @@ LawPoint restToRest(MotionLawType law, double x, const LawParameters& parameters
             }
             return Poly5Law(1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0).at(x);
         case LawShape::Table: {
-            // A table drawn as a few points joined smoothly: the 3-4-5 law's, with a bump.
-            static const std::vector<double> xs{0.0, 0.2, 0.45, 0.6, 0.8, 1.0};
-            static const std::vector<double> ys{0.0, 0.08, 0.45, 0.55, 0.9, 1.0};
-            const auto it = std::upper_bound(xs.begin(), xs.end(), x);
-            const std::size_t i =
-                std::min<std::size_t>(std::max<std::ptrdiff_t>(it - xs.begin(), 1) - 1, 4);
-            const double u = (x - xs[i]) / (xs[i + 1] - xs[i]);
-            const double smooth = u * u * (3.0 - 2.0 * u);
-            const double dy = ys[i + 1] - ys[i], dx = xs[i + 1] - xs[i];
-            return {ys[i] + dy * smooth, dy / dx * 6.0 * u * (1.0 - u),
-                    dy / (dx * dx) * 6.0 * (1.0 - 2.0 * u), 0.0};
+            // A table of a few points with a shoulder, through the law's own spline.
+            static const MotionTableSpline spline =
+                MotionTableSpline::build(
+                    {{0.0, 0.0}, {0.2, 0.08}, {0.45, 0.45}, {0.6, 0.55}, {0.8, 0.9}, {1.0, 1.0}},
+                    {})
+                    .value();
+            return spline.at(x);
         }
     }
     return {};

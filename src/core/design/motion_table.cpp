@@ -201,24 +201,4 @@ Result<std::vector<MotionTablePoint>> parseMotionTable(std::string_view text) {
     return points;
 }
 
-std::string motionTableText(const std::vector<MotionTablePoint>& points) {
-    std::string out;
-    const auto append = [&](double v) {
-        char buffer[32];
-        const auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
-        out.append(buffer, ec == std::errc{} ? ptr : buffer);
-    };
-    for (const MotionTablePoint& p : points) {
-        append(p.x);
-        out += '\t';
-        append(p.y);
-        if (p.v) {
-            out += '\t';
-            append(*p.v);
-        }
-        out += '\n';
-    }
-    return out;
-}
-
 }  // namespace cam

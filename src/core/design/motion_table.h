@@ -2,7 +2,7 @@
 /// @file
 /// @brief A user's motion from a table of points (law `table`): normalised points through a
 /// C2 quintic spline, and the two-column text (x, y from 0 to 1) that Inventor's cam design
-/// reads and writes for a user-defined motion.
+/// reads for a user-defined motion.
 
 #include <string_view>
 #include <vector>
@@ -45,8 +45,5 @@ private:
 /// commas or semicolons; empty lines and lines starting with '#', ';' or "//" are skipped.
 /// Errors name the line ("line 3": not a number, not two or three columns).
 [[nodiscard]] Result<std::vector<MotionTablePoint>> parseMotionTable(std::string_view text);
-
-/// @brief The table as that text, "x<TAB>y[<TAB>v]" per line, numbers exact (C locale).
-[[nodiscard]] std::string motionTableText(const std::vector<MotionTablePoint>& points);
 
 }  // namespace cam
